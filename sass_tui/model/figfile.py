@@ -1,0 +1,186 @@
+"""PEABODY body description files (.fig), report §3, §9, §10 and appendix F.
+
+    name = value unit;        (one assignment a line, /* comments */ allowed)
+    figure ["body.fig"] ("skinny.a");
+
+The writer follows appendix F; the reader is a lark grammar, built once.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path
+
+from sass_tui.model.atomic import write_text_atomic
+from sass_tui.model.names import (
+    AXES, CENTER_OF_MASS, DEFAULT_SCALE, FIG_PREFIX, FIG_SCALE, GIRTH, JOINT_LIMITS, ROWS,
+    center_of_mass_variable, joint_limit_variable)
+
+ARCHIVES = {"skinny": "skinny.a", "polybody": "polybody.a"}
+
+
+class FigureIncompleteError(ValueError):
+    """Create Figure needs girth, joint limits and center of mass loaded."""
+
+
+class FigParseError(ValueError):
+    """A .fig file that does not follow the PEABODY assignment syntax."""
+
+
+@dataclass
+class FigFile:
+    variables: dict[str, tuple[float, str]] = field(default_factory=dict)
+    body: str = ""
+    archive: str = ""
+
+
+# --- writing -------------------------------------------------------------
+
+def girth_variables(figure) -> list[tuple[str, float, str]]:
+    """Segment scale variables (cm) and flooroffset, in appendix F order."""
+    state = figure.groups[GIRTH]
+    out = []
+    for row, values in zip(ROWS[GIRTH], state.values):
+        scale = FIG_SCALE.get(row.name, DEFAULT_SCALE)
+        for axis, value, factor in zip(AXES, values, scale):
+            out.append((f"{FIG_PREFIX[row.name]}{axis}", value * factor, "cm"))
+    z = {row.name: values[2] for row, values in zip(ROWS[GIRTH], state.values)}
+    out.append(("flooroffset", z["right_foot"] + z["right_lower_leg"] + z["right_upper_leg"], "cm"))
+    return out
+
+
+def joint_limit_variables(figure) -> list[tuple[str, float, str]]:
+    state = figure.groups[JOINT_LIMITS]
+    out = []
+    for row, values in zip(ROWS[JOINT_LIMITS], state.values):
+        for axis, value in zip(AXES, values):
+            if not math.isnan(value):  # 999: no motion about this axis
+                out.append((joint_limit_variable(row.name, axis), value, "deg"))
+    return out
+
+
+def center_of_mass_variables(figure) -> list[tuple[str, float, str]]:
+    state = figure.groups[CENTER_OF_MASS]
+    out = []
+    for row, values in zip(ROWS[CENTER_OF_MASS], state.values):
+        for axis, value in zip(AXES, values):
+            if not math.isnan(value):
+                out.append((center_of_mass_variable(row.name, axis), value, "cm"))
+    return out
+
+
+def render_fig(figure, extra_sections: list[tuple[str, list[tuple[str, float, str]]]] = ()) -> str:
+    missing = figure.missing_groups()
+    if missing:
+        raise FigureIncompleteError(
+            f"cannot create a figure: {', '.join(missing)} not loaded for {figure.gender}")
+    groups = figure.groups
+    who = figure.person or figure.population
+    lines = [
+        "/* body description file written by sass */",
+        f"/* {who}; {figure.gender}; figure type {figure.figure_type} */",
+        f"/* percentiles: girth {groups[GIRTH].percentile:g}, joint limits "
+        f"{groups[JOINT_LIMITS].percentile:g}, center of mass {groups[CENTER_OF_MASS].percentile:g}; "
+        f"mass {figure.mass:.2f} kg, stature {figure.stature:.1f} cm */",
+        "",
+    ]
+    sections = [
+        ("segment dimensions", girth_variables(figure)),
+        ("mass variables", [(n, v, "kg") for n, v in figure.segment_masses()]),
+        ("joint variables", joint_limit_variables(figure)),
+        ("center of mass variables", center_of_mass_variables(figure)),
+        *extra_sections,
+    ]
+    for title, variables in sections:
+        lines.append(f"/* {title} */")
+        lines += [f"{name} = {value:.2f}{unit};" for name, value, unit in variables]
+        lines.append("")
+    lines.append(f'figure ["body.fig"] ("{ARCHIVES[figure.figure_type]}");')
+    return "\n".join(lines) + "\n"
+
+
+def write_fig(figure, path: str | Path, extra_sections=()) -> Path:
+    """Write the figure's .fig file atomically.  Refuses an incomplete figure."""
+    text = render_fig(figure, extra_sections)
+    write_text_atomic(path, text)
+    return Path(path)
+
+
+def default_fig_name(gender: str, percentile: float, figure_type: str = "skinny") -> str:
+    """Report §10: MALE50.FIG, FEMALE05.FIG; PB prefix for polybody."""
+    if float(percentile).is_integer():
+        number = f"{int(percentile):02d}"
+    else:
+        number = f"{percentile:g}".replace(".", "_")
+    prefix = "PB" if figure_type == "polybody" else ""
+    return f"{prefix}{gender.upper()}{number}.FIG"
+
+
+# --- reading -------------------------------------------------------------
+
+_GRAMMAR = r"""
+start: statement*
+?statement: assignment | figure
+assignment: NAME "=" NUMBER UNIT? ";"
+figure: "figure" "[" STRING "]" "(" STRING ")" ";"
+NAME: /(?!figure\b)[A-Za-z_][A-Za-z0-9_]*/
+UNIT: /[A-Za-z_]+/
+NUMBER: /[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?/
+STRING: /"[^"\n]*"/
+COMMENT: /\/\*(.|\n)*?\*\//
+%import common.WS
+%ignore WS
+%ignore COMMENT
+"""
+
+
+@lru_cache(maxsize=1)
+def _parser():
+    from lark import Lark
+
+    return Lark(_GRAMMAR, parser="lalr", propagate_positions=True)
+
+
+def parse_fig(text: str, name: str = "<text>") -> FigFile:
+    from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+
+    try:
+        tree = _parser().parse(text)
+    except UnexpectedToken as exc:
+        found = "end of file" if exc.token.type == "$END" else repr(str(exc.token))
+        expected = ", ".join(sorted(_describe(t) for t in exc.expected))
+        raise FigParseError(f"{name}:{exc.line}:{exc.column}: found {found}; expected {expected}") from None
+    except UnexpectedCharacters as exc:
+        raise FigParseError(f"{name}:{exc.line}:{exc.column}: unexpected character "
+                            f"{text[exc.pos_in_stream]!r}") from None
+    except UnexpectedEOF:
+        raise FigParseError(f"{name}: the file ends in the middle of a statement") from None
+    except UnexpectedInput as exc:  # pragma: no cover - other lark errors
+        raise FigParseError(f"{name}:{exc.line}:{exc.column}: {exc}") from None
+    fig = FigFile()
+    for node in tree.children:
+        if node.data == "assignment":
+            var, number, *unit = node.children
+            if str(var) in fig.variables:
+                raise FigParseError(f"{name}:{var.line}:{var.column}: {var} assigned twice")
+            fig.variables[str(var)] = (float(number), str(unit[0]) if unit else "")
+        else:
+            body, archive = (str(s)[1:-1] for s in node.children)
+            fig.body, fig.archive = body, archive
+    if not fig.archive:
+        raise FigParseError(f'{name}: no closing line figure ["body.fig"] ("skinny.a");')
+    return fig
+
+
+def read_fig(path: str | Path) -> FigFile:
+    path = Path(path)
+    return parse_fig(path.read_text(encoding="utf-8"), str(path))
+
+
+def _describe(terminal: str) -> str:
+    return {"NAME": "a variable name", "NUMBER": "a number", "UNIT": "a unit",
+            "SEMICOLON": "';'", "EQUAL": "'='", "STRING": "a quoted file name",
+            "FIGURE": "'figure'", "LSQB": "'['", "RSQB": "']'", "LPAR": "'('",
+            "RPAR": "')'"}.get(terminal, terminal)

@@ -1,0 +1,261 @@
+"""The human figure as SASS holds it: global data and one state per group.
+
+Values are kept in canonical units (cm, deg, kg); each group also has a
+display unit the user can switch (cm|in, deg|rad).  No Textual import here.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from sass_tui.model import datasets
+from sass_tui.model.names import (
+    CENTER_OF_MASS, GIRTH, GLOBAL, GROUP_TITLES, GROUPS, JOINT_LIMITS, MASS_FRACTIONS, ROWS)
+from sass_tui.model.percentile import check_percentile, percentile_of, value_at
+from sass_tui.model.popfile import PopulationData, read_population_file
+from sass_tui.model.units import GROUP_UNITS
+
+FIGURE_TYPES = ("skinny", "polybody")
+STRENGTH_TYPES = ("isometric", "isokinetic", "isotonic")
+HANDEDNESS = ("right", "left")
+GENDERS = ("male", "female")
+
+
+class FigureError(ValueError):
+    """An edit the model refuses; the figure is unchanged."""
+
+
+@dataclass
+class GroupState:
+    """One anthropometric group at the figure's gender."""
+
+    group: str
+    source: PopulationData | None = None
+    percentile: float = 50.0
+    values: np.ndarray | None = None  # (rows, 3) canonical units, NaN = no value
+    percentiles: np.ndarray | None = None  # (rows, 3)
+    unit: str = ""
+
+    @property
+    def loaded(self) -> bool:
+        return self.values is not None
+
+    @property
+    def rows(self):
+        return ROWS[self.group]
+
+
+@dataclass
+class Figure:
+    gender: str = "male"
+    figure_type: str = "skinny"
+    population: str = ""
+    person: str | None = None
+    mass: float = float("nan")  # kg
+    mass_percentile: float = 50.0
+    stature: float = float("nan")  # cm
+    stature_percentile: float = 50.0
+    strength_type: str = "isometric"
+    motion_speed: float = 0.0  # deg/s
+    handedness: str = "right"
+    training_level: float = 0.0
+    fatigue_level: float = 0.0
+    global_stats: PopulationData | None = None
+    groups: dict[str, GroupState] = field(default_factory=dict)
+    _history: list = field(default_factory=list, repr=False)
+
+    def __post_init__(self) -> None:
+        for group in GROUPS:
+            self.groups.setdefault(group, GroupState(group, unit=GROUP_UNITS[group][0]))
+
+    # --- construction ----------------------------------------------------
+    @classmethod
+    def default(cls, gender: str = "male") -> "Figure":
+        """The NASA crew population of the shipped data sets, all at the 50th."""
+        figure = cls(gender=_check_choice(gender, GENDERS, "gender"))
+        figure.global_stats = read_population_file(datasets.path("global.dat"), GLOBAL)
+        for group in GROUPS:
+            figure.load_group(group, read_population_file(datasets.path(datasets.FILES[group]), group))
+        figure._reset_globals()
+        figure._history.clear()
+        return figure
+
+    def load_group(self, group: str, data: PopulationData) -> None:
+        """Replace a group's statistics (Input Data), keeping its percentile."""
+        self._remember()
+        state = self.groups[group]
+        state.source = data
+        if group == GIRTH and self.person is None:
+            self.population = data.title
+        self._rescale(state)
+
+    # --- global data -----------------------------------------------------
+    def set_gender(self, gender: str) -> None:
+        gender = _check_choice(gender, GENDERS, "gender")
+        self._remember()
+        self.gender = gender
+        for state in self.groups.values():
+            self._rescale(state)
+        self._reset_globals()
+
+    def set_figure_type(self, figure_type: str) -> None:
+        self._remember()
+        self.figure_type = _check_choice(figure_type, FIGURE_TYPES, "figure type")
+
+    def set_mass(self, kg: float) -> None:
+        if not kg > 0:
+            raise FigureError(f"mass must be positive, got {kg:g} kg")
+        self._remember()
+        self.mass = float(kg)
+        self.mass_percentile = self._global_percentile("mass", kg)
+
+    def set_mass_percentile(self, p: float) -> None:
+        check_percentile(p)
+        self._remember()
+        self.mass_percentile = float(p)
+        self.mass = self._global_value("mass", p)
+
+    def set_stature(self, cm: float) -> None:
+        if not cm > 0:
+            raise FigureError(f"stature must be positive, got {cm:g} cm")
+        self._remember()
+        self.stature = float(cm)
+        self.stature_percentile = self._global_percentile("stature", cm)
+
+    def set_stature_percentile(self, p: float) -> None:
+        check_percentile(p)
+        self._remember()
+        self.stature_percentile = float(p)
+        self.stature = self._global_value("stature", p)
+
+    def set_strength_parameter(self, name: str, value) -> None:
+        self._remember()
+        if name == "strength_type":
+            self.strength_type = _check_choice(value, STRENGTH_TYPES, "strength type")
+        elif name == "handedness":
+            self.handedness = _check_choice(value, HANDEDNESS, "handedness")
+        elif name in ("motion_speed", "training_level", "fatigue_level"):
+            number = float(value)
+            if number < 0:
+                raise FigureError(f"{name.replace('_', ' ')} cannot be negative")
+            setattr(self, name, number)
+        else:
+            raise FigureError(f"unknown strength parameter {name!r}")
+
+    # --- group data ------------------------------------------------------
+    def set_group_percentile(self, group: str, p: float) -> None:
+        check_percentile(p)
+        self._remember()
+        state = self.groups[group]
+        state.percentile = float(p)
+        self._rescale(state)
+
+    def set_value(self, group: str, row: int, axis: int, value: float) -> None:
+        """Set one cell's value (canonical unit); its percentile follows."""
+        state = self._cell(group, row, axis)
+        self._remember()
+        state.values[row, axis] = value
+        stats = self._stats(state)
+        state.percentiles[row, axis] = percentile_of(stats[row, axis], value)
+
+    def set_cell_percentile(self, group: str, row: int, axis: int, p: float) -> None:
+        """Set one cell's percentile; its value follows."""
+        check_percentile(p)
+        state = self._cell(group, row, axis)
+        self._remember()
+        stats = self._stats(state)
+        state.values[row, axis] = value_at(stats[row, axis], p)
+        state.percentiles[row, axis] = p
+
+    def set_unit(self, group: str, unit: str) -> None:
+        if unit not in GROUP_UNITS[group]:
+            raise FigureError(f"{GROUP_TITLES[group]} is shown in "
+                              f"{' or '.join(GROUP_UNITS[group])}, not {unit}")
+        self.groups[group].unit = unit
+
+    # --- derived data ----------------------------------------------------
+    def segment_masses(self) -> list[tuple[str, float]]:
+        """(variable, kg) per appendix K fraction of the total mass."""
+        return [(name, fraction * self.mass) for name, fraction in MASS_FRACTIONS]
+
+    def value(self, group: str, row_name: str, axis: int) -> float:
+        state = self.groups[group]
+        index = [r.name for r in state.rows].index(row_name)
+        return float(state.values[index, axis])
+
+    def missing_groups(self) -> list[str]:
+        return [GROUP_TITLES[g] for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)
+                if not self.groups[g].loaded]
+
+    # --- undo --------------------------------------------------------------
+    def undo(self) -> bool:
+        """Go back one edit.  False when there is nothing to undo."""
+        if not self._history:
+            return False
+        snapshot = self._history.pop()
+        history = self._history
+        self.__dict__.update(snapshot)
+        self._history = history
+        return True
+
+    def _remember(self) -> None:
+        state = {k: copy.deepcopy(v) if k == "groups" else v
+                 for k, v in self.__dict__.items() if k != "_history"}
+        self._history.append(state)
+        del self._history[:-100]
+
+    # --- internals -----------------------------------------------------------
+    def _rescale(self, state: GroupState) -> None:
+        if state.source is None or not state.source.has(self.gender):
+            state.values = state.percentiles = None
+            return
+        stats = state.source.stats(self.gender)
+        state.values = value_at(stats, state.percentile)
+        state.percentiles = np.where(np.isnan(state.values), np.nan, state.percentile)
+
+    def _stats(self, state: GroupState) -> np.ndarray:
+        return state.source.stats(self.gender)
+
+    def _cell(self, group: str, row: int, axis: int) -> GroupState:
+        state = self.groups[group]
+        if not state.loaded:
+            raise FigureError(f"{GROUP_TITLES[group]} has no {self.gender} data loaded")
+        if np.isnan(self._stats(state)[row, axis, 1]):
+            what = "no motion about this axis" if group == JOINT_LIMITS else "no value here"
+            raise FigureError(f"{state.rows[row].label} {'xyz'[axis]}: {what}")
+        return state
+
+    def _reset_globals(self) -> None:
+        if self.global_stats is None or not self.global_stats.has(self.gender):
+            return
+        self.mass = self._global_value("mass", self.mass_percentile)
+        self.stature = self._global_value("stature", self.stature_percentile)
+
+    def _global_stats_row(self, name: str) -> np.ndarray:
+        if self.global_stats is None or not self.global_stats.has(self.gender):
+            raise FigureError(f"no {self.gender} {name} statistics loaded")
+        index = [r.name for r in ROWS[GLOBAL]].index(name)
+        return self.global_stats.stats(self.gender)[index, 0]
+
+    def _global_value(self, name: str, p: float) -> float:
+        return float(value_at(self._global_stats_row(name), p))
+
+    def _global_percentile(self, name: str, value: float) -> float:
+        try:
+            return float(percentile_of(self._global_stats_row(name), value))
+        except FigureError:
+            return float("nan")
+
+
+def _check_choice(value: str, choices: tuple[str, ...], what: str) -> str:
+    word = str(value).strip().lower()
+    for choice in choices:
+        if word == choice or (len(word) >= 1 and choice.startswith(word) and
+                              sum(c.startswith(word) for c in choices) == 1):
+            return choice
+    raise FigureError(f"{what} must be {', '.join(choices[:-1])} or {choices[-1]}, "
+                      f"not {str(value).strip()!r}")
+

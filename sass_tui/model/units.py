@@ -1,0 +1,114 @@
+"""Units: one pint registry for the whole program, built once from units.txt.
+
+Users type units the way the report does ("12in", "30deg", "17.98 ft-lb",
+"24 N-m"); pint would read "ft-lb" as feet minus pounds, so unit spellings are
+mapped to registry names before pint sees them.
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+import pint
+
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH
+
+
+class UnitError(ValueError):
+    """A value or unit the user typed cannot be used here."""
+
+
+@lru_cache(maxsize=1)
+def registry() -> pint.UnitRegistry:
+    return pint.UnitRegistry(str(Path(__file__).with_name("units.txt")), cache_folder=None)
+
+
+# Display spelling -> registry name.  Keys are compared after lower-casing,
+# except where case matters (N vs n is unambiguous here, so all are lower-case).
+_ALIASES = {
+    "cm": "cm", "centimeter": "cm", "centimeters": "cm", "centimetre": "cm", "centimetres": "cm",
+    "mm": "mm", "millimeter": "mm", "millimeters": "mm",
+    "m": "m", "meter": "m", "meters": "m", "metre": "m", "metres": "m",
+    "in": "in", "inch": "in", "inches": "in", '"': "in",
+    "ft": "ft", "foot": "ft", "feet": "ft",
+    "deg": "deg", "degree": "deg", "degrees": "deg", "°": "deg",
+    "rad": "rad", "radian": "rad", "radians": "rad",
+    "kg": "kg", "kilogram": "kg", "kilograms": "kg",
+    "g": "g", "gram": "g", "grams": "g",
+    "lb": "lb", "lbs": "lb", "pound": "lb", "pounds": "lb",
+    "ft-lb": "ft_lb", "ft-lbf": "ft_lb", "ft·lb": "ft_lb", "ft·lbf": "ft_lb", "ftlb": "ft_lb",
+    "ft-lbs": "ft_lb", "ft*lbf": "ft_lb", "ft*lb": "ft_lb", "lbf-ft": "ft_lb", "lb-ft": "ft_lb",
+    "n-m": "N_m", "n·m": "N_m", "nm": "N_m", "n*m": "N_m", "n m": "N_m",
+    "deg/s": "deg/s", "°/s": "deg/s", "rad/s": "rad/s",
+}
+
+# Registry name -> how the program prints it.
+DISPLAY = {"cm": "cm", "in": "in", "deg": "deg", "rad": "rad", "kg": "kg", "lb": "lb",
+           "ft_lb": "ft-lb", "N_m": "N-m", "mm": "mm", "m": "m", "ft": "ft", "g": "g",
+           "deg/s": "deg/s", "rad/s": "rad/s"}
+
+# Each group's canonical (stored) unit and the one it converts to.
+GROUP_UNITS = {
+    GIRTH: ("cm", "in"),
+    JOINT_LIMITS: ("deg", "rad"),
+    CENTER_OF_MASS: ("cm", "in"),
+    STRENGTH: ("ft_lb", "N_m"),
+}
+
+_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+def unit_name(text: str) -> str:
+    """Map a typed unit spelling to the registry's name, or raise UnitError."""
+    key = re.sub(r"\s+", " ", text.strip()).lower()
+    if key in _ALIASES:
+        return _ALIASES[key]
+    raise UnitError(f"unknown unit {text.strip()!r}")
+
+
+def parse_quantity(text: str, unit: str) -> float:
+    """Read "12", "12in", "12 in", "0.5 rad", "24 N·m" as a number in `unit`.
+
+    A bare number is taken to be in `unit` already.  A unit of the wrong
+    dimension, or text that is not a number, raises UnitError.
+    """
+    match = _NUMBER.match(text)
+    if not match:
+        raise UnitError(f"expected a number with an optional unit, got {text.strip()!r}")
+    value = float(match.group(1))
+    if not match.group(2):
+        return value
+    given = unit_name(match.group(2))
+    return convert(value, given, unit)
+
+
+def convert(value, from_unit: str, to_unit: str):
+    """Convert a number or numpy array between registry units (NaN stays NaN)."""
+    if from_unit == to_unit:
+        return value
+    ureg = registry()
+    try:
+        factor = ureg.Quantity(1.0, from_unit).to(to_unit).magnitude
+    except pint.DimensionalityError:
+        raise UnitError(
+            f"{DISPLAY.get(from_unit, from_unit)} is not a unit of "
+            f"{_dimension_word(to_unit)} (expected e.g. {DISPLAY.get(to_unit, to_unit)})"
+        ) from None
+    if isinstance(value, np.ndarray):
+        return value * factor
+    return value * factor
+
+
+def _dimension_word(unit: str) -> str:
+    return {"cm": "length", "in": "length", "mm": "length", "m": "length",
+            "deg": "angle", "rad": "angle", "kg": "mass", "lb": "mass",
+            "ft_lb": "torque", "N_m": "torque", "deg/s": "angular speed"}.get(unit, unit)
+
+
+def other_unit(group: str, unit: str) -> str:
+    """The unit the group's conversion command switches to."""
+    a, b = GROUP_UNITS[group]
+    return b if unit == a else a
