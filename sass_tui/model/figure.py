@@ -170,6 +170,10 @@ class Figure:
         state.values[row, axis] = value_at(stats[row, axis], p)
         state.percentiles[row, axis] = p
 
+    def check_cell(self, group: str, row: int, axis: int) -> None:
+        """Raise FigureError when the cell cannot be edited (no data, or 999)."""
+        self._cell(group, row, axis)
+
     def set_unit(self, group: str, unit: str) -> None:
         if unit not in GROUP_UNITS[group]:
             raise FigureError(f"{GROUP_TITLES[group]} is shown in "
@@ -197,8 +201,12 @@ class Figure:
             return False
         snapshot = self._history.pop()
         history = self._history
+        # Display units are a view setting, not an edit: undo keeps the current ones.
+        units = {group: state.unit for group, state in self.groups.items()}
         self.__dict__.update(snapshot)
         self._history = history
+        for group, unit in units.items():
+            self.groups[group].unit = unit
         return True
 
     def _remember(self) -> None:
