@@ -51,24 +51,22 @@ def girth_variables(figure) -> list[tuple[str, float, str]]:
     return out
 
 
-def joint_limit_variables(figure) -> list[tuple[str, float, str]]:
-    state = figure.groups[JOINT_LIMITS]
+def _axis_variables(figure, group: str, variable_name, unit: str) -> list[tuple[str, float, str]]:
+    """One variable per row and axis that has a value (999 = none, left out)."""
     out = []
-    for row, values in zip(ROWS[JOINT_LIMITS], state.values):
+    for row, values in zip(ROWS[group], figure.groups[group].values):
         for axis, value in zip(AXES, values):
-            if not math.isnan(value):  # 999: no motion about this axis
-                out.append((joint_limit_variable(row.name, axis), value, "deg"))
+            if not math.isnan(value):
+                out.append((variable_name(row.name, axis), value, unit))
     return out
+
+
+def joint_limit_variables(figure) -> list[tuple[str, float, str]]:
+    return _axis_variables(figure, JOINT_LIMITS, joint_limit_variable, "deg")
 
 
 def center_of_mass_variables(figure) -> list[tuple[str, float, str]]:
-    state = figure.groups[CENTER_OF_MASS]
-    out = []
-    for row, values in zip(ROWS[CENTER_OF_MASS], state.values):
-        for axis, value in zip(AXES, values):
-            if not math.isnan(value):
-                out.append((center_of_mass_variable(row.name, axis), value, "cm"))
-    return out
+    return _axis_variables(figure, CENTER_OF_MASS, center_of_mass_variable, "cm")
 
 
 def render_fig(figure, extra_sections: list[tuple[str, list[tuple[str, float, str]]]] = ()) -> str:
