@@ -74,11 +74,18 @@ def cmd_fig(args: argparse.Namespace) -> int:
     from sass_tui.model.figfile import default_fig_name, write_fig
 
     figure, warnings = figure_from_args(args)
+    extra_sections = []
+    if not args.no_strength:
+        from sass_tui.model.strength import StrengthSheet, fig_section, read_strength_file
+
+        strength = read_strength_file(args.strength)
+        warnings += strength.warnings
+        extra_sections.append(fig_section(StrengthSheet(strength, figure)))
     for warning in warnings:
         print(f"warning: {warning}", file=sys.stderr)
     out = args.output or default_fig_name(
         figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
-    write_fig(figure, out)
+    write_fig(figure, out, extra_sections)
     print(f"wrote {out}")
     return 0
 
@@ -92,7 +99,17 @@ def build_parser() -> argparse.ArgumentParser:
     fig.add_argument("-o", "--output", metavar="OUT.fig",
                      help="output file (default: the report's MALE50.FIG convention)")
     add_figure_options(fig)
+    strength = fig.add_mutually_exclusive_group()
+    strength.add_argument("--strength", metavar="F",
+                          help="strength file for the strength variables (default datasets/strength.dat)")
+    strength.add_argument("--no-strength", action="store_true", help="leave strength out")
     fig.set_defaults(func=cmd_fig)
+    from sass_tui.cli_export import add_export_command
+
+    add_export_command(commands)
+    from sass_tui.cli_strength import add_strength_command
+
+    add_strength_command(commands)
     return parser
 
 

@@ -1,0 +1,554 @@
+"""HAnim export: the figure as an ISO/IEC 19774 humanoid (LOA-1) in X3D XML.
+
+The construction (joint centres from the segment dimensions, joint-limit axes,
+solid approximations for inertia, sites) is documented in docs/hanim.md; the
+comments here say why a choice was made, that page says what it gives.
+No Textual import: the CLI and the TUI both call export_hanim().
+"""
+
+from __future__ import annotations
+
+import math
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from sass_tui.model.atomic import write_text_atomic
+from sass_tui.model.figfile import FigureIncompleteError
+from sass_tui.model.names import (
+    CENTER_OF_MASS, GIRTH, JOINT_LIMITS, MASS_FRACTIONS, ROWS, row_index)
+
+HANIM_VERSION = "2.0"
+
+# Figure 4.10 (clause 4.9.6.1): joint, its segment, its parent joint.
+LOA1: tuple[tuple[str, str, str | None], ...] = (
+    ("humanoid_root", "sacrum", None),
+    ("sacroiliac", "pelvis", "humanoid_root"),
+    ("l_hip", "l_thigh", "sacroiliac"),
+    ("l_knee", "l_calf", "l_hip"),
+    ("l_talocrural", "l_talus", "l_knee"),
+    ("l_metatarsophalangeal_2", "l_tarsal_proximal_phalanx_2", "l_talocrural"),
+    ("r_hip", "r_thigh", "sacroiliac"),
+    ("r_knee", "r_calf", "r_hip"),
+    ("r_talocrural", "r_talus", "r_knee"),
+    ("r_metatarsophalangeal_2", "r_tarsal_proximal_phalanx_2", "r_talocrural"),
+    ("vl5", "l5", "humanoid_root"),
+    ("skullbase", "skull", "vl5"),
+    ("l_shoulder", "l_upperarm", "vl5"),
+    ("l_elbow", "l_forearm", "l_shoulder"),
+    ("l_radiocarpal", "l_carpal", "l_elbow"),
+    ("r_shoulder", "r_upperarm", "vl5"),
+    ("r_elbow", "r_forearm", "r_shoulder"),
+    ("r_radiocarpal", "r_carpal", "r_elbow"),
+)
+SEGMENT_OF = {joint: segment for joint, segment, _ in LOA1}
+
+# BODY.FIG (appendix D) hangs the head on the neck's distal site, at this
+# fraction of the neck length above the base of the neck.
+NECK_DISTAL_FRACTION = 0.4620
+# Appendix L.1: the anklebone lies 0.2516 foot lengths in front of the heel.
+HEEL_BEHIND_ANKLE = 0.2516
+
+# Which App. K mass variables each HAnim segment carries.  Every variable is
+# used exactly once, so the segment masses add up to the figure's mass.
+SEGMENT_MASSES: dict[str, tuple[str, ...]] = {
+    "sacrum": ("bodyrootmass",),
+    "pelvis": ("ltorsomass", "rhipmass", "lhipmass"),
+    "l5": ("ctorsomass", "uptorsomass", "neckmass", "rclavmass", "lclavmass",
+           "rsternummass", "lsternummass"),
+    "skull": ("botheadmass", "topheadmass", "reyemass", "leyemass"),
+}
+for _side, _s in (("l", "l"), ("r", "r")):
+    SEGMENT_MASSES.update({
+        f"{_side}_thigh": (f"{_s}uplegmass",),
+        f"{_side}_calf": (f"{_s}lowlegmass",),
+        f"{_side}_talus": (f"{_s}footmass",),
+        f"{_side}_tarsal_proximal_phalanx_2": (f"{_s}toesmass",),
+        f"{_side}_upperarm": (f"{_s}uparmmass",),
+        f"{_side}_forearm": (f"{_s}lowarmmass",),
+        f"{_side}_carpal": (f"{_s}handmass", f"{_s}fingersmass"),
+    })
+
+_X, _Y, _Z = np.eye(3)
+
+# Joint-limit frames.  SASS names its axes per joint: x = the antero-posterior
+# axis (abduction, lateral bending, radial deviation, supination), y = the
+# medio-lateral axis (flexion), z = the long axis (rotation), each signed so
+# that the upper limit is the motion appendix G names first.  Here each axis is
+# given in HAnim humanoid coordinates (+X left, +Y up, +Z front) with the sign
+# that makes a positive rotation that motion.  SASS's signs do not always form
+# a right-handed frame (a mirror cannot be a rotation): the frame's z is then
+# x cross y and the rotation limits on it are negated and swapped.
+# (HAnim joint, SASS joint row stem, x axis, y axis, anatomical z axis or None)
+_LIMIT_AXES: tuple[tuple[str, str, np.ndarray, np.ndarray, np.ndarray | None], ...] = (
+    ("vl5", "waist", _Z, _X, _Y),                 # bend right, bend forward, twist left
+    ("skullbase", "neck", _Z, _X, -_Y),           # lateral right, flexion, rotation right
+    ("l_shoulder", "left_shoulder", _Z, -_X, _Y),  # abduction, flexion, lateral rotation
+    ("r_shoulder", "right_shoulder", -_Z, -_X, -_Y),
+    ("l_elbow", "left_elbow", _Z, -_X, None),      # flexion only
+    ("r_elbow", "right_elbow", -_Z, -_X, None),
+    # palms face the thighs (4.8.2), so the thumb points to +Z
+    ("l_radiocarpal", "left_wrist", -_X, -_Z, -_Y),  # radial, flexion, pronation
+    ("r_radiocarpal", "right_wrist", -_X, _Z, _Y),
+    ("l_hip", "left_hip", _Z, -_X, _Y),            # abduction, flexion, lateral rotation
+    ("r_hip", "right_hip", -_Z, -_X, -_Y),
+    ("l_knee", "left_knee", _Z, _X, None),         # flexion (the shank goes back)
+    ("r_knee", "right_knee", -_Z, _X, None),
+    ("l_talocrural", "left_ankle", -_Z, -_X, _Y),  # supination, dorsiflexion, lateral rotation
+    ("r_talocrural", "right_ankle", _Z, -_X, -_Y),
+    # BODY.FIG gives the ball of the foot the elbow's R(0,1,0): toes up
+    ("l_metatarsophalangeal_2", "left_ball_of_foot", -_Z, -_X, None),
+    ("r_metatarsophalangeal_2", "right_ball_of_foot", _Z, -_X, None),
+)
+
+
+class HAnimError(ValueError):
+    """The figure cannot be exported as a humanoid."""
+
+
+@dataclass
+class Limits:
+    sass_joint: str
+    frame: np.ndarray  # 3x3, columns = the limit frame's axes in humanoid coordinates
+    upper: list[float]  # radians about the frame's x, y, z
+    lower: list[float]
+    mirrored_z: bool
+
+    @property
+    def orientation(self) -> tuple[float, float, float, float]:
+        return axis_angle(self.frame)
+
+
+@dataclass
+class Segment:
+    name: str
+    mass: float  # kg
+    center_of_mass: np.ndarray  # m, humanoid coordinates
+    inertia: np.ndarray  # 3x3 kg m^2 about the centre of mass
+    shapes: list[tuple[str, np.ndarray, np.ndarray]] = field(default_factory=list)
+    # (box|ellipsoid, centre, full size along X, Y, Z)
+
+
+@dataclass
+class Site:
+    name: str
+    segment: str
+    translation: np.ndarray
+    rotation: tuple[float, float, float, float] = (0.0, 0.0, 1.0, 0.0)
+
+
+@dataclass
+class Humanoid:
+    """The LOA-1 humanoid SASS's figure becomes; all lengths in metres."""
+
+    name: str
+    info: list[str]
+    centers: dict[str, np.ndarray]
+    segments: dict[str, Segment]
+    limits: dict[str, Limits]
+    sites: list[Site]
+
+
+# --- construction ------------------------------------------------------------
+
+def build_humanoid(figure) -> Humanoid:
+    missing = figure.missing_groups()
+    if missing:
+        raise FigureIncompleteError(
+            f"cannot export a humanoid: {', '.join(missing)} not loaded for {figure.gender}")
+    if not figure.mass > 0:
+        raise HAnimError("cannot export a humanoid: the figure has no mass")
+    girth = _rows(figure, GIRTH) / 100.0  # cm -> m
+    if np.isnan(girth).any():
+        bad = [ROWS[GIRTH][i].label for i in np.unique(np.nonzero(np.isnan(girth))[0])]
+        raise HAnimError(f"cannot export a humanoid: no segment dimensions for {', '.join(bad)}")
+    dim = {row.name: girth[i] for i, row in enumerate(ROWS[GIRTH])}
+    centers = _joint_centers(dim)
+    segments = _segments(figure, dim, centers)
+    limits = _limits(figure)
+    sites = _sites(dim, centers)
+    return Humanoid(_humanoid_name(figure), _info(figure), centers, segments, limits, sites)
+
+
+def _rows(figure, group: str) -> np.ndarray:
+    return np.asarray(figure.groups[group].values, dtype=float)
+
+
+def _joint_centers(dim: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+    """Built upwards from the floor as BODY.FIG stacks the segments."""
+    c: dict[str, np.ndarray] = {}
+    for side, name in (("l", "left"), ("r", "right")):
+        sign = 1.0 if side == "l" else -1.0
+        foot, lower, upper = dim[f"{name}_foot"], dim[f"{name}_lower_leg"], dim[f"{name}_upper_leg"]
+        # hip centre in the middle of the thigh's width, inside the lower torso
+        x = sign * (dim["lower_torso"][1] - upper[1]) / 2
+        ankle = foot[2]  # foot z: the ankle height
+        c[f"{side}_talocrural"] = np.array([x, ankle, 0.0])
+        c[f"{side}_knee"] = np.array([x, ankle + lower[2], 0.0])
+        c[f"{side}_hip"] = np.array([x, ankle + lower[2] + upper[2], 0.0])
+        toes = dim[f"{name}_ball_of_foot"]
+        c[f"{side}_metatarsophalangeal_2"] = np.array(
+            [x, toes[2] / 2, (1 - HEEL_BEHIND_ANKLE) * foot[0]])
+    # flooroffset = rfootz + rlowlegz + ruplegz (appendix F)
+    floor_offset = c["r_hip"][1]
+    c["humanoid_root"] = np.array([0.0, floor_offset, 0.0])
+    c["sacroiliac"] = c["humanoid_root"].copy()
+    # SASS's waist joins the lower torso's distal end to the centre torso
+    c["vl5"] = np.array([0.0, floor_offset + dim["lower_torso"][2], 0.0])
+    neck_base = c["vl5"][1] + dim["center_torso"][2]
+    c["skullbase"] = np.array([0.0, neck_base + NECK_DISTAL_FRACTION * dim["neck"][2], 0.0])
+    # sternum (ctorsoy - clavz, psurf half widths) + clavicle = half the torso width
+    half_width = dim["center_torso"][1] / 2
+    for side, name in (("l", "left"), ("r", "right")):
+        sign = 1.0 if side == "l" else -1.0
+        shoulder = np.array([sign * half_width, neck_base, 0.0])
+        elbow = shoulder - _Y * dim[f"{name}_upper_arm"][2]
+        c[f"{side}_shoulder"], c[f"{side}_elbow"] = shoulder, elbow
+        c[f"{side}_radiocarpal"] = elbow - _Y * dim[f"{name}_lower_arm"][2]
+    return {joint: c[joint] for joint, _, _ in LOA1}
+
+
+# (segment, SASS girth/centre-of-mass row, joint whose centre is the SASS
+#  proximal site, long axis direction, depth (SASS x) direction, solid)
+def _segment_table() -> list[tuple[str, str | None, str, np.ndarray, np.ndarray, str]]:
+    table = [
+        ("sacrum", None, "humanoid_root", _Y, _Z, "none"),
+        ("pelvis", "lower_torso", "humanoid_root", _Y, _Z, "cylinder"),
+        ("l5", "center_torso", "vl5", _Y, _Z, "cylinder"),
+        ("skull", "bottom_head", "skullbase", _Y, _Z, "ellipsoid"),
+    ]
+    for side, name in (("l", "left"), ("r", "right")):
+        table += [
+            (f"{side}_thigh", f"{name}_upper_leg", f"{side}_hip", -_Y, _Z, "cylinder"),
+            (f"{side}_calf", f"{name}_lower_leg", f"{side}_knee", -_Y, _Z, "cylinder"),
+            (f"{side}_talus", f"{name}_foot", f"{side}_talocrural", -_Y, _Z, "box"),
+            (f"{side}_tarsal_proximal_phalanx_2", f"{name}_ball_of_foot",
+             f"{side}_metatarsophalangeal_2", _Z, _Y, "box"),
+            (f"{side}_upperarm", f"{name}_upper_arm", f"{side}_shoulder", -_Y, _Z, "cylinder"),
+            # palms face the thighs: the forearm and hand depth (SASS x) lies along X
+            (f"{side}_forearm", f"{name}_lower_arm", f"{side}_elbow", -_Y, _X, "cylinder"),
+            (f"{side}_carpal", f"{name}_hand", f"{side}_radiocarpal", -_Y, _X, "box"),
+        ]
+    return table
+
+
+def _segments(figure, dim, centers) -> dict[str, Segment]:
+    fractions = dict(MASS_FRACTIONS)
+    com_rows = {row.name: i for i, row in enumerate(ROWS[CENTER_OF_MASS])}
+    com_values = _rows(figure, CENTER_OF_MASS) / 100.0
+    segments: dict[str, Segment] = {}
+    for name, row, joint, long_axis, depth_axis, solid in _segment_table():
+        mass = figure.mass * sum(fractions[v] for v in SEGMENT_MASSES[name])
+        origin = centers[joint]
+        width_axis = np.abs(np.cross(long_axis, depth_axis))
+        shapes = _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers)
+        # size along X, Y, Z of the principal solid (first shape)
+        size = shapes[0][2] if shapes else np.zeros(3)
+        if row in com_rows and not np.isnan(com_values[com_rows[row]]).any():
+            cx, cy, cz = com_values[com_rows[row]]
+            com = origin + cz * long_axis + cx * depth_axis + cy * width_axis
+        elif shapes:  # the toes: appendix L.1 gives them no centre of mass (nor mass)
+            com = shapes[0][1].copy()
+        else:
+            com = origin.copy()
+        segments[name] = Segment(name, mass, com, _inertia(solid, mass, size, long_axis), shapes)
+    return segments
+
+
+def _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers):
+    """Boxes and ellipsoids in place (humanoid coordinates), one per SASS psurf."""
+    if row is None:
+        return []
+    depth, width, length = dim[row]
+
+    def along(start, extent_long, d, w):
+        size = np.abs(depth_axis) * d + width_axis * w + np.abs(long_axis) * extent_long
+        return start + long_axis * extent_long / 2, size
+
+    if name.endswith("_talus"):
+        # foot x is heel to ball, z the ankle height: the box stands on the floor
+        size = np.array([width, length, depth])
+        centre = origin + np.array([0, -length / 2, (0.5 - HEEL_BEHIND_ANKLE) * depth])
+        return [("box", centre, size)]
+    if name.startswith(("l_tarsal", "r_tarsal")):
+        size = np.array([width, length, depth])
+        centre = origin + np.array([0, 0, depth / 2])
+        return [("box", centre, size)]
+    if name == "skull":
+        centre, size = along(origin, length, depth, width)
+        return [("ellipsoid", centre, size)]
+    centre, size = along(origin, length, depth, width)
+    shapes = [("box", centre, size)]
+    if name == "l5":  # the neck, up to the skull base where BODY.FIG hangs the head
+        neck = dim["neck"]
+        neck_base = origin + long_axis * length
+        extent = centers["skullbase"][1] - neck_base[1]
+        c, s = along(neck_base, extent, neck[0], neck[1])
+        shapes.append(("box", c, s))
+    if name.endswith("_carpal"):  # the fingers (knuckles row) below the hand
+        side = "left" if name[0] == "l" else "right"
+        fingers = dim[f"{side}_knuckles"]
+        c, s = along(origin + long_axis * length, fingers[2], fingers[0], fingers[1])
+        shapes.append(("box", c, s))
+    return shapes
+
+
+def _inertia(solid: str, mass: float, size: np.ndarray, long_axis: np.ndarray) -> np.ndarray:
+    """Principal moments (kg m^2) of a homogeneous solid of the segment's size."""
+    sx, sy, sz = size
+    if solid == "none" or mass == 0:
+        return np.zeros((3, 3))
+    if solid == "box":
+        moments = mass / 12 * np.array([sy**2 + sz**2, sx**2 + sz**2, sx**2 + sy**2])
+    elif solid == "ellipsoid":
+        a, b, c = size / 2
+        moments = mass / 5 * np.array([b**2 + c**2, a**2 + c**2, a**2 + b**2])
+    else:  # elliptic cylinder along the long axis
+        semi = size / 2
+        along = int(np.argmax(np.abs(long_axis)))
+        moments = np.empty(3)
+        for axis in range(3):
+            others = [i for i in range(3) if i != axis]
+            if axis == along:
+                moments[axis] = mass / 4 * sum(semi[i] ** 2 for i in others)
+            else:
+                (cross,) = [i for i in others if i != along]
+                moments[axis] = mass * (semi[cross] ** 2 / 4 + size[along] ** 2 / 12)
+    return np.diag(moments)
+
+
+def _limits(figure) -> dict[str, Limits]:
+    values = np.radians(_rows(figure, JOINT_LIMITS))
+    out: dict[str, Limits] = {}
+    for joint, stem, x_axis, y_axis, z_anatomical in _LIMIT_AXES:
+        frame = np.column_stack([x_axis, y_axis, np.cross(x_axis, y_axis)])
+        upper_row = values[row_index(JOINT_LIMITS, f"{stem}_ul")]
+        lower_row = values[row_index(JOINT_LIMITS, f"{stem}_ll")]
+        # 999 (NaN): SASS allows no motion about the axis, so both limits are 0
+        upper = [0.0 if math.isnan(v) else float(v) for v in upper_row]
+        lower = [0.0 if math.isnan(v) else float(v) for v in lower_row]
+        mirrored = z_anatomical is not None and float(frame[:, 2] @ z_anatomical) < 0
+        if mirrored:
+            upper[2], lower[2] = -lower[2], -upper[2]
+        out[joint] = Limits(stem, frame, upper, lower, mirrored)
+    return out
+
+
+def _sites(dim, centers) -> list[Site]:
+    head = dim["bottom_head"]
+    eyes = dim["eye_location"]  # x: head depth to the eyes, y: half the eye spacing, z: above the chin
+    base = centers["skullbase"]
+    # BODY.FIG's head psurf starts at the chin, on the neck's distal site
+    eye_height = base[1] + eyes[2]
+    front = eyes[0] / 2
+    # the eye sites look where the humanoid looks (4.6): a camera's -Z turned to +Z
+    looking_front = (0.0, 1.0, 0.0, math.pi)
+    sites = [
+        Site("skull_vertex_pt", "skull", base + _Y * head[2]),
+        Site("sellion_pt", "skull", np.array([0.0, eye_height, front])),
+        Site("x_l_eye_pt", "skull", np.array([eyes[1], eye_height, front]), looking_front),
+        Site("x_r_eye_pt", "skull", np.array([-eyes[1], eye_height, front]), looking_front),
+    ]
+    for side, name in (("l", "left"), ("r", "right")):
+        sign = 1.0 if side == "l" else -1.0
+        shoulder = centers[f"{side}_shoulder"]
+        sites.append(Site(f"{side}_acromion_pt", "l5",
+                          shoulder + _X * sign * dim[f"{name}_upper_arm"][1] / 2))
+        tip = centers[f"{side}_radiocarpal"] - _Y * (dim[f"{name}_hand"][2] + dim[f"{name}_knuckles"][2])
+        sites.append(Site(f"{side}_dactylion_pt", f"{side}_carpal", tip))
+        ankle = centers[f"{side}_talocrural"]
+        heel = np.array([ankle[0], 0.0, -HEEL_BEHIND_ANKLE * dim[f"{name}_foot"][0]])
+        sites.append(Site(f"{side}_calcaneus_posterior_pt", f"{side}_talus", heel))
+    return sites
+
+
+def _humanoid_name(figure) -> str:
+    who = figure.person or f"{figure.gender}_{figure.groups[GIRTH].percentile:g}"
+    return "".join(ch if ch.isalnum() else "_" for ch in who).strip("_") or "sass_figure"
+
+
+def _info(figure) -> list[str]:
+    groups = figure.groups
+    info = []
+    if figure.person:
+        info.append(f"person={figure.person}")
+    info += [
+        f"population={figure.population}",
+        f"gender={figure.gender}",
+        f"girthPercentile={groups[GIRTH].percentile:g}",
+        f"jointLimitPercentile={groups[JOINT_LIMITS].percentile:g}",
+        f"centerOfMassPercentile={groups[CENTER_OF_MASS].percentile:g}",
+        f"mass={figure.mass:.2f} kg (percentile {figure.mass_percentile:.3g})",
+        f"stature={figure.stature:.1f} cm (percentile {figure.stature_percentile:.3g})",
+        "generator=sass (Spreadsheet Anthropometry Scaling System)",
+        "construction=docs/hanim.md",
+    ]
+    return info
+
+
+# --- rotations ---------------------------------------------------------------
+
+def axis_angle(matrix: np.ndarray) -> tuple[float, float, float, float]:
+    """X3D SFRotation (axis, angle) of a proper rotation matrix."""
+    r = np.asarray(matrix, dtype=float)
+    cos = np.clip((np.trace(r) - 1) / 2, -1.0, 1.0)
+    angle = math.acos(cos)
+    if angle < 1e-9:
+        return (0.0, 0.0, 1.0, 0.0)
+    if math.pi - angle < 1e-6:
+        # sin(angle) ~ 0: read the axis from the symmetric part, R = 2aa^T - I
+        outer = (r + np.eye(3)) / 2
+        k = int(np.argmax(np.diag(outer)))
+        axis = outer[:, k] / math.sqrt(outer[k, k])
+    else:
+        axis = np.array([r[2, 1] - r[1, 2], r[0, 2] - r[2, 0], r[1, 0] - r[0, 1]])
+    axis = axis / np.linalg.norm(axis)
+    return (float(axis[0]), float(axis[1]), float(axis[2]), angle)
+
+
+def rotation_matrix(axis, angle: float) -> np.ndarray:
+    """Rodrigues' formula (the inverse of axis_angle)."""
+    a = np.asarray(axis, dtype=float)
+    a = a / np.linalg.norm(a)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * (k @ k)
+
+
+# --- X3D ---------------------------------------------------------------------
+
+def _num(value: float) -> str:
+    text = f"{value:.6f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def _vec(values) -> str:
+    return " ".join(_num(v) for v in values)
+
+
+def _mfstring(values: list[str]) -> str:
+    return " ".join('"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"' for v in values)
+
+
+SKIN = {"male": "0.80 0.62 0.50", "female": "0.86 0.66 0.58"}
+
+
+def humanoid_element(humanoid: Humanoid, gender: str, prefix: str = "hanim_") -> ET.Element:
+    """The HAnimHumanoid node; `prefix` keeps DEF names unique in a shared scene."""
+    root = ET.Element("HAnimHumanoid", {
+        "DEF": f"{prefix}humanoid", "name": humanoid.name, "version": HANIM_VERSION,
+        "skeletalConfiguration": "BASIC", "info": _mfstring(humanoid.info)})
+    appearance_def = f"{prefix}skin"
+    joints: dict[str, ET.Element] = {}
+    first_shape = True
+    sites_by_segment: dict[str, list[Site]] = {}
+    for site in humanoid.sites:
+        sites_by_segment.setdefault(site.segment, []).append(site)
+    for joint, segment_name, parent in LOA1:
+        attrs = {"DEF": f"{prefix}{joint}", "name": joint, "center": _vec(humanoid.centers[joint])}
+        if parent is None:
+            attrs["containerField"] = "skeleton"
+        limits = humanoid.limits.get(joint)
+        if limits is not None:
+            attrs["limitOrientation"] = _vec(limits.orientation)
+            attrs["ulimit"] = _vec(limits.upper)
+            attrs["llimit"] = _vec(limits.lower)
+        element = ET.SubElement(root if parent is None else joints[parent], "HAnimJoint", attrs)
+        joints[joint] = element
+        segment = humanoid.segments[segment_name]
+        seg = ET.SubElement(element, "HAnimSegment", {
+            "DEF": f"{prefix}{segment_name}", "name": segment_name,
+            "mass": _num(segment.mass), "centerOfMass": _vec(segment.center_of_mass),
+            "momentsOfInertia": _vec(segment.inertia.ravel())})
+        for kind, centre, size in segment.shapes:
+            if kind == "ellipsoid":
+                transform = ET.SubElement(seg, "Transform", {
+                    "translation": _vec(centre), "scale": _vec(size / 2)})
+                geometry = ("Sphere", {"radius": "1"})
+            else:
+                transform = ET.SubElement(seg, "Transform", {"translation": _vec(centre)})
+                geometry = ("Box", {"size": _vec(size)})
+            shape = ET.SubElement(transform, "Shape")
+            if first_shape:
+                appearance = ET.SubElement(shape, "Appearance", {"DEF": appearance_def})
+                ET.SubElement(appearance, "Material", {"diffuseColor": SKIN.get(gender, SKIN["male"])})
+                first_shape = False
+            else:
+                ET.SubElement(shape, "Appearance", {"USE": appearance_def})
+            ET.SubElement(shape, geometry[0], geometry[1])
+        for site in sites_by_segment.get(segment_name, []):
+            ET.SubElement(seg, "HAnimSite", {
+                "DEF": f"{prefix}{site.name}", "name": site.name,
+                "translation": _vec(site.translation), "rotation": _vec(site.rotation)})
+    for joint, _, _ in LOA1:
+        ET.SubElement(root, "HAnimJoint", {"USE": f"{prefix}{joint}", "containerField": "joints"})
+    for _, segment_name, _ in LOA1:
+        ET.SubElement(root, "HAnimSegment", {"USE": f"{prefix}{segment_name}",
+                                             "containerField": "segments"})
+    for site in humanoid.sites:
+        ET.SubElement(root, "HAnimSite", {"USE": f"{prefix}{site.name}", "containerField": "sites"})
+    return root
+
+
+def scene_document(humanoids: list[tuple[ET.Element, float]], title: str,
+                   height: float) -> str:
+    """An X3D 4.0 document holding humanoids side by side (x offsets in metres)."""
+    x3d = ET.Element("X3D", {
+        "profile": "Immersive", "version": "4.0",
+        "xmlns:xsd": "http://www.w3.org/2001/XMLSchema-instance",
+        "xsd:noNamespaceSchemaLocation": "https://www.web3d.org/specifications/x3d-4.0.xsd"})
+    head = ET.SubElement(x3d, "head")
+    ET.SubElement(head, "component", {"name": "HAnim", "level": "1"})
+    ET.SubElement(head, "meta", {"name": "title", "content": title})
+    ET.SubElement(head, "meta", {"name": "generator", "content": "sass export hanim"})
+    ET.SubElement(head, "meta", {"name": "reference",
+                                 "content": "ISO/IEC 19774-1:2019 HAnim, clause 4; SASS report, appendix D"})
+    scene = ET.SubElement(x3d, "Scene")
+    ET.SubElement(scene, "WorldInfo", {"title": title})
+    ET.SubElement(scene, "Background", {"skyColor": "1 1 1"})
+    ET.SubElement(scene, "NavigationInfo", {"type": '"EXAMINE" "ANY"'})
+    offsets = [x for _, x in humanoids]
+    span = max(offsets) - min(offsets)
+    middle = (max(offsets) + min(offsets)) / 2
+    # far enough back that the tallest figure and the whole row fit a 45 degree view
+    distance = 1.3 * max(height, span + 0.8)
+    # turned a little to the humanoid's left: a straight front view hides the arms
+    turn = 0.35
+    ET.SubElement(scene, "Viewpoint", {
+        "description": "front, three quarters",
+        "position": _vec((middle + distance * math.sin(turn), height / 2, distance * math.cos(turn))),
+        "orientation": _vec((0, 1, 0, turn)),
+        "centerOfRotation": _vec((middle, height / 2, 0))})
+    for element, x in humanoids:
+        if x:
+            transform = ET.SubElement(scene, "Transform", {"translation": _vec((x, 0, 0))})
+            transform.append(element)
+        else:
+            scene.append(element)
+    ET.indent(x3d)
+    body = ET.tostring(x3d, encoding="unicode")
+    return ('<?xml version="1.0" encoding="UTF-8"?>\n'
+            '<!DOCTYPE X3D PUBLIC "ISO//Web3D//DTD X3D 4.0//EN" '
+            '"https://www.web3d.org/specifications/x3d-4.0.dtd">\n' + body + "\n")
+
+
+def figure_title(figure) -> str:
+    if figure.person:
+        return f"{figure.person} ({figure.gender}) - SASS HAnim humanoid"
+    return (f"{figure.population}, {figure.gender}, girth percentile "
+            f"{figure.groups[GIRTH].percentile:g} - SASS HAnim humanoid")
+
+
+def render_hanim(figure) -> str:
+    humanoid = build_humanoid(figure)
+    height = float(humanoid.sites[0].translation[1])  # skull vertex
+    return scene_document([(humanoid_element(humanoid, figure.gender), 0.0)],
+                          figure_title(figure), height)
+
+
+def export_hanim(figure, path: str | Path) -> Path:
+    """Write the figure as an HAnim X3D file, atomically (the TUI's Export HAnim)."""
+    text = render_hanim(figure)
+    write_text_atomic(path, text)
+    return Path(path)

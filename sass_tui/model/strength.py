@@ -1,0 +1,675 @@
+"""Strength: the file format, lookup, the prediction equation and the modifiers
+(report §12.2.2-§12.2.4, figures 5 and 8; spec §2 "Strength").
+
+File format (figure 8):
+
+    P title
+    C comment
+    G MALE | G FEMALE        (starts a gender)
+    L RIGHT | L LEFT         (starts a limb side within it; data rows follow)
+    sx sy sz  ey  wx wy wz  value  percentile  /* motion[: note] */
+
+Angles in degrees, strength in ft-lb, 999 = no value.  The comment names the
+motion impetus; a motion may have many rows (configurations).  Errors and
+warnings follow popfile.py: a broken file is rejected whole with file:line,
+suspicious rows are warned about and loading goes on.
+
+Prediction (docs/model.md, "Strength"): per gender, side and motion,
+    ln S50 = b0 + sum_j (b_j t_j + c_j t_j^2),   t_j = angle_j / 100 deg,
+fitted by least squares over the stored configurations of that motion
+(values first brought to the 50th percentile with the coefficient of
+variation).  Every motion uses the same 15-column design so the whole page
+is predicted with one numpy expression.
+
+No Textual import here: the strength page asks a StrengthSheet for rows.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from sass_tui.model import datasets
+from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
+from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
+from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity
+
+NO_VALUE = 999.0
+GENDERS = ("male", "female")
+SIDES = ("right", "left")
+FILE_NAME = "strength.dat"
+
+# Display order of the strength page (one page of 14 rows); the row's joint
+# picks the fatigue curve.
+MOTIONS: tuple[Row, ...] = tuple(
+    Row(name, name.replace("_", " ").capitalize(), (name.replace("_", " "),))
+    for name in (
+        "shoulder_abduction", "shoulder_adduction", "shoulder_flexion", "shoulder_extension",
+        "shoulder_medial_rotation", "shoulder_lateral_rotation",
+        "elbow_flexion", "elbow_extension", "forearm_pronation", "forearm_supination",
+        "wrist_flexion", "wrist_extension", "wrist_radial_deviation", "wrist_ulnar_deviation",
+    )
+)
+MOTION_NAMES = tuple(m.name for m in MOTIONS)
+MOTION_JOINT = tuple(name.split("_")[0] for name in MOTION_NAMES)
+_MOTION_ALIASES = {"shoulder internal rotation": "shoulder_medial_rotation",
+                   "shoulder external rotation": "shoulder_lateral_rotation",
+                   "wrist radial abduction": "wrist_radial_deviation",
+                   "wrist ulnar adduction": "wrist_ulnar_deviation"}
+
+# The joint-angle columns of figure 8, and the joint-limit row/axis of each.
+JOINT_AXES = ("shoulder_x", "shoulder_y", "shoulder_z", "elbow_y",
+              "wrist_x", "wrist_y", "wrist_z")
+JOINT_AXIS_LABELS = ("Shoulder x", "Shoulder y", "Shoulder z", "Elbow y",
+                     "Wrist x", "Wrist y", "Wrist z")
+N_ANGLES = len(JOINT_AXES)
+N_FEATURES = 1 + 2 * N_ANGLES
+_ANGLE_SCALE = 100.0  # keeps t^2 near 1 so lstsq is well conditioned
+
+# --- documented constants (docs/model.md, "Strength") ----------------------
+# La Delfa & Potvin 2017, Applied Ergonomics 59:410-421.
+STRENGTH_CV = 0.277
+# Foley et al. 2025, Sci Rep, doi:10.1038/s41598-025-87413-w: dominant 11.6 % stronger.
+DEFAULT_NON_DOMINANT_FACTOR = 1.0 / 1.116
+# Shoulder flexion at 45 deg: 46.9 N-m concentric at 50 deg/s, 68.6 N-m static.
+ISOKINETIC_DECAY_PER_DEG_S = -math.log(46.9 / 68.6) / 50.0
+# No source found: an assumption, stated in docs/model.md.
+TRAINING_GAIN_PER_LEVEL = 0.10
+# Frey Law & Avin 2010, Ergonomics 53:109-129: endurance time (s) = b0 * f^b1.
+# The forearm and wrist have no fit there; they use the elbow's (assumption).
+ENDURANCE_POWER_MODEL = {"shoulder": (14.86, -1.83), "elbow": (17.98, -2.21),
+                         "forearm": (17.98, -2.21), "wrist": (17.98, -2.21)}
+
+
+class StrengthFileError(ValueError):
+    """The strength file breaks the format; nothing of it was loaded."""
+
+
+class StrengthError(ValueError):
+    """An angle, motion or parameter the strength model refuses."""
+
+
+# --- the file -------------------------------------------------------------
+
+@dataclass
+class StrengthSection:
+    """The rows of one `G gender` / `L side` section that can be used."""
+
+    gender: str
+    side: str
+    line: int
+    motions: np.ndarray  # (n,) index into MOTIONS
+    angles: np.ndarray  # (n, 7) deg
+    values: np.ndarray  # (n,) ft-lb at `percentiles`
+    percentiles: np.ndarray  # (n,)
+    lines: np.ndarray  # (n,) file line of each row
+    notes: list[str] = field(default_factory=list)
+
+
+@dataclass
+class StrengthData:
+    title: str
+    path: str
+    sections: dict[tuple[str, str], StrengthSection] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+    _models: dict = field(default_factory=dict, repr=False)
+
+    def section(self, gender: str, side: str) -> tuple[StrengthSection, bool]:
+        """The section for gender and side, or the other side's (measured=False)."""
+        if (gender, side) in self.sections:
+            return self.sections[(gender, side)], True
+        other = SIDES[1 - SIDES.index(side)]
+        if (gender, other) in self.sections:
+            return self.sections[(gender, other)], False
+        raise StrengthError(f"{self.path}: no {gender} strength data")
+
+    def model(self, gender: str, side: str) -> "StrengthModel":
+        section, _ = self.section(gender, side)
+        key = (section.gender, section.side)
+        if key not in self._models:
+            self._models[key] = StrengthModel(section)
+        return self._models[key]
+
+
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
+_WIDTH = N_ANGLES + 2
+_LAYOUT = "(shoulder x y z, elbow y, wrist x y z, strength value, percentile)"
+
+
+def default_path() -> Path:
+    return datasets.path(FILE_NAME)
+
+
+def read_strength_file(path: str | Path | None = None) -> StrengthData:
+    path = Path(path) if path is not None else default_path()
+    try:
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError:
+        text = path.read_text(encoding="latin-1")
+    except OSError as exc:
+        raise StrengthFileError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    return parse_strength_text(text, str(path))
+
+
+def motion_index(text: str) -> int:
+    """'shoulder abduction', 'Shoulder_Abduction', 'r shoulder abduction' -> row index."""
+    key = normalise_label(text).replace("_", " ")
+    key = re.sub(r"^(r|l|right|left) ", "", key)
+    key = _MOTION_ALIASES.get(key, key).replace(" ", "_")
+    if key in MOTION_NAMES:
+        return MOTION_NAMES.index(key)
+    raise StrengthError(f"unknown motion {text.strip()!r}; expected one of "
+                        f"{', '.join(MOTION_NAMES)}")
+
+
+def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
+    lines = text.splitlines()
+    if not any(ln.strip() for ln in lines):
+        raise StrengthFileError(f"{name}:1: the file is empty; expected a 'P' title, "
+                                "'G MALE' or 'G FEMALE', 'L RIGHT' or 'L LEFT' and rows of "
+                                f"{_WIDTH} numbers")
+    title = ""
+    gender: str | None = None
+    key: tuple[str, str] | None = None
+    raw: dict[tuple[str, str], tuple[int, list]] = {}
+    warnings: list[str] = []
+    for lineno, line in enumerate(lines, start=1):
+        where = f"{name}:{lineno}"
+        if not line.strip():
+            continue
+        tag = line[0]
+        if tag == "C":
+            continue
+        if tag == "P":
+            if not title:
+                title = line[1:].strip()
+            continue
+        if tag == "G":
+            word = line[1:].strip().lower()
+            if word not in GENDERS:
+                raise StrengthFileError(
+                    f"{where}: expected 'G MALE' or 'G FEMALE', found {line.strip()!r}")
+            gender, key = word, None
+            continue
+        if tag == "L":
+            word = line[1:].strip().lower()
+            if word not in SIDES:
+                raise StrengthFileError(
+                    f"{where}: expected 'L RIGHT' or 'L LEFT', found {line.strip()!r}")
+            if gender is None:
+                raise StrengthFileError(f"{where}: 'L {word.upper()}' before 'G MALE' or "
+                                        "'G FEMALE'")
+            key = (gender, word)
+            if key in raw:
+                raise StrengthFileError(f"{where}: a second G {gender.upper()} / "
+                                        f"L {word.upper()} section (first at line "
+                                        f"{raw[key][0]})")
+            raw[key] = (lineno, [])
+            continue
+        numbers_text, comment = _split_comment(line, where)
+        tokens = [t for t in re.split(r"[,\s]+", numbers_text.strip()) if t]
+        for col, token in enumerate(tokens, start=1):
+            if not _NUMBER.match(token):
+                raise StrengthFileError(
+                    f"{where}: value {col} is {token!r}; expected a number (999 = no value)")
+        if len(tokens) != _WIDTH:
+            raise StrengthFileError(f"{where}: {len(tokens)} numbers; expected {_WIDTH} "
+                                    f"{_LAYOUT} and a /* motion */ comment")
+        if key is None:
+            raise StrengthFileError(f"{where}: data before 'G MALE|FEMALE' and "
+                                    "'L RIGHT|LEFT'")
+        if not comment:
+            raise StrengthFileError(f"{where}: no /* motion */ comment; expected the motion "
+                                    "impetus, e.g. /* shoulder abduction */")
+        label = comment.split(":", 1)[0]
+        try:
+            motion = motion_index(label)
+        except StrengthError as exc:
+            raise StrengthFileError(f"{where}: {exc}") from None
+        numbers = [float(t) for t in tokens]
+        percentile = numbers[-1]
+        if percentile != NO_VALUE and not 0.5 <= percentile <= 99.5:
+            raise StrengthFileError(f"{where}: percentile {percentile:g} is outside "
+                                    "0.5-99.5 (value 9)")
+        raw[key][1].append((lineno, motion, numbers, comment))
+    if not raw:
+        raise StrengthFileError(f"{name}:{len(lines)}: no 'G MALE|FEMALE' with an "
+                                "'L RIGHT|LEFT' section")
+    data = StrengthData(title=title or Path(name).name, path=name, warnings=warnings)
+    for key, (line, entries) in raw.items():
+        data.sections[key] = _build_section(key, line, entries, name, warnings)
+    return data
+
+
+def _split_comment(line: str, where: str) -> tuple[str, str]:
+    start = line.find("/*")
+    if start < 0:
+        return line, ""
+    end = line.find("*/", start + 2)
+    if end < 0:
+        raise StrengthFileError(f"{where}: comment '/*' is not closed with '*/'")
+    if line[end + 2:].strip():
+        raise StrengthFileError(
+            f"{where}: unexpected {line[end + 2:].strip()!r} after the comment")
+    return line[:start], line[start + 2:end].strip()
+
+
+def _build_section(key, section_line, entries, name, warnings) -> StrengthSection:
+    gender, side = key
+    heading = f"G {gender.upper()} / L {side.upper()}"
+    kept: dict[tuple[int, tuple[float, ...]], int] = {}
+    rows = []
+    last_motion = -1
+    for lineno, motion, numbers, comment in entries:
+        where = f"{name}:{lineno}: {MOTIONS[motion].label}"
+        angles, value, percentile = numbers[:N_ANGLES], numbers[-2], numbers[-1]
+        if motion < last_motion:
+            warnings.append(f"{where}: out of display order (after "
+                            f"{MOTIONS[last_motion].label}); kept")
+        last_motion = max(last_motion, motion)
+        if NO_VALUE in angles:
+            missing = [JOINT_AXES[i] for i, a in enumerate(angles) if a == NO_VALUE]
+            warnings.append(f"{where}: no value for {', '.join(missing)}; row not used")
+            continue
+        if value == NO_VALUE or percentile == NO_VALUE:
+            warnings.append(f"{where}: no strength value; row not used")
+            continue
+        if value <= 0:
+            warnings.append(f"{where}: strength {value:g} is not positive; row not used")
+            continue
+        config = (motion, tuple(round(a, 3) for a in angles))
+        if config in kept:
+            warnings.append(f"{where}: configuration given again (first at line "
+                            f"{rows[kept[config]][0]}); this later row is used")
+            rows[kept[config]] = (lineno, motion, angles, value, percentile, comment)
+            continue
+        kept[config] = len(rows)
+        rows.append((lineno, motion, angles, value, percentile, comment))
+    present = {r[1] for r in rows}
+    missing = [MOTIONS[i].label for i in range(len(MOTIONS)) if i not in present]
+    if missing:
+        warnings.append(f"{name}:{section_line}: {heading} has no data for "
+                        f"{', '.join(missing)}; those rows stay blank")
+    return StrengthSection(
+        gender=gender, side=side, line=section_line,
+        motions=np.array([r[1] for r in rows], dtype=int),
+        angles=np.array([r[2] for r in rows], dtype=float).reshape(-1, N_ANGLES),
+        values=np.array([r[3] for r in rows], dtype=float),
+        percentiles=np.array([r[4] for r in rows], dtype=float),
+        lines=np.array([r[0] for r in rows], dtype=int),
+        notes=[r[5] for r in rows])
+
+
+# --- percentiles ------------------------------------------------------------
+
+def percentile_factor(p) -> np.ndarray:
+    """Strength at percentile p over the 50th: 1 + z(p) * CV (normal, CV 0.277)."""
+    check_percentile(p)
+    return 1.0 + z_score(p) * STRENGTH_CV
+
+
+def strength_percentile(value: float, median: float) -> float:
+    """Percentile of a strength against the 50th-percentile value (inverse)."""
+    if not (median > 0) or math.isnan(value):
+        return float("nan")
+    return _STANDARD.cdf((value / median - 1.0) / STRENGTH_CV) * 100.0
+
+
+# --- the prediction equation -------------------------------------------------
+
+def design(angles: np.ndarray) -> np.ndarray:
+    """(k, 7) angles in deg -> (k, 15) columns [1, t_1..t_7, t_1^2..t_7^2]."""
+    t = np.asarray(angles, dtype=float) / _ANGLE_SCALE
+    return np.concatenate([np.ones((t.shape[0], 1)), t, t * t], axis=1)
+
+
+@dataclass
+class MotionFit:
+    motion: str
+    points: int
+    coefficients: np.ndarray  # (15,), zero for columns the data never vary
+    rms_percent: float  # relative fit error over the stored points
+    max_percent: float
+    varied: tuple[str, ...]
+
+
+class StrengthModel:
+    """Stored lookup and the fitted equations for one gender/side section."""
+
+    def __init__(self, section: StrengthSection) -> None:
+        self.section = section
+        n = len(MOTIONS)
+        self.coefficients = np.zeros((n, N_FEATURES))
+        self.available = np.zeros(n, dtype=bool)
+        self.ceiling = np.full(n, np.nan)
+        self.fits: list[MotionFit | None] = [None] * n
+        self._stored: list[dict[tuple[float, ...], tuple[float, float]]] = [{} for _ in range(n)]
+        median = section.values / percentile_factor(section.percentiles)
+        for row, motion in enumerate(section.motions):
+            key = _config_key(section.angles[row])
+            self._stored[motion][key] = (section.values[row], section.percentiles[row])
+        for motion in range(n):
+            mask = section.motions == motion
+            if mask.any():
+                self.fits[motion] = self._fit(motion, section.angles[mask], median[mask])
+                self.coefficients[motion] = self.fits[motion].coefficients
+                self.available[motion] = True
+                # A quadratic can rise without bound away from the data.
+                self.ceiling[motion] = median[mask].max()
+
+    def _fit(self, motion: int, angles: np.ndarray, median: np.ndarray) -> MotionFit:
+        full = design(angles)
+        distinct = [len(np.unique(angles[:, j])) for j in range(N_ANGLES)]
+        used = [0] + [1 + j for j in range(N_ANGLES) if distinct[j] >= 2] \
+            + [1 + N_ANGLES + j for j in range(N_ANGLES) if distinct[j] >= 3]
+        solution, *_ = np.linalg.lstsq(full[:, used], np.log(median), rcond=None)
+        coefficients = np.zeros(N_FEATURES)
+        coefficients[used] = solution
+        relative = np.minimum(np.exp(full @ coefficients), median.max()) / median - 1.0
+        return MotionFit(
+            motion=MOTION_NAMES[motion], points=len(median), coefficients=coefficients,
+            rms_percent=float(np.sqrt(np.mean(relative ** 2)) * 100.0),
+            max_percent=float(np.abs(relative).max() * 100.0),
+            varied=tuple(JOINT_AXES[j] for j in range(N_ANGLES) if distinct[j] >= 2))
+
+    def stored(self, motion: int, angles) -> tuple[float, float] | None:
+        """(value ft-lb, its percentile) when the configuration is in the data."""
+        return self._stored[motion].get(_config_key(angles))
+
+    def predict_median(self, motions: np.ndarray, angles: np.ndarray) -> np.ndarray:
+        """50th-percentile strength (ft-lb) by the equation; NaN without data."""
+        motions = np.asarray(motions, dtype=int)
+        log_value = np.einsum("ij,ij->i", design(angles), self.coefficients[motions])
+        value = np.minimum(np.exp(log_value), self.ceiling[motions])
+        return np.where(self.available[motions], value, np.nan)
+
+    def evaluate(self, motions, angles, percentile: float = 50.0
+                 ) -> tuple[np.ndarray, np.ndarray]:
+        """Strength (ft-lb, before modifiers) at `percentile`, and a stored? mask.
+
+        A stored value is scaled from its own percentile to `percentile` (it
+        comes back unchanged at that percentile); the rest are predicted.
+        """
+        motions = np.asarray(motions, dtype=int)
+        angles = np.asarray(angles, dtype=float).reshape(-1, N_ANGLES)
+        target = percentile_factor(percentile)
+        values = self.predict_median(motions, angles) * target
+        stored = np.zeros(len(motions), dtype=bool)
+        for i, motion in enumerate(motions):
+            hit = self._stored[motion].get(_config_key(angles[i]))
+            if hit is not None:
+                value, at = hit
+                values[i] = value if at == percentile else value * target / percentile_factor(at)
+                stored[i] = True
+        return values, stored
+
+
+def _config_key(angles) -> tuple[float, ...]:
+    return tuple(round(float(a), 3) for a in angles)
+
+
+# --- modifiers (each a factor on the strength; docs/model.md) -----------------
+
+def strength_type_factor(strength_type: str, motion_speed: float) -> float:
+    """Isometric: 1.  Isokinetic and isotonic (concentric at motion_speed deg/s):
+    exp(-k * speed), k = ln(68.6/46.9)/50 per deg/s, through the measured
+    shoulder-flexion pair (static 68.6 N-m, 46.9 N-m at 50 deg/s).  Isotonic
+    has no separate source: it is taken as the concentric value at the speed."""
+    if motion_speed < 0:
+        raise StrengthError("motion speed cannot be negative")
+    if strength_type == "isometric":
+        return 1.0
+    if strength_type in ("isokinetic", "isotonic"):
+        return math.exp(-ISOKINETIC_DECAY_PER_DEG_S * motion_speed)
+    raise StrengthError(f"strength type must be isometric, isokinetic or isotonic, "
+                        f"not {strength_type!r}")
+
+
+def handedness_factor(side: str, handedness: str,
+                      non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR) -> float:
+    """The stored data are the dominant limb's (report §12.2.4): the other limb
+    is scaled by the non-dominant factor (default 1/1.116)."""
+    return 1.0 if side == handedness else non_dominant_factor
+
+
+def training_factor(level: float) -> float:
+    """1 + 0.10 per training level (0 = none).  An assumption: no source found."""
+    if level < 0:
+        raise StrengthError("training level cannot be negative")
+    return 1.0 + TRAINING_GAIN_PER_LEVEL * level
+
+
+def fatigue_factor(level: float, joint: str = "shoulder") -> float:
+    """Fatigue level = seconds a maximal exertion has been held (0 = rested).
+
+    The endurance power model ET = b0 * f^b1 gives the relative load f that can
+    be held for ET seconds; the strength left after `level` seconds is taken as
+    f = (level / b0)^(1/b1), at most 1."""
+    if level < 0:
+        raise StrengthError("fatigue level cannot be negative")
+    if level == 0:
+        return 1.0
+    b0, b1 = ENDURANCE_POWER_MODEL[joint]
+    return min(1.0, (level / b0) ** (1.0 / b1))
+
+
+def modifier_factors(figure, side: str,
+                     non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR) -> np.ndarray:
+    """The product of every modifier, one factor per motion (14,)."""
+    common = (strength_type_factor(figure.strength_type, figure.motion_speed)
+              * handedness_factor(side, figure.handedness, non_dominant_factor)
+              * training_factor(figure.training_level))
+    fatigue = {joint: fatigue_factor(figure.fatigue_level, joint)
+               for joint in ENDURANCE_POWER_MODEL}
+    return np.array([common * fatigue[joint] for joint in MOTION_JOINT])
+
+
+def parse_side_factor(text: str) -> float:
+    """The Right->Left factor typed on the message line; RETURN = the default."""
+    if not text.strip():
+        return DEFAULT_NON_DOMINANT_FACTOR
+    try:
+        factor = float(text)
+    except ValueError:
+        raise StrengthError(f"scaling factor {text.strip()!r} is not a number") from None
+    if not 0 < factor <= 2:
+        raise StrengthError(f"scaling factor {factor:g} is outside 0-2")
+    return factor
+
+
+# --- joint limits ---------------------------------------------------------
+
+def joint_limit_range(figure, side: str, joint_axis: str) -> tuple[float, float]:
+    """(lower, upper) deg of a joint axis from the figure's current joint limits.
+
+    NaN, NaN: no motion about this axis (999).  A lower limit with the sign of
+    an upper one (the male shoulder z of appendix H, warned at load) is read as
+    its negative, as the female table and the ul/ll convention say."""
+    state = figure.groups[JOINT_LIMITS]
+    if not state.loaded:
+        raise StrengthError("joint limits are not loaded; angles cannot be checked")
+    joint, axis = joint_axis.split("_")
+    column = "xyz".index(axis)
+    upper = float(state.values[row_index(JOINT_LIMITS, f"{side}_{joint}_ul"), column])
+    lower = float(state.values[row_index(JOINT_LIMITS, f"{side}_{joint}_ll"), column])
+    if lower > 0 and upper > 0:
+        lower = -lower
+    return lower, upper
+
+
+def check_angle(figure, side: str, joint_axis: str, degrees: float) -> None:
+    """Refuse an angle outside the figure's current joint limits, naming the limit."""
+    lower, upper = joint_limit_range(figure, side, joint_axis)
+    joint, axis = joint_axis.split("_")
+    what = f"{side} {joint} {axis}"
+    percentile = figure.groups[JOINT_LIMITS].percentile
+    if math.isnan(lower) or math.isnan(upper):
+        if degrees != 0:
+            raise StrengthError(f"{what}: no motion about this axis (joint limits)")
+        return
+    if degrees > upper:
+        raise StrengthError(f"{what} {degrees:g} deg is above the {side} {joint} upper limit "
+                            f"{upper:g} deg (joint limits, {percentile:g}th percentile)")
+    if degrees < lower:
+        raise StrengthError(f"{what} {degrees:g} deg is below the {side} {joint} lower limit "
+                            f"{lower:g} deg (joint limits, {percentile:g}th percentile)")
+
+
+def parse_joint_axis(text: str) -> int:
+    key = text.strip().lower().replace(" ", "_").replace(".", "_")
+    if key in JOINT_AXES:
+        return JOINT_AXES.index(key)
+    raise StrengthError(f"unknown joint axis {text.strip()!r}; expected one of "
+                        f"{', '.join(JOINT_AXES)}")
+
+
+# --- the strength page's state --------------------------------------------------
+
+@dataclass(frozen=True)
+class StrengthRow:
+    """One row of the strength page, in the sheet's current unit."""
+
+    index: int
+    motion: str
+    label: str
+    side: str
+    angles: tuple[float, ...]  # deg, in JOINT_AXES order
+    value: float  # NaN = no data for this motion
+    source: str  # "stored" | "predicted" | "no data"
+    unit: str  # display spelling, "ft-lb" | "N-m"
+
+
+class StrengthSheet:
+    """What the strength page shows: one limb side, one configuration per motion.
+
+    Values are computed on demand from the figure's current gender, joint
+    limits and strength parameters, so a changed global parameter shows at
+    the next rows() call."""
+
+    ROWS_PER_PAGE = 14
+
+    def __init__(self, data: StrengthData, figure) -> None:
+        self.data = data
+        self.figure = figure
+        self.side = "right"
+        self.unit = GROUP_UNITS[STRENGTH][0]
+        self.percentile = 50.0
+        self.non_dominant_factor = DEFAULT_NON_DOMINANT_FACTOR
+        self.angles = self._default_angles()
+
+    @classmethod
+    def default(cls, figure) -> "StrengthSheet":
+        return cls(read_strength_file(), figure)
+
+    def _default_angles(self) -> np.ndarray:
+        """Each motion at its first stored configuration (figure 5 shows the
+        report's point first); neutral with the elbow at 90 deg without data."""
+        angles = np.tile(np.array([0, 0, 0, 90, 0, 0, 0], dtype=float), (len(MOTIONS), 1))
+        try:
+            section, _ = self.data.section(self.figure.gender, self.side)
+        except StrengthError:
+            return angles
+        for motion in range(len(MOTIONS)):
+            rows = np.flatnonzero(section.motions == motion)
+            if rows.size:
+                angles[motion] = section.angles[rows[0]]
+        return angles
+
+    # --- reading -------------------------------------------------------------
+    def values(self) -> tuple[np.ndarray, np.ndarray]:
+        """Every row's strength (ft-lb, modifiers applied) and stored? mask."""
+        model = self.data.model(self.figure.gender, self.side)
+        base, stored = model.evaluate(np.arange(len(MOTIONS)), self.angles, self.percentile)
+        return base * modifier_factors(self.figure, self.side, self.non_dominant_factor), stored
+
+    def rows(self) -> list[StrengthRow]:
+        values, stored = self.values()
+        shown = convert(values, GROUP_UNITS[STRENGTH][0], self.unit)
+        return [StrengthRow(i, m.name, m.label, self.side, tuple(map(float, self.angles[i])),
+                            float(shown[i]),
+                            "no data" if math.isnan(values[i]) else
+                            "stored" if stored[i] else "predicted",
+                            DISPLAY[self.unit])
+                for i, m in enumerate(MOTIONS)]
+
+    def row(self, index: int) -> StrengthRow:
+        return self.rows()[index]
+
+    def page(self, number: int) -> list[StrengthRow]:
+        start = number * self.ROWS_PER_PAGE
+        return self.rows()[start:start + self.ROWS_PER_PAGE]
+
+    @property
+    def pages(self) -> int:
+        return -(-len(MOTIONS) // self.ROWS_PER_PAGE)
+
+    # --- editing -----------------------------------------------------------
+    def set_angle(self, index: int, joint_axis: str | int, value: str | float) -> StrengthRow:
+        """Set one angle (text like "30", "0.5 rad", or deg) and recompute the row.
+
+        Refused (StrengthError, nothing changed) outside the joint limits."""
+        column = joint_axis if isinstance(joint_axis, int) else parse_joint_axis(joint_axis)
+        degrees = parse_quantity(value, "deg") if isinstance(value, str) else float(value)
+        check_angle(self.figure, self.side, JOINT_AXES[column], degrees)
+        self.angles[index, column] = degrees
+        return self.row(index)
+
+    def set_unit(self, unit: str) -> None:
+        from sass_tui.model.units import unit_name
+
+        name = unit_name(unit) if unit not in GROUP_UNITS[STRENGTH] else unit
+        if name not in GROUP_UNITS[STRENGTH]:
+            raise StrengthError(f"strength is shown in ft-lb or N-m, not {unit}")
+        self.unit = name
+
+    def toggle_unit(self) -> str:
+        a, b = GROUP_UNITS[STRENGTH]
+        self.unit = b if self.unit == a else a
+        return DISPLAY[self.unit]
+
+    def set_percentile(self, p: float) -> None:
+        check_percentile(p)
+        self.percentile = float(p)
+
+    def switch_side(self, factor_text: str = "") -> str:
+        """Right->Left / Left->Right: show the other limb, the non-dominant one
+        scaled by the typed factor (RETURN = the default).  Returns the message."""
+        factor = parse_side_factor(factor_text)
+        self.non_dominant_factor = factor
+        self.side = SIDES[1 - SIDES.index(self.side)]
+        return (f"Showing the {self.side} limb; non-dominant limb scaled by {factor:.3f}"
+                + (" (default)" if not factor_text.strip() else ""))
+
+    def fig_variables(self) -> list[tuple[str, float, str]]:
+        """.fig strength variables: `<side>_<motion>_strength` in Nm for both
+        limbs at the sheet's configurations (docs/model.md)."""
+        out = []
+        current = self.side
+        try:
+            for side in SIDES:
+                self.side = side
+                values, _ = self.values()
+                for motion, value in zip(MOTION_NAMES, convert(values, "ft_lb", "N_m")):
+                    if not math.isnan(value):
+                        out.append((f"{side}_{motion}_strength", float(value), "Nm"))
+        finally:
+            self.side = current
+        return out
+
+
+def fig_section(sheet: StrengthSheet) -> tuple[str, list[tuple[str, float, str]]]:
+    """The strength section for figfile.render_fig(extra_sections=[...])."""
+    return ("strength variables", sheet.fig_variables())
+
+
+def fit_summary(data: StrengthData) -> list[tuple[str, str, MotionFit]]:
+    """(gender, side, fit) for every fitted motion (docs/model.md's table)."""
+    out = []
+    for (gender, side) in data.sections:
+        model = data.model(gender, side)
+        out += [(gender, side, fit) for fit in model.fits if fit is not None]
+    return out

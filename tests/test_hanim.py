@@ -1,0 +1,332 @@
+"""HAnim export (issue 7): structure, sizes, limits, masses, and a real X3D browser."""
+
+from __future__ import annotations
+
+import math
+import shutil
+import struct
+import subprocess
+import xml.etree.ElementTree as ET
+import zlib
+
+import numpy as np
+import pytest
+
+from sass_tui.cli import main
+from sass_tui.model.figfile import FigureIncompleteError
+from sass_tui.model.figure import Figure
+from sass_tui.model.hanim import LOA1, export_hanim, rotation_matrix
+from sass_tui.model.names import JOINT_LIMITS, MASS_FRACTIONS, row_index
+
+PARENTS = {  # clause 4.9.6.1, figure 4.10, written out independently of the module
+    "humanoid_root": (None, "sacrum"), "sacroiliac": ("humanoid_root", "pelvis"),
+    "l_hip": ("sacroiliac", "l_thigh"), "l_knee": ("l_hip", "l_calf"),
+    "l_talocrural": ("l_knee", "l_talus"),
+    "l_metatarsophalangeal_2": ("l_talocrural", "l_tarsal_proximal_phalanx_2"),
+    "r_hip": ("sacroiliac", "r_thigh"), "r_knee": ("r_hip", "r_calf"),
+    "r_talocrural": ("r_knee", "r_talus"),
+    "r_metatarsophalangeal_2": ("r_talocrural", "r_tarsal_proximal_phalanx_2"),
+    "vl5": ("humanoid_root", "l5"), "skullbase": ("vl5", "skull"),
+    "l_shoulder": ("vl5", "l_upperarm"), "l_elbow": ("l_shoulder", "l_forearm"),
+    "l_radiocarpal": ("l_elbow", "l_carpal"), "r_shoulder": ("vl5", "r_upperarm"),
+    "r_elbow": ("r_shoulder", "r_forearm"), "r_radiocarpal": ("r_elbow", "r_carpal"),
+}
+
+
+def _floats(text: str) -> np.ndarray:
+    return np.array([float(v) for v in text.split()])
+
+
+def _export(tmp_path, name: str, gender: str, percentile: float):
+    figure = Figure.default(gender)
+    for group in figure.groups:
+        figure.set_group_percentile(group, percentile)
+    figure.set_mass_percentile(percentile)
+    figure.set_stature_percentile(percentile)
+    path = export_hanim(figure, tmp_path / name)
+    return figure, path, ET.parse(path).getroot()
+
+
+def _joints(root) -> dict[str, ET.Element]:
+    return {j.get("name"): j for j in root.iter("HAnimJoint") if j.get("name")}
+
+
+@pytest.fixture(scope="module")
+def male50(tmp_path_factory):
+    return _export(tmp_path_factory.mktemp("hanim"), "male50.x3d", "male", 50)
+
+
+def test_loa1_hierarchy_names_and_parents(male50):
+    _, _, root = male50
+    (humanoid,) = root.iter("HAnimHumanoid")
+    assert humanoid.get("version") == "2.0"
+    assert humanoid.get("skeletalConfiguration") == "BASIC"
+    parents = {}
+    for joint in root.iter("HAnimJoint"):
+        for child in joint:
+            if child.tag == "HAnimJoint" and child.get("name"):
+                parents[child.get("name")] = joint.get("name")
+    joints = _joints(root)
+    assert set(joints) == set(PARENTS)
+    skeleton = [c for c in humanoid if c.get("containerField") == "skeleton"]
+    assert [j.get("name") for j in skeleton] == ["humanoid_root"]
+    for name, (parent, segment) in PARENTS.items():
+        assert parents.get(name) == parent, name
+        segments = [c.get("name") for c in joints[name] if c.tag == "HAnimSegment"]
+        assert segments == [segment], name
+
+
+def test_every_joint_segment_and_site_is_listed(male50):
+    _, _, root = male50
+    (humanoid,) = root.iter("HAnimHumanoid")
+    defs = {e.get("DEF"): e for e in root.iter() if e.get("DEF")}
+
+    def listed(field):
+        return {defs[e.get("USE")].get("name") for e in humanoid
+                if e.get("containerField") == field and e.get("USE")}
+
+    assert listed("joints") == set(PARENTS)
+    assert listed("segments") == {segment for _, segment in PARENTS.values()}
+    assert listed("sites") == {s.get("name") for s in root.iter("HAnimSite") if s.get("DEF")}
+    assert {"skull_vertex_pt", "sellion_pt"} <= listed("sites")
+
+
+def test_feet_on_the_ground_and_skullbase_from_segment_lengths(male50):
+    figure, _, root = male50
+    joints = _joints(root)
+    lengths = {n: figure.value("girth", n, 2) / 100 for n in
+               ("right_foot", "right_lower_leg", "right_upper_leg", "lower_torso",
+                "center_torso", "neck")}
+    # the soles of the foot boxes touch Y = 0, nothing is below it
+    talus = [s for s in root.iter("HAnimSegment") if s.get("name", "").endswith("_talus")]
+    for segment in talus:
+        transform = segment.find("Transform")
+        centre = _floats(transform.get("translation"))
+        size = _floats(transform.find("Shape/Box").get("size"))
+        assert centre[1] - size[1] / 2 == pytest.approx(0, abs=1e-6)
+    ankle = _floats(joints["r_talocrural"].get("center"))[1]
+    assert ankle == pytest.approx(lengths["right_foot"], abs=1e-6)
+    hip = lengths["right_foot"] + lengths["right_lower_leg"] + lengths["right_upper_leg"]
+    assert _floats(joints["r_hip"].get("center"))[1] == pytest.approx(hip, abs=1e-6)
+    expected = hip + lengths["lower_torso"] + lengths["center_torso"] + 0.462 * lengths["neck"]
+    assert _floats(joints["skullbase"].get("center"))[1] == pytest.approx(expected, abs=1e-6)
+    # the origin lies between the feet (4.8.2)
+    feet = [_floats(joints[j].get("center")) for j in ("l_talocrural", "r_talocrural")]
+    assert feet[0][0] == pytest.approx(-feet[1][0]) and feet[0][0] > 0  # +X is the left
+
+
+def test_limits_in_radians_equal_the_joint_limit_group(male50):
+    figure, _, root = male50
+    joints = _joints(root)
+    values = figure.groups[JOINT_LIMITS].values
+    checked = 0
+    for hanim, sass in (("l_hip", "left_hip"), ("r_shoulder", "right_shoulder"),
+                        ("skullbase", "neck"), ("vl5", "waist"), ("l_radiocarpal", "left_wrist"),
+                        ("r_talocrural", "right_ankle"), ("l_knee", "left_knee")):
+        upper = _floats(joints[hanim].get("ulimit"))
+        lower = _floats(joints[hanim].get("llimit"))
+        ul = values[row_index(JOINT_LIMITS, f"{sass}_ul")]
+        ll = values[row_index(JOINT_LIMITS, f"{sass}_ll")]
+        for axis in range(3):
+            if math.isnan(ul[axis]):  # 999: no motion, the axis is locked
+                assert upper[axis] == lower[axis] == 0
+                continue
+            exported = (upper[axis], lower[axis])
+            as_is = (math.radians(ul[axis]), math.radians(ll[axis]))
+            mirrored = (-as_is[1], -as_is[0])
+            if axis < 2:  # x and y always keep SASS's sense
+                assert exported == pytest.approx(as_is, abs=1e-5), (hanim, axis)
+            else:
+                assert (exported == pytest.approx(as_is, abs=1e-5)
+                        or exported == pytest.approx(mirrored, abs=1e-5)), (hanim, axis)
+            checked += 1
+    assert checked == 19
+
+
+@pytest.mark.parametrize("joint, sass, axis, probe, towards", [
+    ("l_hip", "left_hip", 1, (0, -1, 0), (0, 0, 1)),        # flexion: the knee goes forward
+    ("r_hip", "right_hip", 0, (0, -1, 0), (-1, 0, 0)),      # abduction: right leg to the right
+    ("l_hip", "left_hip", 2, (0, 0, 1), (1, 0, 0)),         # lateral rotation: knee turns out
+    ("r_knee", "right_knee", 1, (0, -1, 0), (0, 0, -1)),    # flexion: the shank goes back
+    ("l_knee", "left_knee", 1, (0, -1, 0), (0, 0, -1)),
+    ("r_elbow", "right_elbow", 1, (0, -1, 0), (0, 0, 1)),
+    ("l_talocrural", "left_ankle", 0, (0, -1, 0), (-1, 0, 0)),  # supination: the sole turns in
+    ("l_radiocarpal", "left_wrist", 1, (0, -1, 0), (-1, 0, 0)),  # flexion: towards the palm
+    ("l_elbow", "left_elbow", 1, (0, -1, 0), (0, 0, 1)),    # flexion: the forearm comes forward
+    ("l_shoulder", "left_shoulder", 0, (0, -1, 0), (1, 0, 0)),  # abduction: arm out to the left
+    ("skullbase", "neck", 1, (0, 1, 0), (0, 0, 1)),         # flexion: the head nods forward
+    ("skullbase", "neck", 2, (0, 0, 1), (-1, 0, 0)),        # rotation right: face turns right
+    ("r_talocrural", "right_ankle", 1, (0, 0, 1), (0, 1, 0)),  # dorsiflexion: toes up
+    ("vl5", "waist", 0, (0, 1, 0), (-1, 0, 0)),             # bend to the right
+])
+def test_limit_axes_move_the_body_the_way_sass_means(male50, joint, sass, axis, probe, towards):
+    """Rotating by the exported limit that carries SASS's upper limit, about the
+    limit frame's axis, moves the body part the way appendix G describes."""
+    figure, _, root = male50
+    element = _joints(root)[joint]
+    orientation = _floats(element.get("limitOrientation"))
+    frame = rotation_matrix(orientation[:3], orientation[3])
+    ul = math.radians(figure.groups[JOINT_LIMITS].values[row_index(JOINT_LIMITS, f"{sass}_ul")][axis])
+    candidates = [v for v in (*_floats(element.get("ulimit"))[axis:axis + 1],
+                              *_floats(element.get("llimit"))[axis:axis + 1])
+                  if abs(abs(v) - abs(ul)) < 1e-5]
+    assert candidates
+    # the direction the probe starts to move in when the joint turns towards that limit
+    starts = [math.copysign(1, v) * np.cross(frame[:, axis], probe) for v in candidates]
+    assert any(np.dot(s, towards) > 0.9 for s in starts), (candidates, starts)
+    # and the limit itself, applied, is a rotation of |SASS ul| about that axis
+    moved = rotation_matrix(frame[:, axis], candidates[0]) @ np.array(probe, float)
+    assert math.acos(np.clip(moved @ np.array(probe, float), -1, 1)) == pytest.approx(
+        min(abs(ul), 2 * math.pi - abs(ul)), abs=1e-5)
+
+
+def test_segment_masses_add_up_to_the_figure_mass(male50):
+    figure, _, root = male50
+    segments = [s for s in root.iter("HAnimSegment") if s.get("DEF")]
+    total = sum(float(s.get("mass")) for s in segments)
+    assert sum(f for _, f in MASS_FRACTIONS) == pytest.approx(1.0)
+    assert total == pytest.approx(figure.mass, abs=1e-4)
+    thigh = next(s for s in segments if s.get("name") == "l_thigh")
+    inertia = _floats(thigh.get("momentsOfInertia")).reshape(3, 3)
+    # a long thigh turns more easily about its own (vertical) axis
+    assert inertia[1, 1] < inertia[0, 0] and inertia[1, 1] < inertia[2, 2]
+    assert np.count_nonzero(inertia - np.diag(np.diag(inertia))) == 0
+    # appendix L.2: the thigh's centre of mass lies 18.0 cm below the hip
+    hip = _floats(_joints(root)["l_hip"].get("center"))
+    assert hip[1] - _floats(thigh.get("centerOfMass"))[1] == pytest.approx(0.18, abs=1e-6)
+
+
+def test_fifth_female_is_smaller_than_ninety_fifth_male_everywhere(tmp_path):
+    _, _, small = _export(tmp_path, "f05.x3d", "female", 5)
+    _, _, large = _export(tmp_path, "m95.x3d", "male", 95)
+    small_joints, large_joints = _joints(small), _joints(large)
+    for name in PARENTS:
+        low = _floats(small_joints[name].get("center"))[1]
+        high = _floats(large_joints[name].get("center"))[1]
+        assert low < high, name
+    vertex = {r: next(s for s in t.iter("HAnimSite") if s.get("name") == "skull_vertex_pt")
+              for r, t in (("s", small), ("l", large))}
+    assert _floats(vertex["s"].get("translation"))[1] < _floats(vertex["l"].get("translation"))[1]
+
+
+def test_incomplete_figure_is_refused_and_nothing_written(tmp_path):
+    figure = Figure.default("male")
+    figure.groups[JOINT_LIMITS].values = None
+    target = tmp_path / "x.x3d"
+    with pytest.raises(FigureIncompleteError, match="Joint Limits"):
+        export_hanim(figure, target)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_cli_export_hanim(tmp_path, capsys):
+    out = tmp_path / "FEMALE05.x3d"
+    assert main(["export", "hanim", "--gender", "female", "--percentile", "5", "-o", str(out)]) == 0
+    (humanoid,) = ET.parse(out).getroot().iter("HAnimHumanoid")
+    info = humanoid.get("info")
+    assert '"gender=female"' in info and '"girthPercentile=5"' in info
+    assert "population=NASA Crewmember Trainees" in info
+    capsys.readouterr()
+    with pytest.raises(SystemExit):
+        main(["export", "hanim", "--percentile", "120", "-o", str(tmp_path / "bad.x3d")])
+    assert "outside 0.5-99.5" in capsys.readouterr().err
+    assert not (tmp_path / "bad.x3d").exists()
+
+
+# --- a real X3D browser -------------------------------------------------------
+
+# view3dscene 4.2 (Debian 12) predates X3D 4.0's HAnimHumanoid field
+# skeletalConfiguration, which clause 4.8.2 requires; it is the one warning allowed.
+X3D4_FIELDS_UNKNOWN_TO_VIEW3DSCENE = ("skeletalConfiguration",)
+
+needs_view3dscene = pytest.mark.skipif(
+    shutil.which("tovrmlx3d") is None, reason="view3dscene (Debian package) is not installed")
+
+
+@needs_view3dscene
+def test_view3dscene_parses_without_warnings(male50):
+    _, path, _ = male50
+    result = subprocess.run(["tovrmlx3d", str(path)], capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    warnings = [line for line in result.stderr.splitlines() if line.strip()
+                and not any(f'"{f}" in node "HAnimHumanoid"' in line
+                            for f in X3D4_FIELDS_UNKNOWN_TO_VIEW3DSCENE)]
+    assert warnings == []
+    assert "HAnimHumanoid" in result.stdout and "humanoid_root" in result.stdout
+
+
+def _read_png(path) -> np.ndarray:
+    data = path.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, idat = 8, b""
+    while pos < len(data):
+        (length,) = struct.unpack(">I", data[pos:pos + 4])
+        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + length]
+        pos += 12 + length
+        if kind == b"IHDR":
+            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert depth == 8 and colour in (2, 6) and interlace == 0
+        elif kind == b"IDAT":
+            idat += body
+    channels = 3 if colour == 2 else 4
+    raw = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(height, width * channels + 1)
+    image = np.zeros((height, width * channels), np.int32)
+    prior = np.zeros(width * channels, np.int32)
+    for y in range(height):
+        kind, line = raw[y, 0], raw[y, 1:].astype(np.int32)
+        if kind == 0:
+            row = line
+        elif kind == 1:
+            row = np.cumsum(line.reshape(width, channels), axis=0).ravel() % 256
+        elif kind == 2:
+            row = (line + prior) % 256
+        else:
+            row = np.zeros_like(line)
+            for x in range(line.size):
+                left = row[x - channels] if x >= channels else 0
+                up = prior[x]
+                if kind == 3:
+                    row[x] = (line[x] + (left + up) // 2) % 256
+                else:
+                    corner = prior[x - channels] if x >= channels else 0
+                    p = left + up - corner
+                    pa, pb, pc = abs(p - left), abs(p - up), abs(p - corner)
+                    best = left if pa <= pb and pa <= pc else up if pb <= pc else corner
+                    row[x] = (line[x] + best) % 256
+        image[y] = prior = row
+    return image.reshape(height, width, channels)[:, :, :3]
+
+
+@needs_view3dscene
+@pytest.mark.skipif(shutil.which("xvfb-run") is None, reason="xvfb-run is not installed")
+def test_view3dscene_renders_a_figure(male50, tmp_path):
+    _, path, _ = male50
+    png = tmp_path / "male50.png"
+    subprocess.run(["xvfb-run", "-a", "view3dscene", str(path), "--geometry", "200x250",
+                    "--screenshot", "0", str(png)], capture_output=True, timeout=120,
+                   check=True, cwd=tmp_path)
+    image = _read_png(png)
+    background = image[0, 0]
+    figure_pixels = np.any(image != background, axis=2)
+    # a standing figure: a few per cent of the picture, taller than wide
+    assert 0.02 < figure_pixels.mean() < 0.6
+    rows, cols = np.nonzero(figure_pixels)
+    assert np.ptp(rows) > 2 * np.ptp(cols)
+
+
+def test_axis_angle_round_trips_every_axis_aligned_rotation():
+    """The limit frames are axis permutations; several are half turns."""
+    from itertools import permutations, product
+
+    from sass_tui.model.hanim import axis_angle
+
+    count = 0
+    for order, signs in product(permutations(range(3)), product((1, -1), repeat=3)):
+        matrix = np.zeros((3, 3))
+        for column, (row, sign) in enumerate(zip(order, signs)):
+            matrix[row, column] = sign
+        if np.linalg.det(matrix) < 0:
+            continue
+        *axis, angle = axis_angle(matrix)
+        assert rotation_matrix(axis, angle) == pytest.approx(matrix, abs=1e-9)
+        count += 1
+    assert count == 24
