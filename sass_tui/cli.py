@@ -110,6 +110,9 @@ def build_parser() -> argparse.ArgumentParser:
     from sass_tui.cli_strength import add_strength_command
 
     add_strength_command(commands)
+    from sass_tui.db.commands import register as register_db_commands
+
+    register_db_commands(commands)
     return parser
 
 

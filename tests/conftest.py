@@ -4,11 +4,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
-SHARED = ROOT.parent / "shared"
-REPORT = SHARED / "seeds" / "sass-report.txt"
-ANSUR = SHARED / "data" / "ansur2"
-DATASETS = ROOT / "datasets"
+from _paths import ANSUR, REPORT
 
 
 @pytest.fixture(scope="session")

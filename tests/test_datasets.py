@@ -10,7 +10,7 @@ import pytest
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 from sass_tui.model.popfile import read_population_file
 
-from conftest import DATASETS
+from _paths import DATASETS
 
 ROW = re.compile(r"^\s*(-?[\d.]+(?:[,\s]+-?[\d.]+){8})[,\s]*/\*(.*?)\*/")
 

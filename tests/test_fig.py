@@ -12,7 +12,7 @@ from sass_tui.cli import main
 from sass_tui.model.figfile import FigParseError, default_fig_name, parse_fig, read_fig, render_fig
 from sass_tui.model.figure import Figure
 
-from conftest import DATASETS
+from _paths import DATASETS
 
 # Appendix F misspells three names that BODY.FIG (appendix D) reads otherwise.
 APPENDIX_F_SPELLING = {"boheadx": "botheadx", "boheady": "botheady", "boheadz": "botheadz",

@@ -11,7 +11,7 @@ from sass_tui.model.names import GIRTH
 from sass_tui.model.percentile import PercentileError, Z95, percentile_of, value_at
 from sass_tui.model.popfile import read_population_file
 
-from conftest import DATASETS
+from _paths import DATASETS
 
 percentiles = st.floats(min_value=0.5, max_value=99.5, allow_nan=False)
 values = st.floats(min_value=-500, max_value=500, allow_nan=False)

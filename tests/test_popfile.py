@@ -9,7 +9,7 @@ from sass_tui.model.figure import Figure
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 from sass_tui.model.popfile import PopulationFileError, parse_population_text, read_population_file
 
-from conftest import DATASETS
+from _paths import DATASETS
 
 GIRTH_TEXT = (DATASETS / "girth.dat").read_text()
 

@@ -1,0 +1,394 @@
+"""The anthropometric database: SQLite schema, connections, bulk storage.
+
+The relations are those of report §12.3.3 ("Input DB"): person, girth,
+center_of_mass, joint_limits, strength_par, shoulder_strgh, elbow_strgh,
+wrist_strgh, with the report's field names.  Values are stored in canonical
+units: lengths cm, masses kg, angles deg, strengths N-m, speeds deg/s; NULL is
+"no value" (the flat files' 999.0).
+
+Besides the relations, every person has one row in each *query table*
+(girth_q, joint_limits_q, center_of_mass_q, strength_q): the same values
+pivoted to one column per row and axis (`right_upper_arm_z`), and the maximum
+strength of each motion.  They are written in the same transaction as the
+relations.  A query such as the report's sample then reads a few rows per
+person by integer key instead of probing the long relations once per
+condition: on 1,000,000 people the report's sample query took 0.8 s against
+the long relations and 0.5 s against the query tables when the design was
+tried (docs/performance.md, "Database").
+
+No Textual import here.
+"""
+
+from __future__ import annotations
+
+import os
+import sqlite3
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from sass_tui.model.names import (
+    CENTER_OF_MASS_ROWS, FIG_PREFIX, GIRTH_ROWS, JOINT_LIMIT_ROWS, MASS_FRACTIONS)
+from sass_tui.model.strength import MOTION_NAMES
+
+SCHEMA_VERSION = "1"
+GENDERS = ("male", "female")
+HANDEDNESS = ("right", "left", "either")
+SIDES = ("right", "left")
+STRENGTH_TYPES = ("isometric", "isokinetic", "isotonic")
+AXES = ("x", "y", "z")
+
+GIRTH_NAMES = tuple(r.name for r in GIRTH_ROWS)
+JOINT_LIMIT_NAMES = tuple(r.name for r in JOINT_LIMIT_ROWS)
+CENTER_OF_MASS_NAMES = tuple(r.name for r in CENTER_OF_MASS_ROWS)
+# Figure 12 also lists segments that carry only a mass (upper torso, hips,
+# sterna, top of head); the girth relation keeps them, queries do not see them.
+MASS_ONLY_SEGMENTS = ("upper_torso", "right_hip", "left_hip", "right_sternum",
+                      "left_sternum", "top_head")
+
+# Which experiment column holds which motion: positive / negative direction of
+# each axis (report §12.3.3 pstrgh / nstrgh; axis meanings as report §10.3's
+# joint-limit table: x abduction, y flexion, z rotation / pronation).
+SHOULDER_MOTIONS = {"x": ("shoulder_abduction", "shoulder_adduction"),
+                    "y": ("shoulder_flexion", "shoulder_extension"),
+                    "z": ("shoulder_medial_rotation", "shoulder_lateral_rotation")}
+ELBOW_MOTIONS = ("elbow_flexion", "elbow_extension")
+WRIST_MOTIONS = {"x": ("wrist_radial_deviation", "wrist_ulnar_deviation"),
+                 "y": ("wrist_flexion", "wrist_extension"),
+                 "z": ("forearm_pronation", "forearm_supination")}
+
+_MASS_FRACTION = dict(MASS_FRACTIONS)
+# Appendix K fraction of each girth row (0 for eyes and eye location).
+GIRTH_MASS_FRACTIONS = np.array(
+    [_MASS_FRACTION.get(f"{FIG_PREFIX[name]}mass", 0.0) if name != "eye_location" else np.nan
+     for name in GIRTH_NAMES])
+
+
+class DatabaseError(ValueError):
+    """A database that cannot be used, or a write that was refused (nothing changed)."""
+
+
+def _columns(names: Sequence[str]) -> list[str]:
+    return [f"{name}_{axis}" for name in names for axis in AXES]
+
+
+QUERY_COLUMNS = {
+    "girth_q": _columns(GIRTH_NAMES),
+    "joint_limits_q": _columns(JOINT_LIMIT_NAMES),
+    "center_of_mass_q": _columns(CENTER_OF_MASS_NAMES),
+}
+STRENGTH_Q_COLUMNS = ["strength_type", "motion_speed", "training_level", "fatigue_level"] + [
+    f"{m}_max" for m in MOTION_NAMES]
+
+
+def _ddl() -> str:
+    def wide(table: str, columns: list[str], kind: str = "REAL") -> str:
+        cols = ",\n  ".join(f"{c} {kind}" for c in columns)
+        return f"CREATE TABLE {table} (\n  id_num INTEGER PRIMARY KEY,\n  {cols}\n);\n"
+
+    strength_q_cols = ",\n  ".join(
+        ["strength_type TEXT", "motion_speed REAL", "training_level REAL", "fatigue_level REAL"]
+        + [f"{m}_max REAL" for m in MOTION_NAMES])
+    return f"""
+CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
+-- person: stature cm, mass kg, age years.  source says where the data come from;
+-- source_key is the person's key in that source (re-imports replace, never duplicate).
+CREATE TABLE person (
+  id_num INTEGER PRIMARY KEY,
+  name TEXT NOT NULL,
+  gender TEXT NOT NULL CHECK (gender IN ('male', 'female')),
+  stature REAL,
+  mass REAL,
+  handedness TEXT CHECK (handedness IN ('right', 'left', 'either')),
+  age REAL,
+  source TEXT NOT NULL,
+  source_key TEXT UNIQUE
+);
+-- No index leads with gender: half the people match, and walking such an index
+-- visits the query tables in random order instead of id order (3x slower).
+CREATE INDEX person_stature ON person (stature);
+CREATE INDEX person_mass ON person (mass);
+-- girth: thickness (x), width (y), length (z) in cm, mass in kg.
+CREATE TABLE girth (
+  id_num INTEGER NOT NULL REFERENCES person (id_num),
+  seg_name TEXT NOT NULL,
+  thickness REAL, width REAL, length REAL, mass REAL,
+  PRIMARY KEY (id_num, seg_name)
+) WITHOUT ROWID;
+-- center_of_mass: cm.
+CREATE TABLE center_of_mass (
+  id_num INTEGER NOT NULL REFERENCES person (id_num),
+  seg_name TEXT NOT NULL,
+  cmass_x REAL, cmass_y REAL, cmass_z REAL,
+  PRIMARY KEY (id_num, seg_name)
+) WITHOUT ROWID;
+-- joint_limits: deg; seg_name is the joint-limit row (right_shoulder_ul).
+CREATE TABLE joint_limits (
+  id_num INTEGER NOT NULL REFERENCES person (id_num),
+  seg_name TEXT NOT NULL,
+  jlimit_x REAL, jlimit_y REAL, jlimit_z REAL,
+  PRIMARY KEY (id_num, seg_name)
+) WITHOUT ROWID;
+-- strength_par: speed deg/s; the *_unit fields record the stored units.
+CREATE TABLE strength_par (
+  id_num INTEGER NOT NULL REFERENCES person (id_num),
+  exp_num INTEGER NOT NULL,
+  side_of_limb TEXT NOT NULL CHECK (side_of_limb IN ('right', 'left')),
+  strgh_type TEXT NOT NULL CHECK (strgh_type IN ('isometric', 'isokinetic', 'isotonic')),
+  speed REAL, fatigue REAL, training REAL,
+  angle_unit TEXT NOT NULL DEFAULT 'deg',
+  strgh_unit TEXT NOT NULL DEFAULT 'N-m',
+  speed_unit TEXT NOT NULL DEFAULT 'deg/s',
+  PRIMARY KEY (id_num, exp_num)
+) WITHOUT ROWID;
+-- *_strgh: angles deg, pstrgh / nstrgh N-m.
+CREATE TABLE shoulder_strgh (
+  id_num INTEGER NOT NULL, exp_num INTEGER NOT NULL,
+  shoulder_ang_x REAL, shoulder_ang_y REAL, shoulder_ang_z REAL, elbow_ang REAL,
+  axis TEXT NOT NULL CHECK (axis IN ('x', 'y', 'z')),
+  pstrgh REAL, nstrgh REAL,
+  PRIMARY KEY (id_num, exp_num, axis),
+  FOREIGN KEY (id_num, exp_num) REFERENCES strength_par (id_num, exp_num)
+) WITHOUT ROWID;
+CREATE TABLE elbow_strgh (
+  id_num INTEGER NOT NULL, exp_num INTEGER NOT NULL,
+  elbow_ang REAL, shoulder_ang_x REAL, shoulder_ang_y REAL, shoulder_ang_z REAL,
+  wrist_ang_x REAL, wrist_ang_y REAL, wrist_ang_z REAL,
+  pstrgh REAL, nstrgh REAL,
+  PRIMARY KEY (id_num, exp_num),
+  FOREIGN KEY (id_num, exp_num) REFERENCES strength_par (id_num, exp_num)
+) WITHOUT ROWID;
+CREATE TABLE wrist_strgh (
+  id_num INTEGER NOT NULL, exp_num INTEGER NOT NULL,
+  wrist_ang_x REAL, wrist_ang_y REAL, wrist_ang_z REAL, elbow_ang REAL,
+  axis TEXT NOT NULL CHECK (axis IN ('x', 'y', 'z')),
+  pstrgh REAL, nstrgh REAL,
+  PRIMARY KEY (id_num, exp_num, axis),
+  FOREIGN KEY (id_num, exp_num) REFERENCES strength_par (id_num, exp_num)
+) WITHOUT ROWID;
+-- Query tables (derived; same units as the relations).
+{wide("girth_q", QUERY_COLUMNS["girth_q"])}
+{wide("joint_limits_q", QUERY_COLUMNS["joint_limits_q"])}
+{wide("center_of_mass_q", QUERY_COLUMNS["center_of_mass_q"])}
+CREATE TABLE strength_q (
+  id_num INTEGER PRIMARY KEY,
+  {strength_q_cols}
+);
+"""
+
+
+RELATIONS = ("person", "girth", "center_of_mass", "joint_limits", "strength_par",
+             "shoulder_strgh", "elbow_strgh", "wrist_strgh")
+PERSON_TABLES = RELATIONS[1:] + ("girth_q", "joint_limits_q", "center_of_mass_q", "strength_q")
+
+
+# --- where the database lives ---------------------------------------------
+
+def default_db_path() -> Path:
+    """$SASS_DB, else $XDG_DATA_HOME/sass/sass.db (~/.local/share/sass/sass.db)."""
+    if os.environ.get("SASS_DB"):
+        return Path(os.environ["SASS_DB"])
+    base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
+    return Path(base) / "sass" / "sass.db"
+
+
+def connect(path: str | Path, *, create: bool = False,
+            check_same_thread: bool = True) -> sqlite3.Connection:
+    """Open a database (autocommit mode: writers use transaction())."""
+    path = Path(path)
+    if not path.exists() and not create:
+        raise DatabaseError(f"{path}: no database there (create it with `sass db init --db {path}`)")
+    if create:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    conn = sqlite3.connect(str(path), isolation_level=None, check_same_thread=check_same_thread)
+    conn.execute("PRAGMA cache_size = -65536")
+    # Map the whole file (address space only): the query tables of a million
+    # people sit all over a 2.5 GB file, and read() calls cost more than page faults.
+    conn.execute("PRAGMA mmap_size = 17179869184")
+    try:
+        has_schema = conn.execute(
+            "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'meta'").fetchone()
+    except sqlite3.DatabaseError as exc:
+        conn.close()
+        raise DatabaseError(f"{path}: not a sass database ({exc})") from None
+    if not has_schema:
+        if not create:
+            conn.close()
+            raise DatabaseError(f"{path}: not a sass database (no schema)")
+        create_schema(conn)
+    return conn
+
+
+def create_schema(conn: sqlite3.Connection) -> None:
+    with transaction(conn):
+        for statement in _ddl().split(";\n"):
+            if statement.strip():
+                conn.execute(statement)
+        conn.execute("INSERT INTO meta VALUES ('schema_version', ?)", (SCHEMA_VERSION,))
+        conn.execute("INSERT INTO meta VALUES ('units', "
+                     "'length cm, mass kg, angle deg, strength N-m, speed deg/s, age years')")
+
+
+class transaction:
+    """BEGIN IMMEDIATE ... COMMIT, or ROLLBACK on any exception (nothing half-written)."""
+
+    def __init__(self, conn: sqlite3.Connection):
+        self.conn = conn
+
+    def __enter__(self):
+        self.conn.execute("BEGIN IMMEDIATE")
+        return self.conn
+
+    def __exit__(self, exc_type, exc, tb):
+        if exc_type is None:
+            self.conn.execute("COMMIT")
+        else:
+            self.conn.execute("ROLLBACK")
+        return False
+
+
+def row_counts(conn: sqlite3.Connection) -> dict[str, int]:
+    return {t: conn.execute(f"SELECT count(*) FROM {t}").fetchone()[0] for t in PERSON_TABLES + ("person",)}
+
+
+# --- bulk storage ---------------------------------------------------------
+
+@dataclass
+class PeopleBatch:
+    """People to store, every group as arrays in the model's row order (NaN = no value).
+
+    Strength experiments are lists of tuples whose first element is the
+    person's index in the batch, the rest the relation's fields after id_num
+    (canonical units).
+    """
+
+    id_num: np.ndarray  # int64
+    name: list[str]
+    gender: list[str]
+    stature: np.ndarray
+    mass: np.ndarray
+    handedness: list[str | None]
+    age: np.ndarray
+    source: list[str]
+    source_key: list[str | None]
+    girth: np.ndarray | None = None  # (n, 25, 4): x, y, z, mass
+    joint_limits: np.ndarray | None = None  # (n, 40, 3)
+    center_of_mass: np.ndarray | None = None  # (n, 21, 3)
+    extra_girth: list[tuple] = field(default_factory=list)  # (i, seg, x, y, z, mass)
+    strength_par: list[tuple] = field(default_factory=list)  # (i, exp, side, type, speed, fatigue, training)
+    shoulder: list[tuple] = field(default_factory=list)  # (i, exp, ax, ay, az, elbow, axis, p, n)
+    elbow: list[tuple] = field(default_factory=list)  # (i, exp, elbow, sx, sy, sz, wx, wy, wz, p, n)
+    wrist: list[tuple] = field(default_factory=list)  # (i, exp, wx, wy, wz, elbow, axis, p, n)
+
+    def __len__(self) -> int:
+        return len(self.id_num)
+
+
+def _opt(value) -> float | None:
+    """NaN -> NULL."""
+    value = float(value)
+    return None if value != value else value
+
+
+def _nullable(array: np.ndarray) -> list:
+    """Array -> nested lists with None for NaN (vectorised: object array)."""
+    out = array.astype(object)
+    out[np.isnan(array)] = None
+    return out.tolist()
+
+
+def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iterable[tuple]:
+    """(id, row name, v...) for every row that has at least one value."""
+    present = ~np.all(np.isnan(values), axis=2)
+    person, row = np.nonzero(present)
+    id_array = np.asarray(ids, dtype=np.int64)
+    name_array = np.asarray(names, dtype=object)
+    return zip(id_array[person].tolist(), name_array[row].tolist(),
+               *[_nullable(values[person, row, k]) for k in range(values.shape[2])])
+
+
+def delete_people(conn: sqlite3.Connection, ids: Sequence[int]) -> None:
+    conn.execute("CREATE TEMP TABLE IF NOT EXISTS _gone (id_num INTEGER PRIMARY KEY)")
+    conn.execute("DELETE FROM _gone")
+    conn.executemany("INSERT OR IGNORE INTO _gone VALUES (?)", ((int(i),) for i in ids))
+    for table in PERSON_TABLES + ("person",):
+        conn.execute(f"DELETE FROM {table} WHERE id_num IN (SELECT id_num FROM _gone)")
+
+
+def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool = True) -> None:
+    """Insert a batch (inside the caller's transaction).  With replace, people
+    whose id_num is already stored are deleted first, with all their data."""
+    ids = [int(i) for i in batch.id_num]
+    if replace:
+        delete_people(conn, ids)
+    conn.executemany(
+        "INSERT INTO person VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+        zip(ids, batch.name, batch.gender, _nullable(batch.stature), _nullable(batch.mass),
+            batch.handedness, _nullable(batch.age), batch.source, batch.source_key))
+    for table, names, values, width in (
+            ("girth", GIRTH_NAMES, batch.girth, 4),
+            ("joint_limits", JOINT_LIMIT_NAMES, batch.joint_limits, 3),
+            ("center_of_mass", CENTER_OF_MASS_NAMES, batch.center_of_mass, 3)):
+        if values is None:
+            continue
+        marks = ", ".join(["?"] * (width + 2))
+        conn.executemany(f"INSERT INTO {table} VALUES ({marks})", _long_rows(ids, names, values))
+        query_table = f"{table}_q"
+        axes = values[:, :, :3].reshape(len(ids), -1)
+        has_any = ~np.all(np.isnan(axes), axis=1)
+        cells = _nullable(axes)
+        marks = ", ".join(["?"] * (axes.shape[1] + 1))
+        conn.executemany(f"INSERT INTO {query_table} VALUES ({marks})",
+                         ((ids[i], *cells[i]) for i in np.flatnonzero(has_any).tolist()))
+    if batch.extra_girth:
+        conn.executemany("INSERT INTO girth VALUES (?, ?, ?, ?, ?, ?)",
+                         ((ids[i], *rest) for i, *rest in batch.extra_girth))
+    _store_strength(conn, ids, batch)
+
+
+def _store_strength(conn: sqlite3.Connection, ids: list[int], batch: PeopleBatch) -> None:
+    if not batch.strength_par:
+        return
+    conn.executemany(
+        "INSERT INTO strength_par VALUES (?, ?, ?, ?, ?, ?, ?, 'deg', 'N-m', 'deg/s')",
+        ((ids[i], *rest) for i, *rest in batch.strength_par))
+    conn.executemany("INSERT INTO shoulder_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                     ((ids[i], *rest) for i, *rest in batch.shoulder))
+    conn.executemany("INSERT INTO elbow_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                     ((ids[i], *rest) for i, *rest in batch.elbow))
+    conn.executemany("INSERT INTO wrist_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+                     ((ids[i], *rest) for i, *rest in batch.wrist))
+    conn.executemany(f"INSERT INTO strength_q VALUES ({', '.join(['?'] * (len(STRENGTH_Q_COLUMNS) + 1))})",
+                     strength_summary(batch.strength_par, batch.shoulder, batch.elbow, batch.wrist, ids))
+
+
+def strength_summary(par, shoulder, elbow, wrist, ids: list[int]) -> list[tuple]:
+    """One strength_q row per person: the parameters of the first experiment
+    (what the query list shows) and each motion's maximum over all experiments."""
+    motion_index = {m: k for k, m in enumerate(MOTION_NAMES)}
+    first: dict[int, tuple] = {}
+    for i, exp, _side, kind, speed, fatigue, training in par:
+        if i not in first or exp < first[i][0]:
+            first[i] = (exp, kind, speed, training, fatigue)
+    maxima: dict[int, list] = {i: [None] * len(MOTION_NAMES) for i in first}
+
+    def note(i: int, motion: str, value) -> None:
+        if value is None or value != value:
+            return
+        slot = maxima[i]
+        k = motion_index[motion]
+        if slot[k] is None or value > slot[k]:
+            slot[k] = value
+
+    for i, _exp, *_angles, axis, p, n in shoulder:
+        note(i, SHOULDER_MOTIONS[axis][0], p)
+        note(i, SHOULDER_MOTIONS[axis][1], n)
+    for i, *_rest, p, n in elbow:
+        note(i, ELBOW_MOTIONS[0], p)
+        note(i, ELBOW_MOTIONS[1], n)
+    for i, _exp, *_angles, axis, p, n in wrist:
+        note(i, WRIST_MOTIONS[axis][0], p)
+        note(i, WRIST_MOTIONS[axis][1], n)
+    return [(ids[i], *first[i][1:], *maxima[i]) for i in sorted(first)]

@@ -1,0 +1,143 @@
+"""ANSUR II import and queries, checked against direct computations over the CSV."""
+
+from __future__ import annotations
+
+import csv
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sass_tui.cli import main
+from sass_tui.db.ansur import AnsurImportError, ellipse_axes, import_ansur
+from sass_tui.db.individual import fetch_individual
+from sass_tui.db.query import run_query
+from sass_tui.db.schema import connect, row_counts
+from sass_tui.model.names import GIRTH, row_index
+
+SHARED = Path(__file__).resolve().parents[1].parent.parent / "shared"
+FILES = ("ANSUR_II_MALE_Public.csv", "ANSUR_II_FEMALE_Public.csv")
+
+
+@pytest.fixture(scope="session")
+def ansur_files() -> list[Path]:
+    paths = [SHARED / "data" / "ansur2" / f for f in FILES]
+    if not all(p.is_file() for p in paths):
+        pytest.skip("../shared/data/ansur2 is absent")
+    return paths
+
+
+@pytest.fixture(scope="session")
+def ansur_db(ansur_files, tmp_path_factory):
+    path = tmp_path_factory.mktemp("ansur") / "ansur.db"
+    conn = connect(path, create=True)
+    counts = import_ansur(conn, ansur_files)
+    yield conn, counts, path
+    conn.close()
+
+
+@pytest.fixture(scope="session")
+def csv_rows(ansur_files) -> list[dict]:
+    rows = []
+    for path in ansur_files:
+        with path.open(encoding="cp1252", newline="") as handle:
+            for row in csv.DictReader(handle):
+                rows.append({k.lower(): v for k, v in row.items()})
+    return rows
+
+
+def test_counts(ansur_db):
+    conn, counts, _ = ansur_db
+    assert counts == {"male": 4082, "female": 1986}
+    assert dict(conn.execute("SELECT gender, count(*) FROM person GROUP BY gender")) == counts
+
+
+def _hand(row):
+    return {"Right hand": "right", "Left hand": "left"}.get(row["writingpreference"], "either")
+
+
+CASES = [
+    ("gender = female", lambda r: r["gender"] == "Female"),
+    ("stature > 180 cm", lambda r: float(r["stature"]) > 1800),
+    ("stature >= 70 in AND mass < 80 kg",
+     lambda r: float(r["stature"]) >= 1778 and float(r["weightkg"]) < 800),
+    ("handedness = either OR handedness = left AND gender = female",
+     lambda r: _hand(r) == "either" or (_hand(r) == "left" and r["gender"] == "Female")),
+    ("(handedness = either OR handedness = left) AND gender = female",
+     lambda r: _hand(r) in ("either", "left") and r["gender"] == "Female"),
+    ("girth.right_upper_arm.z > 13.5 in",
+     lambda r: float(r["acromionradialelength"]) / 10 > 13.5 * 2.54),
+    ("girth.right_upper_leg.z <= 42.05 cm OR girth.right_lower_leg.z > 40.05 cm",
+     lambda r: (float(r["trochanterionheight"]) - float(r["tibialheight"])) / 10 <= 42.05
+     or (float(r["tibialheight"]) - float(r["lateralmalleolusheight"])) / 10 > 40.05),
+    ("gender = male AND (girth.right_upper_leg.x > 20 cm OR girth.neck.y < 12 cm) AND age >= 30",
+     lambda r: r["gender"] == "Male" and (float(r["thighcircumference"]) / 10 / math.pi > 20
+                                          or float(r["neckcircumference"]) / 10 / math.pi < 12)
+     and float(r["age"]) >= 30),
+    ("mass > 220 lb", lambda r: float(r["weightkg"]) / 10 > 220 * 0.45359237),
+]
+
+
+@pytest.mark.parametrize("text, predicate", [c for c in CASES if c[1]])
+def test_query_counts_match_csv(ansur_db, csv_rows, text, predicate):
+    conn, _, _ = ansur_db
+    expected = sum(1 for r in csv_rows if predicate(r))
+    assert 0 < expected < len(csv_rows)
+    assert run_query(conn, text).count() == expected
+
+
+def test_derivations(ansur_db, csv_rows):
+    conn, _, _ = ansur_db
+    first = csv_rows[0]
+    pid = conn.execute("SELECT id_num FROM person WHERE source_key = ?",
+                       (f"ANSUR II:male:{first['subjectid']}",)).fetchone()[0]
+    person = fetch_individual(conn, pid)
+    girth = person.groups[GIRTH]
+    arm = girth[row_index(GIRTH, "right_upper_arm")]
+    assert arm[2] == pytest.approx(float(first["acromionradialelength"]) / 10)
+    assert arm[1] / arm[0] == pytest.approx(17 / 20)
+    fore = girth[row_index(GIRTH, "right_lower_arm")]
+    assert fore[1] / fore[0] == pytest.approx(3 / 2)
+    # the ellipse's circumference approximation gives back the measured circumference
+    big, small = fore[1] / 2, fore[0] / 2
+    c = 2 * math.pi * math.sqrt((big ** 2 + small ** 2) / 2)
+    assert c == pytest.approx(float(first["forearmcircumferenceflexed"]) / 10)
+    assert person.mass == pytest.approx(float(first["weightkg"]) / 10)
+    assert person.handedness == _hand(first)
+    assert np.isnan(person.groups["joint_limits"]).all()
+
+
+def test_ellipse_axes_ratio():
+    a2, b2 = ellipse_axes(np.array([30.0]), 1.5)
+    assert a2[0] / b2[0] == pytest.approx(1.5)
+
+
+def test_reimport_does_not_duplicate(ansur_files, tmp_path):
+    conn = connect(tmp_path / "x.db", create=True)
+    import_ansur(conn, ansur_files[1:])
+    first = row_counts(conn)
+    ids = [r[0] for r in conn.execute("SELECT id_num FROM person ORDER BY id_num LIMIT 5")]
+    import_ansur(conn, ansur_files[1:])
+    assert row_counts(conn) == first
+    assert [r[0] for r in conn.execute("SELECT id_num FROM person ORDER BY id_num LIMIT 5")] == ids
+
+
+def test_missing_column_rejected(ansur_db, ansur_files, tmp_path):
+    conn, _, path = ansur_db
+    text = ansur_files[1].read_text(encoding="cp1252").splitlines()
+    header = text[0].split(",")
+    k = [h.lower() for h in header].index("acromionradialelength")
+    broken = [",".join(f for j, f in enumerate(line.split(",")) if j != k) for line in text]
+    bad = tmp_path / "broken.csv"
+    bad.write_text("\n".join(broken) + "\n", encoding="cp1252")
+    before = row_counts(conn)
+    with pytest.raises(AnsurImportError, match=r"broken.csv:1: missing column acromionradialelength"):
+        import_ansur(conn, [ansur_files[0], bad])
+    assert row_counts(conn) == before
+
+
+def test_cli_import_ansur(ansur_files, tmp_path, capsys):
+    db = tmp_path / "cli.db"
+    assert main(["db", "import-ansur", "--db", str(db), str(ansur_files[1])]) == 0
+    assert "imported 0 men and 1986 women" in capsys.readouterr().out
