@@ -1,0 +1,483 @@
+"""The sections of the anthropometric spreadsheet (report figure 4).
+
+The widgets only show the app's Figure and turn clicks and keys into calls
+on the app; every change to the data goes through the app to the model.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from rich.text import Text
+from textual import events
+from textual.binding import Binding
+from textual.containers import Horizontal, Vertical
+from textual.message import Message
+from textual.widget import Widget
+from textual.widgets import Button, Input, Label, Static
+
+from sass_tui.model.names import AXES, GROUP_TITLES, STRENGTH
+from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert
+from sass_tui.ui.commands import CommandSpec
+
+# Characters that start typing a new number straight into the message line.
+NUMBER_START = set("0123456789.-+")
+DECIMALS = {"cm": 2, "in": 2, "deg": 1, "rad": 3}
+
+
+def format_value(value: float, unit: str) -> str:
+    """999 (NaN) is shown blank, as SASS did."""
+    if value is None or math.isnan(value):
+        return ""
+    return f"{value:.{DECIMALS.get(unit, 2)}f}"
+
+
+def format_percentile(p: float) -> str:
+    if p is None or math.isnan(p):
+        return ""
+    return f"{p:.1f}"
+
+
+def forward_to_answer(widget: Widget, event: events.Key) -> bool:
+    """Keys typed fast reach the app before the answer line takes the focus, and
+    the app hands them to the widget focused when they arrived: pass them on."""
+    answer = widget.app.query_one("#answer", Input)
+    if not answer.display:
+        return False
+    event.stop()
+    event.prevent_default()
+    answer.post_message(events.Key(event.key, event.character))
+    return True
+
+
+# --- anthropometric group status line ------------------------------------
+
+class GroupTab(Static):
+    """One group's cell; the selected group's is highlighted."""
+
+    class Chosen(Message):
+        def __init__(self, group: str) -> None:
+            super().__init__()
+            self.group = group
+
+    def __init__(self, group: str, key: str) -> None:
+        super().__init__(f"{GROUP_TITLES[group]} ({key})", id=f"group-{group}",
+                         classes="group-tab")
+        self.group = group
+
+    def on_click(self, event: events.Click) -> None:
+        event.stop()
+        self.post_message(self.Chosen(self.group))
+
+
+class GroupBar(Horizontal):
+    def __init__(self, groups: tuple[tuple[str, str], ...], **kwargs) -> None:
+        super().__init__(**kwargs)
+        self._groups = groups
+
+    def compose(self):
+        for group, key in self._groups:
+            yield GroupTab(group, key)
+
+    def highlight(self, group: str) -> None:
+        for tab in self.query(GroupTab):
+            tab.set_class(tab.group == group, "-selected")
+
+
+# --- standard (global) data --------------------------------------------------
+
+@dataclass(frozen=True)
+class GlobalCell:
+    field: str
+    label: str
+    row: int
+    slot: int  # 0 = value, 1 = its percentile (mass, stature), 2 = right column
+
+
+GLOBAL_CELLS: tuple[GlobalCell, ...] = (
+    GlobalCell("population", "Population", 0, 0),
+    GlobalCell("figure_type", "Figure type", 1, 0),
+    GlobalCell("gender", "Gender", 2, 0),
+    GlobalCell("mass", "Mass", 3, 0),
+    GlobalCell("mass_percentile", "", 3, 1),
+    GlobalCell("stature", "Stature", 4, 0),
+    GlobalCell("stature_percentile", "", 4, 1),
+    GlobalCell("group_percentile", "Group pct.", 5, 0),
+    GlobalCell("strength_type", "Strength type", 1, 2),
+    GlobalCell("motion_speed", "Motion speed", 2, 2),
+    GlobalCell("handedness", "Handedness", 3, 2),
+    GlobalCell("training_level", "Training level", 4, 2),
+    GlobalCell("fatigue_level", "Fatigue level", 5, 2),
+)
+GLOBAL_ROWS = 6
+# Column widths: left label, value, percentile, gap, right label, right value.
+_LABEL_A, _SLOT0, _SLOT1, _GAP, _LABEL_B = 12, 10, 8, 1, 15
+
+
+def global_text(figure, group: str, field: str) -> str:
+    if field == "population":
+        return figure.person or figure.population
+    if field in ("mass", "stature"):
+        value = getattr(figure, field)
+        return "" if math.isnan(value) else f"{value:.1f} {'kg' if field == 'mass' else 'cm'}"
+    if field in ("mass_percentile", "stature_percentile"):
+        return f"{format_percentile(getattr(figure, field))} %".strip(" ")
+    if field == "group_percentile":
+        return "" if group == STRENGTH else format_percentile(figure.groups[group].percentile)
+    if field == "motion_speed":
+        return f"{figure.motion_speed:g} deg/s"
+    value = getattr(figure, field)
+    return f"{value:g}" if isinstance(value, float) else str(value)
+
+
+class GlobalPanel(Widget, can_focus=True):
+    """The eleven labels of §12.2.2; a cell is chosen with the mouse or arrows."""
+
+    COMPONENT_CLASSES = {"globalpanel--label", "globalpanel--cursor",
+                         "globalpanel--cursor-blur", "globalpanel--readonly"}
+    BINDINGS = [
+        Binding("up", "move(-1, 0)", show=False),
+        Binding("down", "move(1, 0)", show=False),
+        Binding("left", "move(0, -1)", show=False),
+        Binding("right", "move(0, 1)", show=False),
+        Binding("enter", "edit", "Edit", show=False),
+    ]
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.cursor = GLOBAL_CELLS[1]
+
+    def select(self, field: str) -> None:
+        self.cursor = next(c for c in GLOBAL_CELLS if c.field == field)
+        self.refresh()
+
+    def _slot_span(self, slot: int) -> tuple[int, int]:
+        starts = (_LABEL_A, _LABEL_A + _SLOT0, _LABEL_A + _SLOT0 + _SLOT1 + _GAP + _LABEL_B)
+        widths = (_SLOT0, _SLOT1, max(6, self.size.width - starts[2]))
+        return starts[slot], widths[slot]
+
+    def render(self) -> Text:
+        figure, group = self.app.figure, self.app.data_group
+        label_style = self.get_component_rich_style("globalpanel--label")
+        cursor_style = self.get_component_rich_style(
+            "globalpanel--cursor" if self.has_focus else "globalpanel--cursor-blur")
+        width = self.size.width
+        lines = []
+        for row in range(GLOBAL_ROWS):
+            line = Text(no_wrap=True, overflow="crop")
+            cells = sorted((c for c in GLOBAL_CELLS if c.row == row), key=lambda c: c.slot)
+            column = 0
+            for cell in cells:
+                start, span = self._slot_span(cell.slot)
+                if cell.field == "population":
+                    span = width - start
+                if cell.label:
+                    label_start = 0 if cell.slot == 0 else start - _LABEL_B
+                    line.append(" " * (label_start - column))
+                    line.append(f"{cell.label:<{start - label_start}}"[:start - label_start],
+                                label_style)
+                    column = start
+                line.append(" " * max(0, start - column))
+                text = global_text(figure, group, cell.field)
+                cell_style = cursor_style if cell == self.cursor else ""
+                line.append(f"{text:<{span - 1}}"[:span - 1], cell_style)
+                line.append(" ")
+                column = start + span
+            lines.append(line)
+        return Text("\n", no_wrap=True).join(lines)
+
+    def on_click(self, event: events.Click) -> None:
+        offset = event.get_content_offset(self)
+        if offset is None:
+            return
+        for cell in GLOBAL_CELLS:
+            start, span = self._slot_span(cell.slot)
+            if cell.field == "population":
+                span = self.size.width - start
+            label_start = 0 if cell.slot == 0 else start - _LABEL_B if cell.slot == 2 else start
+            if cell.row == offset.y and label_start <= offset.x < start + span:
+                self.cursor = cell
+                self.focus()
+                self.refresh()
+                return
+
+    def action_move(self, rows: int, slots: int) -> None:
+        here = self.cursor
+        if rows:
+            target = here.row + rows
+            candidates = [c for c in GLOBAL_CELLS if c.row == target]
+            if not candidates:
+                return
+            self.cursor = min(candidates, key=lambda c: abs(c.slot - here.slot))
+        else:
+            same_row = sorted((c for c in GLOBAL_CELLS if c.row == here.row),
+                              key=lambda c: c.slot)
+            index = same_row.index(here) + slots
+            if 0 <= index < len(same_row):
+                self.cursor = same_row[index]
+        self.refresh()
+
+    def action_edit(self) -> None:
+        self.app.edit_global(self.cursor.field)
+
+    def on_key(self, event: events.Key) -> None:
+        if forward_to_answer(self, event):
+            return
+        if event.character and event.character in NUMBER_START:
+            event.stop()
+            event.prevent_default()
+            # Called, not posted: the answer line must have the focus before the next key.
+            self.app.edit_global(self.cursor.field, event.character)
+
+    def on_focus(self) -> None:
+        self.refresh()
+
+    def on_blur(self) -> None:
+        self.refresh()
+
+
+# --- command menu --------------------------------------------------------------
+
+class CommandMenu(Horizontal):
+    """Figure 6: buttons in two columns, built from the command specs."""
+
+    def __init__(self, commands: tuple[CommandSpec, ...], **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.commands = commands
+
+    def compose(self):
+        for column in sorted({c.column for c in self.commands}):
+            with Vertical(classes="command-column"):
+                for spec in sorted((c for c in self.commands if c.column == column),
+                                   key=lambda c: c.row):
+                    button = Button(spec.label(self.app), id=f"command-{spec.name}",
+                                    classes="command", compact=True)
+                    button.can_focus = False
+                    yield button
+
+    def refresh_labels(self) -> None:
+        for spec in self.commands:
+            button = self.query_one(f"#command-{spec.name}", Button)
+            button.label = spec.label(self.app)
+            button.display = spec.available(self.app)
+
+
+# --- data section ----------------------------------------------------------------
+
+class DataSheet(Widget, can_focus=True):
+    """Names column, then value and percentile for x, y and z; 25 rows a page,
+    fewer when the terminal is too short (paging still reaches every row)."""
+
+    COMPONENT_CLASSES = {"datasheet--header", "datasheet--name", "datasheet--percentile",
+                         "datasheet--cursor", "datasheet--cursor-blur", "datasheet--page"}
+    BINDINGS = [
+        Binding("up", "move(-1, 0)", show=False),
+        Binding("down", "move(1, 0)", show=False),
+        Binding("left", "move(0, -1)", show=False),
+        Binding("right", "move(0, 1)", show=False),
+        Binding("home", "jump(0)", show=False),
+        Binding("end", "jump(-1)", show=False),
+        Binding("enter", "edit", "Edit", show=False),
+    ]
+    HEADER_LINES = 2
+    PAGE_ROWS = 25  # the report's fixed page
+    COLUMNS = 6  # value and percentile for x, y, z
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.cursor_row = 0
+        self.cursor_column = 0
+        self._cursors: dict[str, tuple[int, int]] = {}
+        self._group = ""
+
+    # --- paging ---------------------------------------------------------
+    @property
+    def page_size(self) -> int:
+        return max(1, min(self.PAGE_ROWS, self.content_size.height - self.HEADER_LINES))
+
+    @property
+    def row_count(self) -> int:
+        return len(self.app.figure.groups[self._group].rows) if self._group else 0
+
+    @property
+    def page(self) -> int:
+        return self.cursor_row // self.page_size
+
+    @property
+    def pages(self) -> int:
+        return max(1, -(-self.row_count // self.page_size))
+
+    def show_group(self, group: str) -> None:
+        if self._group:
+            self._cursors[self._group] = (self.cursor_row, self.cursor_column)
+        self._group = group
+        self.cursor_row, self.cursor_column = self._cursors.get(group, (0, 0))
+        self.refresh()
+
+    def turn_page(self, pages: int) -> bool:
+        """Keep the cursor's place on the page; False at the first/last page."""
+        target = self.page + pages
+        if not 0 <= target < self.pages:
+            return False
+        offset = self.cursor_row % self.page_size
+        self.cursor_row = min(target * self.page_size + offset, self.row_count - 1)
+        self.refresh()
+        return True
+
+    # --- layout ---------------------------------------------------------
+    def column_widths(self) -> tuple[int, int, int]:
+        """Name, value and percentile widths; a wide terminal widens them."""
+        width = self.content_size.width
+        name, value, percentile = 18, 9, 7
+        spare = max(0, width - (name + 3 * (value + percentile)))
+        name += min(spare, 6)
+        spare -= min(spare, 6)
+        value += min(spare // 6, 4)
+        percentile += min(spare // 6, 3)
+        return name, value, percentile
+
+    def _column_start(self, column: int) -> tuple[int, int]:
+        name, value, percentile = self.column_widths()
+        start = name + (column // 2) * (value + percentile) + (value if column % 2 else 0)
+        return start, value if column % 2 == 0 else percentile
+
+    def render(self) -> Text:
+        figure = self.app.figure
+        state = figure.groups[self._group]
+        unit = DISPLAY[state.unit]
+        name_w, value_w, pct_w = self.column_widths()
+        header_style = self.get_component_rich_style("datasheet--header")
+        name_style = self.get_component_rich_style("datasheet--name")
+        pct_style = self.get_component_rich_style("datasheet--percentile")
+        cursor_style = self.get_component_rich_style(
+            "datasheet--cursor" if self.has_focus else "datasheet--cursor-blur")
+        page_style = self.get_component_rich_style("datasheet--page")
+
+        top = Text(no_wrap=True, overflow="crop")
+        top.append(f"{GROUP_TITLES[self._group]:<{name_w}}"[:name_w], header_style)
+        for axis in AXES:
+            top.append(f"{axis:^{value_w + pct_w}}", header_style)
+        second = Text(no_wrap=True, overflow="crop")
+        second.append(f"{f'page {self.page + 1}/{self.pages}':<{name_w}}", page_style)
+        for _ in AXES:
+            second.append(f"{unit:>{value_w - 1}} ", header_style)
+            second.append(f"{'%':>{pct_w - 1}} ", header_style)
+        lines = [top, second]
+
+        if not state.loaded:
+            lines.append(Text(f"No {figure.gender} data loaded for {GROUP_TITLES[self._group]}."))
+            return Text("\n").join(lines)
+        first = self.page * self.page_size
+        values = state.values
+        shown = convert(values, GROUP_UNITS[self._group][0], state.unit)
+        for index in range(first, min(first + self.page_size, self.row_count)):
+            line = Text(no_wrap=True, overflow="crop")
+            line.append(f"{state.rows[index].label:<{name_w}}"[:name_w], name_style)
+            for column in range(self.COLUMNS):
+                axis = column // 2
+                if column % 2 == 0:
+                    text = f"{format_value(shown[index, axis], state.unit):>{value_w - 1}} "
+                    style = ""
+                else:
+                    text = f"{format_percentile(state.percentiles[index, axis]):>{pct_w - 1}} "
+                    style = pct_style
+                if index == self.cursor_row and column == self.cursor_column:
+                    style = cursor_style
+                line.append(text, style)
+            lines.append(line)
+        return Text("\n", no_wrap=True).join(lines)
+
+    # --- input ----------------------------------------------------------
+    def on_click(self, event: events.Click) -> None:
+        offset = event.get_content_offset(self)
+        if offset is None:
+            return
+        row = self.page * self.page_size + offset.y - self.HEADER_LINES
+        if offset.y < self.HEADER_LINES or row >= min(self.row_count,
+                                                      (self.page + 1) * self.page_size):
+            return
+        self.cursor_row = row
+        for column in range(self.COLUMNS):
+            start, width = self._column_start(column)
+            if start <= offset.x < start + width:
+                self.cursor_column = column
+        self.focus()
+        self.refresh()
+
+    def action_move(self, rows: int, columns: int) -> None:
+        self.cursor_row = min(max(self.cursor_row + rows, 0), self.row_count - 1)
+        self.cursor_column = min(max(self.cursor_column + columns, 0), self.COLUMNS - 1)
+        self.refresh()
+
+    def action_jump(self, row: int) -> None:
+        self.cursor_row = row % self.row_count
+        self.refresh()
+
+    def action_edit(self) -> None:
+        self.app.edit_cell(self.cursor_row, self.cursor_column)
+
+    def on_key(self, event: events.Key) -> None:
+        if forward_to_answer(self, event):
+            return
+        if event.character and event.character in NUMBER_START:
+            event.stop()
+            event.prevent_default()
+            # Called, not posted: the answer line must have the focus before the next key.
+            self.app.edit_cell(self.cursor_row, self.cursor_column, event.character)
+
+    def on_resize(self) -> None:
+        self.refresh()
+
+    def on_focus(self) -> None:
+        self.refresh()
+
+    def on_blur(self) -> None:
+        self.refresh()
+
+
+# --- command/message line ------------------------------------------------------------
+
+class AnswerInput(Input):
+    BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
+
+    class Cancelled(Message):
+        pass
+
+    def action_cancel(self) -> None:
+        self.post_message(self.Cancelled())
+
+
+class MessageLine(Horizontal):
+    """Prompts, typed answers, errors and warnings (report 'command/message window')."""
+
+    def compose(self):
+        yield Label("", id="message")
+        yield AnswerInput(id="answer", compact=True, select_on_focus=False)
+
+    def on_mount(self) -> None:
+        self.query_one("#answer").display = False
+
+    def show(self, text: str, kind: str = "info") -> None:
+        label = self.query_one("#message", Label)
+        label.update(Text(text))
+        for name in ("info", "error", "warning", "prompt"):
+            label.set_class(name == kind, f"-{name}")
+
+    @property
+    def prompting(self) -> bool:
+        return bool(self.query_one("#answer").display)
+
+    def ask(self, prompt: str, initial: str = "") -> None:
+        self.show(prompt + " ", "prompt")
+        answer = self.query_one("#answer", AnswerInput)
+        answer.value = initial
+        answer.display = True
+        # Focus now, not on the next idle: keys typed fast must land in the answer.
+        self.screen.set_focus(answer)
+        answer.cursor_position = len(initial)
+
+    def close(self) -> None:
+        answer = self.query_one("#answer", AnswerInput)
+        answer.value = ""
+        answer.display = False
