@@ -11,8 +11,6 @@ import re
 from functools import lru_cache
 from pathlib import Path
 
-import numpy as np
-import pint
 
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH
 
@@ -22,8 +20,25 @@ class UnitError(ValueError):
 
 
 @lru_cache(maxsize=1)
-def registry() -> pint.UnitRegistry:
+def registry():
+    """The pint UnitRegistry.  pint is imported here, not at module level: it
+    costs ~0.1 s, and a figure in its canonical units never needs it."""
+    import pint
+
     return pint.UnitRegistry(str(Path(__file__).with_name("units.txt")), cache_folder=None)
+
+
+@lru_cache(maxsize=None)
+def _factor(from_unit: str, to_unit: str) -> float:
+    import pint
+
+    try:
+        return registry().Quantity(1.0, from_unit).to(to_unit).magnitude
+    except pint.DimensionalityError:
+        raise UnitError(
+            f"{DISPLAY.get(from_unit, from_unit)} is not a unit of "
+            f"{_dimension_word(to_unit)} (expected e.g. {DISPLAY.get(to_unit, to_unit)})"
+        ) from None
 
 
 # Display spelling -> registry name.  Keys are compared after lower-casing,
@@ -89,17 +104,7 @@ def convert(value, from_unit: str, to_unit: str):
     """Convert a number or numpy array between registry units (NaN stays NaN)."""
     if from_unit == to_unit:
         return value
-    ureg = registry()
-    try:
-        factor = ureg.Quantity(1.0, from_unit).to(to_unit).magnitude
-    except pint.DimensionalityError:
-        raise UnitError(
-            f"{DISPLAY.get(from_unit, from_unit)} is not a unit of "
-            f"{_dimension_word(to_unit)} (expected e.g. {DISPLAY.get(to_unit, to_unit)})"
-        ) from None
-    if isinstance(value, np.ndarray):
-        return value * factor
-    return value * factor
+    return value * _factor(from_unit, to_unit)
 
 
 def _dimension_word(unit: str) -> str:
