@@ -10,7 +10,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from sass_tui.db.schema import (
-    CENTER_OF_MASS_NAMES, DatabaseError, GIRTH_NAMES, JOINT_LIMIT_NAMES, STRENGTH_Q_COLUMNS)
+    CENTER_OF_MASS_NAMES, QUERY_TABLES, STRENGTH_PARAMETERS, STRENGTH_Q_COLUMNS, DatabaseError,
+    GIRTH_NAMES, JOINT_LIMIT_NAMES)
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 
 
@@ -58,8 +59,12 @@ def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
                                 "WHERE id_num = ?", (id_num,)).fetchall()
     cmass = conn.execute("SELECT seg_name, cmass_x, cmass_y, cmass_z FROM center_of_mass "
                          "WHERE id_num = ?", (id_num,)).fetchall()
-    strength_row = conn.execute(f"SELECT {', '.join(STRENGTH_Q_COLUMNS)} FROM strength_q "
+    strength_row = conn.execute(f"SELECT {', '.join(STRENGTH_PARAMETERS)} FROM strength_q "
                                 "WHERE id_num = ?", (id_num,)).fetchone()
+    if strength_row is not None:
+        strength_row = strength_row + tuple(
+            (conn.execute(f"SELECT max FROM {table} WHERE id_num = ?", (id_num,)).fetchone() or (None,))[0]
+            for table in QUERY_TABLES["strength"].values())
 
     def nan(v):
         return np.nan if v is None else float(v)

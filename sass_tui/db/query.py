@@ -21,7 +21,8 @@ from lark.exceptions import (
     UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken, VisitError)
 
 from sass_tui.db.schema import (
-    CENTER_OF_MASS_NAMES, GENDERS, GIRTH_NAMES, HANDEDNESS, JOINT_LIMIT_NAMES, STRENGTH_TYPES)
+    CENTER_OF_MASS_NAMES, GENDERS, GIRTH_NAMES, HANDEDNESS, JOINT_LIMIT_NAMES, QUERY_TABLES,
+    STRENGTH_TYPES)
 from sass_tui.model.strength import MOTION_NAMES
 from sass_tui.model.units import DISPLAY, UnitError, convert, unit_name
 
@@ -60,14 +61,13 @@ _GLOBAL_FIELDS = {
     "training_level": ("s", "training_level", "", None),
     "fatigue_level": ("s", "fatigue_level", "", None),
 }
-# group word -> (alias, rows, stored unit, what a row is called)
+# group word -> (query-table group, rows, stored unit, what a row is called)
 _GROUPS = {
-    "girth": ("g", GIRTH_NAMES, "cm", "segment"),
-    "joint_limit": ("j", JOINT_LIMIT_NAMES, "deg", "joint limit"),
-    "center_of_mass": ("c", CENTER_OF_MASS_NAMES, "cm", "segment"),
-    "strength": ("s", MOTION_NAMES, "N_m", "motion"),
+    "girth": ("girth", GIRTH_NAMES, "cm", "segment"),
+    "joint_limit": ("joint_limits", JOINT_LIMIT_NAMES, "deg", "joint limit"),
+    "center_of_mass": ("center_of_mass", CENTER_OF_MASS_NAMES, "cm", "segment"),
+    "strength": ("strength", MOTION_NAMES, "N_m", "motion"),
 }
-_TABLES = {"g": "girth_q", "j": "joint_limits_q", "c": "center_of_mass_q", "s": "strength_q"}
 
 
 class QueryError(ValueError):
@@ -96,11 +96,11 @@ class CompiledQuery:
     text: str
     where: str
     params: tuple
-    aliases: frozenset[str]
+    tables: tuple[tuple[str, str], ...]  # (alias, table) joined to person p
 
     def from_clause(self) -> str:
-        joins = "".join(f" LEFT JOIN {_TABLES[a]} {a} ON {a}.id_num = p.id_num"
-                        for a in sorted(self.aliases))
+        joins = "".join(f" LEFT JOIN {table} {alias} ON {alias}.id_num = p.id_num"
+                        for alias, table in self.tables)
         return f"person p{joins}"
 
 
@@ -108,7 +108,10 @@ class _Compiler(Transformer):
     def __init__(self, text: str):
         super().__init__()
         self.text = text
-        self.aliases: set[str] = set()
+        self.tables: dict[str, str] = {}  # table -> alias
+
+    def _alias(self, table: str) -> str:
+        return self.tables.setdefault(table, f"t{len(self.tables)}")
 
     def _fail(self, message: str, token) -> None:
         raise QueryError(message, self.text, getattr(token, "column", None))
@@ -158,14 +161,14 @@ class _Compiler(Transformer):
         if len(names) == 1 and head in _GLOBAL_FIELDS:
             alias, column, unit, words = _GLOBAL_FIELDS[head]
             if alias != "p":
-                self.aliases.add(alias)
+                alias = self._alias("strength_q")
             return alias, column, unit, words
         if head not in _GROUPS:
             self._fail(f"unknown field {str(names[0])!r}; expected one of "
                        f"{', '.join(_GLOBAL_FIELDS)} or girth.SEGMENT.x|y|z, "
                        "joint_limit.JOINT.x|y|z, center_of_mass.SEGMENT.x|y|z, strength.MOTION.max",
                        names[0])
-        alias, rows, unit, what = _GROUPS[head]
+        group, rows, unit, what = _GROUPS[head]
         if len(names) != 3:
             shape = "strength.MOTION.max" if head == "strength" else f"{head}.{what.upper().replace(' ', '_')}.x|y|z"
             self._fail(f"expected {shape}", names[0])
@@ -176,8 +179,7 @@ class _Compiler(Transformer):
         if axis not in expected_axes:
             self._fail(f"expected {' or '.join(expected_axes)} after {head}.{row}, found "
                        f"{str(names[2])!r}", names[2])
-        self.aliases.add(alias)
-        return alias, f"{row}_{axis}", unit, None
+        return self._alias(QUERY_TABLES[group][row]), axis, unit, None
 
 
 def compile_query(text: str) -> CompiledQuery:
@@ -206,7 +208,8 @@ def compile_query(text: str) -> CompiledQuery:
         if isinstance(exc.orig_exc, QueryError):
             raise exc.orig_exc from None
         raise
-    return CompiledQuery(text, where, tuple(params), frozenset(compiler.aliases))
+    return CompiledQuery(text, where, tuple(params),
+                         tuple((alias, table) for table, alias in compiler.tables.items()))
 
 
 _TOKEN_WORDS = {"_AND": "AND", "_OR": "OR", "OP": "a comparison (< > <= >= = !=)", "NAME": "a name",

@@ -6,15 +6,15 @@ wrist_strgh, with the report's field names.  Values are stored in canonical
 units: lengths cm, masses kg, angles deg, strengths N-m, speeds deg/s; NULL is
 "no value" (the flat files' 999.0).
 
-Besides the relations, every person has one row in each *query table*
-(girth_q, joint_limits_q, center_of_mass_q, strength_q): the same values
-pivoted to one column per row and axis (`right_upper_arm_z`), and the maximum
-strength of each motion.  They are written in the same transaction as the
-relations.  A query such as the report's sample then reads a few rows per
-person by integer key instead of probing the long relations once per
-condition: on 1,000,000 people the report's sample query took 0.8 s against
-the long relations and 0.5 s against the query tables when the design was
-tried (docs/performance.md, "Database").
+Besides the relations, every person has one row in each *query table*: one
+narrow table per girth row, joint-limit row, center-of-mass row and strength
+motion (`q_girth_right_upper_arm` with x, y, z; `q_strength_elbow_flexion`
+with the motion's maximum) and `strength_q` (the parameters of the first
+experiment).  They are written in the same transaction as the relations.  A
+query then reads, per person, a few short rows by integer key: on 1,000,000
+people the report's sample query took 0.8 s against the long relations,
+0.6 s against one wide table per group, and 0.3 s against narrow tables
+(docs/performance.md, "Database").
 
 No Textual import here.
 """
@@ -70,27 +70,25 @@ class DatabaseError(ValueError):
     """A database that cannot be used, or a write that was refused (nothing changed)."""
 
 
-def _columns(names: Sequence[str]) -> list[str]:
-    return [f"{name}_{axis}" for name in names for axis in AXES]
+STRENGTH_PARAMETERS = ["strength_type", "motion_speed", "training_level", "fatigue_level"]
+STRENGTH_Q_COLUMNS = STRENGTH_PARAMETERS + [f"{m}_max" for m in MOTION_NAMES]
 
-
-QUERY_COLUMNS = {
-    "girth_q": _columns(GIRTH_NAMES),
-    "joint_limits_q": _columns(JOINT_LIMIT_NAMES),
-    "center_of_mass_q": _columns(CENTER_OF_MASS_NAMES),
+# query-table name of each (group, row); the axis columns are x, y, z (max for strength)
+QUERY_TABLES = {
+    "girth": {name: f"q_girth_{name}" for name in GIRTH_NAMES},
+    "joint_limits": {name: f"q_joint_limit_{name}" for name in JOINT_LIMIT_NAMES},
+    "center_of_mass": {name: f"q_center_of_mass_{name}" for name in CENTER_OF_MASS_NAMES},
+    "strength": {name: f"q_strength_{name}" for name in MOTION_NAMES},
 }
-STRENGTH_Q_COLUMNS = ["strength_type", "motion_speed", "training_level", "fatigue_level"] + [
-    f"{m}_max" for m in MOTION_NAMES]
 
 
 def _ddl() -> str:
-    def wide(table: str, columns: list[str], kind: str = "REAL") -> str:
-        cols = ",\n  ".join(f"{c} {kind}" for c in columns)
-        return f"CREATE TABLE {table} (\n  id_num INTEGER PRIMARY KEY,\n  {cols}\n);\n"
-
-    strength_q_cols = ",\n  ".join(
-        ["strength_type TEXT", "motion_speed REAL", "training_level REAL", "fatigue_level REAL"]
-        + [f"{m}_max REAL" for m in MOTION_NAMES])
+    axis_tables = "".join(
+        f"CREATE TABLE {table} (id_num INTEGER PRIMARY KEY, x REAL, y REAL, z REAL);\n"
+        for group in ("girth", "joint_limits", "center_of_mass")
+        for table in QUERY_TABLES[group].values())
+    strength_tables = "".join(f"CREATE TABLE {table} (id_num INTEGER PRIMARY KEY, max REAL);\n"
+                              for table in QUERY_TABLES["strength"].values())
     return f"""
 CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
 -- person: stature cm, mass kg, age years.  source says where the data come from;
@@ -169,19 +167,17 @@ CREATE TABLE wrist_strgh (
   FOREIGN KEY (id_num, exp_num) REFERENCES strength_par (id_num, exp_num)
 ) WITHOUT ROWID;
 -- Query tables (derived; same units as the relations).
-{wide("girth_q", QUERY_COLUMNS["girth_q"])}
-{wide("joint_limits_q", QUERY_COLUMNS["joint_limits_q"])}
-{wide("center_of_mass_q", QUERY_COLUMNS["center_of_mass_q"])}
 CREATE TABLE strength_q (
   id_num INTEGER PRIMARY KEY,
-  {strength_q_cols}
+  strength_type TEXT, motion_speed REAL, training_level REAL, fatigue_level REAL
 );
-"""
+{axis_tables}{strength_tables}"""
 
 
 RELATIONS = ("person", "girth", "center_of_mass", "joint_limits", "strength_par",
              "shoulder_strgh", "elbow_strgh", "wrist_strgh")
-PERSON_TABLES = RELATIONS[1:] + ("girth_q", "joint_limits_q", "center_of_mass_q", "strength_q")
+PERSON_TABLES = RELATIONS[1:] + ("strength_q",) + tuple(
+    table for tables in QUERY_TABLES.values() for table in tables.values())
 
 
 # --- where the database lives ---------------------------------------------
@@ -335,13 +331,13 @@ def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool 
             continue
         marks = ", ".join(["?"] * (width + 2))
         conn.executemany(f"INSERT INTO {table} VALUES ({marks})", _long_rows(ids, names, values))
-        query_table = f"{table}_q"
-        axes = values[:, :, :3].reshape(len(ids), -1)
-        has_any = ~np.all(np.isnan(axes), axis=1)
-        cells = _nullable(axes)
-        marks = ", ".join(["?"] * (axes.shape[1] + 1))
-        conn.executemany(f"INSERT INTO {query_table} VALUES ({marks})",
-                         ((ids[i], *cells[i]) for i in np.flatnonzero(has_any).tolist()))
+        id_array = np.asarray(ids, dtype=np.int64)
+        for k, name in enumerate(names):
+            cells = values[:, k, :3]
+            present = np.flatnonzero(~np.all(np.isnan(cells), axis=1))
+            conn.executemany(f"INSERT INTO {QUERY_TABLES[table][name]} VALUES (?, ?, ?, ?)",
+                             ((i, *row) for i, row in zip(id_array[present].tolist(),
+                                                          _nullable(cells[present]))))
     if batch.extra_girth:
         conn.executemany("INSERT INTO girth VALUES (?, ?, ?, ?, ?, ?)",
                          ((ids[i], *rest) for i, *rest in batch.extra_girth))
@@ -360,13 +356,19 @@ def _store_strength(conn: sqlite3.Connection, ids: list[int], batch: PeopleBatch
                      ((ids[i], *rest) for i, *rest in batch.elbow))
     conn.executemany("INSERT INTO wrist_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
                      ((ids[i], *rest) for i, *rest in batch.wrist))
-    conn.executemany(f"INSERT INTO strength_q VALUES ({', '.join(['?'] * (len(STRENGTH_Q_COLUMNS) + 1))})",
-                     strength_summary(batch.strength_par, batch.shoulder, batch.elbow, batch.wrist, ids))
+    summary = strength_summary(batch.strength_par, batch.shoulder, batch.elbow, batch.wrist, ids)
+    width = len(STRENGTH_PARAMETERS)
+    conn.executemany(f"INSERT INTO strength_q VALUES ({', '.join(['?'] * (width + 1))})",
+                     (row[:width + 1] for row in summary))
+    for k, motion in enumerate(MOTION_NAMES):
+        conn.executemany(f"INSERT INTO {QUERY_TABLES['strength'][motion]} VALUES (?, ?)",
+                         ((row[0], row[width + 1 + k]) for row in summary
+                          if row[width + 1 + k] is not None))
 
 
 def strength_summary(par, shoulder, elbow, wrist, ids: list[int]) -> list[tuple]:
-    """One strength_q row per person: the parameters of the first experiment
-    (what the query list shows) and each motion's maximum over all experiments."""
+    """Per person: id, the parameters of the first experiment (what the query
+    list shows), then each motion's maximum over all experiments (None if none)."""
     motion_index = {m: k for k, m in enumerate(MOTION_NAMES)}
     first: dict[int, tuple] = {}
     for i, exp, _side, kind, speed, fatigue, training in par:

@@ -1,0 +1,117 @@
+"""The query list and the selected list of the database query spreadsheet
+(report §12.3.2): people found by the last query, and people the user picked.
+
+Both lists live in TEMP tables of the connection, so a query list of a million
+people costs no Python memory and a page is one indexed read.  Select One
+moves a person from the query list to the selected list; a new query replaces
+the query list and keeps the selected list (people already selected do not
+come back into the query list).  No Textual import here.
+
+One connection is shared by the screen (paging, selecting) and the worker
+that runs a query; `lock` serialises them, and the screen refuses list
+commands while a query holds it rather than wait for it.
+"""
+
+from __future__ import annotations
+
+import sqlite3
+import threading
+from pathlib import Path
+
+from sass_tui.db.flatfile import FlatFiles, import_flat_files
+from sass_tui.db.query import LIST_FIELDS, compile_query
+from sass_tui.db.schema import connect, transaction
+
+QUERY_LIST = "query"
+SELECTED_LIST = "selected"
+_TABLES = {QUERY_LIST: "temp.query_list", SELECTED_LIST: "temp.selected_list"}
+# Selected people keep the order they were selected in (seq); the query list is in id order.
+_ORDER = {QUERY_LIST: "l.id_num", SELECTED_LIST: "l.seq"}
+_SELECT = ("p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source, "
+           "sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level")
+
+
+class QueryLists:
+    def __init__(self, conn: sqlite3.Connection):
+        self.conn = conn
+        self.lock = threading.Lock()
+        self.last_query: str | None = None
+        conn.execute("PRAGMA temp_store = MEMORY")
+        conn.execute("CREATE TEMP TABLE IF NOT EXISTS query_list (id_num INTEGER PRIMARY KEY)")
+        conn.execute("CREATE TEMP TABLE IF NOT EXISTS selected_list "
+                     "(seq INTEGER PRIMARY KEY, id_num INTEGER NOT NULL UNIQUE)")
+        self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
+
+    @classmethod
+    def open(cls, path: str | Path) -> "QueryLists":
+        # The query runs in a worker thread; the lock makes sharing the connection safe.
+        return cls(connect(path, check_same_thread=False))
+
+    def close(self) -> None:
+        self.conn.close()
+
+    def count(self, which: str) -> int:
+        return self._counts[which]
+
+    # --- running a query -----------------------------------------------------
+    def run(self, text: str) -> int:
+        """Replace the query list with the people `text` finds; returns how many.
+        A bad query raises QueryError and leaves both lists as they were."""
+        compiled = compile_query(text)
+        sql = (f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
+               f"WHERE {compiled.where} AND p.id_num NOT IN (SELECT id_num FROM temp.selected_list)")
+        with transaction(self.conn):
+            self.conn.execute("DELETE FROM temp.query_list")
+            count = self.conn.execute(sql, compiled.params).rowcount
+        self._counts[QUERY_LIST] = count
+        self.last_query = text
+        return count
+
+    # --- reading -----------------------------------------------------------------
+    def page(self, which: str, offset: int, limit: int = 25) -> list[dict]:
+        sql = (f"SELECT {_SELECT} FROM {_TABLES[which]} l JOIN person p ON p.id_num = l.id_num "
+               f"LEFT JOIN strength_q sq ON sq.id_num = l.id_num "
+               f"ORDER BY {_ORDER[which]} LIMIT ? OFFSET ?")
+        return [dict(zip(LIST_FIELDS, row))
+                for row in self.conn.execute(sql, (int(limit), int(offset)))]
+
+    def selected_id(self, index: int) -> int | None:
+        """The id of the index-th (0-based) person in the selected list."""
+        row = self.conn.execute("SELECT id_num FROM temp.selected_list ORDER BY seq LIMIT 1 OFFSET ?",
+                                (int(index),)).fetchone()
+        return None if row is None else row[0]
+
+    # --- moving people between the lists ---------------------------------------------
+    def select_one(self, id_num: int) -> bool:
+        """Move one person from the query list to the end of the selected list."""
+        with transaction(self.conn):
+            gone = self.conn.execute("DELETE FROM temp.query_list WHERE id_num = ?",
+                                     (int(id_num),)).rowcount
+            added = self.conn.execute(
+                "INSERT OR IGNORE INTO temp.selected_list (id_num) VALUES (?)",
+                (int(id_num),)).rowcount if gone else 0
+        self._counts[QUERY_LIST] -= gone
+        self._counts[SELECTED_LIST] += added
+        return bool(gone)
+
+    def select_all(self) -> int:
+        """Move the whole query list to the selected list; returns how many moved."""
+        with transaction(self.conn):
+            moved = self.conn.execute("INSERT OR IGNORE INTO temp.selected_list (id_num) "
+                                      "SELECT id_num FROM temp.query_list ORDER BY id_num").rowcount
+            self.conn.execute("DELETE FROM temp.query_list")
+        self._counts[QUERY_LIST] = 0
+        self._counts[SELECTED_LIST] += moved
+        return moved
+
+    def delete_one(self, which: str, id_num: int) -> bool:
+        with transaction(self.conn):
+            gone = self.conn.execute(f"DELETE FROM {_TABLES[which]} WHERE id_num = ?",
+                                     (int(id_num),)).rowcount
+        self._counts[which] -= gone
+        return bool(gone)
+
+    # --- Input DB ------------------------------------------------------------------------
+    def import_files(self, files: FlatFiles) -> int:
+        """Load flat files (one transaction: a failure stores nothing)."""
+        return import_flat_files(self.conn, files)
