@@ -92,20 +92,11 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
             gender, section_line = word, lineno
             raw[gender] = []
             continue
-        numbers_text, label = _split_comment(line, where)
-        tokens = [t for t in re.split(r"[,\s]+", numbers_text.strip()) if t]
-        for col, token in enumerate(tokens, start=1):
-            if not _NUMBER.match(token):
-                raise PopulationFileError(
-                    f"{where}: value {col} is {token!r}; expected a number (999 = no value)")
-        if len(tokens) != width:
-            layout = "(x 5/50/95%, y 5/50/95%, z 5/50/95%)" if width == 9 else "(5/50/95%)"
-            raise PopulationFileError(
-                f"{where}: {len(tokens)} numbers; expected {width} {layout} "
-                "and a /* comment */")
+        layout = "(x 5/50/95%, y 5/50/95%, z 5/50/95%)" if width == 9 else "(5/50/95%)"
+        numbers, label = split_data_row(line, where, width, layout)
         if gender is None:
             raise PopulationFileError(f"{where}: data before 'T MALE' or 'T FEMALE'")
-        raw[gender].append((lineno, [float(t) for t in tokens], label))
+        raw[gender].append((lineno, numbers, label))
     if not raw:
         raise PopulationFileError(f"{name}:{len(lines)}: no 'T MALE' or 'T FEMALE' section")
 
@@ -117,17 +108,26 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
     return data
 
 
-def _split_comment(line: str, where: str) -> tuple[str, str]:
+def split_data_row(line: str, where: str, width: int, layout: str,
+                   error: type[ValueError] = PopulationFileError) -> tuple[list[float], str]:
+    """'v v v ... /* label */' -> (numbers, label), or `error` saying where and what."""
     start = line.find("/*")
-    if start < 0:
-        return line, ""
-    end = line.find("*/", start + 2)
-    if end < 0:
-        raise PopulationFileError(f"{where}: comment '/*' is not closed with '*/'")
-    if line[end + 2:].strip():
-        raise PopulationFileError(
-            f"{where}: unexpected {line[end + 2:].strip()!r} after the comment")
-    return line[:start], line[start + 2:end].strip()
+    numbers_text, label = line, ""
+    if start >= 0:
+        end = line.find("*/", start + 2)
+        if end < 0:
+            raise error(f"{where}: comment '/*' is not closed with '*/'")
+        if line[end + 2:].strip():
+            raise error(f"{where}: unexpected {line[end + 2:].strip()!r} after the comment")
+        numbers_text, label = line[:start], line[start + 2:end].strip()
+    tokens = [t for t in re.split(r"[,\s]+", numbers_text.strip()) if t]
+    for col, token in enumerate(tokens, start=1):
+        if not _NUMBER.match(token):
+            raise error(f"{where}: value {col} is {token!r}; expected a number (999 = no value)")
+    if len(tokens) != width:
+        raise error(f"{where}: {len(tokens)} numbers; expected {width} {layout} "
+                    "and a /* comment */")
+    return [float(t) for t in tokens], label
 
 
 def _place_rows(entries, gender, group, lookup, name, section_line, warnings):

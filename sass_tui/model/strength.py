@@ -36,9 +36,9 @@ import numpy as np
 from sass_tui.model import datasets
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
+from sass_tui.model.popfile import NO_VALUE, split_data_row
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity
 
-NO_VALUE = 999.0
 GENDERS = ("male", "female")
 SIDES = ("right", "left")
 FILE_NAME = "strength.dat"
@@ -135,7 +135,6 @@ class StrengthData:
         return self._models[key]
 
 
-_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
 _WIDTH = N_ANGLES + 2
 _LAYOUT = "(shoulder x y z, elbow y, wrist x y z, strength value, percentile)"
 
@@ -210,15 +209,7 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
                                         f"{raw[key][0]})")
             raw[key] = (lineno, [])
             continue
-        numbers_text, comment = _split_comment(line, where)
-        tokens = [t for t in re.split(r"[,\s]+", numbers_text.strip()) if t]
-        for col, token in enumerate(tokens, start=1):
-            if not _NUMBER.match(token):
-                raise StrengthFileError(
-                    f"{where}: value {col} is {token!r}; expected a number (999 = no value)")
-        if len(tokens) != _WIDTH:
-            raise StrengthFileError(f"{where}: {len(tokens)} numbers; expected {_WIDTH} "
-                                    f"{_LAYOUT} and a /* motion */ comment")
+        numbers, comment = split_data_row(line, where, _WIDTH, _LAYOUT, StrengthFileError)
         if key is None:
             raise StrengthFileError(f"{where}: data before 'G MALE|FEMALE' and "
                                     "'L RIGHT|LEFT'")
@@ -230,7 +221,6 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
             motion = motion_index(label)
         except StrengthError as exc:
             raise StrengthFileError(f"{where}: {exc}") from None
-        numbers = [float(t) for t in tokens]
         percentile = numbers[-1]
         if percentile != NO_VALUE and not 0.5 <= percentile <= 99.5:
             raise StrengthFileError(f"{where}: percentile {percentile:g} is outside "
@@ -243,19 +233,6 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
     for key, (line, entries) in raw.items():
         data.sections[key] = _build_section(key, line, entries, name, warnings)
     return data
-
-
-def _split_comment(line: str, where: str) -> tuple[str, str]:
-    start = line.find("/*")
-    if start < 0:
-        return line, ""
-    end = line.find("*/", start + 2)
-    if end < 0:
-        raise StrengthFileError(f"{where}: comment '/*' is not closed with '*/'")
-    if line[end + 2:].strip():
-        raise StrengthFileError(
-            f"{where}: unexpected {line[end + 2:].strip()!r} after the comment")
-    return line[:start], line[start + 2:end].strip()
 
 
 def _build_section(key, section_line, entries, name, warnings) -> StrengthSection:
