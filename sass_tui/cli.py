@@ -94,6 +94,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="sass", description="Spreadsheet Anthropometry Scaling System. "
         "With no command, opens the spreadsheet (TUI).")
+    parser.add_argument("--db", metavar="PATH", dest="tui_db",
+                        help="database the spreadsheet's Query uses (default: $SASS_DB, "
+                             "else $XDG_DATA_HOME/sass/sass.db)")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND")
     fig = commands.add_parser("fig", help="write a PEABODY body description file (.fig)")
     fig.add_argument("-o", "--output", metavar="OUT.fig",
@@ -122,7 +125,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.command is None:
         from sass_tui.ui.app import run_app
 
-        return run_app()
+        return run_app(args.tui_db)
     try:
         return args.func(args)
     except (FigureError, PercentileError, PopulationFileError, UnitError, ValueError, OSError) as exc:

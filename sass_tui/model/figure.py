@@ -92,6 +92,43 @@ class Figure:
             self.population = data.title
         self._rescale(state)
 
+    def for_person(self, name: str, gender: str, groups: dict[str, np.ndarray], *,
+                   mass: float = float("nan"), stature: float = float("nan"),
+                   **strength_parameters) -> "Figure":
+        """A real person's figure (report §12.4, Disp. Indv.): the person's values
+        (canonical units, NaN where the database has none) with percentiles taken
+        against this figure's population statistics.  This figure is left as it
+        is, so Disp. Pop. returns to it unchanged.  `strength_parameters` are
+        strength_type, motion_speed, handedness, training_level, fatigue_level
+        (None = keep this figure's)."""
+        gender = _check_choice(gender, GENDERS, "gender")
+        person = Figure(gender=gender, figure_type=self.figure_type, population=self.population,
+                        person=str(name), global_stats=self.global_stats,
+                        strength_type=self.strength_type, motion_speed=self.motion_speed,
+                        handedness=self.handedness, training_level=self.training_level,
+                        fatigue_level=self.fatigue_level)
+        for group in GROUPS:
+            mine, theirs = self.groups[group], person.groups[group]
+            if mine.source is None or not mine.source.has(gender):
+                raise FigureError(f"no {gender} {GROUP_TITLES[group]} statistics loaded to "
+                                  f"compare {name} with; load a population file that has them")
+            values = np.array(groups[group], dtype=float)
+            if values.shape != (len(theirs.rows), 3):
+                raise FigureError(f"{name}: {GROUP_TITLES[group]} has shape {values.shape}, "
+                                  f"expected ({len(theirs.rows)}, 3)")
+            theirs.source, theirs.unit, theirs.percentile = mine.source, mine.unit, mine.percentile
+            theirs.values = values
+            theirs.percentiles = np.asarray(percentile_of(mine.source.stats(gender), values),
+                                            dtype=float).reshape(values.shape)
+        for parameter, value in strength_parameters.items():
+            if value is not None:
+                person.set_strength_parameter(parameter, value)
+        person.mass, person.stature = float(mass), float(stature)
+        person.mass_percentile = person._global_percentile("mass", mass)
+        person.stature_percentile = person._global_percentile("stature", stature)
+        person._history.clear()
+        return person
+
     # --- global data -----------------------------------------------------
     def set_gender(self, gender: str) -> None:
         gender = _check_choice(gender, GENDERS, "gender")

@@ -18,20 +18,28 @@ from textual.widgets import Button, Footer
 
 from sass_tui.model.figfile import FigureIncompleteError, default_fig_name, write_fig
 from sass_tui.model.figure import Figure, FigureError
+from sass_tui.model.hanim import export_hanim
 from sass_tui.model.names import (
     AXES, CENTER_OF_MASS, GIRTH, GROUP_TITLES, JOINT_LIMITS, STRENGTH)
 from sass_tui.model.percentile import PercentileError
 from sass_tui.model.popfile import PopulationFileError, read_population_file
+from sass_tui.model.strength import (
+    DEFAULT_NON_DOMINANT_FACTOR, JOINT_AXIS_LABELS, MOTIONS, StrengthError, StrengthFileError,
+    StrengthSheet, fig_section, read_strength_file)
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, UnitError, convert, other_unit, parse_quantity
 from sass_tui.ui.commands import COMMANDS
 from sass_tui.ui.widgets import (
     AnswerInput, CommandMenu, DataSheet, GlobalPanel, GroupBar, GroupTab, MessageLine,
     format_percentile, format_value, global_text)
+from sass_tui.ui.strength_page import StrengthPage, format_angle, format_strength
+from sass_tui.ui.query_screen import QueryCommands
 
 FIRST_MESSAGE = "Press left-mouse to select items."
 GROUP_KEYS = ((GIRTH, "g"), (JOINT_LIMITS, "j"), (CENTER_OF_MASS, "m"), (STRENGTH, "s"))
 STRENGTH_NOT_LOADED = ("Strength data is not loaded; SASS runs without it "
                        "(Create Figure leaves strength out).")
+STRENGTH_PARAMETERS = ("strength_type", "motion_speed", "handedness", "training_level",
+                       "fatigue_level")
 # What the user may type wrongly: shown on the message line, never a traceback.
 INPUT_ERRORS = (FigureError, PercentileError, UnitError, ValueError, OSError)
 
@@ -44,7 +52,7 @@ def parse_percentile(text: str) -> float:
         raise ValueError(f"expected a percentile such as 50 or 95%, got {text.strip()!r}") from None
 
 
-class SassApp(App):
+class SassApp(QueryCommands, App):
     # Absolute: the app may be started from any directory.
     CSS_PATH = Path(__file__).with_name("sass.tcss")
     TITLE = "SASS"
@@ -59,9 +67,17 @@ class SassApp(App):
         *(Binding(key, f"select_group('{group}')", show=False) for group, key in GROUP_KEYS),
     ]
 
-    def __init__(self, figure: Figure | None = None, *, cursor_blink: bool = True) -> None:
+    def __init__(self, figure: Figure | None = None, *, cursor_blink: bool = True,
+                 strength_path: str | Path | None = None,
+                 db_path: str | Path | None = None) -> None:
         super().__init__()
         self.figure = figure or Figure.default()
+        # None = $SASS_DB or the user's data directory, created on first Query.
+        self.db_path = Path(db_path).expanduser() if db_path else None
+        # None = datasets/strength.dat.  Read at mount: ~25 ms (docs/performance.md).
+        self.strength_path = strength_path
+        self.strength_sheet: StrengthSheet | None = None
+        self.strength_error = STRENGTH_NOT_LOADED
         self.data_group = GIRTH
         self.cursor_blink = cursor_blink
         self.warnings: list[str] = []
@@ -76,11 +92,14 @@ class SassApp(App):
             yield GlobalPanel(id="global")
             yield CommandMenu(COMMANDS, id="commands")
         yield DataSheet(id="sheet")
+        yield StrengthPage(id="strength-sheet")
         yield MessageLine(id="message-line")
         yield Footer(compact=True)
 
     def on_mount(self) -> None:
         self.query_one(AnswerInput).cursor_blink = self.cursor_blink
+        self.strength_page.display = False
+        self._load_default_strength()
         self.sheet.show_group(self.data_group)
         self.refresh_screen()
         self.sheet.focus()
@@ -88,7 +107,20 @@ class SassApp(App):
 
     @property
     def sheet(self) -> DataSheet:
-        return self.query_one(DataSheet)
+        return self.query_one("#sheet", DataSheet)
+
+    @property
+    def strength_page(self) -> StrengthPage:
+        return self.query_one(StrengthPage)
+
+    @property
+    def active_sheet(self) -> DataSheet:
+        """The data section on the screen: the group sheet or the strength page."""
+        return self.strength_page if self.data_group == STRENGTH else self.sheet
+
+    @property
+    def strength_percentile(self) -> float | None:
+        return self.strength_sheet.percentile if self.strength_sheet is not None else None
 
     @property
     def message_line(self) -> MessageLine:
@@ -98,7 +130,12 @@ class SassApp(App):
         self.query_one(GroupBar).highlight(self.data_group)
         self.query_one(GlobalPanel).refresh()
         self.query_one(CommandMenu).refresh_labels()
+        self.refresh_bindings()
         self.sheet.refresh()
+        if self.strength_sheet is not None:
+            # Follow the app's figure should another one be shown (e.g. an individual).
+            self.strength_sheet.figure = self.figure
+        self.strength_page.refresh()
 
     # --- message line ---------------------------------------------------------
     def say(self, text: str) -> None:
@@ -146,14 +183,30 @@ class SassApp(App):
     def action_select_group(self, group: str) -> None:
         if self.message_line.prompting:
             return
-        if group == STRENGTH:
-            self.complain(STRENGTH_NOT_LOADED)
+        if group == STRENGTH and self.strength_sheet is None:
+            self.complain(self.strength_error)
             return
+        had_focus = self.focused is self.active_sheet
         self.data_group = group
-        self.sheet.show_group(group)
+        on_strength = group == STRENGTH
+        self.sheet.display = not on_strength
+        self.strength_page.display = on_strength
+        if not on_strength:
+            self.sheet.show_group(group)
+        if had_focus or self.focused is None:
+            self.active_sheet.focus()
         self.refresh_screen()
-        self.say(f"{GROUP_TITLES[group]}: {self.sheet.row_count} rows, "
-                 f"{self.sheet.pages} page{'s' if self.sheet.pages > 1 else ''}.")
+        # After the layout: a page just shown has no height yet to page by.
+        self.call_after_refresh(self._say_group_shown)
+
+    def _say_group_shown(self) -> None:
+        sheet = self.active_sheet
+        message = (f"{GROUP_TITLES[self.data_group]}: {sheet.row_count} rows, "
+                   f"{sheet.pages} page{'s' if sheet.pages > 1 else ''}.")
+        if self.data_group == STRENGTH:
+            message += (f" {self.strength_sheet.side.capitalize()} limb, "
+                        f"from {self.strength_sheet.data.title}.")
+        self.say(message)
 
     # --- commands ---------------------------------------------------------------
     async def on_button_pressed(self, event: Button.Pressed) -> None:
@@ -163,18 +216,25 @@ class SassApp(App):
             await self.run_action(spec.action)
 
     def action_next_page(self) -> None:
-        if not self.sheet.turn_page(1):
+        sheet = self.active_sheet
+        if not sheet.turn_page(1):
             self.say("This is the last page.")
         else:
-            self.say(f"Page {self.sheet.page + 1} of {self.sheet.pages}.")
+            self.say(f"Page {sheet.page + 1} of {sheet.pages}.")
 
     def action_previous_page(self) -> None:
-        if not self.sheet.turn_page(-1):
+        sheet = self.active_sheet
+        if not sheet.turn_page(-1):
             self.say("This is the first page.")
         else:
-            self.say(f"Page {self.sheet.page + 1} of {self.sheet.pages}.")
+            self.say(f"Page {sheet.page + 1} of {sheet.pages}.")
 
     def action_convert_units(self) -> None:
+        if self.data_group == STRENGTH:
+            unit = self.strength_sheet.toggle_unit()
+            self.refresh_screen()
+            self.say(f"Strength now shown in {unit}.")
+            return
         state = self.figure.groups[self.data_group]
         self.figure.set_unit(self.data_group, other_unit(self.data_group, state.unit))
         self.refresh_screen()
@@ -202,6 +262,9 @@ class SassApp(App):
 
     # --- Input Data -----------------------------------------------------------------
     def action_input_data(self) -> None:
+        if self.data_group == STRENGTH:
+            self.ask("Strength data file:", self._input_data_from)
+            return
         title = GROUP_TITLES[self.data_group]
         self.ask(f"{title} population file:", self._input_data_from)
 
@@ -210,7 +273,77 @@ class SassApp(App):
             self.say("No file given; nothing loaded.")
             return
         self.say(f"Reading {text.strip()} ...")
-        self.load_population(self.data_group, Path(text.strip()).expanduser())
+        path = Path(text.strip()).expanduser()
+        if self.data_group == STRENGTH:
+            self.load_strength(path)
+        else:
+            self.load_population(self.data_group, path)
+
+    # --- strength data ----------------------------------------------------------------
+    def _load_default_strength(self) -> None:
+        """At start-up, before the first screen: fast enough not to need a worker."""
+        try:
+            sheet = StrengthSheet(read_strength_file(self.strength_path), self.figure)
+        except StrengthFileError as exc:
+            self.strength_error = f"Strength data is not loaded ({exc}); SASS runs without it."
+            return
+        self.strength_sheet = sheet
+        try:
+            sheet.rows()  # fits the equations now rather than on the first 's'
+        except StrengthError:
+            pass  # no data for this gender: the page says so when shown
+
+    @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
+    def load_strength(self, path: Path) -> None:
+        try:
+            data = read_strength_file(path)
+        except StrengthFileError as exc:
+            self.call_from_thread(self.complain, f"{exc}; strength data unchanged.")
+            return
+        except Exception as exc:  # anything else the file does: report, keep the data
+            self.call_from_thread(self.complain, f"{path}: {exc}; strength data unchanged.")
+            return
+        self.call_from_thread(self._apply_strength, data)
+
+    def _apply_strength(self, data) -> None:
+        sheet = StrengthSheet(data, self.figure)
+        old = self.strength_sheet
+        if old is not None:
+            # The view settings survive a new file; the angles are the new file's.
+            sheet.side, sheet.unit = old.side, old.unit
+            sheet.percentile, sheet.non_dominant_factor = old.percentile, old.non_dominant_factor
+        self.strength_sheet = sheet
+        self.refresh_screen()
+        self.warnings, self._warning_index = list(data.warnings), 0
+        self.say(f"Loaded strength from {data.path} ({data.title}).")
+        if self.warnings:
+            self._show_warning()
+
+    def edit_angle(self, row: int, column: int, initial: str = "") -> None:
+        """Prompt for a joint angle of the strength page (column 0-6)."""
+        sheet = self.strength_sheet
+        name = f"{sheet.side} {MOTIONS[row].label.lower()}, {JOINT_AXIS_LABELS[column].lower()}"
+        current = format_angle(sheet.angles[row, column])
+        self.ask(f"{name} angle [{current} deg]:",
+                 lambda text: self._edit_angle(row, column, text), initial)
+
+    def _edit_angle(self, row: int, column: int, text: str) -> None:
+        axis = JOINT_AXIS_LABELS[column].lower()
+        if not text.strip():
+            self.say(f"{MOTIONS[row].label} {axis} unchanged.")
+            return
+        result = self.strength_sheet.set_angle(row, column, text)
+        self.say(f"{result.side.capitalize()} {result.label.lower()} at {axis} "
+                 f"{format_angle(result.angles[column])} deg: "
+                 f"{format_strength(result.value)} {result.unit} ({result.source}).")
+
+    def action_switch_side(self) -> None:
+        if not (self.data_group == STRENGTH and self.strength_sheet is not None):
+            self.say("Right → Left applies to the Strength group (press s).")
+            return
+        self.ask(f"Scaling factor for the non-dominant limb "
+                 f"(RETURN = default {DEFAULT_NON_DOMINANT_FACTOR:.3f}):",
+                 lambda text: self.say(self.strength_sheet.switch_side(text) + "."))
 
     @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
     def load_population(self, group: str, path: Path) -> None:
@@ -249,25 +382,46 @@ class SassApp(App):
             return
         default = default_fig_name(self.figure.gender, self.figure.groups[GIRTH].percentile,
                                    self.figure.figure_type)
+        if self.figure.person:
+            default = self.person_fig_name()
         self.ask(f"Figure file name [{default}]:",
                  lambda text: self._create_figure_named(text.strip() or default))
 
     def _create_figure_named(self, name: str) -> None:
         path = Path(name).expanduser()
-        if path.exists():
-            def overwrite(answer: str) -> None:
-                if answer.strip().lower() in ("y", "yes"):
-                    self.write_figure(path)
-                else:
-                    self.say(f"Not written; {path} kept as it was.")
-            self.ask(f"{path} exists. Overwrite it? (y/N)", overwrite)
-        else:
-            self.write_figure(path)
+        if self.strength_sheet is None:
+            self._write_unless_kept(path, lambda: self.write_figure(path))
+            return
+
+        def include(answer: str) -> None:
+            word = answer.strip().lower()
+            if word in ("n", "no"):
+                sections = []
+            elif word in ("", "y", "yes"):
+                # Computed here, not in the worker: the page may change meanwhile.
+                sections = [fig_section(self.strength_sheet)]
+            else:
+                raise ValueError(f"expected y or n, got {answer.strip()!r}; nothing written")
+            self._write_unless_kept(path, lambda: self.write_figure(path, sections))
+        self.ask("Include strength in the figure? (Y/n)", include)
+
+    def _write_unless_kept(self, path: Path, write: Callable[[], None]) -> None:
+        """Write, but an existing file only after the user says y."""
+        if not path.exists():
+            write()
+            return
+
+        def overwrite(answer: str) -> None:
+            if answer.strip().lower() in ("y", "yes"):
+                write()
+            else:
+                self.say(f"Not written; {path} kept as it was.")
+        self.ask(f"{path} exists. Overwrite it? (y/N)", overwrite)
 
     @work(thread=True, exclusive=True, group="create-figure", exit_on_error=False)
-    def write_figure(self, path: Path) -> None:
+    def write_figure(self, path: Path, extra_sections=()) -> None:
         try:
-            write_fig(self.figure, path)
+            write_fig(self.figure, path, extra_sections)
         except FigureIncompleteError as exc:
             self.call_from_thread(self.complain, str(exc))
             return
@@ -275,6 +429,28 @@ class SassApp(App):
             self.call_from_thread(self.complain, f"{path}: cannot write: {exc.strerror or exc}")
             return
         self.call_from_thread(self.say, f"Wrote {path}.")
+
+    # --- Export HAnim -----------------------------------------------------------------
+    def action_export_hanim(self) -> None:
+        default = Path(default_fig_name(self.figure.gender, self.figure.groups[GIRTH].percentile,
+                                        self.figure.figure_type)).with_suffix(".x3d").name
+        self.ask(f"HAnim file name [{default}]:", lambda text: self._export_hanim_named(
+            Path(text.strip() or default).expanduser()))
+
+    def _export_hanim_named(self, path: Path) -> None:
+        self._write_unless_kept(path, lambda: self.export_figure(path))
+
+    @work(thread=True, exclusive=True, group="export-hanim", exit_on_error=False)
+    def export_figure(self, path: Path) -> None:
+        try:
+            export_hanim(self.figure, path)
+        except ValueError as exc:  # an incomplete figure (HAnimError, FigureIncompleteError)
+            self.call_from_thread(self.complain, str(exc))
+            return
+        except OSError as exc:
+            self.call_from_thread(self.complain, f"{path}: cannot write: {exc.strerror or exc}")
+            return
+        self.call_from_thread(self.say, f"Exported the HAnim humanoid to {path}.")
 
     # --- editing the data section -------------------------------------------------------
     def edit_cell(self, row: int, column: int, initial: str = "") -> None:
@@ -318,10 +494,11 @@ class SassApp(App):
         if field == "population":
             self.complain("The population is read from the population file; it cannot be edited.")
             return
-        if field == "group_percentile" and self.data_group == STRENGTH:
-            self.complain(STRENGTH_NOT_LOADED)
+        if field == "group_percentile" and self.data_group == STRENGTH \
+                and self.strength_sheet is None:
+            self.complain(self.strength_error)
             return
-        current = global_text(self.figure, self.data_group, field)
+        current = global_text(self.figure, self.data_group, field, self.strength_percentile)
         hint = {
             "figure_type": "skinny or polybody", "gender": "male or female",
             "mass": "kg, or e.g. 180 lb", "stature": "cm, or e.g. 70 in",
@@ -353,6 +530,8 @@ class SassApp(App):
             figure.set_mass_percentile(parse_percentile(text))
         elif field == "stature_percentile":
             figure.set_stature_percentile(parse_percentile(text))
+        elif field == "group_percentile" and self.data_group == STRENGTH:
+            self.strength_sheet.set_percentile(parse_percentile(text))
         elif field == "group_percentile":
             figure.set_group_percentile(self.data_group, parse_percentile(text))
         elif field == "motion_speed":
@@ -365,15 +544,16 @@ class SassApp(App):
             figure.set_strength_parameter(field, number)
         else:
             figure.set_strength_parameter(field, text)
-        message = f"{label} = {global_text(figure, self.data_group, field)}."
+        message = f"{label} = {global_text(figure, self.data_group, field, self.strength_percentile)}."
         if field == "gender":
             message += " Every group reloaded for this gender."
-        elif field in ("strength_type", "motion_speed", "handedness", "training_level",
-                       "fatigue_level"):
+        elif field in STRENGTH_PARAMETERS and self.strength_sheet is None:
             message += " It changes strength only (strength data is not loaded)."
+        elif field in STRENGTH_PARAMETERS:
+            message += " Strength values recomputed."
         self.say(message)
 
 
-def run_app() -> int:
-    SassApp().run()
+def run_app(db_path: str | Path | None = None) -> int:
+    SassApp(db_path=db_path).run()
     return 0

@@ -11,7 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Callable
 
-from sass_tui.model.units import DISPLAY, other_unit
+from sass_tui.model.names import STRENGTH
+from sass_tui.model.units import DISPLAY, GROUP_UNITS, other_unit
 
 
 @dataclass(frozen=True)
@@ -28,8 +29,31 @@ class CommandSpec:
 
 def _conversion_label(app) -> str:
     group = app.data_group
-    unit = app.figure.groups[group].unit
+    if group == STRENGTH:
+        # The strength unit is the strength page's, not a Figure group's.
+        sheet = app.strength_sheet
+        unit = sheet.unit if sheet is not None else GROUP_UNITS[STRENGTH][0]
+    else:
+        unit = app.figure.groups[group].unit
     return f"{DISPLAY[unit]} → {DISPLAY[other_unit(group, unit)]}"
+
+
+def _side_label(app) -> str:
+    side = app.strength_sheet.side if app.strength_sheet is not None else "right"
+    other = "left" if side == "right" else "right"
+    return f"{side.capitalize()} → {other.capitalize()}"
+
+
+def _showing_person(app) -> bool:
+    return getattr(app, "population_figure", None) is not None
+
+
+def _showing_population(app) -> bool:
+    return not _showing_person(app)
+
+
+def _on_strength_page(app) -> bool:
+    return app.data_group == STRENGTH and app.strength_sheet is not None
 
 
 COMMANDS: tuple[CommandSpec, ...] = (
@@ -39,4 +63,19 @@ COMMANDS: tuple[CommandSpec, ...] = (
     CommandSpec("input_data", "i", "input_data", "Input", lambda app: "Input Data", row=3),
     CommandSpec("create_figure", "f", "create_figure", "Figure", lambda app: "Create Figure", row=4),
     CommandSpec("quit", "q", "quit", "Quit", lambda app: "Quit", row=5),
+    # Figure 6's second column shares slots: "Query or Disp. Pop.", "Disp. Indv. or
+    # Disp. More" -- the second of each pair while a person is displayed (§12.2.4).
+    CommandSpec("query", "d", "query", "Query", lambda app: "Query", column=1, row=0,
+                available=_showing_population),
+    CommandSpec("display_population", "o", "display_population", "Disp. Pop.",
+                lambda app: "Disp. Pop.", column=1, row=0, available=_showing_person),
+    CommandSpec("display_individual", "v", "display_individual", "Disp. Indv.",
+                lambda app: "Disp. Indv.", column=1, row=1, available=_showing_population),
+    CommandSpec("display_more", "x", "display_more", "Disp. More",
+                lambda app: "Disp. More", column=1, row=1, available=_showing_person),
+    # One of figure 6's void slots.
+    CommandSpec("export_hanim", "e", "export_hanim", "HAnim", lambda app: "Export HAnim",
+                column=1, row=2),
+    CommandSpec("switch_side", "r", "switch_side", "Side", _side_label, column=1, row=5,
+                available=_on_strength_page),
 )

@@ -93,6 +93,7 @@ class GlobalCell:
     label: str
     row: int
     slot: int  # 0 = value, 1 = its percentile (mass, stature), 2 = right column
+    short_label: str = ""  # for narrow terminals (80 columns)
 
 
 GLOBAL_CELLS: tuple[GlobalCell, ...] = (
@@ -104,18 +105,22 @@ GLOBAL_CELLS: tuple[GlobalCell, ...] = (
     GlobalCell("stature", "Stature", 4, 0),
     GlobalCell("stature_percentile", "", 4, 1),
     GlobalCell("group_percentile", "Group pct.", 5, 0),
-    GlobalCell("strength_type", "Strength type", 1, 2),
-    GlobalCell("motion_speed", "Motion speed", 2, 2),
-    GlobalCell("handedness", "Handedness", 3, 2),
-    GlobalCell("training_level", "Training level", 4, 2),
-    GlobalCell("fatigue_level", "Fatigue level", 5, 2),
+    GlobalCell("strength_type", "Strength type", 1, 2, "Str. type"),
+    GlobalCell("motion_speed", "Motion speed", 2, 2, "Speed"),
+    GlobalCell("handedness", "Handedness", 3, 2, "Handed"),
+    GlobalCell("training_level", "Training level", 4, 2, "Training"),
+    GlobalCell("fatigue_level", "Fatigue level", 5, 2, "Fatigue"),
 )
 GLOBAL_ROWS = 6
 # Column widths: left label, value, percentile, gap, right label, right value.
-_LABEL_A, _SLOT0, _SLOT1, _GAP, _LABEL_B = 12, 10, 8, 1, 15
+_LABEL_A, _SLOT0, _SLOT1, _GAP = 12, 9, 8, 1
+_LABEL_B, _SHORT_LABEL_B = 15, 10
+# Below this width the right column's labels are shortened ("Str. type"), so
+# that the panel and figure 6's two command columns fit in 80 columns.
+_NARROW = _LABEL_A + _SLOT0 + _SLOT1 + _GAP + _LABEL_B + 11
 
 
-def global_text(figure, group: str, field: str) -> str:
+def global_text(figure, group: str, field: str, strength_percentile: float | None = None) -> str:
     if field == "population":
         return figure.person or figure.population
     if field in ("mass", "stature"):
@@ -124,7 +129,9 @@ def global_text(figure, group: str, field: str) -> str:
     if field in ("mass_percentile", "stature_percentile"):
         return f"{format_percentile(getattr(figure, field))} %".strip(" ")
     if field == "group_percentile":
-        return "" if group == STRENGTH else format_percentile(figure.groups[group].percentile)
+        if group == STRENGTH:
+            return "" if strength_percentile is None else format_percentile(strength_percentile)
+        return format_percentile(figure.groups[group].percentile)
     if field == "motion_speed":
         return f"{figure.motion_speed:g} deg/s"
     value = getattr(figure, field)
@@ -152,8 +159,18 @@ class GlobalPanel(Widget, can_focus=True):
         self.cursor = next(c for c in GLOBAL_CELLS if c.field == field)
         self.refresh()
 
+    @property
+    def _narrow(self) -> bool:
+        return self.size.width < _NARROW
+
+    def _label_b(self) -> int:
+        return _SHORT_LABEL_B if self._narrow else _LABEL_B
+
+    def _label(self, cell: GlobalCell) -> str:
+        return cell.short_label if self._narrow and cell.short_label else cell.label
+
     def _slot_span(self, slot: int) -> tuple[int, int]:
-        starts = (_LABEL_A, _LABEL_A + _SLOT0, _LABEL_A + _SLOT0 + _SLOT1 + _GAP + _LABEL_B)
+        starts = (_LABEL_A, _LABEL_A + _SLOT0, _LABEL_A + _SLOT0 + _SLOT1 + _GAP + self._label_b())
         widths = (_SLOT0, _SLOT1, max(6, self.size.width - starts[2]))
         return starts[slot], widths[slot]
 
@@ -173,13 +190,13 @@ class GlobalPanel(Widget, can_focus=True):
                 if cell.field == "population":
                     span = width - start
                 if cell.label:
-                    label_start = 0 if cell.slot == 0 else start - _LABEL_B
+                    label_start = 0 if cell.slot == 0 else start - self._label_b()
                     line.append(" " * (label_start - column))
-                    line.append(f"{cell.label:<{start - label_start}}"[:start - label_start],
+                    line.append(f"{self._label(cell):<{start - label_start}}"[:start - label_start],
                                 label_style)
                     column = start
                 line.append(" " * max(0, start - column))
-                text = global_text(figure, group, cell.field)
+                text = global_text(figure, group, cell.field, self.app.strength_percentile)
                 cell_style = cursor_style if cell == self.cursor else ""
                 line.append(f"{text:<{span - 1}}"[:span - 1], cell_style)
                 line.append(" ")
@@ -195,7 +212,7 @@ class GlobalPanel(Widget, can_focus=True):
             start, span = self._slot_span(cell.slot)
             if cell.field == "population":
                 span = self.size.width - start
-            label_start = 0 if cell.slot == 0 else start - _LABEL_B if cell.slot == 2 else start
+            label_start = 0 if cell.slot == 0 else start - self._label_b() if cell.slot == 2 else start
             if cell.row == offset.y and label_start <= offset.x < start + span:
                 self.cursor = cell
                 self.focus()
@@ -254,6 +271,9 @@ class CommandMenu(Horizontal):
                     button = Button(spec.label(self.app), id=f"command-{spec.name}",
                                     classes="command", compact=True)
                     button.can_focus = False
+                    # Button pads its label by one cell each side; "Previous Page" needs
+                    # the room at 80 columns.  (Textual's CSS refuses `line-pad: 0`.)
+                    button.styles.line_pad = 0
                     yield button
 
     def refresh_labels(self) -> None:
@@ -424,7 +444,10 @@ class DataSheet(Widget, can_focus=True):
             event.stop()
             event.prevent_default()
             # Called, not posted: the answer line must have the focus before the next key.
-            self.app.edit_cell(self.cursor_row, self.cursor_column, event.character)
+            self.start_typing(event.character)
+
+    def start_typing(self, character: str) -> None:
+        self.app.edit_cell(self.cursor_row, self.cursor_column, character)
 
     def on_resize(self) -> None:
         self.refresh()

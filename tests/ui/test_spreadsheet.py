@@ -9,7 +9,7 @@ from textual import events
 from sass_tui.model import datasets
 from sass_tui.model.figfile import read_fig
 from sass_tui.model.figure import Figure
-from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, row_index
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH, row_index
 from sass_tui.model.popfile import parse_population_text, read_population_file
 from sass_tui.ui.app import FIRST_MESSAGE, SassApp
 from sass_tui.ui.widgets import DataSheet, GlobalPanel
@@ -173,7 +173,21 @@ def test_switch_group_by_key_and_click_and_strength(drive):
             assert app.data_group == CENTER_OF_MASS
             assert "Center of Mass" in sheet_text(app)
             await pilot.click("#group-strength")
+            assert app.data_group == STRENGTH
+            assert app.query_one("#group-strength").has_class("-selected")
+            await pilot.press("g")
+            assert app.data_group == GIRTH and "Bottom Head" in sheet_text(app)
+    drive(scenario())
+
+
+def test_strength_group_refused_when_its_data_failed_to_load(drive, tmp_path):
+    async def scenario():
+        app = SassApp(cursor_blink=False, strength_path=tmp_path / "missing.dat")
+        async with app.run_test(size=LARGE) as pilot:
+            await pilot.press("m")
+            await pilot.click("#group-strength")
             assert "Strength data is not loaded" in message(app)
+            assert "missing.dat: cannot read" in message(app)
             assert app.data_group == CENTER_OF_MASS
             await pilot.press("s")
             assert "Strength data is not loaded" in message(app)
@@ -319,6 +333,8 @@ def test_create_figure_writes_and_asks_before_overwriting(drive, tmp_path, monke
             await pilot.press("f")
             assert "[MALE50.FIG]" in message(app)
             await pilot.press("enter")
+            assert "Include strength" in message(app)
+            await pilot.press("enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
             assert "Wrote MALE50.FIG" in message(app)
@@ -328,17 +344,17 @@ def test_create_figure_writes_and_asks_before_overwriting(drive, tmp_path, monke
             assert written.variables["ruparmx"] == (5.35, "cm")
             first = (tmp_path / "MALE50.FIG").read_text()
             # Change the figure; the existing file is only replaced on "y".
-            await pilot.press("enter", *"20", "enter", "f", "enter")
+            await pilot.press("enter", *"20", "enter", "f", "enter", "enter")
             assert "exists" in message(app)
             await pilot.press("n", "enter")
             assert (tmp_path / "MALE50.FIG").read_text() == first
-            await pilot.press("f", "enter", "y", "enter")
+            await pilot.press("f", "enter", "enter", "y", "enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
             assert read_fig(tmp_path / "MALE50.FIG").variables["botheadx"] == (10.0, "cm")
             await pilot.press("f")
             await paste(pilot, str(tmp_path / "no" / "dir.fig"))
-            await pilot.press("enter")
+            await pilot.press("enter", "enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
             assert f"{tmp_path / 'no' / 'dir.fig'}: cannot write: No such file" in message(app)

@@ -1,0 +1,219 @@
+"""The pop-up query builder (report §12.3.3, figure 13).
+
+Query Menu → Global Information menu (→ a value menu such as Gender, or the
+Relational Operation Menu) or Anthropometric Group menu → item menu
+(segments, joints, motions) → Axis Menu → Relational Operation Menu →
+"Type in the constraint value:" → Conjunction Menu (And, Or, Done,
+Previous Menu).  Each choice adds a piece of the query text (spec §4), so what
+the menus build is exactly what `sass query` accepts; Previous Menu takes the
+last piece off and shows the menu it was chosen in again.
+
+`QueryBuilder` is the menu logic (no widgets, easy to test); `QueryPopup`
+shows its current menu.
+"""
+
+from __future__ import annotations
+
+import re
+
+from dataclasses import dataclass, field
+
+from textual.binding import Binding
+from textual.containers import Vertical
+from textual.message import Message
+from textual.widgets import OptionList
+from textual.widgets.option_list import Option
+
+from sass_tui.db.query import QueryError, compile_query
+from sass_tui.db.schema import HANDEDNESS, STRENGTH_TYPES
+from sass_tui.model.names import CENTER_OF_MASS_ROWS, GIRTH_ROWS, JOINT_LIMIT_ROWS
+from sass_tui.model.strength import MOTIONS
+
+PREVIOUS = "Previous Menu"
+VALUE_PROMPT = "Type in the constraint value:"
+
+
+@dataclass(frozen=True)
+class Item:
+    label: str
+    text: str  # the piece of query text this choice adds
+    next: str  # the menu (or "value", "done", ...) that follows
+
+
+@dataclass(frozen=True)
+class Menu:
+    key: str
+    title: str
+    items: tuple[Item, ...]
+    previous: bool = True  # every menu but the Query Menu has Previous Menu
+
+
+def _rows_menu(key: str, title: str, rows, then: str, suffix: str = "") -> Menu:
+    return Menu(key, title, tuple(Item(r.label, f".{r.name}{suffix}", then) for r in rows))
+
+
+def _words_menu(key: str, title: str, words) -> Menu:
+    return Menu(key, title, tuple(Item(w.capitalize(), f" = {w}", "conjunction") for w in words))
+
+
+_NUMERIC = "operation"
+MENUS: dict[str, Menu] = {m.key: m for m in (
+    Menu("query", "Query Menu", (
+        Item("Global Information", "", "global"),
+        Item("Anthropometric Groups", "", "group"),
+        Item("Re_execute", "", "re_execute"),
+        Item("Abort", "", "abort"),
+    ), previous=False),
+    Menu("global", "Global Information", (
+        Item("Gender", "gender", "gender"),
+        Item("Mass", "mass", _NUMERIC),
+        Item("Stature", "stature", _NUMERIC),
+        Item("Strength Type", "strength_type", "strength_type"),
+        Item("Handedness", "handedness", "handedness"),
+        Item("Motion Speed", "motion_speed", _NUMERIC),
+        Item("Training Level", "training_level", _NUMERIC),
+        Item("Fatigue Level", "fatigue_level", _NUMERIC),
+    )),
+    _words_menu("gender", "Gender", ("male", "female")),
+    _words_menu("strength_type", "Strength Type", STRENGTH_TYPES),
+    _words_menu("handedness", "Handedness", HANDEDNESS),
+    Menu("group", "Anthropometric Group", (
+        Item("Girth", "girth", "girth"),
+        Item("Joint Limit", "joint_limit", "joint_limit"),
+        Item("Center of Mass", "center_of_mass", "center_of_mass"),
+        Item("Strength", "strength", "strength"),
+    )),
+    _rows_menu("girth", "Girth Menu", GIRTH_ROWS, "axis"),
+    _rows_menu("joint_limit", "Joint Limit Menu", JOINT_LIMIT_ROWS, "axis"),
+    _rows_menu("center_of_mass", "Center of Mass Menu", CENTER_OF_MASS_ROWS, "axis"),
+    # A motion has one number to query, its maximum strength: no Axis Menu.
+    _rows_menu("strength", "Strength Menu", MOTIONS, _NUMERIC, ".max"),
+    Menu("axis", "Axis Menu", tuple(Item(f"{a.upper()} Axis", f".{a}", _NUMERIC) for a in "xyz")),
+    Menu(_NUMERIC, "Relational Operation Menu", (
+        Item("Less Than (<)", " < ", "value"),
+        Item("Greater Than (>)", " > ", "value"),
+        Item("Less Than or Equal (≤)", " <= ", "value"),
+        Item("Greater Than or Equal (≥)", " >= ", "value"),
+        Item("Equal (=)", " = ", "value"),
+        Item("Not Equal (≠)", " != ", "value"),
+    )),
+    Menu("conjunction", "Conjunction Menu", (
+        Item("And", " AND ", "query"),
+        Item("Or", " OR ", "query"),
+        Item("Done", "", "done"),
+    )),
+)}
+
+
+@dataclass
+class Step:
+    shown: str  # the menu (or "value" prompt) the choice was made in
+    text: str
+
+
+@dataclass
+class QueryBuilder:
+    """Where the user is in the menus and the query built so far."""
+
+    steps: list[Step] = field(default_factory=list)
+    current: str = "query"  # a menu key, or "value" while the constraint is typed
+
+    @property
+    def text(self) -> str:
+        return "".join(step.text for step in self.steps)
+
+    @property
+    def menu(self) -> Menu | None:
+        return MENUS.get(self.current)
+
+    def choose(self, label: str) -> str:
+        """Apply a menu choice; returns what happens next: a menu key, "value",
+        "previous", or one of the endings "re_execute", "abort", "done"."""
+        if label == PREVIOUS:
+            self.previous()
+            return "previous"
+        menu = self.menu
+        item = next((i for i in menu.items if i.label == label), None) if menu else None
+        if item is None:
+            raise ValueError(f"{label!r} is not in the {menu.title if menu else self.current}")
+        if item.next in ("re_execute", "abort", "done"):
+            return item.next
+        self.steps.append(Step(self.current, item.text))
+        self.current = item.next
+        return item.next
+
+    def previous(self) -> None:
+        if self.steps:
+            step = self.steps.pop()
+            self.current = step.shown
+
+    def constraint(self, typed: str) -> None:
+        """The typed constraint value; raises QueryError (builder unchanged) when
+        the condition it completes is not valid, e.g. not a number."""
+        condition = self._condition_text() + typed.strip()
+        try:
+            compile_query(condition)
+        except QueryError as exc:
+            reason = re.sub(r"^column \d+: ", "", str(exc))
+            raise QueryError(f"{typed.strip()!r} is not a valid constraint: {reason}") from None
+        self.steps.append(Step("value", typed.strip()))
+        self.current = "conjunction"
+
+    def replace_text(self, text: str) -> None:
+        """The query edited as text on the message line: it becomes one piece,
+        and the Conjunction Menu follows (Done runs it, And/Or extend it)."""
+        self.steps = [Step("query", text.strip())] if text.strip() else []
+        self.current = "conjunction" if text.strip() else "query"
+
+    def _condition_text(self) -> str:
+        """The condition being built: the text after the last AND / OR."""
+        pieces: list[str] = []
+        for step in reversed(self.steps):
+            if step.shown == "conjunction":
+                break
+            pieces.append(step.text)
+        return "".join(reversed(pieces))
+
+
+class QueryPopup(Vertical):
+    """One pop-up menu at a time; Escape is Previous Menu (Abort in the Query Menu)."""
+
+    BINDINGS = [Binding("escape", "back", "Previous Menu", show=False),
+                Binding("e", "edit_text", "Edit query", show=False)]
+
+    class Chosen(Message):
+        def __init__(self, label: str, menu: str | None = None) -> None:
+            super().__init__()
+            self.label = label
+            self.menu = menu  # the menu it was chosen in (None: the current one)
+
+    class EditText(Message):
+        pass
+
+    def compose(self):
+        yield OptionList(id="popup-options")
+
+    menu_key: str | None = None
+
+    def show_menu(self, menu: Menu) -> None:
+        self.menu_key = menu.key
+        self.border_title = menu.title
+        options = self.query_one(OptionList)
+        options.clear_options()
+        labels = [item.label for item in menu.items] + ([PREVIOUS] if menu.previous else [])
+        options.add_options([Option(label, id=f"opt-{i}") for i, label in enumerate(labels)])
+        options.highlighted = 0
+        self.display = True
+        options.focus()
+
+    def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
+        event.stop()
+        self.post_message(self.Chosen(str(event.option.prompt), self.menu_key))
+
+    def action_back(self) -> None:
+        options = self.query_one(OptionList)
+        labels = [str(options.get_option_at_index(i).prompt) for i in range(options.option_count)]
+        self.post_message(self.Chosen(PREVIOUS if PREVIOUS in labels else "Abort", self.menu_key))
+
+    def action_edit_text(self) -> None:
+        self.post_message(self.EditText())

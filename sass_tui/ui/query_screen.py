@@ -1,0 +1,747 @@
+"""The database query spreadsheet (report §12.3, figures 9, 10, 11) and the
+commands of the anthropometric spreadsheet that reach it: Query, Disp. Indv.,
+Disp. More and Disp. Pop. (§12.2, §12.4, §12.5).
+
+The lists are TEMP tables of the database (sass_tui/db/lists.py): a page is
+read when it is shown, so a query list of 100,000 people is 25 rows of
+widgets' worth of work.  Queries and Input DB run in worker threads; while
+one runs, keys are still answered and list commands say so instead of waiting.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import sqlite3
+from contextlib import contextmanager
+from pathlib import Path
+
+from rich.text import Text
+from textual import events, work
+from textual.binding import Binding
+from textual.containers import Horizontal
+from textual.screen import ModalScreen, Screen
+from textual.widget import Widget
+from textual.widgets import Button, Footer, OptionList, Static
+from textual.widgets.option_list import Option
+
+from sass_tui.db.flatfile import FlatFileError, FlatFiles
+from sass_tui.db.individual import fetch_individual
+from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.query import QueryError
+from sass_tui.db.schema import DatabaseError
+from sass_tui.model.figure import FigureError
+from sass_tui.model.names import GROUPS
+from sass_tui.ui.commands import COMMANDS, CommandSpec
+from sass_tui.ui.query_builder import PREVIOUS, VALUE_PROMPT, QueryBuilder, QueryPopup
+from sass_tui.ui.widgets import AnswerInput, CommandMenu, MessageLine
+
+BUILD_PROMPT = "Press rightmouse to build query."
+WAIT = "Query on database, please wait..."
+COMPLETE = "Query execution is complete."
+NO_DATA = "No data satisfied the query."
+LIST_TITLES = {QUERY_LIST: "Query List", SELECTED_LIST: "Selected List"}
+# Input DB asks for these one by one (report §12.3.3); ESC at Strength
+# Parameter skips the three strength files after it.
+INPUT_DB_FILES = (("person", "Person"), ("girth", "Girth"), ("joint_limits", "Joint Limits"),
+                  ("center_of_mass", "Center of Mass"), ("strength_par", "Strength Parameter"),
+                  ("shoulder", "Shoulder Strength"), ("elbow", "Elbow Strength"),
+                  ("wrist", "Wrist Strength"))
+DB_ERRORS = (QueryError, DatabaseError, FlatFileError, sqlite3.Error, OSError, ValueError)
+
+
+class Busy(Exception):
+    """The database is in use by a running query or import."""
+
+
+def _on_query_list(app) -> bool:
+    return app.screen.which == QUERY_LIST
+
+
+def _void_unless_query_list(label: str):
+    return lambda app: label if _on_query_list(app) else "void"
+
+
+# Figure 11: the first label is the one shown with the query list.  The list
+# button names the list it will display.
+QUERY_COMMANDS: tuple[CommandSpec, ...] = (
+    CommandSpec("q_next_page", "n", "next_page", "Next", lambda app: "Next Page", row=0),
+    CommandSpec("q_previous_page", "p", "previous_page", "Prev", lambda app: "Previous Page", row=1),
+    CommandSpec("query_db", "d", "query_db", "Query DB", lambda app: "Query DB", row=2),
+    CommandSpec("select_all", "a", "select_all", "Sel. All", _void_unless_query_list("Select All"),
+                row=3, available=_on_query_list),
+    CommandSpec("select_one", "s", "select_one", "Sel. One", _void_unless_query_list("Select One"),
+                row=4, available=_on_query_list),
+    CommandSpec("delete_one", "x", "delete_one", "Delete", lambda app: "Delete One", row=5),
+    CommandSpec("display_list", "l", "display_list", "List",
+                lambda app: "Disp. Selected List" if _on_query_list(app) else "Disp. Query List",
+                column=1, row=0),
+    CommandSpec("input_db", "i", "input_db", "Input DB", lambda app: "Input DB", column=1, row=1),
+    CommandSpec("exit_query", "e", "exit_query", "Exit", _void_unless_query_list("Exit Query"),
+                column=1, row=5, available=_on_query_list),
+)
+
+
+class QueryCommandMenu(CommandMenu):
+    """Figure 11 keeps its slots: a command that does not apply reads "void"."""
+
+    def refresh_labels(self) -> None:
+        for spec in self.commands:
+            button = self.query_one(f"#command-{spec.name}", Button)
+            button.label = spec.label(self.app)
+            button.disabled = not spec.available(self.app)
+
+
+class SummaryPanel(Static):
+    def show(self, query: str, which: str, query_total: int, selected_total: int) -> None:
+        text = Text(no_wrap=True, overflow="ellipsis")
+        for label, value in (("Query", query or "(none yet)"),
+                             ("Current Display List", LIST_TITLES[which]),
+                             ("Total Data in Query List", f"{query_total:,}"),
+                             ("Total Data in Selected List", f"{selected_total:,}")):
+            text.append(f"{label}: ", "bold")
+            text.append(f"{value}\n")
+        self.update(text.rstrip() or text)
+
+
+# Name, gender, mass, stature, strength type, motion speed, handedness, training, fatigue.
+LIST_COLUMNS = (("Name", "name", 14, "<"), ("Gender", "gender", 7, "<"),
+                ("Mass kg", "mass", 8, ">"), ("Stature cm", "stature", 11, ">"),
+                ("Strength type", "strength_type", 14, "<"), ("Speed °/s", "motion_speed", 10, ">"),
+                ("Handed", "handedness", 7, "<"), ("Training", "training_level", 9, ">"),
+                ("Fatigue", "fatigue_level", 8, ">"))
+
+
+def _cell(row: dict, key: str) -> str:
+    value = row.get(key)
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return ""
+    if isinstance(value, float):
+        return f"{value:.1f}" if key in ("mass", "stature") else f"{value:g}"
+    return str(value)
+
+
+class ListSheet(Widget, can_focus=True):
+    """One page of the query or selected list; only the page's rows are held."""
+
+    COMPONENT_CLASSES = {"listsheet--header", "listsheet--cursor", "listsheet--page"}
+    BINDINGS = [Binding("up", "move(-1)", show=False), Binding("down", "move(1)", show=False)]
+    HEADER_LINES = 2
+    PAGE_ROWS = 25
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.rows: list[dict] = []
+        self.first = 0  # list position of rows[0]
+        self.total = 0
+        self.cursor = 0
+
+    @property
+    def page_size(self) -> int:
+        return max(1, min(self.PAGE_ROWS, self.content_size.height - self.HEADER_LINES))
+
+    def show_rows(self, rows: list[dict], first: int, total: int) -> None:
+        self.rows, self.first, self.total = rows, first, total
+        self.cursor = min(self.cursor, max(0, len(rows) - 1))
+        self.refresh()
+
+    @property
+    def highlighted(self) -> dict | None:
+        return self.rows[self.cursor] if self.rows else None
+
+    def render(self) -> Text:
+        header = self.get_component_rich_style("listsheet--header")
+        cursor = self.get_component_rich_style("listsheet--cursor")
+        page_style = self.get_component_rich_style("listsheet--page")
+        top = Text(no_wrap=True, overflow="crop")
+        for title, _, width, align in LIST_COLUMNS:
+            top.append(f"{title:{align}{width - 1}} "[:width], header)
+        pages = max(1, -(-self.total // self.page_size))
+        page = self.first // self.page_size + 1
+        lines = [top, Text(f"page {page}/{pages}", page_style)]
+        if not self.rows:
+            lines.append(Text("(empty)"))
+        for index, row in enumerate(self.rows):
+            line = Text(no_wrap=True, overflow="crop")
+            for _, key, width, align in LIST_COLUMNS:
+                line.append(f"{_cell(row, key)[:width - 1]:{align}{width - 1}} ")
+            if index == self.cursor and self.has_focus:
+                line.stylize(cursor)
+            lines.append(line)
+        return Text("\n", no_wrap=True).join(lines)
+
+    def action_move(self, rows: int) -> None:
+        if self.rows:
+            self.cursor = min(max(self.cursor + rows, 0), len(self.rows) - 1)
+            self.refresh()
+
+    def on_click(self, event: events.Click) -> None:
+        offset = event.get_content_offset(self)
+        if offset is not None and event.button == 1:
+            row = offset.y - self.HEADER_LINES
+            if 0 <= row < len(self.rows):
+                self.cursor = row
+                self.focus()
+                self.refresh()
+
+    def on_focus(self) -> None:
+        self.refresh()
+
+    def on_blur(self) -> None:
+        self.refresh()
+
+
+class QueryScreen(Screen):
+    CSS_PATH = Path(__file__).with_name("query.tcss")
+    # The anthropometric spreadsheet's commands are not this screen's.
+    blocks_app_commands = True
+    BINDINGS = [
+        *(Binding(spec.key, spec.action, spec.footer) for spec in QUERY_COMMANDS),
+        Binding("b", "build", "Build query"),
+        Binding("pagedown", "next_page", show=False),
+        Binding("pageup", "previous_page", show=False),
+    ]
+
+    def __init__(self, lists: QueryLists | None, db_path: Path | None = None) -> None:
+        super().__init__(id="query-screen")
+        self.lists = lists
+        self.db_path = db_path
+        self.which = QUERY_LIST
+        self.builder: QueryBuilder | None = None
+        self.awaiting_build = False
+        self.running = False
+        self._on_answer = None
+        self._on_cancel = None
+
+    def compose(self):
+        with Horizontal(id="query-top"):
+            yield SummaryPanel(id="summary")
+            yield QueryCommandMenu(QUERY_COMMANDS, id="query-commands")
+        yield ListSheet(id="list")
+        popup = QueryPopup(id="popup")
+        popup.display = False
+        yield popup
+        yield MessageLine(id="message-line")
+        yield Footer(compact=True)
+
+    def on_mount(self) -> None:
+        self.query_one(AnswerInput).cursor_blink = self.app.cursor_blink
+        self.sheet.focus()
+        self.refresh_screen()
+        if self.lists is None:
+            self.say("Opening the database ...")
+            self.open_database()
+        else:
+            self.show_page(0)
+            self.say("Query DB (d) to query the database; Exit Query (e) returns.")
+
+    @property
+    def sheet(self) -> ListSheet:
+        return self.query_one(ListSheet)
+
+    @property
+    def popup(self) -> QueryPopup:
+        return self.query_one(QueryPopup)
+
+    # --- message line (as the spreadsheet's) -------------------------------------
+    def say(self, text: str) -> None:
+        self.query_one(MessageLine).show(text, "info")
+
+    def complain(self, text: str) -> None:
+        self.query_one(MessageLine).show(text, "error")
+
+    def ask(self, prompt: str, on_answer, on_cancel=None, initial: str = "") -> None:
+        self._on_answer, self._on_cancel = on_answer, on_cancel
+        self.query_one(MessageLine).ask(prompt, initial)
+
+    def _close_prompt(self):
+        handlers = self._on_answer, self._on_cancel
+        self._on_answer = self._on_cancel = None
+        self.query_one(MessageLine).close()
+        return handlers
+
+    def on_input_submitted(self, event: AnswerInput.Submitted) -> None:
+        event.stop()
+        on_answer, _ = self._close_prompt()
+        self._focus_back()
+        if on_answer is not None:
+            on_answer(event.value)
+        self.refresh_screen()
+
+    def on_answer_input_cancelled(self, event: AnswerInput.Cancelled) -> None:
+        event.stop()
+        _, on_cancel = self._close_prompt()
+        self._focus_back()
+        if on_cancel is not None:
+            on_cancel()
+        else:
+            self.say("Cancelled; nothing changed.")
+        self.refresh_screen()
+
+    def _focus_back(self) -> None:
+        if self.popup.display:
+            self.set_focus(self.popup.query_one(OptionList))
+        else:
+            self.set_focus(self.sheet)
+
+    # --- database ------------------------------------------------------------------
+    @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
+    def open_database(self) -> None:
+        from sass_tui.db.commands import create_default_database
+        from sass_tui.db.schema import default_db_path
+
+        path = self.db_path or default_db_path()
+        try:
+            if self.db_path is None and not path.exists():
+                self.app.call_from_thread(self.say, f"Creating the default database {path} ...")
+                create_default_database(path)
+            lists = QueryLists.open(path)
+        except DB_ERRORS as exc:
+            self.app.call_from_thread(self.complain, f"Cannot open the database: {exc}")
+            return
+        self.app.call_from_thread(self._database_open, lists, path)
+
+    def _database_open(self, lists: QueryLists, path: Path) -> None:
+        self.lists = self.app.query_lists = lists
+        self.refresh_screen()
+        self.show_page(0)
+        self.say(f"Database {path} open. Query DB (d) to query it; Exit Query (e) returns.")
+
+    @contextmanager
+    def _database(self):
+        """The lists, if no query or import is using the connection."""
+        if self.lists is None:
+            raise Busy("The database is not open yet.")
+        if not self.lists.lock.acquire(blocking=False):
+            raise Busy(WAIT)
+        try:
+            yield self.lists
+        finally:
+            self.lists.lock.release()
+
+    def _list_command(self, func) -> None:
+        try:
+            func()
+        except Busy as exc:
+            self.say(str(exc))
+        except DB_ERRORS as exc:
+            self.complain(f"Database error: {exc}")
+        self.refresh_screen()
+
+    def show_page(self, first: int) -> None:
+        if self.lists is None:
+            return
+        with self._database() as lists:
+            total = lists.count(self.which)
+            size = self.sheet.page_size
+            first = max(0, min(first, (max(total, 1) - 1) // size * size))
+            self.sheet.show_rows(lists.page(self.which, first, size), first, total)
+
+    def refresh_screen(self) -> None:
+        lists = self.lists
+        totals = (lists.count(QUERY_LIST), lists.count(SELECTED_LIST)) if lists else (0, 0)
+        query = lists.last_query if lists else ""
+        if self.builder is not None and not self.awaiting_build:
+            query = f"{self.builder.text}▏ (being built)"
+        self.query_one(SummaryPanel).show(query, self.which, *totals)
+        self.query_one(QueryCommandMenu).refresh_labels()
+
+    # --- command menu ------------------------------------------------------------------
+    async def on_button_pressed(self, event: Button.Pressed) -> None:
+        spec = next((c for c in QUERY_COMMANDS if event.button.id == f"command-{c.name}"), None)
+        if spec is not None:
+            event.stop()
+            await self.run_action(spec.action)
+
+    def _turn(self, pages: int) -> None:
+        sheet = self.sheet
+        target = sheet.first + pages * sheet.page_size
+        if not 0 <= target < max(sheet.total, 1):
+            self.say("This is the last page." if pages > 0 else "This is the first page.")
+            return
+        self.show_page(target)
+        self.say(f"Page {target // sheet.page_size + 1} of "
+                 f"{max(1, -(-sheet.total // sheet.page_size))}.")
+
+    def action_next_page(self) -> None:
+        self._list_command(lambda: self._turn(1))
+
+    def action_previous_page(self) -> None:
+        self._list_command(lambda: self._turn(-1))
+
+    def action_select_all(self) -> None:
+        if self.which != QUERY_LIST:
+            self.say("Select All is void while the selected list is shown.")
+            return
+
+        def select_all():
+            with self._database() as lists:
+                moved = lists.select_all()
+            self.show_page(0)
+            self.say(f"{moved:,} people moved to the selected list.")
+        self._list_command(select_all)
+
+    def action_select_one(self) -> None:
+        if self.which != QUERY_LIST:
+            self.say("Select One is void while the selected list is shown.")
+            return
+        person = self.sheet.highlighted
+        if person is None:
+            self.say("The query list is empty.")
+            return
+
+        def select_one():
+            with self._database() as lists:
+                lists.select_one(person["id"])
+            self.show_page(self.sheet.first)
+            self.say(f"{person['name']} moved to the selected list.")
+        self._list_command(select_one)
+
+    def action_delete_one(self) -> None:
+        person = self.sheet.highlighted
+        if person is None:
+            self.say(f"The {LIST_TITLES[self.which].lower()} is empty.")
+            return
+
+        def delete_one():
+            with self._database() as lists:
+                lists.delete_one(self.which, person["id"])
+            self.show_page(self.sheet.first)
+            self.say(f"{person['name']} deleted from the {LIST_TITLES[self.which].lower()}.")
+        self._list_command(delete_one)
+
+    def action_display_list(self) -> None:
+        def switch():
+            self.which = SELECTED_LIST if self.which == QUERY_LIST else QUERY_LIST
+            self.sheet.cursor = 0
+            self.show_page(0)
+            self.say(f"{LIST_TITLES[self.which]} displayed.")
+        self._list_command(switch)
+
+    def action_exit_query(self) -> None:
+        if self.which != QUERY_LIST:
+            self.say("Exit Query is void while the selected list is shown; display the query list.")
+            return
+        if self.running:
+            self.say(WAIT)
+            return
+        self.app.pop_screen()
+
+    # --- Query DB: the pop-up builder -------------------------------------------------
+    def action_query_db(self) -> None:
+        if self.builder is not None and not self.awaiting_build:
+            self.say("A query is being built: Done runs it, Abort (Query Menu) drops it.")
+            return
+        if self.running:
+            self.say(WAIT)
+            return
+        if self.lists is None:
+            self.say("The database is not open yet.")
+            return
+        self.awaiting_build = True
+        self.builder = QueryBuilder()
+        self.say(f"{BUILD_PROMPT} (or press b)")
+
+    def action_build(self, x: int | None = None, y: int | None = None) -> None:
+        if not self.awaiting_build:
+            if self.builder is None:
+                self.say("Query DB (d) first, then the right mouse button builds the query.")
+            return
+        self.awaiting_build = False
+        if x is not None and y is not None:
+            self.popup.styles.offset = (max(0, min(x, self.size.width - 40)),
+                                        max(0, min(y, self.size.height - 16)))
+        self._show_current()
+
+    def on_mouse_down(self, event: events.MouseDown) -> None:
+        if event.button == 3 and self.awaiting_build:
+            event.stop()
+            self.action_build(event.screen_x, event.screen_y)
+
+    def _show_live(self) -> None:
+        self.say(f"Query: {self.builder.text}▏  (e: edit the query as text)")
+
+    def _show_current(self) -> None:
+        builder = self.builder
+        self.refresh_screen()
+        if builder.current == "value":
+            self.popup.display = False
+            self.ask(VALUE_PROMPT, self._constraint,
+                     on_cancel=lambda: self.on_query_popup_chosen(QueryPopup.Chosen(PREVIOUS)))
+            return
+        self.popup.show_menu(builder.menu)
+        self._show_live()
+
+    def _constraint(self, typed: str) -> None:
+        try:
+            self.builder.constraint(typed)
+        except QueryError as exc:
+            # The builder stays where it was: ask again, saying what was wrong.
+            self.ask(f"{exc}. {VALUE_PROMPT}", self._constraint,
+                     on_cancel=lambda: self.on_query_popup_chosen(QueryPopup.Chosen(PREVIOUS)))
+            self.query_one("#message").set_class(True, "-error")
+            return
+        self._show_current()
+
+    def on_query_popup_chosen(self, event: QueryPopup.Chosen) -> None:
+        event.stop()
+        builder = self.builder
+        if builder is None or (event.menu is not None and event.menu != builder.current):
+            # Enter pressed again before the next menu was up: it chose in a menu
+            # that is gone, so it is dropped rather than applied to the wrong one.
+            return
+        outcome = builder.choose(event.label)
+        if outcome == "abort":
+            self._close_builder()
+            self.say("Query aborted; nothing was run.")
+        elif outcome == "re_execute":
+            if not self.lists.last_query:
+                self.complain("There is no previous query to re-execute.")
+                return
+            self._close_builder()
+            self.start_query(self.lists.last_query)
+        elif outcome == "done":
+            text = builder.text
+            from sass_tui.db.query import compile_query
+            try:
+                compile_query(text)
+            except QueryError as exc:
+                self.complain(f"{exc}; edit the query (e) or use Previous Menu.")
+                return
+            self._close_builder()
+            self.start_query(text)
+        else:
+            self._show_current()
+
+    def on_query_popup_edit_text(self, event: QueryPopup.EditText) -> None:
+        event.stop()
+
+        def edited(text: str) -> None:
+            self.builder.replace_text(text)
+            self._show_current()
+        self.ask("Query:", edited, on_cancel=self._show_current, initial=self.builder.text)
+
+    def _close_builder(self) -> None:
+        self.builder = None
+        self.popup.display = False
+        self.set_focus(self.sheet)
+        self.refresh_screen()
+
+    # --- running a query --------------------------------------------------------------
+    def start_query(self, text: str) -> None:
+        self.running = True
+        self.say(WAIT)
+        self.run_query(text, self.sheet.page_size)
+
+    @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
+    def run_query(self, text: str, page_size: int) -> None:
+        lists = self.lists
+        try:
+            with lists.lock:
+                count = lists.run(text)
+                rows = lists.page(QUERY_LIST, 0, page_size)
+        except DB_ERRORS as exc:
+            self.app.call_from_thread(self._query_failed, exc)
+            return
+        self.app.call_from_thread(self._query_done, count, rows)
+
+    def _query_failed(self, exc: Exception) -> None:
+        self.running = False
+        self.complain(f"The query was not run: {exc}")
+        self.refresh_screen()
+
+    def _query_done(self, count: int, rows: list[dict]) -> None:
+        self.running = False
+        self.which = QUERY_LIST
+        self.sheet.cursor = 0
+        self.sheet.show_rows(rows, 0, count)
+        self.refresh_screen()
+        if count:
+            self.say(f"{COMPLETE} {count:,} people found.")
+        else:
+            self.say(NO_DATA)
+
+    # --- Input DB ----------------------------------------------------------------------
+    def action_input_db(self) -> None:
+        if self.running:
+            self.say(WAIT)
+            return
+        if self.lists is None:
+            self.say("The database is not open yet.")
+            return
+        self._ask_file({}, 0)
+
+    def _ask_file(self, chosen: dict, index: int) -> None:
+        if index == len(INPUT_DB_FILES):
+            self._import(chosen)
+            return
+        key, title = INPUT_DB_FILES[index]
+
+        def answer(text: str) -> None:
+            name = text.strip()
+            if not name:
+                if index < 4:  # person and the three groups must all be given
+                    self.complain(f"A file name for {title} is needed.")
+                    self.set_timer(0, lambda: self._ask_file(chosen, index))
+                    return
+                if index == 4:
+                    self._import(chosen)
+                    return
+                self.complain(f"{title}: a strength file is needed once Strength Parameter is given.")
+                self.set_timer(0, lambda: self._ask_file(chosen, index))
+                return
+            path = Path(name).expanduser()
+            if not path.is_file():
+                self.complain(f"{path}: no such file; enter the file name for {title} again.")
+                self.set_timer(0, lambda: self._ask_file(chosen, index))
+                return
+            self._ask_file({**chosen, key: path}, index + 1)
+
+        def cancel() -> None:
+            if key == "strength_par":
+                self._import(chosen)
+            else:
+                self.say("Input DB cancelled; the database is unchanged.")
+
+        self.ask(f"Enter File Name for {title}" + (" (ESC: no strength data)" if index == 4 else "")
+                 + ":", answer, on_cancel=cancel)
+
+    def _import(self, chosen: dict) -> None:
+        self.running = True
+        self.say("Loading the files into the database, please wait...")
+        self.import_files(FlatFiles(**chosen))
+
+    @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
+    def import_files(self, files: FlatFiles) -> None:
+        try:
+            with self.lists.lock:
+                count = self.lists.import_files(files)
+        except DB_ERRORS as exc:
+            self.app.call_from_thread(self._import_done, None, f"{exc}")
+            return
+        self.app.call_from_thread(self._import_done, count, "")
+
+    def _import_done(self, count: int | None, error: str) -> None:
+        self.running = False
+        if count is None:
+            self.complain(f"Input DB failed, the database is unchanged: {error}")
+        else:
+            self.say(f"Loaded {count:,} people into the database.")
+        self.refresh_screen()
+
+
+# --- the More Menu of Disp. More (§12.4) ------------------------------------------------
+
+MORE_CHOICES = ("First", "Last", "Previous", "Next", "Nth Person")
+
+
+class MoreMenu(ModalScreen[str | None]):
+    DEFAULT_CSS = """
+    MoreMenu { align: center middle; background: $background 40%; }
+    MoreMenu > OptionList { width: 24; height: auto; border: round $accent;
+                            border-title-style: bold; background: $surface; }
+    """
+    blocks_app_commands = True
+    BINDINGS = [Binding("escape", "dismiss(None)", "Cancel")]
+
+    def compose(self):
+        options = OptionList(*(Option(choice, id=f"more-{i}") for i, choice in enumerate(MORE_CHOICES)),
+                             id="more-menu")
+        options.border_title = "More Menu"
+        yield options
+
+    def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
+        event.stop()
+        self.dismiss(str(event.option.prompt))
+
+
+# --- the anthropometric spreadsheet's side ------------------------------------------------
+
+def _slug(name: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("_") or "person"
+
+
+class QueryCommands:
+    """Query, Disp. Indv., Disp. More and Disp. Pop. for SassApp (a mixin: the
+    app keeps its own file small and these commands beside their screen)."""
+
+    db_path: Path | None = None
+    query_lists: QueryLists | None = None
+    population_figure = None  # the population figure while a person is shown
+    person_index = 0
+
+    def check_action(self, action: str, parameters) -> bool | None:
+        # The spreadsheet's commands do nothing on the query screen and its pop-ups.
+        if getattr(self.screen, "blocks_app_commands", False) and action != "quit":
+            return False
+        spec = next((c for c in COMMANDS if c.action == action), None)
+        if spec is not None and not spec.available(self):
+            return False  # its slot shows the other command; the key does nothing
+        return super().check_action(action, parameters)
+
+    def action_query(self) -> None:
+        self.push_screen(QueryScreen(self.query_lists, self.db_path))
+
+    def action_display_individual(self) -> None:
+        self.show_person(0)
+
+    def action_display_more(self) -> None:
+        if self.population_figure is None:
+            self.complain("Disp. Indv. first: Disp. More shows more of the selected list.")
+            return
+
+        def chosen(choice: str | None) -> None:
+            if choice is None:
+                self.say("Disp. More cancelled.")
+            elif choice == "Nth Person":
+                self.ask("Enter the number:", self._nth_person)
+            else:
+                total = self.query_lists.count(SELECTED_LIST)
+                index = {"First": 0, "Last": total - 1, "Previous": self.person_index - 1,
+                         "Next": self.person_index + 1}[choice]
+                self.show_person(index)
+        self.push_screen(MoreMenu(), chosen)
+
+    def _nth_person(self, text: str) -> None:
+        try:
+            number = int(text.strip())
+        except ValueError:
+            raise ValueError(f"expected a whole number such as 3, got {text.strip()!r}") from None
+        self.show_person(number - 1)
+
+    def show_person(self, index: int) -> None:
+        lists = self.query_lists
+        total = lists.count(SELECTED_LIST) if lists else 0
+        if total == 0:
+            self.complain("The selected list is empty: Query, then Select One or Select All.")
+            return
+        if not 0 <= index < total:
+            self.complain(f"There is no person {index + 1}: the selected list holds {total}.")
+            return
+        population = self.population_figure or self.figure
+        try:
+            with lists.lock:
+                person = fetch_individual(lists.conn, lists.selected_id(index))
+            figure = population.for_person(
+                person.name, person.gender, {g: person.groups[g] for g in GROUPS},
+                mass=person.mass, stature=person.stature,
+                handedness=person.handedness if person.handedness in ("right", "left") else None,
+                **{k: person.strength.get(k) for k in
+                   ("strength_type", "motion_speed", "training_level", "fatigue_level")})
+        except (FigureError, *DB_ERRORS) as exc:
+            self.complain(f"Cannot display person {index + 1}: {exc}")
+            return
+        self.population_figure, self.figure, self.person_index = population, figure, index
+        self.refresh_screen()
+        self.say(f"Person {index + 1} of {total} in the selected list: {person.name}.")
+
+    def action_display_population(self) -> None:
+        if self.population_figure is None:
+            self.say("The population is already shown.")
+            return
+        self.figure, self.population_figure = self.population_figure, None
+        self.refresh_screen()
+        self.say(f"Population {self.figure.population} displayed.")
+
+    def person_fig_name(self) -> str:
+        return f"{_slug(self.figure.person)}.fig"

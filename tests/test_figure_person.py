@@ -1,0 +1,57 @@
+"""Figure.for_person: a real person shown against the population (report §12.4)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from sass_tui.model.figure import Figure, FigureError
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
+from sass_tui.model.percentile import percentile_of
+
+
+def person_groups(figure: Figure, scale: float = 1.1) -> dict[str, np.ndarray]:
+    groups = {g: figure.groups[g].values * scale for g in GROUPS}
+    groups[GIRTH][row_index(GIRTH, "neck")] = np.nan  # no value in the database
+    return groups
+
+
+def test_person_values_percentiles_and_population_untouched():
+    population = Figure.default("male")
+    before = {g: population.groups[g].values.copy() for g in GROUPS}
+    groups = person_groups(population)
+    person = population.for_person("SMITH", "male", groups, mass=90.0, stature=185.0,
+                                   handedness="left", strength_type="isokinetic")
+    assert person.person == "SMITH" and person.population == population.population
+    for group in GROUPS:
+        np.testing.assert_array_equal(person.groups[group].values, groups[group])
+        stats = population.groups[group].source.stats("male")
+        np.testing.assert_allclose(person.groups[group].percentiles,
+                                   percentile_of(stats, groups[group]).reshape(groups[group].shape))
+        np.testing.assert_array_equal(population.groups[group].values, before[group])
+    assert np.isnan(person.groups[GIRTH].values[row_index(GIRTH, "neck")]).all()
+    assert person.mass == 90.0 and person.mass_percentile > 50
+    assert person.handedness == "left" and person.strength_type == "isokinetic"
+    assert population.person is None and population.handedness == "right"
+    assert not person.undo()  # a fresh figure: nothing to undo
+
+
+def test_person_is_editable_like_population_data():
+    population = Figure.default("female")
+    person = population.for_person("DOE", "female", person_groups(population, 0.95))
+    arm = row_index(GIRTH, "right_upper_arm")
+    person.set_value(GIRTH, arm, 2, 30.0)
+    assert person.groups[GIRTH].values[arm, 2] == 30.0
+    person.set_cell_percentile(JOINT_LIMITS, 0, 0, 50.0)
+    assert person.undo() and person.undo()
+    assert person.groups[GIRTH].values[arm, 2] == pytest.approx(
+        population.groups[GIRTH].values[arm, 2] * 0.95)
+
+
+def test_person_refused_without_statistics_or_with_wrong_shape():
+    population = Figure.default("male")
+    population.groups[CENTER_OF_MASS].source = None
+    with pytest.raises(FigureError, match="no male Center of Mass statistics"):
+        population.for_person("X", "male", person_groups(Figure.default()))
+    with pytest.raises(FigureError, match="shape"):
+        Figure.default().for_person("X", "male", {g: np.zeros((2, 3)) for g in GROUPS})
