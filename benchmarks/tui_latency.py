@@ -47,8 +47,8 @@ def full_layout(text: str) -> bool:
     """Every section of report figure 4 is drawn: group line, global data,
     command menu, data rows, message line and footer."""
     return all(part in text for part in (
-        "Strength (s)", "Population", "Fatigue level", "Create Figure",
-        "Bottom Head", "Press left-mouse to select items.", "Undo"))
+        "Strength (s)", "Population", "Fatigue", "Create Figure",
+        "Bottom Head", "Press left-mouse to select items.", "q Quit"))
 
 
 def main() -> int:
