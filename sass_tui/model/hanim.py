@@ -436,9 +436,12 @@ SKIN = {"male": "0.80 0.62 0.50", "female": "0.86 0.66 0.58"}
 
 def humanoid_element(humanoid: Humanoid, gender: str, prefix: str = "hanim_") -> ET.Element:
     """The HAnimHumanoid node; `prefix` keeps DEF names unique in a shared scene."""
+    # skeletalConfiguration is "BASIC" (clause 4.8.2) through the field's X3D 4.0
+    # default: X3D's canonical XML form leaves defaults out, and Debian's
+    # view3dscene 4.2, which predates the field, warns when it is written.
     root = ET.Element("HAnimHumanoid", {
         "DEF": f"{prefix}humanoid", "name": humanoid.name, "version": HANIM_VERSION,
-        "skeletalConfiguration": "BASIC", "info": _mfstring(humanoid.info)})
+        "info": _mfstring(humanoid.info)})
     appearance_def = f"{prefix}skin"
     joints: dict[str, ET.Element] = {}
     first_shape = True
