@@ -57,15 +57,25 @@ class SassApp(QueryCommands, App):
     CSS_PATH = Path(__file__).with_name("sass.tcss")
     TITLE = "SASS"
     ENABLE_COMMAND_PALETTE = False
+    # Letter keys are priority bindings: the app takes them in the order they
+    # were typed, before the focused widget sees the next key ("m12" pasted
+    # switches to Center of Mass, then types 12).  While the message line takes
+    # an answer, check_action turns them off and the letters are typed there.
     BINDINGS = [
-        *(Binding(spec.key, spec.action, spec.footer) for spec in COMMANDS),
+        *(Binding(spec.key, spec.action, spec.footer, priority=True) for spec in COMMANDS),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
-        Binding("u", "undo", "Undo"),
+        Binding("u", "undo", "Undo", priority=True),
         Binding("ctrl+z", "undo", show=False),
-        Binding("w", "next_warning", "Warnings"),
-        *(Binding(key, f"select_group('{group}')", show=False) for group, key in GROUP_KEYS),
+        Binding("w", "next_warning", "Warnings", priority=True),
+        *(Binding(key, f"select_group('{group}')", show=False, priority=True)
+          for group, key in GROUP_KEYS),
     ]
+
+    def check_action(self, action: str, parameters) -> bool | None:
+        if isinstance(self.focused, AnswerInput):
+            return False
+        return super().check_action(action, parameters)
 
     def __init__(self, figure: Figure | None = None, *, cursor_blink: bool = True,
                  strength_path: str | Path | None = None,
@@ -200,6 +210,8 @@ class SassApp(QueryCommands, App):
         self.call_after_refresh(self._say_group_shown)
 
     def _say_group_shown(self) -> None:
+        if self.message_line.prompting:  # a cell edit began meanwhile: keep its prompt
+            return
         sheet = self.active_sheet
         message = (f"{GROUP_TITLES[self.data_group]}: {sheet.row_count} rows, "
                    f"{sheet.pages} page{'s' if sheet.pages > 1 else ''}.")

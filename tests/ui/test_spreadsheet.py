@@ -380,3 +380,24 @@ def test_create_figure_refused_without_a_group(drive):
             await pilot.press("m")
             assert "No male data loaded" in sheet_text(app)
     drive(scenario())
+
+
+def test_keys_typed_in_one_burst_run_in_order(drive):
+    """A command letter then digits, arriving together (a paste, a fast typist,
+    `tmux send-keys "m12"`): the group switch happens before the edit starts."""
+    async def scenario():
+        app = SassApp(cursor_blink=False)
+        async with app.run_test(size=LARGE) as pilot:
+            for key in ("m", "1", "2"):
+                app.post_message(events.Key(key, key))
+            await pilot.pause()
+            assert app.data_group == CENTER_OF_MASS
+            assert message(app).startswith("Bottom Head x value")
+            await pilot.press("enter")
+            assert app.figure.groups[CENTER_OF_MASS].values[0, 0] == 12.0
+            assert app.figure.groups[GIRTH].values[0, 0] == 20.0
+            # While the answer is typed, letters are text, not commands.
+            await pilot.press("1", "i", "n")
+            assert app.query_one("#answer").value == "1in"
+            await pilot.press("escape")
+    drive(scenario())
