@@ -18,7 +18,6 @@ from textual.widgets import Button, Footer
 
 from sass_tui.model.figfile import FigureIncompleteError, default_fig_name, write_fig
 from sass_tui.model.figure import Figure, FigureError
-from sass_tui.model.hanim import export_hanim
 from sass_tui.model.names import (
     AXES, CENTER_OF_MASS, GIRTH, GROUP_TITLES, JOINT_LIMITS, STRENGTH)
 from sass_tui.model.percentile import PercentileError
@@ -32,7 +31,7 @@ from sass_tui.ui.widgets import (
     AnswerInput, CommandMenu, DataSheet, GlobalPanel, GroupBar, GroupTab, MessageLine,
     format_percentile, format_value, global_text)
 from sass_tui.ui.strength_page import StrengthPage, format_angle, format_strength
-from sass_tui.ui.query_screen import QueryCommands
+from sass_tui.ui.individuals import QueryCommands
 
 FIRST_MESSAGE = "Press left-mouse to select items."
 GROUP_KEYS = ((GIRTH, "g"), (JOINT_LIMITS, "j"), (CENTER_OF_MASS, "m"), (STRENGTH, "s"))
@@ -455,6 +454,8 @@ class SassApp(QueryCommands, App):
     @work(thread=True, exclusive=True, group="export-hanim", exit_on_error=False)
     def export_figure(self, path: Path) -> None:
         try:
+            from sass_tui.model.hanim import export_hanim
+
             export_hanim(self.figure, path)
         except ValueError as exc:  # an incomplete figure (HAnimError, FigureIncompleteError)
             self.call_from_thread(self.complain, str(exc))
