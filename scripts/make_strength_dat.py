@@ -108,7 +108,7 @@ def rows_for(gender: str) -> list[tuple[tuple[float, ...], float, float, str]]:
 
 def render() -> str:
     lines = [
-        "P NASA-era test data for strength (SASS-style; see docs/data-sources.md)",
+        "P Strength test data, not a survey (docs/data-sources.md)",
         "C Values are TEST DATA made by scripts/make_strength_dat.py, not a survey:",
         "C peak torques of one elite male gymnast (Millard et al. 2016, RBDL",
         "C Millard2016TorqueMuscle.cc, GymnastWholeBody) taken as the 95th percentile",

@@ -16,7 +16,7 @@ from sass_tui.ui.widgets import DataSheet
 
 ANGLE_WIDTH = 6
 VALUE_WIDTH = 8
-NAME_WIDTH = 25  # "Shoulder lateral rotation"
+NAME_WIDTH = 26  # "Shoulder lateral rotation" and a space
 # Below this the source column shows one letter instead of the word.
 SOURCE_WORD_WIDTH = 11
 SOURCE_LETTER = {"stored": "s", "predicted": "p", "no data": ""}
