@@ -4,6 +4,7 @@ directly; only plain `sass` (the TUI) imports Textual, and only when run."""
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -128,6 +129,11 @@ def main(argv: list[str] | None = None) -> int:
         return run_app(args.tui_db)
     try:
         return args.func(args)
+    except BrokenPipeError:
+        # The reader went away (`sass query ... | head`): not an error, and
+        # Python must not complain again when it flushes stdout at exit.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     except (FigureError, PercentileError, PopulationFileError, UnitError, ValueError, OSError) as exc:
         print(f"sass {args.command}: error: {exc}", file=sys.stderr)
         return 2

@@ -127,3 +127,18 @@ def test_bad_query_leaves_database_unchanged(default_db, default_db_file, capsys
         err = capsys.readouterr().err
         assert "column" in err and "^" in err
     assert row_counts(default_db) == before
+
+
+def test_query_output_into_a_closed_pipe_is_not_an_error(tmp_path):
+    """`sass query ... | head -1`: the reader closes early; sass exits quietly."""
+    import subprocess
+    import sys
+
+    db = tmp_path / "sass.db"
+    subprocess.run([sys.executable, "-m", "sass_tui", "db", "init", "--db", str(db)], check=True,
+                   capture_output=True)
+    done = subprocess.run(
+        f'"{sys.executable}" -m sass_tui query --db "{db}" --format csv "mass > 0" | head -1',
+        shell=True, capture_output=True, text=True)
+    assert done.stdout.count("\n") == 1
+    assert "Broken pipe" not in done.stderr and "error" not in done.stderr
