@@ -286,9 +286,25 @@ class SassApp(QueryCommands, App):
         self.say(f"Reading {text.strip()} ...")
         path = Path(text.strip()).expanduser()
         if self.data_group == STRENGTH:
-            self.load_strength(path)
+            self.load_file(path, read_strength_file, self._apply_strength, "strength data")
         else:
-            self.load_population(self.data_group, path)
+            group = self.data_group
+            self.load_file(path, lambda p: read_population_file(p, group),
+                           lambda data: self._apply_population(group, data), GROUP_TITLES[group])
+
+    @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
+    def load_file(self, path: Path, read: Callable[[Path], object],
+                  apply: Callable[[object], None], what: str) -> None:
+        """Input Data: read in a worker; a file that fails leaves `what` as it was."""
+        try:
+            data = read(path)
+        except (PopulationFileError, StrengthFileError) as exc:
+            self.call_from_thread(self.complain, f"{exc}; {what} unchanged.")
+            return
+        except Exception as exc:  # anything else the file does: report, keep the data
+            self.call_from_thread(self.complain, f"{path}: {exc}; {what} unchanged.")
+            return
+        self.call_from_thread(apply, data)
 
     # --- strength data ----------------------------------------------------------------
     def _load_default_strength(self) -> None:
@@ -303,18 +319,6 @@ class SassApp(QueryCommands, App):
             sheet.rows()  # fits the equations now rather than on the first 's'
         except StrengthError:
             pass  # no data for this gender: the page says so when shown
-
-    @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
-    def load_strength(self, path: Path) -> None:
-        try:
-            data = read_strength_file(path)
-        except StrengthFileError as exc:
-            self.call_from_thread(self.complain, f"{exc}; strength data unchanged.")
-            return
-        except Exception as exc:  # anything else the file does: report, keep the data
-            self.call_from_thread(self.complain, f"{path}: {exc}; strength data unchanged.")
-            return
-        self.call_from_thread(self._apply_strength, data)
 
     def _apply_strength(self, data) -> None:
         sheet = StrengthSheet(data, self.figure)
@@ -355,18 +359,6 @@ class SassApp(QueryCommands, App):
         self.ask(f"Scaling factor for the non-dominant limb "
                  f"(RETURN = default {DEFAULT_NON_DOMINANT_FACTOR:.3f}):",
                  lambda text: self.say(self.strength_sheet.switch_side(text) + "."))
-
-    @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
-    def load_population(self, group: str, path: Path) -> None:
-        try:
-            data = read_population_file(path, group)
-        except PopulationFileError as exc:
-            self.call_from_thread(self.complain, f"{exc}; {GROUP_TITLES[group]} unchanged.")
-            return
-        except Exception as exc:  # anything else the file does: report, keep the data
-            self.call_from_thread(self.complain, f"{path}: {exc}; {GROUP_TITLES[group]} unchanged.")
-            return
-        self.call_from_thread(self._apply_population, group, data)
 
     def _apply_population(self, group: str, data) -> None:
         gender = self.figure.gender
