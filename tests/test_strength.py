@@ -244,3 +244,19 @@ def test_the_strength_cli_does_not_import_textual():
     code = ("import sys, sass_tui.cli, sass_tui.cli_strength, sass_tui.model.strength; "
             "sys.exit('textual' in sys.modules)")
     assert subprocess.run([sys.executable, "-c", code]).returncode == 0
+
+
+def test_angle_edits_undo_in_order_with_figure_edits():
+    figure = Figure.default()
+    sheet = StrengthSheet.default(figure)
+    before = sheet.angles.copy()
+    sheet.set_angle(0, "shoulder_x", "60")
+    figure.set_mass_percentile(95)
+    sheet.set_angle(0, "shoulder_y", "0.5 rad")
+    assert sheet.last_edit > figure.last_edit
+    assert sheet.undo()
+    assert sheet.angles[0, 1] == before[0, 1] and sheet.angles[0, 0] == 60
+    assert figure.last_edit > sheet.last_edit
+    assert figure.undo() and figure.mass_percentile == 50
+    assert sheet.undo() and (sheet.angles == before).all()
+    assert not sheet.undo() and sheet.last_edit == -1

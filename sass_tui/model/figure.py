@@ -7,6 +7,7 @@ display unit the user can switch (cm|in, deg|rad).  No Textual import here.
 from __future__ import annotations
 
 import copy
+import itertools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -22,6 +23,11 @@ FIGURE_TYPES = ("skinny", "polybody")
 STRENGTH_TYPES = ("isometric", "isokinetic", "isotonic")
 HANDEDNESS = ("right", "left")
 GENDERS = ("male", "female")
+
+
+# One sequence for every undoable edit, so that undo can take the newest one
+# whichever object (figure, strength page) holds it.
+EDIT_SEQUENCE = itertools.count()
 
 
 class FigureError(ValueError):
@@ -236,7 +242,7 @@ class Figure:
         """Go back one edit.  False when there is nothing to undo."""
         if not self._history:
             return False
-        snapshot = self._history.pop()
+        _, snapshot = self._history.pop()
         history = self._history
         # Display units are a view setting, not an edit: undo keeps the current ones.
         units = {group: state.unit for group, state in self.groups.items()}
@@ -246,10 +252,16 @@ class Figure:
             self.groups[group].unit = unit
         return True
 
+    @property
+    def last_edit(self) -> int:
+        """Sequence number of the newest undoable edit (-1: none), comparable
+        with other editors' (the strength page's angles)."""
+        return self._history[-1][0] if self._history else -1
+
     def _remember(self) -> None:
         state = {k: copy.deepcopy(v) if k == "groups" else v
                  for k, v in self.__dict__.items() if k != "_history"}
-        self._history.append(state)
+        self._history.append((next(EDIT_SEQUENCE), state))
         del self._history[:-100]
 
     # --- internals -----------------------------------------------------------

@@ -252,7 +252,13 @@ class SassApp(QueryCommands, App):
         self.say(f"{GROUP_TITLES[self.data_group]} now shown in {DISPLAY[state.unit]}.")
 
     def action_undo(self) -> None:
-        if self.figure.undo():
+        """Undo the newest edit, whether of the figure or of a strength angle."""
+        sheet = self.strength_sheet
+        if sheet is not None and sheet.last_edit > self.figure.last_edit:
+            undone = sheet.undo()
+        else:
+            undone = self.figure.undo()
+        if undone:
             self.refresh_screen()
             self.say("Undone.")
         else:

@@ -421,3 +421,25 @@ def test_angles_outside_new_limits_are_marked(drive):
             await pilot.press("s")
             assert outside_cells(page) == ["175"]
     drive(scenario())
+
+
+def test_undo_takes_the_newest_edit_angle_or_figure(drive):
+    async def scenario():
+        app = SassApp(cursor_blink=False)
+        async with app.run_test(size=SIZE) as pilot:
+            await open_strength(pilot)
+            await pilot.press("enter")  # shoulder abduction, shoulder x
+            await paste(pilot, "60")
+            await pilot.press("enter")
+            assert row_line(app, "Shoulder abduction").split()[2] == "60"
+            await edit_global(pilot, "training_level", "2")
+            assert app.figure.training_level == 2
+            await pilot.press("u")  # the newer edit: training level
+            assert app.figure.training_level == 0
+            assert row_line(app, "Shoulder abduction").split()[2] == "60"
+            await pilot.press("u")  # then the angle
+            assert row_line(app, "Shoulder abduction").split()[2] == "30"
+            assert row_value(app, "Shoulder abduction") == REPORT_VALUE
+            await pilot.press("u")
+            assert message(app) == "Nothing to undo."
+    drive(scenario())
