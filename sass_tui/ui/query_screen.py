@@ -568,29 +568,32 @@ class QueryScreen(Screen):
             return
         self._ask_file({}, 0)
 
-    def _ask_file(self, chosen: dict, index: int) -> None:
+    def _ask_file(self, chosen: dict, index: int, problem: str = "") -> None:
+        """Ask for the next file; `problem` (why the last answer was refused)
+        leads the prompt, so the user sees it while answering again."""
         if index == len(INPUT_DB_FILES):
             self._import(chosen)
             return
         key, title = INPUT_DB_FILES[index]
 
+        def again(problem: str) -> None:
+            # After the answer's prompt has closed, not inside its handler.
+            self.call_later(self._ask_file, chosen, index, problem)
+
         def answer(text: str) -> None:
             name = text.strip()
             if not name:
                 if index < 4:  # person and the three groups must all be given
-                    self.complain(f"A file name for {title} is needed.")
-                    self.set_timer(0, lambda: self._ask_file(chosen, index))
+                    again(f"A file name for {title} is needed.")
                     return
                 if index == 4:
                     self._import(chosen)
                     return
-                self.complain(f"{title}: a strength file is needed once Strength Parameter is given.")
-                self.set_timer(0, lambda: self._ask_file(chosen, index))
+                again("A strength file is needed once Strength Parameter is given.")
                 return
             path = Path(name).expanduser()
             if not path.is_file():
-                self.complain(f"{path}: no such file; enter the file name for {title} again.")
-                self.set_timer(0, lambda: self._ask_file(chosen, index))
+                again(f"{path}: no such file.")
                 return
             self._ask_file({**chosen, key: path}, index + 1)
 
@@ -600,8 +603,8 @@ class QueryScreen(Screen):
             else:
                 self.say("Input DB cancelled; the database is unchanged.")
 
-        self.ask(f"Enter File Name for {title}" + (" (ESC: no strength data)" if index == 4 else "")
-                 + ":", answer, on_cancel=cancel)
+        self.ask((f"{problem} " if problem else "") + f"Enter File Name for {title}"
+                 + (" (ESC: no strength data)" if index == 4 else "") + ":", answer, on_cancel=cancel)
 
     def _import(self, chosen: dict) -> None:
         self.running = True

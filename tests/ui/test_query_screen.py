@@ -347,6 +347,12 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
 
             await pilot.press("i")
             assert "Enter File Name for Person" in message(app)
+            await pilot.press("enter")  # nothing typed: asked again, saying why
+            await pilot.pause()
+            assert message(app).startswith("A file name for Person is needed. Enter File Name for Person:")
+            await answer(tmp_path / "missing.db")
+            await pilot.pause()
+            assert message(app).startswith(f"{tmp_path / 'missing.db'}: no such file. Enter File Name for Person:")
             await answer(person)
             assert "Girth" in message(app)
             await answer(bad)
