@@ -240,12 +240,6 @@ def test_fig_includes_strength_unless_told_not_to(tmp_path, capsys):
     assert not (tmp_path / "no.fig").exists()
 
 
-def test_the_strength_cli_does_not_import_textual():
-    code = ("import sys, sass_tui.cli, sass_tui.cli_strength, sass_tui.model.strength; "
-            "sys.exit('textual' in sys.modules)")
-    assert subprocess.run([sys.executable, "-c", code]).returncode == 0
-
-
 def test_angle_edits_undo_in_order_with_figure_edits():
     figure = Figure.default()
     sheet = StrengthSheet.default(figure)
