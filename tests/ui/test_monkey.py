@@ -8,7 +8,6 @@ import random
 import numpy as np
 import pytest
 
-from sass_tui.db.commands import create_default_database
 from sass_tui.model.names import GROUPS
 from sass_tui.ui.app import SassApp
 
@@ -17,9 +16,7 @@ KEYS = [*"njmgspciuwdvxeorbal", "enter", "escape", "up", "down", "left", "right"
 
 
 @pytest.mark.parametrize("seed", [1988, 2026])
-def test_random_keys_never_crash(drive, tmp_path, monkeypatch, seed):
-    db = tmp_path / "sass.db"
-    create_default_database(db)
+def test_random_keys_never_crash(drive, db, tmp_path, monkeypatch, seed):
     monkeypatch.chdir(tmp_path)  # figures and exports typed at random land here
     rnd = random.Random(seed)
 

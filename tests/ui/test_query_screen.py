@@ -3,14 +3,12 @@ individuals (report §12.3-§12.5), driven by key presses and clicks."""
 
 from __future__ import annotations
 
-import shutil
 
 import numpy as np
 import pytest
 from textual import events
 from textual.widgets import Button, OptionList
 
-from sass_tui.db.commands import create_default_database
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect
@@ -25,21 +23,6 @@ from sass_tui.ui.widgets import GlobalPanel
 SIZE = (120, 40)
 SAMPLE = ("gender = male AND girth.right_upper_arm.z > 28 cm "
           "AND strength.elbow_flexion.max > 20 ft-lb")
-
-
-@pytest.fixture(scope="module")
-def default_db(tmp_path_factory):
-    path = tmp_path_factory.mktemp("db") / "sass.db"
-    create_default_database(path)
-    return path
-
-
-@pytest.fixture
-def db(default_db, tmp_path):
-    """A private copy: Input DB and the lists must not leak between tests."""
-    path = tmp_path / "sass.db"
-    shutil.copy(default_db, path)
-    return path
 
 
 def message(app) -> str:

@@ -4,31 +4,13 @@ Update with `pytest tests/ui/test_query_snapshots.py --snapshot-update`."""
 
 from __future__ import annotations
 
-import shutil
 
 import pytest
 
-from sass_tui.db.commands import create_default_database
 from sass_tui.ui.app import SassApp
-from test_query_screen import choose, settle
+from test_query_screen import SAMPLE, choose, settle
 
 SIZE = (100, 37)
-SAMPLE = ("gender = male AND girth.right_upper_arm.z > 28 cm "
-          "AND strength.elbow_flexion.max > 20 ft-lb")
-
-
-@pytest.fixture(scope="module")
-def default_db(tmp_path_factory):
-    path = tmp_path_factory.mktemp("snapdb") / "sass.db"
-    create_default_database(path)
-    return path
-
-
-@pytest.fixture
-def db(default_db, tmp_path):
-    path = tmp_path / "sass.db"
-    shutil.copy(default_db, path)
-    return path
 
 
 async def open_builder(pilot):
