@@ -55,3 +55,31 @@ def test_person_refused_without_statistics_or_with_wrong_shape():
         population.for_person("X", "male", person_groups(Figure.default()))
     with pytest.raises(FigureError, match="shape"):
         Figure.default().for_person("X", "male", {g: np.zeros((2, 3)) for g in GROUPS})
+
+
+def test_files_for_a_person_with_unmeasured_values_take_the_population_values(tmp_path):
+    """Like an ANSUR II soldier: no joint limits at all, no neck in the database."""
+    from sass_tui.model.figfile import read_fig, render_fig, write_fig
+    from sass_tui.model.hanim import export_hanim
+
+    population = Figure.default("male")
+    population.set_group_percentile(JOINT_LIMITS, 95)
+    groups = person_groups(population)
+    groups[JOINT_LIMITS] = np.full_like(groups[JOINT_LIMITS], np.nan)
+    person = population.for_person("SMITH", "male", groups)  # mass and stature unknown
+    values, filled = person.output_values(JOINT_LIMITS)
+    np.testing.assert_array_equal(values, population.groups[JOINT_LIMITS].values)  # 95th, 999 kept
+    assert filled.sum() == np.count_nonzero(~np.isnan(population.groups[JOINT_LIMITS].values))
+    assert np.isnan(person.groups[JOINT_LIMITS].values).all()  # the display still says "unknown"
+
+    text = render_fig(person)
+    assert "nan" not in text.lower()
+    assert ("/* not measured for SMITH, taken from the population at the group percentile: "
+            f"Girth 3, Joint Limits {filled.sum()}; total mass */") in text
+    fig = read_fig(write_fig(person, tmp_path / "smith.fig"))
+    assert fig.variables["right_elbow_y_ulimit"] == (159.0, "deg")
+    assert fig.variables["neckx"] == (12.3 / 2, "cm")  # population 50th girth, halved
+    assert fig.variables["ruparmz"][0] == pytest.approx(36.6 * 1.1, abs=0.005)  # measured
+    assert sum(v for v, u in fig.variables.values() if u == "kg") == pytest.approx(82.2, abs=0.05)
+    export_hanim(person, tmp_path / "smith.x3d")
+    assert "nan" not in (tmp_path / "smith.x3d").read_text().lower()

@@ -15,7 +15,7 @@ from pathlib import Path
 
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.names import (
-    AXES, CENTER_OF_MASS, DEFAULT_SCALE, FIG_PREFIX, FIG_SCALE, GIRTH, JOINT_LIMITS, ROWS,
+    AXES, CENTER_OF_MASS, DEFAULT_SCALE, FIG_PREFIX, FIG_SCALE, GIRTH, GROUP_TITLES, JOINT_LIMITS, ROWS,
     center_of_mass_variable, joint_limit_variable)
 
 ARCHIVES = {"skinny": "skinny.a", "polybody": "polybody.a"}
@@ -40,13 +40,13 @@ class FigFile:
 
 def girth_variables(figure) -> list[tuple[str, float, str]]:
     """Segment scale variables (cm) and flooroffset, in appendix F order."""
-    state = figure.groups[GIRTH]
+    values_by_row, _ = figure.output_values(GIRTH)
     out = []
-    for row, values in zip(ROWS[GIRTH], state.values):
+    for row, values in zip(ROWS[GIRTH], values_by_row):
         scale = FIG_SCALE.get(row.name, DEFAULT_SCALE)
         for axis, value, factor in zip(AXES, values, scale):
             out.append((f"{FIG_PREFIX[row.name]}{axis}", value * factor, "cm"))
-    z = {row.name: values[2] for row, values in zip(ROWS[GIRTH], state.values)}
+    z = {row.name: values[2] for row, values in zip(ROWS[GIRTH], values_by_row)}
     out.append(("flooroffset", z["right_foot"] + z["right_lower_leg"] + z["right_upper_leg"], "cm"))
     return out
 
@@ -54,7 +54,7 @@ def girth_variables(figure) -> list[tuple[str, float, str]]:
 def _axis_variables(figure, group: str, variable_name, unit: str) -> list[tuple[str, float, str]]:
     """One variable per row and axis that has a value (999 = none, left out)."""
     out = []
-    for row, values in zip(ROWS[group], figure.groups[group].values):
+    for row, values in zip(ROWS[group], figure.output_values(group)[0]):
         for axis, value in zip(AXES, values):
             if not math.isnan(value):
                 out.append((variable_name(row.name, axis), value, unit))
@@ -81,9 +81,16 @@ def render_fig(figure, extra_sections: list[tuple[str, list[tuple[str, float, st
         f"/* {who}; {figure.gender}; figure type {figure.figure_type} */",
         f"/* percentiles: girth {groups[GIRTH].percentile:g}, joint limits "
         f"{groups[JOINT_LIMITS].percentile:g}, center of mass {groups[CENTER_OF_MASS].percentile:g}; "
-        f"mass {figure.mass:.2f} kg, stature {figure.stature:.1f} cm */",
-        "",
+        f"mass {figure.output_mass():.2f} kg, stature "
+        f"{'not measured' if math.isnan(figure.stature) else f'{figure.stature:.1f} cm'} */",
     ]
+    filled = {GROUP_TITLES[g]: int(figure.output_values(g)[1].sum())
+              for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)}
+    if any(filled.values()) or math.isnan(figure.mass):
+        counts = ", ".join(f"{what} {n}" for what, n in filled.items() if n)
+        lines.append(f"/* not measured for {who}, taken from the population at the group "
+                     f"percentile: {counts or 'none'}{'; total mass' if math.isnan(figure.mass) else ''} */")
+    lines.append("")
     sections = [
         ("segment dimensions", girth_variables(figure)),
         ("mass variables", [(n, v, "kg") for n, v in figure.segment_masses()]),

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import copy
 import itertools
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -226,7 +227,26 @@ class Figure:
     # --- derived data ----------------------------------------------------
     def segment_masses(self) -> list[tuple[str, float]]:
         """(variable, kg) per appendix K fraction of the total mass."""
-        return [(name, fraction * self.mass) for name, fraction in MASS_FRACTIONS]
+        mass = self.output_mass()
+        return [(name, fraction * mass) for name, fraction in MASS_FRACTIONS]
+
+    def output_values(self, group: str) -> tuple[np.ndarray, np.ndarray]:
+        """A group's values for a body description file or an export, and a
+        mask of the cells filled in: where a person has no value (ANSUR II
+        measures no joint limits, for one) but the population has one, the
+        population's value at the group percentile.  A population figure has
+        nothing to fill.  999 cells (no motion) stay NaN."""
+        state = self.groups[group]
+        population = value_at(state.source.stats(self.gender), state.percentile)
+        filled = np.isnan(state.values) & ~np.isnan(population)
+        return np.where(filled, population, state.values), filled
+
+    def output_mass(self) -> float:
+        """The total mass for output: when a person's is unknown, the
+        population's median."""
+        if math.isnan(self.mass):
+            return self._global_value("mass", 50.0)
+        return self.mass
 
     def value(self, group: str, row_name: str, axis: int) -> float:
         state = self.groups[group]

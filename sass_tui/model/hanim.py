@@ -158,7 +158,7 @@ def build_humanoid(figure) -> Humanoid:
     if missing:
         raise FigureIncompleteError(
             f"cannot export a humanoid: {', '.join(missing)} not loaded for {figure.gender}")
-    if not figure.mass > 0:
+    if not figure.output_mass() > 0:
         raise HAnimError("cannot export a humanoid: the figure has no mass")
     girth = _rows(figure, GIRTH) / 100.0  # cm -> m
     if np.isnan(girth).any():
@@ -173,7 +173,7 @@ def build_humanoid(figure) -> Humanoid:
 
 
 def _rows(figure, group: str) -> np.ndarray:
-    return np.asarray(figure.groups[group].values, dtype=float)
+    return np.asarray(figure.output_values(group)[0], dtype=float)
 
 
 def _joint_centers(dim: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
@@ -240,7 +240,7 @@ def _segments(figure, dim, centers) -> dict[str, Segment]:
     com_values = _rows(figure, CENTER_OF_MASS) / 100.0
     segments: dict[str, Segment] = {}
     for name, row, joint, long_axis, depth_axis, solid in _segment_table():
-        mass = figure.mass * sum(fractions[v] for v in SEGMENT_MASSES[name])
+        mass = figure.output_mass() * sum(fractions[v] for v in SEGMENT_MASSES[name])
         origin = centers[joint]
         width_axis = np.abs(np.cross(long_axis, depth_axis))
         shapes = _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers)
@@ -380,12 +380,20 @@ def _info(figure) -> list[str]:
         f"girthPercentile={groups[GIRTH].percentile:g}",
         f"jointLimitPercentile={groups[JOINT_LIMITS].percentile:g}",
         f"centerOfMassPercentile={groups[CENTER_OF_MASS].percentile:g}",
-        f"mass={figure.mass:.2f} kg (percentile {figure.mass_percentile:.3g})",
-        f"stature={figure.stature:.1f} cm (percentile {figure.stature_percentile:.3g})",
+        _measure("mass", figure.mass, "kg", figure.mass_percentile, 2),
+        _measure("stature", figure.stature, "cm", figure.stature_percentile, 1),
         "generator=sass (Spreadsheet Anthropometry Scaling System)",
         "construction=docs/hanim.md",
     ]
     return info
+
+
+def _measure(name: str, value: float, unit: str, percentile: float, decimals: int) -> str:
+    if math.isnan(value):
+        return f"{name}=not measured"
+    if math.isnan(percentile):
+        return f"{name}={value:.{decimals}f} {unit}"
+    return f"{name}={value:.{decimals}f} {unit} (percentile {percentile:.3g})"
 
 
 # --- rotations ---------------------------------------------------------------

@@ -19,7 +19,7 @@ from textual.widgets import Button, Footer
 from sass_tui.model.figfile import FigureIncompleteError, default_fig_name, write_fig
 from sass_tui.model.figure import Figure, FigureError
 from sass_tui.model.names import (
-    AXES, CENTER_OF_MASS, GIRTH, GROUP_TITLES, JOINT_LIMITS, STRENGTH)
+    AXES, CENTER_OF_MASS, GIRTH, GROUP_TITLES, GROUPS, JOINT_LIMITS, STRENGTH)
 from sass_tui.model.percentile import PercentileError
 from sass_tui.model.popfile import PopulationFileError, read_population_file
 from sass_tui.model.strength import (
@@ -437,7 +437,10 @@ class SassApp(QueryCommands, App):
         except OSError as exc:
             self.call_from_thread(self.complain, f"{path}: cannot write: {exc.strerror or exc}")
             return
-        self.call_from_thread(self.say, f"Wrote {path}.")
+        filled = sum(int(self.figure.output_values(g)[1].sum()) for g in GROUPS)
+        note = (f" {filled} values not measured for {self.figure.person} came from the population."
+                if filled else "")
+        self.call_from_thread(self.say, f"Wrote {path}.{note}")
 
     # --- Export HAnim -----------------------------------------------------------------
     def action_export_hanim(self) -> None:
