@@ -46,23 +46,31 @@ def main() -> None:
             imports.append(time.perf_counter() - start)
             if k < 2:
                 conn.close()
-        print(f"import both ANSUR II files (6,068 people): median {statistics.median(imports):.2f} s "
-              f"(runs {', '.join(f'{t:.2f}' for t in imports)})")
+        print(
+            f"import both ANSUR II files (6,068 people): median {statistics.median(imports):.2f} s "
+            f"(runs {', '.join(f'{t:.2f}' for t in imports)})"
+        )
         for text in QUERIES:
+
             def run():
                 q = run_query(conn, text)
                 q.count()
                 q.page(0, 25)
+
             times = timed(run, 20)
-            print(f"query count + first page, {statistics.median(times) * 1000:.1f} ms median: {text}")
+            print(
+                f"query count + first page, {statistics.median(times) * 1000:.1f} ms median: {text}"
+            )
         ids = [r[0] for r in conn.execute("SELECT id_num FROM person ORDER BY random() LIMIT 200")]
         times = []
         for pid in ids:
             start = time.perf_counter()
             fetch_individual(conn, pid)
             times.append(time.perf_counter() - start)
-        print(f"fetch one individual: median {statistics.median(times) * 1000:.2f} ms, "
-              f"max {max(times) * 1000:.2f} ms (200 people)")
+        print(
+            f"fetch one individual: median {statistics.median(times) * 1000:.2f} ms, "
+            f"max {max(times) * 1000:.2f} ms (200 people)"
+        )
         conn.close()
 
 

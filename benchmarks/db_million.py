@@ -27,8 +27,9 @@ from sass_tui.model.names import GIRTH, GLOBAL
 from sass_tui.model.percentile import Z95
 from sass_tui.model.popfile import read_population_file
 
-SAMPLE = ("gender = male AND girth.right_upper_arm.z > 28 cm "
-          "AND strength.elbow_flexion.max > 20 ft-lb")
+SAMPLE = (
+    "gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb"
+)
 CHUNK = 50_000
 
 
@@ -64,13 +65,22 @@ def build(conn, people: int, rng: np.random.Generator) -> None:
             elbow = np.where(male, 65.0, 39.0) * np.exp(0.25 * rng.standard_normal(n))
             ids = np.arange(start + 1, start + n + 1)
             batch = PeopleBatch(
-                id_num=ids, name=[f"GEN_{i}" for i in ids.tolist()], gender=gender.tolist(),
-                stature=stature, mass=mass, handedness=["right"] * n,
-                age=rng.integers(19, 60, n).astype(float), source=["generated benchmark"] * n,
-                source_key=[None] * n, girth=girth,
+                id_num=ids,
+                name=[f"GEN_{i}" for i in ids.tolist()],
+                gender=gender.tolist(),
+                stature=stature,
+                mass=mass,
+                handedness=["right"] * n,
+                age=rng.integers(19, 60, n).astype(float),
+                source=["generated benchmark"] * n,
+                source_key=[None] * n,
+                girth=girth,
                 strength_par=[(i, 1, "right", "isometric", 0.0, 0.0, 0.0) for i in range(n)],
-                elbow=[(i, 1, 90.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, float(v), float(v) * 0.7)
-                       for i, v in enumerate(elbow.tolist())])
+                elbow=[
+                    (i, 1, 90.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, float(v), float(v) * 0.7)
+                    for i, v in enumerate(elbow.tolist())
+                ],
+            )
             store_people(conn, batch, replace=False)
             print(f"\rbuilt {start + n:,} people", end="", file=sys.stderr, flush=True)
     print(file=sys.stderr)
@@ -85,8 +95,10 @@ def main() -> None:
         conn.execute("PRAGMA synchronous = OFF")
         start = time.perf_counter()
         build(conn, people, np.random.default_rng(1988))
-        print(f"build {people:,} people: {time.perf_counter() - start:.1f} s, "
-              f"{path.stat().st_size / 1e9:.2f} GB")
+        print(
+            f"build {people:,} people: {time.perf_counter() - start:.1f} s, "
+            f"{path.stat().st_size / 1e9:.2f} GB"
+        )
         conn.close()
         conn = connect(path)
         counts, pages, firsts = [], [], []
@@ -102,17 +114,21 @@ def main() -> None:
             counts.append(t1 - t0)
             firsts.append(t2 - t1)
             pages.append(t3 - t2)
-        print(f"sample query on {people:,}: {n:,} people; count median {statistics.median(counts):.3f} s "
-              f"(runs {', '.join(f'{t:.3f}' for t in counts)}); first page "
-              f"{statistics.median(firsts) * 1000:.1f} ms; keyset page deep in the list "
-              f"{statistics.median(pages) * 1000:.1f} ms")
+        print(
+            f"sample query on {people:,}: {n:,} people; count median {statistics.median(counts):.3f} s "
+            f"(runs {', '.join(f'{t:.3f}' for t in counts)}); first page "
+            f"{statistics.median(firsts) * 1000:.1f} ms; keyset page deep in the list "
+            f"{statistics.median(pages) * 1000:.1f} ms"
+        )
         times = []
         for pid in np.random.default_rng(1).integers(1, people + 1, 200).tolist():
             t0 = time.perf_counter()
             fetch_individual(conn, pid)
             times.append(time.perf_counter() - t0)
-        print(f"fetch one individual: median {statistics.median(times) * 1000:.2f} ms, "
-              f"max {max(times) * 1000:.2f} ms (200 people)")
+        print(
+            f"fetch one individual: median {statistics.median(times) * 1000:.2f} ms, "
+            f"max {max(times) * 1000:.2f} ms (200 people)"
+        )
         conn.close()
 
 

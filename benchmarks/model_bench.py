@@ -50,21 +50,34 @@ def main() -> None:
     out = Path(tempfile.mkdtemp()) / "bench.fig"
     rows = [
         ("percentile interpolation, all 3 groups (86 rows x 3 axes)", best_of(rescale_values)),
-        ("Figure.set_group_percentile for all 3 groups (with undo record)", best_of(rescale_figure)),
+        (
+            "Figure.set_group_percentile for all 3 groups (with undo record)",
+            best_of(rescale_figure),
+        ),
         ("render a .fig (254 variables)", best_of(lambda: render_fig(figure), number=100)),
-        ("write a .fig atomically (fsync included)", best_of(lambda: write_fig(figure, out), number=20)),
+        (
+            "write a .fig atomically (fsync included)",
+            best_of(lambda: write_fig(figure, out), number=20),
+        ),
     ]
     runs = []
     for _ in range(7):
         start = time.perf_counter()
-        subprocess.run([sys.executable, "-m", "sass_tui", "fig", "-o", str(out)], check=True,
-                       capture_output=True)
+        subprocess.run(
+            [sys.executable, "-m", "sass_tui", "fig", "-o", str(out)],
+            check=True,
+            capture_output=True,
+        )
         runs.append(time.perf_counter() - start)
-    print(f"machine: {platform.machine()}, {platform.python_implementation()} {platform.python_version()}")
+    print(
+        f"machine: {platform.machine()}, {platform.python_implementation()} {platform.python_version()}"
+    )
     for label, seconds in rows:
         print(f"{label:66s} {seconds * 1e3:8.3f} ms")
-    print(f"{'sass fig end to end (new process; median of 7, best)':66s} "
-          f"{statistics.median(runs) * 1e3:8.1f} ms  {min(runs) * 1e3:6.1f} ms")
+    print(
+        f"{'sass fig end to end (new process; median of 7, best)':66s} "
+        f"{statistics.median(runs) * 1e3:8.1f} ms  {min(runs) * 1e3:6.1f} ms"
+    )
 
 
 if __name__ == "__main__":

@@ -21,7 +21,6 @@ import time
 from pathlib import Path
 
 import numpy as np
-
 import tui_latency
 from db_million import build
 from tui_latency import SESSION, screen, tmux, wait_for
@@ -31,12 +30,22 @@ from sass_tui.db.schema import connect
 # (expected pop-up title, how many Down presses to the item) of figure 13's sequence;
 # None = type the constraint value instead.
 SEQUENCE = (
-    ("Query Menu", 0, None), ("Global Information", 0, None), ("Gender", 0, None),
-    ("Conjunction Menu", 0, None), ("Query Menu", 1, None), ("Anthropometric Group", 0, None),
-    ("Girth Menu", 4, None), ("Axis Menu", 2, None), ("Relational Operation Menu", 1, None),
-    ("Type in the constraint value:", None, "28 cm"), ("Conjunction Menu", 0, None),
-    ("Query Menu", 1, None), ("Anthropometric Group", 3, None), ("Strength Menu", 6, None),
-    ("Relational Operation Menu", 1, None), ("Type in the constraint value:", None, "20 ft-lb"),
+    ("Query Menu", 0, None),
+    ("Global Information", 0, None),
+    ("Gender", 0, None),
+    ("Conjunction Menu", 0, None),
+    ("Query Menu", 1, None),
+    ("Anthropometric Group", 0, None),
+    ("Girth Menu", 4, None),
+    ("Axis Menu", 2, None),
+    ("Relational Operation Menu", 1, None),
+    ("Type in the constraint value:", None, "28 cm"),
+    ("Conjunction Menu", 0, None),
+    ("Query Menu", 1, None),
+    ("Anthropometric Group", 3, None),
+    ("Strength Menu", 6, None),
+    ("Relational Operation Menu", 1, None),
+    ("Type in the constraint value:", None, "20 ft-lb"),
     ("Conjunction Menu", 2, None),  # Done
 )
 SIZE = ("100", "37")
@@ -71,16 +80,23 @@ def one_run(command: list[str]) -> dict[str, object]:
         send("b")
         t0 = time.perf_counter()
         try:
-            wait_for(lambda text: "Query DB (d) first" in text or
-                     "Query execution is complete." in text, timeout=5)
+            wait_for(
+                lambda text: "Query DB (d) first" in text or "Query execution is complete." in text,
+                timeout=5,
+            )
         except TimeoutError:
             break
         if "Query execution is complete." in screen():
             break
         answered.append(time.perf_counter() - t0)
         send("n")
-        wait_for(lambda text: "Query on database, please wait..." in text or
-                 "Query execution is complete." in text, timeout=5)
+        wait_for(
+            lambda text: (
+                "Query on database, please wait..." in text
+                or "Query execution is complete." in text
+            ),
+            timeout=5,
+        )
     wait_for(lambda text: "Query execution is complete." in text, timeout=120)
     run_time = time.perf_counter() - start
     pages = []
@@ -123,15 +139,21 @@ def main() -> int:
     runs = [r["run"] for r in results]
     answered = [t for r in results for t in r["answered"]]
     pages = [t for r in results for t in r["pages"]]
-    print(f"Done to 'Query execution is complete.': median {statistics.median(runs):.2f} s "
-          f"(runs {', '.join(f'{t:.2f}' for t in runs)})")
+    print(
+        f"Done to 'Query execution is complete.': median {statistics.median(runs):.2f} s "
+        f"(runs {', '.join(f'{t:.2f}' for t in runs)})"
+    )
     if answered:
-        print(f"keys answered while the query ran: {len(answered)}, median "
-              f"{statistics.median(answered) * 1000:.0f} ms, max {max(answered) * 1000:.0f} ms")
+        print(
+            f"keys answered while the query ran: {len(answered)}, median "
+            f"{statistics.median(answered) * 1000:.0f} ms, max {max(answered) * 1000:.0f} ms"
+        )
     else:
         print("no key answered while the query ran (it finished first)")
-    print(f"Next Page on the result: median {statistics.median(pages) * 1000:.0f} ms, "
-          f"max {max(pages) * 1000:.0f} ms ({len(pages)} pages)")
+    print(
+        f"Next Page on the result: median {statistics.median(pages) * 1000:.0f} ms, "
+        f"max {max(pages) * 1000:.0f} ms ({len(pages)} pages)"
+    )
     print(results[-1]["screen"])
     return 0
 

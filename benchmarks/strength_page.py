@@ -29,8 +29,15 @@ print(time.perf_counter() - start)
 def cold_load_ms(runs: int) -> list[float]:
     """Each in a fresh interpreter: the first least-squares fit pays numpy's
     linear-algebra start-up, as the app's first start does."""
-    return [float(subprocess.run([sys.executable, "-c", COLD_LOAD], capture_output=True,
-                                 text=True, check=True).stdout) * 1000 for _ in range(runs)]
+    return [
+        float(
+            subprocess.run(
+                [sys.executable, "-c", COLD_LOAD], capture_output=True, text=True, check=True
+            ).stdout
+        )
+        * 1000
+        for _ in range(runs)
+    ]
 
 
 def recompute_ms(runs: int) -> list[float]:
@@ -83,15 +90,20 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=7)
     args = parser.parse_args()
-    print(f"start-up load + first page, fresh process ({args.runs} runs): "
-          f"{summary(cold_load_ms(args.runs))}")
+    print(
+        f"start-up load + first page, fresh process ({args.runs} runs): "
+        f"{summary(cold_load_ms(args.runs))}"
+    )
     print(f"set_angle + rows() ({args.runs * 100} edits): {summary(recompute_ms(args.runs))}")
     baseline, show, edit = asyncio.run(pilot_ms(args.runs))
-    print(f"Pilot: 'j' to the joint-limits page, for comparison ({args.runs} runs): "
-          f"{summary(baseline)}")
+    print(
+        f"Pilot: 'j' to the joint-limits page, for comparison ({args.runs} runs): "
+        f"{summary(baseline)}"
+    )
     print(f"Pilot: 's' to the page drawn ({args.runs} runs): {summary(show)}")
-    print(f"Pilot: typed angle '45' + Enter to the row recomputed ({args.runs} runs): "
-          f"{summary(edit)}")
+    print(
+        f"Pilot: typed angle '45' + Enter to the row recomputed ({args.runs} runs): {summary(edit)}"
+    )
     return 0
 
 

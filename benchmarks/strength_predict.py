@@ -40,17 +40,25 @@ def main() -> None:
     motions = np.arange(len(MOTIONS))
     batch_best, batch_median = best_of(lambda: model.predict_median(motions, sheet.angles))
     print(f"rows per page: {len(MOTIONS)}")
-    print(f"page, all predicted (values()): best {predicted_best * 1e6:.1f} us, "
-          f"median {predicted_median * 1e6:.1f} us")
-    print(f"page, all stored (values()):    best {stored_best * 1e6:.1f} us, "
-          f"median {stored_median * 1e6:.1f} us")
-    print(f"prediction equation alone:      best {batch_best * 1e6:.1f} us, "
-          f"median {batch_median * 1e6:.1f} us")
+    print(
+        f"page, all predicted (values()): best {predicted_best * 1e6:.1f} us, "
+        f"median {predicted_median * 1e6:.1f} us"
+    )
+    print(
+        f"page, all stored (values()):    best {stored_best * 1e6:.1f} us, "
+        f"median {stored_median * 1e6:.1f} us"
+    )
+    print(
+        f"prediction equation alone:      best {batch_best * 1e6:.1f} us, "
+        f"median {batch_median * 1e6:.1f} us"
+    )
     print("\nfit error (relative, over the stored configurations):")
     for gender, side, fit in fit_summary(data):
-        print(f"  {gender:6} {side:5} {fit.motion:26} n={fit.points}  "
-              f"rms {fit.rms_percent:5.1f} %  max {fit.max_percent:5.1f} %  "
-              f"varied {', '.join(fit.varied)}")
+        print(
+            f"  {gender:6} {side:5} {fit.motion:26} n={fit.points}  "
+            f"rms {fit.rms_percent:5.1f} %  max {fit.max_percent:5.1f} %  "
+            f"varied {', '.join(fit.varied)}"
+        )
 
 
 if __name__ == "__main__":

@@ -46,9 +46,18 @@ def wait_for(predicate, timeout: float = 10.0) -> float:
 def full_layout(text: str) -> bool:
     """Every section of report figure 4 is drawn: group line, global data,
     command menu, data rows, message line and footer."""
-    return all(part in text for part in (
-        "Strength (s)", "Population", "Fatigue", "Create Figure",
-        "Bottom Head", "Press left-mouse to select items.", "q Quit"))
+    return all(
+        part in text
+        for part in (
+            "Strength (s)",
+            "Population",
+            "Fatigue",
+            "Create Figure",
+            "Bottom Head",
+            "Press left-mouse to select items.",
+            "q Quit",
+        )
+    )
 
 
 def main() -> int:
@@ -81,19 +90,27 @@ def main() -> int:
                 page_keys.append(wait_for(lambda text: expected in text))
                 unit = " rad " if i % 2 == 0 else " deg "
                 tmux("send-keys", "-t", SESSION, "c")
-                unit_keys.append(wait_for(
-                    lambda text: unit in next(l for l in text.splitlines() if "page " in l)))
+                unit_keys.append(
+                    wait_for(
+                        lambda text: (
+                            unit in next(line for line in text.splitlines() if "page " in line)
+                        )
+                    )
+                )
         finally:
             subprocess.run(["tmux", "-L", SOCKET, "kill-server"], capture_output=True)
             time.sleep(0.2)  # let the server go before the next run starts one
 
     def line(name, values):
         ms = [v * 1000 for v in values]
-        return (f"{name:<34} n={len(ms):<3} min {min(ms):7.1f} ms  median "
-                f"{statistics.median(ms):7.1f} ms  max {max(ms):7.1f} ms")
+        return (
+            f"{name:<34} n={len(ms):<3} min {min(ms):7.1f} ms  median "
+            f"{statistics.median(ms):7.1f} ms  max {max(ms):7.1f} ms"
+        )
 
-    print(f"sass in tmux {args.size}; command {' '.join(command)}; poll every "
-          f"{POLL_S * 1000:.0f} ms")
+    print(
+        f"sass in tmux {args.size}; command {' '.join(command)}; poll every {POLL_S * 1000:.0f} ms"
+    )
     print(line("cold start to full layout", starts))
     print(line("key n/p to new page on screen", page_keys))
     print(line("key c to converted unit on screen", unit_keys))

@@ -36,9 +36,24 @@ def main(out: Path = Path(__file__).resolve().parents[1] / "docs" / "hanim-figur
     with tempfile.TemporaryDirectory() as tmp:
         scene = Path(tmp) / "row.x3d"
         scene.write_text(text, encoding="utf-8")
-        subprocess.run(["xvfb-run", "-a", "view3dscene", str(scene), "--geometry", "900x700",
-                        "--anti-alias", "4", "--screenshot", "0", str(out)],
-                       check=True, cwd=tmp, capture_output=True)
+        subprocess.run(
+            [
+                "xvfb-run",
+                "-a",
+                "view3dscene",
+                str(scene),
+                "--geometry",
+                "900x700",
+                "--anti-alias",
+                "4",
+                "--screenshot",
+                "0",
+                str(out),
+            ],
+            check=True,
+            cwd=tmp,
+            capture_output=True,
+        )
     print(f"wrote {out}")
     return 0
 

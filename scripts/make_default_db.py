@@ -22,7 +22,12 @@ import numpy as np
 
 from sass_tui.db.flatfile import write_flat_files
 from sass_tui.db.schema import (
-    ELBOW_MOTIONS, GIRTH_MASS_FRACTIONS, SHOULDER_MOTIONS, WRIST_MOTIONS, PeopleBatch)
+    ELBOW_MOTIONS,
+    GIRTH_MASS_FRACTIONS,
+    SHOULDER_MOTIONS,
+    WRIST_MOTIONS,
+    PeopleBatch,
+)
 from sass_tui.model import datasets
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
 from sass_tui.model.percentile import value_at
@@ -33,15 +38,26 @@ ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "datasets" / "db"
 SEED = 1988
 PEOPLE_PER_GENDER = 100
-SOURCE = ("SYNTHETIC (not a real person): drawn by scripts/make_default_db.py, seed 1988, "
-          "from the datasets/*.dat population statistics")
+SOURCE = (
+    "SYNTHETIC (not a real person): drawn by scripts/make_default_db.py, seed 1988, "
+    "from the datasets/*.dat population statistics"
+)
 # Assumed isometric medians of a 50th-percentile man, N-m; women 0.6 of these.
 STRENGTH_MEDIAN_NM = {
-    "shoulder_abduction": 55.0, "shoulder_adduction": 70.0, "shoulder_flexion": 60.0,
-    "shoulder_extension": 75.0, "shoulder_medial_rotation": 45.0, "shoulder_lateral_rotation": 35.0,
-    "elbow_flexion": 65.0, "elbow_extension": 45.0, "forearm_pronation": 8.0,
-    "forearm_supination": 10.0, "wrist_flexion": 12.0, "wrist_extension": 8.0,
-    "wrist_radial_deviation": 11.0, "wrist_ulnar_deviation": 10.0,
+    "shoulder_abduction": 55.0,
+    "shoulder_adduction": 70.0,
+    "shoulder_flexion": 60.0,
+    "shoulder_extension": 75.0,
+    "shoulder_medial_rotation": 45.0,
+    "shoulder_lateral_rotation": 35.0,
+    "elbow_flexion": 65.0,
+    "elbow_extension": 45.0,
+    "forearm_pronation": 8.0,
+    "forearm_supination": 10.0,
+    "wrist_flexion": 12.0,
+    "wrist_extension": 8.0,
+    "wrist_radial_deviation": 11.0,
+    "wrist_ulnar_deviation": 10.0,
 }
 FEMALE_STRENGTH_FACTOR = 0.6
 STRENGTH_SPREAD = 0.25  # log-normal sigma
@@ -53,8 +69,10 @@ def _percentiles(z: np.ndarray) -> np.ndarray:
 
 
 def generate(rng: np.random.Generator) -> PeopleBatch:
-    stats = {g: read_population_file(datasets.path(datasets.FILES[g]), g)
-             for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)}
+    stats = {
+        g: read_population_file(datasets.path(datasets.FILES[g]), g)
+        for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)
+    }
     global_stats = read_population_file(datasets.path("global.dat"), GLOBAL)
     parts = []
     next_id = 1
@@ -78,22 +96,33 @@ def generate(rng: np.random.Generator) -> PeopleBatch:
         ids = np.arange(next_id, next_id + n)
         letter = gender[0].upper()
         batch = PeopleBatch(
-            id_num=ids, name=[f"SYNTH_{letter}_{k + 1:03d}" for k in range(n)],
-            gender=[gender] * n, stature=np.round(stature, 1), mass=np.round(mass, 1),
-            handedness=hand.tolist(), age=rng.integers(19, 46, n).astype(float),
-            source=[SOURCE] * n, source_key=[None] * n,
-            girth=np.round(girth, 2), joint_limits=np.round(group(JOINT_LIMITS), 2),
-            center_of_mass=np.round(group(CENTER_OF_MASS), 2))
+            id_num=ids,
+            name=[f"SYNTH_{letter}_{k + 1:03d}" for k in range(n)],
+            gender=[gender] * n,
+            stature=np.round(stature, 1),
+            mass=np.round(mass, 1),
+            handedness=hand.tolist(),
+            age=rng.integers(19, 46, n).astype(float),
+            source=[SOURCE] * n,
+            source_key=[None] * n,
+            girth=np.round(girth, 2),
+            joint_limits=np.round(group(JOINT_LIMITS), 2),
+            center_of_mass=np.round(group(CENTER_OF_MASS), 2),
+        )
         _strength(batch, rng, mass / global_stats.stats(gender)[1, 0, 1], gender)
         parts.append(batch)
         next_id += n
     return _concat(parts)
 
 
-def _strength(batch: PeopleBatch, rng: np.random.Generator, mass_ratio: np.ndarray, gender: str) -> None:
+def _strength(
+    batch: PeopleBatch, rng: np.random.Generator, mass_ratio: np.ndarray, gender: str
+) -> None:
     factor = FEMALE_STRENGTH_FACTOR if gender == "female" else 1.0
     for i in range(len(batch)):
-        person = factor * mass_ratio[i] ** (2 / 3) * math.exp(STRENGTH_SPREAD * rng.standard_normal())
+        person = (
+            factor * mass_ratio[i] ** (2 / 3) * math.exp(STRENGTH_SPREAD * rng.standard_normal())
+        )
         experiments = [(1, "right", "isometric", 0.0)]
         if i % 3 == 0:
             experiments.append((2, "right", "isokinetic", 60.0))
@@ -107,8 +136,21 @@ def _strength(batch: PeopleBatch, rng: np.random.Generator, mass_ratio: np.ndarr
             batch.strength_par.append((i, exp, side, kind, speed, 0.0, 0.0))
             for axis, (pos, neg) in SHOULDER_MOTIONS.items():
                 batch.shoulder.append((i, exp, 30.0, 45.0, 0.0, 90.0, axis, value(pos), value(neg)))
-            batch.elbow.append((i, exp, 90.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-                                value(ELBOW_MOTIONS[0]), value(ELBOW_MOTIONS[1])))
+            batch.elbow.append(
+                (
+                    i,
+                    exp,
+                    90.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                    value(ELBOW_MOTIONS[0]),
+                    value(ELBOW_MOTIONS[1]),
+                )
+            )
             for axis, (pos, neg) in WRIST_MOTIONS.items():
                 batch.wrist.append((i, exp, 0.0, 0.0, 0.0, 90.0, axis, value(pos), value(neg)))
 
@@ -116,15 +158,18 @@ def _strength(batch: PeopleBatch, rng: np.random.Generator, mass_ratio: np.ndarr
 def _concat(parts: list[PeopleBatch]) -> PeopleBatch:
     out = PeopleBatch(
         id_num=np.concatenate([p.id_num for p in parts]),
-        name=sum((p.name for p in parts), []), gender=sum((p.gender for p in parts), []),
+        name=sum((p.name for p in parts), []),
+        gender=sum((p.gender for p in parts), []),
         stature=np.concatenate([p.stature for p in parts]),
         mass=np.concatenate([p.mass for p in parts]),
         handedness=sum((p.handedness for p in parts), []),
-        age=np.concatenate([p.age for p in parts]), source=sum((p.source for p in parts), []),
+        age=np.concatenate([p.age for p in parts]),
+        source=sum((p.source for p in parts), []),
         source_key=sum((p.source_key for p in parts), []),
         girth=np.concatenate([p.girth for p in parts]),
         joint_limits=np.concatenate([p.joint_limits for p in parts]),
-        center_of_mass=np.concatenate([p.center_of_mass for p in parts]))
+        center_of_mass=np.concatenate([p.center_of_mass for p in parts]),
+    )
     offset = 0
     for p in parts:
         for key in ("strength_par", "shoulder", "elbow", "wrist"):

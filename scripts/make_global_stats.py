@@ -36,7 +36,10 @@ def main() -> None:
         "C percentiles computed by scripts/make_global_stats.py; the NASA-STD-3000 tables",
         "C could not be checked (docs/data-sources.md).",
     ]
-    for gender, fname in (("MALE", "ANSUR_II_MALE_Public.csv"), ("FEMALE", "ANSUR_II_FEMALE_Public.csv")):
+    for gender, fname in (
+        ("MALE", "ANSUR_II_MALE_Public.csv"),
+        ("FEMALE", "ANSUR_II_FEMALE_Public.csv"),
+    ):
         stature = np.percentile(column(ANSUR / fname, "stature"), [5, 50, 95]) / 10.0
         mass = np.percentile(column(ANSUR / fname, "weightkg"), [5, 50, 95]) / 10.0
         if gender == "MALE":

@@ -36,13 +36,26 @@ N_M_PER_FT_LB = 1.3558179483314004
 # Joint-angle columns of figure 8: shoulder x y z, elbow y, wrist x y z (deg).
 SHOULDER_BASE = (0.0, 0.0, 0.0, 90.0, 0.0, 0.0, 0.0)
 ABDUCTION_BASE = (30.0, 45.0, 0.0, 90.0, 0.0, 0.0, 0.0)
-COLUMN = {"shoulder_x": 0, "shoulder_y": 1, "shoulder_z": 2, "elbow_y": 3,
-          "wrist_x": 4, "wrist_y": 5, "wrist_z": 6}
+COLUMN = {
+    "shoulder_x": 0,
+    "shoulder_y": 1,
+    "shoulder_z": 2,
+    "elbow_y": 3,
+    "wrist_x": 4,
+    "wrist_y": 5,
+    "wrist_z": 6,
+}
 # Male 50th percentile joint ranges (datasets/jntlmt.dat), less 5 deg a side,
 # so that every stored configuration is reachable by the default figure.
-RANGE = {"shoulder_x": (-43.0, 175.0), "shoulder_y": (-56.0, 182.0),
-         "shoulder_z": (-103.0, 66.0), "elbow_y": (5.0, 144.0),
-         "wrist_x": (-28.0, 21.0), "wrist_y": (-54.0, 73.0), "wrist_z": (-99.0, 92.0)}
+RANGE = {
+    "shoulder_x": (-43.0, 175.0),
+    "shoulder_y": (-56.0, 182.0),
+    "shoulder_z": (-103.0, 66.0),
+    "elbow_y": (5.0, 144.0),
+    "wrist_x": (-28.0, 21.0),
+    "wrist_y": (-54.0, 73.0),
+    "wrist_z": (-99.0, 92.0),
+}
 
 # motion, varied column, Millard peak N·m, angle of peak (rad), width (rad), joint
 MILLARD = [
@@ -120,9 +133,13 @@ def render() -> str:
         "C dominant limb (report 12.2.4); the left limb is scaled from it.",
     ]
     for gender in ("male", "female"):
-        lines += ["C", f"G {gender.upper()}", "L RIGHT",
-                  "C  Shoulder Angle         Elbow   Wrist Angle           Strength",
-                  "C     x      y      z       y      x      y      z     Value      %  comment"]
+        lines += [
+            "C",
+            f"G {gender.upper()}",
+            "L RIGHT",
+            "C  Shoulder Angle         Elbow   Wrist Angle           Strength",
+            "C     x      y      z       y      x      y      z     Value      %  comment",
+        ]
         for angles, value, percentile, comment in rows_for(gender):
             numbers = " ".join(f"{a:6.1f}" for a in angles[:3])
             numbers += f"  {angles[3]:6.1f}  " + " ".join(f"{a:6.1f}" for a in angles[4:])

@@ -6,16 +6,17 @@ import re
 
 import numpy as np
 import pytest
+from _paths import DATASETS
 
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 from sass_tui.model.popfile import read_population_file
 
-from _paths import DATASETS
-
 ROW = re.compile(r"^\s*(-?[\d.]+(?:[,\s]+-?[\d.]+){8})[,\s]*/\*(.*?)\*/")
 
 
-def appendix_rows(lines: list[str], start_heading: str, stop_heading: str) -> list[tuple[list[float], str]]:
+def appendix_rows(
+    lines: list[str], start_heading: str, stop_heading: str
+) -> list[tuple[list[float], str]]:
     """Rows of 9 numbers between two headings of the report (the appendix body)."""
     start = next(i for i, ln in enumerate(lines) if ln.strip() == start_heading)
     stop = next(i for i, ln in enumerate(lines) if i > start and ln.strip() == stop_heading)
@@ -74,8 +75,10 @@ def test_center_of_mass_matches_appendix_l2(report_lines):
     assert shipped["female"] == [r[0] for r in rows[21:]]
 
 
-@pytest.mark.parametrize("name,group", [("girth.dat", GIRTH), ("jntlmt.dat", JOINT_LIMITS),
-                                        ("cmass.dat", CENTER_OF_MASS)])
+@pytest.mark.parametrize(
+    "name,group",
+    [("girth.dat", GIRTH), ("jntlmt.dat", JOINT_LIMITS), ("cmass.dat", CENTER_OF_MASS)],
+)
 def test_reader_holds_every_number(name, group):
     data = read_population_file(DATASETS / name, group)
     shipped = file_rows(name)

@@ -14,7 +14,11 @@ ARM = row_index(GIRTH, "right_upper_arm")
 
 def test_defaults():
     figure = Figure.default()
-    assert (figure.gender, figure.figure_type, figure.strength_type) == ("male", "skinny", "isometric")
+    assert (figure.gender, figure.figure_type, figure.strength_type) == (
+        "male",
+        "skinny",
+        "isometric",
+    )
     assert figure.population == "NASA Crewmember Trainees"
     assert all(figure.groups[g].percentile == 50 for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS))
     assert figure.groups[GIRTH].values[ARM, 2] == 36.6

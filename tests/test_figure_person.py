@@ -20,14 +20,23 @@ def test_person_values_percentiles_and_population_untouched():
     population = Figure.default("male")
     before = {g: population.groups[g].values.copy() for g in GROUPS}
     groups = person_groups(population)
-    person = population.for_person("SMITH", "male", groups, mass=90.0, stature=185.0,
-                                   handedness="left", strength_type="isokinetic")
+    person = population.for_person(
+        "SMITH",
+        "male",
+        groups,
+        mass=90.0,
+        stature=185.0,
+        handedness="left",
+        strength_type="isokinetic",
+    )
     assert person.person == "SMITH" and person.population == population.population
     for group in GROUPS:
         np.testing.assert_array_equal(person.groups[group].values, groups[group])
         stats = population.groups[group].source.stats("male")
-        np.testing.assert_allclose(person.groups[group].percentiles,
-                                   percentile_of(stats, groups[group]).reshape(groups[group].shape))
+        np.testing.assert_allclose(
+            person.groups[group].percentiles,
+            percentile_of(stats, groups[group]).reshape(groups[group].shape),
+        )
         np.testing.assert_array_equal(population.groups[group].values, before[group])
     assert np.isnan(person.groups[GIRTH].values[row_index(GIRTH, "neck")]).all()
     assert person.mass == 90.0 and person.mass_percentile > 50
@@ -45,7 +54,8 @@ def test_person_is_editable_like_population_data():
     person.set_cell_percentile(JOINT_LIMITS, 0, 0, 50.0)
     assert person.undo() and person.undo()
     assert person.groups[GIRTH].values[arm, 2] == pytest.approx(
-        population.groups[GIRTH].values[arm, 2] * 0.95)
+        population.groups[GIRTH].values[arm, 2] * 0.95
+    )
 
 
 def test_person_refused_without_statistics_or_with_wrong_shape():
@@ -74,8 +84,10 @@ def test_files_for_a_person_with_unmeasured_values_take_the_population_values(tm
 
     text = render_fig(person)
     assert "nan" not in text.lower()
-    assert ("/* not measured for SMITH, taken from the population at the group percentile: "
-            f"Girth 3, Joint Limits {filled.sum()}; total mass */") in text
+    assert (
+        "/* not measured for SMITH, taken from the population at the group percentile: "
+        f"Girth 3, Joint Limits {filled.sum()}; total mass */"
+    ) in text
     fig = read_fig(write_fig(person, tmp_path / "smith.fig"))
     assert fig.variables["right_elbow_y_ulimit"] == (159.0, "deg")
     assert fig.variables["neckx"] == (12.3 / 2, "cm")  # population 50th girth, halved

@@ -15,24 +15,31 @@ import pytest
 from sass_tui.cli import main
 from sass_tui.model.figfile import FigureIncompleteError
 from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import LOA1, export_hanim, rotation_matrix
+from sass_tui.model.hanim import export_hanim, rotation_matrix
 from sass_tui.model.names import JOINT_LIMITS, MASS_FRACTIONS, row_index
 
 # ISO/IEC 19775-1 (X3D 4.0) HAnimHumanoid field defaults the export relies on.
 X3D4_DEFAULTS = {"skeletalConfiguration": "BASIC"}
 
 PARENTS = {  # clause 4.9.6.1, figure 4.10, written out independently of the module
-    "humanoid_root": (None, "sacrum"), "sacroiliac": ("humanoid_root", "pelvis"),
-    "l_hip": ("sacroiliac", "l_thigh"), "l_knee": ("l_hip", "l_calf"),
+    "humanoid_root": (None, "sacrum"),
+    "sacroiliac": ("humanoid_root", "pelvis"),
+    "l_hip": ("sacroiliac", "l_thigh"),
+    "l_knee": ("l_hip", "l_calf"),
     "l_talocrural": ("l_knee", "l_talus"),
     "l_metatarsophalangeal_2": ("l_talocrural", "l_tarsal_proximal_phalanx_2"),
-    "r_hip": ("sacroiliac", "r_thigh"), "r_knee": ("r_hip", "r_calf"),
+    "r_hip": ("sacroiliac", "r_thigh"),
+    "r_knee": ("r_hip", "r_calf"),
     "r_talocrural": ("r_knee", "r_talus"),
     "r_metatarsophalangeal_2": ("r_talocrural", "r_tarsal_proximal_phalanx_2"),
-    "vl5": ("humanoid_root", "l5"), "skullbase": ("vl5", "skull"),
-    "l_shoulder": ("vl5", "l_upperarm"), "l_elbow": ("l_shoulder", "l_forearm"),
-    "l_radiocarpal": ("l_elbow", "l_carpal"), "r_shoulder": ("vl5", "r_upperarm"),
-    "r_elbow": ("r_shoulder", "r_forearm"), "r_radiocarpal": ("r_elbow", "r_carpal"),
+    "vl5": ("humanoid_root", "l5"),
+    "skullbase": ("vl5", "skull"),
+    "l_shoulder": ("vl5", "l_upperarm"),
+    "l_elbow": ("l_shoulder", "l_forearm"),
+    "l_radiocarpal": ("l_elbow", "l_carpal"),
+    "r_shoulder": ("vl5", "r_upperarm"),
+    "r_elbow": ("r_shoulder", "r_forearm"),
+    "r_radiocarpal": ("r_elbow", "r_carpal"),
 }
 
 
@@ -86,8 +93,11 @@ def test_every_joint_segment_and_site_is_listed(male50):
     defs = {e.get("DEF"): e for e in root.iter() if e.get("DEF")}
 
     def listed(field):
-        return {defs[e.get("USE")].get("name") for e in humanoid
-                if e.get("containerField") == field and e.get("USE")}
+        return {
+            defs[e.get("USE")].get("name")
+            for e in humanoid
+            if e.get("containerField") == field and e.get("USE")
+        }
 
     assert listed("joints") == set(PARENTS)
     assert listed("segments") == {segment for _, segment in PARENTS.values()}
@@ -98,9 +108,17 @@ def test_every_joint_segment_and_site_is_listed(male50):
 def test_feet_on_the_ground_and_skullbase_from_segment_lengths(male50):
     figure, _, root = male50
     joints = _joints(root)
-    lengths = {n: figure.value("girth", n, 2) / 100 for n in
-               ("right_foot", "right_lower_leg", "right_upper_leg", "lower_torso",
-                "center_torso", "neck")}
+    lengths = {
+        n: figure.value("girth", n, 2) / 100
+        for n in (
+            "right_foot",
+            "right_lower_leg",
+            "right_upper_leg",
+            "lower_torso",
+            "center_torso",
+            "neck",
+        )
+    }
     # the soles of the foot boxes touch Y = 0, nothing is below it
     talus = [s for s in root.iter("HAnimSegment") if s.get("name", "").endswith("_talus")]
     for segment in talus:
@@ -124,9 +142,15 @@ def test_limits_in_radians_equal_the_joint_limit_group(male50):
     joints = _joints(root)
     values = figure.groups[JOINT_LIMITS].values
     checked = 0
-    for hanim, sass in (("l_hip", "left_hip"), ("r_shoulder", "right_shoulder"),
-                        ("skullbase", "neck"), ("vl5", "waist"), ("l_radiocarpal", "left_wrist"),
-                        ("r_talocrural", "right_ankle"), ("l_knee", "left_knee")):
+    for hanim, sass in (
+        ("l_hip", "left_hip"),
+        ("r_shoulder", "right_shoulder"),
+        ("skullbase", "neck"),
+        ("vl5", "waist"),
+        ("l_radiocarpal", "left_wrist"),
+        ("r_talocrural", "right_ankle"),
+        ("l_knee", "left_knee"),
+    ):
         upper = _floats(joints[hanim].get("ulimit"))
         lower = _floats(joints[hanim].get("llimit"))
         ul = values[row_index(JOINT_LIMITS, f"{sass}_ul")]
@@ -141,28 +165,32 @@ def test_limits_in_radians_equal_the_joint_limit_group(male50):
             if axis < 2:  # x and y always keep SASS's sense
                 assert exported == pytest.approx(as_is, abs=1e-5), (hanim, axis)
             else:
-                assert (exported == pytest.approx(as_is, abs=1e-5)
-                        or exported == pytest.approx(mirrored, abs=1e-5)), (hanim, axis)
+                assert exported == pytest.approx(as_is, abs=1e-5) or exported == pytest.approx(
+                    mirrored, abs=1e-5
+                ), (hanim, axis)
             checked += 1
     assert checked == 19
 
 
-@pytest.mark.parametrize("joint, sass, axis, probe, towards", [
-    ("l_hip", "left_hip", 1, (0, -1, 0), (0, 0, 1)),        # flexion: the knee goes forward
-    ("r_hip", "right_hip", 0, (0, -1, 0), (-1, 0, 0)),      # abduction: right leg to the right
-    ("l_hip", "left_hip", 2, (0, 0, 1), (1, 0, 0)),         # lateral rotation: knee turns out
-    ("r_knee", "right_knee", 1, (0, -1, 0), (0, 0, -1)),    # flexion: the shank goes back
-    ("l_knee", "left_knee", 1, (0, -1, 0), (0, 0, -1)),
-    ("r_elbow", "right_elbow", 1, (0, -1, 0), (0, 0, 1)),
-    ("l_talocrural", "left_ankle", 0, (0, -1, 0), (-1, 0, 0)),  # supination: the sole turns in
-    ("l_radiocarpal", "left_wrist", 1, (0, -1, 0), (-1, 0, 0)),  # flexion: towards the palm
-    ("l_elbow", "left_elbow", 1, (0, -1, 0), (0, 0, 1)),    # flexion: the forearm comes forward
-    ("l_shoulder", "left_shoulder", 0, (0, -1, 0), (1, 0, 0)),  # abduction: arm out to the left
-    ("skullbase", "neck", 1, (0, 1, 0), (0, 0, 1)),         # flexion: the head nods forward
-    ("skullbase", "neck", 2, (0, 0, 1), (-1, 0, 0)),        # rotation right: face turns right
-    ("r_talocrural", "right_ankle", 1, (0, 0, 1), (0, 1, 0)),  # dorsiflexion: toes up
-    ("vl5", "waist", 0, (0, 1, 0), (-1, 0, 0)),             # bend to the right
-])
+@pytest.mark.parametrize(
+    "joint, sass, axis, probe, towards",
+    [
+        ("l_hip", "left_hip", 1, (0, -1, 0), (0, 0, 1)),  # flexion: the knee goes forward
+        ("r_hip", "right_hip", 0, (0, -1, 0), (-1, 0, 0)),  # abduction: right leg to the right
+        ("l_hip", "left_hip", 2, (0, 0, 1), (1, 0, 0)),  # lateral rotation: knee turns out
+        ("r_knee", "right_knee", 1, (0, -1, 0), (0, 0, -1)),  # flexion: the shank goes back
+        ("l_knee", "left_knee", 1, (0, -1, 0), (0, 0, -1)),
+        ("r_elbow", "right_elbow", 1, (0, -1, 0), (0, 0, 1)),
+        ("l_talocrural", "left_ankle", 0, (0, -1, 0), (-1, 0, 0)),  # supination: the sole turns in
+        ("l_radiocarpal", "left_wrist", 1, (0, -1, 0), (-1, 0, 0)),  # flexion: towards the palm
+        ("l_elbow", "left_elbow", 1, (0, -1, 0), (0, 0, 1)),  # flexion: the forearm comes forward
+        ("l_shoulder", "left_shoulder", 0, (0, -1, 0), (1, 0, 0)),  # abduction: arm out to the left
+        ("skullbase", "neck", 1, (0, 1, 0), (0, 0, 1)),  # flexion: the head nods forward
+        ("skullbase", "neck", 2, (0, 0, 1), (-1, 0, 0)),  # rotation right: face turns right
+        ("r_talocrural", "right_ankle", 1, (0, 0, 1), (0, 1, 0)),  # dorsiflexion: toes up
+        ("vl5", "waist", 0, (0, 1, 0), (-1, 0, 0)),  # bend to the right
+    ],
+)
 def test_limit_axes_move_the_body_the_way_sass_means(male50, joint, sass, axis, probe, towards):
     """Rotating by the exported limit that carries SASS's upper limit, about the
     limit frame's axis, moves the body part the way appendix G describes."""
@@ -170,10 +198,17 @@ def test_limit_axes_move_the_body_the_way_sass_means(male50, joint, sass, axis, 
     element = _joints(root)[joint]
     orientation = _floats(element.get("limitOrientation"))
     frame = rotation_matrix(orientation[:3], orientation[3])
-    ul = math.radians(figure.groups[JOINT_LIMITS].values[row_index(JOINT_LIMITS, f"{sass}_ul")][axis])
-    candidates = [v for v in (*_floats(element.get("ulimit"))[axis:axis + 1],
-                              *_floats(element.get("llimit"))[axis:axis + 1])
-                  if abs(abs(v) - abs(ul)) < 1e-5]
+    ul = math.radians(
+        figure.groups[JOINT_LIMITS].values[row_index(JOINT_LIMITS, f"{sass}_ul")][axis]
+    )
+    candidates = [
+        v
+        for v in (
+            *_floats(element.get("ulimit"))[axis : axis + 1],
+            *_floats(element.get("llimit"))[axis : axis + 1],
+        )
+        if abs(abs(v) - abs(ul)) < 1e-5
+    ]
     assert candidates
     # the direction the probe starts to move in when the joint turns towards that limit
     starts = [math.copysign(1, v) * np.cross(frame[:, axis], probe) for v in candidates]
@@ -181,7 +216,8 @@ def test_limit_axes_move_the_body_the_way_sass_means(male50, joint, sass, axis, 
     # and the limit itself, applied, is a rotation of |SASS ul| about that axis
     moved = rotation_matrix(frame[:, axis], candidates[0]) @ np.array(probe, float)
     assert math.acos(np.clip(moved @ np.array(probe, float), -1, 1)) == pytest.approx(
-        min(abs(ul), 2 * math.pi - abs(ul)), abs=1e-5)
+        min(abs(ul), 2 * math.pi - abs(ul)), abs=1e-5
+    )
 
 
 def test_segment_masses_add_up_to_the_figure_mass(male50):
@@ -208,8 +244,10 @@ def test_fifth_female_is_smaller_than_ninety_fifth_male_everywhere(tmp_path):
         low = _floats(small_joints[name].get("center"))[1]
         high = _floats(large_joints[name].get("center"))[1]
         assert low < high, name
-    vertex = {r: next(s for s in t.iter("HAnimSite") if s.get("name") == "skull_vertex_pt")
-              for r, t in (("s", small), ("l", large))}
+    vertex = {
+        r: next(s for s in t.iter("HAnimSite") if s.get("name") == "skull_vertex_pt")
+        for r, t in (("s", small), ("l", large))
+    }
     assert _floats(vertex["s"].get("translation"))[1] < _floats(vertex["l"].get("translation"))[1]
 
 
@@ -239,7 +277,8 @@ def test_cli_export_hanim(tmp_path, capsys):
 # --- a real X3D browser -------------------------------------------------------
 
 needs_view3dscene = pytest.mark.skipif(
-    shutil.which("tovrmlx3d") is None, reason="view3dscene (Debian package) is not installed")
+    shutil.which("tovrmlx3d") is None, reason="view3dscene (Debian package) is not installed"
+)
 
 
 @needs_view3dscene
@@ -256,8 +295,8 @@ def _read_png(path) -> np.ndarray:
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     pos, idat = 8, b""
     while pos < len(data):
-        (length,) = struct.unpack(">I", data[pos:pos + 4])
-        kind, body = data[pos + 4:pos + 8], data[pos + 8:pos + 8 + length]
+        (length,) = struct.unpack(">I", data[pos : pos + 4])
+        kind, body = data[pos + 4 : pos + 8], data[pos + 8 : pos + 8 + length]
         pos += 12 + length
         if kind == b"IHDR":
             width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
@@ -298,9 +337,23 @@ def _read_png(path) -> np.ndarray:
 def test_view3dscene_renders_a_figure(male50, tmp_path):
     _, path, _ = male50
     png = tmp_path / "male50.png"
-    subprocess.run(["xvfb-run", "-a", "view3dscene", str(path), "--geometry", "200x250",
-                    "--screenshot", "0", str(png)], capture_output=True, timeout=120,
-                   check=True, cwd=tmp_path)
+    subprocess.run(
+        [
+            "xvfb-run",
+            "-a",
+            "view3dscene",
+            str(path),
+            "--geometry",
+            "200x250",
+            "--screenshot",
+            "0",
+            str(png),
+        ],
+        capture_output=True,
+        timeout=120,
+        check=True,
+        cwd=tmp_path,
+    )
     image = _read_png(png)
     background = image[0, 0]
     figure_pixels = np.any(image != background, axis=2)

@@ -10,7 +10,13 @@ import sys
 import sass_tui.db
 import sass_tui.model
 
-CLI_MODULES = ["sass_tui.cli", "sass_tui.cli_export", "sass_tui.cli_strength"]
+CLI_MODULES = [
+    "sass_tui.cli",
+    *(
+        f"sass_tui.cli.{m}"
+        for m in ("db", "export", "fig", "options", "progress", "query", "strength")
+    ),
+]
 
 
 def _modules(package) -> list[str]:
@@ -25,16 +31,21 @@ def _run(code: str) -> str:
 
 def test_model_db_and_cli_do_not_import_textual():
     modules = [*CLI_MODULES, *_modules(sass_tui.model), *_modules(sass_tui.db)]
-    code = ("import sys\n" + "".join(f"import {m}\n" for m in modules) +
-            "bad = sorted(m for m in sys.modules if m == 'textual' or m.startswith('textual.'))\n"
-            "print(','.join(bad))\n")
+    code = (
+        "import sys\n"
+        + "".join(f"import {m}\n" for m in modules)
+        + "bad = sorted(m for m in sys.modules if m == 'textual' or m.startswith('textual.'))\n"
+        "print(','.join(bad))\n"
+    )
     assert _run(code) == ""
 
 
 def test_the_command_line_starts_without_its_heavy_imports():
     # Every subcommand is registered, yet sqlite3, lark, pint and Textual wait
     # until a command needs them (`sass fig` < 0.5 s, docs/performance.md).
-    code = ("import sys\nfrom sass_tui.cli import build_parser\nbuild_parser()\n"
-            "heavy = ('sqlite3', 'lark', 'pint', 'textual')\n"
-            "print(','.join(sorted(m for m in heavy if m in sys.modules)))\n")
+    code = (
+        "import sys\nfrom sass_tui.cli import build_parser\nbuild_parser()\n"
+        "heavy = ('sqlite3', 'lark', 'pint', 'textual')\n"
+        "print(','.join(sorted(m for m in heavy if m in sys.modules)))\n"
+    )
     assert _run(code) == ""

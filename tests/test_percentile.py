@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from _paths import DATASETS
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.model.names import GIRTH
-from sass_tui.model.percentile import PercentileError, Z95, percentile_of, value_at
+from sass_tui.model.percentile import Z95, PercentileError, percentile_of, value_at
 from sass_tui.model.popfile import read_population_file
-
-from _paths import DATASETS
 
 percentiles = st.floats(min_value=0.5, max_value=99.5, allow_nan=False)
 values = st.floats(min_value=-500, max_value=500, allow_nan=False)
@@ -51,8 +50,9 @@ def test_degenerate_rows_and_no_value():
 
 
 @settings(max_examples=200, deadline=None)
-@given(v50=values, below=spreads, above=spreads, p=percentiles, q=percentiles,
-       decreasing=st.booleans())
+@given(
+    v50=values, below=spreads, above=spreads, p=percentiles, q=percentiles, decreasing=st.booleans()
+)
 def test_monotonic_either_way(v50, below, above, p, q, decreasing):
     sign = -1.0 if decreasing else 1.0
     stats = np.array([v50 - sign * below, v50, v50 + sign * above])

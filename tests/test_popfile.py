@@ -4,12 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from _paths import DATASETS
 
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 from sass_tui.model.popfile import PopulationFileError, parse_population_text, read_population_file
-
-from _paths import DATASETS
 
 GIRTH_TEXT = (DATASETS / "girth.dat").read_text()
 
@@ -38,8 +37,10 @@ def test_report_inconsistencies_are_warnings_with_file_and_line():
     data = read_population_file(DATASETS / "jntlmt.dat", JOINT_LIMITS)
     text = (DATASETS / "jntlmt.dat").read_text()
     neck_ll = _line_of(text, "/* Neck ll */")
-    assert any(w.startswith(f"{DATASETS / 'jntlmt.dat'}:{neck_ll}: Neck ll y") and "sign" in w
-               for w in data.warnings)
+    assert any(
+        w.startswith(f"{DATASETS / 'jntlmt.dat'}:{neck_ll}: Neck ll y") and "sign" in w
+        for w in data.warnings
+    )
     hip = _line_of(text, "/* R hip ll */")
     assert any(f":{hip}: R Hip ll z: 50th value -23" in w for w in data.warnings)
     girth = read_population_file(DATASETS / "girth.dat", GIRTH)
@@ -64,15 +65,45 @@ def test_commas_or_blanks_and_positional_rows():
 
 
 BAD_INPUTS = [
-    ("truncated", GIRTH_TEXT[: GIRTH_TEXT.index("r Lower Leg") + 5], "girth.dat:{}: comment '/*' is not closed"),
-    ("eight numbers", GIRTH_TEXT.replace("  11.3   12.3   13.3   11.3   12.3   13.3    7.7",
-                                          "  11.3   12.3   13.3   11.3   12.3   13.3", 1),
-     "girth.dat:{}: 8 numbers; expected 9"),
-    ("text in a number", GIRTH_TEXT.replace("21.8", "2l.8", 1), "girth.dat:{}: value 1 is '2l.8'; expected a number"),
-    ("unknown gender", GIRTH_TEXT.replace("T FEMALE", "T ALIEN"), "girth.dat:{}: expected 'T MALE' or 'T FEMALE', found 'T ALIEN'"),
-    ("data before a section", "C title\n 1 2 3 4 5 6 7 8 9 /* neck */\n", "girth.dat:2: data before 'T MALE'"),
-    ("missing rows", GIRTH_TEXT[: GIRTH_TEXT.rfind("\n", 0, GIRTH_TEXT.index("/* r Foot */", GIRTH_TEXT.index("T FEMALE"))) + 1],
-     "girth.dat:{}: T FEMALE ends without"),
+    (
+        "truncated",
+        GIRTH_TEXT[: GIRTH_TEXT.index("r Lower Leg") + 5],
+        "girth.dat:{}: comment '/*' is not closed",
+    ),
+    (
+        "eight numbers",
+        GIRTH_TEXT.replace(
+            "  11.3   12.3   13.3   11.3   12.3   13.3    7.7",
+            "  11.3   12.3   13.3   11.3   12.3   13.3",
+            1,
+        ),
+        "girth.dat:{}: 8 numbers; expected 9",
+    ),
+    (
+        "text in a number",
+        GIRTH_TEXT.replace("21.8", "2l.8", 1),
+        "girth.dat:{}: value 1 is '2l.8'; expected a number",
+    ),
+    (
+        "unknown gender",
+        GIRTH_TEXT.replace("T FEMALE", "T ALIEN"),
+        "girth.dat:{}: expected 'T MALE' or 'T FEMALE', found 'T ALIEN'",
+    ),
+    (
+        "data before a section",
+        "C title\n 1 2 3 4 5 6 7 8 9 /* neck */\n",
+        "girth.dat:2: data before 'T MALE'",
+    ),
+    (
+        "missing rows",
+        GIRTH_TEXT[
+            : GIRTH_TEXT.rfind(
+                "\n", 0, GIRTH_TEXT.index("/* r Foot */", GIRTH_TEXT.index("T FEMALE"))
+            )
+            + 1
+        ],
+        "girth.dat:{}: T FEMALE ends without",
+    ),
     ("empty", "", "girth.dat:1: the file is empty"),
 ]
 

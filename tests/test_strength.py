@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import math
-import subprocess
-import sys
 
 import numpy as np
 import pytest
@@ -14,9 +12,18 @@ from sass_tui.model.figfile import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS
 from sass_tui.model.strength import (
-    DEFAULT_NON_DOMINANT_FACTOR, MOTION_NAMES, STRENGTH_CV, StrengthError,
-    StrengthFileError, StrengthSheet, fatigue_factor, fit_summary, parse_strength_text,
-    read_strength_file, strength_percentile)
+    DEFAULT_NON_DOMINANT_FACTOR,
+    MOTION_NAMES,
+    STRENGTH_CV,
+    StrengthError,
+    StrengthFileError,
+    StrengthSheet,
+    fatigue_factor,
+    fit_summary,
+    parse_strength_text,
+    read_strength_file,
+    strength_percentile,
+)
 
 ABDUCTION, ELBOW_FLEXION = 0, MOTION_NAMES.index("elbow_flexion")
 
@@ -146,8 +153,11 @@ def test_fit_errors_are_what_the_equation_gives_back_on_the_stored_points(data):
     assert len(summary) == 28
     model = data.model("male", "right")
     section = model.section
-    median = section.values / (1 + np.array([0 if p == 50 else 1.6448536269514722
-                                             for p in section.percentiles]) * STRENGTH_CV)
+    median = section.values / (
+        1
+        + np.array([0 if p == 50 else 1.6448536269514722 for p in section.percentiles])
+        * STRENGTH_CV
+    )
     predicted = model.predict_median(section.motions, section.angles)
     relative = np.abs(predicted / median - 1) * 100
     for fit in model.fits:
@@ -164,31 +174,39 @@ L RIGHT
 """
 
 
-@pytest.mark.parametrize("text, expected", [
-    ("", r"<t>:1: the file is empty"),
-    ("P t\nG BOTH\n", r"<t>:2: expected 'G MALE' or 'G FEMALE'"),
-    ("P t\nL RIGHT\n", r"<t>:2: 'L RIGHT' before 'G MALE'"),
-    ("P t\nG MALE\nL UP\n", r"<t>:3: expected 'L RIGHT' or 'L LEFT'"),
-    ("P t\nG MALE\n 1 2 3 4 5 6 7 8 50 /* elbow flexion */\n", r"<t>:3: data before"),
-    (GOOD + " 1 2 3 4 5 6 7 8 /* elbow flexion */\n", r"<t>:6: 8 numbers; expected 9"),
-    (GOOD + " 1 2 x 4 5 6 7 8 50 /* elbow flexion */\n", r"<t>:6: value 3 is 'x'"),
-    (GOOD + " 1 2 3 4 5 6 7 8 50 /* knee kicking */\n", r"<t>:6: unknown motion 'knee kicking'"),
-    (GOOD + " 1 2 3 4 5 6 7 8 50\n", r"<t>:6: no /\* motion \*/ comment"),
-    (GOOD + " 1 2 3 4 5 6 7 8 50 /* elbow flexion\n", r"<t>:6: comment '/\*' is not closed"),
-    (GOOD + " 1 2 3 4 5 6 7 8 100 /* elbow flexion */\n", r"<t>:6: percentile 100"),
-    (GOOD + "L RIGHT\n", r"<t>:6: a second G MALE / L RIGHT section \(first at line 3\)"),
-])
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("", r"<t>:1: the file is empty"),
+        ("P t\nG BOTH\n", r"<t>:2: expected 'G MALE' or 'G FEMALE'"),
+        ("P t\nL RIGHT\n", r"<t>:2: 'L RIGHT' before 'G MALE'"),
+        ("P t\nG MALE\nL UP\n", r"<t>:3: expected 'L RIGHT' or 'L LEFT'"),
+        ("P t\nG MALE\n 1 2 3 4 5 6 7 8 50 /* elbow flexion */\n", r"<t>:3: data before"),
+        (GOOD + " 1 2 3 4 5 6 7 8 /* elbow flexion */\n", r"<t>:6: 8 numbers; expected 9"),
+        (GOOD + " 1 2 x 4 5 6 7 8 50 /* elbow flexion */\n", r"<t>:6: value 3 is 'x'"),
+        (
+            GOOD + " 1 2 3 4 5 6 7 8 50 /* knee kicking */\n",
+            r"<t>:6: unknown motion 'knee kicking'",
+        ),
+        (GOOD + " 1 2 3 4 5 6 7 8 50\n", r"<t>:6: no /\* motion \*/ comment"),
+        (GOOD + " 1 2 3 4 5 6 7 8 50 /* elbow flexion\n", r"<t>:6: comment '/\*' is not closed"),
+        (GOOD + " 1 2 3 4 5 6 7 8 100 /* elbow flexion */\n", r"<t>:6: percentile 100"),
+        (GOOD + "L RIGHT\n", r"<t>:6: a second G MALE / L RIGHT section \(first at line 3\)"),
+    ],
+)
 def test_a_broken_file_is_rejected_whole_with_file_and_line(text, expected):
     with pytest.raises(StrengthFileError, match=expected):
         parse_strength_text(text, "<t>")
 
 
 def test_suspicious_rows_warn_and_loading_goes_on():
-    text = GOOD + (" 1 2 3 90 5 6 7 20 50 /* elbow flexion */\n"
-                   " 60 45 0 90 0 0 0 11.50 50 /* shoulder abduction: again */\n"
-                   " 999 2 3 90 5 6 7 20 50 /* elbow flexion */\n"
-                   " 1 2 3 80 5 6 7 999 50 /* elbow flexion */\n"
-                   " 1 2 3 70 5 6 7 -2 50 /* elbow flexion */\n")
+    text = GOOD + (
+        " 1 2 3 90 5 6 7 20 50 /* elbow flexion */\n"
+        " 60 45 0 90 0 0 0 11.50 50 /* shoulder abduction: again */\n"
+        " 999 2 3 90 5 6 7 20 50 /* elbow flexion */\n"
+        " 1 2 3 80 5 6 7 999 50 /* elbow flexion */\n"
+        " 1 2 3 70 5 6 7 -2 50 /* elbow flexion */\n"
+    )
     data = parse_strength_text(text, "<t>")
     joined = "\n".join(data.warnings)
     assert "<t>:7: Shoulder abduction: out of display order" in joined
@@ -204,8 +222,10 @@ def test_suspicious_rows_warn_and_loading_goes_on():
 
 
 def test_cli_strength_prints_stored_and_predicted(capsys):
-    assert main(["strength", "shoulder_abduction", "shoulder_x=30", "shoulder_y=45",
-                 "elbow_y=90"]) == 0
+    assert (
+        main(["strength", "shoulder_abduction", "shoulder_x=30", "shoulder_y=45", "elbow_y=90"])
+        == 0
+    )
     out = capsys.readouterr().out
     assert "right shoulder abduction: 17.98 ft-lb (stored; male, 50th percentile)" in out
     assert main(["strength", "--unit", "N-m", "shoulder_abduction", "shoulder_x=30"]) == 0
@@ -215,11 +235,12 @@ def test_cli_strength_prints_stored_and_predicted(capsys):
 
 
 def test_cli_strength_refuses_an_angle_beyond_the_limit(capsys):
-    assert main(["strength", "--joint-limit-percentile", "95", "elbow_flexion",
-                 "elbow_y=170"]) == 2
+    assert main(["strength", "--joint-limit-percentile", "95", "elbow_flexion", "elbow_y=170"]) == 2
     err = capsys.readouterr().err
-    assert "sass strength: error: right elbow y 170 deg is above the right elbow upper " \
-           "limit 159 deg" in err
+    assert (
+        "sass strength: error: right elbow y 170 deg is above the right elbow upper "
+        "limit 159 deg" in err
+    )
     assert main(["strength", "elbow_flexion", "elbow=90"]) == 2
     assert "unknown joint axis 'elbow'" in capsys.readouterr().err
 
@@ -229,7 +250,9 @@ def test_fig_includes_strength_unless_told_not_to(tmp_path, capsys):
     assert main(["fig", "-o", str(out)]) == 0
     variables = read_fig(out).variables
     assert variables["right_shoulder_abduction_strength"] == (24.38, "Nm")
-    assert variables["left_shoulder_abduction_strength"][0] == pytest.approx(24.38 / 1.116, abs=0.01)
+    assert variables["left_shoulder_abduction_strength"][0] == pytest.approx(
+        24.38 / 1.116, abs=0.01
+    )
     assert sum(name.endswith("_strength") for name in variables) == 28
     bare = tmp_path / "without.fig"
     assert main(["fig", "--no-strength", "-o", str(bare)]) == 0

@@ -21,24 +21,34 @@ from pathlib import Path
 import numpy as np
 
 from sass_tui.db.schema import (
-    GIRTH_MASS_FRACTIONS, GIRTH_NAMES, PeopleBatch, store_people, transaction)
+    GIRTH_MASS_FRACTIONS,
+    GIRTH_NAMES,
+    PeopleBatch,
+    store_people,
+    transaction,
+)
+from sass_tui.model.errors import SassError
 
 SOURCE = "ANSUR II public data (Gordon et al. 2014)"
-HANDEDNESS = {"right hand": "right", "left hand": "left", "either hand (no preference)": "either"}
+ANSUR_HANDEDNESS = {
+    "right hand": "right",
+    "left hand": "left",
+    "either hand (no preference)": "either",
+}
 GENDER = {"male": "male", "female": "female"}
 ID_COLUMN = "subjectid"
 UPPER_ARM_RATIO = 17 / 20  # report §10.1: x/y of the biceps ellipse
 FOREARM_RATIO = 3 / 2
 
 
-class AnsurImportError(ValueError):
+class AnsurImportError(ValueError, SassError):
     """An ANSUR file that cannot be imported; nothing was stored."""
 
 
 def ellipse_axes(circumference: np.ndarray, ratio: float) -> tuple[np.ndarray, np.ndarray]:
     """Report §10.1 ellipse axis procedure: C = 2 pi sqrt((A^2 + B^2)/2), K = A/B.
     Returns the full axes (2A, 2B)."""
-    a = circumference * ratio * math.sqrt(2.0 / (ratio ** 2 + 1.0)) / (2.0 * math.pi)
+    a = circumference * ratio * math.sqrt(2.0 / (ratio**2 + 1.0)) / (2.0 * math.pi)
     return 2.0 * a, 2.0 * a / ratio
 
 
@@ -63,8 +73,11 @@ def _derive(c: dict[str, np.ndarray], n: int) -> np.ndarray:
         "bottom_head": (c["headlength"], c["headbreadth"], nan),
         "neck": (neck, neck, neck),
         "center_torso": (c["chestdepth"], c["interscyei"], c["waistbacklength"]),
-        "lower_torso": (c["buttockdepth"], c["hipbreadth"],
-                        c["waistheightomphalion"] - c["crotchheight"]),
+        "lower_torso": (
+            c["buttockdepth"],
+            c["hipbreadth"],
+            c["waistheightomphalion"] - c["crotchheight"],
+        ),
         "upper_arm": (arm_x, arm_y, c["acromionradialelength"]),
         "lower_arm": (fore_x, fore_y, c["radialestylionlength"]),
         "upper_leg": (thigh, thigh, upper_leg),
@@ -85,12 +98,33 @@ def _derive(c: dict[str, np.ndarray], n: int) -> np.ndarray:
 
 
 MEASUREMENTS = (
-    "headlength", "headbreadth", "neckcircumference", "chestdepth", "interscyei",
-    "waistbacklength", "buttockdepth", "hipbreadth", "waistheightomphalion", "crotchheight",
-    "bicepscircumferenceflexed", "acromionradialelength", "forearmcircumferenceflexed",
-    "radialestylionlength", "thighcircumference", "trochanterionheight", "tibialheight",
-    "calfcircumference", "lateralmalleolusheight", "balloffootlength", "footbreadthhorizontal",
-    "footlength", "handbreadth", "palmlength", "handlength", "shoulderlength", "stature",
+    "headlength",
+    "headbreadth",
+    "neckcircumference",
+    "chestdepth",
+    "interscyei",
+    "waistbacklength",
+    "buttockdepth",
+    "hipbreadth",
+    "waistheightomphalion",
+    "crotchheight",
+    "bicepscircumferenceflexed",
+    "acromionradialelength",
+    "forearmcircumferenceflexed",
+    "radialestylionlength",
+    "thighcircumference",
+    "trochanterionheight",
+    "tibialheight",
+    "calfcircumference",
+    "lateralmalleolusheight",
+    "balloffootlength",
+    "footbreadthhorizontal",
+    "footlength",
+    "handbreadth",
+    "palmlength",
+    "handlength",
+    "shoulderlength",
+    "stature",
 )
 REQUIRED = (ID_COLUMN, "gender", "weightkg", "age", "writingpreference") + MEASUREMENTS
 
@@ -108,12 +142,16 @@ def read_ansur(path: str | Path) -> PeopleBatch:
     column = {name: k for k, name in enumerate(header)}
     missing = [name for name in REQUIRED if name not in column]
     if missing:
-        raise AnsurImportError(f"{path}:1: missing column{'s' if len(missing) > 1 else ''} "
-                               f"{', '.join(missing)} (ANSUR II public file expected)")
+        raise AnsurImportError(
+            f"{path}:1: missing column{'s' if len(missing) > 1 else ''} "
+            f"{', '.join(missing)} (ANSUR II public file expected)"
+        )
     body = rows[1:]
     for lineno, row in enumerate(body, start=2):
         if len(row) != len(header):
-            raise AnsurImportError(f"{path}:{lineno}: expected {len(header)} fields, found {len(row)}")
+            raise AnsurImportError(
+                f"{path}:{lineno}: expected {len(header)} fields, found {len(row)}"
+            )
     n = len(body)
     if n == 0:
         raise AnsurImportError(f"{path}:2: the file holds no subject")
@@ -129,7 +167,8 @@ def read_ansur(path: str | Path) -> PeopleBatch:
                     float(t)
                 except ValueError:
                     raise AnsurImportError(
-                        f"{path}:{lineno}: column {name}: expected a number, found {t!r}") from None
+                        f"{path}:{lineno}: column {name}: expected a number, found {t!r}"
+                    ) from None
             raise
 
     def words(name: str, table: dict[str, str]) -> list[str]:
@@ -138,8 +177,10 @@ def read_ansur(path: str | Path) -> PeopleBatch:
         for lineno, row in enumerate(body, start=2):
             key = row[k].strip().lower()
             if key not in table:
-                raise AnsurImportError(f"{path}:{lineno}: column {name}: expected one of "
-                                       f"{', '.join(sorted(table))}, found {row[k]!r}")
+                raise AnsurImportError(
+                    f"{path}:{lineno}: column {name}: expected one of "
+                    f"{', '.join(sorted(table))}, found {row[k]!r}"
+                )
             out.append(table[key])
         return out
 
@@ -157,11 +198,15 @@ def read_ansur(path: str | Path) -> PeopleBatch:
     return PeopleBatch(
         id_num=np.zeros(n, dtype=np.int64),
         name=[f"ANSUR II {letter[g]} {s}" for g, s in zip(gender, subject.tolist())],
-        gender=gender, stature=cm["stature"], mass=mass,
-        handedness=words("writingpreference", HANDEDNESS), age=numbers("age"),
+        gender=gender,
+        stature=cm["stature"],
+        mass=mass,
+        handedness=words("writingpreference", ANSUR_HANDEDNESS),
+        age=numbers("age"),
         source=[f"{SOURCE}, {g} file" for g in gender],
         source_key=[f"ANSUR II:{g}:{s}" for g, s in zip(gender, subject.tolist())],
-        girth=girth)
+        girth=girth,
+    )
 
 
 def _assign_ids(conn: sqlite3.Connection, batch: PeopleBatch) -> None:
@@ -169,8 +214,12 @@ def _assign_ids(conn: sqlite3.Connection, batch: PeopleBatch) -> None:
     conn.execute("CREATE TEMP TABLE IF NOT EXISTS _keys (source_key TEXT PRIMARY KEY)")
     conn.execute("DELETE FROM _keys")
     conn.executemany("INSERT INTO _keys VALUES (?)", ((k,) for k in batch.source_key))
-    known = dict(conn.execute("SELECT p.source_key, p.id_num FROM person p "
-                              "JOIN _keys k ON k.source_key = p.source_key"))
+    known = dict(
+        conn.execute(
+            "SELECT p.source_key, p.id_num FROM person p "
+            "JOIN _keys k ON k.source_key = p.source_key"
+        )
+    )
     next_id = (conn.execute("SELECT max(id_num) FROM person").fetchone()[0] or 0) + 1
     for i, key in enumerate(batch.source_key):
         if key in known:
@@ -180,8 +229,12 @@ def _assign_ids(conn: sqlite3.Connection, batch: PeopleBatch) -> None:
             next_id += 1
 
 
-def import_ansur(conn: sqlite3.Connection, paths: Sequence[str | Path],
-                 progress: Callable[[int, int], None] | None = None, chunk: int = 1000) -> dict[str, int]:
+def import_ansur(
+    conn: sqlite3.Connection,
+    paths: Sequence[str | Path],
+    progress: Callable[[int, int], None] | None = None,
+    chunk: int = 1000,
+) -> dict[str, int]:
     """Import the files in one transaction.  Returns people per gender."""
     batches = [read_ansur(p) for p in paths]
     total = sum(len(b) for b in batches)
@@ -202,7 +255,14 @@ def import_ansur(conn: sqlite3.Connection, paths: Sequence[str | Path],
 
 def _slice(batch: PeopleBatch, part: slice) -> PeopleBatch:
     return PeopleBatch(
-        id_num=batch.id_num[part], name=batch.name[part], gender=batch.gender[part],
-        stature=batch.stature[part], mass=batch.mass[part], handedness=batch.handedness[part],
-        age=batch.age[part], source=batch.source[part], source_key=batch.source_key[part],
-        girth=None if batch.girth is None else batch.girth[part])
+        id_num=batch.id_num[part],
+        name=batch.name[part],
+        gender=batch.gender[part],
+        stature=batch.stature[part],
+        mass=batch.mass[part],
+        handedness=batch.handedness[part],
+        age=batch.age[part],
+        source=batch.source[part],
+        source_key=batch.source_key[part],
+        girth=None if batch.girth is None else batch.girth[part],
+    )

@@ -34,20 +34,35 @@ from pathlib import Path
 import numpy as np
 
 from sass_tui.db.schema import (
-    CENTER_OF_MASS_NAMES, GENDERS, GIRTH_NAMES, HANDEDNESS, JOINT_LIMIT_NAMES,
-    MASS_ONLY_SEGMENTS, SIDES, STRENGTH_TYPES, PeopleBatch, store_people, transaction)
+    CENTER_OF_MASS_NAMES,
+    GIRTH_NAMES,
+    JOINT_LIMIT_NAMES,
+    MASS_ONLY_SEGMENTS,
+    PeopleBatch,
+    store_people,
+    transaction,
+)
 from sass_tui.model.atomic import write_text_atomic
+from sass_tui.model.errors import SassError
 from sass_tui.model.units import UnitError, convert, unit_name
+from sass_tui.model.vocabulary import GENDERS, SIDES, STRENGTH_TYPES
+from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 
 NO_VALUE = 999.0
-FILE_NAMES = {"person": "person.db", "girth": "girth.db", "joint_limits": "jntlmt.db",
-              "center_of_mass": "cmass.db", "strength_par": "strgh-par.db",
-              "shoulder": "shoulder-strgh.db", "elbow": "elbow-strgh.db",
-              "wrist": "wrist-strgh.db"}
+FILE_NAMES = {
+    "person": "person.db",
+    "girth": "girth.db",
+    "joint_limits": "jntlmt.db",
+    "center_of_mass": "cmass.db",
+    "strength_par": "strgh-par.db",
+    "shoulder": "shoulder-strgh.db",
+    "elbow": "elbow-strgh.db",
+    "wrist": "wrist-strgh.db",
+}
 STRENGTH_KEYS = ("strength_par", "shoulder", "elbow", "wrist")
 
 
-class FlatFileError(ValueError):
+class FlatFileError(ValueError, SassError):
     """A flat file breaks the format; nothing of the import was stored."""
 
 
@@ -63,10 +78,13 @@ class FlatFiles:
     wrist: Path | None = None
 
     @classmethod
-    def in_directory(cls, directory: str | Path) -> "FlatFiles":
+    def in_directory(cls, directory: str | Path) -> FlatFiles:
         directory = Path(directory)
-        found = {key: directory / name for key, name in FILE_NAMES.items()
-                 if (directory / name).is_file()}
+        found = {
+            key: directory / name
+            for key, name in FILE_NAMES.items()
+            if (directory / name).is_file()
+        }
         return cls(**found)
 
 
@@ -82,7 +100,8 @@ class _Reader:
         self.line = 0
 
     def records(self, width: int, what: str, rest: bool = False):
-        for self.line, text in enumerate(self.text.splitlines(), start=1):
+        for line_number, text in enumerate(self.text.splitlines(), start=1):
+            self.line = line_number  # fail() names it
             if not text.strip():
                 continue
             fields = [f.strip() for f in (text.split(",", width - 1) if rest else text.split(","))]
@@ -122,8 +141,12 @@ def legacy_name(text: str) -> str:
         name = "right_" + name[2:]
     elif name.startswith("l_"):
         name = "left_" + name[2:]
-    return {"right_toes": "right_ball_of_foot", "left_toes": "left_ball_of_foot",
-            "right_fingers": "right_knuckles", "left_fingers": "left_knuckles"}.get(name, name)
+    return {
+        "right_toes": "right_ball_of_foot",
+        "left_toes": "left_ball_of_foot",
+        "right_fingers": "right_knuckles",
+        "left_fingers": "left_knuckles",
+    }.get(name, name)
 
 
 def read_flat_files(files: FlatFiles) -> PeopleBatch:
@@ -134,18 +157,28 @@ def read_flat_files(files: FlatFiles) -> PeopleBatch:
     index = {pid: i for i, pid in enumerate(people["id_num"])}
     n = len(index)
     batch = PeopleBatch(
-        id_num=np.array(people["id_num"], dtype=np.int64), name=people["name"],
-        gender=people["gender"], stature=np.array(people["stature"]), mass=np.array(people["mass"]),
-        handedness=people["handedness"], age=np.array(people["age"]), source=people["source"],
-        source_key=[None] * n)
+        id_num=np.array(people["id_num"], dtype=np.int64),
+        name=people["name"],
+        gender=people["gender"],
+        stature=np.array(people["stature"]),
+        mass=np.array(people["mass"]),
+        handedness=people["handedness"],
+        age=np.array(people["age"]),
+        source=people["source"],
+        source_key=[None] * n,
+    )
     if files.girth:
         batch.girth, batch.extra_girth = _read_group(
-            _Reader(Path(files.girth)), index, GIRTH_NAMES, 4, MASS_ONLY_SEGMENTS)
+            _Reader(Path(files.girth)), index, GIRTH_NAMES, 4, MASS_ONLY_SEGMENTS
+        )
     if files.joint_limits:
-        batch.joint_limits, _ = _read_group(_Reader(Path(files.joint_limits)), index, JOINT_LIMIT_NAMES, 3)
+        batch.joint_limits, _ = _read_group(
+            _Reader(Path(files.joint_limits)), index, JOINT_LIMIT_NAMES, 3
+        )
     if files.center_of_mass:
         batch.center_of_mass, _ = _read_group(
-            _Reader(Path(files.center_of_mass)), index, CENTER_OF_MASS_NAMES, 3)
+            _Reader(Path(files.center_of_mass)), index, CENTER_OF_MASS_NAMES, 3
+        )
     if files.strength_par:
         _read_strength(files, index, batch)
     return batch
@@ -159,10 +192,14 @@ def _person_id(reader: _Reader, text: str, index: dict[int, int]) -> int:
 
 
 def _read_person(reader: _Reader) -> dict[str, list]:
-    out: dict[str, list] = {k: [] for k in ("id_num", "name", "gender", "stature", "mass",
-                                             "handedness", "age", "source")}
+    out: dict[str, list] = {
+        k: []
+        for k in ("id_num", "name", "gender", "stature", "mass", "handedness", "age", "source")
+    }
     seen: dict[int, int] = {}
-    for f in reader.records(8, "id, name, gender, stature, mass, handedness, age, source", rest=True):
+    for f in reader.records(
+        8, "id, name, gender, stature, mass, handedness, age, source", rest=True
+    ):
         pid = reader.integer(f[0], "id_num")
         if pid in seen:
             reader.fail(f"duplicate id_num {pid} (first on line {seen[pid]})")
@@ -176,8 +213,9 @@ def _read_person(reader: _Reader) -> dict[str, list]:
         out["gender"].append(reader.choice(f[2], GENDERS, "gender"))
         out["stature"].append(reader.number(f[3], "stature"))
         out["mass"].append(reader.number(f[4], "mass"))
-        out["handedness"].append(None if f[5] == "999.0" or not f[5]
-                                 else reader.choice(f[5], HANDEDNESS, "handedness"))
+        out["handedness"].append(
+            None if f[5] == "999.0" or not f[5] else reader.choice(f[5], HANDEDNESS, "handedness")
+        )
         out["age"].append(reader.number(f[6], "age"))
         out["source"].append(f[7])
     if not seen:
@@ -185,8 +223,13 @@ def _read_person(reader: _Reader) -> dict[str, list]:
     return out
 
 
-def _read_group(reader: _Reader, index: dict[int, int], names: Sequence[str], width: int,
-                extra_names: Sequence[str] = ()) -> tuple[np.ndarray, list[tuple]]:
+def _read_group(
+    reader: _Reader,
+    index: dict[int, int],
+    names: Sequence[str],
+    width: int,
+    extra_names: Sequence[str] = (),
+) -> tuple[np.ndarray, list[tuple]]:
     values = np.full((len(index), len(names), width), np.nan)
     row_of = {name: r for r, name in enumerate(names)}
     seen: dict[tuple[int, str], int] = {}
@@ -220,8 +263,10 @@ def _unit(reader: _Reader, text: str, canonical: str) -> str:
 def _read_strength(files: FlatFiles, index: dict[int, int], batch: PeopleBatch) -> None:
     reader = _Reader(Path(files.strength_par))
     units: dict[tuple[int, int], tuple[str, str]] = {}
-    for f in reader.records(10, "id, exp_num, side, type, speed, fatigue, training, "
-                                "angle unit, strength unit, speed unit"):
+    for f in reader.records(
+        10,
+        "id, exp_num, side, type, speed, fatigue, training, angle unit, strength unit, speed unit",
+    ):
         i = _person_id(reader, f[0], index)
         exp = reader.integer(f[1], "exp_num")
         if (i, exp) in units:
@@ -231,10 +276,17 @@ def _read_strength(files: FlatFiles, index: dict[int, int], batch: PeopleBatch) 
         speed_unit = _unit(reader, f[9], "deg/s")
         units[i, exp] = (angle_unit, strength_unit)
         speed = convert(reader.number(f[4], "speed"), speed_unit, "deg/s")
-        batch.strength_par.append((i, exp, reader.choice(f[2], SIDES, "side_of_limb"),
-                                   reader.choice(f[3], STRENGTH_TYPES, "strgh_type"),
-                                   _none(speed), _none(reader.number(f[5], "fatigue")),
-                                   _none(reader.number(f[6], "training"))))
+        batch.strength_par.append(
+            (
+                i,
+                exp,
+                reader.choice(f[2], SIDES, "side_of_limb"),
+                reader.choice(f[3], STRENGTH_TYPES, "strgh_type"),
+                _none(speed),
+                _none(reader.number(f[5], "fatigue")),
+                _none(reader.number(f[6], "training")),
+            )
+        )
 
     def experiment(reader: _Reader, f: list[str]) -> tuple[int, int, str, str]:
         i = _person_id(reader, f[0], index)
@@ -260,18 +312,33 @@ def _read_strength(files: FlatFiles, index: dict[int, int], batch: PeopleBatch) 
             if (i, exp, axis) in seen:
                 reader.fail(f"duplicate axis {axis} for experiment {exp} of id_num {f[0]}")
             seen.add((i, exp, axis))
-            target.append((i, exp, *angles(reader, f[2:6], angle_unit), axis,
-                           *strengths(reader, f[7:9], strength_unit)))
+            target.append(
+                (
+                    i,
+                    exp,
+                    *angles(reader, f[2:6], angle_unit),
+                    axis,
+                    *strengths(reader, f[7:9], strength_unit),
+                )
+            )
     if files.elbow is not None:
         reader = _Reader(Path(files.elbow))
         seen = set()
-        for f in reader.records(11, "id, exp_num, elbow, shoulder x, y, z, wrist x, y, z, pstrgh, nstrgh"):
+        for f in reader.records(
+            11, "id, exp_num, elbow, shoulder x, y, z, wrist x, y, z, pstrgh, nstrgh"
+        ):
             i, exp, angle_unit, strength_unit = experiment(reader, f)
             if (i, exp) in seen:
                 reader.fail(f"duplicate experiment {exp} for id_num {f[0]}")
             seen.add((i, exp))
-            batch.elbow.append((i, exp, *angles(reader, f[2:9], angle_unit),
-                                *strengths(reader, f[9:11], strength_unit)))
+            batch.elbow.append(
+                (
+                    i,
+                    exp,
+                    *angles(reader, f[2:9], angle_unit),
+                    *strengths(reader, f[9:11], strength_unit),
+                )
+            )
 
 
 def _none(value: float):
@@ -289,6 +356,7 @@ def import_flat_files(conn: sqlite3.Connection, files: FlatFiles) -> int:
 
 # --- writing (the default data set generator) ------------------------------
 
+
 def _fmt(value) -> str:
     if value is None or value != value:
         return "999.0"
@@ -304,23 +372,31 @@ def write_flat_files(batch: PeopleBatch, directory: str | Path) -> list[Path]:
     for i, pid in enumerate(ids):
         lines["person"].append(
             f"{pid},{batch.name[i]},{batch.gender[i]},{_fmt(batch.stature[i])},{_fmt(batch.mass[i])},"
-            f"{batch.handedness[i] or '999.0'},{_fmt(batch.age[i])},{batch.source[i]}")
-    for key, names, values in (("girth", GIRTH_NAMES, batch.girth),
-                               ("joint_limits", JOINT_LIMIT_NAMES, batch.joint_limits),
-                               ("center_of_mass", CENTER_OF_MASS_NAMES, batch.center_of_mass)):
+            f"{batch.handedness[i] or '999.0'},{_fmt(batch.age[i])},{batch.source[i]}"
+        )
+    for key, names, values in (
+        ("girth", GIRTH_NAMES, batch.girth),
+        ("joint_limits", JOINT_LIMIT_NAMES, batch.joint_limits),
+        ("center_of_mass", CENTER_OF_MASS_NAMES, batch.center_of_mass),
+    ):
         if values is None:
             continue
         for i, pid in enumerate(ids):
             for r, name in enumerate(names):
                 if not np.all(np.isnan(values[i, r])):
-                    lines[key].append(f"{pid},{name.upper()}," + ",".join(_fmt(v) for v in values[i, r]))
+                    lines[key].append(
+                        f"{pid},{name.upper()}," + ",".join(_fmt(v) for v in values[i, r])
+                    )
     for i, exp, side, kind, speed, fatigue, training in batch.strength_par:
-        lines["strength_par"].append(f"{ids[i]},{exp},{side},{kind},{_fmt(speed)},{_fmt(fatigue)},"
-                                     f"{_fmt(training)},deg,N-m,deg/s")
+        lines["strength_par"].append(
+            f"{ids[i]},{exp},{side},{kind},{_fmt(speed)},{_fmt(fatigue)},"
+            f"{_fmt(training)},deg,N-m,deg/s"
+        )
     for key in ("shoulder", "elbow", "wrist"):
         for i, exp, *rest in getattr(batch, key):
-            lines[key].append(f"{ids[i]},{exp}," + ",".join(
-                v if isinstance(v, str) else _fmt(v) for v in rest))
+            lines[key].append(
+                f"{ids[i]},{exp}," + ",".join(v if isinstance(v, str) else _fmt(v) for v in rest)
+            )
     written = []
     for key, name in FILE_NAMES.items():
         if lines[key]:

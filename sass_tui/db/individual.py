@@ -10,8 +10,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from sass_tui.db.schema import (
-    CENTER_OF_MASS_NAMES, QUERY_TABLES, STRENGTH_PARAMETERS, STRENGTH_Q_COLUMNS, DatabaseError,
-    GIRTH_NAMES, JOINT_LIMIT_NAMES)
+    CENTER_OF_MASS_NAMES,
+    GIRTH_NAMES,
+    JOINT_LIMIT_NAMES,
+    QUERY_TABLES,
+    STRENGTH_PARAMETERS,
+    STRENGTH_Q_COLUMNS,
+    DatabaseError,
+)
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 
 
@@ -49,35 +55,68 @@ def _dicts(cursor: sqlite3.Cursor) -> list[dict]:
 
 
 def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
-    person = conn.execute("SELECT id_num, name, gender, stature, mass, handedness, age, source "
-                          "FROM person WHERE id_num = ?", (int(id_num),)).fetchone()
+    person = conn.execute(
+        "SELECT id_num, name, gender, stature, mass, handedness, age, source "
+        "FROM person WHERE id_num = ?",
+        (int(id_num),),
+    ).fetchone()
     if person is None:
         raise DatabaseError(f"no person with id {id_num}")
-    girth = conn.execute("SELECT seg_name, thickness, width, length, mass FROM girth "
-                         "WHERE id_num = ?", (id_num,)).fetchall()
-    joint_limits = conn.execute("SELECT seg_name, jlimit_x, jlimit_y, jlimit_z FROM joint_limits "
-                                "WHERE id_num = ?", (id_num,)).fetchall()
-    cmass = conn.execute("SELECT seg_name, cmass_x, cmass_y, cmass_z FROM center_of_mass "
-                         "WHERE id_num = ?", (id_num,)).fetchall()
-    strength_row = conn.execute(f"SELECT {', '.join(STRENGTH_PARAMETERS)} FROM strength_q "
-                                "WHERE id_num = ?", (id_num,)).fetchone()
+    girth = conn.execute(
+        "SELECT seg_name, thickness, width, length, mass FROM girth WHERE id_num = ?", (id_num,)
+    ).fetchall()
+    joint_limits = conn.execute(
+        "SELECT seg_name, jlimit_x, jlimit_y, jlimit_z FROM joint_limits WHERE id_num = ?",
+        (id_num,),
+    ).fetchall()
+    cmass = conn.execute(
+        "SELECT seg_name, cmass_x, cmass_y, cmass_z FROM center_of_mass WHERE id_num = ?", (id_num,)
+    ).fetchall()
+    strength_row = conn.execute(
+        f"SELECT {', '.join(STRENGTH_PARAMETERS)} FROM strength_q WHERE id_num = ?", (id_num,)
+    ).fetchone()
     if strength_row is not None:
         strength_row = strength_row + tuple(
-            (conn.execute(f"SELECT max FROM {table} WHERE id_num = ?", (id_num,)).fetchone() or (None,))[0]
-            for table in QUERY_TABLES["strength"].values())
+            (
+                conn.execute(f"SELECT max FROM {table} WHERE id_num = ?", (id_num,)).fetchone()
+                or (None,)
+            )[0]
+            for table in QUERY_TABLES["strength"].values()
+        )
 
     def nan(v):
         return np.nan if v is None else float(v)
 
     return Individual(
-        id_num=person[0], name=person[1], gender=person[2], stature=nan(person[3]),
-        mass=nan(person[4]), handedness=person[5], age=nan(person[6]), source=person[7],
-        groups={GIRTH: _fill(girth, GIRTH_NAMES), JOINT_LIMITS: _fill(joint_limits, JOINT_LIMIT_NAMES),
-                CENTER_OF_MASS: _fill(cmass, CENTER_OF_MASS_NAMES)},
+        id_num=person[0],
+        name=person[1],
+        gender=person[2],
+        stature=nan(person[3]),
+        mass=nan(person[4]),
+        handedness=person[5],
+        age=nan(person[6]),
+        source=person[7],
+        groups={
+            GIRTH: _fill(girth, GIRTH_NAMES),
+            JOINT_LIMITS: _fill(joint_limits, JOINT_LIMIT_NAMES),
+            CENTER_OF_MASS: _fill(cmass, CENTER_OF_MASS_NAMES),
+        },
         segment_masses={seg: row[-1] for seg, *row in girth if row[-1] is not None},
         strength=dict(zip(STRENGTH_Q_COLUMNS, strength_row)) if strength_row else {},
-        experiments=_dicts(conn.execute("SELECT * FROM strength_par WHERE id_num = ? ORDER BY exp_num", (id_num,))),
-        shoulder=_dicts(conn.execute("SELECT * FROM shoulder_strgh WHERE id_num = ? ORDER BY exp_num, axis", (id_num,))),
-        elbow=_dicts(conn.execute("SELECT * FROM elbow_strgh WHERE id_num = ? ORDER BY exp_num", (id_num,))),
-        wrist=_dicts(conn.execute("SELECT * FROM wrist_strgh WHERE id_num = ? ORDER BY exp_num, axis", (id_num,))),
+        experiments=_dicts(
+            conn.execute("SELECT * FROM strength_par WHERE id_num = ? ORDER BY exp_num", (id_num,))
+        ),
+        shoulder=_dicts(
+            conn.execute(
+                "SELECT * FROM shoulder_strgh WHERE id_num = ? ORDER BY exp_num, axis", (id_num,)
+            )
+        ),
+        elbow=_dicts(
+            conn.execute("SELECT * FROM elbow_strgh WHERE id_num = ? ORDER BY exp_num", (id_num,))
+        ),
+        wrist=_dicts(
+            conn.execute(
+                "SELECT * FROM wrist_strgh WHERE id_num = ? ORDER BY exp_num, axis", (id_num,)
+            )
+        ),
     )

@@ -27,8 +27,10 @@ SELECTED_LIST = "selected"
 _TABLES = {QUERY_LIST: "temp.query_list", SELECTED_LIST: "temp.selected_list"}
 # Selected people keep the order they were selected in (seq); the query list is in id order.
 _ORDER = {QUERY_LIST: "l.id_num", SELECTED_LIST: "l.seq"}
-_SELECT = ("p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source, "
-           "sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level")
+_SELECT = (
+    "p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source, "
+    "sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level"
+)
 
 
 class QueryLists:
@@ -38,12 +40,14 @@ class QueryLists:
         self.last_query: str | None = None
         conn.execute("PRAGMA temp_store = MEMORY")
         conn.execute("CREATE TEMP TABLE IF NOT EXISTS query_list (id_num INTEGER PRIMARY KEY)")
-        conn.execute("CREATE TEMP TABLE IF NOT EXISTS selected_list "
-                     "(seq INTEGER PRIMARY KEY, id_num INTEGER NOT NULL UNIQUE)")
+        conn.execute(
+            "CREATE TEMP TABLE IF NOT EXISTS selected_list "
+            "(seq INTEGER PRIMARY KEY, id_num INTEGER NOT NULL UNIQUE)"
+        )
         self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
 
     @classmethod
-    def open(cls, path: str | Path) -> "QueryLists":
+    def open(cls, path: str | Path) -> QueryLists:
         # The query runs in a worker thread; the lock makes sharing the connection safe.
         return cls(connect(path, check_same_thread=False))
 
@@ -58,8 +62,10 @@ class QueryLists:
         """Replace the query list with the people `text` finds; returns how many.
         A bad query raises QueryError and leaves both lists as they were."""
         compiled = compile_query(text)
-        sql = (f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
-               f"WHERE {compiled.where} AND p.id_num NOT IN (SELECT id_num FROM temp.selected_list)")
+        sql = (
+            f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
+            f"WHERE {compiled.where} AND p.id_num NOT IN (SELECT id_num FROM temp.selected_list)"
+        )
         with transaction(self.conn):
             self.conn.execute("DELETE FROM temp.query_list")
             count = self.conn.execute(sql, compiled.params).rowcount
@@ -69,27 +75,36 @@ class QueryLists:
 
     # --- reading -----------------------------------------------------------------
     def page(self, which: str, offset: int, limit: int = 25) -> list[dict]:
-        sql = (f"SELECT {_SELECT} FROM {_TABLES[which]} l JOIN person p ON p.id_num = l.id_num "
-               f"LEFT JOIN strength_q sq ON sq.id_num = l.id_num "
-               f"ORDER BY {_ORDER[which]} LIMIT ? OFFSET ?")
-        return [dict(zip(LIST_FIELDS, row))
-                for row in self.conn.execute(sql, (int(limit), int(offset)))]
+        sql = (
+            f"SELECT {_SELECT} FROM {_TABLES[which]} l JOIN person p ON p.id_num = l.id_num "
+            f"LEFT JOIN strength_q sq ON sq.id_num = l.id_num "
+            f"ORDER BY {_ORDER[which]} LIMIT ? OFFSET ?"
+        )
+        return [
+            dict(zip(LIST_FIELDS, row)) for row in self.conn.execute(sql, (int(limit), int(offset)))
+        ]
 
     def selected_id(self, index: int) -> int | None:
         """The id of the index-th (0-based) person in the selected list."""
-        row = self.conn.execute("SELECT id_num FROM temp.selected_list ORDER BY seq LIMIT 1 OFFSET ?",
-                                (int(index),)).fetchone()
+        row = self.conn.execute(
+            "SELECT id_num FROM temp.selected_list ORDER BY seq LIMIT 1 OFFSET ?", (int(index),)
+        ).fetchone()
         return None if row is None else row[0]
 
     # --- moving people between the lists ---------------------------------------------
     def select_one(self, id_num: int) -> bool:
         """Move one person from the query list to the end of the selected list."""
         with transaction(self.conn):
-            gone = self.conn.execute("DELETE FROM temp.query_list WHERE id_num = ?",
-                                     (int(id_num),)).rowcount
-            added = self.conn.execute(
-                "INSERT OR IGNORE INTO temp.selected_list (id_num) VALUES (?)",
-                (int(id_num),)).rowcount if gone else 0
+            gone = self.conn.execute(
+                "DELETE FROM temp.query_list WHERE id_num = ?", (int(id_num),)
+            ).rowcount
+            added = (
+                self.conn.execute(
+                    "INSERT OR IGNORE INTO temp.selected_list (id_num) VALUES (?)", (int(id_num),)
+                ).rowcount
+                if gone
+                else 0
+            )
         self._counts[QUERY_LIST] -= gone
         self._counts[SELECTED_LIST] += added
         return bool(gone)
@@ -97,8 +112,10 @@ class QueryLists:
     def select_all(self) -> int:
         """Move the whole query list to the selected list; returns how many moved."""
         with transaction(self.conn):
-            moved = self.conn.execute("INSERT OR IGNORE INTO temp.selected_list (id_num) "
-                                      "SELECT id_num FROM temp.query_list ORDER BY id_num").rowcount
+            moved = self.conn.execute(
+                "INSERT OR IGNORE INTO temp.selected_list (id_num) "
+                "SELECT id_num FROM temp.query_list ORDER BY id_num"
+            ).rowcount
             self.conn.execute("DELETE FROM temp.query_list")
         self._counts[QUERY_LIST] = 0
         self._counts[SELECTED_LIST] += moved
@@ -106,8 +123,9 @@ class QueryLists:
 
     def delete_one(self, which: str, id_num: int) -> bool:
         with transaction(self.conn):
-            gone = self.conn.execute(f"DELETE FROM {_TABLES[which]} WHERE id_num = ?",
-                                     (int(id_num),)).rowcount
+            gone = self.conn.execute(
+                f"DELETE FROM {_TABLES[which]} WHERE id_num = ?", (int(id_num),)
+            ).rowcount
         self._counts[which] -= gone
         return bool(gone)
 

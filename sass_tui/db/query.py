@@ -18,13 +18,24 @@ from functools import lru_cache
 
 from lark import Lark, Token, Transformer, v_args
 from lark.exceptions import (
-    UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken, VisitError)
+    UnexpectedCharacters,
+    UnexpectedEOF,
+    UnexpectedInput,
+    UnexpectedToken,
+    VisitError,
+)
 
 from sass_tui.db.schema import (
-    CENTER_OF_MASS_NAMES, GENDERS, GIRTH_NAMES, HANDEDNESS, JOINT_LIMIT_NAMES, QUERY_TABLES,
-    STRENGTH_TYPES)
+    CENTER_OF_MASS_NAMES,
+    GIRTH_NAMES,
+    JOINT_LIMIT_NAMES,
+    QUERY_TABLES,
+)
+from sass_tui.model.errors import SassError
 from sass_tui.model.strength import MOTION_NAMES
 from sass_tui.model.units import DISPLAY, UnitError, convert, unit_name
+from sass_tui.model.vocabulary import GENDERS, STRENGTH_TYPES
+from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 
 GRAMMAR = r"""
 ?start: or_expr
@@ -46,8 +57,18 @@ UNIT: /(ft|lbf?|N|n)[-·*]?(lbf?|lbs|m|ft)\b|deg\/s|rad\/s|°\/s|[A-Za-z°"]+/
 %ignore WS
 """
 
-_OPERATORS = {"<": "<", ">": ">", "<=": "<=", ">=": ">=", "=": "=", "!=": "!=", "<>": "!=",
-              "≤": "<=", "≥": ">=", "≠": "!="}
+_OPERATORS = {
+    "<": "<",
+    ">": ">",
+    "<=": "<=",
+    ">=": ">=",
+    "=": "=",
+    "!=": "!=",
+    "<>": "!=",
+    "≤": "<=",
+    "≥": ">=",
+    "≠": "!=",
+}
 
 # field -> (table alias, column, stored unit or None, allowed words or None)
 _GLOBAL_FIELDS = {
@@ -70,7 +91,7 @@ _GROUPS = {
 }
 
 
-class QueryError(ValueError):
+class QueryError(ValueError, SassError):
     """A query that cannot be run; `column` is 1-based in the query text."""
 
     def __init__(self, message: str, text: str = "", column: int | None = None):
@@ -99,8 +120,10 @@ class CompiledQuery:
     tables: tuple[tuple[str, str], ...]  # (alias, table) joined to person p
 
     def from_clause(self) -> str:
-        joins = "".join(f" LEFT JOIN {table} {alias} ON {alias}.id_num = p.id_num"
-                        for alias, table in self.tables)
+        joins = "".join(
+            f" LEFT JOIN {table} {alias} ON {alias}.id_num = p.id_num"
+            for alias, table in self.tables
+        )
         return f"person p{joins}"
 
 
@@ -117,10 +140,16 @@ class _Compiler(Transformer):
         raise QueryError(message, self.text, getattr(token, "column", None))
 
     def or_expr(self, items):
-        return ("(" + " OR ".join(sql for sql, _ in items) + ")", [p for _, ps in items for p in ps])
+        return (
+            "(" + " OR ".join(sql for sql, _ in items) + ")",
+            [p for _, ps in items for p in ps],
+        )
 
     def and_expr(self, items):
-        return ("(" + " AND ".join(sql for sql, _ in items) + ")", [p for _, ps in items for p in ps])
+        return (
+            "(" + " AND ".join(sql for sql, _ in items) + ")",
+            [p for _, ps in items for p in ps],
+        )
 
     def field(self, names):
         return list(names)
@@ -140,7 +169,9 @@ class _Compiler(Transformer):
         kind, token, unit_token = value
         if words is not None:
             if kind != "word" or token.lower() not in words:
-                self._fail(f"{'.'.join(names)} is one of {', '.join(words)}, not {str(token)!r}", token)
+                self._fail(
+                    f"{'.'.join(names)} is one of {', '.join(words)}, not {str(token)!r}", token
+                )
             if sql_op not in ("=", "!="):
                 self._fail(f"{'.'.join(names)} can only be compared with = or !=", op)
             return (f"{alias}.{column} {sql_op} ?", [token.lower()])
@@ -149,7 +180,9 @@ class _Compiler(Transformer):
         number = float(token)
         if unit_token is not None:
             if not unit:
-                self._fail(f"{'.'.join(names)} takes no unit, found {str(unit_token)!r}", unit_token)
+                self._fail(
+                    f"{'.'.join(names)} takes no unit, found {str(unit_token)!r}", unit_token
+                )
             try:
                 number = convert(number, unit_name(str(unit_token)), unit)
             except UnitError as exc:
@@ -164,41 +197,58 @@ class _Compiler(Transformer):
                 alias = self._alias("strength_q")
             return alias, column, unit, words
         if head not in _GROUPS:
-            self._fail(f"unknown field {str(names[0])!r}; expected one of "
-                       f"{', '.join(_GLOBAL_FIELDS)} or girth.SEGMENT.x|y|z, "
-                       "joint_limit.JOINT.x|y|z, center_of_mass.SEGMENT.x|y|z, strength.MOTION.max",
-                       names[0])
+            self._fail(
+                f"unknown field {str(names[0])!r}; expected one of "
+                f"{', '.join(_GLOBAL_FIELDS)} or girth.SEGMENT.x|y|z, "
+                "joint_limit.JOINT.x|y|z, center_of_mass.SEGMENT.x|y|z, strength.MOTION.max",
+                names[0],
+            )
         group, rows, unit, what = _GROUPS[head]
         if len(names) != 3:
-            shape = "strength.MOTION.max" if head == "strength" else f"{head}.{what.upper().replace(' ', '_')}.x|y|z"
+            shape = (
+                "strength.MOTION.max"
+                if head == "strength"
+                else f"{head}.{what.upper().replace(' ', '_')}.x|y|z"
+            )
             self._fail(f"expected {shape}", names[0])
         row, axis = names[1].lower(), names[2].lower()
         if row not in rows:
-            self._fail(f"unknown {what} {str(names[1])!r}; expected one of {', '.join(rows)}", names[1])
+            self._fail(
+                f"unknown {what} {str(names[1])!r}; expected one of {', '.join(rows)}", names[1]
+            )
         expected_axes = ("max",) if head == "strength" else ("x", "y", "z")
         if axis not in expected_axes:
-            self._fail(f"expected {' or '.join(expected_axes)} after {head}.{row}, found "
-                       f"{str(names[2])!r}", names[2])
+            self._fail(
+                f"expected {' or '.join(expected_axes)} after {head}.{row}, found "
+                f"{str(names[2])!r}",
+                names[2],
+            )
         return self._alias(QUERY_TABLES[group][row]), axis, unit, None
 
 
 def compile_query(text: str) -> CompiledQuery:
     """Parse and check a query; raises QueryError pointing at the bad token."""
     if not text.strip():
-        raise QueryError("the query is empty; expected e.g. gender = male AND stature > 180 cm", text, 1)
+        raise QueryError(
+            "the query is empty; expected e.g. gender = male AND stature > 180 cm", text, 1
+        )
     try:
         tree = parser().parse(text)
     except UnexpectedCharacters as exc:
-        raise QueryError(f"unexpected character {text[exc.pos_in_stream]!r}", text, exc.column) from None
+        raise QueryError(
+            f"unexpected character {text[exc.pos_in_stream]!r}", text, exc.column
+        ) from None
     except UnexpectedEOF:
         raise QueryError("the query ends too early", text, len(text) + 1) from None
     except UnexpectedToken as exc:
         token = exc.token
         if token.type == "$END":
-            raise QueryError("the query ends too early; expected "
-                             + _expected(exc.expected), text, len(text) + 1) from None
-        raise QueryError(f"unexpected {str(token)!r}; expected " + _expected(exc.expected),
-                         text, token.column) from None
+            raise QueryError(
+                "the query ends too early; expected " + _expected(exc.expected), text, len(text) + 1
+            ) from None
+        raise QueryError(
+            f"unexpected {str(token)!r}; expected " + _expected(exc.expected), text, token.column
+        ) from None
     except UnexpectedInput as exc:  # pragma: no cover - other lark errors
         raise QueryError(str(exc), text, getattr(exc, "column", None)) from None
     compiler = _Compiler(text)
@@ -208,13 +258,26 @@ def compile_query(text: str) -> CompiledQuery:
         if isinstance(exc.orig_exc, QueryError):
             raise exc.orig_exc from None
         raise
-    return CompiledQuery(text, where, tuple(params),
-                         tuple((alias, table) for table, alias in compiler.tables.items()))
+    return CompiledQuery(
+        text,
+        where,
+        tuple(params),
+        tuple((alias, table) for table, alias in compiler.tables.items()),
+    )
 
 
-_TOKEN_WORDS = {"_AND": "AND", "_OR": "OR", "OP": "a comparison (< > <= >= = !=)", "NAME": "a name",
-                "NUMBER": "a number", "UNIT": "a unit", "LPAR": "(", "RPAR": ")", "DOT": ".",
-                "$END": "the end"}
+_TOKEN_WORDS = {
+    "_AND": "AND",
+    "_OR": "OR",
+    "OP": "a comparison (< > <= >= = !=)",
+    "NAME": "a name",
+    "NUMBER": "a number",
+    "UNIT": "a unit",
+    "LPAR": "(",
+    "RPAR": ")",
+    "DOT": ".",
+    "$END": "the end",
+}
 
 
 def _expected(expected) -> str:
@@ -225,8 +288,10 @@ def _expected(expected) -> str:
 
 PERSON_FIELDS = ("id", "name", "gender", "mass", "stature", "handedness", "age", "source")
 LIST_FIELDS = PERSON_FIELDS + ("strength_type", "motion_speed", "training_level", "fatigue_level")
-_SELECT = ("p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source, "
-           "sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level")
+_SELECT = (
+    "p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source, "
+    "sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level"
+)
 
 
 @dataclass
@@ -241,11 +306,15 @@ class Query:
         return self.conn.execute(sql, self.compiled.params).fetchone()[0]
 
     def _rows(self, extra: str, params: tuple) -> list[dict]:
-        sql = (f"SELECT {_SELECT} FROM {self.compiled.from_clause()} "
-               f"LEFT JOIN strength_q sq ON sq.id_num = p.id_num "
-               f"WHERE {self.compiled.where}{extra}")
-        return [dict(zip(LIST_FIELDS, row))
-                for row in self.conn.execute(sql, self.compiled.params + params)]
+        sql = (
+            f"SELECT {_SELECT} FROM {self.compiled.from_clause()} "
+            f"LEFT JOIN strength_q sq ON sq.id_num = p.id_num "
+            f"WHERE {self.compiled.where}{extra}"
+        )
+        return [
+            dict(zip(LIST_FIELDS, row))
+            for row in self.conn.execute(sql, self.compiled.params + params)
+        ]
 
     def page(self, offset: int = 0, limit: int = 25) -> list[dict]:
         """People offset .. offset+limit-1 in id order (the query list's page)."""

@@ -29,15 +29,18 @@ from pathlib import Path
 
 import numpy as np
 
+from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
-    CENTER_OF_MASS_ROWS, FIG_PREFIX, GIRTH_ROWS, JOINT_LIMIT_ROWS, MASS_FRACTIONS)
+    CENTER_OF_MASS_ROWS,
+    FIG_PREFIX,
+    GIRTH_ROWS,
+    JOINT_LIMIT_ROWS,
+    MASS_FRACTIONS,
+)
 from sass_tui.model.strength import MOTION_NAMES
+from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS
 
 SCHEMA_VERSION = "1"
-GENDERS = ("male", "female")
-HANDEDNESS = ("right", "left", "either")
-SIDES = ("right", "left")
-STRENGTH_TYPES = ("isometric", "isokinetic", "isotonic")
 AXES = ("x", "y", "z")
 
 GIRTH_NAMES = tuple(r.name for r in GIRTH_ROWS)
@@ -45,32 +48,45 @@ JOINT_LIMIT_NAMES = tuple(r.name for r in JOINT_LIMIT_ROWS)
 CENTER_OF_MASS_NAMES = tuple(r.name for r in CENTER_OF_MASS_ROWS)
 # Figure 12 also lists segments that carry only a mass (upper torso, hips,
 # sterna, top of head); the girth relation keeps them, queries do not see them.
-MASS_ONLY_SEGMENTS = ("upper_torso", "right_hip", "left_hip", "right_sternum",
-                      "left_sternum", "top_head")
+MASS_ONLY_SEGMENTS = (
+    "upper_torso",
+    "right_hip",
+    "left_hip",
+    "right_sternum",
+    "left_sternum",
+    "top_head",
+)
 
 # Which experiment column holds which motion: positive / negative direction of
 # each axis (report §12.3.3 pstrgh / nstrgh; axis meanings as report §10.3's
 # joint-limit table: x abduction, y flexion, z rotation / pronation).
-SHOULDER_MOTIONS = {"x": ("shoulder_abduction", "shoulder_adduction"),
-                    "y": ("shoulder_flexion", "shoulder_extension"),
-                    "z": ("shoulder_medial_rotation", "shoulder_lateral_rotation")}
+SHOULDER_MOTIONS = {
+    "x": ("shoulder_abduction", "shoulder_adduction"),
+    "y": ("shoulder_flexion", "shoulder_extension"),
+    "z": ("shoulder_medial_rotation", "shoulder_lateral_rotation"),
+}
 ELBOW_MOTIONS = ("elbow_flexion", "elbow_extension")
-WRIST_MOTIONS = {"x": ("wrist_radial_deviation", "wrist_ulnar_deviation"),
-                 "y": ("wrist_flexion", "wrist_extension"),
-                 "z": ("forearm_pronation", "forearm_supination")}
+WRIST_MOTIONS = {
+    "x": ("wrist_radial_deviation", "wrist_ulnar_deviation"),
+    "y": ("wrist_flexion", "wrist_extension"),
+    "z": ("forearm_pronation", "forearm_supination"),
+}
 
 _MASS_FRACTION = dict(MASS_FRACTIONS)
 # Appendix K fraction of each girth row (0 for eyes and eye location).
 GIRTH_MASS_FRACTIONS = np.array(
-    [_MASS_FRACTION.get(f"{FIG_PREFIX[name]}mass", 0.0) if name != "eye_location" else np.nan
-     for name in GIRTH_NAMES])
+    [
+        _MASS_FRACTION.get(f"{FIG_PREFIX[name]}mass", 0.0) if name != "eye_location" else np.nan
+        for name in GIRTH_NAMES
+    ]
+)
 
 
-class DatabaseError(ValueError):
+class DatabaseError(ValueError, SassError):
     """A database that cannot be used, or a write that was refused (nothing changed)."""
 
 
-STRENGTH_PARAMETERS = ["strength_type", "motion_speed", "training_level", "fatigue_level"]
+STRENGTH_PARAMETERS = list(EXPERIMENT_PARAMETERS)
 STRENGTH_Q_COLUMNS = STRENGTH_PARAMETERS + [f"{m}_max" for m in MOTION_NAMES]
 
 # query-table name of each (group, row); the axis columns are x, y, z (max for strength)
@@ -86,9 +102,12 @@ def _ddl() -> str:
     axis_tables = "".join(
         f"CREATE TABLE {table} (id_num INTEGER PRIMARY KEY, x REAL, y REAL, z REAL);\n"
         for group in ("girth", "joint_limits", "center_of_mass")
-        for table in QUERY_TABLES[group].values())
-    strength_tables = "".join(f"CREATE TABLE {table} (id_num INTEGER PRIMARY KEY, max REAL);\n"
-                              for table in QUERY_TABLES["strength"].values())
+        for table in QUERY_TABLES[group].values()
+    )
+    strength_tables = "".join(
+        f"CREATE TABLE {table} (id_num INTEGER PRIMARY KEY, max REAL);\n"
+        for table in QUERY_TABLES["strength"].values()
+    )
     return f"""
 CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
 -- person: stature cm, mass kg, age years.  source says where the data come from;
@@ -174,13 +193,25 @@ CREATE TABLE strength_q (
 {axis_tables}{strength_tables}"""
 
 
-RELATIONS = ("person", "girth", "center_of_mass", "joint_limits", "strength_par",
-             "shoulder_strgh", "elbow_strgh", "wrist_strgh")
-PERSON_TABLES = RELATIONS[1:] + ("strength_q",) + tuple(
-    table for tables in QUERY_TABLES.values() for table in tables.values())
+RELATIONS = (
+    "person",
+    "girth",
+    "center_of_mass",
+    "joint_limits",
+    "strength_par",
+    "shoulder_strgh",
+    "elbow_strgh",
+    "wrist_strgh",
+)
+PERSON_TABLES = (
+    RELATIONS[1:]
+    + ("strength_q",)
+    + tuple(table for tables in QUERY_TABLES.values() for table in tables.values())
+)
 
 
 # --- where the database lives ---------------------------------------------
+
 
 def default_db_path() -> Path:
     """$SASS_DB, else $XDG_DATA_HOME/sass/sass.db (~/.local/share/sass/sass.db)."""
@@ -190,12 +221,15 @@ def default_db_path() -> Path:
     return Path(base) / "sass" / "sass.db"
 
 
-def connect(path: str | Path, *, create: bool = False,
-            check_same_thread: bool = True) -> sqlite3.Connection:
+def connect(
+    path: str | Path, *, create: bool = False, check_same_thread: bool = True
+) -> sqlite3.Connection:
     """Open a database (autocommit mode: writers use transaction())."""
     path = Path(path)
     if not path.exists() and not create:
-        raise DatabaseError(f"{path}: no database there (create it with `sass db init --db {path}`)")
+        raise DatabaseError(
+            f"{path}: no database there (create it with `sass db init --db {path}`)"
+        )
     if create:
         path.parent.mkdir(parents=True, exist_ok=True)
     conn = sqlite3.connect(str(path), isolation_level=None, check_same_thread=check_same_thread)
@@ -205,7 +239,8 @@ def connect(path: str | Path, *, create: bool = False,
     conn.execute("PRAGMA mmap_size = 17179869184")
     try:
         has_schema = conn.execute(
-            "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'meta'").fetchone()
+            "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'meta'"
+        ).fetchone()
     except sqlite3.DatabaseError as exc:
         conn.close()
         raise DatabaseError(f"{path}: not a sass database ({exc})") from None
@@ -223,8 +258,10 @@ def create_schema(conn: sqlite3.Connection) -> None:
             if statement.strip():
                 conn.execute(statement)
         conn.execute("INSERT INTO meta VALUES ('schema_version', ?)", (SCHEMA_VERSION,))
-        conn.execute("INSERT INTO meta VALUES ('units', "
-                     "'length cm, mass kg, angle deg, strength N-m, speed deg/s, age years')")
+        conn.execute(
+            "INSERT INTO meta VALUES ('units', "
+            "'length cm, mass kg, angle deg, strength N-m, speed deg/s, age years')"
+        )
 
 
 class transaction:
@@ -246,10 +283,14 @@ class transaction:
 
 
 def row_counts(conn: sqlite3.Connection) -> dict[str, int]:
-    return {t: conn.execute(f"SELECT count(*) FROM {t}").fetchone()[0] for t in PERSON_TABLES + ("person",)}
+    return {
+        t: conn.execute(f"SELECT count(*) FROM {t}").fetchone()[0]
+        for t in PERSON_TABLES + ("person",)
+    }
 
 
 # --- bulk storage ---------------------------------------------------------
+
 
 @dataclass
 class PeopleBatch:
@@ -273,9 +314,13 @@ class PeopleBatch:
     joint_limits: np.ndarray | None = None  # (n, 40, 3)
     center_of_mass: np.ndarray | None = None  # (n, 21, 3)
     extra_girth: list[tuple] = field(default_factory=list)  # (i, seg, x, y, z, mass)
-    strength_par: list[tuple] = field(default_factory=list)  # (i, exp, side, type, speed, fatigue, training)
+    strength_par: list[tuple] = field(
+        default_factory=list
+    )  # (i, exp, side, type, speed, fatigue, training)
     shoulder: list[tuple] = field(default_factory=list)  # (i, exp, ax, ay, az, elbow, axis, p, n)
-    elbow: list[tuple] = field(default_factory=list)  # (i, exp, elbow, sx, sy, sz, wx, wy, wz, p, n)
+    elbow: list[tuple] = field(
+        default_factory=list
+    )  # (i, exp, elbow, sx, sy, sz, wx, wy, wz, p, n)
     wrist: list[tuple] = field(default_factory=list)  # (i, exp, wx, wy, wz, elbow, axis, p, n)
 
     def __len__(self) -> int:
@@ -301,8 +346,11 @@ def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iter
     person, row = np.nonzero(present)
     id_array = np.asarray(ids, dtype=np.int64)
     name_array = np.asarray(names, dtype=object)
-    return zip(id_array[person].tolist(), name_array[row].tolist(),
-               *[_nullable(values[person, row, k]) for k in range(values.shape[2])])
+    return zip(
+        id_array[person].tolist(),
+        name_array[row].tolist(),
+        *[_nullable(values[person, row, k]) for k in range(values.shape[2])],
+    )
 
 
 def delete_people(conn: sqlite3.Connection, ids: Sequence[int]) -> None:
@@ -321,12 +369,23 @@ def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool 
         delete_people(conn, ids)
     conn.executemany(
         "INSERT INTO person VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
-        zip(ids, batch.name, batch.gender, _nullable(batch.stature), _nullable(batch.mass),
-            batch.handedness, _nullable(batch.age), batch.source, batch.source_key))
+        zip(
+            ids,
+            batch.name,
+            batch.gender,
+            _nullable(batch.stature),
+            _nullable(batch.mass),
+            batch.handedness,
+            _nullable(batch.age),
+            batch.source,
+            batch.source_key,
+        ),
+    )
     for table, names, values, width in (
-            ("girth", GIRTH_NAMES, batch.girth, 4),
-            ("joint_limits", JOINT_LIMIT_NAMES, batch.joint_limits, 3),
-            ("center_of_mass", CENTER_OF_MASS_NAMES, batch.center_of_mass, 3)):
+        ("girth", GIRTH_NAMES, batch.girth, 4),
+        ("joint_limits", JOINT_LIMIT_NAMES, batch.joint_limits, 3),
+        ("center_of_mass", CENTER_OF_MASS_NAMES, batch.center_of_mass, 3),
+    ):
         if values is None:
             continue
         marks = ", ".join(["?"] * (width + 2))
@@ -335,12 +394,18 @@ def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool 
         for k, name in enumerate(names):
             cells = values[:, k, :3]
             present = np.flatnonzero(~np.all(np.isnan(cells), axis=1))
-            conn.executemany(f"INSERT INTO {QUERY_TABLES[table][name]} VALUES (?, ?, ?, ?)",
-                             ((i, *row) for i, row in zip(id_array[present].tolist(),
-                                                          _nullable(cells[present]))))
+            conn.executemany(
+                f"INSERT INTO {QUERY_TABLES[table][name]} VALUES (?, ?, ?, ?)",
+                (
+                    (i, *row)
+                    for i, row in zip(id_array[present].tolist(), _nullable(cells[present]))
+                ),
+            )
     if batch.extra_girth:
-        conn.executemany("INSERT INTO girth VALUES (?, ?, ?, ?, ?, ?)",
-                         ((ids[i], *rest) for i, *rest in batch.extra_girth))
+        conn.executemany(
+            "INSERT INTO girth VALUES (?, ?, ?, ?, ?, ?)",
+            ((ids[i], *rest) for i, *rest in batch.extra_girth),
+        )
     _store_strength(conn, ids, batch)
 
 
@@ -349,21 +414,31 @@ def _store_strength(conn: sqlite3.Connection, ids: list[int], batch: PeopleBatch
         return
     conn.executemany(
         "INSERT INTO strength_par VALUES (?, ?, ?, ?, ?, ?, ?, 'deg', 'N-m', 'deg/s')",
-        ((ids[i], *rest) for i, *rest in batch.strength_par))
-    conn.executemany("INSERT INTO shoulder_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                     ((ids[i], *rest) for i, *rest in batch.shoulder))
-    conn.executemany("INSERT INTO elbow_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                     ((ids[i], *rest) for i, *rest in batch.elbow))
-    conn.executemany("INSERT INTO wrist_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
-                     ((ids[i], *rest) for i, *rest in batch.wrist))
+        ((ids[i], *rest) for i, *rest in batch.strength_par),
+    )
+    conn.executemany(
+        "INSERT INTO shoulder_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+        ((ids[i], *rest) for i, *rest in batch.shoulder),
+    )
+    conn.executemany(
+        "INSERT INTO elbow_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+        ((ids[i], *rest) for i, *rest in batch.elbow),
+    )
+    conn.executemany(
+        "INSERT INTO wrist_strgh VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+        ((ids[i], *rest) for i, *rest in batch.wrist),
+    )
     summary = strength_summary(batch.strength_par, batch.shoulder, batch.elbow, batch.wrist, ids)
     width = len(STRENGTH_PARAMETERS)
-    conn.executemany(f"INSERT INTO strength_q VALUES ({', '.join(['?'] * (width + 1))})",
-                     (row[:width + 1] for row in summary))
+    conn.executemany(
+        f"INSERT INTO strength_q VALUES ({', '.join(['?'] * (width + 1))})",
+        (row[: width + 1] for row in summary),
+    )
     for k, motion in enumerate(MOTION_NAMES):
-        conn.executemany(f"INSERT INTO {QUERY_TABLES['strength'][motion]} VALUES (?, ?)",
-                         ((row[0], row[width + 1 + k]) for row in summary
-                          if row[width + 1 + k] is not None))
+        conn.executemany(
+            f"INSERT INTO {QUERY_TABLES['strength'][motion]} VALUES (?, ?)",
+            ((row[0], row[width + 1 + k]) for row in summary if row[width + 1 + k] is not None),
+        )
 
 
 def strength_summary(par, shoulder, elbow, wrist, ids: list[int]) -> list[tuple]:

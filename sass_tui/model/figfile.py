@@ -14,18 +14,29 @@ from functools import lru_cache
 from pathlib import Path
 
 from sass_tui.model.atomic import write_text_atomic
+from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
-    AXES, CENTER_OF_MASS, DEFAULT_SCALE, FIG_PREFIX, FIG_SCALE, GIRTH, GROUP_TITLES, JOINT_LIMITS, ROWS,
-    center_of_mass_variable, joint_limit_variable)
+    AXES,
+    CENTER_OF_MASS,
+    DEFAULT_SCALE,
+    FIG_PREFIX,
+    FIG_SCALE,
+    GIRTH,
+    GROUP_TITLES,
+    JOINT_LIMITS,
+    ROWS,
+    center_of_mass_variable,
+    joint_limit_variable,
+)
 
 ARCHIVES = {"skinny": "skinny.a", "polybody": "polybody.a"}
 
 
-class FigureIncompleteError(ValueError):
+class FigureIncompleteError(ValueError, SassError):
     """Create Figure needs girth, joint limits and center of mass loaded."""
 
 
-class FigParseError(ValueError):
+class FigParseError(ValueError, SassError):
     """A .fig file that does not follow the PEABODY assignment syntax."""
 
 
@@ -37,6 +48,7 @@ class FigFile:
 
 
 # --- writing -------------------------------------------------------------
+
 
 def girth_variables(figure) -> list[tuple[str, float, str]]:
     """Segment scale variables (cm) and flooroffset, in appendix F order."""
@@ -73,7 +85,8 @@ def render_fig(figure, extra_sections: list[tuple[str, list[tuple[str, float, st
     missing = figure.missing_groups()
     if missing:
         raise FigureIncompleteError(
-            f"cannot create a figure: {', '.join(missing)} not loaded for {figure.gender}")
+            f"cannot create a figure: {', '.join(missing)} not loaded for {figure.gender}"
+        )
     groups = figure.groups
     who = figure.person or figure.population
     lines = [
@@ -84,12 +97,16 @@ def render_fig(figure, extra_sections: list[tuple[str, list[tuple[str, float, st
         f"mass {figure.output_mass():.2f} kg, stature "
         f"{'not measured' if math.isnan(figure.stature) else f'{figure.stature:.1f} cm'} */",
     ]
-    filled = {GROUP_TITLES[g]: int(figure.output_values(g)[1].sum())
-              for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)}
+    filled = {
+        GROUP_TITLES[g]: int(figure.output_values(g)[1].sum())
+        for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)
+    }
     if any(filled.values()) or math.isnan(figure.mass):
         counts = ", ".join(f"{what} {n}" for what, n in filled.items() if n)
-        lines.append(f"/* not measured for {who}, taken from the population at the group "
-                     f"percentile: {counts or 'none'}{'; total mass' if math.isnan(figure.mass) else ''} */")
+        lines.append(
+            f"/* not measured for {who}, taken from the population at the group "
+            f"percentile: {counts or 'none'}{'; total mass' if math.isnan(figure.mass) else ''} */"
+        )
     lines.append("")
     sections = [
         ("segment dimensions", girth_variables(figure)),
@@ -149,17 +166,25 @@ def _parser():
 
 
 def parse_fig(text: str, name: str = "<text>") -> FigFile:
-    from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput, UnexpectedToken
+    from lark.exceptions import (
+        UnexpectedCharacters,
+        UnexpectedEOF,
+        UnexpectedInput,
+        UnexpectedToken,
+    )
 
     try:
         tree = _parser().parse(text)
     except UnexpectedToken as exc:
         found = "end of file" if exc.token.type == "$END" else repr(str(exc.token))
         expected = ", ".join(sorted(_describe(t) for t in exc.expected))
-        raise FigParseError(f"{name}:{exc.line}:{exc.column}: found {found}; expected {expected}") from None
+        raise FigParseError(
+            f"{name}:{exc.line}:{exc.column}: found {found}; expected {expected}"
+        ) from None
     except UnexpectedCharacters as exc:
-        raise FigParseError(f"{name}:{exc.line}:{exc.column}: unexpected character "
-                            f"{text[exc.pos_in_stream]!r}") from None
+        raise FigParseError(
+            f"{name}:{exc.line}:{exc.column}: unexpected character {text[exc.pos_in_stream]!r}"
+        ) from None
     except UnexpectedEOF:
         raise FigParseError(f"{name}: the file ends in the middle of a statement") from None
     except UnexpectedInput as exc:  # pragma: no cover - other lark errors
@@ -185,7 +210,16 @@ def read_fig(path: str | Path) -> FigFile:
 
 
 def _describe(terminal: str) -> str:
-    return {"NAME": "a variable name", "NUMBER": "a number", "UNIT": "a unit",
-            "SEMICOLON": "';'", "EQUAL": "'='", "STRING": "a quoted file name",
-            "FIGURE": "'figure'", "LSQB": "'['", "RSQB": "']'", "LPAR": "'('",
-            "RPAR": "')'"}.get(terminal, terminal)
+    return {
+        "NAME": "a variable name",
+        "NUMBER": "a number",
+        "UNIT": "a unit",
+        "SEMICOLON": "';'",
+        "EQUAL": "'='",
+        "STRING": "a quoted file name",
+        "FIGURE": "'figure'",
+        "LSQB": "'['",
+        "RSQB": "']'",
+        "LPAR": "'('",
+        "RPAR": "')'",
+    }.get(terminal, terminal)

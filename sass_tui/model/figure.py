@@ -14,24 +14,28 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from sass_tui.model import datasets
+from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
-    CENTER_OF_MASS, GIRTH, GLOBAL, GROUP_TITLES, GROUPS, JOINT_LIMITS, MASS_FRACTIONS, ROWS)
+    CENTER_OF_MASS,
+    GIRTH,
+    GLOBAL,
+    GROUP_TITLES,
+    GROUPS,
+    JOINT_LIMITS,
+    MASS_FRACTIONS,
+    ROWS,
+)
 from sass_tui.model.percentile import check_percentile, percentile_of, value_at
 from sass_tui.model.popfile import PopulationData, read_population_file
 from sass_tui.model.units import GROUP_UNITS
-
-FIGURE_TYPES = ("skinny", "polybody")
-STRENGTH_TYPES = ("isometric", "isokinetic", "isotonic")
-HANDEDNESS = ("right", "left")
-GENDERS = ("male", "female")
-
+from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS, HANDEDNESS, STRENGTH_TYPES
 
 # One sequence for every undoable edit, so that undo can take the newest one
 # whichever object (figure, strength page) holds it.
 EDIT_SEQUENCE = itertools.count()
 
 
-class FigureError(ValueError):
+class FigureError(ValueError, SassError):
     """An edit the model refuses; the figure is unchanged."""
 
 
@@ -80,12 +84,14 @@ class Figure:
 
     # --- construction ----------------------------------------------------
     @classmethod
-    def default(cls, gender: str = "male") -> "Figure":
+    def default(cls, gender: str = "male") -> Figure:
         """The NASA crew population of the shipped data sets, all at the 50th."""
         figure = cls(gender=_check_choice(gender, GENDERS, "gender"))
         figure.global_stats = read_population_file(datasets.path("global.dat"), GLOBAL)
         for group in GROUPS:
-            figure.load_group(group, read_population_file(datasets.path(datasets.FILES[group]), group))
+            figure.load_group(
+                group, read_population_file(datasets.path(datasets.FILES[group]), group)
+            )
         figure._reset_globals()
         figure._history.clear()
         return figure
@@ -99,9 +105,16 @@ class Figure:
             self.population = data.title
         self._rescale(state)
 
-    def for_person(self, name: str, gender: str, groups: dict[str, np.ndarray], *,
-                   mass: float = float("nan"), stature: float = float("nan"),
-                   **strength_parameters) -> "Figure":
+    def for_person(
+        self,
+        name: str,
+        gender: str,
+        groups: dict[str, np.ndarray],
+        *,
+        mass: float = float("nan"),
+        stature: float = float("nan"),
+        **strength_parameters,
+    ) -> Figure:
         """A real person's figure (report §12.4, Disp. Indv.): the person's values
         (canonical units, NaN where the database has none) with percentiles taken
         against this figure's population statistics.  This figure is left as it
@@ -109,24 +122,36 @@ class Figure:
         strength_type, motion_speed, handedness, training_level, fatigue_level
         (None = keep this figure's)."""
         gender = _check_choice(gender, GENDERS, "gender")
-        person = Figure(gender=gender, figure_type=self.figure_type, population=self.population,
-                        person=str(name), global_stats=self.global_stats,
-                        strength_type=self.strength_type, motion_speed=self.motion_speed,
-                        handedness=self.handedness, training_level=self.training_level,
-                        fatigue_level=self.fatigue_level)
+        person = Figure(
+            gender=gender,
+            figure_type=self.figure_type,
+            population=self.population,
+            person=str(name),
+            global_stats=self.global_stats,
+            strength_type=self.strength_type,
+            motion_speed=self.motion_speed,
+            handedness=self.handedness,
+            training_level=self.training_level,
+            fatigue_level=self.fatigue_level,
+        )
         for group in GROUPS:
             mine, theirs = self.groups[group], person.groups[group]
             if mine.source is None or not mine.source.has(gender):
-                raise FigureError(f"no {gender} {GROUP_TITLES[group]} statistics loaded to "
-                                  f"compare {name} with; load a population file that has them")
+                raise FigureError(
+                    f"no {gender} {GROUP_TITLES[group]} statistics loaded to "
+                    f"compare {name} with; load a population file that has them"
+                )
             values = np.array(groups[group], dtype=float)
             if values.shape != (len(theirs.rows), 3):
-                raise FigureError(f"{name}: {GROUP_TITLES[group]} has shape {values.shape}, "
-                                  f"expected ({len(theirs.rows)}, 3)")
+                raise FigureError(
+                    f"{name}: {GROUP_TITLES[group]} has shape {values.shape}, "
+                    f"expected ({len(theirs.rows)}, 3)"
+                )
             theirs.source, theirs.unit, theirs.percentile = mine.source, mine.unit, mine.percentile
             theirs.values = values
-            theirs.percentiles = np.asarray(percentile_of(mine.source.stats(gender), values),
-                                            dtype=float).reshape(values.shape)
+            theirs.percentiles = np.asarray(
+                percentile_of(mine.source.stats(gender), values), dtype=float
+            ).reshape(values.shape)
         for parameter, value in strength_parameters.items():
             if value is not None:
                 person.set_strength_parameter(parameter, value)
@@ -220,8 +245,9 @@ class Figure:
 
     def set_unit(self, group: str, unit: str) -> None:
         if unit not in GROUP_UNITS[group]:
-            raise FigureError(f"{GROUP_TITLES[group]} is shown in "
-                              f"{' or '.join(GROUP_UNITS[group])}, not {unit}")
+            raise FigureError(
+                f"{GROUP_TITLES[group]} is shown in {' or '.join(GROUP_UNITS[group])}, not {unit}"
+            )
         self.groups[group].unit = unit
 
     # --- derived data ----------------------------------------------------
@@ -254,8 +280,11 @@ class Figure:
         return float(state.values[index, axis])
 
     def missing_groups(self) -> list[str]:
-        return [GROUP_TITLES[g] for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)
-                if not self.groups[g].loaded]
+        return [
+            GROUP_TITLES[g]
+            for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)
+            if not self.groups[g].loaded
+        ]
 
     # --- undo --------------------------------------------------------------
     def undo(self) -> bool:
@@ -279,8 +308,11 @@ class Figure:
         return self._history[-1][0] if self._history else -1
 
     def _remember(self) -> None:
-        state = {k: copy.deepcopy(v) if k == "groups" else v
-                 for k, v in self.__dict__.items() if k != "_history"}
+        state = {
+            k: copy.deepcopy(v) if k == "groups" else v
+            for k, v in self.__dict__.items()
+            if k != "_history"
+        }
         self._history.append((next(EDIT_SEQUENCE), state))
         del self._history[:-100]
 
@@ -330,9 +362,12 @@ class Figure:
 def _check_choice(value: str, choices: tuple[str, ...], what: str) -> str:
     word = str(value).strip().lower()
     for choice in choices:
-        if word == choice or (len(word) >= 1 and choice.startswith(word) and
-                              sum(c.startswith(word) for c in choices) == 1):
+        if word == choice or (
+            len(word) >= 1
+            and choice.startswith(word)
+            and sum(c.startswith(word) for c in choices) == 1
+        ):
             return choice
-    raise FigureError(f"{what} must be {', '.join(choices[:-1])} or {choices[-1]}, "
-                      f"not {str(value).strip()!r}")
-
+    raise FigureError(
+        f"{what} must be {', '.join(choices[:-1])} or {choices[-1]}, not {str(value).strip()!r}"
+    )

@@ -16,9 +16,16 @@ from pathlib import Path
 import numpy as np
 
 from sass_tui.model.atomic import write_text_atomic
+from sass_tui.model.errors import SassError
 from sass_tui.model.figfile import FigureIncompleteError
 from sass_tui.model.names import (
-    CENTER_OF_MASS, GIRTH, JOINT_LIMITS, MASS_FRACTIONS, ROWS, row_index)
+    CENTER_OF_MASS,
+    GIRTH,
+    JOINT_LIMITS,
+    MASS_FRACTIONS,
+    ROWS,
+    row_index,
+)
 
 HANIM_VERSION = "2.0"
 
@@ -56,20 +63,29 @@ HEEL_BEHIND_ANKLE = 0.2516
 SEGMENT_MASSES: dict[str, tuple[str, ...]] = {
     "sacrum": ("bodyrootmass",),
     "pelvis": ("ltorsomass", "rhipmass", "lhipmass"),
-    "l5": ("ctorsomass", "uptorsomass", "neckmass", "rclavmass", "lclavmass",
-           "rsternummass", "lsternummass"),
+    "l5": (
+        "ctorsomass",
+        "uptorsomass",
+        "neckmass",
+        "rclavmass",
+        "lclavmass",
+        "rsternummass",
+        "lsternummass",
+    ),
     "skull": ("botheadmass", "topheadmass", "reyemass", "leyemass"),
 }
 for _side, _s in (("l", "l"), ("r", "r")):
-    SEGMENT_MASSES.update({
-        f"{_side}_thigh": (f"{_s}uplegmass",),
-        f"{_side}_calf": (f"{_s}lowlegmass",),
-        f"{_side}_talus": (f"{_s}footmass",),
-        f"{_side}_tarsal_proximal_phalanx_2": (f"{_s}toesmass",),
-        f"{_side}_upperarm": (f"{_s}uparmmass",),
-        f"{_side}_forearm": (f"{_s}lowarmmass",),
-        f"{_side}_carpal": (f"{_s}handmass", f"{_s}fingersmass"),
-    })
+    SEGMENT_MASSES.update(
+        {
+            f"{_side}_thigh": (f"{_s}uplegmass",),
+            f"{_side}_calf": (f"{_s}lowlegmass",),
+            f"{_side}_talus": (f"{_s}footmass",),
+            f"{_side}_tarsal_proximal_phalanx_2": (f"{_s}toesmass",),
+            f"{_side}_upperarm": (f"{_s}uparmmass",),
+            f"{_side}_forearm": (f"{_s}lowarmmass",),
+            f"{_side}_carpal": (f"{_s}handmass", f"{_s}fingersmass"),
+        }
+    )
 
 _X, _Y, _Z = np.eye(3)
 
@@ -83,18 +99,18 @@ _X, _Y, _Z = np.eye(3)
 # x cross y and the rotation limits on it are negated and swapped.
 # (HAnim joint, SASS joint row stem, x axis, y axis, anatomical z axis or None)
 _LIMIT_AXES: tuple[tuple[str, str, np.ndarray, np.ndarray, np.ndarray | None], ...] = (
-    ("vl5", "waist", _Z, _X, _Y),                 # bend right, bend forward, twist left
-    ("skullbase", "neck", _Z, _X, -_Y),           # lateral right, flexion, rotation right
+    ("vl5", "waist", _Z, _X, _Y),  # bend right, bend forward, twist left
+    ("skullbase", "neck", _Z, _X, -_Y),  # lateral right, flexion, rotation right
     ("l_shoulder", "left_shoulder", _Z, -_X, _Y),  # abduction, flexion, lateral rotation
     ("r_shoulder", "right_shoulder", -_Z, -_X, -_Y),
-    ("l_elbow", "left_elbow", _Z, -_X, None),      # flexion only
+    ("l_elbow", "left_elbow", _Z, -_X, None),  # flexion only
     ("r_elbow", "right_elbow", -_Z, -_X, None),
     # palms face the thighs (4.8.2), so the thumb points to +Z
     ("l_radiocarpal", "left_wrist", -_X, -_Z, -_Y),  # radial, flexion, pronation
     ("r_radiocarpal", "right_wrist", -_X, _Z, _Y),
-    ("l_hip", "left_hip", _Z, -_X, _Y),            # abduction, flexion, lateral rotation
+    ("l_hip", "left_hip", _Z, -_X, _Y),  # abduction, flexion, lateral rotation
     ("r_hip", "right_hip", -_Z, -_X, -_Y),
-    ("l_knee", "left_knee", _Z, _X, None),         # flexion (the shank goes back)
+    ("l_knee", "left_knee", _Z, _X, None),  # flexion (the shank goes back)
     ("r_knee", "right_knee", -_Z, _X, None),
     ("l_talocrural", "left_ankle", -_Z, -_X, _Y),  # supination, dorsiflexion, lateral rotation
     ("r_talocrural", "right_ankle", _Z, -_X, -_Y),
@@ -104,7 +120,7 @@ _LIMIT_AXES: tuple[tuple[str, str, np.ndarray, np.ndarray, np.ndarray | None], .
 )
 
 
-class HAnimError(ValueError):
+class HAnimError(ValueError, SassError):
     """The figure cannot be exported as a humanoid."""
 
 
@@ -153,11 +169,13 @@ class Humanoid:
 
 # --- construction ------------------------------------------------------------
 
+
 def build_humanoid(figure) -> Humanoid:
     missing = figure.missing_groups()
     if missing:
         raise FigureIncompleteError(
-            f"cannot export a humanoid: {', '.join(missing)} not loaded for {figure.gender}")
+            f"cannot export a humanoid: {', '.join(missing)} not loaded for {figure.gender}"
+        )
     if not figure.output_mass() > 0:
         raise HAnimError("cannot export a humanoid: the figure has no mass")
     girth = _rows(figure, GIRTH) / 100.0  # cm -> m
@@ -190,7 +208,8 @@ def _joint_centers(dim: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
         c[f"{side}_hip"] = np.array([x, ankle + lower[2] + upper[2], 0.0])
         toes = dim[f"{name}_ball_of_foot"]
         c[f"{side}_metatarsophalangeal_2"] = np.array(
-            [x, toes[2] / 2, (1 - HEEL_BEHIND_ANKLE) * foot[0]])
+            [x, toes[2] / 2, (1 - HEEL_BEHIND_ANKLE) * foot[0]]
+        )
     # flooroffset = rfootz + rlowlegz + ruplegz (appendix F)
     floor_offset = c["r_hip"][1]
     c["humanoid_root"] = np.array([0.0, floor_offset, 0.0])
@@ -224,8 +243,14 @@ def _segment_table() -> list[tuple[str, str | None, str, np.ndarray, np.ndarray,
             (f"{side}_thigh", f"{name}_upper_leg", f"{side}_hip", -_Y, _Z, "cylinder"),
             (f"{side}_calf", f"{name}_lower_leg", f"{side}_knee", -_Y, _Z, "cylinder"),
             (f"{side}_talus", f"{name}_foot", f"{side}_talocrural", -_Y, _Z, "box"),
-            (f"{side}_tarsal_proximal_phalanx_2", f"{name}_ball_of_foot",
-             f"{side}_metatarsophalangeal_2", _Z, _Y, "box"),
+            (
+                f"{side}_tarsal_proximal_phalanx_2",
+                f"{name}_ball_of_foot",
+                f"{side}_metatarsophalangeal_2",
+                _Z,
+                _Y,
+                "box",
+            ),
             (f"{side}_upperarm", f"{name}_upper_arm", f"{side}_shoulder", -_Y, _Z, "cylinder"),
             # palms face the thighs: the forearm and hand depth (SASS x) lies along X
             (f"{side}_forearm", f"{name}_lower_arm", f"{side}_elbow", -_Y, _X, "cylinder"),
@@ -338,7 +363,9 @@ def _limits(figure) -> dict[str, Limits]:
 
 def _sites(dim, centers) -> list[Site]:
     head = dim["bottom_head"]
-    eyes = dim["eye_location"]  # x: head depth to the eyes, y: half the eye spacing, z: above the chin
+    eyes = dim[
+        "eye_location"
+    ]  # x: head depth to the eyes, y: half the eye spacing, z: above the chin
     base = centers["skullbase"]
     # BODY.FIG's head psurf starts at the chin, on the neck's distal site
     eye_height = base[1] + eyes[2]
@@ -354,9 +381,14 @@ def _sites(dim, centers) -> list[Site]:
     for side, name in (("l", "left"), ("r", "right")):
         sign = 1.0 if side == "l" else -1.0
         shoulder = centers[f"{side}_shoulder"]
-        sites.append(Site(f"{side}_acromion_pt", "l5",
-                          shoulder + _X * sign * dim[f"{name}_upper_arm"][1] / 2))
-        tip = centers[f"{side}_radiocarpal"] - _Y * (dim[f"{name}_hand"][2] + dim[f"{name}_knuckles"][2])
+        sites.append(
+            Site(
+                f"{side}_acromion_pt", "l5", shoulder + _X * sign * dim[f"{name}_upper_arm"][1] / 2
+            )
+        )
+        tip = centers[f"{side}_radiocarpal"] - _Y * (
+            dim[f"{name}_hand"][2] + dim[f"{name}_knuckles"][2]
+        )
         sites.append(Site(f"{side}_dactylion_pt", f"{side}_carpal", tip))
         ankle = centers[f"{side}_talocrural"]
         heel = np.array([ankle[0], 0.0, -HEEL_BEHIND_ANKLE * dim[f"{name}_foot"][0]])
@@ -398,6 +430,7 @@ def _measure(name: str, value: float, unit: str, percentile: float, decimals: in
 
 # --- rotations ---------------------------------------------------------------
 
+
 def axis_angle(matrix: np.ndarray) -> tuple[float, float, float, float]:
     """X3D SFRotation (axis, angle) of a proper rotation matrix."""
     r = np.asarray(matrix, dtype=float)
@@ -426,6 +459,7 @@ def rotation_matrix(axis, angle: float) -> np.ndarray:
 
 # --- X3D ---------------------------------------------------------------------
 
+
 def _num(value: float) -> str:
     text = f"{value:.6f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
@@ -447,9 +481,15 @@ def humanoid_element(humanoid: Humanoid, gender: str, prefix: str = "hanim_") ->
     # skeletalConfiguration is "BASIC" (clause 4.8.2) through the field's X3D 4.0
     # default: X3D's canonical XML form leaves defaults out, and Debian's
     # view3dscene 4.2, which predates the field, warns when it is written.
-    root = ET.Element("HAnimHumanoid", {
-        "DEF": f"{prefix}humanoid", "name": humanoid.name, "version": HANIM_VERSION,
-        "info": _mfstring(humanoid.info)})
+    root = ET.Element(
+        "HAnimHumanoid",
+        {
+            "DEF": f"{prefix}humanoid",
+            "name": humanoid.name,
+            "version": HANIM_VERSION,
+            "info": _mfstring(humanoid.info),
+        },
+    )
     appearance_def = f"{prefix}skin"
     joints: dict[str, ET.Element] = {}
     first_shape = True
@@ -468,14 +508,22 @@ def humanoid_element(humanoid: Humanoid, gender: str, prefix: str = "hanim_") ->
         element = ET.SubElement(root if parent is None else joints[parent], "HAnimJoint", attrs)
         joints[joint] = element
         segment = humanoid.segments[segment_name]
-        seg = ET.SubElement(element, "HAnimSegment", {
-            "DEF": f"{prefix}{segment_name}", "name": segment_name,
-            "mass": _num(segment.mass), "centerOfMass": _vec(segment.center_of_mass),
-            "momentsOfInertia": _vec(segment.inertia.ravel())})
+        seg = ET.SubElement(
+            element,
+            "HAnimSegment",
+            {
+                "DEF": f"{prefix}{segment_name}",
+                "name": segment_name,
+                "mass": _num(segment.mass),
+                "centerOfMass": _vec(segment.center_of_mass),
+                "momentsOfInertia": _vec(segment.inertia.ravel()),
+            },
+        )
         for kind, centre, size in segment.shapes:
             if kind == "ellipsoid":
-                transform = ET.SubElement(seg, "Transform", {
-                    "translation": _vec(centre), "scale": _vec(size / 2)})
+                transform = ET.SubElement(
+                    seg, "Transform", {"translation": _vec(centre), "scale": _vec(size / 2)}
+                )
                 geometry = ("Sphere", {"radius": "1"})
             else:
                 transform = ET.SubElement(seg, "Transform", {"translation": _vec(centre)})
@@ -483,38 +531,58 @@ def humanoid_element(humanoid: Humanoid, gender: str, prefix: str = "hanim_") ->
             shape = ET.SubElement(transform, "Shape")
             if first_shape:
                 appearance = ET.SubElement(shape, "Appearance", {"DEF": appearance_def})
-                ET.SubElement(appearance, "Material", {"diffuseColor": SKIN.get(gender, SKIN["male"])})
+                ET.SubElement(
+                    appearance, "Material", {"diffuseColor": SKIN.get(gender, SKIN["male"])}
+                )
                 first_shape = False
             else:
                 ET.SubElement(shape, "Appearance", {"USE": appearance_def})
             ET.SubElement(shape, geometry[0], geometry[1])
         for site in sites_by_segment.get(segment_name, []):
-            ET.SubElement(seg, "HAnimSite", {
-                "DEF": f"{prefix}{site.name}", "name": site.name,
-                "translation": _vec(site.translation), "rotation": _vec(site.rotation)})
+            ET.SubElement(
+                seg,
+                "HAnimSite",
+                {
+                    "DEF": f"{prefix}{site.name}",
+                    "name": site.name,
+                    "translation": _vec(site.translation),
+                    "rotation": _vec(site.rotation),
+                },
+            )
     for joint, _, _ in LOA1:
         ET.SubElement(root, "HAnimJoint", {"USE": f"{prefix}{joint}", "containerField": "joints"})
     for _, segment_name, _ in LOA1:
-        ET.SubElement(root, "HAnimSegment", {"USE": f"{prefix}{segment_name}",
-                                             "containerField": "segments"})
+        ET.SubElement(
+            root, "HAnimSegment", {"USE": f"{prefix}{segment_name}", "containerField": "segments"}
+        )
     for site in humanoid.sites:
         ET.SubElement(root, "HAnimSite", {"USE": f"{prefix}{site.name}", "containerField": "sites"})
     return root
 
 
-def scene_document(humanoids: list[tuple[ET.Element, float]], title: str,
-                   height: float) -> str:
+def scene_document(humanoids: list[tuple[ET.Element, float]], title: str, height: float) -> str:
     """An X3D 4.0 document holding humanoids side by side (x offsets in metres)."""
-    x3d = ET.Element("X3D", {
-        "profile": "Immersive", "version": "4.0",
-        "xmlns:xsd": "http://www.w3.org/2001/XMLSchema-instance",
-        "xsd:noNamespaceSchemaLocation": "https://www.web3d.org/specifications/x3d-4.0.xsd"})
+    x3d = ET.Element(
+        "X3D",
+        {
+            "profile": "Immersive",
+            "version": "4.0",
+            "xmlns:xsd": "http://www.w3.org/2001/XMLSchema-instance",
+            "xsd:noNamespaceSchemaLocation": "https://www.web3d.org/specifications/x3d-4.0.xsd",
+        },
+    )
     head = ET.SubElement(x3d, "head")
     ET.SubElement(head, "component", {"name": "HAnim", "level": "1"})
     ET.SubElement(head, "meta", {"name": "title", "content": title})
     ET.SubElement(head, "meta", {"name": "generator", "content": "sass export hanim"})
-    ET.SubElement(head, "meta", {"name": "reference",
-                                 "content": "ISO/IEC 19774-1:2019 HAnim, clause 4; SASS report, appendix D"})
+    ET.SubElement(
+        head,
+        "meta",
+        {
+            "name": "reference",
+            "content": "ISO/IEC 19774-1:2019 HAnim, clause 4; SASS report, appendix D",
+        },
+    )
     scene = ET.SubElement(x3d, "Scene")
     ET.SubElement(scene, "WorldInfo", {"title": title})
     ET.SubElement(scene, "Background", {"skyColor": "1 1 1"})
@@ -526,11 +594,18 @@ def scene_document(humanoids: list[tuple[ET.Element, float]], title: str,
     distance = 1.3 * max(height, span + 0.8)
     # turned a little to the humanoid's left: a straight front view hides the arms
     turn = 0.35
-    ET.SubElement(scene, "Viewpoint", {
-        "description": "front, three quarters",
-        "position": _vec((middle + distance * math.sin(turn), height / 2, distance * math.cos(turn))),
-        "orientation": _vec((0, 1, 0, turn)),
-        "centerOfRotation": _vec((middle, height / 2, 0))})
+    ET.SubElement(
+        scene,
+        "Viewpoint",
+        {
+            "description": "front, three quarters",
+            "position": _vec(
+                (middle + distance * math.sin(turn), height / 2, distance * math.cos(turn))
+            ),
+            "orientation": _vec((0, 1, 0, turn)),
+            "centerOfRotation": _vec((middle, height / 2, 0)),
+        },
+    )
     for element, x in humanoids:
         if x:
             transform = ET.SubElement(scene, "Transform", {"translation": _vec((x, 0, 0))})
@@ -539,23 +614,28 @@ def scene_document(humanoids: list[tuple[ET.Element, float]], title: str,
             scene.append(element)
     ET.indent(x3d)
     body = ET.tostring(x3d, encoding="unicode")
-    return ('<?xml version="1.0" encoding="UTF-8"?>\n'
-            '<!DOCTYPE X3D PUBLIC "ISO//Web3D//DTD X3D 4.0//EN" '
-            '"https://www.web3d.org/specifications/x3d-4.0.dtd">\n' + body + "\n")
+    return (
+        '<?xml version="1.0" encoding="UTF-8"?>\n'
+        '<!DOCTYPE X3D PUBLIC "ISO//Web3D//DTD X3D 4.0//EN" '
+        '"https://www.web3d.org/specifications/x3d-4.0.dtd">\n' + body + "\n"
+    )
 
 
 def figure_title(figure) -> str:
     if figure.person:
         return f"{figure.person} ({figure.gender}) - SASS HAnim humanoid"
-    return (f"{figure.population}, {figure.gender}, girth percentile "
-            f"{figure.groups[GIRTH].percentile:g} - SASS HAnim humanoid")
+    return (
+        f"{figure.population}, {figure.gender}, girth percentile "
+        f"{figure.groups[GIRTH].percentile:g} - SASS HAnim humanoid"
+    )
 
 
 def render_hanim(figure) -> str:
     humanoid = build_humanoid(figure)
     height = float(humanoid.sites[0].translation[1])  # skull vertex
-    return scene_document([(humanoid_element(humanoid, figure.gender), 0.0)],
-                          figure_title(figure), height)
+    return scene_document(
+        [(humanoid_element(humanoid, figure.gender), 0.0)], figure_title(figure), height
+    )
 
 
 def export_hanim(figure, path: str | Path) -> Path:

@@ -14,6 +14,8 @@ from statistics import NormalDist
 
 import numpy as np
 
+from sass_tui.model.errors import SassError
+
 MIN_PERCENTILE = 0.5
 MAX_PERCENTILE = 99.5
 _STANDARD = NormalDist()
@@ -24,7 +26,7 @@ _ppf = np.frompyfunc(_STANDARD.inv_cdf, 1, 1)
 _cdf = np.frompyfunc(_STANDARD.cdf, 1, 1)
 
 
-class PercentileError(ValueError):
+class PercentileError(ValueError, SassError):
     """A percentile outside 0.5-99.5, or not a number."""
 
 
@@ -79,8 +81,11 @@ def percentile_of(stats: np.ndarray, value) -> np.ndarray:
         z_upper = diff / upper
     # Take the piece on which the value lies: z <= 0 on the lower, z >= 0 on the
     # upper piece.  Either can serve a non-monotonic row; prefer the lower.
-    z = np.where(np.isfinite(z_lower) & (z_lower <= 0), z_lower,
-                 np.where(np.isfinite(z_upper) & (z_upper >= 0), z_upper, np.nan))
+    z = np.where(
+        np.isfinite(z_lower) & (z_lower <= 0),
+        z_lower,
+        np.where(np.isfinite(z_upper) & (z_upper >= 0), z_upper, np.nan),
+    )
     z = np.where(diff == 0, 0.0, z)
     z = np.where(np.isnan(v50) | np.isnan(value), np.nan, z)
     flat = np.atleast_1d(z).astype(float)

@@ -20,16 +20,24 @@ from pathlib import Path
 
 import numpy as np
 
+from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
-    AXES, AXES_OF, GROUP_TITLES, JOINT_LIMITS, ROWS, label_lookup, normalise_label)
+    AXES,
+    AXES_OF,
+    GROUP_TITLES,
+    JOINT_LIMITS,
+    ROWS,
+    label_lookup,
+    normalise_label,
+)
+from sass_tui.model.vocabulary import GENDERS
 
 NO_VALUE = 999.0
-GENDERS = ("male", "female")
 
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
 
 
-class PopulationFileError(ValueError):
+class PopulationFileError(ValueError, SassError):
     """The file breaks the format; nothing of it was loaded."""
 
 
@@ -63,7 +71,6 @@ def read_population_file(path: str | Path, group: str) -> PopulationData:
 
 
 def parse_population_text(text: str, group: str, name: str = "<text>") -> PopulationData:
-    rows = ROWS[group]
     width = 3 * AXES_OF[group]
     lookup = label_lookup(group)
     title = ""
@@ -72,8 +79,10 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
     raw: dict[str, list[tuple[int, list[float], str]]] = {}
     lines = text.splitlines()
     if not any(ln.strip() for ln in lines):
-        raise PopulationFileError(f"{name}:1: the file is empty; expected 'C' comments, "
-                                  "'T MALE' or 'T FEMALE', and rows of 9 numbers")
+        raise PopulationFileError(
+            f"{name}:1: the file is empty; expected 'C' comments, "
+            "'T MALE' or 'T FEMALE', and rows of 9 numbers"
+        )
     for lineno, line in enumerate(lines, start=1):
         where = f"{name}:{lineno}"
         if not line.strip():
@@ -86,7 +95,8 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
             word = line[1:].strip().lower()
             if word not in GENDERS:
                 raise PopulationFileError(
-                    f"{where}: expected 'T MALE' or 'T FEMALE', found {line.strip()!r}")
+                    f"{where}: expected 'T MALE' or 'T FEMALE', found {line.strip()!r}"
+                )
             if word in raw:
                 raise PopulationFileError(f"{where}: a second 'T {word.upper()}' section")
             gender, section_line = word, lineno
@@ -103,13 +113,15 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
     data = PopulationData(group=group, title=title or Path(name).name, path=name)
     for gender, entries in raw.items():
         data.sections[gender], data.lines[gender] = _place_rows(
-            entries, gender, group, lookup, name, section_line, data.warnings)
+            entries, gender, group, lookup, name, section_line, data.warnings
+        )
     _check_rows(data, name)
     return data
 
 
-def split_data_row(line: str, where: str, width: int, layout: str,
-                   error: type[ValueError] = PopulationFileError) -> tuple[list[float], str]:
+def split_data_row(
+    line: str, where: str, width: int, layout: str, error: type[ValueError] = PopulationFileError
+) -> tuple[list[float], str]:
     """'v v v ... /* label */' -> (numbers, label), or `error` saying where and what."""
     start = line.find("/*")
     numbers_text, label = line, ""
@@ -117,16 +129,17 @@ def split_data_row(line: str, where: str, width: int, layout: str,
         end = line.find("*/", start + 2)
         if end < 0:
             raise error(f"{where}: comment '/*' is not closed with '*/'")
-        if line[end + 2:].strip():
-            raise error(f"{where}: unexpected {line[end + 2:].strip()!r} after the comment")
-        numbers_text, label = line[:start], line[start + 2:end].strip()
+        if line[end + 2 :].strip():
+            raise error(f"{where}: unexpected {line[end + 2 :].strip()!r} after the comment")
+        numbers_text, label = line[:start], line[start + 2 : end].strip()
     tokens = [t for t in re.split(r"[,\s]+", numbers_text.strip()) if t]
     for col, token in enumerate(tokens, start=1):
         if not _NUMBER.match(token):
             raise error(f"{where}: value {col} is {token!r}; expected a number (999 = no value)")
     if len(tokens) != width:
-        raise error(f"{where}: {len(tokens)} numbers; expected {width} {layout} "
-                    "and a /* comment */")
+        raise error(
+            f"{where}: {len(tokens)} numbers; expected {width} {layout} and a /* comment */"
+        )
     return [float(t) for t in tokens], label
 
 
@@ -139,30 +152,38 @@ def _place_rows(entries, gender, group, lookup, name, section_line, warnings):
         index = lookup.get(normalise_label(label)) if label else None
         if index is None:
             if position >= n:
-                warnings.append(f"{name}:{lineno}: extra row {label!r} beyond the "
-                                f"{n} rows of {GROUP_TITLES[group]}; ignored")
+                warnings.append(
+                    f"{name}:{lineno}: extra row {label!r} beyond the "
+                    f"{n} rows of {GROUP_TITLES[group]}; ignored"
+                )
                 continue
             index = position
             if label:
-                warnings.append(f"{name}:{lineno}: unknown row label {label!r}; "
-                                f"taken by position as {rows[index].label!r}")
+                warnings.append(
+                    f"{name}:{lineno}: unknown row label {label!r}; "
+                    f"taken by position as {rows[index].label!r}"
+                )
         if index in filled:
-            warnings.append(f"{name}:{lineno}: {rows[index].label!r} given again "
-                            f"(first at line {filled[index]}); this later row is used")
+            warnings.append(
+                f"{name}:{lineno}: {rows[index].label!r} given again "
+                f"(first at line {filled[index]}); this later row is used"
+            )
         filled[index] = lineno
         arr = np.array(values).reshape(AXES_OF[group], 3)
         arr[arr == NO_VALUE] = np.nan
         stats[index] = arr
     if len(entries) != n:
-        warnings.append(f"{name}:{section_line}: T {gender.upper()} has {len(entries)} rows; "
-                        f"expected {n}")
+        warnings.append(
+            f"{name}:{section_line}: T {gender.upper()} has {len(entries)} rows; expected {n}"
+        )
     missing = [rows[i].label for i in range(n) if i not in filled]
     if missing:
         last = entries[-1][0] if entries else section_line
         raise PopulationFileError(
             f"{name}:{last}: T {gender.upper()} ends without "
             f"{len(missing)} of its {n} rows (missing: {', '.join(missing[:5])}"
-            f"{', …' if len(missing) > 5 else ''})")
+            f"{', …' if len(missing) > 5 else ''})"
+        )
     return stats, [filled[i] for i in range(n)]
 
 
@@ -171,7 +192,7 @@ def _check_rows(data: PopulationData, name: str) -> None:
     rows = ROWS[data.group]
     for gender, stats in data.sections.items():
         for i, row in enumerate(rows):
-            for a, axis in enumerate(AXES[:AXES_OF[data.group]]):
+            for a, axis in enumerate(AXES[: AXES_OF[data.group]]):
                 v5, v50, v95 = stats[i, a]
                 if np.isnan([v5, v50, v95]).any():
                     continue
@@ -181,18 +202,22 @@ def _check_rows(data: PopulationData, name: str) -> None:
                 if not (min(v5, v95) <= v50 <= max(v5, v95)):
                     data.warnings.append(
                         f"{where}: 50th value {v50:g} is not between the 5th ({v5:g}) "
-                        f"and the 95th ({v95:g})")
+                        f"and the 95th ({v95:g})"
+                    )
                 signs = [np.sign(v) for v in (v5, v50, v95) if v != 0]
                 if len(signs) == 3 and len(set(signs)) > 1:
                     odd = ("5th", "50th", "95th")[signs.index(min(set(signs), key=signs.count))]
-                    data.warnings.append(f"{where}: the {odd} value's sign is unlike its "
-                                         f"neighbours' ({v5:g}, {v50:g}, {v95:g})")
+                    data.warnings.append(
+                        f"{where}: the {odd} value's sign is unlike its "
+                        f"neighbours' ({v5:g}, {v50:g}, {v95:g})"
+                    )
                 elif data.group == JOINT_LIMITS:
                     lower = row.name.endswith("_ll")
                     if (lower and min(v5, v50, v95) > 0) or (not lower and max(v5, v50, v95) < 0):
                         data.warnings.append(
                             f"{where}: a {'lower' if lower else 'upper'} limit that is "
-                            f"{'positive' if lower else 'negative'} ({v5:g}, {v50:g}, {v95:g})")
+                            f"{'positive' if lower else 'negative'} ({v5:g}, {v50:g}, {v95:g})"
+                        )
 
 
 def write_population_file(data: PopulationData, path: str | Path) -> None:

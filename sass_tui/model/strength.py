@@ -34,39 +34,40 @@ from pathlib import Path
 import numpy as np
 
 from sass_tui.model import datasets
+from sass_tui.model.errors import SassError
 from sass_tui.model.figure import EDIT_SEQUENCE
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity
+from sass_tui.model.vocabulary import GENDERS, JOINT_AXES, MOTION_NAMES, SIDES
 
-GENDERS = ("male", "female")
-SIDES = ("right", "left")
 FILE_NAME = "strength.dat"
 
 # Display order of the strength page (one page of 14 rows); the row's joint
 # picks the fatigue curve.
 MOTIONS: tuple[Row, ...] = tuple(
     Row(name, name.replace("_", " ").capitalize(), (name.replace("_", " "),))
-    for name in (
-        "shoulder_abduction", "shoulder_adduction", "shoulder_flexion", "shoulder_extension",
-        "shoulder_medial_rotation", "shoulder_lateral_rotation",
-        "elbow_flexion", "elbow_extension", "forearm_pronation", "forearm_supination",
-        "wrist_flexion", "wrist_extension", "wrist_radial_deviation", "wrist_ulnar_deviation",
-    )
+    for name in MOTION_NAMES
 )
-MOTION_NAMES = tuple(m.name for m in MOTIONS)
 MOTION_JOINT = tuple(name.split("_")[0] for name in MOTION_NAMES)
-_MOTION_ALIASES = {"shoulder internal rotation": "shoulder_medial_rotation",
-                   "shoulder external rotation": "shoulder_lateral_rotation",
-                   "wrist radial abduction": "wrist_radial_deviation",
-                   "wrist ulnar adduction": "wrist_ulnar_deviation"}
+_MOTION_ALIASES = {
+    "shoulder internal rotation": "shoulder_medial_rotation",
+    "shoulder external rotation": "shoulder_lateral_rotation",
+    "wrist radial abduction": "wrist_radial_deviation",
+    "wrist ulnar adduction": "wrist_ulnar_deviation",
+}
 
 # The joint-angle columns of figure 8, and the joint-limit row/axis of each.
-JOINT_AXES = ("shoulder_x", "shoulder_y", "shoulder_z", "elbow_y",
-              "wrist_x", "wrist_y", "wrist_z")
-JOINT_AXIS_LABELS = ("Shoulder x", "Shoulder y", "Shoulder z", "Elbow y",
-                     "Wrist x", "Wrist y", "Wrist z")
+JOINT_AXIS_LABELS = (
+    "Shoulder x",
+    "Shoulder y",
+    "Shoulder z",
+    "Elbow y",
+    "Wrist x",
+    "Wrist y",
+    "Wrist z",
+)
 N_ANGLES = len(JOINT_AXES)
 N_FEATURES = 1 + 2 * N_ANGLES
 _ANGLE_SCALE = 100.0  # keeps t^2 near 1 so lstsq is well conditioned
@@ -82,19 +83,24 @@ ISOKINETIC_DECAY_PER_DEG_S = -math.log(46.9 / 68.6) / 50.0
 TRAINING_GAIN_PER_LEVEL = 0.10
 # Frey Law & Avin 2010, Ergonomics 53:109-129: endurance time (s) = b0 * f^b1.
 # The forearm and wrist have no fit there; they use the elbow's (assumption).
-ENDURANCE_POWER_MODEL = {"shoulder": (14.86, -1.83), "elbow": (17.98, -2.21),
-                         "forearm": (17.98, -2.21), "wrist": (17.98, -2.21)}
+ENDURANCE_POWER_MODEL = {
+    "shoulder": (14.86, -1.83),
+    "elbow": (17.98, -2.21),
+    "forearm": (17.98, -2.21),
+    "wrist": (17.98, -2.21),
+}
 
 
-class StrengthFileError(ValueError):
+class StrengthFileError(ValueError, SassError):
     """The strength file breaks the format; nothing of it was loaded."""
 
 
-class StrengthError(ValueError):
+class StrengthError(ValueError, SassError):
     """An angle, motion or parameter the strength model refuses."""
 
 
 # --- the file -------------------------------------------------------------
+
 
 @dataclass
 class StrengthSection:
@@ -128,7 +134,7 @@ class StrengthData:
             return self.sections[(gender, other)], False
         raise StrengthError(f"{self.path}: no {gender} strength data")
 
-    def model(self, gender: str, side: str) -> "StrengthModel":
+    def model(self, gender: str, side: str) -> StrengthModel:
         section, _ = self.section(gender, side)
         key = (section.gender, section.side)
         if key not in self._models:
@@ -162,16 +168,19 @@ def motion_index(text: str) -> int:
     key = _MOTION_ALIASES.get(key, key).replace(" ", "_")
     if key in MOTION_NAMES:
         return MOTION_NAMES.index(key)
-    raise StrengthError(f"unknown motion {text.strip()!r}; expected one of "
-                        f"{', '.join(MOTION_NAMES)}")
+    raise StrengthError(
+        f"unknown motion {text.strip()!r}; expected one of {', '.join(MOTION_NAMES)}"
+    )
 
 
 def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
     lines = text.splitlines()
     if not any(ln.strip() for ln in lines):
-        raise StrengthFileError(f"{name}:1: the file is empty; expected a 'P' title, "
-                                "'G MALE' or 'G FEMALE', 'L RIGHT' or 'L LEFT' and rows of "
-                                f"{_WIDTH} numbers")
+        raise StrengthFileError(
+            f"{name}:1: the file is empty; expected a 'P' title, "
+            "'G MALE' or 'G FEMALE', 'L RIGHT' or 'L LEFT' and rows of "
+            f"{_WIDTH} numbers"
+        )
     title = ""
     gender: str | None = None
     key: tuple[str, str] | None = None
@@ -192,31 +201,37 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
             word = line[1:].strip().lower()
             if word not in GENDERS:
                 raise StrengthFileError(
-                    f"{where}: expected 'G MALE' or 'G FEMALE', found {line.strip()!r}")
+                    f"{where}: expected 'G MALE' or 'G FEMALE', found {line.strip()!r}"
+                )
             gender, key = word, None
             continue
         if tag == "L":
             word = line[1:].strip().lower()
             if word not in SIDES:
                 raise StrengthFileError(
-                    f"{where}: expected 'L RIGHT' or 'L LEFT', found {line.strip()!r}")
+                    f"{where}: expected 'L RIGHT' or 'L LEFT', found {line.strip()!r}"
+                )
             if gender is None:
-                raise StrengthFileError(f"{where}: 'L {word.upper()}' before 'G MALE' or "
-                                        "'G FEMALE'")
+                raise StrengthFileError(
+                    f"{where}: 'L {word.upper()}' before 'G MALE' or 'G FEMALE'"
+                )
             key = (gender, word)
             if key in raw:
-                raise StrengthFileError(f"{where}: a second G {gender.upper()} / "
-                                        f"L {word.upper()} section (first at line "
-                                        f"{raw[key][0]})")
+                raise StrengthFileError(
+                    f"{where}: a second G {gender.upper()} / "
+                    f"L {word.upper()} section (first at line "
+                    f"{raw[key][0]})"
+                )
             raw[key] = (lineno, [])
             continue
         numbers, comment = split_data_row(line, where, _WIDTH, _LAYOUT, StrengthFileError)
         if key is None:
-            raise StrengthFileError(f"{where}: data before 'G MALE|FEMALE' and "
-                                    "'L RIGHT|LEFT'")
+            raise StrengthFileError(f"{where}: data before 'G MALE|FEMALE' and 'L RIGHT|LEFT'")
         if not comment:
-            raise StrengthFileError(f"{where}: no /* motion */ comment; expected the motion "
-                                    "impetus, e.g. /* shoulder abduction */")
+            raise StrengthFileError(
+                f"{where}: no /* motion */ comment; expected the motion "
+                "impetus, e.g. /* shoulder abduction */"
+            )
         label = comment.split(":", 1)[0]
         try:
             motion = motion_index(label)
@@ -224,12 +239,14 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
             raise StrengthFileError(f"{where}: {exc}") from None
         percentile = numbers[-1]
         if percentile != NO_VALUE and not 0.5 <= percentile <= 99.5:
-            raise StrengthFileError(f"{where}: percentile {percentile:g} is outside "
-                                    "0.5-99.5 (value 9)")
+            raise StrengthFileError(
+                f"{where}: percentile {percentile:g} is outside 0.5-99.5 (value 9)"
+            )
         raw[key][1].append((lineno, motion, numbers, comment))
     if not raw:
-        raise StrengthFileError(f"{name}:{len(lines)}: no 'G MALE|FEMALE' with an "
-                                "'L RIGHT|LEFT' section")
+        raise StrengthFileError(
+            f"{name}:{len(lines)}: no 'G MALE|FEMALE' with an 'L RIGHT|LEFT' section"
+        )
     data = StrengthData(title=title or Path(name).name, path=name, warnings=warnings)
     for key, (line, entries) in raw.items():
         data.sections[key] = _build_section(key, line, entries, name, warnings)
@@ -246,8 +263,9 @@ def _build_section(key, section_line, entries, name, warnings) -> StrengthSectio
         where = f"{name}:{lineno}: {MOTIONS[motion].label}"
         angles, value, percentile = numbers[:N_ANGLES], numbers[-2], numbers[-1]
         if motion < last_motion:
-            warnings.append(f"{where}: out of display order (after "
-                            f"{MOTIONS[last_motion].label}); kept")
+            warnings.append(
+                f"{where}: out of display order (after {MOTIONS[last_motion].label}); kept"
+            )
         last_motion = max(last_motion, motion)
         if NO_VALUE in angles:
             missing = [JOINT_AXES[i] for i, a in enumerate(angles) if a == NO_VALUE]
@@ -261,8 +279,10 @@ def _build_section(key, section_line, entries, name, warnings) -> StrengthSectio
             continue
         config = (motion, tuple(round(a, 3) for a in angles))
         if config in kept:
-            warnings.append(f"{where}: configuration given again (first at line "
-                            f"{rows[kept[config]][0]}); this later row is used")
+            warnings.append(
+                f"{where}: configuration given again (first at line "
+                f"{rows[kept[config]][0]}); this later row is used"
+            )
             rows[kept[config]] = (lineno, motion, angles, value, percentile, comment)
             continue
         kept[config] = len(rows)
@@ -270,19 +290,25 @@ def _build_section(key, section_line, entries, name, warnings) -> StrengthSectio
     present = {r[1] for r in rows}
     missing = [MOTIONS[i].label for i in range(len(MOTIONS)) if i not in present]
     if missing:
-        warnings.append(f"{name}:{section_line}: {heading} has no data for "
-                        f"{', '.join(missing)}; those rows stay blank")
+        warnings.append(
+            f"{name}:{section_line}: {heading} has no data for "
+            f"{', '.join(missing)}; those rows stay blank"
+        )
     return StrengthSection(
-        gender=gender, side=side, line=section_line,
+        gender=gender,
+        side=side,
+        line=section_line,
         motions=np.array([r[1] for r in rows], dtype=int),
         angles=np.array([r[2] for r in rows], dtype=float).reshape(-1, N_ANGLES),
         values=np.array([r[3] for r in rows], dtype=float),
         percentiles=np.array([r[4] for r in rows], dtype=float),
         lines=np.array([r[0] for r in rows], dtype=int),
-        notes=[r[5] for r in rows])
+        notes=[r[5] for r in rows],
+    )
 
 
 # --- percentiles ------------------------------------------------------------
+
 
 def percentile_factor(p) -> np.ndarray:
     """Strength at percentile p over the 50th: 1 + z(p) * CV (normal, CV 0.277)."""
@@ -298,6 +324,7 @@ def strength_percentile(value: float, median: float) -> float:
 
 
 # --- the prediction equation -------------------------------------------------
+
 
 def design(angles: np.ndarray) -> np.ndarray:
     """(k, 7) angles in deg -> (k, 15) columns [1, t_1..t_7, t_1^2..t_7^2]."""
@@ -342,17 +369,23 @@ class StrengthModel:
     def _fit(self, motion: int, angles: np.ndarray, median: np.ndarray) -> MotionFit:
         full = design(angles)
         distinct = [len(np.unique(angles[:, j])) for j in range(N_ANGLES)]
-        used = [0] + [1 + j for j in range(N_ANGLES) if distinct[j] >= 2] \
+        used = (
+            [0]
+            + [1 + j for j in range(N_ANGLES) if distinct[j] >= 2]
             + [1 + N_ANGLES + j for j in range(N_ANGLES) if distinct[j] >= 3]
+        )
         solution, *_ = np.linalg.lstsq(full[:, used], np.log(median), rcond=None)
         coefficients = np.zeros(N_FEATURES)
         coefficients[used] = solution
         relative = np.minimum(np.exp(full @ coefficients), median.max()) / median - 1.0
         return MotionFit(
-            motion=MOTION_NAMES[motion], points=len(median), coefficients=coefficients,
-            rms_percent=float(np.sqrt(np.mean(relative ** 2)) * 100.0),
+            motion=MOTION_NAMES[motion],
+            points=len(median),
+            coefficients=coefficients,
+            rms_percent=float(np.sqrt(np.mean(relative**2)) * 100.0),
             max_percent=float(np.abs(relative).max() * 100.0),
-            varied=tuple(JOINT_AXES[j] for j in range(N_ANGLES) if distinct[j] >= 2))
+            varied=tuple(JOINT_AXES[j] for j in range(N_ANGLES) if distinct[j] >= 2),
+        )
 
     def stored(self, motion: int, angles) -> tuple[float, float] | None:
         """(value ft-lb, its percentile) when the configuration is in the data."""
@@ -365,8 +398,7 @@ class StrengthModel:
         value = np.minimum(np.exp(log_value), self.ceiling[motions])
         return np.where(self.available[motions], value, np.nan)
 
-    def evaluate(self, motions, angles, percentile: float = 50.0
-                 ) -> tuple[np.ndarray, np.ndarray]:
+    def evaluate(self, motions, angles, percentile: float = 50.0) -> tuple[np.ndarray, np.ndarray]:
         """Strength (ft-lb, before modifiers) at `percentile`, and a stored? mask.
 
         A stored value is scaled from its own percentile to `percentile` (it
@@ -392,6 +424,7 @@ def _config_key(angles) -> tuple[float, ...]:
 
 # --- modifiers (each a factor on the strength; docs/model.md) -----------------
 
+
 def strength_type_factor(strength_type: str, motion_speed: float) -> float:
     """Isometric: 1.  Isokinetic and isotonic (concentric at motion_speed deg/s):
     exp(-k * speed), k = ln(68.6/46.9)/50 per deg/s, through the measured
@@ -403,12 +436,14 @@ def strength_type_factor(strength_type: str, motion_speed: float) -> float:
         return 1.0
     if strength_type in ("isokinetic", "isotonic"):
         return math.exp(-ISOKINETIC_DECAY_PER_DEG_S * motion_speed)
-    raise StrengthError(f"strength type must be isometric, isokinetic or isotonic, "
-                        f"not {strength_type!r}")
+    raise StrengthError(
+        f"strength type must be isometric, isokinetic or isotonic, not {strength_type!r}"
+    )
 
 
-def handedness_factor(side: str, handedness: str,
-                      non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR) -> float:
+def handedness_factor(
+    side: str, handedness: str, non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR
+) -> float:
     """The stored data are the dominant limb's (report §12.2.4): the other limb
     is scaled by the non-dominant factor (default 1/1.116)."""
     return 1.0 if side == handedness else non_dominant_factor
@@ -435,14 +470,18 @@ def fatigue_factor(level: float, joint: str = "shoulder") -> float:
     return min(1.0, (level / b0) ** (1.0 / b1))
 
 
-def modifier_factors(figure, side: str,
-                     non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR) -> np.ndarray:
+def modifier_factors(
+    figure, side: str, non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR
+) -> np.ndarray:
     """The product of every modifier, one factor per motion (14,)."""
-    common = (strength_type_factor(figure.strength_type, figure.motion_speed)
-              * handedness_factor(side, figure.handedness, non_dominant_factor)
-              * training_factor(figure.training_level))
-    fatigue = {joint: fatigue_factor(figure.fatigue_level, joint)
-               for joint in ENDURANCE_POWER_MODEL}
+    common = (
+        strength_type_factor(figure.strength_type, figure.motion_speed)
+        * handedness_factor(side, figure.handedness, non_dominant_factor)
+        * training_factor(figure.training_level)
+    )
+    fatigue = {
+        joint: fatigue_factor(figure.fatigue_level, joint) for joint in ENDURANCE_POWER_MODEL
+    }
     return np.array([common * fatigue[joint] for joint in MOTION_JOINT])
 
 
@@ -460,6 +499,7 @@ def parse_side_factor(text: str) -> float:
 
 
 # --- joint limits ---------------------------------------------------------
+
 
 def joint_limit_range(figure, side: str, joint_axis: str) -> tuple[float, float]:
     """(lower, upper) deg of a joint axis from the figure's current joint limits.
@@ -490,22 +530,28 @@ def check_angle(figure, side: str, joint_axis: str, degrees: float) -> None:
             raise StrengthError(f"{what}: no motion about this axis (joint limits)")
         return
     if degrees > upper:
-        raise StrengthError(f"{what} {degrees:g} deg is above the {side} {joint} upper limit "
-                            f"{upper:g} deg (joint limits, {percentile:g}th percentile)")
+        raise StrengthError(
+            f"{what} {degrees:g} deg is above the {side} {joint} upper limit "
+            f"{upper:g} deg (joint limits, {percentile:g}th percentile)"
+        )
     if degrees < lower:
-        raise StrengthError(f"{what} {degrees:g} deg is below the {side} {joint} lower limit "
-                            f"{lower:g} deg (joint limits, {percentile:g}th percentile)")
+        raise StrengthError(
+            f"{what} {degrees:g} deg is below the {side} {joint} lower limit "
+            f"{lower:g} deg (joint limits, {percentile:g}th percentile)"
+        )
 
 
 def parse_joint_axis(text: str) -> int:
     key = text.strip().lower().replace(" ", "_").replace(".", "_")
     if key in JOINT_AXES:
         return JOINT_AXES.index(key)
-    raise StrengthError(f"unknown joint axis {text.strip()!r}; expected one of "
-                        f"{', '.join(JOINT_AXES)}")
+    raise StrengthError(
+        f"unknown joint axis {text.strip()!r}; expected one of {', '.join(JOINT_AXES)}"
+    )
 
 
 # --- the strength page's state --------------------------------------------------
+
 
 @dataclass(frozen=True)
 class StrengthRow:
@@ -541,7 +587,7 @@ class StrengthSheet:
         self._history: list[tuple[int, int, int, float]] = []  # (edit, row, column, old)
 
     @classmethod
-    def default(cls, figure) -> "StrengthSheet":
+    def default(cls, figure) -> StrengthSheet:
         return cls(read_strength_file(), figure)
 
     def _default_angles(self) -> np.ndarray:
@@ -568,19 +614,26 @@ class StrengthSheet:
     def rows(self) -> list[StrengthRow]:
         values, stored = self.values()
         shown = convert(values, GROUP_UNITS[STRENGTH][0], self.unit)
-        return [StrengthRow(i, m.name, m.label, self.side, tuple(map(float, self.angles[i])),
-                            float(shown[i]),
-                            "no data" if math.isnan(values[i]) else
-                            "stored" if stored[i] else "predicted",
-                            DISPLAY[self.unit])
-                for i, m in enumerate(MOTIONS)]
+        return [
+            StrengthRow(
+                i,
+                m.name,
+                m.label,
+                self.side,
+                tuple(map(float, self.angles[i])),
+                float(shown[i]),
+                "no data" if math.isnan(values[i]) else "stored" if stored[i] else "predicted",
+                DISPLAY[self.unit],
+            )
+            for i, m in enumerate(MOTIONS)
+        ]
 
     def row(self, index: int) -> StrengthRow:
         return self.rows()[index]
 
     def page(self, number: int) -> list[StrengthRow]:
         start = number * self.ROWS_PER_PAGE
-        return self.rows()[start:start + self.ROWS_PER_PAGE]
+        return self.rows()[start : start + self.ROWS_PER_PAGE]
 
     @property
     def pages(self) -> int:
@@ -594,7 +647,9 @@ class StrengthSheet:
         column = joint_axis if isinstance(joint_axis, int) else parse_joint_axis(joint_axis)
         degrees = parse_quantity(value, "deg") if isinstance(value, str) else float(value)
         check_angle(self.figure, self.side, JOINT_AXES[column], degrees)
-        self._history.append((next(EDIT_SEQUENCE), index, column, float(self.angles[index, column])))
+        self._history.append(
+            (next(EDIT_SEQUENCE), index, column, float(self.angles[index, column]))
+        )
         del self._history[:-100]
         self.angles[index, column] = degrees
         return self.row(index)
@@ -635,8 +690,9 @@ class StrengthSheet:
         factor = parse_side_factor(factor_text)
         self.non_dominant_factor = factor
         self.side = SIDES[1 - SIDES.index(self.side)]
-        return (f"Showing the {self.side} limb; non-dominant limb scaled by {factor:.3f}"
-                + (" (default)" if not factor_text.strip() else ""))
+        return f"Showing the {self.side} limb; non-dominant limb scaled by {factor:.3f}" + (
+            " (default)" if not factor_text.strip() else ""
+        )
 
     def fig_variables(self) -> list[tuple[str, float, str]]:
         """.fig strength variables: `<side>_<motion>_strength` in Nm for both
@@ -663,7 +719,7 @@ def fig_section(sheet: StrengthSheet) -> tuple[str, list[tuple[str, float, str]]
 def fit_summary(data: StrengthData) -> list[tuple[str, str, MotionFit]]:
     """(gender, side, fit) for every fitted motion (docs/model.md's table)."""
     out = []
-    for (gender, side) in data.sections:
+    for gender, side in data.sections:
         model = data.model(gender, side)
         out += [(gender, side, fit) for fit in model.fits if fit is not None]
     return out

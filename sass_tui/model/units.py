@@ -8,14 +8,14 @@ mapped to registry names before pint sees them.
 from __future__ import annotations
 
 import re
-from functools import lru_cache
+from functools import cache, lru_cache
 from pathlib import Path
 
-
+from sass_tui.model.errors import SassError
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH
 
 
-class UnitError(ValueError):
+class UnitError(ValueError, SassError):
     """A value or unit the user typed cannot be used here."""
 
 
@@ -28,7 +28,7 @@ def registry():
     return pint.UnitRegistry(str(Path(__file__).with_name("units.txt")), cache_folder=None)
 
 
-@lru_cache(maxsize=None)
+@cache
 def _factor(from_unit: str, to_unit: str) -> float:
     import pint
 
@@ -44,26 +44,80 @@ def _factor(from_unit: str, to_unit: str) -> float:
 # Display spelling -> registry name.  Keys are compared after lower-casing,
 # except where case matters (N vs n is unambiguous here, so all are lower-case).
 _ALIASES = {
-    "cm": "cm", "centimeter": "cm", "centimeters": "cm", "centimetre": "cm", "centimetres": "cm",
-    "mm": "mm", "millimeter": "mm", "millimeters": "mm",
-    "m": "m", "meter": "m", "meters": "m", "metre": "m", "metres": "m",
-    "in": "in", "inch": "in", "inches": "in", '"': "in",
-    "ft": "ft", "foot": "ft", "feet": "ft",
-    "deg": "deg", "degree": "deg", "degrees": "deg", "°": "deg",
-    "rad": "rad", "radian": "rad", "radians": "rad",
-    "kg": "kg", "kilogram": "kg", "kilograms": "kg",
-    "g": "g", "gram": "g", "grams": "g",
-    "lb": "lb", "lbs": "lb", "pound": "lb", "pounds": "lb",
-    "ft-lb": "ft_lb", "ft-lbf": "ft_lb", "ft·lb": "ft_lb", "ft·lbf": "ft_lb", "ftlb": "ft_lb",
-    "ft-lbs": "ft_lb", "ft*lbf": "ft_lb", "ft*lb": "ft_lb", "lbf-ft": "ft_lb", "lb-ft": "ft_lb",
-    "n-m": "N_m", "n·m": "N_m", "nm": "N_m", "n*m": "N_m", "n m": "N_m",
-    "deg/s": "deg/s", "°/s": "deg/s", "rad/s": "rad/s",
+    "cm": "cm",
+    "centimeter": "cm",
+    "centimeters": "cm",
+    "centimetre": "cm",
+    "centimetres": "cm",
+    "mm": "mm",
+    "millimeter": "mm",
+    "millimeters": "mm",
+    "m": "m",
+    "meter": "m",
+    "meters": "m",
+    "metre": "m",
+    "metres": "m",
+    "in": "in",
+    "inch": "in",
+    "inches": "in",
+    '"': "in",
+    "ft": "ft",
+    "foot": "ft",
+    "feet": "ft",
+    "deg": "deg",
+    "degree": "deg",
+    "degrees": "deg",
+    "°": "deg",
+    "rad": "rad",
+    "radian": "rad",
+    "radians": "rad",
+    "kg": "kg",
+    "kilogram": "kg",
+    "kilograms": "kg",
+    "g": "g",
+    "gram": "g",
+    "grams": "g",
+    "lb": "lb",
+    "lbs": "lb",
+    "pound": "lb",
+    "pounds": "lb",
+    "ft-lb": "ft_lb",
+    "ft-lbf": "ft_lb",
+    "ft·lb": "ft_lb",
+    "ft·lbf": "ft_lb",
+    "ftlb": "ft_lb",
+    "ft-lbs": "ft_lb",
+    "ft*lbf": "ft_lb",
+    "ft*lb": "ft_lb",
+    "lbf-ft": "ft_lb",
+    "lb-ft": "ft_lb",
+    "n-m": "N_m",
+    "n·m": "N_m",
+    "nm": "N_m",
+    "n*m": "N_m",
+    "n m": "N_m",
+    "deg/s": "deg/s",
+    "°/s": "deg/s",
+    "rad/s": "rad/s",
 }
 
 # Registry name -> how the program prints it.
-DISPLAY = {"cm": "cm", "in": "in", "deg": "deg", "rad": "rad", "kg": "kg", "lb": "lb",
-           "ft_lb": "ft-lb", "N_m": "N-m", "mm": "mm", "m": "m", "ft": "ft", "g": "g",
-           "deg/s": "deg/s", "rad/s": "rad/s"}
+DISPLAY = {
+    "cm": "cm",
+    "in": "in",
+    "deg": "deg",
+    "rad": "rad",
+    "kg": "kg",
+    "lb": "lb",
+    "ft_lb": "ft-lb",
+    "N_m": "N-m",
+    "mm": "mm",
+    "m": "m",
+    "ft": "ft",
+    "g": "g",
+    "deg/s": "deg/s",
+    "rad/s": "rad/s",
+}
 
 # Each group's canonical (stored) unit and the one it converts to.
 GROUP_UNITS = {
@@ -108,9 +162,19 @@ def convert(value, from_unit: str, to_unit: str):
 
 
 def _dimension_word(unit: str) -> str:
-    return {"cm": "length", "in": "length", "mm": "length", "m": "length",
-            "deg": "angle", "rad": "angle", "kg": "mass", "lb": "mass",
-            "ft_lb": "torque", "N_m": "torque", "deg/s": "angular speed"}.get(unit, unit)
+    return {
+        "cm": "length",
+        "in": "length",
+        "mm": "length",
+        "m": "length",
+        "deg": "angle",
+        "rad": "angle",
+        "kg": "mass",
+        "lb": "mass",
+        "ft_lb": "torque",
+        "N_m": "torque",
+        "deg/s": "angular speed",
+    }.get(unit, unit)
 
 
 def other_unit(group: str, unit: str) -> str:

@@ -7,8 +7,8 @@ and written in worker threads so the screen never freezes.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 from textual import work
 from textual.app import App, ComposeResult
@@ -19,26 +19,56 @@ from textual.widgets import Button, Footer
 from sass_tui.model.figfile import FigureIncompleteError, default_fig_name, write_fig
 from sass_tui.model.figure import Figure, FigureError
 from sass_tui.model.names import (
-    AXES, CENTER_OF_MASS, GIRTH, GROUP_TITLES, GROUPS, JOINT_LIMITS, STRENGTH)
+    AXES,
+    CENTER_OF_MASS,
+    GIRTH,
+    GROUP_TITLES,
+    GROUPS,
+    JOINT_LIMITS,
+    STRENGTH,
+)
 from sass_tui.model.percentile import PercentileError
 from sass_tui.model.popfile import PopulationFileError, read_population_file
 from sass_tui.model.strength import (
-    DEFAULT_NON_DOMINANT_FACTOR, JOINT_AXIS_LABELS, MOTIONS, StrengthError, StrengthFileError,
-    StrengthSheet, fig_section, read_strength_file)
-from sass_tui.model.units import DISPLAY, GROUP_UNITS, UnitError, convert, other_unit, parse_quantity
+    DEFAULT_NON_DOMINANT_FACTOR,
+    JOINT_AXIS_LABELS,
+    MOTIONS,
+    StrengthError,
+    StrengthFileError,
+    StrengthSheet,
+    fig_section,
+    read_strength_file,
+)
+from sass_tui.model.units import (
+    DISPLAY,
+    GROUP_UNITS,
+    UnitError,
+    convert,
+    other_unit,
+    parse_quantity,
+)
+from sass_tui.model.vocabulary import STRENGTH_PARAMETERS
 from sass_tui.ui.commands import COMMANDS
-from sass_tui.ui.widgets import (
-    AnswerInput, CommandMenu, DataSheet, GlobalPanel, GroupBar, GroupTab, MessageLine,
-    format_percentile, format_value, global_text)
-from sass_tui.ui.strength_page import StrengthPage, format_angle, format_strength
 from sass_tui.ui.individuals import QueryCommands
+from sass_tui.ui.strength_page import StrengthPage, format_angle, format_strength
+from sass_tui.ui.widgets import (
+    AnswerInput,
+    CommandMenu,
+    DataSheet,
+    GlobalPanel,
+    GroupBar,
+    GroupTab,
+    MessageLine,
+    format_percentile,
+    format_value,
+    global_text,
+)
 
 FIRST_MESSAGE = "Press left-mouse to select items."
 GROUP_KEYS = ((GIRTH, "g"), (JOINT_LIMITS, "j"), (CENTER_OF_MASS, "m"), (STRENGTH, "s"))
-STRENGTH_NOT_LOADED = ("Strength data is not loaded; SASS runs without it "
-                       "(Create Figure leaves strength out).")
-STRENGTH_PARAMETERS = ("strength_type", "motion_speed", "handedness", "training_level",
-                       "fatigue_level")
+STRENGTH_NOT_LOADED = (
+    "Strength data is not loaded; SASS runs without it (Create Figure leaves strength out)."
+)
 # What the user may type wrongly: shown on the message line, never a traceback.
 INPUT_ERRORS = (FigureError, PercentileError, UnitError, ValueError, OSError)
 
@@ -67,8 +97,10 @@ class SassApp(QueryCommands, App):
         Binding("u", "undo", "Undo", priority=True),
         Binding("ctrl+z", "undo", show=False),
         Binding("w", "next_warning", "Warnings", priority=True),
-        *(Binding(key, f"select_group('{group}')", show=False, priority=True)
-          for group, key in GROUP_KEYS),
+        *(
+            Binding(key, f"select_group('{group}')", show=False, priority=True)
+            for group, key in GROUP_KEYS
+        ),
     ]
 
     def check_action(self, action: str, parameters) -> bool | None:
@@ -76,9 +108,14 @@ class SassApp(QueryCommands, App):
             return False
         return super().check_action(action, parameters)
 
-    def __init__(self, figure: Figure | None = None, *, cursor_blink: bool = True,
-                 strength_path: str | Path | None = None,
-                 db_path: str | Path | None = None) -> None:
+    def __init__(
+        self,
+        figure: Figure | None = None,
+        *,
+        cursor_blink: bool = True,
+        strength_path: str | Path | None = None,
+        db_path: str | Path | None = None,
+    ) -> None:
         super().__init__()
         self.figure = figure or Figure.default()
         # None = $SASS_DB or the user's data directory, created on first Query.
@@ -212,11 +249,15 @@ class SassApp(QueryCommands, App):
         if self.message_line.prompting:  # a cell edit began meanwhile: keep its prompt
             return
         sheet = self.active_sheet
-        message = (f"{GROUP_TITLES[self.data_group]}: {sheet.row_count} rows, "
-                   f"{sheet.pages} page{'s' if sheet.pages > 1 else ''}.")
+        message = (
+            f"{GROUP_TITLES[self.data_group]}: {sheet.row_count} rows, "
+            f"{sheet.pages} page{'s' if sheet.pages > 1 else ''}."
+        )
         if self.data_group == STRENGTH:
-            message += (f" {self.strength_sheet.side.capitalize()} limb, "
-                        f"from {self.strength_sheet.data.title}.")
+            message += (
+                f" {self.strength_sheet.side.capitalize()} limb, "
+                f"from {self.strength_sheet.data.title}."
+            )
         self.say(message)
 
     # --- commands ---------------------------------------------------------------
@@ -273,9 +314,11 @@ class SassApp(QueryCommands, App):
 
     def _show_warning(self) -> None:
         count = len(self.warnings)
-        self.message_line.show(f"{self.warnings[self._warning_index]}  "
-                               f"[warning {self._warning_index + 1} of {count}; w: next]",
-                               "warning")
+        self.message_line.show(
+            f"{self.warnings[self._warning_index]}  "
+            f"[warning {self._warning_index + 1} of {count}; w: next]",
+            "warning",
+        )
 
     # --- Input Data -----------------------------------------------------------------
     def action_input_data(self) -> None:
@@ -295,12 +338,17 @@ class SassApp(QueryCommands, App):
             self.load_file(path, read_strength_file, self._apply_strength, "strength data")
         else:
             group = self.data_group
-            self.load_file(path, lambda p: read_population_file(p, group),
-                           lambda data: self._apply_population(group, data), GROUP_TITLES[group])
+            self.load_file(
+                path,
+                lambda p: read_population_file(p, group),
+                lambda data: self._apply_population(group, data),
+                GROUP_TITLES[group],
+            )
 
     @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
-    def load_file(self, path: Path, read: Callable[[Path], object],
-                  apply: Callable[[object], None], what: str) -> None:
+    def load_file(
+        self, path: Path, read: Callable[[Path], object], apply: Callable[[object], None], what: str
+    ) -> None:
         """Input Data: read in a worker; a file that fails leaves `what` as it was."""
         try:
             data = read(path)
@@ -345,8 +393,11 @@ class SassApp(QueryCommands, App):
         sheet = self.strength_sheet
         name = f"{sheet.side} {MOTIONS[row].label.lower()}, {JOINT_AXIS_LABELS[column].lower()}"
         current = format_angle(sheet.angles[row, column])
-        self.ask(f"{name} angle [{current} deg]:",
-                 lambda text: self._edit_angle(row, column, text), initial)
+        self.ask(
+            f"{name} angle [{current} deg]:",
+            lambda text: self._edit_angle(row, column, text),
+            initial,
+        )
 
     def _edit_angle(self, row: int, column: int, text: str) -> None:
         axis = JOINT_AXIS_LABELS[column].lower()
@@ -354,23 +405,29 @@ class SassApp(QueryCommands, App):
             self.say(f"{MOTIONS[row].label} {axis} unchanged.")
             return
         result = self.strength_sheet.set_angle(row, column, text)
-        self.say(f"{result.side.capitalize()} {result.label.lower()} at {axis} "
-                 f"{format_angle(result.angles[column])} deg: "
-                 f"{format_strength(result.value)} {result.unit} ({result.source}).")
+        self.say(
+            f"{result.side.capitalize()} {result.label.lower()} at {axis} "
+            f"{format_angle(result.angles[column])} deg: "
+            f"{format_strength(result.value)} {result.unit} ({result.source})."
+        )
 
     def action_switch_side(self) -> None:
         if not (self.data_group == STRENGTH and self.strength_sheet is not None):
             self.say("Right → Left applies to the Strength group (press s).")
             return
-        self.ask(f"Scaling factor for the non-dominant limb "
-                 f"(RETURN = default {DEFAULT_NON_DOMINANT_FACTOR:.3f}):",
-                 lambda text: self.say(self.strength_sheet.switch_side(text) + "."))
+        self.ask(
+            f"Scaling factor for the non-dominant limb "
+            f"(RETURN = default {DEFAULT_NON_DOMINANT_FACTOR:.3f}):",
+            lambda text: self.say(self.strength_sheet.switch_side(text) + "."),
+        )
 
     def _apply_population(self, group: str, data) -> None:
         gender = self.figure.gender
         if not data.has(gender):
-            self.complain(f"{data.path}: no 'T {gender.upper()}' section for this {gender} "
-                          f"figure; {GROUP_TITLES[group]} unchanged.")
+            self.complain(
+                f"{data.path}: no 'T {gender.upper()}' section for this {gender} "
+                f"figure; {GROUP_TITLES[group]} unchanged."
+            )
             return
         self.figure.load_group(group, data)
         self.refresh_screen()
@@ -386,15 +443,19 @@ class SassApp(QueryCommands, App):
     def action_create_figure(self) -> None:
         missing = self.figure.missing_groups()
         if missing:
-            self.complain(f"Cannot create a figure: {', '.join(missing)} not loaded "
-                          f"for {self.figure.gender}.")
+            self.complain(
+                f"Cannot create a figure: {', '.join(missing)} not loaded for {self.figure.gender}."
+            )
             return
-        default = default_fig_name(self.figure.gender, self.figure.groups[GIRTH].percentile,
-                                   self.figure.figure_type)
+        default = default_fig_name(
+            self.figure.gender, self.figure.groups[GIRTH].percentile, self.figure.figure_type
+        )
         if self.figure.person:
             default = self.person_fig_name()
-        self.ask(f"Figure file name [{default}]:",
-                 lambda text: self._create_figure_named(text.strip() or default))
+        self.ask(
+            f"Figure file name [{default}]:",
+            lambda text: self._create_figure_named(text.strip() or default),
+        )
 
     def _create_figure_named(self, name: str) -> None:
         path = Path(name).expanduser()
@@ -412,6 +473,7 @@ class SassApp(QueryCommands, App):
             else:
                 raise ValueError(f"expected y or n, got {answer.strip()!r}; nothing written")
             self._write_unless_kept(path, lambda: self.write_figure(path, sections))
+
         self.ask("Include strength in the figure? (Y/n)", include)
 
     def _write_unless_kept(self, path: Path, write: Callable[[], None]) -> None:
@@ -425,6 +487,7 @@ class SassApp(QueryCommands, App):
                 write()
             else:
                 self.say(f"Not written; {path} kept as it was.")
+
         self.ask(f"{path} exists. Overwrite it? (y/N)", overwrite)
 
     @work(thread=True, exclusive=True, group="create-figure", exit_on_error=False)
@@ -438,16 +501,30 @@ class SassApp(QueryCommands, App):
             self.call_from_thread(self.complain, f"{path}: cannot write: {exc.strerror or exc}")
             return
         filled = sum(int(self.figure.output_values(g)[1].sum()) for g in GROUPS)
-        note = (f" {filled} values not measured for {self.figure.person} came from the population."
-                if filled else "")
+        note = (
+            f" {filled} values not measured for {self.figure.person} came from the population."
+            if filled
+            else ""
+        )
         self.call_from_thread(self.say, f"Wrote {path}.{note}")
 
     # --- Export HAnim -----------------------------------------------------------------
     def action_export_hanim(self) -> None:
-        default = Path(default_fig_name(self.figure.gender, self.figure.groups[GIRTH].percentile,
-                                        self.figure.figure_type)).with_suffix(".x3d").name
-        self.ask(f"HAnim file name [{default}]:", lambda text: self._export_hanim_named(
-            Path(text.strip() or default).expanduser()))
+        default = (
+            Path(
+                default_fig_name(
+                    self.figure.gender,
+                    self.figure.groups[GIRTH].percentile,
+                    self.figure.figure_type,
+                )
+            )
+            .with_suffix(".x3d")
+            .name
+        )
+        self.ask(
+            f"HAnim file name [{default}]:",
+            lambda text: self._export_hanim_named(Path(text.strip() or default).expanduser()),
+        )
 
     def _export_hanim_named(self, path: Path) -> None:
         self._write_unless_kept(path, lambda: self.export_figure(path))
@@ -485,8 +562,9 @@ class SassApp(QueryCommands, App):
             shown = convert(state.values[row, axis], GROUP_UNITS[group][0], state.unit)
             current = format_value(shown, state.unit)
             prompt = f"{name} value [{current} {DISPLAY[state.unit]}]:"
-        self.ask(prompt, lambda text: self._edit_cell(group, row, axis, is_percentile, text),
-                 initial)
+        self.ask(
+            prompt, lambda text: self._edit_cell(group, row, axis, is_percentile, text), initial
+        )
 
     def _edit_cell(self, group: str, row: int, axis: int, is_percentile: bool, text: str) -> None:
         state = self.figure.groups[group]
@@ -498,33 +576,46 @@ class SassApp(QueryCommands, App):
             self.figure.set_cell_percentile(group, row, axis, parse_percentile(text))
         else:
             typed = parse_quantity(text, state.unit)
-            self.figure.set_value(group, row, axis, convert(typed, state.unit, GROUP_UNITS[group][0]))
+            self.figure.set_value(
+                group, row, axis, convert(typed, state.unit, GROUP_UNITS[group][0])
+            )
         shown = convert(state.values[row, axis], GROUP_UNITS[group][0], state.unit)
-        self.say(f"{name} = {format_value(shown, state.unit)} {DISPLAY[state.unit]} "
-                 f"({format_percentile(state.percentiles[row, axis])} percentile).")
+        self.say(
+            f"{name} = {format_value(shown, state.unit)} {DISPLAY[state.unit]} "
+            f"({format_percentile(state.percentiles[row, axis])} percentile)."
+        )
 
     # --- editing the global data --------------------------------------------------------
     def edit_global(self, field: str, initial: str = "") -> None:
         if field == "population":
             self.complain("The population is read from the population file; it cannot be edited.")
             return
-        if field == "group_percentile" and self.data_group == STRENGTH \
-                and self.strength_sheet is None:
+        if (
+            field == "group_percentile"
+            and self.data_group == STRENGTH
+            and self.strength_sheet is None
+        ):
             self.complain(self.strength_error)
             return
         current = global_text(self.figure, self.data_group, field, self.strength_percentile)
         hint = {
-            "figure_type": "skinny or polybody", "gender": "male or female",
-            "mass": "kg, or e.g. 180 lb", "stature": "cm, or e.g. 70 in",
-            "mass_percentile": "percentile", "stature_percentile": "percentile",
+            "figure_type": "skinny or polybody",
+            "gender": "male or female",
+            "mass": "kg, or e.g. 180 lb",
+            "stature": "cm, or e.g. 70 in",
+            "mass_percentile": "percentile",
+            "stature_percentile": "percentile",
             "group_percentile": f"percentile of every {GROUP_TITLES[self.data_group]} row",
             "strength_type": "isometric, isokinetic or isotonic",
-            "motion_speed": "deg/s", "handedness": "right or left",
-            "training_level": "0 = no training", "fatigue_level": "0 = not tired",
+            "motion_speed": "deg/s",
+            "handedness": "right or left",
+            "training_level": "0 = no training",
+            "fatigue_level": "0 = not tired",
         }[field]
         label = field.replace("_", " ").capitalize()
-        self.ask(f"{label} ({hint}) [{current}]:",
-                 lambda text: self._edit_global(field, text), initial)
+        self.ask(
+            f"{label} ({hint}) [{current}]:", lambda text: self._edit_global(field, text), initial
+        )
 
     def _edit_global(self, field: str, text: str) -> None:
         label = field.replace("_", " ").capitalize()
@@ -554,11 +645,15 @@ class SassApp(QueryCommands, App):
             try:
                 number = float(text)
             except ValueError:
-                raise ValueError(f"{label.lower()} must be a number, got {text.strip()!r}") from None
+                raise ValueError(
+                    f"{label.lower()} must be a number, got {text.strip()!r}"
+                ) from None
             figure.set_strength_parameter(field, number)
         else:
             figure.set_strength_parameter(field, text)
-        message = f"{label} = {global_text(figure, self.data_group, field, self.strength_percentile)}."
+        message = (
+            f"{label} = {global_text(figure, self.data_group, field, self.strength_percentile)}."
+        )
         if field == "gender":
             message += " Every group reloaded for this gender."
         elif field in STRENGTH_PARAMETERS and self.strength_sheet is None:

@@ -8,8 +8,8 @@ Figure 6 has two columns; `column` and `row` place a command in them.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 from sass_tui.model.names import STRENGTH
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, other_unit
@@ -61,21 +61,64 @@ COMMANDS: tuple[CommandSpec, ...] = (
     CommandSpec("previous_page", "p", "previous_page", "Prev", lambda app: "Previous Page", row=1),
     CommandSpec("convert_units", "c", "convert_units", "Units", _conversion_label, row=2),
     CommandSpec("input_data", "i", "input_data", "Input", lambda app: "Input Data", row=3),
-    CommandSpec("create_figure", "f", "create_figure", "Figure", lambda app: "Create Figure", row=4),
+    CommandSpec(
+        "create_figure", "f", "create_figure", "Figure", lambda app: "Create Figure", row=4
+    ),
     CommandSpec("quit", "q", "quit", "Quit", lambda app: "Quit", row=5),
     # Figure 6's second column shares slots: "Query or Disp. Pop.", "Disp. Indv. or
     # Disp. More" -- the second of each pair while a person is displayed (§12.2.4).
-    CommandSpec("query", "d", "query", "Query", lambda app: "Query", column=1, row=0,
-                available=_showing_population),
-    CommandSpec("display_population", "o", "display_population", "Disp. Pop.",
-                lambda app: "Disp. Pop.", column=1, row=0, available=_showing_person),
-    CommandSpec("display_individual", "v", "display_individual", "Disp. Indv.",
-                lambda app: "Disp. Indv.", column=1, row=1, available=_showing_population),
-    CommandSpec("display_more", "x", "display_more", "Disp. More",
-                lambda app: "Disp. More", column=1, row=1, available=_showing_person),
+    CommandSpec(
+        "query",
+        "d",
+        "query",
+        "Query",
+        lambda app: "Query",
+        column=1,
+        row=0,
+        available=_showing_population,
+    ),
+    CommandSpec(
+        "display_population",
+        "o",
+        "display_population",
+        "Disp. Pop.",
+        lambda app: "Disp. Pop.",
+        column=1,
+        row=0,
+        available=_showing_person,
+    ),
+    CommandSpec(
+        "display_individual",
+        "v",
+        "display_individual",
+        "Disp. Indv.",
+        lambda app: "Disp. Indv.",
+        column=1,
+        row=1,
+        available=_showing_population,
+    ),
+    CommandSpec(
+        "display_more",
+        "x",
+        "display_more",
+        "Disp. More",
+        lambda app: "Disp. More",
+        column=1,
+        row=1,
+        available=_showing_person,
+    ),
     # One of figure 6's void slots.
-    CommandSpec("export_hanim", "e", "export_hanim", "HAnim", lambda app: "Export HAnim",
-                column=1, row=2),
-    CommandSpec("switch_side", "r", "switch_side", "Side", _side_label, column=1, row=5,
-                available=_on_strength_page),
+    CommandSpec(
+        "export_hanim", "e", "export_hanim", "HAnim", lambda app: "Export HAnim", column=1, row=2
+    ),
+    CommandSpec(
+        "switch_side",
+        "r",
+        "switch_side",
+        "Side",
+        _side_label,
+        column=1,
+        row=5,
+        available=_on_strength_page,
+    ),
 )

@@ -61,9 +61,14 @@ class QueryCommands:
                 self.ask("Enter the number:", self._nth_person)
             else:
                 total = self.query_lists.count(SELECTED_LIST)
-                index = {"First": 0, "Last": total - 1, "Previous": self.person_index - 1,
-                         "Next": self.person_index + 1}[choice]
+                index = {
+                    "First": 0,
+                    "Last": total - 1,
+                    "Previous": self.person_index - 1,
+                    "Next": self.person_index + 1,
+                }[choice]
                 self.show_person(index)
+
         self.push_screen(MoreMenu(), chosen)
 
     def _nth_person(self, text: str) -> None:
@@ -91,11 +96,17 @@ class QueryCommands:
             with lists.lock:
                 person = fetch_individual(lists.conn, lists.selected_id(index))
             figure = population.for_person(
-                person.name, person.gender, {g: person.groups[g] for g in GROUPS},
-                mass=person.mass, stature=person.stature,
+                person.name,
+                person.gender,
+                {g: person.groups[g] for g in GROUPS},
+                mass=person.mass,
+                stature=person.stature,
                 handedness=person.handedness if person.handedness in ("right", "left") else None,
-                **{k: person.strength.get(k) for k in
-                   ("strength_type", "motion_speed", "training_level", "fatigue_level")})
+                **{
+                    k: person.strength.get(k)
+                    for k in ("strength_type", "motion_speed", "training_level", "fatigue_level")
+                },
+            )
         except (FigureError, *DB_ERRORS) as exc:
             self.complain(f"Cannot display person {index + 1}: {exc}")
             return

@@ -15,7 +15,6 @@ shows its current menu.
 from __future__ import annotations
 
 import re
-
 from dataclasses import dataclass, field
 
 from textual.binding import Binding
@@ -25,9 +24,10 @@ from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
 from sass_tui.db.query import QueryError, compile_query
-from sass_tui.db.schema import HANDEDNESS, STRENGTH_TYPES
 from sass_tui.model.names import CENTER_OF_MASS_ROWS, GIRTH_ROWS, JOINT_LIMIT_ROWS
 from sass_tui.model.strength import MOTIONS
+from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
+from sass_tui.model.vocabulary import STRENGTH_TYPES
 
 PREVIOUS = "Previous Menu"
 VALUE_PROMPT = "Type in the constraint value:"
@@ -57,52 +57,78 @@ def _words_menu(key: str, title: str, words) -> Menu:
 
 
 _NUMERIC = "operation"
-MENUS: dict[str, Menu] = {m.key: m for m in (
-    Menu("query", "Query Menu", (
-        Item("Global Information", "", "global"),
-        Item("Anthropometric Groups", "", "group"),
-        Item("Re_execute", "", "re_execute"),
-        Item("Abort", "", "abort"),
-    ), previous=False),
-    Menu("global", "Global Information", (
-        Item("Gender", "gender", "gender"),
-        Item("Mass", "mass", _NUMERIC),
-        Item("Stature", "stature", _NUMERIC),
-        Item("Strength Type", "strength_type", "strength_type"),
-        Item("Handedness", "handedness", "handedness"),
-        Item("Motion Speed", "motion_speed", _NUMERIC),
-        Item("Training Level", "training_level", _NUMERIC),
-        Item("Fatigue Level", "fatigue_level", _NUMERIC),
-    )),
-    _words_menu("gender", "Gender", ("male", "female")),
-    _words_menu("strength_type", "Strength Type", STRENGTH_TYPES),
-    _words_menu("handedness", "Handedness", HANDEDNESS),
-    Menu("group", "Anthropometric Group", (
-        Item("Girth", "girth", "girth"),
-        Item("Joint Limit", "joint_limit", "joint_limit"),
-        Item("Center of Mass", "center_of_mass", "center_of_mass"),
-        Item("Strength", "strength", "strength"),
-    )),
-    _rows_menu("girth", "Girth Menu", GIRTH_ROWS, "axis"),
-    _rows_menu("joint_limit", "Joint Limit Menu", JOINT_LIMIT_ROWS, "axis"),
-    _rows_menu("center_of_mass", "Center of Mass Menu", CENTER_OF_MASS_ROWS, "axis"),
-    # A motion has one number to query, its maximum strength: no Axis Menu.
-    _rows_menu("strength", "Strength Menu", MOTIONS, _NUMERIC, ".max"),
-    Menu("axis", "Axis Menu", tuple(Item(f"{a.upper()} Axis", f".{a}", _NUMERIC) for a in "xyz")),
-    Menu(_NUMERIC, "Relational Operation Menu", (
-        Item("Less Than (<)", " < ", "value"),
-        Item("Greater Than (>)", " > ", "value"),
-        Item("Less Than or Equal (≤)", " <= ", "value"),
-        Item("Greater Than or Equal (≥)", " >= ", "value"),
-        Item("Equal (=)", " = ", "value"),
-        Item("Not Equal (≠)", " != ", "value"),
-    )),
-    Menu("conjunction", "Conjunction Menu", (
-        Item("And", " AND ", "query"),
-        Item("Or", " OR ", "query"),
-        Item("Done", "", "done"),
-    )),
-)}
+MENUS: dict[str, Menu] = {
+    m.key: m
+    for m in (
+        Menu(
+            "query",
+            "Query Menu",
+            (
+                Item("Global Information", "", "global"),
+                Item("Anthropometric Groups", "", "group"),
+                Item("Re_execute", "", "re_execute"),
+                Item("Abort", "", "abort"),
+            ),
+            previous=False,
+        ),
+        Menu(
+            "global",
+            "Global Information",
+            (
+                Item("Gender", "gender", "gender"),
+                Item("Mass", "mass", _NUMERIC),
+                Item("Stature", "stature", _NUMERIC),
+                Item("Strength Type", "strength_type", "strength_type"),
+                Item("Handedness", "handedness", "handedness"),
+                Item("Motion Speed", "motion_speed", _NUMERIC),
+                Item("Training Level", "training_level", _NUMERIC),
+                Item("Fatigue Level", "fatigue_level", _NUMERIC),
+            ),
+        ),
+        _words_menu("gender", "Gender", ("male", "female")),
+        _words_menu("strength_type", "Strength Type", STRENGTH_TYPES),
+        _words_menu("handedness", "Handedness", HANDEDNESS),
+        Menu(
+            "group",
+            "Anthropometric Group",
+            (
+                Item("Girth", "girth", "girth"),
+                Item("Joint Limit", "joint_limit", "joint_limit"),
+                Item("Center of Mass", "center_of_mass", "center_of_mass"),
+                Item("Strength", "strength", "strength"),
+            ),
+        ),
+        _rows_menu("girth", "Girth Menu", GIRTH_ROWS, "axis"),
+        _rows_menu("joint_limit", "Joint Limit Menu", JOINT_LIMIT_ROWS, "axis"),
+        _rows_menu("center_of_mass", "Center of Mass Menu", CENTER_OF_MASS_ROWS, "axis"),
+        # A motion has one number to query, its maximum strength: no Axis Menu.
+        _rows_menu("strength", "Strength Menu", MOTIONS, _NUMERIC, ".max"),
+        Menu(
+            "axis", "Axis Menu", tuple(Item(f"{a.upper()} Axis", f".{a}", _NUMERIC) for a in "xyz")
+        ),
+        Menu(
+            _NUMERIC,
+            "Relational Operation Menu",
+            (
+                Item("Less Than (<)", " < ", "value"),
+                Item("Greater Than (>)", " > ", "value"),
+                Item("Less Than or Equal (≤)", " <= ", "value"),
+                Item("Greater Than or Equal (≥)", " >= ", "value"),
+                Item("Equal (=)", " = ", "value"),
+                Item("Not Equal (≠)", " != ", "value"),
+            ),
+        ),
+        Menu(
+            "conjunction",
+            "Conjunction Menu",
+            (
+                Item("And", " AND ", "query"),
+                Item("Or", " OR ", "query"),
+                Item("Done", "", "done"),
+            ),
+        ),
+    )
+}
 
 
 @dataclass
@@ -178,8 +204,10 @@ class QueryBuilder:
 class QueryPopup(Vertical):
     """One pop-up menu at a time; Escape is Previous Menu (Abort in the Query Menu)."""
 
-    BINDINGS = [Binding("escape", "back", "Previous Menu", show=False),
-                Binding("e", "edit_text", "Edit query", show=False)]
+    BINDINGS = [
+        Binding("escape", "back", "Previous Menu", show=False),
+        Binding("e", "edit_text", "Edit query", show=False),
+    ]
 
     class Chosen(Message):
         def __init__(self, label: str, menu: str | None = None) -> None:

@@ -25,7 +25,6 @@ from textual.widgets import Button, Footer, OptionList, Static
 from textual.widgets.option_list import Option
 
 from sass_tui.db.flatfile import FlatFileError, FlatFiles
-from sass_tui.db.individual import fetch_individual
 from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.query import QueryError
 from sass_tui.db.schema import DatabaseError
@@ -40,10 +39,16 @@ NO_DATA = "No data satisfied the query."
 LIST_TITLES = {QUERY_LIST: "Query List", SELECTED_LIST: "Selected List"}
 # Input DB asks for these one by one (report §12.3.3); ESC at Strength
 # Parameter skips the three strength files after it.
-INPUT_DB_FILES = (("person", "Person"), ("girth", "Girth"), ("joint_limits", "Joint Limits"),
-                  ("center_of_mass", "Center of Mass"), ("strength_par", "Strength Parameter"),
-                  ("shoulder", "Shoulder Strength"), ("elbow", "Elbow Strength"),
-                  ("wrist", "Wrist Strength"))
+INPUT_DB_FILES = (
+    ("person", "Person"),
+    ("girth", "Girth"),
+    ("joint_limits", "Joint Limits"),
+    ("center_of_mass", "Center of Mass"),
+    ("strength_par", "Strength Parameter"),
+    ("shoulder", "Shoulder Strength"),
+    ("elbow", "Elbow Strength"),
+    ("wrist", "Wrist Strength"),
+)
 DB_ERRORS = (QueryError, DatabaseError, FlatFileError, sqlite3.Error, OSError, ValueError)
 
 
@@ -63,19 +68,49 @@ def _void_unless_query_list(label: str):
 # button names the list it will display.
 QUERY_COMMANDS: tuple[CommandSpec, ...] = (
     CommandSpec("q_next_page", "n", "next_page", "Next", lambda app: "Next Page", row=0),
-    CommandSpec("q_previous_page", "p", "previous_page", "Prev", lambda app: "Previous Page", row=1),
+    CommandSpec(
+        "q_previous_page", "p", "previous_page", "Prev", lambda app: "Previous Page", row=1
+    ),
     CommandSpec("query_db", "d", "query_db", "Query DB", lambda app: "Query DB", row=2),
-    CommandSpec("select_all", "a", "select_all", "Sel. All", _void_unless_query_list("Select All"),
-                row=3, available=_on_query_list),
-    CommandSpec("select_one", "s", "select_one", "Sel. One", _void_unless_query_list("Select One"),
-                row=4, available=_on_query_list),
+    CommandSpec(
+        "select_all",
+        "a",
+        "select_all",
+        "Sel. All",
+        _void_unless_query_list("Select All"),
+        row=3,
+        available=_on_query_list,
+    ),
+    CommandSpec(
+        "select_one",
+        "s",
+        "select_one",
+        "Sel. One",
+        _void_unless_query_list("Select One"),
+        row=4,
+        available=_on_query_list,
+    ),
     CommandSpec("delete_one", "x", "delete_one", "Delete", lambda app: "Delete One", row=5),
-    CommandSpec("display_list", "l", "display_list", "List",
-                lambda app: "Disp. Selected List" if _on_query_list(app) else "Disp. Query List",
-                column=1, row=0),
+    CommandSpec(
+        "display_list",
+        "l",
+        "display_list",
+        "List",
+        lambda app: "Disp. Selected List" if _on_query_list(app) else "Disp. Query List",
+        column=1,
+        row=0,
+    ),
     CommandSpec("input_db", "i", "input_db", "Input DB", lambda app: "Input DB", column=1, row=1),
-    CommandSpec("exit_query", "e", "exit_query", "Exit", _void_unless_query_list("Exit Query"),
-                column=1, row=5, available=_on_query_list),
+    CommandSpec(
+        "exit_query",
+        "e",
+        "exit_query",
+        "Exit",
+        _void_unless_query_list("Exit Query"),
+        column=1,
+        row=5,
+        available=_on_query_list,
+    ),
 )
 
 
@@ -92,21 +127,29 @@ class QueryCommandMenu(CommandMenu):
 class SummaryPanel(Static):
     def show(self, query: str, which: str, query_total: int, selected_total: int) -> None:
         text = Text(no_wrap=True, overflow="ellipsis")
-        for label, value in (("Query", query or "(none yet)"),
-                             ("Current Display List", LIST_TITLES[which]),
-                             ("Total Data in Query List", f"{query_total:,}"),
-                             ("Total Data in Selected List", f"{selected_total:,}")):
+        for label, value in (
+            ("Query", query or "(none yet)"),
+            ("Current Display List", LIST_TITLES[which]),
+            ("Total Data in Query List", f"{query_total:,}"),
+            ("Total Data in Selected List", f"{selected_total:,}"),
+        ):
             text.append(f"{label}: ", "bold")
             text.append(f"{value}\n")
         self.update(text.rstrip() or text)
 
 
 # Name, gender, mass, stature, strength type, motion speed, handedness, training, fatigue.
-LIST_COLUMNS = (("Name", "name", 14, "<"), ("Gender", "gender", 7, "<"),
-                ("Mass kg", "mass", 8, ">"), ("Stature cm", "stature", 11, ">"),
-                ("Strength type", "strength_type", 14, "<"), ("Speed °/s", "motion_speed", 10, ">"),
-                ("Handed", "handedness", 7, "<"), ("Training", "training_level", 9, ">"),
-                ("Fatigue", "fatigue_level", 8, ">"))
+LIST_COLUMNS = (
+    ("Name", "name", 14, "<"),
+    ("Gender", "gender", 7, "<"),
+    ("Mass kg", "mass", 8, ">"),
+    ("Stature cm", "stature", 11, ">"),
+    ("Strength type", "strength_type", 14, "<"),
+    ("Speed °/s", "motion_speed", 10, ">"),
+    ("Handed", "handedness", 7, "<"),
+    ("Training", "training_level", 9, ">"),
+    ("Fatigue", "fatigue_level", 8, ">"),
+)
 
 
 def _cell(row: dict, key: str) -> str:
@@ -161,7 +204,7 @@ class ListSheet(Widget, can_focus=True):
         for index, row in enumerate(self.rows):
             line = Text(no_wrap=True, overflow="crop")
             for _, key, width, align in LIST_COLUMNS:
-                line.append(f"{_cell(row, key)[:width - 1]:{align}{width - 1}} ")
+                line.append(f"{_cell(row, key)[: width - 1]:{align}{width - 1}} ")
             if index == self.cursor and self.has_focus:
                 line.stylize(cursor)
             lines.append(line)
@@ -284,7 +327,7 @@ class QueryScreen(Screen):
     # --- database ------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def open_database(self) -> None:
-        from sass_tui.db.commands import create_default_database
+        from sass_tui.db.default import create_default_database
         from sass_tui.db.schema import default_db_path
 
         path = self.db_path or default_db_path()
@@ -357,8 +400,9 @@ class QueryScreen(Screen):
             self.say("This is the last page." if pages > 0 else "This is the first page.")
             return
         self.show_page(target)
-        self.say(f"Page {target // sheet.page_size + 1} of "
-                 f"{max(1, -(-sheet.total // sheet.page_size))}.")
+        self.say(
+            f"Page {target // sheet.page_size + 1} of {max(1, -(-sheet.total // sheet.page_size))}."
+        )
 
     def action_next_page(self) -> None:
         self._list_command(lambda: self._turn(1))
@@ -376,6 +420,7 @@ class QueryScreen(Screen):
                 moved = lists.select_all()
             self.show_page(0)
             self.say(f"{moved:,} people moved to the selected list.")
+
         self._list_command(select_all)
 
     def action_select_one(self) -> None:
@@ -392,6 +437,7 @@ class QueryScreen(Screen):
                 lists.select_one(person["id"])
             self.show_page(self.sheet.first)
             self.say(f"{person['name']} moved to the selected list.")
+
         self._list_command(select_one)
 
     def action_delete_one(self) -> None:
@@ -405,6 +451,7 @@ class QueryScreen(Screen):
                 lists.delete_one(self.which, person["id"])
             self.show_page(self.sheet.first)
             self.say(f"{person['name']} deleted from the {LIST_TITLES[self.which].lower()}.")
+
         self._list_command(delete_one)
 
     def action_display_list(self) -> None:
@@ -413,6 +460,7 @@ class QueryScreen(Screen):
             self.sheet.cursor = 0
             self.show_page(0)
             self.say(f"{LIST_TITLES[self.which]} displayed.")
+
         self._list_command(switch)
 
     def action_exit_query(self) -> None:
@@ -446,8 +494,10 @@ class QueryScreen(Screen):
             return
         self.awaiting_build = False
         if x is not None and y is not None:
-            self.popup.styles.offset = (max(0, min(x, self.size.width - 40)),
-                                        max(0, min(y, self.size.height - 16)))
+            self.popup.styles.offset = (
+                max(0, min(x, self.size.width - 40)),
+                max(0, min(y, self.size.height - 16)),
+            )
         self._show_current()
 
     def on_mouse_down(self, event: events.MouseDown) -> None:
@@ -463,8 +513,11 @@ class QueryScreen(Screen):
         self.refresh_screen()
         if builder.current == "value":
             self.popup.display = False
-            self.ask(VALUE_PROMPT, self._constraint,
-                     on_cancel=lambda: self.on_query_popup_chosen(QueryPopup.Chosen(PREVIOUS)))
+            self.ask(
+                VALUE_PROMPT,
+                self._constraint,
+                on_cancel=lambda: self.on_query_popup_chosen(QueryPopup.Chosen(PREVIOUS)),
+            )
             return
         self.popup.show_menu(builder.menu)
         self._show_live()
@@ -474,8 +527,11 @@ class QueryScreen(Screen):
             self.builder.constraint(typed)
         except QueryError as exc:
             # The builder stays where it was: ask again, saying what was wrong.
-            self.ask(f"{exc}. {VALUE_PROMPT}", self._constraint,
-                     on_cancel=lambda: self.on_query_popup_chosen(QueryPopup.Chosen(PREVIOUS)))
+            self.ask(
+                f"{exc}. {VALUE_PROMPT}",
+                self._constraint,
+                on_cancel=lambda: self.on_query_popup_chosen(QueryPopup.Chosen(PREVIOUS)),
+            )
             self.query_one("#message").set_class(True, "-error")
             return
         self._show_current()
@@ -500,6 +556,7 @@ class QueryScreen(Screen):
         elif outcome == "done":
             text = builder.text
             from sass_tui.db.query import compile_query
+
             try:
                 compile_query(text)
             except QueryError as exc:
@@ -516,6 +573,7 @@ class QueryScreen(Screen):
         def edited(text: str) -> None:
             self.builder.replace_text(text)
             self._show_current()
+
         self.ask("Query:", edited, on_cancel=self._show_current, initial=self.builder.text)
 
     def _close_builder(self) -> None:
@@ -603,8 +661,14 @@ class QueryScreen(Screen):
             else:
                 self.say("Input DB cancelled; the database is unchanged.")
 
-        self.ask((f"{problem} " if problem else "") + f"Enter File Name for {title}"
-                 + (" (ESC: no strength data)" if index == 4 else "") + ":", answer, on_cancel=cancel)
+        self.ask(
+            (f"{problem} " if problem else "")
+            + f"Enter File Name for {title}"
+            + (" (ESC: no strength data)" if index == 4 else "")
+            + ":",
+            answer,
+            on_cancel=cancel,
+        )
 
     def _import(self, chosen: dict) -> None:
         self.running = True
@@ -645,8 +709,10 @@ class MoreMenu(ModalScreen[str | None]):
     BINDINGS = [Binding("escape", "dismiss(None)", "Cancel")]
 
     def compose(self):
-        options = OptionList(*(Option(choice, id=f"more-{i}") for i, choice in enumerate(MORE_CHOICES)),
-                             id="more-menu")
+        options = OptionList(
+            *(Option(choice, id=f"more-{i}") for i, choice in enumerate(MORE_CHOICES)),
+            id="more-menu",
+        )
         options.border_title = "More Menu"
         yield options
 

@@ -91,8 +91,10 @@ class StrengthPage(DataSheet):
             rows, problem = [], exc
         # Figure 5: the side label sits under "motion impetus".
         second.append(f"{sheet.side:<8}", header_style)
-        second.append(f"{f'page {self.page + 1}/{self.pages}':<{name_w - 8}}"[:name_w - 8],
-                      style("datasheet--page"))
+        second.append(
+            f"{f'page {self.page + 1}/{self.pages}':<{name_w - 8}}"[: name_w - 8],
+            style("datasheet--page"),
+        )
         for axis in JOINT_AXES:
             second.append(f"{axis[-1]:>{angle_w - 1}} ", header_style)
         second.append(f"{rows[0].unit if rows else '':>{VALUE_WIDTH - 1}} ", header_style)
@@ -105,7 +107,7 @@ class StrengthPage(DataSheet):
         limits = self._limits(sheet)
         outside_style = style("strengthpage--outside")
         first = self.page * self.page_size
-        for row in rows[first:first + self.page_size]:
+        for row in rows[first : first + self.page_size]:
             line = Text(no_wrap=True, overflow="crop")
             line.append(f"{row.label:<{name_w}}"[:name_w], style("datasheet--name"))
             for column, degrees in enumerate(row.angles):

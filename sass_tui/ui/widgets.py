@@ -53,6 +53,7 @@ def forward_to_answer(widget: Widget, event: events.Key) -> bool:
 
 # --- anthropometric group status line ------------------------------------
 
+
 class GroupTab(Static):
     """One group's cell; the selected group's is highlighted."""
 
@@ -62,8 +63,7 @@ class GroupTab(Static):
             self.group = group
 
     def __init__(self, group: str, key: str) -> None:
-        super().__init__(f"{GROUP_TITLES[group]} ({key})", id=f"group-{group}",
-                         classes="group-tab")
+        super().__init__(f"{GROUP_TITLES[group]} ({key})", id=f"group-{group}", classes="group-tab")
         self.group = group
 
     def on_click(self, event: events.Click) -> None:
@@ -86,6 +86,7 @@ class GroupBar(Horizontal):
 
 
 # --- standard (global) data --------------------------------------------------
+
 
 @dataclass(frozen=True)
 class GlobalCell:
@@ -141,8 +142,12 @@ def global_text(figure, group: str, field: str, strength_percentile: float | Non
 class GlobalPanel(Widget, can_focus=True):
     """The eleven labels of §12.2.2; a cell is chosen with the mouse or arrows."""
 
-    COMPONENT_CLASSES = {"globalpanel--label", "globalpanel--cursor",
-                         "globalpanel--cursor-blur", "globalpanel--readonly"}
+    COMPONENT_CLASSES = {
+        "globalpanel--label",
+        "globalpanel--cursor",
+        "globalpanel--cursor-blur",
+        "globalpanel--readonly",
+    }
     BINDINGS = [
         Binding("up", "move(-1, 0)", show=False),
         Binding("down", "move(1, 0)", show=False),
@@ -178,7 +183,8 @@ class GlobalPanel(Widget, can_focus=True):
         figure, group = self.app.figure, self.app.data_group
         label_style = self.get_component_rich_style("globalpanel--label")
         cursor_style = self.get_component_rich_style(
-            "globalpanel--cursor" if self.has_focus else "globalpanel--cursor-blur")
+            "globalpanel--cursor" if self.has_focus else "globalpanel--cursor-blur"
+        )
         width = self.size.width
         lines = []
         for row in range(GLOBAL_ROWS):
@@ -192,13 +198,15 @@ class GlobalPanel(Widget, can_focus=True):
                 if cell.label:
                     label_start = 0 if cell.slot == 0 else start - self._label_b()
                     line.append(" " * (label_start - column))
-                    line.append(f"{self._label(cell):<{start - label_start}}"[:start - label_start],
-                                label_style)
+                    line.append(
+                        f"{self._label(cell):<{start - label_start}}"[: start - label_start],
+                        label_style,
+                    )
                     column = start
                 line.append(" " * max(0, start - column))
                 text = global_text(figure, group, cell.field, self.app.strength_percentile)
                 cell_style = cursor_style if cell == self.cursor else ""
-                line.append(f"{text:<{span - 1}}"[:span - 1], cell_style)
+                line.append(f"{text:<{span - 1}}"[: span - 1], cell_style)
                 line.append(" ")
                 column = start + span
             lines.append(line)
@@ -212,7 +220,9 @@ class GlobalPanel(Widget, can_focus=True):
             start, span = self._slot_span(cell.slot)
             if cell.field == "population":
                 span = self.size.width - start
-            label_start = 0 if cell.slot == 0 else start - self._label_b() if cell.slot == 2 else start
+            label_start = (
+                0 if cell.slot == 0 else start - self._label_b() if cell.slot == 2 else start
+            )
             if cell.row == offset.y and label_start <= offset.x < start + span:
                 self.cursor = cell
                 self.focus()
@@ -228,8 +238,7 @@ class GlobalPanel(Widget, can_focus=True):
                 return
             self.cursor = min(candidates, key=lambda c: abs(c.slot - here.slot))
         else:
-            same_row = sorted((c for c in GLOBAL_CELLS if c.row == here.row),
-                              key=lambda c: c.slot)
+            same_row = sorted((c for c in GLOBAL_CELLS if c.row == here.row), key=lambda c: c.slot)
             index = same_row.index(here) + slots
             if 0 <= index < len(same_row):
                 self.cursor = same_row[index]
@@ -256,6 +265,7 @@ class GlobalPanel(Widget, can_focus=True):
 
 # --- command menu --------------------------------------------------------------
 
+
 class CommandMenu(Horizontal):
     """Figure 6: buttons in two columns, built from the command specs."""
 
@@ -266,10 +276,15 @@ class CommandMenu(Horizontal):
     def compose(self):
         for column in sorted({c.column for c in self.commands}):
             with Vertical(classes="command-column"):
-                for spec in sorted((c for c in self.commands if c.column == column),
-                                   key=lambda c: c.row):
-                    button = Button(spec.label(self.app), id=f"command-{spec.name}",
-                                    classes="command", compact=True)
+                for spec in sorted(
+                    (c for c in self.commands if c.column == column), key=lambda c: c.row
+                ):
+                    button = Button(
+                        spec.label(self.app),
+                        id=f"command-{spec.name}",
+                        classes="command",
+                        compact=True,
+                    )
                     button.can_focus = False
                     # Button pads its label by one cell each side; "Previous Page" needs
                     # the room at 80 columns.  (Textual's CSS refuses `line-pad: 0`.)
@@ -285,12 +300,19 @@ class CommandMenu(Horizontal):
 
 # --- data section ----------------------------------------------------------------
 
+
 class DataSheet(Widget, can_focus=True):
     """Names column, then value and percentile for x, y and z; 25 rows a page,
     fewer when the terminal is too short (paging still reaches every row)."""
 
-    COMPONENT_CLASSES = {"datasheet--header", "datasheet--name", "datasheet--percentile",
-                         "datasheet--cursor", "datasheet--cursor-blur", "datasheet--page"}
+    COMPONENT_CLASSES = {
+        "datasheet--header",
+        "datasheet--name",
+        "datasheet--percentile",
+        "datasheet--cursor",
+        "datasheet--cursor-blur",
+        "datasheet--page",
+    }
     BINDINGS = [
         Binding("up", "move(-1, 0)", show=False),
         Binding("down", "move(1, 0)", show=False),
@@ -371,7 +393,8 @@ class DataSheet(Widget, can_focus=True):
         name_style = self.get_component_rich_style("datasheet--name")
         pct_style = self.get_component_rich_style("datasheet--percentile")
         cursor_style = self.get_component_rich_style(
-            "datasheet--cursor" if self.has_focus else "datasheet--cursor-blur")
+            "datasheet--cursor" if self.has_focus else "datasheet--cursor-blur"
+        )
         page_style = self.get_component_rich_style("datasheet--page")
 
         top = Text(no_wrap=True, overflow="crop")
@@ -414,8 +437,9 @@ class DataSheet(Widget, can_focus=True):
         if offset is None:
             return
         row = self.page * self.page_size + offset.y - self.HEADER_LINES
-        if offset.y < self.HEADER_LINES or row >= min(self.row_count,
-                                                      (self.page + 1) * self.page_size):
+        if offset.y < self.HEADER_LINES or row >= min(
+            self.row_count, (self.page + 1) * self.page_size
+        ):
             return
         self.cursor_row = row
         for column in range(self.COLUMNS):
@@ -460,6 +484,7 @@ class DataSheet(Widget, can_focus=True):
 
 
 # --- command/message line ------------------------------------------------------------
+
 
 class AnswerInput(Input):
     BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]

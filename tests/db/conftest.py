@@ -4,7 +4,7 @@ from pathlib import Path
 
 import pytest
 
-from sass_tui.db.commands import create_default_database
+from sass_tui.db.default import create_default_database
 from sass_tui.db.schema import connect
 
 ROOT = Path(__file__).resolve().parents[2]

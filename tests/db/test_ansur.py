@@ -60,21 +60,40 @@ def _hand(row):
 CASES = [
     ("gender = female", lambda r: r["gender"] == "Female"),
     ("stature > 180 cm", lambda r: float(r["stature"]) > 1800),
-    ("stature >= 70 in AND mass < 80 kg",
-     lambda r: float(r["stature"]) >= 1778 and float(r["weightkg"]) < 800),
-    ("handedness = either OR handedness = left AND gender = female",
-     lambda r: _hand(r) == "either" or (_hand(r) == "left" and r["gender"] == "Female")),
-    ("(handedness = either OR handedness = left) AND gender = female",
-     lambda r: _hand(r) in ("either", "left") and r["gender"] == "Female"),
-    ("girth.right_upper_arm.z > 13.5 in",
-     lambda r: float(r["acromionradialelength"]) / 10 > 13.5 * 2.54),
-    ("girth.right_upper_leg.z <= 42.05 cm OR girth.right_lower_leg.z > 40.05 cm",
-     lambda r: (float(r["trochanterionheight"]) - float(r["tibialheight"])) / 10 <= 42.05
-     or (float(r["tibialheight"]) - float(r["lateralmalleolusheight"])) / 10 > 40.05),
-    ("gender = male AND (girth.right_upper_leg.x > 20 cm OR girth.neck.y < 12 cm) AND age >= 30",
-     lambda r: r["gender"] == "Male" and (float(r["thighcircumference"]) / 10 / math.pi > 20
-                                          or float(r["neckcircumference"]) / 10 / math.pi < 12)
-     and float(r["age"]) >= 30),
+    (
+        "stature >= 70 in AND mass < 80 kg",
+        lambda r: float(r["stature"]) >= 1778 and float(r["weightkg"]) < 800,
+    ),
+    (
+        "handedness = either OR handedness = left AND gender = female",
+        lambda r: _hand(r) == "either" or (_hand(r) == "left" and r["gender"] == "Female"),
+    ),
+    (
+        "(handedness = either OR handedness = left) AND gender = female",
+        lambda r: _hand(r) in ("either", "left") and r["gender"] == "Female",
+    ),
+    (
+        "girth.right_upper_arm.z > 13.5 in",
+        lambda r: float(r["acromionradialelength"]) / 10 > 13.5 * 2.54,
+    ),
+    (
+        "girth.right_upper_leg.z <= 42.05 cm OR girth.right_lower_leg.z > 40.05 cm",
+        lambda r: (
+            (float(r["trochanterionheight"]) - float(r["tibialheight"])) / 10 <= 42.05
+            or (float(r["tibialheight"]) - float(r["lateralmalleolusheight"])) / 10 > 40.05
+        ),
+    ),
+    (
+        "gender = male AND (girth.right_upper_leg.x > 20 cm OR girth.neck.y < 12 cm) AND age >= 30",
+        lambda r: (
+            r["gender"] == "Male"
+            and (
+                float(r["thighcircumference"]) / 10 / math.pi > 20
+                or float(r["neckcircumference"]) / 10 / math.pi < 12
+            )
+            and float(r["age"]) >= 30
+        ),
+    ),
     ("mass > 220 lb", lambda r: float(r["weightkg"]) / 10 > 220 * 0.45359237),
 ]
 
@@ -90,8 +109,9 @@ def test_query_counts_match_csv(ansur_db, csv_rows, text, predicate):
 def test_derivations(ansur_db, csv_rows):
     conn, _, _ = ansur_db
     first = csv_rows[0]
-    pid = conn.execute("SELECT id_num FROM person WHERE source_key = ?",
-                       (f"ANSUR II:male:{first['subjectid']}",)).fetchone()[0]
+    pid = conn.execute(
+        "SELECT id_num FROM person WHERE source_key = ?", (f"ANSUR II:male:{first['subjectid']}",)
+    ).fetchone()[0]
     person = fetch_individual(conn, pid)
     girth = person.groups[GIRTH]
     arm = girth[row_index(GIRTH, "right_upper_arm")]
@@ -101,7 +121,7 @@ def test_derivations(ansur_db, csv_rows):
     assert fore[1] / fore[0] == pytest.approx(3 / 2)
     # the ellipse's circumference approximation gives back the measured circumference
     big, small = fore[1] / 2, fore[0] / 2
-    c = 2 * math.pi * math.sqrt((big ** 2 + small ** 2) / 2)
+    c = 2 * math.pi * math.sqrt((big**2 + small**2) / 2)
     assert c == pytest.approx(float(first["forearmcircumferenceflexed"]) / 10)
     assert person.mass == pytest.approx(float(first["weightkg"]) / 10)
     assert person.handedness == _hand(first)
@@ -132,7 +152,9 @@ def test_missing_column_rejected(ansur_db, ansur_files, tmp_path):
     bad = tmp_path / "broken.csv"
     bad.write_text("\n".join(broken) + "\n", encoding="cp1252")
     before = row_counts(conn)
-    with pytest.raises(AnsurImportError, match=r"broken.csv:1: missing column acromionradialelength"):
+    with pytest.raises(
+        AnsurImportError, match=r"broken.csv:1: missing column acromionradialelength"
+    ):
         import_ansur(conn, [ansur_files[0], bad])
     assert row_counts(conn) == before
 

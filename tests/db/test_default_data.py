@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import json
 from collections import defaultdict
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -16,12 +17,11 @@ from sass_tui.db.schema import DatabaseError, row_counts
 from sass_tui.model.names import GIRTH, JOINT_LIMITS, row_index
 from sass_tui.model.units import convert
 
-from pathlib import Path
-
 DEFAULT_FLAT = Path(__file__).resolve().parents[2] / "datasets" / "db"
 
-SAMPLE = ("gender = male AND girth.right_upper_arm.z > 28 cm "
-          "AND strength.elbow_flexion.max > 20 ft-lb")
+SAMPLE = (
+    "gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb"
+)
 
 
 def _flat(name):
@@ -42,8 +42,11 @@ def expected_ids(arm_cm: float, elbow_ftlb: float) -> set[int]:
 
 @pytest.mark.parametrize("arm, elbow", [(28, 20), (37, 45), (39, 30)])
 def test_sample_query_matches_direct_computation(default_db, arm, elbow):
-    query = run_query(default_db, f"gender = male AND girth.right_upper_arm.z > {arm} cm "
-                                  f"AND strength.elbow_flexion.max > {elbow} ft-lb")
+    query = run_query(
+        default_db,
+        f"gender = male AND girth.right_upper_arm.z > {arm} cm "
+        f"AND strength.elbow_flexion.max > {elbow} ft-lb",
+    )
     expected = expected_ids(arm, elbow)
     assert expected, "the data set must hold people the query finds"
     assert set(query.ids()) == expected
@@ -77,8 +80,10 @@ def test_fetch_individual_returns_every_group(default_db):
     assert person.groups[GIRTH].shape == (25, 3)
     assert person.groups[JOINT_LIMITS].shape == (40, 3)
     girth_row = next(r for r in _flat("girth.db") if r[0] == "1" and r[1] == "RIGHT_UPPER_ARM")
-    assert np.allclose(person.groups[GIRTH][row_index(GIRTH, "right_upper_arm")],
-                       [float(v) for v in girth_row[2:5]])
+    assert np.allclose(
+        person.groups[GIRTH][row_index(GIRTH, "right_upper_arm")],
+        [float(v) for v in girth_row[2:5]],
+    )
     assert person.experiments and person.elbow and len(person.shoulder) % 3 == 0
     assert person.strength["elbow_flexion_max"] == max(e["pstrgh"] for e in person.elbow)
     with pytest.raises(DatabaseError):
@@ -89,12 +94,22 @@ def test_cli_query_json(default_db_file, capsys):
     assert main(["query", "--db", str(default_db_file), "--format", "json", SAMPLE]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["count"] == len(out["persons"]) == len(expected_ids(28, 20))
-    assert set(out["persons"][0]) == {"id", "name", "gender", "mass", "stature",
-                                      "handedness", "age", "source"}
+    assert set(out["persons"][0]) == {
+        "id",
+        "name",
+        "gender",
+        "mass",
+        "stature",
+        "handedness",
+        "age",
+        "source",
+    }
 
 
 def test_cli_query_csv_and_table(default_db_file, capsys):
-    assert main(["query", "--db", str(default_db_file), "--format", "csv", "handedness = either"]) == 0
+    assert (
+        main(["query", "--db", str(default_db_file), "--format", "csv", "handedness = either"]) == 0
+    )
     rows = list(csv.DictReader(capsys.readouterr().out.splitlines()))
     assert rows and all(r["handedness"] == "either" for r in rows)
     assert main(["query", "--db", str(default_db_file), "gender = female AND age < 20"]) == 0
@@ -135,10 +150,16 @@ def test_query_output_into_a_closed_pipe_is_not_an_error(tmp_path):
     import sys
 
     db = tmp_path / "sass.db"
-    subprocess.run([sys.executable, "-m", "sass_tui", "db", "init", "--db", str(db)], check=True,
-                   capture_output=True)
+    subprocess.run(
+        [sys.executable, "-m", "sass_tui", "db", "init", "--db", str(db)],
+        check=True,
+        capture_output=True,
+    )
     done = subprocess.run(
         f'"{sys.executable}" -m sass_tui query --db "{db}" --format csv "mass > 0" | head -1',
-        shell=True, capture_output=True, text=True)
+        shell=True,
+        capture_output=True,
+        text=True,
+    )
     assert done.stdout.count("\n") == 1
     assert "Broken pipe" not in done.stderr and "error" not in done.stderr

@@ -15,10 +15,12 @@ from sass_tui.model.names import GIRTH, row_index
 
 DEFAULT_FLAT = Path(__file__).resolve().parents[2] / "datasets" / "db"
 PERSON = "7,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
-GIRTH_ROWS = ("7,BOTTOM_HEAD, 19.80, 15.75, 22.41, 1.40\n"
-              "7,R_UPPER_ARM, 10.16, 8.54, 31.94, 1.96\n"
-              "7,UPPER_TORSO,999.0,999.0,999.0, 11.97\n"
-              "7,R_TOES, 7.60, 9.95, 5.46, 0.10\n")
+GIRTH_ROWS = (
+    "7,BOTTOM_HEAD, 19.80, 15.75, 22.41, 1.40\n"
+    "7,R_UPPER_ARM, 10.16, 8.54, 31.94, 1.96\n"
+    "7,UPPER_TORSO,999.0,999.0,999.0, 11.97\n"
+    "7,R_TOES, 7.60, 9.95, 5.46, 0.10\n"
+)
 
 
 def _files(tmp_path, person=PERSON, girth=GIRTH_ROWS, strength=None) -> FlatFiles:
@@ -39,12 +41,18 @@ def test_legacy_names():
 
 
 def test_import_and_fetch(default_db, tmp_path):
-    strength = {"strgh-par.db": "7,1,right,isometric,0,0,0,deg,ft-lb,deg/s\n",
-                "elbow-strgh.db": "7,1,90,0,0,0,0,0,0,30.0,999.0\n"}
+    strength = {
+        "strgh-par.db": "7,1,right,isometric,0,0,0,deg,ft-lb,deg/s\n",
+        "elbow-strgh.db": "7,1,90,0,0,0,0,0,0,30.0,999.0\n",
+    }
     assert import_flat_files(default_db, _files(tmp_path, strength=strength)) == 1
     person = fetch_individual(default_db, 7)
     assert person.name == "JANE_DOE" and person.handedness == "left"
-    assert person.groups[GIRTH][row_index(GIRTH, "right_upper_arm")].tolist() == [10.16, 8.54, 31.94]
+    assert person.groups[GIRTH][row_index(GIRTH, "right_upper_arm")].tolist() == [
+        10.16,
+        8.54,
+        31.94,
+    ]
     assert person.segment_masses["upper_torso"] == 11.97
     assert person.groups[GIRTH][row_index(GIRTH, "right_ball_of_foot")][2] == 5.46
     # ft-lb converted to the stored N-m
@@ -55,11 +63,23 @@ def test_import_and_fetch(default_db, tmp_path):
 BAD = [
     ("person", "7,JANE_DOE,female,165.0,60.5,left,31\n", "person.db:1: expected 8"),
     ("person", PERSON + PERSON.replace("JANE", "JOHN"), "person.db:2: duplicate id_num 7"),
-    ("person", PERSON.replace("165.0", "tall"), "person.db:1: stature: expected a number, found 'tall'"),
+    (
+        "person",
+        PERSON.replace("165.0", "tall"),
+        "person.db:1: stature: expected a number, found 'tall'",
+    ),
     ("girth", GIRTH_ROWS + "7,NECK, 5.46, 5.46\n", "girth.db:5: expected 6"),
-    ("girth", GIRTH_ROWS + "7,NECK, 5.46, x5, 9.18, 0.14\n", "girth.db:5: value 2: expected a number"),
+    (
+        "girth",
+        GIRTH_ROWS + "7,NECK, 5.46, x5, 9.18, 0.14\n",
+        "girth.db:5: value 2: expected a number",
+    ),
     ("girth", GIRTH_ROWS + "7,R_UPPER_ARM, 1, 1, 1, 1\n", "girth.db:5: duplicate row"),
-    ("girth", GIRTH_ROWS + "8,NECK, 1, 1, 1, 1\n", "girth.db:5: id_num 8 is not in the person file"),
+    (
+        "girth",
+        GIRTH_ROWS + "8,NECK, 1, 1, 1, 1\n",
+        "girth.db:5: id_num 8 is not in the person file",
+    ),
     ("girth", GIRTH_ROWS + "7,TAIL, 1, 1, 1, 1\n", "girth.db:5: unknown row 'TAIL'"),
 ]
 
@@ -76,8 +96,13 @@ def test_bad_flat_file_rejects_whole_import(default_db, tmp_path, which, text, m
 def test_database_error_mid_transaction_rolls_back(default_db, tmp_path):
     """A strength row naming an experiment the parameter file lacks: nothing stored."""
     before = row_counts(default_db)
-    files = _files(tmp_path, strength={"strgh-par.db": "7,1,right,isometric,0,0,0,deg,N-m,deg/s\n",
-                                       "elbow-strgh.db": "7,2,90,0,0,0,0,0,0,30.0,20.0\n"})
+    files = _files(
+        tmp_path,
+        strength={
+            "strgh-par.db": "7,1,right,isometric,0,0,0,deg,N-m,deg/s\n",
+            "elbow-strgh.db": "7,2,90,0,0,0,0,0,0,30.0,20.0\n",
+        },
+    )
     with pytest.raises(FlatFileError, match="elbow-strgh.db:1: experiment 2"):
         import_flat_files(default_db, files)
     assert row_counts(default_db) == before
@@ -86,9 +111,20 @@ def test_database_error_mid_transaction_rolls_back(default_db, tmp_path):
 def test_cli_import_flat(tmp_path, capsys):
     db = tmp_path / "new.db"
     _files(tmp_path)
-    args = ["db", "import-flat", "--db", str(db), "--person", str(tmp_path / "person.db"),
-            "--girth", str(tmp_path / "girth.db"), "--jntlmt", str(tmp_path / "jntlmt.db"),
-            "--cmass", str(tmp_path / "cmass.db")]
+    args = [
+        "db",
+        "import-flat",
+        "--db",
+        str(db),
+        "--person",
+        str(tmp_path / "person.db"),
+        "--girth",
+        str(tmp_path / "girth.db"),
+        "--jntlmt",
+        str(tmp_path / "jntlmt.db"),
+        "--cmass",
+        str(tmp_path / "cmass.db"),
+    ]
     assert main(args) == 0
     assert "imported 1 people" in capsys.readouterr().out
     (tmp_path / "girth.db").write_text(GIRTH_ROWS + "7,NECK,1,1\n")

@@ -5,7 +5,7 @@ import shutil
 
 import pytest
 
-from sass_tui.db.commands import create_default_database
+from sass_tui.db.default import create_default_database
 
 
 @pytest.fixture

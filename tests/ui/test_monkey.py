@@ -11,8 +11,27 @@ import pytest
 from sass_tui.model.names import GROUPS
 from sass_tui.ui.app import SassApp
 
-KEYS = [*"njmgspciuwdvxeorbal", "enter", "escape", "up", "down", "left", "right", "pageup",
-        "pagedown", "tab", "1", "2", ".", "5", "0", "9", "-", "space", "y"]
+KEYS = [
+    *"njmgspciuwdvxeorbal",
+    "enter",
+    "escape",
+    "up",
+    "down",
+    "left",
+    "right",
+    "pageup",
+    "pagedown",
+    "tab",
+    "1",
+    "2",
+    ".",
+    "5",
+    "0",
+    "9",
+    "-",
+    "space",
+    "y",
+]
 
 
 @pytest.mark.parametrize("seed", [1988, 2026])
@@ -34,4 +53,5 @@ def test_random_keys_never_crash(drive, db, tmp_path, monkeypatch, seed):
                 stats = state.source.stats(app.figure.gender)
                 has_value = ~np.isnan(stats[..., 1])
                 assert np.isfinite(state.values[has_value]).all()
+
     drive(scenario())

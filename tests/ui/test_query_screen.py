@@ -3,7 +3,6 @@ individuals (report §12.3-§12.5), driven by key presses and clicks."""
 
 from __future__ import annotations
 
-
 import numpy as np
 import pytest
 from textual import events
@@ -17,12 +16,21 @@ from sass_tui.model.names import GIRTH, row_index
 from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_builder import VALUE_PROMPT
 from sass_tui.ui.query_screen import (
-    BUILD_PROMPT, COMPLETE, NO_DATA, WAIT, ListSheet, QueryPopup, QueryScreen, SummaryPanel)
+    BUILD_PROMPT,
+    COMPLETE,
+    NO_DATA,
+    WAIT,
+    ListSheet,
+    QueryPopup,
+    QueryScreen,
+    SummaryPanel,
+)
 from sass_tui.ui.widgets import GlobalPanel
 
 SIZE = (120, 40)
-SAMPLE = ("gender = male AND girth.right_upper_arm.z > 28 cm "
-          "AND strength.elbow_flexion.max > 20 ft-lb")
+SAMPLE = (
+    "gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb"
+)
 
 
 def message(app) -> str:
@@ -71,6 +79,7 @@ async def open_query_screen(pilot) -> QueryScreen:
 
 async def build_sample_query(pilot, title_log: list[str]) -> None:
     """Figure 13's sequence of pop-up menus."""
+
     async def step(label):
         title_log.append(pilot.app.screen.query_one(QueryPopup).border_title)
         await choose(pilot, label)
@@ -102,20 +111,37 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
         app = SassApp(cursor_blink=False, db_path=db)
         async with app.run_test(size=SIZE) as pilot:
             await open_query_screen(pilot)
-            assert "Query List" in summary(app) and "Exit Query" in str(app.screen.query_one(
-                "#command-exit_query").label)
+            assert "Query List" in summary(app) and "Exit Query" in str(
+                app.screen.query_one("#command-exit_query").label
+            )
             await pilot.press("d")
             assert message(app).startswith(BUILD_PROMPT)
             await pilot.click(ListSheet, offset=(20, 6), button=3)  # the right mouse button
             assert app.screen.query_one(QueryPopup).border_title == "Query Menu"
-            assert popup_labels(app) == ["Global Information", "Anthropometric Groups",
-                                         "Re_execute", "Abort"]
+            assert popup_labels(app) == [
+                "Global Information",
+                "Anthropometric Groups",
+                "Re_execute",
+                "Abort",
+            ]
             titles: list[str] = []
             await build_sample_query(pilot, titles)
-            assert titles == ["Query Menu", "Global Information", "Gender", "Conjunction Menu",
-                              "Query Menu", "Anthropometric Group", "Girth Menu", "Axis Menu",
-                              "Relational Operation Menu", "Conjunction Menu", "Query Menu",
-                              "Anthropometric Group", "Strength Menu", "Relational Operation Menu"]
+            assert titles == [
+                "Query Menu",
+                "Global Information",
+                "Gender",
+                "Conjunction Menu",
+                "Query Menu",
+                "Anthropometric Group",
+                "Girth Menu",
+                "Axis Menu",
+                "Relational Operation Menu",
+                "Conjunction Menu",
+                "Query Menu",
+                "Anthropometric Group",
+                "Strength Menu",
+                "Relational Operation Menu",
+            ]
             assert app.screen.query_one(QueryPopup).border_title == "Conjunction Menu"
             assert f"Query: {SAMPLE}" in message(app)  # shown live while building
             await choose(pilot, "Done")
@@ -159,7 +185,9 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
             await settle(pilot)
             assert message(app) == f"Wrote {out}."
             fig = read_fig(out)
-            assert fig.variables["ruparmz"][0] == pytest.approx(person.groups[GIRTH][arm, 2], abs=0.01)
+            assert fig.variables["ruparmz"][0] == pytest.approx(
+                person.groups[GIRTH][arm, 2], abs=0.01
+            )
 
             await pilot.press("x")  # Disp. More -> More Menu -> Next
             await pilot.press("down", "down", "down", "enter")
@@ -309,14 +337,24 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
     person = tmp_path / "person.db"
     person.write_text("901,NEW_PERSON,female,160.0,55.0,left,30,test\n")
     girth = tmp_path / "girth-ok.db"
-    girth.write_text("\n".join(line.replace("1,", "901,", 1) for line in
-                               (source / "girth.db").read_text().splitlines()
-                               if line.startswith("1,")) + "\n")
+    girth.write_text(
+        "\n".join(
+            line.replace("1,", "901,", 1)
+            for line in (source / "girth.db").read_text().splitlines()
+            if line.startswith("1,")
+        )
+        + "\n"
+    )
     one_person = {name: tmp_path / f"{name}-ok.db" for name in ("jntlmt", "cmass")}
     for name, path in one_person.items():
-        path.write_text("\n".join(line.replace("1,", "901,", 1) for line in
-                                  (source / f"{name}.db").read_text().splitlines()
-                                  if line.startswith("1,")) + "\n")
+        path.write_text(
+            "\n".join(
+                line.replace("1,", "901,", 1)
+                for line in (source / f"{name}.db").read_text().splitlines()
+                if line.startswith("1,")
+            )
+            + "\n"
+        )
 
     async def scenario():
         app = SassApp(cursor_blink=False, db_path=db)
@@ -332,10 +370,14 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
             assert "Enter File Name for Person" in message(app)
             await pilot.press("enter")  # nothing typed: asked again, saying why
             await pilot.pause()
-            assert message(app).startswith("A file name for Person is needed. Enter File Name for Person:")
+            assert message(app).startswith(
+                "A file name for Person is needed. Enter File Name for Person:"
+            )
             await answer(tmp_path / "missing.db")
             await pilot.pause()
-            assert message(app).startswith(f"{tmp_path / 'missing.db'}: no such file. Enter File Name for Person:")
+            assert message(app).startswith(
+                f"{tmp_path / 'missing.db'}: no such file. Enter File Name for Person:"
+            )
             await answer(person)
             assert "Girth" in message(app)
             await answer(bad)
@@ -346,8 +388,12 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
             await settle(pilot)
             assert "Input DB failed, the database is unchanged" in message(app)
             assert "girth.db:1" in message(app)
-            assert screen.lists.conn.execute(
-                "SELECT count(*) FROM person WHERE id_num = 901").fetchone()[0] == 0
+            assert (
+                screen.lists.conn.execute(
+                    "SELECT count(*) FROM person WHERE id_num = 901"
+                ).fetchone()[0]
+                == 0
+            )
 
             await pilot.press("i")
             for path in (person, girth, one_person["jntlmt"], one_person["cmass"]):

@@ -4,11 +4,10 @@ Update with `pytest tests/ui/test_query_snapshots.py --snapshot-update`."""
 
 from __future__ import annotations
 
-
 import pytest
+from test_query_screen import SAMPLE, choose, settle
 
 from sass_tui.ui.app import SassApp
-from test_query_screen import SAMPLE, choose, settle
 
 SIZE = (100, 37)
 
@@ -27,8 +26,9 @@ def test_query_screen_with_results(snap_compare, db):
         await settle(pilot)
         await pilot.press("down", "s")
 
-    assert snap_compare(SassApp(cursor_blink=False, db_path=db), run_before=run_before,
-                        terminal_size=SIZE)
+    assert snap_compare(
+        SassApp(cursor_blink=False, db_path=db), run_before=run_before, terminal_size=SIZE
+    )
 
 
 # The menus of figure 13's sequence, each reached by the choices before it.
@@ -41,8 +41,13 @@ MENU_PATHS = {
     "strength_menu": ["Anthropometric Groups", "Strength"],
     "axis_menu": ["Anthropometric Groups", "Girth", "Right Upper Arm"],
     "relational_operation_menu": ["Anthropometric Groups", "Girth", "Right Upper Arm", "Z Axis"],
-    "constraint_prompt": ["Anthropometric Groups", "Girth", "Right Upper Arm", "Z Axis",
-                          "Greater Than (>)"],
+    "constraint_prompt": [
+        "Anthropometric Groups",
+        "Girth",
+        "Right Upper Arm",
+        "Z Axis",
+        "Greater Than (>)",
+    ],
     "conjunction_menu": ["Global Information", "Gender", "Male"],
 }
 
@@ -54,8 +59,9 @@ def test_popup_menu(snap_compare, db, menu):
         for label in MENU_PATHS[menu]:
             await choose(pilot, label)
 
-    assert snap_compare(SassApp(cursor_blink=False, db_path=db), run_before=run_before,
-                        terminal_size=SIZE)
+    assert snap_compare(
+        SassApp(cursor_blink=False, db_path=db), run_before=run_before, terminal_size=SIZE
+    )
 
 
 def test_individual_displayed(snap_compare, db):
@@ -66,8 +72,9 @@ def test_individual_displayed(snap_compare, db):
         await settle(pilot)
         await pilot.press("s", "e", "v")
 
-    assert snap_compare(SassApp(cursor_blink=False, db_path=db), run_before=run_before,
-                        terminal_size=SIZE)
+    assert snap_compare(
+        SassApp(cursor_blink=False, db_path=db), run_before=run_before, terminal_size=SIZE
+    )
 
 
 def test_more_menu(snap_compare, db):
@@ -78,5 +85,6 @@ def test_more_menu(snap_compare, db):
         await settle(pilot)
         await pilot.press("a", "e", "v", "x")
 
-    assert snap_compare(SassApp(cursor_blink=False, db_path=db), run_before=run_before,
-                        terminal_size=SIZE)
+    assert snap_compare(
+        SassApp(cursor_blink=False, db_path=db), run_before=run_before, terminal_size=SIZE
+    )

@@ -58,6 +58,7 @@ def test_start_screen_shows_default_data(drive):
             assert "Bottom Head" in text and "20.00" in text and "page 1/3" in text
             # The 80x24 page holds fewer than the report's 25 rows.
             assert app.query_one(DataSheet).page_size < 25
+
     drive(scenario())
 
 
@@ -80,6 +81,7 @@ def test_click_cell_type_value_with_unit(drive):
             assert app.figure.value(GIRTH, "left_upper_arm", 2) == pytest.approx(36.6)
             await pilot.press("u")
             assert app.figure.value(GIRTH, "right_upper_arm", 2) == pytest.approx(36.6)
+
     drive(scenario())
 
 
@@ -101,6 +103,7 @@ def test_percentile_drives_value_and_blank_return_and_escape(drive):
             await pilot.press("right", *"12", "escape")
             assert app.figure.groups[GIRTH].values[2, 1] == stats[2, 1, 1]
             assert "Cancelled" in message(app)
+
     drive(scenario())
 
 
@@ -116,6 +119,7 @@ def test_wrong_unit_is_refused_and_the_cell_kept(drive):
             await pilot.press("j", "down", "down", *["right"] * 4, "enter")
             assert "R Clavicle ul z: no motion about this axis" in message(app)
             assert not app.message_line.prompting
+
     drive(scenario())
 
 
@@ -145,6 +149,7 @@ def test_paging_reaches_every_row_at_80x24(drive):
             # The command menu's button does the same as the key.
             await pilot.click("#command-previous_page")
             assert sheet.page == pages - 3
+
     drive(scenario())
 
 
@@ -157,6 +162,7 @@ def test_large_terminal_holds_the_reports_25_rows(drive):
             assert sheet.page_size == 25 and sheet.pages == 2
             await pilot.press("n")
             assert "R Hip ul" not in sheet_text(app) and "L Knuckles ll" in sheet_text(app)
+
     drive(scenario())
 
 
@@ -177,6 +183,7 @@ def test_switch_group_by_key_and_click_and_strength(drive):
             assert app.query_one("#group-strength").has_class("-selected")
             await pilot.press("g")
             assert app.data_group == GIRTH and "Bottom Head" in sheet_text(app)
+
     drive(scenario())
 
 
@@ -191,6 +198,7 @@ def test_strength_group_refused_when_its_data_failed_to_load(drive, tmp_path):
             assert app.data_group == CENTER_OF_MASS
             await pilot.press("s")
             assert "Strength data is not loaded" in message(app)
+
     drive(scenario())
 
 
@@ -211,6 +219,7 @@ def test_switch_gender_reloads_every_group(drive):
             await pilot.press("enter", *"robot", "enter")
             assert "gender must be male or female" in message(app)
             assert app.figure.gender == "female"
+
     drive(scenario())
 
 
@@ -237,6 +246,7 @@ def test_group_percentile_rescales_that_group_only(drive):
             # The population cannot be edited.
             await pilot.press("up", "up", "up", "enter")
             assert "cannot be edited" in message(app)
+
     drive(scenario())
 
 
@@ -264,6 +274,7 @@ def test_convert_units_and_back(drive):
             # A value typed in the other unit lands in the current one.
             await pilot.press("c", *"10cm", "enter")
             assert f"{10 / 2.54:.2f}" in sheet_text(app)
+
     drive(scenario())
 
 
@@ -297,12 +308,14 @@ def test_bad_file_is_refused_and_data_kept(drive, tmp_path):
             await app.workers.wait_for_complete()
             await pilot.pause()
             assert "cannot read" in message(app)
+
     drive(scenario())
 
 
 def test_input_data_loads_and_shows_warnings(drive, tmp_path):
-    text = datasets.path("jntlmt.dat").read_text().replace(
-        "NASA Crewmember Trainees", "Test crew", 1)
+    text = (
+        datasets.path("jntlmt.dat").read_text().replace("NASA Crewmember Trainees", "Test crew", 1)
+    )
     population = tmp_path / "limits.dat"
     population.write_text(text)
     warnings = parse_population_text(text, JOINT_LIMITS, str(population)).warnings
@@ -321,6 +334,7 @@ def test_input_data_loads_and_shows_warnings(drive, tmp_path):
             assert f"warning 1 of {len(warnings)}" in message(app)
             await pilot.press("w")
             assert warnings[1] in message(app)
+
     drive(scenario())
 
 
@@ -359,6 +373,7 @@ def test_create_figure_writes_and_asks_before_overwriting(drive, tmp_path, monke
             await pilot.pause()
             assert f"{tmp_path / 'no' / 'dir.fig'}: cannot write: No such file" in message(app)
             assert app.query_one("#message").has_class("-error")
+
     drive(scenario())
 
 
@@ -366,8 +381,9 @@ def test_create_figure_refused_without_a_group(drive):
     figure = Figure.default()
     female_only = datasets.path("cmass.dat").read_text().split("T MALE")[0]
     if "T FEMALE" not in female_only:
-        female_only = "C only women\nT FEMALE\n" + datasets.path("cmass.dat").read_text().split(
-            "T FEMALE")[1]
+        female_only = (
+            "C only women\nT FEMALE\n" + datasets.path("cmass.dat").read_text().split("T FEMALE")[1]
+        )
     figure.load_group(CENTER_OF_MASS, parse_population_text(female_only, CENTER_OF_MASS))
     assert not figure.groups[CENTER_OF_MASS].loaded
 
@@ -379,12 +395,14 @@ def test_create_figure_refused_without_a_group(drive):
             assert not app.message_line.prompting
             await pilot.press("m")
             assert "No male data loaded" in sheet_text(app)
+
     drive(scenario())
 
 
 def test_keys_typed_in_one_burst_run_in_order(drive):
     """A command letter then digits, arriving together (a paste, a fast typist,
     `tmux send-keys "m12"`): the group switch happens before the edit starts."""
+
     async def scenario():
         app = SassApp(cursor_blink=False)
         async with app.run_test(size=LARGE) as pilot:
@@ -400,4 +418,5 @@ def test_keys_typed_in_one_burst_run_in_order(drive):
             await pilot.press("1", "i", "n")
             assert app.query_one("#answer").value == "1in"
             await pilot.press("escape")
+
     drive(scenario())

@@ -31,5 +31,4 @@ def test_center_of_mass_in_inches(snap_compare):
 
 def test_error_message(snap_compare):
     # A length typed in degrees into a girth cell.
-    assert snap_compare(SassApp(cursor_blink=False), press=[*"12deg", "enter"],
-                        terminal_size=SIZE)
+    assert snap_compare(SassApp(cursor_blink=False), press=[*"12deg", "enter"], terminal_size=SIZE)

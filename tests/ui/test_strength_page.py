@@ -13,8 +13,13 @@ from sass_tui.model.figfile import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH
 from sass_tui.model.strength import (
-    DEFAULT_NON_DOMINANT_FACTOR, StrengthSheet, percentile_factor, read_strength_file,
-    strength_type_factor, training_factor)
+    DEFAULT_NON_DOMINANT_FACTOR,
+    StrengthSheet,
+    percentile_factor,
+    read_strength_file,
+    strength_type_factor,
+    training_factor,
+)
 from sass_tui.ui.app import SassApp
 from sass_tui.ui.strength_page import StrengthPage
 from sass_tui.ui.widgets import GlobalPanel
@@ -85,8 +90,15 @@ def test_strength_page_shows_figure_5(drive):
             assert "Shoulder" in lines[0] and "Elbow" in lines[0] and "Wrist" in lines[0]
             # The side label under the motion impetus header; the unit over the values.
             assert lines[1].startswith("right") and "ft-lb" in lines[1]
-            assert row_line(app, "Shoulder abduction").split()[2:9] == \
-                ["30", "45", "0", "90", "0", "0", "0"]
+            assert row_line(app, "Shoulder abduction").split()[2:9] == [
+                "30",
+                "45",
+                "0",
+                "90",
+                "0",
+                "0",
+                "0",
+            ]
             assert row_value(app, "Shoulder abduction") == REPORT_VALUE
             assert "stored" in row_line(app, "Shoulder abduction")
             assert len(lines) == 2 + 14  # the report's 14-row strength page
@@ -96,6 +108,7 @@ def test_strength_page_shows_figure_5(drive):
             await pilot.press("g")
             assert not app.query_one("#command-switch_side").display
             assert button_label(app, "convert_units") == "cm → in"
+
     drive(scenario())
 
 
@@ -128,6 +141,7 @@ def test_edit_angle_recomputes_row_stored_then_predicted(drive):
             await pilot.press("enter", "enter")
             assert "unchanged" in message(app)
             assert app.strength_sheet.angles[0, 0] == pytest.approx(45.0, abs=0.01)
+
     drive(scenario())
 
 
@@ -147,6 +161,7 @@ def test_click_an_angle_cell_then_edit(drive):
             assert app.strength_sheet.angles[6, 3] == 90
             assert row_value(app, "Elbow flexion") != before
             assert "Right elbow flexion at elbow y 90 deg" in message(app)
+
     drive(scenario())
 
 
@@ -172,6 +187,7 @@ def test_angle_beyond_the_joint_limit_is_refused(drive):
             await pilot.pause()
             assert "upper limit 173.2 deg (joint limits, 5th percentile)" in message(app)
             assert app.strength_sheet.angles[0, 0] == 30
+
     drive(scenario())
 
 
@@ -187,6 +203,7 @@ def test_ft_lb_to_n_m_and_back(drive):
             await pilot.click("#command-convert_units")
             assert row_value(app, "Shoulder abduction") == REPORT_VALUE
             assert button_label(app, "convert_units") == "ft-lb → N-m"
+
     drive(scenario())
 
 
@@ -214,11 +231,13 @@ def test_right_to_left_with_a_typed_factor_and_with_return(drive):
             await pilot.pause()
             assert "(default)" in message(app)
             assert row_value(app, "Shoulder abduction") == round(
-                REPORT_VALUE * DEFAULT_NON_DOMINANT_FACTOR, 2)
+                REPORT_VALUE * DEFAULT_NON_DOMINANT_FACTOR, 2
+            )
             # A factor that is not a number is refused, the side kept.
             await pilot.press("r", *"abc", "enter")
             assert "not a number" in message(app)
             assert app.strength_sheet.side == "left"
+
     drive(scenario())
 
 
@@ -239,12 +258,14 @@ def test_global_strength_parameters_move_the_values(drive):
             await edit_global(pilot, "group_percentile", "95")
             assert "95.0" in str(app.query_one(GlobalPanel).render())
             assert row_value(app, "Shoulder abduction") == round(
-                REPORT_VALUE * factor * float(percentile_factor(95)), 2)
+                REPORT_VALUE * factor * float(percentile_factor(95)), 2
+            )
             # Handedness left: the shown right limb becomes the non-dominant one.
             await edit_global(pilot, "handedness", "left")
             assert row_value(app, "Shoulder abduction") == round(
-                REPORT_VALUE * factor * float(percentile_factor(95))
-                * DEFAULT_NON_DOMINANT_FACTOR, 2)
+                REPORT_VALUE * factor * float(percentile_factor(95)) * DEFAULT_NON_DOMINANT_FACTOR,
+                2,
+            )
             # Gender: the women's data (figure 5's point is 8.99 ft-lb for them).
             await edit_global(pilot, "handedness", "right")
             await edit_global(pilot, "group_percentile", "50")
@@ -255,6 +276,7 @@ def test_global_strength_parameters_move_the_values(drive):
             # Undo goes back through the figure's edits.
             await pilot.press("u")
             assert row_value(app, "Shoulder abduction") == REPORT_VALUE
+
     drive(scenario())
 
 
@@ -262,8 +284,10 @@ def test_input_data_on_the_strength_page(drive, tmp_path):
     broken = tmp_path / "broken.dat"
     broken.write_text("P broken\nG MALE\nL RIGHT\n30 45 0 90 0 0 0 17 50\n")
     small = tmp_path / "small.dat"
-    small.write_text("P Small strength file\nG MALE\nL RIGHT\n"
-                     "30 45 0 90 0 0 0 21.50 50 /* shoulder abduction */\n")
+    small.write_text(
+        "P Small strength file\nG MALE\nL RIGHT\n"
+        "30 45 0 90 0 0 0 21.50 50 /* shoulder abduction */\n"
+    )
 
     async def scenario():
         app = SassApp(cursor_blink=False)
@@ -288,6 +312,7 @@ def test_input_data_on_the_strength_page(drive, tmp_path):
             assert "has no data for" in message(app)
             assert "no data" not in row_line(app, "Shoulder abduction")
             assert row_line(app, "Wrist flexion").split()[-3:] == ["0", "no", "data"]
+
     drive(scenario())
 
 
@@ -307,7 +332,8 @@ def test_create_figure_with_and_without_strength(drive, tmp_path, monkeypatch):
             value, unit = with_strength["right_shoulder_abduction_strength"]
             assert (value, unit) == (24.38, "Nm")
             assert with_strength["left_shoulder_abduction_strength"][0] == pytest.approx(
-                24.38 * DEFAULT_NON_DOMINANT_FACTOR, abs=0.01)
+                24.38 * DEFAULT_NON_DOMINANT_FACTOR, abs=0.01
+            )
             await pilot.press("f")
             await paste(pilot, "plain.fig")
             await pilot.press("enter", "n", "enter")
@@ -322,6 +348,7 @@ def test_create_figure_with_and_without_strength(drive, tmp_path, monkeypatch):
             await pilot.press("enter", *"perhaps", "enter")
             assert "expected y or n" in message(app)
             assert not (tmp_path / "maybe.fig").exists()
+
     drive(scenario())
 
 
@@ -337,6 +364,7 @@ def test_create_figure_without_strength_data_does_not_ask(drive, tmp_path, monke
             assert "Wrote MALE50.FIG" in message(app)
             variables = read_fig(tmp_path / "MALE50.FIG").variables
             assert not any(name.endswith("_strength") for name in variables)
+
     drive(scenario())
 
 
@@ -376,6 +404,7 @@ def test_export_hanim_writes_x3d_and_asks_before_overwriting(drive, tmp_path, mo
             await pilot.pause()
             assert f"{tmp_path / 'no' / 'such.x3d'}: cannot write" in message(app)
             assert app.query_one("#message").has_class("-error")
+
     drive(scenario())
 
 
@@ -392,6 +421,7 @@ def test_export_hanim_refuses_an_incomplete_figure(drive, tmp_path, monkeypatch)
             await pilot.pause()
             assert "Joint Limits not loaded" in message(app)
             assert not (tmp_path / "MALE50.x3d").exists()
+
     drive(scenario())
 
 
@@ -401,11 +431,13 @@ def test_strength_page_snapshot(snap_compare):
 
 def test_angles_outside_new_limits_are_marked(drive):
     """Lowering the joint-limit percentile can leave a shown angle outside its limit."""
+
     def outside_cells(page) -> list[str]:
         text = page.render()
         style = page.get_component_rich_style("strengthpage--outside")
-        return [text.plain[span.start:span.end].strip() for span in text.spans
-                if span.style == style]
+        return [
+            text.plain[span.start : span.end].strip() for span in text.spans if span.style == style
+        ]
 
     async def scenario():
         app = SassApp(cursor_blink=False)
@@ -420,6 +452,7 @@ def test_angles_outside_new_limits_are_marked(drive):
             await edit_global(pilot, "group_percentile", "5")
             await pilot.press("s")
             assert outside_cells(page) == ["175"]
+
     drive(scenario())
 
 
@@ -442,4 +475,5 @@ def test_undo_takes_the_newest_edit_angle_or_figure(drive):
             assert row_value(app, "Shoulder abduction") == REPORT_VALUE
             await pilot.press("u")
             assert message(app) == "Nothing to undo."
+
     drive(scenario())

@@ -2,54 +2,84 @@
 
     sass strength shoulder_abduction shoulder_x=30 shoulder_y=45 elbow_y=90
 
-Angles not given keep the motion's first stored configuration.  No Textual.
+Angles not given keep the motion's first stored configuration.
 """
 
 from __future__ import annotations
 
 import argparse
 
-from sass_tui.model.figure import GENDERS, HANDEDNESS, STRENGTH_TYPES, Figure
-from sass_tui.model.names import JOINT_LIMITS
-from sass_tui.model.strength import (
-    JOINT_AXES, MOTION_NAMES, SIDES, StrengthError, StrengthSheet, motion_index,
-    parse_joint_axis, parse_side_factor, read_strength_file)
+from sass_tui.model.vocabulary import (
+    GENDERS,
+    HANDEDNESS,
+    JOINT_AXES,
+    MOTION_NAMES,
+    SIDES,
+    STRENGTH_PARAMETERS,
+    STRENGTH_TYPES,
+)
 
 
-def add_strength_command(commands) -> None:
+def register(commands: argparse._SubParsersAction) -> None:
     parser = commands.add_parser(
-        "strength", help="print a strength at a joint configuration (stored or predicted)",
+        "strength",
+        help="print a strength at a joint configuration (stored or predicted)",
         description="Print the strength of MOTION at the given joint angles: the stored "
-        "value when the configuration is in the data, else the prediction equation.")
+        "value when the configuration is in the data, else the prediction equation.",
+    )
     parser.add_argument("motion", metavar="MOTION", help=", ".join(MOTION_NAMES))
-    parser.add_argument("angles", nargs="*", metavar="JOINT_AXIS=ANGLE",
-                        help=f"{', '.join(JOINT_AXES)}; e.g. shoulder_x=30 or "
-                        "'elbow_y=1.5 rad' (deg without a unit)")
+    parser.add_argument(
+        "angles",
+        nargs="*",
+        metavar="JOINT_AXIS=ANGLE",
+        help=f"{', '.join(JOINT_AXES)}; e.g. shoulder_x=30 or "
+        "'elbow_y=1.5 rad' (deg without a unit)",
+    )
     parser.add_argument("--gender", choices=GENDERS, default="male")
     parser.add_argument("--side", choices=SIDES, default="right")
     parser.add_argument("--unit", choices=("ft-lb", "N-m"), default="ft-lb")
-    parser.add_argument("--percentile", type=float, default=50.0,
-                        help="strength percentile (default 50)")
-    parser.add_argument("--joint-limit-percentile", type=float, default=50.0,
-                        help="percentile of the joint limits the angles must respect")
+    parser.add_argument(
+        "--percentile", type=float, default=50.0, help="strength percentile (default 50)"
+    )
+    parser.add_argument(
+        "--joint-limit-percentile",
+        type=float,
+        default=50.0,
+        help="percentile of the joint limits the angles must respect",
+    )
     parser.add_argument("--strength-type", choices=STRENGTH_TYPES, default="isometric")
     parser.add_argument("--motion-speed", type=float, default=0.0, help="deg/s")
     parser.add_argument("--handedness", choices=HANDEDNESS, default="right")
     parser.add_argument("--training-level", type=float, default=0.0)
-    parser.add_argument("--fatigue-level", type=float, default=0.0,
-                        help="seconds a maximal exertion has been held (0 = rested)")
-    parser.add_argument("--factor", default="",
-                        help="non-dominant limb scaling factor (default 1/1.116)")
+    parser.add_argument(
+        "--fatigue-level",
+        type=float,
+        default=0.0,
+        help="seconds a maximal exertion has been held (0 = rested)",
+    )
+    parser.add_argument(
+        "--factor", default="", help="non-dominant limb scaling factor (default 1/1.116)"
+    )
     parser.add_argument("--file", metavar="F", help="strength file (default datasets/strength.dat)")
-    parser.set_defaults(func=cmd_strength)
+    parser.set_defaults(func=run)
 
 
-def cmd_strength(args: argparse.Namespace) -> int:
+def run(args: argparse.Namespace) -> int:
+    from sass_tui.model.figure import Figure
+    from sass_tui.model.names import JOINT_LIMITS
+    from sass_tui.model.strength import (
+        StrengthError,
+        StrengthSheet,
+        motion_index,
+        parse_joint_axis,
+        parse_side_factor,
+        read_strength_file,
+    )
+
     data = read_strength_file(args.file)
     figure = Figure.default(args.gender)
     figure.set_group_percentile(JOINT_LIMITS, args.joint_limit_percentile)
-    for name in ("strength_type", "motion_speed", "handedness", "training_level",
-                 "fatigue_level"):
+    for name in STRENGTH_PARAMETERS:
         figure.set_strength_parameter(name, getattr(args, name))
     sheet = StrengthSheet(data, figure)
     sheet.side = args.side
@@ -70,6 +100,8 @@ def cmd_strength(args: argparse.Namespace) -> int:
     if row.source == "predicted":
         fit = data.model(figure.gender, sheet.side).fits[index]
         how += f" by the least-squares equation, fit error {fit.rms_percent:.1f} % RMS"
-    print(f"{row.side} {row.label.lower()}: {row.value:.2f} {row.unit} ({how}; "
-          f"{figure.gender}, {sheet.percentile:g}th percentile) at {where}")
+    print(
+        f"{row.side} {row.label.lower()}: {row.value:.2f} {row.unit} ({how}; "
+        f"{figure.gender}, {sheet.percentile:g}th percentile) at {where}"
+    )
     return 0

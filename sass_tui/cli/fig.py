@@ -1,0 +1,47 @@
+"""`sass fig`: write a PEABODY body description file (.fig)."""
+
+from __future__ import annotations
+
+import argparse
+
+from sass_tui.cli.options import add_figure_options, figure_from_args, print_warnings
+
+
+def register(commands: argparse._SubParsersAction) -> None:
+    fig = commands.add_parser("fig", help="write a PEABODY body description file (.fig)")
+    fig.add_argument(
+        "-o",
+        "--output",
+        metavar="OUT.fig",
+        help="output file (default: the report's MALE50.FIG convention)",
+    )
+    add_figure_options(fig)
+    strength = fig.add_mutually_exclusive_group()
+    strength.add_argument(
+        "--strength",
+        metavar="F",
+        help="strength file for the strength variables (default datasets/strength.dat)",
+    )
+    strength.add_argument("--no-strength", action="store_true", help="leave strength out")
+    fig.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from sass_tui.model.figfile import default_fig_name, write_fig
+    from sass_tui.model.names import GIRTH
+
+    figure, warnings = figure_from_args(args)
+    extra_sections = []
+    if not args.no_strength:
+        from sass_tui.model.strength import StrengthSheet, fig_section, read_strength_file
+
+        strength = read_strength_file(args.strength)
+        warnings += strength.warnings
+        extra_sections.append(fig_section(StrengthSheet(strength, figure)))
+    print_warnings(warnings)
+    out = args.output or default_fig_name(
+        figure.gender, figure.groups[GIRTH].percentile, figure.figure_type
+    )
+    write_fig(figure, out, extra_sections)
+    print(f"wrote {out}")
+    return 0

@@ -1,0 +1,27 @@
+"""One base for every error sass reports to a user.
+
+The concrete errors subclass both `ValueError` (what they are) and `SassError`
+(that they are the user's to read).  The CLI and TUI edges catch `SassError`
+and `OSError`; anything else is a programming bug and shows as one.
+"""
+
+from __future__ import annotations
+
+
+class SassError(Exception):
+    """An input, file or request sass refuses; whatever was loaded is unchanged.
+
+    `where` says where the fault is, as precisely as the raiser knows it: a
+    `file:line`, a cell such as "Girth / Head / x", or a token in a query.
+    """
+
+    where: str | None = None
+
+    def __init__(self, message: str = "", *, where: str | None = None) -> None:
+        super().__init__(message)
+        if where is not None:
+            self.where = where
+
+    def pointer(self) -> str:
+        """Extra lines that show the fault (a caret under a query column); may be empty."""
+        return ""
