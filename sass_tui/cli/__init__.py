@@ -12,10 +12,10 @@ import argparse
 import os
 import sys
 
-from sass_tui.cli import db, export, fig, query, strength
+from sass_tui.cli import db, export, fig, query, serve, strength
 from sass_tui.cli.options import DB_HELP
 
-VERBS = (fig, export, strength, query, db)
+VERBS = (fig, export, strength, query, db, serve)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -27,10 +27,26 @@ def build_parser() -> argparse.ArgumentParser:
     # --db may stand before the verb or after it; the verb's own option (see
     # options.add_db_option) overrides this one only when it is given.
     parser.add_argument("--db", metavar="PATH", help=DB_HELP)
+    parser.add_argument(
+        "--version", action=_VersionAction, nargs=0, help="print the version and exit"
+    )
     commands = parser.add_subparsers(dest="command", metavar="COMMAND")
     for verb in VERBS:
         verb.register(commands)
     return parser
+
+
+class _VersionAction(argparse.Action):
+    """--version, looked up only when asked (importlib.metadata costs start-up time)."""
+
+    def __call__(self, parser: argparse.ArgumentParser, *_: object) -> None:
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            number = version("sass-tui")
+        except PackageNotFoundError:
+            number = "unknown (not installed)"
+        parser.exit(message=f"sass {number}\n")
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,0 +1,155 @@
+"""`sass serve` in a real browser: Debian's headless Chromium, driven by selenium.
+
+The page draws the terminal on a canvas, so the test reads what the app sent:
+Chromium's performance log carries every WebSocket frame the page received;
+their text, with the escape sequences taken out, is what the screen shows.
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+import re
+import shutil
+import socket
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+CHROMIUM = shutil.which("chromium")
+CHROMEDRIVER = shutil.which("chromedriver")
+webdriver = pytest.importorskip("selenium.webdriver")
+if not (CHROMIUM and CHROMEDRIVER):
+    pytest.skip("Debian's chromium and chromium-driver are not installed", allow_module_level=True)
+
+from selenium.webdriver.chrome.options import Options  # noqa: E402
+from selenium.webdriver.chrome.service import Service  # noqa: E402
+from selenium.webdriver.common.by import By  # noqa: E402
+
+ESCAPES = re.compile(
+    r"\x1b\[[0-9;?<>=]*[ -/]*[@-~]|\x1b\][^\x07\x1b]*(?:\x07|\x1b\\)|\x1b[()][0-9A-B]"
+)
+READY = "Press left-mouse to select items."
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def wait_for_port(port: int, timeout: float = 20.0) -> None:
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        with socket.socket() as s:
+            if s.connect_ex(("127.0.0.1", port)) == 0:
+                return
+        time.sleep(0.1)
+    raise TimeoutError(f"sass serve did not listen on port {port}")
+
+
+class Screen:
+    """The text the page has received over its WebSocket."""
+
+    def __init__(self, driver) -> None:
+        self.driver = driver
+        self.text = ""
+
+    def read(self) -> str:
+        for entry in self.driver.get_log("performance"):
+            message = json.loads(entry["message"])["message"]
+            if message.get("method") != "Network.webSocketFrameReceived":
+                continue
+            response = message["params"]["response"]
+            data = response.get("payloadData", "")
+            if response.get("opcode") == 2:
+                data = base64.b64decode(data).decode("utf-8", "replace")
+            self.text += ESCAPES.sub("", data)
+        return self.text
+
+    def since(self, mark: int) -> str:
+        return self.read()[mark:]
+
+    def wait_for(self, needle: str, mark: int = 0, timeout: float = 30.0) -> None:
+        end = time.monotonic() + timeout
+        while time.monotonic() < end:
+            if needle in self.since(mark):
+                return
+            time.sleep(0.1)
+        raise AssertionError(f"{needle!r} never reached the page; last text:\n{self.text[-2000:]}")
+
+
+@pytest.fixture
+def served(tmp_path: Path, default_people_db: Path):
+    port = free_port()
+    server = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "sass_tui",
+            "serve",
+            "--host",
+            "localhost",
+            "--port",
+            str(port),
+            "--db",
+            str(default_people_db),
+        ],
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        cwd=tmp_path,
+    )
+    try:
+        wait_for_port(port)
+        yield f"http://localhost:{port}/"
+    finally:
+        server.terminate()
+        try:
+            server.wait(10)
+        except subprocess.TimeoutExpired:
+            server.kill()
+
+
+@pytest.fixture
+def browser(tmp_path: Path):
+    options = Options()
+    options.binary_location = CHROMIUM
+    for flag in (
+        "--headless=new",
+        "--no-sandbox",
+        "--disable-gpu",
+        "--disable-quic",
+        "--no-first-run",
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+        "--window-size=1280,900",
+        f"--user-data-dir={tmp_path / 'chromium'}",
+    ):
+        options.add_argument(flag)
+    options.set_capability("goog:loggingPrefs", {"performance": "ALL"})
+    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+    try:
+        yield driver
+    finally:
+        driver.quit()
+
+
+def test_the_spreadsheet_runs_in_a_browser_and_takes_keys(served: str, browser) -> None:
+    browser.get(served)
+    start = browser.find_elements(By.ID, "start")
+    if start and start[0].is_displayed():
+        start[0].click()
+    screen = Screen(browser)
+    screen.wait_for(READY)
+    assert "Neck ul" not in screen.read()  # Girth first: no joint-limit rows yet
+    mark = len(screen.read())
+    # xterm.js takes keys through its hidden text area.
+    keyboard = browser.find_element(By.CSS_SELECTOR, "#terminal textarea")
+    # `j` switches to Joint Limits: its rows and the degree unit reach the page.
+    keyboard.send_keys("j")
+    screen.wait_for("Neck ul", mark)
+    screen.wait_for("deg", mark)
