@@ -1,0 +1,151 @@
+"""The figure view: the current figure drawn to scale, front and side.
+
+Its screen hands it `Outline`s (sass_tui/model/outline.py, the HAnim
+geometry flattened): the first is drawn filled, a second one (the
+population's 50th against the person shown, or another percentile) as an
+outline over it.  Pixels are half character cells (textual-canvas), about
+square on a terminal, so one scale serves both axes.  A ruler stands on the
+left with a tick every 10 cm and a long one every 50 cm.
+"""
+
+from __future__ import annotations
+
+import math
+
+from textual.app import ComposeResult
+from textual.color import Color
+from textual.containers import Vertical
+from textual.reactive import reactive
+from textual.widgets import Static
+from textual_canvas import Canvas
+
+from sass_tui.model.outline import Outline, Shape, View
+
+FILL = Color.parse("#5f87af")
+OVERLAY = Color.parse("#ffaf00")
+JOINT = Color.parse("#ff5f5f")
+RULER = Color.parse("#a8a8a8")
+GAP = 4  # pixels between the ruler, the front view and the side view
+
+
+class FigureView(Vertical):
+    """Front and side views of one or two figures, with a stature ruler."""
+
+    DEFAULT_CSS = """
+    FigureView { height: 1fr; }
+    FigureView Canvas { height: 1fr; width: 1fr; }
+    FigureView #figure-caption { height: auto; }
+    """
+
+    outlines: reactive[tuple[Outline, ...]] = reactive((), always_update=True)
+
+    def compose(self) -> ComposeResult:
+        yield Canvas(1, 2, id="figure-canvas")
+        yield Static("", id="figure-caption")
+
+    def watch_outlines(self) -> None:
+        self.redraw()
+
+    def on_resize(self) -> None:
+        self.redraw()
+
+    def redraw(self) -> None:
+        if not self.is_mounted:
+            return
+        canvas = self.query_one(Canvas)
+        width, height = canvas.size.width, canvas.size.height * 2
+        if width < 8 or height < 8:
+            return
+        canvas.clear(width=width, height=height)
+        self.query_one("#figure-caption", Static).update(self.caption())
+        if not self.outlines:
+            return
+        tallest = max(o.height for o in self.outlines) or 1.0
+        scale = (height - 2) / tallest  # pixels per cm
+        floor = height - 1
+        ruler_x = 1
+        front_width = max(_view_width(o.front) for o in self.outlines) * scale
+        front_centre = ruler_x + GAP + front_width / 2
+        side_left = min(o.side.extent()[0] for o in self.outlines)
+        side_origin = front_centre + front_width / 2 + GAP - side_left * scale
+        with canvas.batch_refresh():
+            _draw_ruler(canvas, ruler_x, floor, scale, tallest)
+            for index, outline in enumerate(self.outlines[:2]):
+                filled = index == 0
+                colour = FILL if filled else OVERLAY
+                for view, origin in ((outline.front, front_centre), (outline.side, side_origin)):
+                    for shape in view.shapes:
+                        _draw_shape(canvas, shape, origin, floor, scale, colour, filled)
+                    if filled:
+                        pixels = [_to_pixel(x, y, origin, floor, scale) for x, y in view.joints]
+                        _set(canvas, pixels, JOINT)
+
+    def caption(self) -> str:
+        if not self.outlines:
+            return "No figure to draw."
+        parts = []
+        for index, outline in enumerate(self.outlines[:2]):
+            stature = "" if math.isnan(outline.stature) else f", stature {outline.stature:.1f} cm"
+            colour = "#5f87af" if index == 0 else "#ffaf00"
+            mark = "■" if index == 0 else "□"
+            parts.append(f"[{colour}]{mark}[/] {outline.label}{stature}")
+        return "Front | side.  " + "   ".join(parts) + "   (ruler: 10 cm ticks)"
+
+
+def _view_width(view: View) -> float:
+    left, right, _, _ = view.extent()
+    return right - left
+
+
+def _to_pixel(x: float, y: float, origin: float, floor: int, scale: float) -> tuple[int, int]:
+    return round(origin + x * scale), round(floor - y * scale)
+
+
+def _set(canvas: Canvas, pixels: list[tuple[int, int]], colour: Color) -> None:
+    inside = [(x, y) for x, y in pixels if 0 <= x < canvas.width and 0 <= y < canvas.height]
+    canvas.set_pixels(inside, colour, refresh=False)
+
+
+def _draw_shape(
+    canvas: Canvas,
+    shape: Shape,
+    origin: float,
+    floor: int,
+    scale: float,
+    colour: Color,
+    filled: bool,
+) -> None:
+    left = origin + (shape.x - shape.width / 2) * scale
+    right = origin + (shape.x + shape.width / 2) * scale
+    top = floor - (shape.y + shape.height / 2) * scale
+    bottom = floor - (shape.y - shape.height / 2) * scale
+    x0, x1 = math.floor(left + 0.5), max(math.floor(left + 0.5), math.ceil(right - 0.5))
+    y0, y1 = math.floor(top + 0.5), max(math.floor(top + 0.5), math.ceil(bottom - 0.5))
+    cx, cy = (left + right) / 2, (top + bottom) / 2
+    rx, ry = max((right - left) / 2, 0.5), max((bottom - top) / 2, 0.5)
+    pixels = []
+    for y in range(y0, y1 + 1):
+        for x in range(x0, x1 + 1):
+            if shape.kind == "ellipse":
+                inside = ((x - cx) / rx) ** 2 + ((y - cy) / ry) ** 2 <= 1.0
+                edge = inside and (
+                    ((abs(x - cx) + 1) / rx) ** 2 + ((y - cy) / ry) ** 2 > 1.0
+                    or ((x - cx) / rx) ** 2 + ((abs(y - cy) + 1) / ry) ** 2 > 1.0
+                )
+            else:
+                inside = True
+                edge = x in (x0, x1) or y in (y0, y1)
+            if inside and (filled or edge):
+                pixels.append((x, y))
+    _set(canvas, pixels, colour)
+
+
+def _draw_ruler(canvas: Canvas, x: int, floor: int, scale: float, tallest: float) -> None:
+    top = floor - round(tallest * scale)
+    pixels = [(x, y) for y in range(max(top, 0), floor + 1)]
+    for cm in range(0, int(tallest) + 1, 10):
+        y = floor - round(cm * scale)
+        pixels += [(x - 1, y), (x + 1, y)]
+        if cm % 50 == 0:
+            pixels += [(x + 2, y)]
+    _set(canvas, pixels, RULER)
