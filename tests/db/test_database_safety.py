@@ -5,6 +5,7 @@ written, and the query lists work while another process imports."""
 
 from __future__ import annotations
 
+import io
 import os
 import shutil
 import signal
@@ -360,3 +361,37 @@ def test_lists_page_while_another_process_imports(db_path):
         lists.close()
     assert _count(db_path, "source = 'concurrent'") == 6068
     assert _integrity(db_path) == "ok"
+
+
+# --- progress and the question db init asks on a terminal --------------------------------
+
+
+class _Terminal(io.StringIO):
+    def __init__(self, text: str = "") -> None:
+        super().__init__(text)
+
+    def isatty(self) -> bool:
+        return True
+
+
+def test_building_reports_progress(tmp_path):
+    calls: list[tuple[int, int]] = []
+    create_default_database(tmp_path / "p.db", progress=lambda d, t: calls.append((d, t)))
+    assert len(calls) >= 3
+    assert [d for d, _ in calls] == sorted(d for d, _ in calls)
+    assert calls[-1][0] == calls[-1][1] == sum(f.stat().st_size for f in shipped_ansur_files())
+
+
+@pytest.mark.parametrize("answer, status, kept", [("n\n", 1, 1), ("y\n", 0, 0)])
+def test_db_init_asks_on_a_terminal(db_path, tmp_path, monkeypatch, answer, status, kept):
+    conn = connect(db_path)
+    import_flat_files(conn, _flat(tmp_path))
+    conn.close()
+    err = _Terminal()
+    monkeypatch.setattr(sys, "stdin", _Terminal(answer))
+    monkeypatch.setattr(sys, "stderr", err)
+    assert main(["db", "init", "--db", str(db_path)]) == status
+    assert "holds 6269 people" in err.getvalue() and "[y/N]" in err.getvalue()
+    assert _count(db_path, "name = 'JANE_DOE'") == kept
+    if status == 0:
+        assert "building [" in err.getvalue()  # the progress bar
