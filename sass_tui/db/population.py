@@ -62,7 +62,7 @@ def population_of(
     fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)]
     values = load_values(conn, fields, query)
     genders = np.array(values.genders, dtype=object)
-    counts = {g: int(np.sum(genders == g)) for g in GENDERS if np.any(genders == g)}
+    counts: dict[str, int] = {g: int(np.sum(genders == g)) for g in GENDERS if np.any(genders == g)}
     if not counts:
         raise PopulationError(f"the query selects nobody: {query}")
     small = {g: n for g, n in counts.items() if n < MIN_PEOPLE}
