@@ -27,7 +27,6 @@ from sass_tui.db.schema import (
     connect,
     default_db_path,
     recreate_schema,
-    transaction,
 )
 
 Progress = Callable[[int, int], None]
@@ -88,11 +87,25 @@ def create_default_database(
     conn = connect(path, create=True, rebuild=True)
     try:
         check_writable(conn, path)
-        with transaction(conn, "EXCLUSIVE"):
+        try:
+            conn.execute("BEGIN EXCLUSIVE")
+        except sqlite3.OperationalError as exc:
+            raise DatabaseError(
+                f"{path} is busy ({exc}): another process is writing to it; "
+                "nothing changed, try again when it has finished"
+            ) from None
+        try:
             if not replace and people_count(conn):
+                conn.execute("ROLLBACK")
                 return {}
             recreate_schema(conn)
-            return fill_default(conn, progress)
+            counts = fill_default(conn, progress)
+            conn.execute("COMMIT")
+        except BaseException:
+            if conn.in_transaction:
+                conn.execute("ROLLBACK")
+            raise
+        return counts
     finally:
         conn.close()
 

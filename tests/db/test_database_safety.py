@@ -395,3 +395,20 @@ def test_db_init_asks_on_a_terminal(db_path, tmp_path, monkeypatch, answer, stat
     assert _count(db_path, "name = 'JANE_DOE'") == kept
     if status == 0:
         assert "building [" in err.getvalue()  # the progress bar
+
+
+def test_db_init_while_a_writer_holds_the_lock_changes_nothing(db_path, monkeypatch):
+    from sass_tui.db import schema
+
+    monkeypatch.setattr(schema, "BUSY_TIMEOUT_S", 0.3)
+    writer = sqlite3.connect(db_path, isolation_level=None)
+    writer.execute("BEGIN IMMEDIATE")
+    writer.execute("UPDATE person SET age = 99 WHERE id_num = 1")
+    try:
+        with pytest.raises(DatabaseError, match="busy .*nothing changed"):
+            create_default_database(db_path, replace=True)
+    finally:
+        writer.execute("COMMIT")
+        writer.close()
+    assert _count(db_path, "age = 99") == 1
+    assert _integrity(db_path) == "ok"
