@@ -2,6 +2,18 @@
 
     gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb
 
+    measure.sittingheight > 95 cm AND branch = 'Combat Arms' AND source = ansur2
+
+Fields: `gender`, `stature`, `mass`, `age`, `handedness` (alias
+`writingpreference`), the survey attributes `component`, `branch`,
+`ethnicity` (free text: = or != only, in single or double quotes unless one
+word, matched without regard to case), `subjectnumericrace` and `dodrace`
+(the survey's codes), `source` (ansur2, synthetic, an import's label),
+`measure.<name>` (the 93 ANSUR II measurements, the survey's names lower
+case, "did you mean" on a typo), `girth.ROW.x|y|z`, `joint_limit.ROW.x|y|z`,
+`center_of_mass.ROW.x|y|z`, `strength.MOTION.max` and the strength
+parameters; `field_names()` lists them all with units.
+
 AND binds tighter than OR; parentheses group.  Values with a unit are
 converted to the stored unit; the SQL holds only `?` placeholders, never the
 user's text.  Errors name the offending token and its column.
