@@ -24,6 +24,7 @@ For the UI: `Query.count()` and `Query.page(offset, limit)` (or
 
 from __future__ import annotations
 
+import re
 import sqlite3
 from dataclasses import dataclass
 from functools import lru_cache
@@ -318,12 +319,51 @@ def field_names() -> list[tuple[str, str]]:
     return out
 
 
+# Bounds that keep every query within what the parser's recursion and SQLite's
+# expression tree (depth 1000) take, with a message instead of a crash.
+MAX_NESTING = 50
+MAX_COMPARISONS = 200
+_OPERATOR_START = re.compile(r"<=|>=|!=|<>|[<>=≤≥≠]")
+
+
+def _check_size(text: str) -> None:
+    depth = 0
+    comparisons = 0
+    quote: str | None = None
+    k = 0
+    while k < len(text):
+        char = text[k]
+        if quote:
+            if char == quote:
+                quote = None
+        elif char in "'\"":
+            quote = char
+        elif char == "(":
+            depth += 1
+            if depth > MAX_NESTING:
+                raise QueryError(f"parentheses nested more than {MAX_NESTING} deep", text, k + 1)
+        elif char == ")":
+            depth -= 1
+        else:
+            match = _OPERATOR_START.match(text, k)
+            if match:
+                comparisons += 1
+                if comparisons > MAX_COMPARISONS:
+                    raise QueryError(
+                        f"more than {MAX_COMPARISONS} comparisons in one query", text, k + 1
+                    )
+                k = match.end()
+                continue
+        k += 1
+
+
 def compile_query(text: str) -> CompiledQuery:
     """Parse and check a query; raises QueryError pointing at the bad token."""
     if not text.strip():
         raise QueryError(
             "the query is empty; expected e.g. gender = male AND stature > 180 cm", text, 1
         )
+    _check_size(text)
     try:
         tree = parser().parse(text)
     except UnexpectedCharacters as exc:

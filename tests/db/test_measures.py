@@ -274,3 +274,16 @@ def test_any_quoted_text_is_a_parameter(default_db, value):
         return  # e.g. characters the grammar does not take
     assert compiled.params == (value,)
     assert "'" not in compiled.where and '"' not in compiled.where  # no literal in the SQL
+
+
+def test_deep_and_long_queries_are_refused_with_a_message(default_db):
+    deep = "(" * 247 + "age > 1" + ")" * 247
+    with pytest.raises(QueryError, match="nested more than 50 deep") as caught:
+        compile_query(deep)
+    assert caught.value.column == 51
+    long = " OR ".join(f"age = {k}" for k in range(1000))
+    with pytest.raises(QueryError, match="more than 200 comparisons"):
+        compile_query(long)
+    fine = " OR ".join(f"age = {k}" for k in range(200))
+    assert run_query(default_db, "(" * 50 + fine + ")" * 50).count() > 0
+    assert compile_query("branch = '((((((((((((((((((((((((((((((((((((((((((((((((((((('")
