@@ -134,18 +134,19 @@ MEASUREMENTS = (
     "shoulderlength",
     "stature",
 )
-REQUIRED = (ID_COLUMN, "gender", "age", "writingpreference") + MEASUREMENTS
+REQUIRED = (ID_COLUMN, "gender", "weightkg", "age", "writingpreference") + MEASUREMENTS
 
 DEFAULT_LABEL = "ansur2"
 # Largest subject id accepted: ids are whole numbers below 10^12 (the survey's
 # run to 920103), so they stay exact in a float and in SQLite's 64-bit integers.
 MAX_SUBJECT_ID = 10**12 - 1
 # Plausible values in canonical units: a body dimension 0 < v <= 300 cm, a
-# mass 0 < m <= 500 kg, an age 0 < a < 130 years.
+# mass 0 < m <= 500 kg, an age 0 < a <= 130 years.
 MEASURE_LIMITS = {name: (0.0, 500.0 if name == "weightkg" else 300.0) for name in MEASURES}
 AGE_LIMITS = (0.0, 130.0)
-TEXT_ATTRIBUTES = {"component": "component", "branch": "branch", "ethnicity": "ethnicity"}
-CODE_ATTRIBUTES = {"subjectnumericrace": "subjectnumericrace", "dodrace": "dodrace"}
+# Survey fields kept as they are (text) and as numeric codes; optional columns.
+TEXT_ATTRIBUTES = ("component", "branch", "ethnicity")
+CODE_ATTRIBUTES = ("subjectnumericrace", "dodrace")
 CHUNK_ROWS = 2000
 
 

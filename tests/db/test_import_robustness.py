@@ -187,3 +187,22 @@ def test_imports_after_a_large_id_still_work(default_db, tmp_path):
     male = gzip.decompress(MALE.read_bytes()).decode("cp1252").splitlines()[:3]
     path = _write(tmp_path, male)
     assert import_ansur(default_db, [path], label="after") == {"male": 2, "female": 0}
+
+
+def test_a_missing_weight_column_is_refused(tmp_path, male_lines):
+    k = _header(male_lines).index("weightkg")
+    lines = [",".join(f for j, f in enumerate(line.split(",")) if j != k) for line in male_lines]
+    with pytest.raises(AnsurImportError, match=":1: missing column weightkg"):
+        read_ansur(_write(tmp_path, lines))
+
+
+def test_optional_survey_columns_may_be_absent(tmp_path, male_lines):
+    """A file in ANSUR format without the survey's subject fields still imports."""
+    drop = {_header(male_lines).index(c) for c in ("branch", "dodrace", "span")}
+    lines = [
+        ",".join(f for j, f in enumerate(line.split(",")) if j not in drop) for line in male_lines
+    ]
+    batch = read_ansur(_write(tmp_path, lines))
+    assert batch.attributes["branch"] == [None] * 30
+    assert batch.attributes["component"][0] == "Regular Army"
+    assert batch.measures is not None and math.isnan(batch.measures[0, 73])  # span
