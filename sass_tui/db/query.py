@@ -2,6 +2,18 @@
 
     gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb
 
+    measure.sittingheight > 95 cm AND branch = 'Combat Arms' AND source = ansur2
+
+Fields: `gender`, `stature`, `mass`, `age`, `handedness` (alias
+`writingpreference`), the survey attributes `component`, `branch`,
+`ethnicity` (free text: = or != only, in single or double quotes unless one
+word, matched without regard to case), `subjectnumericrace` and `dodrace`
+(the survey's codes), `source` (ansur2, synthetic, an import's label),
+`measure.<name>` (the 93 ANSUR II measurements, the survey's names lower
+case, "did you mean" on a typo), `girth.ROW.x|y|z`, `joint_limit.ROW.x|y|z`,
+`center_of_mass.ROW.x|y|z`, `strength.MOTION.max` and the strength
+parameters; `field_names()` lists them all with units.
+
 AND binds tighter than OR; parentheses group.  Values with a unit are
 converted to the stored unit; the SQL holds only `?` placeholders, never the
 user's text.  Errors name the offending token and its column.
@@ -12,6 +24,7 @@ For the UI: `Query.count()` and `Query.page(offset, limit)` (or
 
 from __future__ import annotations
 
+import re
 import sqlite3
 from dataclasses import dataclass
 from functools import lru_cache
@@ -32,6 +45,7 @@ from sass_tui.db.schema import (
     QUERY_TABLES,
 )
 from sass_tui.model.errors import SassError
+from sass_tui.model.measures import MEASURE_UNITS, suggest
 from sass_tui.model.strength import MOTION_NAMES
 from sass_tui.model.units import DISPLAY, UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, STRENGTH_TYPES
@@ -47,10 +61,12 @@ comparison: field OP value
 field: NAME ("." NAME)*
 value: NUMBER UNIT?   -> number
      | NAME           -> word
+     | STRING         -> quoted
 _OR.3: /or\b/i
 _AND.3: /and\b/i
 OP: "<=" | ">=" | "!=" | "<>" | "<" | ">" | "=" | "≤" | "≥" | "≠"
 NAME.2: /[A-Za-z_][A-Za-z0-9_]*/
+STRING: /'[^']*'|"[^"]*"/
 NUMBER: /[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?/
 UNIT: /(ft|lbf?|N|n)[-·*]?(lbf?|lbs|m|ft)\b|deg\/s|rad\/s|°\/s|[A-Za-z°"]+/
 %import common.WS
@@ -70,13 +86,22 @@ _OPERATORS = {
     "≠": "!=",
 }
 
-# field -> (table alias, column, stored unit or None, allowed words or None)
-_GLOBAL_FIELDS = {
+# Free text compared without regard to case (only = and !=).
+TEXT = ("text",)
+# field -> (table alias, column, stored unit or None, allowed words, TEXT, or None)
+_GLOBAL_FIELDS: dict[str, tuple[str, str, str | None, tuple[str, ...] | None]] = {
     "gender": ("p", "gender", None, GENDERS),
     "mass": ("p", "mass", "kg", None),
     "stature": ("p", "stature", "cm", None),
     "age": ("p", "age", "", None),
     "handedness": ("p", "handedness", None, HANDEDNESS),
+    "writingpreference": ("p", "handedness", None, HANDEDNESS),
+    "source": ("p", "source", None, TEXT),
+    "component": ("p", "component", None, TEXT),
+    "branch": ("p", "branch", None, TEXT),
+    "ethnicity": ("p", "ethnicity", None, TEXT),
+    "subjectnumericrace": ("p", "subjectnumericrace", "", None),
+    "dodrace": ("p", "dodrace", "", None),
     "strength_type": ("s", "strength_type", None, STRENGTH_TYPES),
     "motion_speed": ("s", "motion_speed", "deg/s", None),
     "training_level": ("s", "training_level", "", None),
@@ -89,6 +114,7 @@ _GROUPS = {
     "center_of_mass": ("center_of_mass", CENTER_OF_MASS_NAMES, "cm", "segment"),
     "strength": ("strength", MOTION_NAMES, "N_m", "motion"),
 }
+MEASURE_TABLE = "measure"
 
 
 class QueryError(ValueError, SassError):
@@ -163,12 +189,35 @@ class _Compiler(Transformer):
         return ("word", value, None)
 
     @v_args(inline=True)
+    def quoted(self, value):
+        return ("text", value, None)
+
+    @v_args(inline=True)
     def comparison(self, names, op, value):
         alias, column, unit, words = self._resolve(names)
         sql_op = _OPERATORS[str(op)]
         kind, token, unit_token = value
+        if words is TEXT:
+            if kind not in ("word", "text"):
+                self._fail(
+                    f"{'.'.join(names)} needs a text value in quotes, e.g. 'Combat Arms', "
+                    f"not {str(token)!r}",
+                    token,
+                )
+            if sql_op not in ("=", "!="):
+                self._fail(f"{'.'.join(names)} can only be compared with = or !=", op)
+            value_text = _unquote(token) if kind == "text" else str(token)
+            null_test = "IS NOT NULL" if sql_op == "=" else "IS NULL OR"
+            if sql_op == "=":
+                return (f"{alias}.{column} = ? COLLATE NOCASE", [value_text])
+            return (
+                f"({alias}.{column} {null_test} {alias}.{column} != ? COLLATE NOCASE)",
+                [value_text],
+            )
         if words is not None:
-            if kind != "word" or token.lower() not in words:
+            if kind == "text":
+                token = Token.new_borrow_pos("NAME", _unquote(token), token)
+            if kind not in ("word", "text") or token.lower() not in words:
                 self._fail(
                     f"{'.'.join(names)} is one of {', '.join(words)}, not {str(token)!r}", token
                 )
@@ -190,40 +239,122 @@ class _Compiler(Transformer):
         return (f"{alias}.{column} {sql_op} ?", [number])
 
     def _resolve(self, names: list[Token]):
-        head = names[0].lower()
-        if len(names) == 1 and head in _GLOBAL_FIELDS:
-            alias, column, unit, words = _GLOBAL_FIELDS[head]
-            if alias != "p":
-                alias = self._alias("strength_q")
-            return alias, column, unit, words
-        if head not in _GROUPS:
-            self._fail(
-                f"unknown field {str(names[0])!r}; expected one of "
-                f"{', '.join(_GLOBAL_FIELDS)} or girth.SEGMENT.x|y|z, "
-                "joint_limit.JOINT.x|y|z, center_of_mass.SEGMENT.x|y|z, strength.MOTION.max",
-                names[0],
+        try:
+            table, column, unit, words = resolve_field([str(n) for n in names])
+        except _FieldError as exc:
+            self._fail(str(exc), names[min(exc.part, len(names) - 1)])
+        alias = "p" if table == "person" else self._alias(table)
+        return alias, column, unit, words
+
+
+class _FieldError(Exception):
+    def __init__(self, message: str, part: int):
+        super().__init__(message)
+        self.part = part
+
+
+def _unquote(token: Token | str) -> str:
+    return str(token)[1:-1]
+
+
+FieldInfo = tuple[str, str, "str | None", "tuple[str, ...] | None"]
+
+
+def resolve_field(names: list[str]) -> FieldInfo:
+    """A field's parts (`["measure", "sittingheight"]`) -> (table, column,
+    stored unit or None, allowed words / TEXT / None); raises _FieldError."""
+    head = names[0].lower()
+    if len(names) == 1 and head in _GLOBAL_FIELDS:
+        alias, column, unit, words = _GLOBAL_FIELDS[head]
+        return ("person" if alias == "p" else "strength_q"), column, unit, words
+    if head == "measure":
+        if len(names) != 2:
+            raise _FieldError("expected measure.NAME, e.g. measure.sittingheight", 0)
+        name = names[1].lower()
+        if name not in MEASURE_UNITS:
+            close = suggest(name)
+            hint = (
+                f"; did you mean {' or '.join(close)}?"
+                if close
+                else ("; the names are the ANSUR II survey's, lower case (e.g. sittingheight)")
             )
-        group, rows, unit, what = _GROUPS[head]
-        if len(names) != 3:
-            shape = (
-                "strength.MOTION.max"
-                if head == "strength"
-                else f"{head}.{what.upper().replace(' ', '_')}.x|y|z"
-            )
-            self._fail(f"expected {shape}", names[0])
-        row, axis = names[1].lower(), names[2].lower()
-        if row not in rows:
-            self._fail(
-                f"unknown {what} {str(names[1])!r}; expected one of {', '.join(rows)}", names[1]
-            )
-        expected_axes = ("max",) if head == "strength" else ("x", "y", "z")
-        if axis not in expected_axes:
-            self._fail(
-                f"expected {' or '.join(expected_axes)} after {head}.{row}, found "
-                f"{str(names[2])!r}",
-                names[2],
-            )
-        return self._alias(QUERY_TABLES[group][row]), axis, unit, None
+            raise _FieldError(f"unknown measurement {names[1]!r}{hint}", 1)
+        return MEASURE_TABLE, name, MEASURE_UNITS[name], None
+    if head not in _GROUPS:
+        raise _FieldError(
+            f"unknown field {names[0]!r}; expected one of "
+            f"{', '.join(_GLOBAL_FIELDS)}, measure.NAME or girth.SEGMENT.x|y|z, "
+            "joint_limit.JOINT.x|y|z, center_of_mass.SEGMENT.x|y|z, strength.MOTION.max",
+            0,
+        )
+    group, rows, unit, what = _GROUPS[head]
+    if len(names) != 3:
+        shape = (
+            "strength.MOTION.max"
+            if head == "strength"
+            else f"{head}.{what.upper().replace(' ', '_')}.x|y|z"
+        )
+        raise _FieldError(f"expected {shape}", 0)
+    row, axis = names[1].lower(), names[2].lower()
+    if row not in rows:
+        raise _FieldError(f"unknown {what} {names[1]!r}; expected one of {', '.join(rows)}", 1)
+    expected_axes = ("max",) if head == "strength" else ("x", "y", "z")
+    if axis not in expected_axes:
+        raise _FieldError(
+            f"expected {' or '.join(expected_axes)} after {head}.{row}, found {names[2]!r}", 2
+        )
+    return QUERY_TABLES[group][row], axis, unit, None
+
+
+def field_names() -> list[tuple[str, str]]:
+    """Every queryable field and its unit ('' none, 'text' free text, else the
+    stored unit): for a searchable field menu."""
+    out: list[tuple[str, str]] = []
+    for name, (_alias, _column, unit, words) in _GLOBAL_FIELDS.items():
+        out.append((name, "text" if words is not None else (unit or "")))
+    out += [(f"measure.{name}", MEASURE_UNITS[name]) for name in MEASURE_UNITS]
+    for head, (_group, rows, unit, _what) in _GROUPS.items():
+        axes = ("max",) if head == "strength" else ("x", "y", "z")
+        out += [(f"{head}.{row}.{axis}", unit) for row in rows for axis in axes]
+    return out
+
+
+# Bounds that keep every query within what the parser's recursion and SQLite's
+# expression tree (depth 1000) take, with a message instead of a crash.
+MAX_NESTING = 50
+MAX_COMPARISONS = 200
+_OPERATOR_START = re.compile(r"<=|>=|!=|<>|[<>=≤≥≠]")
+
+
+def _check_size(text: str) -> None:
+    depth = 0
+    comparisons = 0
+    quote: str | None = None
+    k = 0
+    while k < len(text):
+        char = text[k]
+        if quote:
+            if char == quote:
+                quote = None
+        elif char in "'\"":
+            quote = char
+        elif char == "(":
+            depth += 1
+            if depth > MAX_NESTING:
+                raise QueryError(f"parentheses nested more than {MAX_NESTING} deep", text, k + 1)
+        elif char == ")":
+            depth -= 1
+        else:
+            match = _OPERATOR_START.match(text, k)
+            if match:
+                comparisons += 1
+                if comparisons > MAX_COMPARISONS:
+                    raise QueryError(
+                        f"more than {MAX_COMPARISONS} comparisons in one query", text, k + 1
+                    )
+                k = match.end()
+                continue
+        k += 1
 
 
 def compile_query(text: str) -> CompiledQuery:
@@ -232,6 +363,7 @@ def compile_query(text: str) -> CompiledQuery:
         raise QueryError(
             "the query is empty; expected e.g. gender = male AND stature > 180 cm", text, 1
         )
+    _check_size(text)
     try:
         tree = parser().parse(text)
     except UnexpectedCharacters as exc:
@@ -273,6 +405,7 @@ _TOKEN_WORDS = {
     "NAME": "a name",
     "NUMBER": "a number",
     "UNIT": "a unit",
+    "STRING": "a quoted text",
     "LPAR": "(",
     "RPAR": ")",
     "DOT": ".",
