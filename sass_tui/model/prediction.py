@@ -455,10 +455,16 @@ class Predictor:
         index = m.index()
         cols = np.array([index.get(k, -1) for k in keys])
         known_mask = np.isfinite(matrix)
-        patterns, inverse = np.unique(known_mask, axis=0, return_inverse=True)
+        # one integer per row for the set of names it knows
+        if len(keys) < 63:
+            bits = np.int64(1) << np.arange(len(keys), dtype=np.int64)
+            codes = known_mask.astype(np.int64) @ bits
+        else:
+            codes = np.unique(known_mask, axis=0, return_inverse=True)[1].reshape(-1)
         low, high = value.copy(), value.copy()
-        for p, pattern in enumerate(patterns):
-            sel = np.flatnonzero(inverse.reshape(-1) == p)
+        for code in np.unique(codes):
+            sel = np.flatnonzero(codes == code)
+            pattern = known_mask[sel[0]]
             use = pattern & (cols >= 0)
             k_idx = cols[use].tolist()
             # duplicates (an alias and its field) keep the last, as predict does
@@ -581,10 +587,11 @@ def _condition(
     cross = m.corr[k_idx]  # (k, p)
     inverse, rank = _pinv(m.corr[np.ix_(k_idx, k_idx)])
     coef = inverse @ cross  # (k, p)
-    z_mean = z_known @ coef
     variance = np.clip(1.0 - np.einsum("kp,kp->p", cross, coef), 0.0, None)
     dof = (m.n - 1) / max(m.n - rank - 1, 1)
     distance2 = np.einsum("ij,jk,ik->i", z_known, inverse, z_known)
     leverage = 1.0 + 1.0 / m.n + distance2 / (m.n - 1)
-    half = Z * m.sd * np.sqrt(variance * dof)[None, :] * np.sqrt(leverage)[:, None]
-    return m.mean + z_mean * m.sd, half
+    half = np.outer(np.sqrt(leverage), Z * m.sd * np.sqrt(variance * dof))
+    mean = z_known @ (coef * m.sd)
+    mean += m.mean
+    return mean, half

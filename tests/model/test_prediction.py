@@ -261,3 +261,19 @@ def test_known_values_parse_with_any_length_unit(predictor, number, unit):
     text = f"{number / factor!r}{unit}"
     parsed = predictor.parse_known("male", [("stature", text)])
     assert parsed["stature"] == pytest.approx(number, rel=1e-9)
+
+
+def test_batch_with_every_measurement_known_matches_one_by_one(values, predictor):
+    """More known names than fit in one integer's bits (the row grouping's other path)."""
+    names = [f for f in values.fields if f in ("stature", "mass") or f.startswith("measure.")]
+    col = {f: i for i, f in enumerate(values.fields)}
+    rows = _rows(values, "male")[:4]
+    matrix = values.matrix[np.ix_(rows, [col[n] for n in names])].copy()
+    matrix[1, 5] = matrix[3, 7] = np.nan
+    assert len(names) > 63
+    fields, value, _, high = predictor.predict_matrix("male", names, matrix)
+    for r, row in enumerate(matrix):
+        one = predictor.predict("male", {n: v for n, v in zip(names, row) if not math.isnan(v)})
+        for i, f in enumerate(fields):
+            assert value[r, i] == pytest.approx(one.values[f].value, abs=1e-7)
+            assert high[r, i] == pytest.approx(one.values[f].high, abs=1e-7)
