@@ -41,7 +41,7 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from statistics import NormalDist
-from typing import Protocol
+from typing import Any, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -92,10 +92,17 @@ class NoDataError(PredictionError):
 class TrainingValues(Protocol):
     """What the fit reads: `sass_tui.db.values.Values` has this shape."""
 
-    ids: Sequence[int] | npt.NDArray[np.int64]
-    names: Sequence[str]
-    genders: Sequence[str]
-    matrix: FloatArray  # (people, fields), canonical units, NaN = no value
+    @property
+    def ids(self) -> npt.ArrayLike: ...  # (people,) whole numbers
+
+    @property
+    def names(self) -> Sequence[str]: ...
+
+    @property
+    def genders(self) -> Sequence[str]: ...
+
+    @property
+    def matrix(self) -> npt.NDArray[Any]: ...  # (people, fields), canonical units, NaN = none
 
 
 # --- names ----------------------------------------------------------------
@@ -277,7 +284,7 @@ class Predictor:
         fields = tuple(fields)
         if np.shape(data.matrix)[1:] != (len(fields),):
             raise ValueError(f"matrix has shape {np.shape(data.matrix)}, fields {len(fields)}")
-        models = {}
+        models: dict[str, GenderModel] = {}
         for gender in GENDERS:
             try:
                 models[gender] = GenderModel.fit(gender, fields, data)
@@ -469,7 +476,7 @@ class Predictor:
             k_idx = cols[use].tolist()
             # duplicates (an alias and its field) keep the last, as predict does
             order = list(dict.fromkeys(reversed(k_idx)))[::-1]
-            take = [int(np.flatnonzero(use & (cols == c))[-1]) for c in order]
+            take = np.array([np.flatnonzero(use & (cols == c))[-1] for c in order], dtype=np.intp)
             known_values = matrix[np.ix_(sel, take)]
             z = (known_values - m.mean[order]) / m.sd[order]
             self._check_outliers(
