@@ -98,7 +98,9 @@ def run(args: argparse.Namespace) -> int:
         raise PredictArgumentError("give at least one --known NAME=VALUE, or --input KNOWN.csv")
     if args.figure and not args.figure.lower().endswith((".fig", ".x3d")):
         raise PredictArgumentError(f"-o {args.figure}: the file must end in .fig or .x3d")
-    pairs = [_split_known(item) for item in args.known]
+    from sass_tui.model.prediction import split_known
+
+    pairs = [pair for item in args.known for pair in split_known(item)]
     conn = open_db(args)
     try:
         predictor = open_predictor(conn)
@@ -124,13 +126,6 @@ def run(args: argparse.Namespace) -> int:
         path = write_prediction_figure(prediction, args.figure)
         print(f"wrote {path}", file=sys.stderr if args.format != "table" else out)
     return 0
-
-
-def _split_known(item: str) -> tuple[str, str]:
-    name, sep, value = item.partition("=")
-    if not sep or not name.strip() or not value.strip():
-        raise PredictArgumentError(f"--known {item!r}: expected NAME=VALUE, e.g. stature=175cm")
-    return name.strip(), value.strip()
 
 
 def prediction_json(predictor: Predictor, prediction: Prediction) -> dict[str, Any]:
@@ -181,23 +176,9 @@ def _write_table(prediction: Prediction, out: TextIO) -> None:
 def write_prediction_figure(prediction: Prediction, path: str) -> str:
     """The predicted person as a .fig file or an HAnim .x3d humanoid; cells the
     model has no value for come from the default population (the file says which)."""
-    import numpy as np
-
     from sass_tui.model.figure import Figure
-    from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, ROWS
 
-    base = Figure.default(prediction.gender)
-    figure = base.for_person(
-        prediction.label(),
-        prediction.gender,
-        {
-            GIRTH: prediction.group_values(GIRTH),
-            JOINT_LIMITS: np.full((len(ROWS[JOINT_LIMITS]), 3), np.nan),
-            CENTER_OF_MASS: prediction.group_values(CENTER_OF_MASS),
-        },
-        mass=prediction.mass,
-        stature=prediction.stature,
-    )
+    figure = prediction.figure(Figure.default(prediction.gender))
     if path.lower().endswith(".x3d"):
         from sass_tui.model.hanim import export_hanim
 

@@ -36,12 +36,13 @@ from __future__ import annotations
 import difflib
 import math
 import os
+import re
 import tempfile
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from statistics import NormalDist
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -51,6 +52,9 @@ from sass_tui.model.measures import MEASURE_UNITS, MEASURES
 from sass_tui.model.names import AXES, CENTER_OF_MASS, CENTER_OF_MASS_ROWS, GIRTH, GIRTH_ROWS
 from sass_tui.model.units import UnitError, parse_quantity
 from sass_tui.model.vocabulary import GENDERS
+
+if TYPE_CHECKING:
+    from sass_tui.model.figure import Figure
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -128,6 +132,22 @@ def field_unit(name: str) -> str:
     if name.startswith("measure."):
         return MEASURE_UNITS[name.removeprefix("measure.")]
     return "cm"
+
+
+def split_known(text: str) -> list[tuple[str, str]]:
+    """'stature=180 cm, mass=85kg' -> [("stature", "180 cm"), ("mass", "85kg")]
+    (items separated by commas or semicolons; what the TUI's input line takes)."""
+    pairs = []
+    for item in re.split(r"[;,]", text):
+        if not item.strip():
+            continue
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip() or not value.strip():
+            raise PredictionError(
+                f"{item.strip()!r}: expected NAME=VALUE, e.g. stature=175cm", where=item.strip()
+            )
+        pairs.append((name.strip(), value.strip()))
+    return pairs
 
 
 def _check_gender(gender: str) -> str:
@@ -252,15 +272,38 @@ class Prediction:
     def mass(self) -> float:
         return self.value("mass")
 
-    def group_values(self, group: str) -> FloatArray:
+    def group_values(self, group: str, bound: str = "value") -> FloatArray:
         """A girth or center-of-mass group as (rows, 3) for `Figure.for_person`;
-        NaN where the model has no value (the figure fills those from the population)."""
+        NaN where the model has no value (the figure fills those from the
+        population).  `bound` "low" or "high" gives the interval's ends instead
+        (a known cell: its value)."""
         rows = {GIRTH: GIRTH_ROWS, CENTER_OF_MASS: CENTER_OF_MASS_ROWS}[group]
         out = np.full((len(rows), 3), np.nan)
         for r, row in enumerate(rows):
             for a, axis in enumerate(AXES):
-                out[r, a] = self.value(f"{group}.{row.name}.{axis}")
+                estimate = self.values.get(f"{group}.{row.name}.{axis}")
+                if estimate is not None:
+                    out[r, a] = getattr(estimate, bound)
         return out
+
+    def figure(self, base: Figure) -> Figure:
+        """The predicted person as a figure (like Disp. Indv.): girth and center
+        of mass from the prediction, percentiles against `base`'s population,
+        joint limits and any cell without a prediction from that population at
+        output.  `base` is left unchanged, so Disp. Pop. returns to it."""
+        from sass_tui.model.names import JOINT_LIMITS, ROWS
+
+        return base.for_person(
+            self.label(),
+            self.gender,
+            {
+                GIRTH: self.group_values(GIRTH),
+                JOINT_LIMITS: np.full((len(ROWS[JOINT_LIMITS]), 3), np.nan),
+                CENTER_OF_MASS: self.group_values(CENTER_OF_MASS),
+            },
+            mass=self.mass,
+            stature=self.stature,
+        )
 
     def label(self) -> str:
         """'predicted from stature 180 cm, mass 85 kg' (the population label of the figure)."""

@@ -17,9 +17,11 @@ from sass_tui.model.prediction import (
     FieldUnitError,
     NoDataError,
     OutlierError,
+    PredictionError,
     Predictor,
     UnknownFieldError,
     Z,
+    split_known,
 )
 
 
@@ -277,3 +279,35 @@ def test_batch_with_every_measurement_known_matches_one_by_one(values, predictor
         for i, f in enumerate(fields):
             assert value[r, i] == pytest.approx(one.values[f].value, abs=1e-7)
             assert high[r, i] == pytest.approx(one.values[f].high, abs=1e-7)
+
+
+def test_the_prediction_as_a_figure_leaves_the_population_figure_alone(predictor):
+    from sass_tui.model.figure import Figure
+    from sass_tui.model.names import GIRTH, row_index
+
+    prediction = predictor.predict("male", {"stature": 180.0, "mass": 85.0})
+    base = Figure.default("male")
+    before = base.groups[GIRTH].values.copy()
+    figure = prediction.figure(base)
+    arm = row_index(GIRTH, "right_upper_arm")
+    assert figure.person == "predicted from stature 180 cm, mass 85 kg"
+    assert figure.stature == 180.0 and figure.mass == 85.0
+    expected = prediction.values["girth.right_upper_arm.z"]
+    assert figure.groups[GIRTH].values[arm, 2] == expected.value
+    low, high = prediction.group_values(GIRTH, "low"), prediction.group_values(GIRTH, "high")
+    assert (low[arm, 2], high[arm, 2]) == (expected.low, expected.high)
+    values = prediction.group_values(GIRTH)
+    finite = np.isfinite(values)
+    assert (low[finite] <= values[finite]).all() and (values[finite] <= high[finite]).all()
+    assert base.person is None and np.array_equal(base.groups[GIRTH].values, before)
+
+
+def test_known_values_split_from_one_line():
+    assert split_known("stature=180 cm, mass = 85kg;measure.span=185") == [
+        ("stature", "180 cm"),
+        ("mass", "85kg"),
+        ("measure.span", "185"),
+    ]
+    assert split_known(" ") == []
+    with pytest.raises(PredictionError, match="'stature': expected NAME=VALUE"):
+        split_known("stature, mass=80")
