@@ -34,7 +34,7 @@ def register(commands: argparse._SubParsersAction) -> None:
         help="predict every value of a person from the known ones (with 90 %% intervals)",
         description="Predict every girth and center-of-mass value and every ANSUR II "
         "measurement from the known ones, by regression on the database's people of the "
-        "same gender, each with a 90 %% prediction interval.  Known names: stature, mass, "
+        "same gender, each with a 90 % prediction interval.  Known names: stature, mass, "
         "measure.<name>, girth.<segment>.<x|y|z>, center_of_mass.<segment>.<x|y|z>; values "
         "in cm and kg unless they carry a unit.",
     )
