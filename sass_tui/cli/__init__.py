@@ -12,10 +12,10 @@ import argparse
 import os
 import sys
 
-from sass_tui.cli import db, export, fig, predict, query, strength
+from sass_tui.cli import db, export, fig, person, population, predict, query, strength
 from sass_tui.cli.options import DB_HELP
 
-VERBS = (fig, export, strength, query, predict, db)
+VERBS = (fig, export, strength, query, person, population, predict, db)
 
 
 def build_parser() -> argparse.ArgumentParser:
