@@ -311,3 +311,20 @@ def test_known_values_split_from_one_line():
     assert split_known(" ") == []
     with pytest.raises(PredictionError, match="'stature': expected NAME=VALUE"):
         split_known("stature, mass=80")
+
+
+@settings(max_examples=100, deadline=None)
+@given(
+    st.lists(
+        st.tuples(
+            st.sampled_from(["stature", "mass", "measure.span", "girth.neck.x"]),
+            st.floats(min_value=0.01, max_value=500, allow_nan=False),
+            st.sampled_from(["", "cm", " in", " kg", "lb"]),
+            st.sampled_from([",", ";", " , ", "; "]),
+        ),
+        max_size=5,
+    )
+)
+def test_split_known_takes_back_what_was_joined(items):
+    text = "".join(f"{name} = {number!r}{unit}{sep}" for name, number, unit, sep in items)
+    assert split_known(text) == [(name, f"{number!r}{unit}") for name, number, unit, _ in items]
