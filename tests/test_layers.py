@@ -21,6 +21,7 @@ CLI_MODULES = [
             "options",
             "person",
             "population",
+            "predict",
             "progress",
             "query",
             "strength",
