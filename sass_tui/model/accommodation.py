@@ -31,19 +31,31 @@ sum_{j<m} y^(j+1/2) / Gamma(j + 3/2), with y = x/2.  The quantile is found by
 bisection to 1e-12 (no scipy needed).
 
 People lacking any listed measurement are left out (counted in `missing`).
-Pure numpy; no database.
+
+Whole manikins: each point's listed values are the known values of the
+conditional prediction (`sass_tui.model.prediction`), which completes every
+girth and center-of-mass value; joint limits (not in ANSUR II) come from the
+population of the figure, as for any real person.  Numpy; no database.
 """
 
 from __future__ import annotations
 
+import json
 import math
-from dataclasses import dataclass
-from typing import Final
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any, Final
 
 import numpy as np
 import numpy.typing as npt
 
+from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
+from sass_tui.model.figfile import write_fig
+from sass_tui.model.figure import Figure
+from sass_tui.model.hanim import export_hanim
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMIT_ROWS, JOINT_LIMITS
+from sass_tui.model.prediction import Prediction, Predictor
 
 FloatArray = npt.NDArray[np.float64]
 BoolArray = npt.NDArray[np.bool_]
@@ -277,3 +289,142 @@ def nearest_person(
     if not math.isfinite(distance2[row]):
         raise AccommodationError("nobody has every listed measurement")
     return row, math.sqrt(float(distance2[row]))
+
+
+# --- whole manikins --------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Nearest:
+    id: int
+    name: str
+    distance: float  # Mahalanobis, over the listed measurements
+
+
+@dataclass(frozen=True)
+class Manikin:
+    name: str
+    values: dict[str, float]  # the listed measurements (canonical units)
+    nearest: Nearest
+    prediction: Prediction  # the whole figure's values, completed from `values`
+    files: tuple[str, ...] = ()
+
+    def figure(self, population: Figure) -> Figure:
+        """The manikin as a figure (percentiles against `population`'s statistics);
+        joint limits and anything the prediction lacks come from the population."""
+        groups = {
+            GIRTH: self.prediction.group_values(GIRTH),
+            CENTER_OF_MASS: self.prediction.group_values(CENTER_OF_MASS),
+            JOINT_LIMITS: np.full((len(JOINT_LIMIT_ROWS), 3), np.nan),
+        }
+        return population.for_person(
+            self.name,
+            self.prediction.gender,
+            groups,
+            mass=self.prediction.mass,
+            stature=self.prediction.stature,
+        )
+
+
+@dataclass(frozen=True)
+class Family:
+    gender: str
+    kind: str
+    ellipsoid: CoverageEllipsoid
+    coverage: FamilyCoverage
+    manikins: tuple[Manikin, ...]
+
+    @property
+    def measures(self) -> tuple[str, ...]:
+        return self.ellipsoid.measures
+
+    def to_json(self) -> dict[str, Any]:
+        """family.json: the issue's shape, plus the counts behind the percentages,
+        the chi-square promise and the family's kind and ranges."""
+        low, high = family_ranges(list(self.points()))
+        return {
+            "gender": self.gender,
+            "measures": list(self.measures),
+            "kind": self.kind,
+            "coverage_target": round(100.0 * self.ellipsoid.target, 6),
+            "coverage": {
+                "inside_ellipsoid": round(self.coverage.inside_percent, 4),
+                "within_ranges": round(self.coverage.within_ranges_percent, 4),
+                "chi_square_promise": round(self.coverage.promised_percent, 6),
+                "people": self.coverage.n,
+                "inside_ellipsoid_count": self.coverage.inside_ellipsoid,
+                "within_ranges_count": self.coverage.within_ranges,
+                "not_measured": self.coverage.missing,
+            },
+            "ranges": {
+                m: [round(float(lo), 4), round(float(hi), 4)]
+                for m, lo, hi in zip(self.measures, low, high)
+            },
+            "manikins": [
+                {
+                    "name": m.name,
+                    "values": {k: round(v, 4) for k, v in m.values.items()},
+                    "nearest": {
+                        "id": m.nearest.id,
+                        "name": m.nearest.name,
+                        "distance": round(m.nearest.distance, 4),
+                    },
+                    "files": list(m.files),
+                }
+                for m in self.manikins
+            ],
+        }
+
+    def points(self) -> list[ManikinPoint]:
+        return [
+            ManikinPoint(m.name, np.zeros(0), np.array([m.values[f] for f in self.measures]))
+            for m in self.manikins
+        ]
+
+
+def build_family(
+    gender: str,
+    measures: tuple[str, ...] | list[str],
+    ids: npt.NDArray[np.int64],
+    names: tuple[str, ...] | list[str],
+    matrix: FloatArray,
+    target: float,
+    predictor: Predictor,
+    kind: str = "boundary",
+) -> Family:
+    """The family of one gender's people (`matrix`: people x `measures`, query-language
+    field names as the predictor knows them), each point completed by `predictor`."""
+    ellipsoid = CoverageEllipsoid.fit(measures, matrix, target)
+    points = family_points(ellipsoid, kind)
+    coverage = family_coverage(ellipsoid, points, matrix)
+    manikins = []
+    for point in points:
+        known = {m: float(v) for m, v in zip(ellipsoid.measures, point.values)}
+        row, distance = nearest_person(ellipsoid, point.values, matrix)
+        manikins.append(
+            Manikin(
+                name=point.name,
+                values=known,
+                nearest=Nearest(int(ids[row]), str(names[row]), distance),
+                prediction=predictor.predict(gender, known),
+            )
+        )
+    return Family(gender, kind, ellipsoid, coverage, tuple(manikins))
+
+
+def write_family(family: Family, directory: str | Path, population: Figure) -> Family:
+    """Write a .fig and an .x3d per manikin and family.json into `directory`
+    (each file atomically); returns the family with each manikin's files."""
+    out = Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    manikins = []
+    for manikin in family.manikins:
+        figure = manikin.figure(population)
+        stem = f"{family.gender}_{manikin.name}"
+        write_fig(figure, out / f"{stem}.fig")
+        export_hanim(figure, out / f"{stem}.x3d")
+        manikins.append(replace(manikin, files=(f"{stem}.fig", f"{stem}.x3d")))
+    written = replace(family, manikins=tuple(manikins))
+    text = json.dumps(written.to_json(), indent=1, allow_nan=False) + "\n"
+    write_text_atomic(out / "family.json", text)
+    return written

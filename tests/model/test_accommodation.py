@@ -4,23 +4,30 @@ independent count over the ANSUR II CSV."""
 from __future__ import annotations
 
 import csv
+import json
 import math
 
 import numpy as np
 import pytest
+from ansur_csv import ansur_values
 from hypothesis import given
 from hypothesis import strategies as st
 
 from sass_tui.model.accommodation import (
     AccommodationError,
     CoverageEllipsoid,
+    build_family,
     chi2_cdf,
     chi2_quantile,
     family_coverage,
     family_points,
     family_ranges,
     nearest_person,
+    write_family,
 )
+from sass_tui.model.figfile import read_fig
+from sass_tui.model.figure import Figure
+from sass_tui.model.prediction import Predictor
 
 # chi-square quantiles (NIST/SEMATECH e-Handbook, table 1.3.6.7.4, and the
 # closed form -2 ln(1 - p) for k = 2)
@@ -170,3 +177,54 @@ def test_unknown_kind_is_refused(women):
     ellipsoid = CoverageEllipsoid.fit(MEASURES, women, 0.9)
     with pytest.raises(AccommodationError, match="boundary or distributed"):
         family_points(ellipsoid, "random")
+
+
+@pytest.fixture(scope="module")
+def csv_values(ansur_dir):
+    return ansur_values(ansur_dir)
+
+
+@pytest.fixture(scope="module")
+def predictor(csv_values):
+    return Predictor.fit(csv_values, csv_values.fields)
+
+
+FIELDS = ["stature", "mass", "measure.sittingheight"]
+
+
+def test_a_written_family_reads_back_and_counts_right(csv_values, predictor, ansur_dir, tmp_path):
+    women = np.array([g == "female" for g in csv_values.genders])
+    columns = [csv_values.fields.index(f) for f in FIELDS]
+    matrix = csv_values.matrix[women][:, columns]
+    names = [n for n, w in zip(csv_values.names, women) if w]
+    family = build_family("female", FIELDS, csv_values.ids[women], names, matrix, 0.9, predictor)
+    written = write_family(family, tmp_path / "family", Figure.default("female"))
+    data = json.loads((tmp_path / "family" / "family.json").read_text())
+    assert data["gender"] == "female" and data["measures"] == FIELDS
+    assert data["coverage_target"] == 90
+    assert len(data["manikins"]) == 15
+    # the reported coverage equals an independent count over the CSV itself
+    independent = _csv_matrix(ansur_dir, "female", ["stature", "weightkg", "sittingheight"])
+    cov = np.cov(independent, rowvar=False)
+    offsets = independent - independent.mean(axis=0)
+    d2 = np.einsum("ij,ij->i", offsets, np.linalg.solve(cov, offsets.T).T)
+    inside = 100 * np.mean(d2 <= 6.251389)
+    assert data["coverage"]["inside_ellipsoid"] == pytest.approx(inside, abs=1e-3)
+    values = np.array([[m.values[f] for f in FIELDS] for m in written.manikins])
+    low, high = values.min(axis=0), values.max(axis=0)
+    within = 100 * np.mean(np.all((independent >= low) & (independent <= high), axis=1))
+    assert data["coverage"]["within_ranges"] == pytest.approx(within, abs=1e-3)
+    for manikin, entry in zip(written.manikins, data["manikins"]):
+        assert entry["files"] == [f"female_{manikin.name}.fig", f"female_{manikin.name}.x3d"]
+        fig = read_fig(tmp_path / "family" / entry["files"][0])
+        assert fig.variables  # a whole figure
+        x3d = (tmp_path / "family" / entry["files"][1]).read_text()
+        assert "<HAnimHumanoid" in x3d
+        # the nearest person is real and named
+        row = list(csv_values.ids).index(entry["nearest"]["id"])
+        assert csv_values.names[row] == entry["nearest"]["name"]
+        # the manikin's known values are the ellipsoid point, kept by the prediction
+        for f in FIELDS:
+            assert manikin.prediction.value(f) == pytest.approx(entry["values"][f], abs=1e-3)
+    center = written.manikins[0]
+    assert center.values["stature"] == pytest.approx(independent[:, 0].mean())
