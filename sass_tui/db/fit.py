@@ -28,15 +28,20 @@ from __future__ import annotations
 
 import math
 import sqlite3
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
 
 from sass_tui.db.query import compile_conjuncts, compile_query
+from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
+
+if TYPE_CHECKING:
+    from sass_tui.model.prediction import Predictor
 
 DEFAULT_POPULATION = "source = ansur2"
 
@@ -281,4 +286,36 @@ def _failing(
             limits=tuple(limit for k, limit in enumerate(limits) if fails[r, k]),
         )
         for r in rows
+    )
+
+
+# --- manikin families ----------------------------------------------------------
+
+
+def load_family(
+    conn: sqlite3.Connection,
+    gender: str,
+    measures: Sequence[str],
+    target: float,
+    kind: str = "boundary",
+    population: str = DEFAULT_POPULATION,
+    predictor: Predictor | None = None,
+) -> Family:
+    """The manikin family of `gender` over `measures` (see
+    `sass_tui.model.accommodation`): the population's people of that gender,
+    their values, and the database's prediction model to complete each manikin.
+    `measures` are `--measures` names (`stature`, `mass`, `sittingheight`, ...)."""
+    from sass_tui.db.predict import open_predictor
+    from sass_tui.db.values import load_values
+
+    if gender not in GENDERS:
+        raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
+    fields = [measure_field(m) for m in measures]
+    compile_query(population)  # its own error, before the combined query's
+    values = load_values(conn, fields, f"({population}) AND gender = {gender}")
+    if len(values) == 0:
+        raise FitError(f"the population {population!r} has no {gender} people")
+    model = predictor if predictor is not None else open_predictor(conn)
+    return build_family(
+        gender, fields, values.ids, values.names, values.matrix, target, model, kind
     )

@@ -54,8 +54,9 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.figfile import write_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.hanim import export_hanim
+from sass_tui.model.measures import MEASURES, suggest
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMIT_ROWS, JOINT_LIMITS
-from sass_tui.model.prediction import Prediction, Predictor
+from sass_tui.model.prediction import ALIASES, Prediction, Predictor
 
 FloatArray = npt.NDArray[np.float64]
 BoolArray = npt.NDArray[np.bool_]
@@ -428,3 +429,28 @@ def write_family(family: Family, directory: str | Path, population: Figure) -> F
     text = json.dumps(written.to_json(), indent=1, allow_nan=False) + "\n"
     write_text_atomic(out / "family.json", text)
     return written
+
+
+def measure_field(name: str) -> str:
+    """A `--measures` name as a query-language field: `stature`, `mass`,
+    `measure.sittingheight`; a bare ANSUR II name gains `measure.`, and the
+    survey's own `stature` / `weightkg` are the person's stature and mass."""
+    word = name.strip().lower()
+    if word.startswith("measure."):
+        word = word.removeprefix("measure.")
+        if word not in MEASURES:
+            hint = suggest(word)
+            raise AccommodationError(
+                f"unknown measurement {name.strip()!r}"
+                + (f"; did you mean {', '.join('measure.' + h for h in hint)}?" if hint else "")
+            )
+    if "." in word or word in ("stature", "mass", "age"):
+        return word
+    if word in MEASURES:
+        return ALIASES.get(f"measure.{word}", f"measure.{word}")
+    hint = suggest(word)
+    raise AccommodationError(
+        f"unknown measurement {name.strip()!r}; expected stature, mass or an ANSUR II "
+        "measurement (sittingheight, hipbreadthsitting, ...)"
+        + (f"; did you mean {', '.join(hint)}?" if hint else "")
+    )
