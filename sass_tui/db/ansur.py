@@ -1,8 +1,13 @@
 """Import the ANSUR II public CSV files (Gordon et al. 2014) as they are published.
 
-Both files are read as cp1252 (the male file is not UTF-8); the id column is
-`subjectid` in one and `SubjectId` in the other, so headers are matched without
-regard to case.  Measurements are in mm, `weightkg` in 0.1 kg.  Each girth
+Each line is read as UTF-8 (a byte-order mark dropped), else cp1252 (the male
+file is not UTF-8); the id column is `subjectid` in one and `SubjectId` in the
+other, so headers are matched without regard to case.  Measurements are in
+mm, `weightkg` in 0.1 kg, `interpupillarybreadth` in 0.1 mm; all 93 are stored
+in the measure table in canonical units (cm, kg), with the survey's component,
+branch, race and ethnicity fields.  Files are read a chunk of rows at a time
+and every value is checked (finite, plausible, whole unique subject ids) with
+file:line.  Each girth
 segment is derived from standard measurements as report §10.1 prescribes; the
 table of derivations (with the ANSUR column names) is in docs/data-sources.md,
 "Database", and in DERIVATIONS below, which is what the code runs.  ANSUR II
@@ -12,24 +17,27 @@ measured no joint ranges, centers of mass or strengths: those groups stay empty.
 from __future__ import annotations
 
 import csv
-import io
+import gzip
 import math
 import sqlite3
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
+from typing import BinaryIO, NoReturn, cast
 
 import numpy as np
 
 from sass_tui.db.schema import (
     GIRTH_MASS_FRACTIONS,
     GIRTH_NAMES,
+    PERSON_ATTRIBUTES,
     PeopleBatch,
+    check_writable,
     store_people,
     transaction,
 )
 from sass_tui.model.errors import SassError
+from sass_tui.model.measures import MEASURE_UNITS, MEASURES, PUBLISHED_TO_CANONICAL
 
-SOURCE = "ANSUR II public data (Gordon et al. 2014)"
 ANSUR_HANDEDNESS = {
     "right hand": "right",
     "left hand": "left",
@@ -126,19 +134,155 @@ MEASUREMENTS = (
     "shoulderlength",
     "stature",
 )
-REQUIRED = (ID_COLUMN, "gender", "weightkg", "age", "writingpreference") + MEASUREMENTS
+REQUIRED = (ID_COLUMN, "gender", "age", "writingpreference") + MEASUREMENTS
+
+DEFAULT_LABEL = "ansur2"
+# Largest subject id accepted: ids are whole numbers below 10^12 (the survey's
+# run to 920103), so they stay exact in a float and in SQLite's 64-bit integers.
+MAX_SUBJECT_ID = 10**12 - 1
+# Plausible values in canonical units: a body dimension 0 < v <= 300 cm, a
+# mass 0 < m <= 500 kg, an age 0 < a < 130 years.
+MEASURE_LIMITS = {name: (0.0, 500.0 if name == "weightkg" else 300.0) for name in MEASURES}
+AGE_LIMITS = (0.0, 130.0)
+TEXT_ATTRIBUTES = {"component": "component", "branch": "branch", "ethnicity": "ethnicity"}
+CODE_ATTRIBUTES = {"subjectnumericrace": "subjectnumericrace", "dodrace": "dodrace"}
+CHUNK_ROWS = 2000
 
 
-def read_ansur(path: str | Path) -> PeopleBatch:
+def _open_bytes(path: Path) -> tuple[BinaryIO, BinaryIO]:
+    """(raw file, byte stream): `.gz` files are decompressed as they are read."""
+    raw = open(path, "rb")  # closed by the caller
+    if path.suffix == ".gz":
+        return raw, cast(BinaryIO, gzip.GzipFile(fileobj=raw))
+    return raw, raw
+
+
+def _decoded_lines(stream: BinaryIO) -> Iterator[str]:
+    """Each line as text: UTF-8 (a byte-order mark dropped), else cp1252 (the
+    published male file is cp1252)."""
+    first = True
+    for raw_line in stream:
+        if first and raw_line.startswith(b"\xef\xbb\xbf"):
+            raw_line = raw_line[3:]
+        first = False
+        try:
+            yield raw_line.decode("utf-8")
+        except UnicodeDecodeError:
+            yield raw_line.decode("cp1252", errors="replace")
+
+
+class _Chunk:
+    """Rows of one chunk of the file and their line numbers, checked column by column."""
+
+    def __init__(
+        self, path: Path, rows: list[list[str]], lines: list[int], columns: dict[str, int]
+    ):
+        self.path = path
+        self.rows = rows
+        self.lines = lines
+        self.columns = columns
+
+    def fail(self, k: int, message: str) -> NoReturn:
+        raise AnsurImportError(f"{self.path}:{self.lines[k]}: {message}")
+
+    def numbers(self, column: int | None, name: str) -> np.ndarray:
+        if column is None:
+            return np.full(len(self.rows), np.nan)
+        texts = [row[column] for row in self.rows]
+        try:
+            values = np.array(texts, dtype=float)
+        except ValueError:
+            for k, text in enumerate(texts):
+                try:
+                    float(text)
+                except ValueError:
+                    self.fail(k, f"column {name}: expected a number, found {text!r}")
+            raise
+        return values
+
+    def check(self, values: np.ndarray, name: str, limits: tuple[float, float], unit: str) -> None:
+        """Refuse non-finite and implausible values (limits in canonical units)."""
+        low, high = limits
+        bad = np.flatnonzero(~(np.isfinite(values) & (values > low) & (values <= high)))
+        if bad.size:
+            k = int(bad[0])
+            found = self.rows[k][self.columns[name]]
+            self.fail(
+                k,
+                f"column {name}: {found!r} is not a plausible value "
+                f"(expected more than {low:g} and at most {high:g} {unit} once converted)",
+            )
+
+    def words(self, column: int, name: str, table: dict[str, str]) -> list[str]:
+        out = []
+        for k, row in enumerate(self.rows):
+            key = row[column].strip().lower()
+            if key not in table:
+                self.fail(
+                    k,
+                    f"column {name}: expected one of {', '.join(sorted(table))}, "
+                    f"found {row[column]!r}",
+                )
+            out.append(table[key])
+        return out
+
+    def texts(self, column: int | None) -> list[object]:
+        if column is None:
+            return [None] * len(self.rows)
+        return [row[column].strip() or None for row in self.rows]
+
+    def codes(self, column: int | None, name: str) -> list[object]:
+        if column is None:
+            return [None] * len(self.rows)
+        out: list[object] = []
+        for k, row in enumerate(self.rows):
+            text = row[column].strip()
+            if not text:
+                out.append(None)
+            elif text.isdigit() and len(text) <= 9:
+                out.append(int(text))
+            else:
+                self.fail(k, f"column {name}: expected a whole-number code, found {text!r}")
+        return out
+
+
+def iter_ansur(
+    path: str | Path,
+    *,
+    label: str = DEFAULT_LABEL,
+    chunk_rows: int = CHUNK_ROWS,
+    progress: Callable[[int], None] | None = None,
+) -> Iterator[PeopleBatch]:
+    """Read an ANSUR II format CSV file (`.csv` or `.csv.gz`) a chunk of rows at
+    a time: memory stays bounded whatever the file's size.  Every row is
+    checked; the first bad one raises AnsurImportError naming file:line (the
+    caller's transaction then stores nothing).  `progress(bytes_read)`."""
     path = Path(path)
     try:
-        text = path.read_bytes().decode("cp1252", errors="replace")
+        raw, stream = _open_bytes(path)
     except OSError as exc:
         raise AnsurImportError(f"{path}: cannot read: {exc.strerror or exc}") from None
-    rows = list(csv.reader(io.StringIO(text, newline="")))
-    if not rows:
+    with raw:
+        try:
+            yield from _read_chunks(path, stream, raw, label, chunk_rows, progress)
+        except (OSError, EOFError) as exc:  # read errors, damaged or cut gzip data
+            reason = getattr(exc, "strerror", None) or exc or "the file ends too early"
+            raise AnsurImportError(f"{path}: cannot read: {reason}") from None
+
+
+def _read_chunks(
+    path: Path,
+    stream: BinaryIO,
+    raw: BinaryIO,
+    label: str,
+    chunk_rows: int,
+    progress: Callable[[int], None] | None,
+) -> Iterator[PeopleBatch]:
+    reader = csv.reader(_decoded_lines(stream))
+    header_row = next(reader, None)
+    if header_row is None:
         raise AnsurImportError(f"{path}:1: the file is empty; expected the ANSUR II header")
-    header = [h.strip().lstrip("\ufeff").lower() for h in rows[0]]
+    header = [h.strip().lower() for h in header_row]
     column = {name: k for k, name in enumerate(header)}
     missing = [name for name in REQUIRED if name not in column]
     if missing:
@@ -146,66 +290,130 @@ def read_ansur(path: str | Path) -> PeopleBatch:
             f"{path}:1: missing column{'s' if len(missing) > 1 else ''} "
             f"{', '.join(missing)} (ANSUR II public file expected)"
         )
-    body = rows[1:]
-    for lineno, row in enumerate(body, start=2):
+    seen: dict[int, int] = {}
+    rows: list[list[str]] = []
+    lines: list[int] = []
+    total = 0
+    for row in reader:
+        if not row:
+            continue
+        lineno = reader.line_num
         if len(row) != len(header):
             raise AnsurImportError(
                 f"{path}:{lineno}: expected {len(header)} fields, found {len(row)}"
             )
-    n = len(body)
-    if n == 0:
+        rows.append(row)
+        lines.append(lineno)
+        if len(rows) >= chunk_rows:
+            yield _batch(path, _Chunk(path, rows, lines, column), column, seen, label)
+            total += len(rows)
+            rows, lines = [], []
+            if progress:
+                progress(raw.tell())
+    if rows:
+        yield _batch(path, _Chunk(path, rows, lines, column), column, seen, label)
+        total += len(rows)
+    if progress:
+        progress(raw.tell())
+    if total == 0:
         raise AnsurImportError(f"{path}:2: the file holds no subject")
 
-    def numbers(name: str) -> np.ndarray:
-        k = column[name]
-        texts = [row[k] for row in body]
-        try:
-            return np.array(texts, dtype=float)
-        except ValueError:
-            for lineno, t in enumerate(texts, start=2):
-                try:
-                    float(t)
-                except ValueError:
-                    raise AnsurImportError(
-                        f"{path}:{lineno}: column {name}: expected a number, found {t!r}"
-                    ) from None
-            raise
 
-    def words(name: str, table: dict[str, str]) -> list[str]:
-        k = column[name]
-        out = []
-        for lineno, row in enumerate(body, start=2):
-            key = row[k].strip().lower()
-            if key not in table:
-                raise AnsurImportError(
-                    f"{path}:{lineno}: column {name}: expected one of "
-                    f"{', '.join(sorted(table))}, found {row[k]!r}"
-                )
-            out.append(table[key])
-        return out
+def _subject_ids(chunk: _Chunk, column: int, seen: dict[int, int]) -> list[int]:
+    out = []
+    for k, row in enumerate(chunk.rows):
+        text = row[column].strip()
+        if not text.isdigit() or int(text) < 1 or int(text) > MAX_SUBJECT_ID:
+            chunk.fail(
+                k,
+                f"column {ID_COLUMN}: expected a whole number from 1 to {MAX_SUBJECT_ID}, "
+                f"found {text!r}",
+            )
+        subject = int(text)
+        if subject in seen:
+            chunk.fail(k, f"duplicate subject id {subject} (first on line {seen[subject]})")
+        seen[subject] = chunk.lines[k]
+        out.append(subject)
+    return out
 
-    cm = {name: numbers(name) / 10.0 for name in MEASUREMENTS}
-    subject = numbers(ID_COLUMN).astype(np.int64)
-    if len(np.unique(subject)) != n:
-        values, counts = np.unique(subject, return_counts=True)
-        raise AnsurImportError(f"{path}: duplicate subject id {int(values[counts > 1][0])}")
-    gender = words("gender", GENDER)
-    mass = numbers("weightkg") / 10.0
+
+def _batch(
+    path: Path, chunk: _Chunk, column: dict[str, int], seen: dict[int, int], label: str
+) -> PeopleBatch:
+    n = len(chunk.rows)
+    subject = _subject_ids(chunk, column[ID_COLUMN], seen)
+    gender = chunk.words(column["gender"], "gender", GENDER)
+    measures = np.empty((n, len(MEASURES)))
+    for j, name in enumerate(MEASURES):
+        values = chunk.numbers(column.get(name), name)
+        if name in column:
+            # mm -> cm exactly as printed (164.1, not 164.10000000000002)
+            values = np.round(values * PUBLISHED_TO_CANONICAL[name], 6)
+            chunk.check(values, name, MEASURE_LIMITS[name], MEASURE_UNITS[name])
+        measures[:, j] = values
+    age = chunk.numbers(column["age"], "age")
+    chunk.check(age, "age", AGE_LIMITS, "years")
+    by_name = {name: measures[:, j] for j, name in enumerate(MEASURES)}
+    mass = by_name["weightkg"]
     girth = np.empty((n, len(GIRTH_NAMES), 4))
-    girth[:, :, :3] = _derive(cm, n)
+    girth[:, :, :3] = _derive(by_name, n)
     girth[:, :, 3] = mass[:, None] * GIRTH_MASS_FRACTIONS[None, :]
     letter = {"male": "M", "female": "F"}
+    if label == DEFAULT_LABEL:
+        names = [f"ANSUR II {letter[g]} {s}" for g, s in zip(gender, subject)]
+        keys: list[str | None] = [f"ANSUR II:{g}:{s}" for g, s in zip(gender, subject)]
+    else:
+        names = [f"{label} {letter[g]} {s}" for g, s in zip(gender, subject)]
+        keys = [f"{label}:{g}:{s}" for g, s in zip(gender, subject)]
+    attributes: dict[str, list[object]] = {
+        name: chunk.texts(column.get(name)) for name in TEXT_ATTRIBUTES
+    }
+    attributes.update({name: chunk.codes(column.get(name), name) for name in CODE_ATTRIBUTES})
     return PeopleBatch(
         id_num=np.zeros(n, dtype=np.int64),
-        name=[f"ANSUR II {letter[g]} {s}" for g, s in zip(gender, subject.tolist())],
+        name=names,
         gender=gender,
-        stature=cm["stature"],
-        mass=mass,
-        handedness=words("writingpreference", ANSUR_HANDEDNESS),
-        age=numbers("age"),
-        source=[f"{SOURCE}, {g} file" for g in gender],
-        source_key=[f"ANSUR II:{g}:{s}" for g, s in zip(gender, subject.tolist())],
+        stature=by_name["stature"].copy(),
+        mass=mass.copy(),
+        handedness=list(
+            chunk.words(column["writingpreference"], "writingpreference", ANSUR_HANDEDNESS)
+        ),
+        age=age,
+        source=[label] * n,
+        source_key=keys,
         girth=girth,
+        attributes=attributes,
+        measures=measures,
+    )
+
+
+def read_ansur(path: str | Path, *, label: str = DEFAULT_LABEL) -> PeopleBatch:
+    """The whole file as one batch (tests and small files; imports stream)."""
+    parts = list(iter_ansur(path, label=label))
+    return concat_batches(parts)
+
+
+def concat_batches(parts: Sequence[PeopleBatch]) -> PeopleBatch:
+    def join(name: str) -> np.ndarray | None:
+        arrays = [getattr(p, name) for p in parts]
+        return None if any(a is None for a in arrays) else np.concatenate(arrays)
+
+    return PeopleBatch(
+        id_num=np.concatenate([p.id_num for p in parts]),
+        name=[x for p in parts for x in p.name],
+        gender=[x for p in parts for x in p.gender],
+        stature=np.concatenate([p.stature for p in parts]),
+        mass=np.concatenate([p.mass for p in parts]),
+        handedness=[x for p in parts for x in p.handedness],
+        age=np.concatenate([p.age for p in parts]),
+        source=[x for p in parts for x in p.source],
+        source_key=[x for p in parts for x in p.source_key],
+        girth=join("girth"),
+        attributes={
+            name: [x for p in parts for x in p.attributes.get(name, [None] * len(p))]
+            for name in PERSON_ATTRIBUTES
+        },
+        measures=join("measures"),
     )
 
 
@@ -229,40 +437,45 @@ def _assign_ids(conn: sqlite3.Connection, batch: PeopleBatch) -> None:
             next_id += 1
 
 
+def store_ansur(
+    conn: sqlite3.Connection,
+    paths: Sequence[str | Path],
+    *,
+    label: str = DEFAULT_LABEL,
+    progress: Callable[[int, int], None] | None = None,
+) -> dict[str, int]:
+    """Stream the files into the database inside the caller's transaction.
+    Returns people per gender; progress(bytes done, bytes in all files)."""
+    sizes = [Path(p).stat().st_size if Path(p).is_file() else 0 for p in paths]
+    total = sum(sizes)
+    before = 0
+    counts = {"male": 0, "female": 0}
+    for path, size in zip(paths, sizes):
+
+        def report(done: int, before: int = before) -> None:
+            if progress:
+                progress(before + done, total)
+
+        for batch in iter_ansur(path, label=label, progress=report):
+            _assign_ids(conn, batch)
+            store_people(conn, batch)
+            for g in batch.gender:
+                counts[g] += 1
+        before += size
+    return counts
+
+
 def import_ansur(
     conn: sqlite3.Connection,
     paths: Sequence[str | Path],
     progress: Callable[[int, int], None] | None = None,
-    chunk: int = 1000,
+    *,
+    label: str = DEFAULT_LABEL,
 ) -> dict[str, int]:
-    """Import the files in one transaction.  Returns people per gender."""
-    batches = [read_ansur(p) for p in paths]
-    total = sum(len(b) for b in batches)
-    done = 0
-    counts = {"male": 0, "female": 0}
+    """Import the files in one transaction (a bad line stores nothing).
+    Returns people per gender."""
+    if not label.strip():
+        raise AnsurImportError("the source label is empty; expected e.g. ansur2")
+    check_writable(conn)
     with transaction(conn):
-        for batch in batches:
-            _assign_ids(conn, batch)
-            for start in range(0, len(batch), chunk):
-                store_people(conn, _slice(batch, slice(start, start + chunk)))
-                done += min(chunk, len(batch) - start)
-                if progress:
-                    progress(done, total)
-            for g in batch.gender:
-                counts[g] += 1
-    return counts
-
-
-def _slice(batch: PeopleBatch, part: slice) -> PeopleBatch:
-    return PeopleBatch(
-        id_num=batch.id_num[part],
-        name=batch.name[part],
-        gender=batch.gender[part],
-        stature=batch.stature[part],
-        mass=batch.mass[part],
-        handedness=batch.handedness[part],
-        age=batch.age[part],
-        source=batch.source[part],
-        source_key=batch.source_key[part],
-        girth=None if batch.girth is None else batch.girth[part],
-    )
+        return store_ansur(conn, paths, label=label, progress=progress)

@@ -1,55 +1,108 @@
-"""The default database: where it lives and how it is first built.
+"""The default database: where it lives and how it is built.
+
+The default database holds the 6,068 people of the ANSUR II public survey
+(datasets/ansur2, the two files as published, gzip-compressed), source
+`ansur2`, and the synthetic people with strength experiments (datasets/db),
+source `synthetic`.
+
+It is built *in place*, in one exclusive transaction: every table dropped and
+created afresh, then filled.  Another process sees the old database or the
+new one, never a mixture; a process importing meanwhile finishes first (or
+`db init` waits for it), and no file is ever renamed over a database somebody
+may hold open (a stale rollback journal then belongs to the same file, and
+SQLite rolls it back as it should).
 
 Nothing here parses arguments or prints; the CLI and the TUI call these.
 """
 
 from __future__ import annotations
 
-import os
 import sqlite3
-import tempfile
 from collections.abc import Callable
 from pathlib import Path
 
-from sass_tui.db.schema import connect, default_db_path
+from sass_tui.db.schema import (
+    DatabaseError,
+    check_writable,
+    connect,
+    default_db_path,
+    recreate_schema,
+    transaction,
+)
 
 Progress = Callable[[int, int], None]
+ANSUR_FILES = ("ANSUR_II_MALE_Public.csv.gz", "ANSUR_II_FEMALE_Public.csv.gz")
+SYNTHETIC_LABEL = "synthetic"
 
 
 def open_database(path: str | Path | None = None, *, create: bool = False) -> sqlite3.Connection:
     """Open `path`, or the default database (built from the shipped data on first use)."""
     if path is not None:
-        return connect(path, create=create)
+        return connect(Path(path).expanduser() if _expandable(path) else path, create=create)
     return default_database()
 
 
+def _expandable(path: str | Path) -> bool:
+    try:
+        Path(path).expanduser()
+    except RuntimeError:
+        return False
+    return True
+
+
 def default_database() -> sqlite3.Connection:
-    """Open the default database, creating it from the shipped data set on first use."""
+    """Open the default database, creating it from the shipped data sets on first use."""
     path = default_db_path()
-    if not path.exists():
+    if not path.exists() or path.stat().st_size == 0:
         create_default_database(path)
     return connect(path)
 
 
-def create_default_database(path: str | Path, progress: Progress | None = None) -> int:
-    """Build a fresh database from datasets/db beside `path`, then rename it into place."""
-    from sass_tui.db.flatfile import FlatFiles, import_flat_files
+def shipped_ansur_files() -> list[Path]:
     from sass_tui.model import datasets
 
+    return [datasets.directory() / "ansur2" / name for name in ANSUR_FILES]
+
+
+def people_count(conn: sqlite3.Connection) -> int:
+    return int(conn.execute("SELECT count(*) FROM person").fetchone()[0])
+
+
+def create_default_database(
+    path: str | Path, progress: Progress | None = None, *, replace: bool = False
+) -> dict[str, int]:
+    """Build the default database at `path` in place (see the module's docstring).
+
+    Without `replace`, a database that already holds people is left as it is
+    (returns {}): first use by two processes at once builds it once, and no
+    caller wipes an import by accident.
+    Returns the people stored per source label."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
-    os.unlink(tmp)
+    conn = connect(path, create=True, rebuild=True)
     try:
-        conn = connect(tmp, create=True)
-        try:
-            count = import_flat_files(conn, FlatFiles.in_directory(datasets.directory() / "db"))
-        finally:
-            conn.close()
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-    return count
+        check_writable(conn, path)
+        with transaction(conn, "EXCLUSIVE"):
+            if not replace and people_count(conn):
+                return {}
+            recreate_schema(conn)
+            return fill_default(conn, progress)
+    finally:
+        conn.close()
+
+
+def fill_default(conn: sqlite3.Connection, progress: Progress | None = None) -> dict[str, int]:
+    """Store the shipped people (inside the caller's transaction)."""
+    from sass_tui.db.ansur import DEFAULT_LABEL, store_ansur
+    from sass_tui.db.flatfile import FlatFiles, read_flat_files
+    from sass_tui.db.schema import store_people
+    from sass_tui.model import datasets
+
+    synthetic = read_flat_files(FlatFiles.in_directory(datasets.directory() / "db"))
+    synthetic.source = [SYNTHETIC_LABEL] * len(synthetic)
+    store_people(conn, synthetic, replace=False)
+    files = shipped_ansur_files()
+    missing = [str(f) for f in files if not f.is_file()]
+    if missing:
+        raise DatabaseError(f"the shipped ANSUR II files are missing: {', '.join(missing)}")
+    counts = store_ansur(conn, files, label=DEFAULT_LABEL, progress=progress)
+    return {SYNTHETIC_LABEL: len(synthetic), DEFAULT_LABEL: sum(counts.values())}

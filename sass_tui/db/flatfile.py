@@ -39,6 +39,7 @@ from sass_tui.db.schema import (
     JOINT_LIMIT_NAMES,
     MASS_ONLY_SEGMENTS,
     PeopleBatch,
+    check_writable,
     store_people,
     transaction,
 )
@@ -49,6 +50,9 @@ from sass_tui.model.vocabulary import GENDERS, SIDES, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 
 NO_VALUE = 999.0
+# Ids stay below 10^12: exact in a float, and far from SQLite's 64-bit limit
+# (the next id after the largest is always representable).
+MAX_ID = 10**12 - 1
 FILE_NAMES = {
     "person": "person.db",
     "girth": "girth.db",
@@ -92,7 +96,7 @@ class _Reader:
     def __init__(self, path: Path):
         self.path = path
         try:
-            self.text = path.read_text(encoding="utf-8")
+            self.text = path.read_text(encoding="utf-8-sig")
         except UnicodeDecodeError:
             self.text = path.read_text(encoding="cp1252", errors="replace")
         except OSError as exc:
@@ -123,9 +127,22 @@ class _Reader:
 
     def integer(self, text: str, field_name: str) -> int:
         try:
-            return int(text)
+            value = int(text)
         except ValueError:
             self.fail(f"{field_name}: expected a whole number, found {text!r}")
+        if not 0 <= value <= MAX_ID:
+            self.fail(f"{field_name}: expected a whole number from 0 to {MAX_ID}, found {text!r}")
+        return value
+
+    def plausible(self, text: str, field_name: str, high: float, unit: str) -> float:
+        """A person's stature, mass or age: no value (999), or 0 < v <= high."""
+        value = self.number(text, field_name)
+        if value == value and not 0 < value <= high:
+            self.fail(
+                f"{field_name}: {text!r} is not plausible "
+                f"(expected more than 0 and at most {high:g} {unit}, or 999.0 for no value)"
+            )
+        return value
 
     def choice(self, text: str, choices: Sequence[str], field_name: str) -> str:
         word = text.strip().lower()
@@ -211,12 +228,12 @@ def _read_person(reader: _Reader) -> dict[str, list]:
         out["id_num"].append(pid)
         out["name"].append(f[1])
         out["gender"].append(reader.choice(f[2], GENDERS, "gender"))
-        out["stature"].append(reader.number(f[3], "stature"))
-        out["mass"].append(reader.number(f[4], "mass"))
+        out["stature"].append(reader.plausible(f[3], "stature", 300.0, "cm"))
+        out["mass"].append(reader.plausible(f[4], "mass", 500.0, "kg"))
         out["handedness"].append(
             None if f[5] == "999.0" or not f[5] else reader.choice(f[5], HANDEDNESS, "handedness")
         )
-        out["age"].append(reader.number(f[6], "age"))
+        out["age"].append(reader.plausible(f[6], "age", 130.0, "years"))
         out["source"].append(f[7])
     if not seen:
         raise FlatFileError(f"{reader.path}:1: the person file holds no person")
@@ -349,6 +366,7 @@ def import_flat_files(conn: sqlite3.Connection, files: FlatFiles) -> int:
     """Read every file, then store them in one transaction.  Returns the number of people.
     People whose id_num is already stored are replaced."""
     batch = read_flat_files(files)
+    check_writable(conn)
     with transaction(conn):
         store_people(conn, batch)
     return len(batch)

@@ -7,6 +7,10 @@ moves a person from the query list to the selected list; a new query replaces
 the query list and keeps the selected list (people already selected do not
 come back into the query list).  No Textual import here.
 
+The lists are read-only work for the main database: their transactions are
+deferred and write only TEMP tables, so they take no write lock on the main
+database and go on working while another process imports.
+
 One connection is shared by the screen (paging, selecting) and the worker
 that runs a query; `lock` serialises them, and the screen refuses list
 commands while a query holds it rather than wait for it.
@@ -66,7 +70,7 @@ class QueryLists:
             f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
             f"WHERE {compiled.where} AND p.id_num NOT IN (SELECT id_num FROM temp.selected_list)"
         )
-        with transaction(self.conn):
+        with transaction(self.conn, "DEFERRED"):
             self.conn.execute("DELETE FROM temp.query_list")
             count = self.conn.execute(sql, compiled.params).rowcount
         self._counts[QUERY_LIST] = count
@@ -94,7 +98,7 @@ class QueryLists:
     # --- moving people between the lists ---------------------------------------------
     def select_one(self, id_num: int) -> bool:
         """Move one person from the query list to the end of the selected list."""
-        with transaction(self.conn):
+        with transaction(self.conn, "DEFERRED"):
             gone = self.conn.execute(
                 "DELETE FROM temp.query_list WHERE id_num = ?", (int(id_num),)
             ).rowcount
@@ -111,7 +115,7 @@ class QueryLists:
 
     def select_all(self) -> int:
         """Move the whole query list to the selected list; returns how many moved."""
-        with transaction(self.conn):
+        with transaction(self.conn, "DEFERRED"):
             moved = self.conn.execute(
                 "INSERT OR IGNORE INTO temp.selected_list (id_num) "
                 "SELECT id_num FROM temp.query_list ORDER BY id_num"
@@ -122,7 +126,7 @@ class QueryLists:
         return moved
 
     def delete_one(self, which: str, id_num: int) -> bool:
-        with transaction(self.conn):
+        with transaction(self.conn, "DEFERRED"):
             gone = self.conn.execute(
                 f"DELETE FROM {_TABLES[which]} WHERE id_num = ?", (int(id_num),)
             ).rowcount

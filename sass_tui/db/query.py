@@ -32,6 +32,7 @@ from sass_tui.db.schema import (
     QUERY_TABLES,
 )
 from sass_tui.model.errors import SassError
+from sass_tui.model.measures import MEASURE_UNITS, suggest
 from sass_tui.model.strength import MOTION_NAMES
 from sass_tui.model.units import DISPLAY, UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, STRENGTH_TYPES
@@ -47,10 +48,12 @@ comparison: field OP value
 field: NAME ("." NAME)*
 value: NUMBER UNIT?   -> number
      | NAME           -> word
+     | STRING         -> quoted
 _OR.3: /or\b/i
 _AND.3: /and\b/i
 OP: "<=" | ">=" | "!=" | "<>" | "<" | ">" | "=" | "≤" | "≥" | "≠"
 NAME.2: /[A-Za-z_][A-Za-z0-9_]*/
+STRING: /'[^']*'|"[^"]*"/
 NUMBER: /[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?/
 UNIT: /(ft|lbf?|N|n)[-·*]?(lbf?|lbs|m|ft)\b|deg\/s|rad\/s|°\/s|[A-Za-z°"]+/
 %import common.WS
@@ -70,13 +73,22 @@ _OPERATORS = {
     "≠": "!=",
 }
 
-# field -> (table alias, column, stored unit or None, allowed words or None)
-_GLOBAL_FIELDS = {
+# Free text compared without regard to case (only = and !=).
+TEXT = ("text",)
+# field -> (table alias, column, stored unit or None, allowed words, TEXT, or None)
+_GLOBAL_FIELDS: dict[str, tuple[str, str, str | None, tuple[str, ...] | None]] = {
     "gender": ("p", "gender", None, GENDERS),
     "mass": ("p", "mass", "kg", None),
     "stature": ("p", "stature", "cm", None),
     "age": ("p", "age", "", None),
     "handedness": ("p", "handedness", None, HANDEDNESS),
+    "writingpreference": ("p", "handedness", None, HANDEDNESS),
+    "source": ("p", "source", None, TEXT),
+    "component": ("p", "component", None, TEXT),
+    "branch": ("p", "branch", None, TEXT),
+    "ethnicity": ("p", "ethnicity", None, TEXT),
+    "subjectnumericrace": ("p", "subjectnumericrace", "", None),
+    "dodrace": ("p", "dodrace", "", None),
     "strength_type": ("s", "strength_type", None, STRENGTH_TYPES),
     "motion_speed": ("s", "motion_speed", "deg/s", None),
     "training_level": ("s", "training_level", "", None),
@@ -89,6 +101,7 @@ _GROUPS = {
     "center_of_mass": ("center_of_mass", CENTER_OF_MASS_NAMES, "cm", "segment"),
     "strength": ("strength", MOTION_NAMES, "N_m", "motion"),
 }
+MEASURE_TABLE = "measure"
 
 
 class QueryError(ValueError, SassError):
@@ -163,12 +176,35 @@ class _Compiler(Transformer):
         return ("word", value, None)
 
     @v_args(inline=True)
+    def quoted(self, value):
+        return ("text", value, None)
+
+    @v_args(inline=True)
     def comparison(self, names, op, value):
         alias, column, unit, words = self._resolve(names)
         sql_op = _OPERATORS[str(op)]
         kind, token, unit_token = value
+        if words is TEXT:
+            if kind not in ("word", "text"):
+                self._fail(
+                    f"{'.'.join(names)} needs a text value in quotes, e.g. 'Combat Arms', "
+                    f"not {str(token)!r}",
+                    token,
+                )
+            if sql_op not in ("=", "!="):
+                self._fail(f"{'.'.join(names)} can only be compared with = or !=", op)
+            value_text = _unquote(token) if kind == "text" else str(token)
+            null_test = "IS NOT NULL" if sql_op == "=" else "IS NULL OR"
+            if sql_op == "=":
+                return (f"{alias}.{column} = ? COLLATE NOCASE", [value_text])
+            return (
+                f"({alias}.{column} {null_test} {alias}.{column} != ? COLLATE NOCASE)",
+                [value_text],
+            )
         if words is not None:
-            if kind != "word" or token.lower() not in words:
+            if kind == "text":
+                token = Token.new_borrow_pos("NAME", _unquote(token), token)
+            if kind not in ("word", "text") or token.lower() not in words:
                 self._fail(
                     f"{'.'.join(names)} is one of {', '.join(words)}, not {str(token)!r}", token
                 )
@@ -190,40 +226,84 @@ class _Compiler(Transformer):
         return (f"{alias}.{column} {sql_op} ?", [number])
 
     def _resolve(self, names: list[Token]):
-        head = names[0].lower()
-        if len(names) == 1 and head in _GLOBAL_FIELDS:
-            alias, column, unit, words = _GLOBAL_FIELDS[head]
-            if alias != "p":
-                alias = self._alias("strength_q")
-            return alias, column, unit, words
-        if head not in _GROUPS:
-            self._fail(
-                f"unknown field {str(names[0])!r}; expected one of "
-                f"{', '.join(_GLOBAL_FIELDS)} or girth.SEGMENT.x|y|z, "
-                "joint_limit.JOINT.x|y|z, center_of_mass.SEGMENT.x|y|z, strength.MOTION.max",
-                names[0],
+        try:
+            table, column, unit, words = resolve_field([str(n) for n in names])
+        except _FieldError as exc:
+            self._fail(str(exc), names[min(exc.part, len(names) - 1)])
+        alias = "p" if table == "person" else self._alias(table)
+        return alias, column, unit, words
+
+
+class _FieldError(Exception):
+    def __init__(self, message: str, part: int):
+        super().__init__(message)
+        self.part = part
+
+
+def _unquote(token: Token | str) -> str:
+    return str(token)[1:-1]
+
+
+FieldInfo = tuple[str, str, "str | None", "tuple[str, ...] | None"]
+
+
+def resolve_field(names: list[str]) -> FieldInfo:
+    """A field's parts (`["measure", "sittingheight"]`) -> (table, column,
+    stored unit or None, allowed words / TEXT / None); raises _FieldError."""
+    head = names[0].lower()
+    if len(names) == 1 and head in _GLOBAL_FIELDS:
+        alias, column, unit, words = _GLOBAL_FIELDS[head]
+        return ("person" if alias == "p" else "strength_q"), column, unit, words
+    if head == "measure":
+        if len(names) != 2:
+            raise _FieldError("expected measure.NAME, e.g. measure.sittingheight", 0)
+        name = names[1].lower()
+        if name not in MEASURE_UNITS:
+            close = suggest(name)
+            hint = (
+                f"; did you mean {' or '.join(close)}?"
+                if close
+                else ("; the names are the ANSUR II survey's, lower case (e.g. sittingheight)")
             )
-        group, rows, unit, what = _GROUPS[head]
-        if len(names) != 3:
-            shape = (
-                "strength.MOTION.max"
-                if head == "strength"
-                else f"{head}.{what.upper().replace(' ', '_')}.x|y|z"
-            )
-            self._fail(f"expected {shape}", names[0])
-        row, axis = names[1].lower(), names[2].lower()
-        if row not in rows:
-            self._fail(
-                f"unknown {what} {str(names[1])!r}; expected one of {', '.join(rows)}", names[1]
-            )
-        expected_axes = ("max",) if head == "strength" else ("x", "y", "z")
-        if axis not in expected_axes:
-            self._fail(
-                f"expected {' or '.join(expected_axes)} after {head}.{row}, found "
-                f"{str(names[2])!r}",
-                names[2],
-            )
-        return self._alias(QUERY_TABLES[group][row]), axis, unit, None
+            raise _FieldError(f"unknown measurement {names[1]!r}{hint}", 1)
+        return MEASURE_TABLE, name, MEASURE_UNITS[name], None
+    if head not in _GROUPS:
+        raise _FieldError(
+            f"unknown field {names[0]!r}; expected one of "
+            f"{', '.join(_GLOBAL_FIELDS)}, measure.NAME or girth.SEGMENT.x|y|z, "
+            "joint_limit.JOINT.x|y|z, center_of_mass.SEGMENT.x|y|z, strength.MOTION.max",
+            0,
+        )
+    group, rows, unit, what = _GROUPS[head]
+    if len(names) != 3:
+        shape = (
+            "strength.MOTION.max"
+            if head == "strength"
+            else f"{head}.{what.upper().replace(' ', '_')}.x|y|z"
+        )
+        raise _FieldError(f"expected {shape}", 0)
+    row, axis = names[1].lower(), names[2].lower()
+    if row not in rows:
+        raise _FieldError(f"unknown {what} {names[1]!r}; expected one of {', '.join(rows)}", 1)
+    expected_axes = ("max",) if head == "strength" else ("x", "y", "z")
+    if axis not in expected_axes:
+        raise _FieldError(
+            f"expected {' or '.join(expected_axes)} after {head}.{row}, found {names[2]!r}", 2
+        )
+    return QUERY_TABLES[group][row], axis, unit, None
+
+
+def field_names() -> list[tuple[str, str]]:
+    """Every queryable field and its unit ('' none, 'text' free text, else the
+    stored unit): for a searchable field menu."""
+    out: list[tuple[str, str]] = []
+    for name, (_alias, _column, unit, words) in _GLOBAL_FIELDS.items():
+        out.append((name, "text" if words is not None else (unit or "")))
+    out += [(f"measure.{name}", MEASURE_UNITS[name]) for name in MEASURE_UNITS]
+    for head, (_group, rows, unit, _what) in _GROUPS.items():
+        axes = ("max",) if head == "strength" else ("x", "y", "z")
+        out += [(f"{head}.{row}.{axis}", unit) for row in rows for axis in axes]
+    return out
 
 
 def compile_query(text: str) -> CompiledQuery:
@@ -273,6 +353,7 @@ _TOKEN_WORDS = {
     "NAME": "a name",
     "NUMBER": "a number",
     "UNIT": "a unit",
+    "STRING": "a quoted text",
     "LPAR": "(",
     "RPAR": ")",
     "DOT": ".",

@@ -22,6 +22,7 @@ No Textual import here.
 from __future__ import annotations
 
 import os
+import re
 import sqlite3
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
@@ -30,6 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.measures import MEASURES
 from sass_tui.model.names import (
     CENTER_OF_MASS_ROWS,
     FIG_PREFIX,
@@ -40,7 +42,7 @@ from sass_tui.model.names import (
 from sass_tui.model.strength import MOTION_NAMES
 from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS
 
-SCHEMA_VERSION = "1"
+SCHEMA_VERSION = "2"
 AXES = ("x", "y", "z")
 
 GIRTH_NAMES = tuple(r.name for r in GIRTH_ROWS)
@@ -108,6 +110,7 @@ def _ddl() -> str:
         f"CREATE TABLE {table} (id_num INTEGER PRIMARY KEY, max REAL);\n"
         for table in QUERY_TABLES["strength"].values()
     )
+    measure_columns = ",\n  ".join(f"{name} REAL" for name in MEASURES)
     return f"""
 CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);
 -- person: stature cm, mass kg, age years.  source says where the data come from;
@@ -121,8 +124,35 @@ CREATE TABLE person (
   handedness TEXT CHECK (handedness IN ('right', 'left', 'either')),
   age REAL,
   source TEXT NOT NULL,
-  source_key TEXT UNIQUE
+  source_key TEXT UNIQUE,
+  component TEXT,
+  branch TEXT,
+  subjectnumericrace INTEGER,
+  dodrace INTEGER,
+  ethnicity TEXT
 );
+-- measure: the ANSUR II measurements by the survey's names, lower case, in
+-- canonical units (cm; weightkg in kg).  One row per person measured.
+CREATE TABLE measure (
+  id_num INTEGER PRIMARY KEY REFERENCES person (id_num),
+  {measure_columns}
+);
+-- measure_packed: each measure row as one BLOB of float64 in MEASURES order
+-- (NaN = NULL), written by store_people: load_values reads 6,068 people's 93
+-- values in one fetch of 6,068 blobs instead of 564,000 cells (~5x faster).
+-- The triggers mark a row stale (data NULL) whenever measure changes by any
+-- other path; readers then take that person's values from measure itself.
+CREATE TABLE measure_packed (id_num INTEGER PRIMARY KEY, data BLOB);
+CREATE TRIGGER measure_packed_insert AFTER INSERT ON measure BEGIN
+  INSERT OR REPLACE INTO measure_packed VALUES (NEW.id_num, NULL);
+END;
+CREATE TRIGGER measure_packed_update AFTER UPDATE ON measure BEGIN
+  DELETE FROM measure_packed WHERE id_num = OLD.id_num;
+  INSERT OR REPLACE INTO measure_packed VALUES (NEW.id_num, NULL);
+END;
+CREATE TRIGGER measure_packed_delete AFTER DELETE ON measure BEGIN
+  DELETE FROM measure_packed WHERE id_num = OLD.id_num;
+END;
 -- No index leads with gender: half the people match, and walking such an index
 -- visits the query tables in random order instead of id order (3x slower).
 CREATE INDEX person_stature ON person (stature);
@@ -205,7 +235,7 @@ RELATIONS = (
 )
 PERSON_TABLES = (
     RELATIONS[1:]
-    + ("strength_q",)
+    + ("measure", "measure_packed", "strength_q")
     + tuple(table for tables in QUERY_TABLES.values() for table in tables.values())
 )
 
@@ -221,10 +251,28 @@ def default_db_path() -> Path:
     return Path(base) / "sass" / "sass.db"
 
 
+# Attributes of a person besides the model's (ANSUR II's survey fields).
+PERSON_ATTRIBUTES = ("component", "branch", "subjectnumericrace", "dodrace", "ethnicity")
+# Tables every sass database of this version holds.
+EXPECTED_TABLES = frozenset(("meta",) + RELATIONS + PERSON_TABLES)
+BUSY_TIMEOUT_S = 10.0
+
+
 def connect(
-    path: str | Path, *, create: bool = False, check_same_thread: bool = True
+    path: str | Path,
+    *,
+    create: bool = False,
+    check_same_thread: bool = True,
+    rebuild: bool = False,
 ) -> sqlite3.Connection:
-    """Open a database (autocommit mode: writers use transaction())."""
+    """Open a sass database (autocommit mode: writers use transaction()).
+
+    The schema is created only in a file that holds nothing yet; a SQLite file
+    of some other program is refused untouched, and so is a sass database of a
+    newer schema.  A database of schema 1 is migrated (columns and the
+    measure table added, nothing removed).  `rebuild` (db init) accepts any
+    sass database, whatever its version or state, since it is about to be
+    rebuilt."""
     path = Path(path)
     if not path.exists() and not create:
         raise DatabaseError(
@@ -232,52 +280,170 @@ def connect(
         )
     if create:
         path.parent.mkdir(parents=True, exist_ok=True)
-    conn = sqlite3.connect(str(path), isolation_level=None, check_same_thread=check_same_thread)
-    conn.execute("PRAGMA cache_size = -65536")
-    # Map the whole file (address space only): the query tables of a million
-    # people sit all over a 2.5 GB file, and read() calls cost more than page faults.
-    conn.execute("PRAGMA mmap_size = 17179869184")
     try:
-        has_schema = conn.execute(
-            "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'meta'"
-        ).fetchone()
+        conn = sqlite3.connect(
+            str(path),
+            isolation_level=None,
+            check_same_thread=check_same_thread,
+            timeout=BUSY_TIMEOUT_S,
+        )
+    except sqlite3.Error as exc:
+        raise DatabaseError(f"{path}: cannot open the database ({exc})") from None
+    try:
+        conn.execute("PRAGMA cache_size = -65536")
+        # Map the whole file (address space only): the query tables of a million
+        # people sit all over a 2.5 GB file, and read() calls cost more than page faults.
+        conn.execute("PRAGMA mmap_size = 17179869184")
+        _check_schema(conn, path, create, rebuild)
     except sqlite3.DatabaseError as exc:
         conn.close()
-        raise DatabaseError(f"{path}: not a sass database ({exc})") from None
-    if not has_schema:
-        if not create:
-            conn.close()
-            raise DatabaseError(f"{path}: not a sass database (no schema)")
-        create_schema(conn)
+        raise DatabaseError(f"{path}: not a usable sass database ({exc})") from None
+    except BaseException:
+        conn.close()
+        raise
     return conn
 
 
-def create_schema(conn: sqlite3.Connection) -> None:
-    with transaction(conn):
-        for statement in _ddl().split(";\n"):
-            if statement.strip():
-                conn.execute(statement)
-        conn.execute("INSERT INTO meta VALUES ('schema_version', ?)", (SCHEMA_VERSION,))
-        conn.execute(
-            "INSERT INTO meta VALUES ('units', "
-            "'length cm, mass kg, angle deg, strength N-m, speed deg/s, age years')"
+def _tables(conn: sqlite3.Connection) -> set[str]:
+    return {
+        name
+        for (name,) in conn.execute("SELECT name FROM sqlite_master WHERE name NOT LIKE 'sqlite_%'")
+    }
+
+
+def _check_schema(conn: sqlite3.Connection, path: Path, create: bool, rebuild: bool) -> None:
+    names = _tables(conn)
+    if not names:
+        if not create:
+            raise DatabaseError(
+                f"{path}: an empty file, not a sass database "
+                f"(create one with `sass db init --db {path}`)"
+            )
+        create_schema(conn)
+        return
+    if "meta" not in names:
+        raise DatabaseError(
+            f"{path}: a SQLite file of another program (no sass schema); "
+            "sass does not add tables to it: give another file"
+        )
+    if rebuild:
+        return
+    row = conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
+    version = row[0] if row else None
+    if version == "1":
+        migrate_1_to_2(conn)
+        names = _tables(conn)
+    elif version != SCHEMA_VERSION:
+        raise DatabaseError(
+            f"{path}: a sass database of schema version {version}, "
+            f"this sass reads version {SCHEMA_VERSION}: use the sass that made it, "
+            f"or rebuild it with `sass db init --force --db {path}` (deletes its people)"
+        )
+    missing = sorted(EXPECTED_TABLES - names)
+    if missing:
+        raise DatabaseError(
+            f"{path}: a damaged sass database (table{'s' if len(missing) > 1 else ''} "
+            f"{', '.join(missing[:5])}{', …' if len(missing) > 5 else ''} missing); "
+            f"rebuild it with `sass db init --force --db {path}`"
         )
 
 
+def migrate_1_to_2(conn: sqlite3.Connection) -> None:
+    """Schema 1 -> 2: the person attributes and the measure table (no data lost)."""
+    with transaction(conn):
+        row = conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
+        if row is None or row[0] != "1":  # another process migrated it meanwhile
+            return
+        for column, kind in zip(PERSON_ATTRIBUTES, ("TEXT", "TEXT", "INTEGER", "INTEGER", "TEXT")):
+            conn.execute(f"ALTER TABLE person ADD COLUMN {column} {kind}")
+        for statement in _schema_statements():
+            if re.search(r"CREATE (TABLE|TRIGGER) measure", statement):
+                conn.execute(statement)
+        conn.execute("UPDATE meta SET value = ? WHERE key = 'schema_version'", (SCHEMA_VERSION,))
+
+
+def _schema_statements() -> list[str]:
+    statements: list[str] = []
+    pending = ""
+    for piece in _ddl().split(";\n"):
+        pending += piece + ";\n"
+        if sqlite3.complete_statement(pending):  # a trigger's body holds ";\n" too
+            if pending.strip(" ;\n"):
+                statements.append(pending)
+            pending = ""
+    return statements
+
+
+def create_schema(conn: sqlite3.Connection) -> None:
+    """Create the tables in an empty database (a no-op if another process just did)."""
+    with transaction(conn):
+        if _tables(conn):
+            return
+        _create_tables(conn)
+
+
+def _create_tables(conn: sqlite3.Connection) -> None:
+    for statement in _schema_statements():
+        conn.execute(statement)
+    conn.execute("INSERT INTO meta VALUES ('schema_version', ?)", (SCHEMA_VERSION,))
+    conn.execute(
+        "INSERT INTO meta VALUES ('units', "
+        "'length cm, mass kg, angle deg, strength N-m, speed deg/s, age years')"
+    )
+
+
+def recreate_schema(conn: sqlite3.Connection) -> None:
+    """Drop every table and create the schema afresh (inside the caller's
+    exclusive transaction: other processes see the old database or the new one)."""
+    for (name,) in conn.execute(
+        "SELECT name FROM sqlite_master WHERE type = 'table' AND name NOT LIKE 'sqlite_%'"
+    ).fetchall():
+        conn.execute(f'DROP TABLE "{name}"')
+    _create_tables(conn)
+
+
+def check_writable(conn: sqlite3.Connection, path: str | Path | None = None) -> None:
+    """Refuse to write to a damaged database (`PRAGMA quick_check`, the
+    integrity check without the index cross-check: O(size), ~0.1 s for ANSUR II)."""
+    where = path if path is not None else _db_file(conn)
+    try:
+        result = [row[0] for row in conn.execute("PRAGMA quick_check(5)")]
+    except sqlite3.DatabaseError as exc:
+        raise DatabaseError(f"{where}: the database is damaged ({exc}); nothing written") from None
+    if result != ["ok"]:
+        raise DatabaseError(
+            f"{where}: the database is damaged ({'; '.join(result)}); nothing written. "
+            "Move it away and run `sass db init` for a new one"
+        )
+
+
+def _db_file(conn: sqlite3.Connection) -> str:
+    for _seq, name, file in conn.execute("PRAGMA database_list"):
+        if name == "main":
+            return file or ":memory:"
+    return "database"
+
+
 class transaction:
-    """BEGIN IMMEDIATE ... COMMIT, or ROLLBACK on any exception (nothing half-written)."""
+    """BEGIN IMMEDIATE ... COMMIT, or ROLLBACK on any exception (nothing half-written).
 
-    def __init__(self, conn: sqlite3.Connection):
+    `mode` "EXCLUSIVE" also keeps readers out until COMMIT (db init); ""
+    (deferred) takes no lock on the main database before it is touched: what
+    writes to TEMP tables only uses (the query lists), so that they work while
+    another process imports."""
+
+    def __init__(self, conn: sqlite3.Connection, mode: str = "IMMEDIATE"):
         self.conn = conn
+        self.mode = mode
 
-    def __enter__(self):
-        self.conn.execute("BEGIN IMMEDIATE")
+    def __enter__(self) -> sqlite3.Connection:
+        self.conn.execute(f"BEGIN {self.mode}")
         return self.conn
 
-    def __exit__(self, exc_type, exc, tb):
+    def __exit__(self, exc_type: object, exc: object, tb: object) -> bool:
         if exc_type is None:
             self.conn.execute("COMMIT")
-        else:
+        elif self.conn.in_transaction:
             self.conn.execute("ROLLBACK")
         return False
 
@@ -322,6 +488,9 @@ class PeopleBatch:
         default_factory=list
     )  # (i, exp, elbow, sx, sy, sz, wx, wy, wz, p, n)
     wrist: list[tuple] = field(default_factory=list)  # (i, exp, wx, wy, wz, elbow, axis, p, n)
+    # Survey attributes (PERSON_ATTRIBUTES), each a list of n values or None (no value).
+    attributes: dict[str, list[object]] = field(default_factory=dict)
+    measures: np.ndarray | None = None  # (n, len(MEASURES)), canonical units
 
     def __len__(self) -> int:
         return len(self.id_num)
@@ -367,8 +536,9 @@ def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool 
     ids = [int(i) for i in batch.id_num]
     if replace:
         delete_people(conn, ids)
+    no_value = [None] * len(ids)
     conn.executemany(
-        "INSERT INTO person VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
+        f"INSERT INTO person VALUES ({', '.join(['?'] * (9 + len(PERSON_ATTRIBUTES)))})",
         zip(
             ids,
             batch.name,
@@ -379,8 +549,19 @@ def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool 
             _nullable(batch.age),
             batch.source,
             batch.source_key,
+            *[batch.attributes.get(name, no_value) for name in PERSON_ATTRIBUTES],
         ),
     )
+    if batch.measures is not None:
+        conn.executemany(
+            f"INSERT INTO measure VALUES ({', '.join(['?'] * (1 + len(MEASURES)))})",
+            ((i, *row) for i, row in zip(ids, _nullable(batch.measures))),
+        )
+        packed = np.ascontiguousarray(batch.measures, dtype="<f8")
+        conn.executemany(
+            "INSERT OR REPLACE INTO measure_packed VALUES (?, ?)",
+            ((i, packed[k].tobytes()) for k, i in enumerate(ids)),
+        )
     for table, names, values, width in (
         ("girth", GIRTH_NAMES, batch.girth, 4),
         ("joint_limits", JOINT_LIMIT_NAMES, batch.joint_limits, 3),

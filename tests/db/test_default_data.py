@@ -59,13 +59,16 @@ def test_sample_query_finds_people_and_no_women(default_db):
     assert all(p["gender"] == "male" for p in query.iter_all(page_size=7))
 
 
-def test_every_person_is_labelled_synthetic(default_db):
-    sources = {s for (s,) in default_db.execute("SELECT DISTINCT source FROM person")}
-    assert len(sources) == 1 and next(iter(sources)).startswith("SYNTHETIC")
+def test_every_person_is_labelled_with_its_source(default_db):
+    sources = dict(default_db.execute("SELECT source, count(*) FROM person GROUP BY source"))
+    synthetic = sum(1 for _ in _flat("person.db"))
+    assert sources == {"synthetic": synthetic, "ansur2": 6068}
+    names = {n for (n,) in default_db.execute("SELECT name FROM person WHERE source = 'synthetic'")}
+    assert names == {r[1] for r in _flat("person.db")}
 
 
 def test_paging_never_loads_more_than_a_page(default_db):
-    query = run_query(default_db, "stature > 0 cm")
+    query = run_query(default_db, "source = synthetic")
     total = query.count()
     assert total == 200
     first, second = query.page(0, 25), query.page(25, 25)
@@ -121,12 +124,16 @@ def test_cli_db_init_uses_xdg_location(tmp_path, monkeypatch, capsys):
     monkeypatch.setenv("XDG_DATA_HOME", str(tmp_path))
     # First use of `sass query` creates the default database.
     assert main(["query", "--format", "json", "gender = female"]) == 0
-    assert json.loads(capsys.readouterr().out)["count"] == 100
+    assert json.loads(capsys.readouterr().out)["count"] == 100 + 1986
     assert (tmp_path / "sass" / "sass.db").is_file()
     target = tmp_path / "other.db"
     monkeypatch.setenv("SASS_DB", str(target))
     assert main(["db", "init"]) == 0
     assert target.is_file()
+    capsys.readouterr()
+    # A fresh install: 6,068 ANSUR II people plus the synthetic ones, no file given.
+    assert main(["query", "--format", "json", "stature > 0 cm"]) == 0
+    assert json.loads(capsys.readouterr().out)["count"] == 6068 + 200
 
 
 def test_cli_query_missing_database_is_an_error(tmp_path, capsys):

@@ -319,7 +319,7 @@ def test_paging_delete_and_busy_while_a_query_runs(drive, db):
             second = sheet.rows[1]["name"]
             await pilot.press("x")  # Delete One: the highlighted (first) person
             assert sheet.rows[0]["name"] == second
-            assert f"Total Data in Query List: {total - 1}" in summary(app)
+            assert f"Total Data in Query List: {total - 1:,}" in summary(app)
             # While the database is busy, list commands answer at once instead of waiting.
             with screen.lists.lock:
                 await pilot.press("n")
@@ -335,11 +335,11 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
     bad = tmp_path / "girth.db"
     bad.write_text("1,BOTTOM_HEAD, 9.80, 7.75, oops, 1.40\n")
     person = tmp_path / "person.db"
-    person.write_text("901,NEW_PERSON,female,160.0,55.0,left,30,test\n")
+    person.write_text("99901,NEW_PERSON,female,160.0,55.0,left,30,test\n")
     girth = tmp_path / "girth-ok.db"
     girth.write_text(
         "\n".join(
-            line.replace("1,", "901,", 1)
+            line.replace("1,", "99901,", 1)
             for line in (source / "girth.db").read_text().splitlines()
             if line.startswith("1,")
         )
@@ -349,7 +349,7 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
     for name, path in one_person.items():
         path.write_text(
             "\n".join(
-                line.replace("1,", "901,", 1)
+                line.replace("1,", "99901,", 1)
                 for line in (source / f"{name}.db").read_text().splitlines()
                 if line.startswith("1,")
             )
@@ -390,7 +390,7 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
             assert "girth.db:1" in message(app)
             assert (
                 screen.lists.conn.execute(
-                    "SELECT count(*) FROM person WHERE id_num = 901"
+                    "SELECT count(*) FROM person WHERE id_num = 99901"
                 ).fetchone()[0]
                 == 0
             )
@@ -401,7 +401,7 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
             await pilot.press("escape")
             await settle(pilot)
             assert message(app) == "Loaded 1 people into the database."
-            screen.start_query("handedness = left AND gender = female AND stature < 161 cm")
+            screen.start_query("source = test AND handedness = left AND stature < 161 cm")
             await settle(pilot)
             assert "NEW_PERSON" in [r["name"] for r in screen.query_one(ListSheet).rows]
 
