@@ -14,7 +14,7 @@ CLI_MODULES = [
     "sass_tui.cli",
     *(
         f"sass_tui.cli.{m}"
-        for m in ("db", "export", "fig", "options", "progress", "query", "strength")
+        for m in ("db", "export", "fig", "options", "predict", "progress", "query", "strength")
     ),
 ]
 

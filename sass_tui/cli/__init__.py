@@ -12,10 +12,10 @@ import argparse
 import os
 import sys
 
-from sass_tui.cli import db, export, family, fig, fit, query, strength
+from sass_tui.cli import db, export, family, fig, fit, predict, query, strength
 from sass_tui.cli.options import DB_HELP
 
-VERBS = (fig, export, strength, query, fit, family, db)
+VERBS = (fig, export, strength, query, predict, fit, family, db)
 
 
 def build_parser() -> argparse.ArgumentParser:

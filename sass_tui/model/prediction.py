@@ -308,6 +308,9 @@ class Predictor:
             }
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
         try:
+            umask = os.umask(0)
+            os.umask(umask)
+            os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it private; a cache need not be
             with os.fdopen(fd, "wb") as handle:
                 np.savez(handle, **arrays)  # type: ignore[arg-type]
                 handle.flush()
@@ -499,11 +502,8 @@ class Predictor:
         predicted from these known names, exact for least squares (PRESS)."""
         m = self.model(gender)
         index = m.index()
-        k_idx = list(
-            dict.fromkeys(
-                index[n] for n in map(lambda s: self.resolve(gender, s), known_names) if n in index
-            )
-        )
+        known = [self.resolve(gender, name) for name in known_names]
+        k_idx = list(dict.fromkeys(index[n] for n in known if n in index))
         unknown = [i for i in range(len(m.fields)) if i not in set(k_idx)]
         scores = m.scores.astype(np.float64)
         zk = scores[:, k_idx]
@@ -515,7 +515,8 @@ class Predictor:
         hat = 1.0 / m.n + np.einsum("ij,jk,ik->i", zk, inverse, zk) / (m.n - 1)
         loo = residual / (1.0 - hat)[:, None]
         rmse = np.sqrt(np.mean(loo**2, axis=0)) * m.sd[unknown]
-        return {m.fields[i]: float(r) for i, r in zip(unknown, rmse)}
+        out = {m.fields[i]: float(r) for i, r in zip(unknown, rmse)}
+        return out | {name: 0.0 for name in m.constants if name not in known}
 
     # --- internals ----------------------------------------------------------------
     def _standardize(self, m: GenderModel, known: Mapping[str, float]) -> FloatArray:

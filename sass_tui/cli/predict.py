@@ -1,0 +1,293 @@
+"""`sass predict`: a person's unmeasured values from the known ones, with 90 % intervals.
+
+    sass predict --gender male --known stature=175.5cm --known mass=82.2kg -o P.fig
+    sass predict --gender female --input known.csv --output predicted.csv
+
+The model (sass_tui/model/prediction.py) is fitted on the database's people
+and cached beside the database (sass_tui/db/predict.py).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import TYPE_CHECKING, Any, TextIO
+
+from sass_tui.cli.options import add_db_option, open_db
+from sass_tui.model.errors import SassError
+from sass_tui.model.vocabulary import GENDERS
+
+if TYPE_CHECKING:
+    from sass_tui.model.prediction import Prediction, Predictor
+
+
+class PredictArgumentError(ValueError, SassError):
+    """Options of `sass predict` that do not go together, or a batch file it cannot read."""
+
+    def __init__(self, message: str = "", *, where: str | None = None) -> None:
+        SassError.__init__(self, message, where=where)
+
+
+def register(commands: argparse._SubParsersAction) -> None:
+    predict = commands.add_parser(
+        "predict",
+        help="predict every value of a person from the known ones (with 90 %% intervals)",
+        description="Predict every girth and center-of-mass value and every ANSUR II "
+        "measurement from the known ones, by regression on the database's people of the "
+        "same gender, each with a 90 %% prediction interval.  Known names: stature, mass, "
+        "measure.<name>, girth.<segment>.<x|y|z>, center_of_mass.<segment>.<x|y|z>; values "
+        "in cm and kg unless they carry a unit.",
+    )
+    add_db_option(predict)
+    predict.add_argument("--gender", choices=GENDERS, required=True)
+    predict.add_argument(
+        "--known",
+        metavar="NAME=VALUE",
+        action="append",
+        default=[],
+        help="a known value, e.g. stature=175.5cm or mass='181 lb' (repeat for more)",
+    )
+    predict.add_argument("--format", choices=("table", "json", "csv"), default="table")
+    predict.add_argument(
+        "-o",
+        dest="figure",
+        metavar="OUT.fig|OUT.x3d",
+        help="also write the predicted figure: a PEABODY .fig file or an HAnim .x3d humanoid",
+    )
+    predict.add_argument(
+        "--nearest",
+        metavar="K",
+        type=_count,
+        default=0,
+        help="also list the K real people nearest to the known values (standardized distance)",
+    )
+    predict.add_argument(
+        "--input",
+        metavar="KNOWN.csv",
+        help="batch: one person a row, columns named like --known (other columns pass through)",
+    )
+    predict.add_argument(
+        "--output",
+        metavar="PREDICTED.csv",
+        help="batch output: the input columns and F, F.low, F.high for every predicted field F",
+    )
+    predict.set_defaults(func=run)
+
+
+def _count(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"{value} is negative")
+    return value
+
+
+def run(args: argparse.Namespace) -> int:
+    from sass_tui.db.predict import open_predictor
+
+    if args.input is not None:
+        if args.known or args.figure or args.nearest:
+            raise PredictArgumentError("--input takes neither --known, -o nor --nearest")
+        if not args.output:
+            raise PredictArgumentError("--input needs --output PREDICTED.csv")
+    elif args.output:
+        raise PredictArgumentError("--output is for a batch: give --input KNOWN.csv too")
+    elif not args.known:
+        raise PredictArgumentError("give at least one --known NAME=VALUE, or --input KNOWN.csv")
+    if args.figure and not args.figure.lower().endswith((".fig", ".x3d")):
+        raise PredictArgumentError(f"-o {args.figure}: the file must end in .fig or .x3d")
+    pairs = [_split_known(item) for item in args.known]
+    conn = open_db(args)
+    try:
+        predictor = open_predictor(conn)
+    finally:
+        conn.close()
+    if args.input is not None:
+        rows = predict_csv(predictor, args.gender, args.input, args.output)
+        print(f"wrote {args.output} ({rows} {'person' if rows == 1 else 'people'})")
+        return 0
+    known = predictor.parse_known(args.gender, pairs)
+    prediction = predictor.predict(args.gender, known, nearest=args.nearest)
+    out = sys.stdout
+    if args.format == "json":
+        import json
+
+        json.dump(prediction_json(predictor, prediction), out, indent=1)
+        out.write("\n")
+    elif args.format == "csv":
+        _write_csv(prediction, out)
+    else:
+        _write_table(prediction, out)
+    if args.figure:
+        path = write_prediction_figure(prediction, args.figure)
+        print(f"wrote {path}", file=sys.stderr if args.format != "table" else out)
+    return 0
+
+
+def _split_known(item: str) -> tuple[str, str]:
+    name, sep, value = item.partition("=")
+    if not sep or not name.strip() or not value.strip():
+        raise PredictArgumentError(f"--known {item!r}: expected NAME=VALUE, e.g. stature=175cm")
+    return name.strip(), value.strip()
+
+
+def prediction_json(predictor: Predictor, prediction: Prediction) -> dict[str, Any]:
+    """The JSON document of one prediction (issue 13's shape)."""
+    cv = predictor.cv_rmse(prediction.gender, prediction.known)
+    return {
+        "gender": prediction.gender,
+        "known": dict(prediction.known),
+        "predicted": {
+            name: {"value": e.value, "unit": e.unit, "low": e.low, "high": e.high}
+            for name, e in prediction.predicted.items()
+        },
+        "nearest": [
+            {"id": n.id, "name": n.name, "distance": round(n.distance, 4)}
+            for n in prediction.nearest
+        ],
+        "model": {"n": prediction.n, "cv_rmse": {k: round(v, 4) for k, v in cv.items()}},
+    }
+
+
+def _write_csv(prediction: Prediction, out: TextIO) -> None:
+    import csv
+
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(["field", "value", "unit", "low", "high", "known"])
+    for name, e in prediction.values.items():
+        writer.writerow(
+            [name, f"{e.value:.3f}", e.unit, f"{e.low:.3f}", f"{e.high:.3f}", int(e.known)]
+        )
+
+
+def _write_table(prediction: Prediction, out: TextIO) -> None:
+    out.write(
+        f"{prediction.gender}, {prediction.label()} "
+        f"(regression on {prediction.n} people; 90 % prediction intervals)\n"
+    )
+    width = max(len(name) for name in prediction.values)
+    out.write(f"{'field':<{width}}  {'value':>8} {'unit':<4}  {'90 % interval':>17}\n")
+    for name, e in prediction.values.items():
+        interval = "known" if e.known else f"{e.low:.2f} - {e.high:.2f}"
+        out.write(f"{name:<{width}}  {e.value:8.2f} {e.unit:<4}  {interval:>17}\n")
+    if prediction.nearest:
+        out.write("\nnearest real people (standardized distance over the known values):\n")
+        for n in prediction.nearest:
+            out.write(f"{n.id:>8}  {n.name:<24} {n.distance:7.3f}\n")
+
+
+def write_prediction_figure(prediction: Prediction, path: str) -> str:
+    """The predicted person as a .fig file or an HAnim .x3d humanoid; cells the
+    model has no value for come from the default population (the file says which)."""
+    import numpy as np
+
+    from sass_tui.model.figure import Figure
+    from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, ROWS
+
+    base = Figure.default(prediction.gender)
+    figure = base.for_person(
+        prediction.label(),
+        prediction.gender,
+        {
+            GIRTH: prediction.group_values(GIRTH),
+            JOINT_LIMITS: np.full((len(ROWS[JOINT_LIMITS]), 3), np.nan),
+            CENTER_OF_MASS: prediction.group_values(CENTER_OF_MASS),
+        },
+        mass=prediction.mass,
+        stature=prediction.stature,
+    )
+    if path.lower().endswith(".x3d"):
+        from sass_tui.model.hanim import export_hanim
+
+        return str(export_hanim(figure, path))
+    from sass_tui.model.figfile import write_fig
+
+    return str(write_fig(figure, path))
+
+
+def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> int:
+    """Batch: predict every row of `source`, write `target`.  Returns the rows.
+
+    Columns named like a known value are read (canonical units unless a cell
+    carries one; an empty cell is unknown for that row); other columns pass
+    through.  The output keeps the input columns as they were, an empty known
+    cell filled with its prediction, and adds F, F.low, F.high for every
+    predicted field F (F.low and F.high only, for a field that is an input column)."""
+    import csv
+    import io
+
+    import numpy as np
+
+    from sass_tui.model.atomic import write_text_atomic
+    from sass_tui.model.prediction import UnknownFieldError, field_unit
+    from sass_tui.model.units import UnitError, parse_quantity
+
+    try:
+        with open(source, encoding="utf-8-sig", newline="") as handle:
+            rows = list(csv.reader(handle))
+    except UnicodeDecodeError as exc:
+        raise PredictArgumentError(f"{source}: not UTF-8 text ({exc.reason})") from None
+    if not rows:
+        raise PredictArgumentError(f"{source}:1: the file is empty; expected a header row")
+    header, body = rows[0], rows[1:]
+    fields = predictor.fields(gender)
+    known_cols: list[int] = []
+    known_fields: list[str] = []
+    for c, name in enumerate(header):
+        try:
+            key = predictor.resolve(gender, name)
+        except UnknownFieldError:
+            continue  # a pass-through column
+        if key in known_fields:
+            raise PredictArgumentError(f"{source}:1: column {name!r} repeats {key}")
+        known_cols.append(c)
+        known_fields.append(key)
+    if not known_cols:
+        raise PredictArgumentError(
+            f"{source}:1: no column names a known value (stature, mass, measure.<name>, "
+            f"girth.<segment>.<axis>, center_of_mass.<segment>.<axis>)"
+        )
+    matrix = np.full((len(body), len(known_cols)), np.nan)
+    for r, row in enumerate(body):
+        line = r + 2
+        if len(row) != len(header):
+            raise PredictArgumentError(
+                f"{source}:{line}: expected {len(header)} fields, found {len(row)}"
+            )
+        for j, c in enumerate(known_cols):
+            text = row[c].strip()
+            if text:
+                try:
+                    matrix[r, j] = parse_quantity(text, field_unit(known_fields[j]))
+                except UnitError as exc:
+                    raise PredictArgumentError(
+                        f"{source}:{line}: column {header[c]}: {exc}", where=f"{source}:{line}"
+                    ) from None
+    out_fields, value, low, high = predictor.predict_matrix(
+        gender, known_fields, matrix, where=[f"{source}:{r + 2}" for r in range(len(body))]
+    )
+    index = {f: i for i, f in enumerate(out_fields)}
+    columns = list(header)
+    for f in fields:
+        if f not in known_fields:
+            columns.append(f)
+        columns += [f"{f}.low", f"{f}.high"]
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(columns)
+    known_index = [index[f] for f in known_fields]
+    for r, row in enumerate(body):
+        cells = list(row)
+        for c, i in zip(known_cols, known_index):
+            if not cells[c].strip():
+                cells[c] = f"{value[r, i]:.3f}"
+        for f in fields:
+            i = index[f]
+            if f not in known_fields:
+                cells.append(f"{value[r, i]:.3f}")
+            cells += [f"{low[r, i]:.3f}", f"{high[r, i]:.3f}"]
+        writer.writerow(cells)
+    write_text_atomic(target, buffer.getvalue())
+    return len(body)

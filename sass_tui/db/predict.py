@@ -1,0 +1,87 @@
+"""The prediction model of a database: fitted once, cached beside the file.
+
+`open_predictor(conn)` returns the `Predictor` (sass_tui/model/prediction.py)
+fitted on the database's people.  The fit is saved as `<database>.predict.npz`
+and reused while the data it was fitted on are unchanged: the file records a
+key (a hash of the people's count, ids, genders and the totals of every
+column the fit reads), recomputed from the database on each open — a few
+milliseconds of SQL, against loading and fitting every value.
+
+No Textual, no argument parsing, no printing.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import sqlite3
+from pathlib import Path
+
+from sass_tui.db.values import load_values
+from sass_tui.model.prediction import MODEL_VERSION, Predictor, predicted_fields
+
+CACHE_SUFFIX = ".predict.npz"
+
+
+def database_file(conn: sqlite3.Connection) -> Path | None:
+    """The file of the connection's main database (None: in memory)."""
+    for _, name, file in conn.execute("PRAGMA database_list"):
+        if name == "main":
+            return Path(file) if file else None
+    return None
+
+
+def cache_path(conn: sqlite3.Connection) -> Path | None:
+    db = database_file(conn)
+    return None if db is None else db.with_name(db.name + CACHE_SUFFIX)
+
+
+def _columns(conn: sqlite3.Connection, table: str) -> list[str]:
+    return [row[1] for row in conn.execute(f"PRAGMA table_info({table})")]
+
+
+def data_key(conn: sqlite3.Connection) -> str:
+    """A hash that changes when people are added, removed or their values edited."""
+    fields = predicted_fields()
+    parts: list[object] = [MODEL_VERSION, fields]
+    parts += conn.execute(
+        "SELECT count(*), total(id_num), total(id_num * (gender = 'male')), "
+        "total(stature), total(mass) FROM person"
+    ).fetchone()
+    measure = [c for c in _columns(conn, "measure") if c != "id_num"]
+    if measure:
+        totals = ", ".join(f'total("{c}")' for c in measure)
+        parts += conn.execute(f"SELECT count(*), total(id_num), {totals} FROM measure").fetchone()
+    parts += conn.execute(
+        "SELECT count(*), total(id_num), total(thickness), total(width), total(length) FROM girth"
+    ).fetchone()
+    parts += conn.execute(
+        "SELECT count(*), total(id_num), total(cmass_x), total(cmass_y), total(cmass_z) "
+        "FROM center_of_mass"
+    ).fetchone()
+    return hashlib.sha256(repr(parts).encode()).hexdigest()
+
+
+def fit_predictor(conn: sqlite3.Connection, key: str = "") -> Predictor:
+    """Fit the model on every person of the database (no cache)."""
+    fields = predicted_fields()
+    values = load_values(conn, fields)
+    return Predictor.fit(values, fields, key=key)
+
+
+def open_predictor(conn: sqlite3.Connection, *, cache: bool = True) -> Predictor:
+    """The database's prediction model: from the cache file when it is current,
+    else fitted now and saved there (a database in memory or in a directory
+    that cannot be written is simply not cached)."""
+    key = data_key(conn)
+    path = cache_path(conn) if cache else None
+    if path is not None:
+        cached = Predictor.load(path, key)
+        if cached is not None:
+            return cached
+    predictor = fit_predictor(conn, key)
+    if path is not None:
+        try:
+            predictor.save(path)
+        except OSError:
+            pass  # a read-only place: predict without a cache
+    return predictor
