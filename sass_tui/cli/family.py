@@ -105,10 +105,10 @@ def run(args: argparse.Namespace) -> int:
         f"({coverage.within_ranges} people)\n"
     )
     width = max(len(m.name) for m in written.manikins)
-    header = "".join(f" {f:>14.14}" for f in written.measures)
+    header = "".join(f" {f.removeprefix('measure.'):>17.17}" for f in written.measures)
     out.write(f"\n{'manikin':<{width}}{header}   nearest person (distance, SD)\n")
     for manikin in written.manikins:
-        cells = "".join(f" {manikin.values[f]:>14.1f}" for f in written.measures)
+        cells = "".join(f" {manikin.values[f]:>17.1f}" for f in written.measures)
         out.write(
             f"{manikin.name:<{width}}{cells}   {manikin.nearest.id} {manikin.nearest.name} "
             f"({manikin.nearest.distance:.2f})\n"
