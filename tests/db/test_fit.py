@@ -309,3 +309,49 @@ def test_cli_table_and_errors(ansur_db_file):
     assert "sass fit: error: --population" in bad.stderr and "Traceback" not in bad.stderr
     bad = _sass("fit", "--db", str(ansur_db_file), "--mix", "male=1,x=2", "mass < 3")
     assert bad.returncode == 2 and "GENDER=WEIGHT" in bad.stderr
+
+
+_WEIGHTS = st.floats(0, 1e6, allow_nan=False, allow_infinity=False)
+
+
+@given(st.dictionaries(st.sampled_from(["male", "female"]), _WEIGHTS, min_size=1))
+def test_mix_argument_reads_what_it_is_given(mix):
+    from sass_tui.cli.fit import mix_argument
+
+    text = ",".join(f"{g}={w!r}" for g, w in mix.items())
+    assert mix_argument(text) == mix
+    if sum(mix.values()) > 0:
+        normalised = check_mix(mix)
+        assert sum(normalised.values()) == pytest.approx(1.0)
+    else:
+        with pytest.raises(FitError):
+            check_mix(mix)
+
+
+@given(st.text(max_size=30))
+def test_mix_argument_refuses_or_reads_any_text(text):
+    import argparse
+
+    from sass_tui.cli.fit import mix_argument
+
+    try:
+        mix = mix_argument(text)
+    except argparse.ArgumentTypeError as exc:
+        assert str(exc)
+    else:
+        assert set(mix) <= {"male", "female"}
+
+
+@given(st.text(max_size=40))
+def test_family_arguments_refuse_or_read_any_text(text):
+    import argparse
+
+    from sass_tui.cli.family import coverage_argument, measures_argument
+
+    for parse in (coverage_argument, measures_argument):
+        try:
+            value = parse(text)
+        except argparse.ArgumentTypeError as exc:
+            assert str(exc)
+        else:
+            assert value is not None
