@@ -14,7 +14,20 @@ CLI_MODULES = [
     "sass_tui.cli",
     *(
         f"sass_tui.cli.{m}"
-        for m in ("db", "export", "fig", "options", "predict", "progress", "query", "strength")
+        for m in (
+            "db",
+            "export",
+            "family",
+            "fig",
+            "fit",
+            "options",
+            "person",
+            "population",
+            "predict",
+            "progress",
+            "query",
+            "strength",
+        )
     ),
 ]
 

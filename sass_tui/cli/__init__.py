@@ -12,10 +12,21 @@ import argparse
 import os
 import sys
 
-from sass_tui.cli import db, export, family, fig, fit, predict, query, strength
+from sass_tui.cli import (
+    db,
+    export,
+    family,
+    fig,
+    fit,
+    person,
+    population,
+    predict,
+    query,
+    strength,
+)
 from sass_tui.cli.options import DB_HELP
 
-VERBS = (fig, export, strength, query, predict, fit, family, db)
+VERBS = (fig, export, strength, query, person, population, predict, fit, family, db)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -19,9 +19,22 @@ def add_db_option(parser: argparse.ArgumentParser) -> None:
 
 
 def open_db(args: argparse.Namespace, create: bool = False):  # -> sqlite3.Connection
-    from sass_tui.db.default import open_database
+    """The database `--db` names, or the default one (built on first use, with
+    a progress bar on a terminal)."""
+    import sys
 
-    return open_database(getattr(args, "db", None), create=create)
+    from sass_tui.cli.progress import progress_for
+    from sass_tui.db.default import needs_building, open_database
+    from sass_tui.db.schema import default_db_path
+
+    path = getattr(args, "db", None)
+    bar = None
+    if path is None and needs_building(default_db_path()):
+        bar = progress_for(sys.stderr, f"building {default_db_path()}")
+    conn = open_database(path, create=create, progress=bar)
+    if bar:
+        bar.finish()
+    return conn
 
 
 def percentile(text: str) -> float:

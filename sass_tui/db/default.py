@@ -35,11 +35,14 @@ ANSUR_FILES = ("ANSUR_II_MALE_Public.csv.gz", "ANSUR_II_FEMALE_Public.csv.gz")
 SYNTHETIC_LABEL = "synthetic"
 
 
-def open_database(path: str | Path | None = None, *, create: bool = False) -> sqlite3.Connection:
-    """Open `path`, or the default database (built from the shipped data on first use)."""
+def open_database(
+    path: str | Path | None = None, *, create: bool = False, progress: Progress | None = None
+) -> sqlite3.Connection:
+    """Open `path`, or the default database (built from the shipped data on
+    first use, reporting `progress(done, total)` as it goes)."""
     if path is not None:
         return connect(Path(path).expanduser() if _expandable(path) else path, create=create)
-    return default_database()
+    return default_database(progress)
 
 
 def _expandable(path: str | Path) -> bool:
@@ -50,12 +53,16 @@ def _expandable(path: str | Path) -> bool:
     return True
 
 
-def default_database() -> sqlite3.Connection:
+def default_database(progress: Progress | None = None) -> sqlite3.Connection:
     """Open the default database, creating it from the shipped data sets on first use."""
     path = default_db_path()
-    if not path.exists() or path.stat().st_size == 0:
-        create_default_database(path)
+    if needs_building(path):
+        create_default_database(path, progress)
     return connect(path)
+
+
+def needs_building(path: Path) -> bool:
+    return not path.exists() or path.stat().st_size == 0
 
 
 def shipped_ansur_files() -> list[Path]:

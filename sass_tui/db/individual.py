@@ -13,6 +13,7 @@ from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
     JOINT_LIMIT_NAMES,
+    PERSON_ATTRIBUTES,
     QUERY_TABLES,
     STRENGTH_PARAMETERS,
     STRENGTH_Q_COLUMNS,
@@ -120,3 +121,96 @@ def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
             )
         ),
     )
+
+
+# --- a whole person for `sass person` (the headless Disp. Indv.) ---------------------
+
+_AXES = ("x", "y", "z")
+
+
+def find_person(conn: sqlite3.Connection, key: str) -> int:
+    """The id of the person `key` names: a database id, or a name (any case)."""
+    text = key.strip()
+    if text.isdigit():
+        row = conn.execute("SELECT id_num FROM person WHERE id_num = ?", (int(text),)).fetchone()
+        if row is not None:
+            return int(row[0])
+    found = [
+        int(r[0])
+        for r in conn.execute(
+            "SELECT id_num FROM person WHERE name = ? COLLATE NOCASE ORDER BY id_num", (text,)
+        )
+    ]
+    if len(found) == 1:
+        return found[0]
+    if found:
+        raise DatabaseError(
+            f"{len(found)} people are named {key!r} (ids {', '.join(map(str, found[:10]))}); "
+            "give the id"
+        )
+    raise DatabaseError(f"no person with id or name {key!r}")
+
+
+def person_record(conn: sqlite3.Connection, id_num: int) -> dict[str, object]:
+    """Everything stored about one person, by query-language names, canonical
+    units (cm, kg, deg, N-m): `values` (group rows and survey attributes),
+    `measures` (ANSUR II measurements) and `unmeasured` (names with no value)."""
+    from sass_tui.model.measures import MEASURES
+
+    person = fetch_individual(conn, id_num)
+    values: dict[str, object] = {}
+    unmeasured: list[str] = []
+    for word, group, names in (
+        ("girth", GIRTH, GIRTH_NAMES),
+        ("joint_limit", JOINT_LIMITS, JOINT_LIMIT_NAMES),
+        ("center_of_mass", CENTER_OF_MASS, CENTER_OF_MASS_NAMES),
+    ):
+        cells = person.groups[group]
+        for r, row in enumerate(names):
+            for a, axis in enumerate(_AXES):
+                name = f"{word}.{row}.{axis}"
+                value = float(cells[r, a])
+                if value == value:
+                    values[name] = value
+                else:
+                    unmeasured.append(name)
+    for table_name, motion in zip(QUERY_TABLES["strength"].values(), QUERY_TABLES["strength"]):
+        row = conn.execute(f"SELECT max FROM {table_name} WHERE id_num = ?", (id_num,)).fetchone()
+        name = f"strength.{motion}.max"
+        if row is not None and row[0] is not None:
+            values[name] = float(row[0])
+        else:
+            unmeasured.append(name)
+    attributes = conn.execute(
+        f"SELECT handedness, {', '.join(PERSON_ATTRIBUTES)} FROM person WHERE id_num = ?",
+        (id_num,),
+    ).fetchone()
+    for name, value in zip(("handedness", *PERSON_ATTRIBUTES), attributes):
+        if value is not None:
+            values[name] = value
+    measured = conn.execute(
+        f"SELECT {', '.join(MEASURES)} FROM measure WHERE id_num = ?", (id_num,)
+    ).fetchone()
+    measures: dict[str, float] = {}
+    for k, name in enumerate(MEASURES):
+        value = None if measured is None else measured[k]
+        if value is None:
+            unmeasured.append(f"measure.{name}")
+        else:
+            measures[name] = float(value)
+
+    def number(value: float) -> float | None:
+        return None if value != value else value
+
+    return {
+        "id": person.id_num,
+        "name": person.name,
+        "gender": person.gender,
+        "mass": number(person.mass),
+        "stature": number(person.stature),
+        "age": number(person.age),
+        "source": person.source,
+        "values": values,
+        "measures": measures,
+        "unmeasured": unmeasured,
+    }

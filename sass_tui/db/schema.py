@@ -440,12 +440,11 @@ class transaction:
         self.conn.execute(f"BEGIN {self.mode}")
         return self.conn
 
-    def __exit__(self, exc_type: object, exc: object, tb: object) -> bool:
+    def __exit__(self, exc_type: object, exc: object, tb: object) -> None:
         if exc_type is None:
             self.conn.execute("COMMIT")
         elif self.conn.in_transaction:
             self.conn.execute("ROLLBACK")
-        return False
 
 
 def row_counts(conn: sqlite3.Connection) -> dict[str, int]:

@@ -138,7 +138,7 @@ def _fill_measures(
         packed = np.frombuffer(b"".join(b for b in blobs if b is not None), dtype="<f8")
         packed = packed.reshape(-1, width // 8)
         rows = np.flatnonzero(have)
-        matrix[np.ix_(rows, targets)] = packed[:, sources]
+        matrix[np.ix_(rows, np.array(targets, dtype=np.intp))] = packed[:, sources]
     stale = [k for k in range(len(ids)) if measured[k] and blobs[k] is None]
     columns = ", ".join(MEASURES[j] for j in sources)
     for start in range(0, len(stale), 500):

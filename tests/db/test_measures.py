@@ -210,3 +210,67 @@ def test_load_values_refuses_text_fields_and_unknown_names(default_db):
         load_values(default_db, ["measure.sitingheight"])
     empty = load_values(default_db, ["stature"], "stature > 1000 cm")
     assert empty.matrix.shape == (0, 1)
+
+
+# --- the parser takes any text: a query or a QueryError, never anything else ----------
+
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+QUERY_WORDS = st.sampled_from(
+    [
+        "measure.sittingheight",
+        "measure.weightkg",
+        "branch",
+        "source",
+        "component",
+        "age",
+        "gender",
+        "dodrace",
+        "=",
+        "!=",
+        ">",
+        "<=",
+        "AND",
+        "OR",
+        "(",
+        ")",
+        "'Combat Arms'",
+        '"x y"',
+        "'",
+        "95",
+        "cm",
+        "kg",
+        "ansur2",
+        "female",
+        "measure.",
+        "measure.sitingheight",
+    ]
+)
+
+
+@settings(
+    max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+@given(words=st.lists(QUERY_WORDS, min_size=1, max_size=9))
+def test_query_words_compile_or_fail_cleanly(default_db, words):
+    text = " ".join(words)
+    try:
+        query = run_query(default_db, text)
+    except QueryError as exc:
+        assert exc.column is None or 1 <= exc.column <= len(text) + 1
+        return
+    assert 0 <= query.count() <= 6268
+
+
+@settings(
+    max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
+@given(value=st.text(max_size=20).filter(lambda t: "'" not in t))
+def test_any_quoted_text_is_a_parameter(default_db, value):
+    try:
+        compiled = compile_query(f"branch = '{value}'")
+    except QueryError:
+        return  # e.g. characters the grammar does not take
+    assert compiled.params == (value,)
+    assert "'" not in compiled.where and '"' not in compiled.where  # no literal in the SQL

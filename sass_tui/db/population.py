@@ -1,0 +1,109 @@
+"""Populations made from a selection of people (what SASS's users did by hand):
+the empirical 5th, 50th and 95th percentile, per gender, of every girth and
+center-of-mass row, from the selected people's own values.
+
+The result is one PopulationData per group (report figure 7's format), ready
+for `popfile.write_population_file` or for loading into the spreadsheet.  A
+cell with fewer than MIN_PEOPLE values is left empty (999 in the file).  No
+Textual import here.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import sqlite3
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from sass_tui.db.schema import CENTER_OF_MASS_NAMES, GIRTH_NAMES
+from sass_tui.db.values import load_values
+from sass_tui.model.errors import SassError
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH
+from sass_tui.model.popfile import PopulationData
+from sass_tui.model.vocabulary import GENDERS
+
+MIN_PEOPLE = 20
+PERCENTILES = (5.0, 50.0, 95.0)
+_GROUPS = ((GIRTH, "girth", GIRTH_NAMES), (CENTER_OF_MASS, "center_of_mass", CENTER_OF_MASS_NAMES))
+_PLURAL = {"male": "men", "female": "women"}
+
+
+def people_words(counts: dict[str, int]) -> str:
+    """{"male": 3, "female": 1} -> "3 men and 1 woman"."""
+    single = {"male": "man", "female": "woman"}
+    return " and ".join(f"{n} {single[g] if n == 1 else _PLURAL[g]}" for g, n in counts.items())
+
+
+class PopulationError(ValueError, SassError):
+    """A selection that cannot make a population (nothing was written)."""
+
+
+@dataclass(frozen=True)
+class SelectionPopulation:
+    query: str
+    counts: dict[str, int]  # people per gender
+    groups: dict[str, PopulationData]  # GIRTH, CENTER_OF_MASS (groups with no value left out)
+    empty_groups: tuple[str, ...]  # groups none of the people has a value of
+
+
+def group_fields(word: str, rows: Sequence[str]) -> list[str]:
+    return [f"{word}.{row}.{axis}" for row in rows for axis in ("x", "y", "z")]
+
+
+def population_of(
+    conn: sqlite3.Connection, query: str, *, title: str | None = None, date: str | None = None
+) -> SelectionPopulation:
+    """The population of the people `query` selects (see the module's docstring).
+    Raises PopulationError when nobody matches or a gender has fewer than
+    MIN_PEOPLE people; QueryError for a bad query."""
+    when = date or _dt.date.today().isoformat()
+    fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)]
+    values = load_values(conn, fields, query)
+    genders = np.array(values.genders, dtype=object)
+    counts: dict[str, int] = {g: int(np.sum(genders == g)) for g in GENDERS if np.any(genders == g)}
+    if not counts:
+        raise PopulationError(f"the query selects nobody: {query}")
+    small = {g: n for g, n in counts.items() if n < MIN_PEOPLE}
+    if small:
+        said = people_words(small)
+        raise PopulationError(
+            f"the query selects only {said}; a population needs at least {MIN_PEOPLE} "
+            "people of each gender it holds (widen the query, or leave that gender out "
+            "with `AND gender = ...`)"
+        )
+    described = people_words(counts)
+    heading = title or f"Population of {query}"
+    groups: dict[str, PopulationData] = {}
+    empty: list[str] = []
+    start = 0
+    for group, _word, rows in _GROUPS:
+        width = len(rows) * 3
+        block = values.matrix[:, start : start + width]
+        start += width
+        if np.isnan(block).all():
+            empty.append(group)
+            continue
+        data = PopulationData(
+            group=group,
+            title=f"{heading} ({described}; sass query, {when})",
+            path="",
+        )
+        for gender in counts:
+            people = block[genders == gender]
+            data.sections[gender] = _percentiles(people).reshape(len(rows), 3, 3)
+            data.lines[gender] = [0] * len(rows)
+        groups[group] = data
+    return SelectionPopulation(query, counts, groups, tuple(empty))
+
+
+def _percentiles(people: np.ndarray) -> np.ndarray:
+    """Per column, 5th/50th/95th of the values present (NaN below MIN_PEOPLE)."""
+    out = np.full((people.shape[1], len(PERCENTILES)), np.nan)
+    for k in range(people.shape[1]):
+        column = people[:, k]
+        column = column[~np.isnan(column)]
+        if len(column) >= MIN_PEOPLE:
+            out[k] = np.percentile(column, PERCENTILES)
+    return out

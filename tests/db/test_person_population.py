@@ -1,0 +1,181 @@
+"""`sass person` (the headless Disp. Indv.) against the published CSV, and
+`sass population` (populations from a selection) against medians computed
+independently with plain SQL and the statistics module."""
+
+from __future__ import annotations
+
+import csv
+import json
+import statistics
+
+import pytest
+
+from sass_tui.cli import main
+from sass_tui.db.population import MIN_PEOPLE, PopulationError, population_of
+from sass_tui.db.schema import QUERY_TABLES
+from sass_tui.model.measures import MEASURES
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, ROWS
+from sass_tui.model.popfile import read_population_file
+
+FILES = ("ANSUR_II_MALE_Public.csv", "ANSUR_II_FEMALE_Public.csv")
+KEYS = {
+    "id",
+    "name",
+    "gender",
+    "mass",
+    "stature",
+    "age",
+    "source",
+    "values",
+    "measures",
+    "unmeasured",
+}
+
+
+@pytest.fixture(scope="module")
+def survey(ansur_dir) -> dict[str, dict[str, str]]:
+    out = {}
+    for name in FILES:
+        with (ansur_dir / name).open(encoding="cp1252", newline="") as handle:
+            for row in csv.DictReader(handle):
+                row = {k.lower(): v for k, v in row.items()}
+                letter = "M" if row["gender"] == "Male" else "F"
+                out[f"ANSUR II {letter} {row['subjectid']}"] = row
+    return out
+
+
+def _json(capsys, *argv) -> dict:
+    assert main(list(argv)) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_person_json_gives_the_survey_values(default_db_file, survey, capsys):
+    names = ["ANSUR II M 10027", "ANSUR II F 10037", "ANSUR II M 29452"]
+    names = [n for n in names if n in survey][:2] + [next(n for n in survey if " F " in n)]
+    out = _json(capsys, "person", "--db", str(default_db_file), "--format", "json", *names)
+    assert [p["name"] for p in out["persons"]] == names
+    for person in out["persons"]:
+        row = survey[person["name"]]
+        assert set(person) == KEYS
+        assert person["gender"] == row["gender"].lower()
+        assert person["source"] == "ansur2"
+        assert person["stature"] == pytest.approx(float(row["stature"]) / 10)
+        assert person["mass"] == pytest.approx(float(row["weightkg"]) / 10)
+        assert person["age"] == float(row["age"])
+        assert set(person["measures"]) == set(MEASURES)
+        for name in MEASURES:
+            scale = 100 if name == "interpupillarybreadth" else 10
+            assert person["measures"][name] == pytest.approx(float(row[name]) / scale)
+        assert person["values"]["branch"] == row["branch"]
+        assert person["values"]["component"] == row["component"]
+        assert person["values"]["dodrace"] == int(row["dodrace"])
+        unmeasured = set(person["unmeasured"])
+        assert "joint_limit.right_shoulder_ul.x" in unmeasured
+        assert "center_of_mass.neck.z" in unmeasured
+        assert "strength.elbow_flexion.max" in unmeasured
+        assert not any(u.startswith("measure.") for u in unmeasured)
+        assert not unmeasured & set(person["values"])
+
+
+def test_person_by_id_and_the_unmeasured(default_db_file, capsys):
+    out = _json(capsys, "person", "--db", str(default_db_file), "--format", "json", "1")
+    person = out["persons"][0]
+    assert person["name"] == "SYNTH_M_001" and person["source"] == "synthetic"
+    assert person["measures"] == {}
+    assert {f"measure.{m}" for m in MEASURES} <= set(person["unmeasured"])
+    assert person["values"]["girth.right_upper_arm.z"] > 20
+    assert person["values"]["strength.elbow_flexion.max"] > 0
+
+
+def test_person_table_and_errors(default_db_file, capsys):
+    assert main(["person", "--db", str(default_db_file), "ansur ii m 10027", "2"]) == 0
+    out = capsys.readouterr().out
+    assert "ANSUR II M 10027" in out and "SYNTH_M_002" in out and "sittingheight" in out
+    assert main(["person", "--db", str(default_db_file), "nobody at all"]) == 2
+    assert "no person with id or name 'nobody at all'" in capsys.readouterr().err
+
+
+QUERY = "gender = female AND age < 25"
+
+
+def _medians_by_sql(conn, table: str, axis: str) -> tuple[float, int]:
+    values = [
+        v
+        for (v,) in conn.execute(
+            f"SELECT q.{axis} FROM person p JOIN {table} q ON q.id_num = p.id_num "
+            "WHERE p.gender = 'female' AND p.age < 25 AND q.{axis} IS NOT NULL".replace(
+                "{axis}", axis
+            )
+        )
+    ]
+    return (statistics.median(values) if values else float("nan")), len(values)
+
+
+def test_population_file_50th_are_the_medians(default_db, default_db_file, tmp_path, capsys):
+    target = tmp_path / "young.dat"
+    assert (
+        main(["population", "--db", str(default_db_file), "--query", QUERY, "-o", str(target)]) == 0
+    )
+    said = capsys.readouterr().out
+    assert "young.dat" in said and "young-cmass.dat" in said
+    women = default_db.execute(
+        "SELECT count(*) FROM person WHERE gender = 'female' AND age < 25"
+    ).fetchone()[0]
+    for group, path, table_group in (
+        (GIRTH, target, "girth"),
+        (CENTER_OF_MASS, tmp_path / "young-cmass.dat", "center_of_mass"),
+    ):
+        data = read_population_file(path, group)
+        assert data.has("female") and not data.has("male")
+        assert QUERY in data.title and f"{women} women" in data.title
+        stats = data.stats("female")
+        checked = 0
+        for r, row in enumerate(ROWS[group]):
+            table = QUERY_TABLES[table_group][row.name]
+            for a, axis in enumerate("xyz"):
+                median, n = _medians_by_sql(default_db, table, axis)
+                if n >= MIN_PEOPLE:
+                    assert stats[r, a, 1] == pytest.approx(median, abs=1e-4), (row.name, axis)
+                    checked += 1
+                else:
+                    assert stats[r, a, 1] != stats[r, a, 1]  # NaN: 999 in the file
+        assert checked > 20
+    fig = tmp_path / "young.fig"
+    assert main(["fig", "--girth", str(target), "--gender", "female", "-o", str(fig)]) == 0
+    assert fig.is_file()
+
+
+def test_population_5th_and_95th(default_db):
+    result = population_of(default_db, "gender = male AND source = ansur2", date="2026-01-01")
+    stats = result.groups[GIRTH].stats("male")
+    arm = [
+        v
+        for (v,) in default_db.execute(
+            "SELECT q.z FROM person p JOIN q_girth_right_upper_arm q ON q.id_num = p.id_num "
+            "WHERE p.gender = 'male' AND p.source = 'ansur2'"
+        )
+    ]
+    cuts = statistics.quantiles(arm, n=20, method="inclusive")
+    r = [row.name for row in ROWS[GIRTH]].index("right_upper_arm")
+    assert stats[r, 2, 0] == pytest.approx(cuts[0])
+    assert stats[r, 2, 2] == pytest.approx(cuts[-1])
+    assert result.empty_groups == (CENTER_OF_MASS,)  # ANSUR II has no centers of mass
+    assert "2026-01-01" in result.groups[GIRTH].title and "4082 men" in result.groups[GIRTH].title
+
+
+def test_a_gender_with_too_few_people_is_refused(default_db, default_db_file, tmp_path, capsys):
+    with pytest.raises(PopulationError, match=r"only 1 woman; .* at least 20"):
+        population_of(default_db, "gender = female AND age < 18")
+    men = default_db.execute(
+        "SELECT count(*) FROM person WHERE gender = 'male' AND age < 19"
+    ).fetchone()[0]
+    assert men >= MIN_PEOPLE
+    with pytest.raises(PopulationError, match=r"only 1 woman;"):  # the men alone would do
+        population_of(default_db, "age < 19 AND (gender = male OR age < 18)")
+    argv = ["population", "--db", str(default_db_file), "--query", "age < 18"]
+    assert main([*argv, "-o", str(tmp_path / "x.dat")]) == 2
+    assert "only 1 man and 1 woman" in capsys.readouterr().err
+    target = tmp_path / "none.dat"
+    with pytest.raises(PopulationError, match="selects nobody"):
+        population_of(default_db, "stature > 500 cm")
+    assert not target.exists()
