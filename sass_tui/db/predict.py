@@ -7,6 +7,18 @@ key (a hash of the people's count, ids, genders and the totals of every
 column the fit reads), recomputed from the database on each open — a few
 milliseconds of SQL, against loading and fitting every value.
 
+What the CLI (`sass predict`) and the TUI call:
+
+    predictor = open_predictor(conn)                       # cached fit
+    predictor.fields("male")                               # names, for completion
+    known = predictor.parse_known("male", split_known("stature=180 cm, mass=85kg"))
+    prediction = predictor.predict("male", known, nearest=5)
+    prediction.values["girth.right_upper_arm.z"]           # Estimate(value, low, high, unit, known)
+    prediction.group_values(GIRTH, "low")                  # (rows, 3) interval ends per cell
+    prediction.figure(population_figure)                   # Disp. Indv.-style Figure
+    prediction.label()                                     # "predicted from stature 180 cm, ..."
+    prediction.nearest                                     # [Neighbour(id, name, distance)]
+
 No Textual, no argument parsing, no printing.
 """
 

@@ -36,12 +36,13 @@ from __future__ import annotations
 import difflib
 import math
 import os
+import re
 import tempfile
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from statistics import NormalDist
-from typing import Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -51,6 +52,9 @@ from sass_tui.model.measures import MEASURE_UNITS, MEASURES
 from sass_tui.model.names import AXES, CENTER_OF_MASS, CENTER_OF_MASS_ROWS, GIRTH, GIRTH_ROWS
 from sass_tui.model.units import UnitError, parse_quantity
 from sass_tui.model.vocabulary import GENDERS
+
+if TYPE_CHECKING:
+    from sass_tui.model.figure import Figure
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -92,10 +96,17 @@ class NoDataError(PredictionError):
 class TrainingValues(Protocol):
     """What the fit reads: `sass_tui.db.values.Values` has this shape."""
 
-    ids: Sequence[int] | npt.NDArray[np.int64]
-    names: Sequence[str]
-    genders: Sequence[str]
-    matrix: FloatArray  # (people, fields), canonical units, NaN = no value
+    @property
+    def ids(self) -> npt.ArrayLike: ...  # (people,) whole numbers
+
+    @property
+    def names(self) -> Sequence[str]: ...
+
+    @property
+    def genders(self) -> Sequence[str]: ...
+
+    @property
+    def matrix(self) -> npt.NDArray[Any]: ...  # (people, fields), canonical units, NaN = none
 
 
 # --- names ----------------------------------------------------------------
@@ -121,6 +132,22 @@ def field_unit(name: str) -> str:
     if name.startswith("measure."):
         return MEASURE_UNITS[name.removeprefix("measure.")]
     return "cm"
+
+
+def split_known(text: str) -> list[tuple[str, str]]:
+    """'stature=180 cm, mass=85kg' -> [("stature", "180 cm"), ("mass", "85kg")]
+    (items separated by commas or semicolons; what the TUI's input line takes)."""
+    pairs = []
+    for item in re.split(r"[;,]", text):
+        if not item.strip():
+            continue
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip() or not value.strip():
+            raise PredictionError(
+                f"{item.strip()!r}: expected NAME=VALUE, e.g. stature=175cm", where=item.strip()
+            )
+        pairs.append((name.strip(), value.strip()))
+    return pairs
 
 
 def _check_gender(gender: str) -> str:
@@ -245,15 +272,38 @@ class Prediction:
     def mass(self) -> float:
         return self.value("mass")
 
-    def group_values(self, group: str) -> FloatArray:
+    def group_values(self, group: str, bound: str = "value") -> FloatArray:
         """A girth or center-of-mass group as (rows, 3) for `Figure.for_person`;
-        NaN where the model has no value (the figure fills those from the population)."""
+        NaN where the model has no value (the figure fills those from the
+        population).  `bound` "low" or "high" gives the interval's ends instead
+        (a known cell: its value)."""
         rows = {GIRTH: GIRTH_ROWS, CENTER_OF_MASS: CENTER_OF_MASS_ROWS}[group]
         out = np.full((len(rows), 3), np.nan)
         for r, row in enumerate(rows):
             for a, axis in enumerate(AXES):
-                out[r, a] = self.value(f"{group}.{row.name}.{axis}")
+                estimate = self.values.get(f"{group}.{row.name}.{axis}")
+                if estimate is not None:
+                    out[r, a] = getattr(estimate, bound)
         return out
+
+    def figure(self, base: Figure) -> Figure:
+        """The predicted person as a figure (like Disp. Indv.): girth and center
+        of mass from the prediction, percentiles against `base`'s population,
+        joint limits and any cell without a prediction from that population at
+        output.  `base` is left unchanged, so Disp. Pop. returns to it."""
+        from sass_tui.model.names import JOINT_LIMITS, ROWS
+
+        return base.for_person(
+            self.label(),
+            self.gender,
+            {
+                GIRTH: self.group_values(GIRTH),
+                JOINT_LIMITS: np.full((len(ROWS[JOINT_LIMITS]), 3), np.nan),
+                CENTER_OF_MASS: self.group_values(CENTER_OF_MASS),
+            },
+            mass=self.mass,
+            stature=self.stature,
+        )
 
     def label(self) -> str:
         """'predicted from stature 180 cm, mass 85 kg' (the population label of the figure)."""
@@ -277,7 +327,7 @@ class Predictor:
         fields = tuple(fields)
         if np.shape(data.matrix)[1:] != (len(fields),):
             raise ValueError(f"matrix has shape {np.shape(data.matrix)}, fields {len(fields)}")
-        models = {}
+        models: dict[str, GenderModel] = {}
         for gender in GENDERS:
             try:
                 models[gender] = GenderModel.fit(gender, fields, data)
@@ -455,15 +505,21 @@ class Predictor:
         index = m.index()
         cols = np.array([index.get(k, -1) for k in keys])
         known_mask = np.isfinite(matrix)
-        patterns, inverse = np.unique(known_mask, axis=0, return_inverse=True)
+        # one integer per row for the set of names it knows
+        if len(keys) < 63:
+            bits = np.int64(1) << np.arange(len(keys), dtype=np.int64)
+            codes = known_mask.astype(np.int64) @ bits
+        else:
+            codes = np.unique(known_mask, axis=0, return_inverse=True)[1].reshape(-1)
         low, high = value.copy(), value.copy()
-        for p, pattern in enumerate(patterns):
-            sel = np.flatnonzero(inverse.reshape(-1) == p)
+        for code in np.unique(codes):
+            sel = np.flatnonzero(codes == code)
+            pattern = known_mask[sel[0]]
             use = pattern & (cols >= 0)
             k_idx = cols[use].tolist()
             # duplicates (an alias and its field) keep the last, as predict does
             order = list(dict.fromkeys(reversed(k_idx)))[::-1]
-            take = [int(np.flatnonzero(use & (cols == c))[-1]) for c in order]
+            take = np.array([np.flatnonzero(use & (cols == c))[-1] for c in order], dtype=np.intp)
             known_values = matrix[np.ix_(sel, take)]
             z = (known_values - m.mean[order]) / m.sd[order]
             self._check_outliers(
@@ -581,10 +637,11 @@ def _condition(
     cross = m.corr[k_idx]  # (k, p)
     inverse, rank = _pinv(m.corr[np.ix_(k_idx, k_idx)])
     coef = inverse @ cross  # (k, p)
-    z_mean = z_known @ coef
     variance = np.clip(1.0 - np.einsum("kp,kp->p", cross, coef), 0.0, None)
     dof = (m.n - 1) / max(m.n - rank - 1, 1)
     distance2 = np.einsum("ij,jk,ik->i", z_known, inverse, z_known)
     leverage = 1.0 + 1.0 / m.n + distance2 / (m.n - 1)
-    half = Z * m.sd * np.sqrt(variance * dof)[None, :] * np.sqrt(leverage)[:, None]
-    return m.mean + z_mean * m.sd, half
+    half = np.outer(np.sqrt(leverage), Z * m.sd * np.sqrt(variance * dof))
+    mean = z_known @ (coef * m.sd)
+    mean += m.mean
+    return mean, half

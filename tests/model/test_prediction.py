@@ -17,9 +17,11 @@ from sass_tui.model.prediction import (
     FieldUnitError,
     NoDataError,
     OutlierError,
+    PredictionError,
     Predictor,
     UnknownFieldError,
     Z,
+    split_known,
 )
 
 
@@ -261,3 +263,51 @@ def test_known_values_parse_with_any_length_unit(predictor, number, unit):
     text = f"{number / factor!r}{unit}"
     parsed = predictor.parse_known("male", [("stature", text)])
     assert parsed["stature"] == pytest.approx(number, rel=1e-9)
+
+
+def test_batch_with_every_measurement_known_matches_one_by_one(values, predictor):
+    """More known names than fit in one integer's bits (the row grouping's other path)."""
+    names = [f for f in values.fields if f in ("stature", "mass") or f.startswith("measure.")]
+    col = {f: i for i, f in enumerate(values.fields)}
+    rows = _rows(values, "male")[:4]
+    matrix = values.matrix[np.ix_(rows, [col[n] for n in names])].copy()
+    matrix[1, 5] = matrix[3, 7] = np.nan
+    assert len(names) > 63
+    fields, value, _, high = predictor.predict_matrix("male", names, matrix)
+    for r, row in enumerate(matrix):
+        one = predictor.predict("male", {n: v for n, v in zip(names, row) if not math.isnan(v)})
+        for i, f in enumerate(fields):
+            assert value[r, i] == pytest.approx(one.values[f].value, abs=1e-7)
+            assert high[r, i] == pytest.approx(one.values[f].high, abs=1e-7)
+
+
+def test_the_prediction_as_a_figure_leaves_the_population_figure_alone(predictor):
+    from sass_tui.model.figure import Figure
+    from sass_tui.model.names import GIRTH, row_index
+
+    prediction = predictor.predict("male", {"stature": 180.0, "mass": 85.0})
+    base = Figure.default("male")
+    before = base.groups[GIRTH].values.copy()
+    figure = prediction.figure(base)
+    arm = row_index(GIRTH, "right_upper_arm")
+    assert figure.person == "predicted from stature 180 cm, mass 85 kg"
+    assert figure.stature == 180.0 and figure.mass == 85.0
+    expected = prediction.values["girth.right_upper_arm.z"]
+    assert figure.groups[GIRTH].values[arm, 2] == expected.value
+    low, high = prediction.group_values(GIRTH, "low"), prediction.group_values(GIRTH, "high")
+    assert (low[arm, 2], high[arm, 2]) == (expected.low, expected.high)
+    values = prediction.group_values(GIRTH)
+    finite = np.isfinite(values)
+    assert (low[finite] <= values[finite]).all() and (values[finite] <= high[finite]).all()
+    assert base.person is None and np.array_equal(base.groups[GIRTH].values, before)
+
+
+def test_known_values_split_from_one_line():
+    assert split_known("stature=180 cm, mass = 85kg;measure.span=185") == [
+        ("stature", "180 cm"),
+        ("mass", "85kg"),
+        ("measure.span", "185"),
+    ]
+    assert split_known(" ") == []
+    with pytest.raises(PredictionError, match="'stature': expected NAME=VALUE"):
+        split_known("stature, mass=80")
