@@ -55,7 +55,6 @@ from sass_tui.model.figfile import write_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.hanim import export_hanim
 from sass_tui.model.measures import MEASURES, suggest
-from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMIT_ROWS, JOINT_LIMITS
 from sass_tui.model.prediction import ALIASES, Prediction, Predictor
 
 FloatArray = npt.NDArray[np.float64]
@@ -311,20 +310,12 @@ class Manikin:
     files: tuple[str, ...] = ()
 
     def figure(self, population: Figure) -> Figure:
-        """The manikin as a figure (percentiles against `population`'s statistics);
-        joint limits and anything the prediction lacks come from the population."""
-        groups = {
-            GIRTH: self.prediction.group_values(GIRTH),
-            CENTER_OF_MASS: self.prediction.group_values(CENTER_OF_MASS),
-            JOINT_LIMITS: np.full((len(JOINT_LIMIT_ROWS), 3), np.nan),
-        }
-        return population.for_person(
-            self.name,
-            self.prediction.gender,
-            groups,
-            mass=self.prediction.mass,
-            stature=self.prediction.stature,
-        )
+        """The manikin as a figure (`Prediction.figure`: percentiles against
+        `population`'s statistics; joint limits and anything the prediction
+        lacks come from the population), named after the manikin."""
+        figure = self.prediction.figure(population)
+        figure.person = f"manikin {self.name}, {self.prediction.label()}"
+        return figure
 
 
 @dataclass(frozen=True)
