@@ -16,7 +16,7 @@ import sqlite3
 from dataclasses import dataclass
 from functools import lru_cache
 
-from lark import Lark, Token, Transformer, v_args
+from lark import Lark, Token, Transformer, Tree, v_args
 from lark.exceptions import (
     UnexpectedCharacters,
     UnexpectedEOF,
@@ -450,9 +450,14 @@ def compile_conjuncts(text: str) -> tuple[CompiledQuery, ...]:
             text,
             column,
         )
-    terms = tree.children if tree.data == "and_expr" and not whole_group else [tree]
+    # every child of an and_expr is a subtree (a comparison or a group), never a token
+    terms: list[Tree[Token]] = (
+        [t for t in tree.children if isinstance(t, Tree)]
+        if tree.data == "and_expr" and not whole_group
+        else [tree]
+    )
     compiler = _Compiler(text)
-    compiled: list[tuple[str, str, list]] = []
+    compiled: list[tuple[str, str, list[object]]] = []
     for term in terms:
         sql, params = compiler.transform(term)
         label = text[term.meta.start_pos : term.meta.end_pos]
@@ -481,9 +486,12 @@ def _parenthesised(text: str, start: int) -> bool:
     return False
 
 
-def _first_or_column(text: str, tree) -> int | None:
+def _first_or_column(text: str, tree: Tree[Token]) -> int | None:
     """Column of the first top-level OR (between the first two terms)."""
-    end = tree.children[0].meta.end_pos
-    start = tree.children[1].meta.start_pos
+    first, second = tree.children[0], tree.children[1]
+    if not isinstance(first, Tree) or not isinstance(second, Tree):
+        return None
+    end = first.meta.end_pos
+    start = second.meta.start_pos
     offset = text.lower().find("or", end, start)
     return offset + 1 if offset >= 0 else None
