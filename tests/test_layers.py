@@ -17,7 +17,9 @@ CLI_MODULES = [
         for m in (
             "db",
             "export",
+            "family",
             "fig",
+            "fit",
             "options",
             "person",
             "population",

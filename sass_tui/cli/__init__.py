@@ -12,10 +12,22 @@ import argparse
 import os
 import sys
 
-from sass_tui.cli import db, export, fig, person, population, predict, query, serve, strength
+from sass_tui.cli import (
+    db,
+    export,
+    family,
+    fig,
+    fit,
+    person,
+    population,
+    predict,
+    query,
+    serve,
+    strength,
+)
 from sass_tui.cli.options import DB_HELP
 
-VERBS = (fig, export, strength, query, person, population, predict, db, serve)
+VERBS = (fig, export, strength, query, person, population, predict, fit, family, db, serve)
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -29,7 +29,7 @@ import sqlite3
 from dataclasses import dataclass
 from functools import lru_cache
 
-from lark import Lark, Token, Transformer, v_args
+from lark import Lark, Token, Transformer, Tree, v_args
 from lark.exceptions import (
     UnexpectedCharacters,
     UnexpectedEOF,
@@ -479,3 +479,71 @@ def run_query(conn: sqlite3.Connection, text: str) -> Query:
 
 def unit_display(unit: str) -> str:
     return DISPLAY.get(unit, unit)
+
+
+def compile_conjuncts(text: str) -> tuple[CompiledQuery, ...]:
+    """The terms a query's top-level AND joins, each compiled on its own.
+
+    Every term shares one set of joined tables (each term's `tables` is the
+    whole set), so the terms can be evaluated side by side in one SELECT.  A
+    parenthesised group is one term (`(stature > 160 cm AND stature < 190 cm)`
+    is one range), and so is a query wholly in parentheses.  An OR at the top
+    level has no terms to split: it is refused, pointing at the OR.
+    """
+    compile_query(text)  # the full checks and their error messages
+    tree = parser().parse(text)
+    whole_group = _parenthesised(text, tree.meta.start_pos)
+    if tree.data == "or_expr" and not whole_group:
+        column = _first_or_column(text, tree)
+        raise QueryError(
+            "terms joined by OR at the top level cannot be split into separate terms; "
+            "join the terms with AND, and put alternatives in parentheses to make them "
+            "one term, e.g. (stature < 190 cm OR mass < 100 kg) AND gender = male",
+            text,
+            column,
+        )
+    # every child of an and_expr is a subtree (a comparison or a group), never a token
+    terms: list[Tree[Token]] = (
+        [t for t in tree.children if isinstance(t, Tree)]
+        if tree.data == "and_expr" and not whole_group
+        else [tree]
+    )
+    compiler = _Compiler(text)
+    compiled: list[tuple[str, str, list[object]]] = []
+    for term in terms:
+        sql, params = compiler.transform(term)
+        label = text[term.meta.start_pos : term.meta.end_pos]
+        if term.data in ("or_expr", "and_expr"):  # only a parenthesised group is a tree here
+            label = f"({label})"
+        compiled.append((" ".join(label.split()), sql, params))
+    tables = tuple((alias, table) for table, alias in compiler.tables.items())
+    return tuple(
+        CompiledQuery(label, sql, tuple(params), tables) for label, sql, params in compiled
+    )
+
+
+def _parenthesised(text: str, start: int) -> bool:
+    """Whether the whole query is one parenthesised group around the tree starting at `start`."""
+    prefix = text[:start]
+    if not prefix.strip() or prefix.strip(" \t\r\n(") != "":
+        return False
+    depth = 0
+    for position, char in enumerate(text):
+        if char == "(":
+            depth += 1
+        elif char == ")":
+            depth -= 1
+            if depth == 0:  # the first paren closes here: the group must end the query
+                return text[position + 1 :].strip() == ""
+    return False
+
+
+def _first_or_column(text: str, tree: Tree[Token]) -> int | None:
+    """Column of the first top-level OR (between the first two terms)."""
+    first, second = tree.children[0], tree.children[1]
+    if not isinstance(first, Tree) or not isinstance(second, Tree):
+        return None
+    end = first.meta.end_pos
+    start = second.meta.start_pos
+    offset = text.lower().find("or", end, start)
+    return offset + 1 if offset >= 0 else None

@@ -1,0 +1,116 @@
+"""`sass family`: a manikin family over 2-6 measurements, with its coverage counted."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from sass_tui.cli.options import add_db_option, open_db
+from sass_tui.model.vocabulary import GENDERS
+
+DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.fit.DEFAULT_POPULATION (no import here)
+
+
+def coverage_argument(text: str) -> float:
+    try:
+        value = float(text.strip().rstrip("%"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not 0 < value < 100:
+        raise argparse.ArgumentTypeError(f"coverage {value:g} % is outside 0-100 %")
+    return value
+
+
+def measures_argument(text: str) -> list[str]:
+    names = [name.strip() for name in text.split(",") if name.strip()]
+    if not 2 <= len(names) <= 6:
+        raise argparse.ArgumentTypeError(
+            f"give 2 to 6 measurements separated by commas, not {len(names)}"
+        )
+    return names
+
+
+def register(commands: argparse._SubParsersAction) -> None:
+    family = commands.add_parser(
+        "family",
+        help="manikin family: boundary figures of a coverage ellipsoid, coverage counted",
+        description="Build the manikins on (or inside) the ellipsoid that a normal "
+        "population would have COVERAGE %% of its people in, complete each into a "
+        "whole figure, pair it with its nearest real person, and count the share "
+        "of the real people the family covers.",
+    )
+    add_db_option(family)
+    family.add_argument("--gender", choices=GENDERS, required=True)
+    family.add_argument(
+        "--measures",
+        type=measures_argument,
+        required=True,
+        metavar="M1,M2[,...]",
+        help="2-6 measurements: stature, mass, ANSUR II names (sittingheight) or measure.NAME",
+    )
+    family.add_argument(
+        "--coverage",
+        type=coverage_argument,
+        default=90.0,
+        metavar="PERCENT",
+        help="target coverage in percent (default 90)",
+    )
+    family.add_argument("--kind", choices=("boundary", "distributed"), default="boundary")
+    family.add_argument(
+        "--population",
+        metavar="QUERY",
+        default=DEFAULT_POPULATION,
+        help=f"the people (default: {DEFAULT_POPULATION!r})",
+    )
+    family.add_argument("-o", "--output", metavar="DIR", required=True, help="output directory")
+    family.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from sass_tui.db.fit import load_family
+    from sass_tui.db.query import QueryError, compile_query
+    from sass_tui.model.accommodation import measure_field, write_family
+    from sass_tui.model.figure import Figure
+
+    for name in args.measures:
+        measure_field(name)  # a typo is reported before the database is opened
+    try:
+        compile_query(args.population)
+    except QueryError as exc:
+        error = QueryError(f"--population: {exc}", exc.text)
+        error.column = exc.column
+        raise error from None
+    conn = open_db(args)
+    family = load_family(
+        conn,
+        args.gender,
+        args.measures,
+        args.coverage / 100.0,
+        args.kind,
+        args.population,
+    )
+    written = write_family(family, args.output, Figure.default(args.gender))
+    out = sys.stdout
+    coverage = written.coverage
+    out.write(
+        f"{args.gender} {args.kind} family over {', '.join(written.measures)}: "
+        f"{len(written.manikins)} manikins in {args.output}\n"
+        f"coverage of the {coverage.n} {args.gender} people"
+        + (f" ({coverage.missing} not measured, left out)" if coverage.missing else "")
+        + ":\n"
+        f"  inside the ellipsoid  {coverage.inside_percent:5.1f} % "
+        f"({coverage.inside_ellipsoid} people; the chi-square promise is "
+        f"{coverage.promised_percent:g} %)\n"
+        f"  within every range    {coverage.within_ranges_percent:5.1f} % "
+        f"({coverage.within_ranges} people)\n"
+    )
+    width = max(len(m.name) for m in written.manikins)
+    header = "".join(f" {f.removeprefix('measure.'):>17.17}" for f in written.measures)
+    out.write(f"\n{'manikin':<{width}}{header}   nearest person (distance, SD)\n")
+    for manikin in written.manikins:
+        cells = "".join(f" {manikin.values[f]:>17.1f}" for f in written.measures)
+        out.write(
+            f"{manikin.name:<{width}}{cells}   {manikin.nearest.id} {manikin.nearest.name} "
+            f"({manikin.nearest.distance:.2f})\n"
+        )
+    return 0

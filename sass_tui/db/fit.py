@@ -1,0 +1,322 @@
+"""The fit test: what share of a population a set of design limits accommodates.
+
+The design limits are a query in the query language (`sass_tui.db.query`);
+the terms its top-level AND joins are the limits (a parenthesised group, AND
+or OR, is one limit; an OR at the top level is refused).  The population is another
+query, by default the ANSUR II people.  One SELECT evaluates every limit for
+every person of the population: each limit is 1 (passes), 0 (fails) or NULL
+(the person lacks a value the limit reads, e.g. strength for ANSUR II people).
+
+Shares are counted, never modelled:
+- A person lacking any limited value is "not measured" and left out of every
+  share (never counted as fitting); each limit reports how many people of the
+  population lack its value.
+- Per gender: the measured people `n`, those passing every limit `fit`, and
+  `percent = 100 fit / n`.
+- The naive estimate per gender is the product of each limit's own share over
+  the same measured people: what univariate percentiles suggest.
+- Weighted by the mix (default equal): sum of mix[g] * percent[g] over the
+  genders the population has (the mix renormalised over them).
+- Per limit: `excluded`, the measured people failing it (whatever the other
+  limits say), and `only_limit`, those it alone excludes (they pass every
+  other limit).
+
+No Textual, no argument parsing, no printing.
+"""
+
+from __future__ import annotations
+
+import math
+import sqlite3
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import numpy.typing as npt
+
+from sass_tui.db.query import compile_conjuncts, compile_query
+from sass_tui.model.accommodation import Family, build_family, measure_field
+from sass_tui.model.errors import SassError
+from sass_tui.model.vocabulary import GENDERS
+
+if TYPE_CHECKING:
+    from sass_tui.model.prediction import Predictor
+
+DEFAULT_POPULATION = "source = ansur2"
+
+
+class FitError(ValueError, SassError):
+    """A fit test that cannot be run (bad mix, empty population)."""
+
+
+@dataclass(frozen=True)
+class GenderShare:
+    """One gender's result: `n` measured people, `fit` of them accommodated."""
+
+    gender: str
+    n: int
+    fit: int
+    not_measured: int
+    percent: float | None  # None when n == 0
+    naive_percent: float | None
+
+
+@dataclass(frozen=True)
+class LimitShare:
+    limit: str
+    excluded: int  # measured people failing this limit
+    only_limit: int  # measured people failing this limit and no other
+    not_measured: int  # population people lacking the value(s) it reads
+    percent: dict[str, float | None]  # its own share per gender (measured people)
+
+
+@dataclass(frozen=True)
+class FailingPerson:
+    id: int
+    name: str
+    gender: str
+    limits: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class FitResult:
+    limits: tuple[str, ...]
+    population: str
+    mix: dict[str, float]  # the weights used (renormalised over the genders present)
+    genders: dict[str, GenderShare]
+    weighted_percent: float | None
+    naive_percent: float | None  # weighted like the accommodated share
+    by_limit: tuple[LimitShare, ...]
+    failing: tuple[FailingPerson, ...] | None  # None unless asked for
+
+    @property
+    def population_size(self) -> int:
+        return sum(g.n + g.not_measured for g in self.genders.values())
+
+    @property
+    def not_measured(self) -> int:
+        return sum(g.not_measured for g in self.genders.values())
+
+    def to_json(self) -> dict[str, Any]:
+        """The issue's JSON shape; per gender it also gives `naive_percent` and
+        `not_measured`, per limit `not_measured` and `percent` (per gender)."""
+        accommodated: dict[str, Any] = {
+            g.gender: {
+                "n": g.n,
+                "fit": g.fit,
+                "percent": _round(g.percent),
+                "naive_percent": _round(g.naive_percent),
+                "not_measured": g.not_measured,
+            }
+            for g in self.genders.values()
+        }
+        accommodated["weighted"] = {"percent": _round(self.weighted_percent)}
+        return {
+            "limits": list(self.limits),
+            "population": self.population,
+            "mix": self.mix,
+            "accommodated": accommodated,
+            "naive_percent": _round(self.naive_percent),
+            "by_limit": [
+                {
+                    "limit": b.limit,
+                    "excluded": b.excluded,
+                    "only_limit": b.only_limit,
+                    "not_measured": b.not_measured,
+                    "percent": {g: _round(p) for g, p in b.percent.items()},
+                }
+                for b in self.by_limit
+            ],
+            "failing": None
+            if self.failing is None
+            else [{"id": f.id, "name": f.name, "limits": list(f.limits)} for f in self.failing],
+        }
+
+
+def _round(value: float | None) -> float | None:
+    return None if value is None else round(value, 4)
+
+
+def check_mix(mix: dict[str, float] | None) -> dict[str, float]:
+    """The gender weights, normalised to sum 1 (default: equal)."""
+    if mix is None:
+        return {g: 1.0 / len(GENDERS) for g in GENDERS}
+    for gender, weight in mix.items():
+        if gender not in GENDERS:
+            raise FitError(f"mix: unknown gender {gender!r}; expected {' or '.join(GENDERS)}")
+        if not math.isfinite(weight) or weight < 0:
+            raise FitError(f"mix: the weight of {gender} must be a number >= 0, not {weight}")
+    total = sum(mix.values())
+    if total <= 0:
+        raise FitError("mix: the weights add up to 0; give at least one gender a weight > 0")
+    return {g: mix[g] / total for g in GENDERS if g in mix}
+
+
+def fit_test(
+    conn: sqlite3.Connection,
+    limits: str,
+    population: str = DEFAULT_POPULATION,
+    mix: dict[str, float] | None = None,
+    failing: bool = False,
+) -> FitResult:
+    """Run the design limits `limits` over the people `population` selects."""
+    weights = check_mix(mix)
+    compile_conjuncts(limits)  # errors point into the limits' own text
+    compile_query(population)
+    # One compilation of both, so the population's terms share the limits' joins
+    # and its WHERE runs inline (a subquery for it costs half as much again).
+    people, *terms = compile_conjuncts(f"({population}) AND {limits}")
+    columns = ", ".join(f"({t.where})" for t in terms)
+    sql = (
+        f"SELECT p.id_num, p.gender, {columns} FROM {people.from_clause()} "
+        f"WHERE {people.where} ORDER BY p.id_num"
+    )
+    params = tuple(v for t in terms for v in t.params) + people.params
+    rows = conn.execute(sql, params).fetchall()
+    if not rows:
+        raise FitError(f"the population {population!r} selects nobody")
+    ids = np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows))
+    gender = np.array([r[1] for r in rows], dtype=object)
+    # (people, limits): 1.0 passes, 0.0 fails, NaN not measured.
+    passes = np.array([r[2:] for r in rows], dtype=float).reshape(len(rows), len(terms))
+    return _summarise(
+        conn, tuple(t.text for t in terms), population, weights, ids, gender, passes, failing
+    )
+
+
+def _summarise(
+    conn: sqlite3.Connection,
+    limits: tuple[str, ...],
+    population: str,
+    weights: dict[str, float],
+    ids: npt.NDArray[np.int64],
+    gender: npt.NDArray[Any],
+    passes: npt.NDArray[np.float64],
+    want_failing: bool,
+) -> FitResult:
+    unmeasured = np.isnan(passes)
+    measured = ~unmeasured.any(axis=1)
+    fails = passes == 0.0  # NaN compares False: only a definite failure
+    fail_count = fails.sum(axis=1)
+    genders: dict[str, GenderShare] = {}
+    limit_percent: list[dict[str, float | None]] = [{} for _ in limits]
+    for g in GENDERS:
+        mine = gender == g
+        if not mine.any():
+            continue
+        counted = mine & measured
+        n = int(counted.sum())
+        fit = int((counted & (fail_count == 0)).sum())
+        own = [
+            100.0 * float((counted & ~fails[:, k]).sum()) / n if n else None
+            for k in range(len(limits))
+        ]
+        for k, share in enumerate(own):
+            limit_percent[k][g] = share
+        naive = 100.0 * math.prod(s / 100.0 for s in own if s is not None) if n else None
+        genders[g] = GenderShare(
+            gender=g,
+            n=n,
+            fit=fit,
+            not_measured=int((mine & ~measured).sum()),
+            percent=100.0 * fit / n if n else None,
+            naive_percent=naive,
+        )
+    used = {g: w for g, w in weights.items() if g in genders and genders[g].n > 0 and w > 0}
+    total = sum(used.values())
+    mix = {g: w / total for g, w in used.items()} if total > 0 else {}
+    weighted = _weighted(mix, {g: s.percent for g, s in genders.items()})
+    naive = _weighted(mix, {g: s.naive_percent for g, s in genders.items()})
+    by_limit = tuple(
+        LimitShare(
+            limit=limit,
+            excluded=int((measured & fails[:, k]).sum()),
+            only_limit=int((measured & fails[:, k] & (fail_count == 1)).sum()),
+            not_measured=int(unmeasured[:, k].sum()),
+            percent=limit_percent[k],
+        )
+        for k, limit in enumerate(limits)
+    )
+    failing = _failing(conn, limits, ids, gender, fails) if want_failing else None
+    return FitResult(
+        limits=limits,
+        population=population,
+        mix=mix,
+        genders=genders,
+        weighted_percent=weighted,
+        naive_percent=naive,
+        by_limit=by_limit,
+        failing=failing,
+    )
+
+
+def _weighted(mix: dict[str, float], percent: dict[str, float | None]) -> float | None:
+    if not mix:
+        return None
+    total = 0.0
+    for g, w in mix.items():
+        value = percent.get(g)
+        if value is None:
+            return None
+        total += w * value
+    return total
+
+
+def _failing(
+    conn: sqlite3.Connection,
+    limits: tuple[str, ...],
+    ids: npt.NDArray[np.int64],
+    gender: npt.NDArray[Any],
+    fails: npt.NDArray[np.bool_],
+) -> tuple[FailingPerson, ...]:
+    rows = np.flatnonzero(fails.any(axis=1))
+    wanted = [int(i) for i in ids[rows]]
+    names: dict[int, str] = {}
+    for start in range(0, len(wanted), 900):  # SQLite's default limit on ? is 999
+        chunk = wanted[start : start + 900]
+        marks = ", ".join("?" * len(chunk))
+        names.update(
+            conn.execute(f"SELECT id_num, name FROM person WHERE id_num IN ({marks})", chunk)
+        )
+    return tuple(
+        FailingPerson(
+            id=int(ids[r]),
+            name=names.get(int(ids[r]), ""),
+            gender=str(gender[r]),
+            limits=tuple(limit for k, limit in enumerate(limits) if fails[r, k]),
+        )
+        for r in rows
+    )
+
+
+# --- manikin families ----------------------------------------------------------
+
+
+def load_family(
+    conn: sqlite3.Connection,
+    gender: str,
+    measures: Sequence[str],
+    target: float,
+    kind: str = "boundary",
+    population: str = DEFAULT_POPULATION,
+    predictor: Predictor | None = None,
+) -> Family:
+    """The manikin family of `gender` over `measures` (see
+    `sass_tui.model.accommodation`): the population's people of that gender,
+    their values, and the database's prediction model to complete each manikin.
+    `measures` are `--measures` names (`stature`, `mass`, `sittingheight`, ...)."""
+    from sass_tui.db.predict import open_predictor
+    from sass_tui.db.values import load_values
+
+    if gender not in GENDERS:
+        raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
+    fields = [measure_field(m) for m in measures]
+    compile_query(population)  # its own error, before the combined query's
+    values = load_values(conn, fields, f"({population}) AND gender = {gender}")
+    if len(values) == 0:
+        raise FitError(f"the population {population!r} has no {gender} people")
+    model = predictor if predictor is not None else open_predictor(conn)
+    return build_family(
+        gender, fields, values.ids, values.names, values.matrix, target, model, kind
+    )
