@@ -1,5 +1,6 @@
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
@@ -18,3 +19,16 @@ def ansur_dir() -> Path:
     if not (ANSUR / "ANSUR_II_MALE_Public.csv").is_file():
         pytest.skip("../shared/data/ansur2 is absent")
     return ANSUR
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _private_default_database(tmp_path_factory: pytest.TempPathFactory):
+    """A command run without --db builds its default database here, never in the
+    user's data directory."""
+    saved = os.environ.get("SASS_DB")
+    os.environ["SASS_DB"] = str(tmp_path_factory.mktemp("default-db") / "sass.db")
+    yield
+    if saved is None:
+        os.environ.pop("SASS_DB", None)
+    else:
+        os.environ["SASS_DB"] = saved
