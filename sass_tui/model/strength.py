@@ -504,24 +504,35 @@ def parse_side_factor(text: str) -> float:
 def joint_limit_range(figure, side: str, joint_axis: str) -> tuple[float, float]:
     """(lower, upper) deg of a joint axis from the figure's current joint limits.
 
-    NaN, NaN: no motion about this axis (999).  A lower limit with the sign of
-    an upper one (the male shoulder z of appendix H, warned at load) is read as
-    its negative, as the female table and the ul/ll convention say."""
+    NaN, NaN: no motion about this axis (999).  A person the database has no
+    joint limits for (every ANSUR II person) gets the population's limits at
+    the group percentile, as the figure's outputs do (Figure.output_values)."""
+    return _joint_limit_range(figure, side, joint_axis)[:2]
+
+
+def _joint_limit_range(figure, side: str, joint_axis: str) -> tuple[float, float, bool]:
+    """(lower, upper, taken from the population because not measured)."""
     state = figure.groups[JOINT_LIMITS]
     if not state.loaded:
         raise StrengthError("joint limits are not loaded; angles cannot be checked")
     joint, axis = joint_axis.split("_")
     column = "xyz".index(axis)
-    upper = float(state.values[row_index(JOINT_LIMITS, f"{side}_{joint}_ul"), column])
-    lower = float(state.values[row_index(JOINT_LIMITS, f"{side}_{joint}_ll"), column])
-    if lower > 0 and upper > 0:
-        lower = -lower
-    return lower, upper
+    values, filled = figure.output_values(JOINT_LIMITS)
+    upper_row = row_index(JOINT_LIMITS, f"{side}_{joint}_ul")
+    lower_row = row_index(JOINT_LIMITS, f"{side}_{joint}_ll")
+    from_population = bool(filled[upper_row, column] or filled[lower_row, column])
+    return (
+        float(values[lower_row, column]),
+        float(values[upper_row, column]),
+        from_population,
+    )
 
 
 def check_angle(figure, side: str, joint_axis: str, degrees: float) -> None:
-    """Refuse an angle outside the figure's current joint limits, naming the limit."""
-    lower, upper = joint_limit_range(figure, side, joint_axis)
+    """Refuse an angle outside the figure's current joint limits, naming the limit
+    and where it comes from (the figure's own, or the population's for a person
+    whose joint limits were not measured)."""
+    lower, upper, from_population = _joint_limit_range(figure, side, joint_axis)
     joint, axis = joint_axis.split("_")
     what = f"{side} {joint} {axis}"
     percentile = figure.groups[JOINT_LIMITS].percentile
@@ -529,16 +540,34 @@ def check_angle(figure, side: str, joint_axis: str, degrees: float) -> None:
         if degrees != 0:
             raise StrengthError(f"{what}: no motion about this axis (joint limits)")
         return
+    source = f"joint limits, {percentile:g}th percentile"
+    if from_population:
+        source = (
+            f"not measured for {figure.person}: the population's joint limits "
+            f"at the {percentile:g}th percentile"
+        )
     if degrees > upper:
         raise StrengthError(
             f"{what} {degrees:g} deg is above the {side} {joint} upper limit "
-            f"{upper:g} deg (joint limits, {percentile:g}th percentile)"
+            f"{upper:g} deg ({source})"
         )
     if degrees < lower:
         raise StrengthError(
             f"{what} {degrees:g} deg is below the {side} {joint} lower limit "
-            f"{lower:g} deg (joint limits, {percentile:g}th percentile)"
+            f"{lower:g} deg ({source})"
         )
+
+
+def limits_source(figure) -> str:
+    """Which joint limits the strength page checks angles against, in words."""
+    percentile = figure.groups[JOINT_LIMITS].percentile
+    if figure.person is not None and figure.groups[JOINT_LIMITS].loaded:
+        if figure.output_values(JOINT_LIMITS)[1].any():
+            return (
+                f"joint limits: not measured for {figure.person}; the population's "
+                f"at the {percentile:g}th percentile"
+            )
+    return f"joint limits: {percentile:g}th percentile"
 
 
 def parse_joint_axis(text: str) -> int:

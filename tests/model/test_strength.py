@@ -74,7 +74,7 @@ def test_elbow_170_refused_for_a_male_at_the_95th_joint_limits(male):
     assert male.set_angle(ELBOW_FLEXION, "elbow_y", 155).angles[3] == 155
 
 
-def test_male_shoulder_z_lower_limit_with_wrong_sign_is_read_as_negative(male):
+def test_male_shoulder_z_lower_limit_is_negative(male):
     male.set_angle(4, "shoulder_z", -90)  # medial rotation within -108.55
     with pytest.raises(StrengthError, match="lower limit -108.55"):
         male.set_angle(4, "shoulder_z", -120)
