@@ -74,8 +74,8 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     ):
         if option:
             data = read_population_file(option, group)
-            warnings += data.warnings
             figure.load_group(group, data)
+            warnings += [w for w in data.warnings if w not in warnings]
     for group, option in (
         (GIRTH, args.girth_percentile),
         (JOINT_LIMITS, args.joint_limit_percentile),

@@ -26,7 +26,11 @@ from sass_tui.model.names import (
     ROWS,
 )
 from sass_tui.model.percentile import check_percentile, percentile_of, value_at
-from sass_tui.model.popfile import PopulationData, read_population_file
+from sass_tui.model.popfile import (
+    PopulationData,
+    check_center_of_mass_rules,
+    read_population_file,
+)
 from sass_tui.model.units import GROUP_UNITS
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS, HANDEDNESS, STRENGTH_TYPES
 
@@ -104,6 +108,12 @@ class Figure:
         if group == GIRTH and self.person is None:
             self.population = data.title
         self._rescale(state)
+        girth, cmass = self.groups[GIRTH].source, self.groups[CENTER_OF_MASS].source
+        if group in (GIRTH, CENTER_OF_MASS) and girth is not None and cmass is not None:
+            # appendix L.1's rules tie the two files: say what they find on loading either
+            data.warnings += [
+                w for w in check_center_of_mass_rules(cmass, girth) if w not in data.warnings
+            ]
 
     def for_person(
         self,
