@@ -120,3 +120,22 @@ def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
             )
         ),
     )
+
+
+def find_person(conn: sqlite3.Connection, text: str) -> int:
+    """The id of the person `text` names: a database id, or a name such as
+    'ANSUR II M 10037' (case and spacing ignored)."""
+    words = " ".join(str(text).split())
+    if words.isdigit():
+        row = conn.execute("SELECT id_num FROM person WHERE id_num = ?", (int(words),)).fetchone()
+        if row is not None:
+            return int(row[0])
+    rows = conn.execute(
+        "SELECT id_num FROM person WHERE lower(name) = lower(?) ORDER BY id_num", (words,)
+    ).fetchall()
+    if not rows:
+        raise DatabaseError(f"no person with id or name {words!r} in the database")
+    if len(rows) > 1:
+        ids = ", ".join(str(r[0]) for r in rows[:5])
+        raise DatabaseError(f"{len(rows)} people are named {words!r} (ids {ids}); give the id")
+    return int(rows[0][0])
