@@ -91,6 +91,15 @@ ENDURANCE_POWER_MODEL = {
 }
 
 
+# A prediction for an angle further than this outside the angles a motion's
+# data cover is refused: the fitted quadratic has nothing to hold it there
+# (shoulder flexion at 180 deg, data to 75 deg, predicted 0.01 ft-lb).
+EXTRAPOLATION_MARGIN_DEG = 20.0
+# A file whose 'P' title says this is test data, and every output from it says so.
+TEST_DATA_MARKER = "test data"
+TEST_DATA_LABEL = "TEST DATA, not measured strength"
+
+
 class StrengthFileError(ValueError, SassError):
     """The strength file breaks the format; nothing of it was loaded."""
 
@@ -124,6 +133,18 @@ class StrengthData:
     sections: dict[tuple[str, str], StrengthSection] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     _models: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def test_data(self) -> bool:
+        """The file says (in its P title) that its values are test data."""
+        return TEST_DATA_MARKER in self.title.lower()
+
+    @property
+    def label(self) -> str:
+        """What the numbers are, for a page title or a file comment."""
+        if self.test_data:
+            return f"{TEST_DATA_LABEL} ({Path(self.path).name})"
+        return f"{self.title} ({Path(self.path).name})"
 
     def section(self, gender: str, side: str) -> tuple[StrengthSection, bool]:
         """The section for gender and side, or the other side's (measured=False)."""
@@ -353,6 +374,9 @@ class StrengthModel:
         self.ceiling = np.full(n, np.nan)
         self.fits: list[MotionFit | None] = [None] * n
         self._stored: list[dict[tuple[float, ...], tuple[float, float]]] = [{} for _ in range(n)]
+        # the angles each motion's data cover (deg): lowest and highest per axis
+        self.low = np.full((n, N_ANGLES), np.nan)
+        self.high = np.full((n, N_ANGLES), np.nan)
         median = section.values / percentile_factor(section.percentiles)
         for row, motion in enumerate(section.motions):
             key = _config_key(section.angles[row])
@@ -360,6 +384,8 @@ class StrengthModel:
         for motion in range(n):
             mask = section.motions == motion
             if mask.any():
+                self.low[motion] = section.angles[mask].min(axis=0)
+                self.high[motion] = section.angles[mask].max(axis=0)
                 self.fits[motion] = self._fit(motion, section.angles[mask], median[mask])
                 self.coefficients[motion] = self.fits[motion].coefficients
                 self.available[motion] = True
@@ -386,6 +412,37 @@ class StrengthModel:
             max_percent=float(np.abs(relative).max() * 100.0),
             varied=tuple(JOINT_AXES[j] for j in range(N_ANGLES) if distinct[j] >= 2),
         )
+
+    def coverage(self, motion: int, angles) -> tuple[str, bool]:
+        """(note, refused) for a prediction at `angles`: the note names every
+        angle outside the data of this motion ('' inside them); refused when a
+        varied angle lies more than EXTRAPOLATION_MARGIN_DEG outside."""
+        if not self.available[motion]:
+            return "", False
+        notes, refused = [], False
+        for j, angle in enumerate(np.asarray(angles, dtype=float)):
+            low, high = self.low[motion, j], self.high[motion, j]
+            if low - 1e-9 <= angle <= high + 1e-9:
+                continue
+            axis = JOINT_AXES[j]
+            if low == high:
+                notes.append(
+                    f"{axis} {angle:g} deg: the data hold {axis} only at {low:g} deg, "
+                    "so the prediction does not vary with it"
+                )
+                continue
+            off = low - angle if angle < low else angle - high
+            far = off > EXTRAPOLATION_MARGIN_DEG
+            refused = refused or far
+            notes.append(
+                f"{axis} {angle:g} deg is outside the data's {low:g} to {high:g} deg"
+                + (
+                    f", more than {EXTRAPOLATION_MARGIN_DEG:g} deg: not to be trusted"
+                    if far
+                    else ""
+                )
+            )
+        return "; ".join(notes), refused
 
     def stored(self, motion: int, angles) -> tuple[float, float] | None:
         """(value ft-lb, its percentile) when the configuration is in the data."""
@@ -594,6 +651,8 @@ class StrengthRow:
     value: float  # NaN = no data for this motion
     source: str  # "stored" | "predicted" | "no data"
     unit: str  # display spelling, "ft-lb" | "N-m"
+    # "" or why a predicted value is an extrapolation (angles outside the data)
+    extrapolated: str = ""
 
 
 class StrengthSheet:
@@ -643,6 +702,7 @@ class StrengthSheet:
     def rows(self) -> list[StrengthRow]:
         values, stored = self.values()
         shown = convert(values, GROUP_UNITS[STRENGTH][0], self.unit)
+        model = self.data.model(self.figure.gender, self.side)
         return [
             StrengthRow(
                 i,
@@ -653,9 +713,15 @@ class StrengthSheet:
                 float(shown[i]),
                 "no data" if math.isnan(values[i]) else "stored" if stored[i] else "predicted",
                 DISPLAY[self.unit],
+                "" if stored[i] or math.isnan(values[i]) else model.coverage(i, self.angles[i])[0],
             )
             for i, m in enumerate(MOTIONS)
         ]
+
+    @property
+    def title(self) -> str:
+        """What the page shows, for its title: the data's label."""
+        return f"Strength: {self.data.label}"
 
     def row(self, index: int) -> StrengthRow:
         return self.rows()[index]
@@ -741,8 +807,9 @@ class StrengthSheet:
 
 
 def fig_section(sheet: StrengthSheet) -> tuple[str, list[tuple[str, float, str]]]:
-    """The strength section for figfile.render_fig(extra_sections=[...])."""
-    return ("strength variables", sheet.fig_variables())
+    """The strength section for figfile.render_fig(extra_sections=[...]); its
+    title says what the values are (test data, or the file's title)."""
+    return (f"strength variables: {sheet.data.label}", sheet.fig_variables())
 
 
 def fit_summary(data: StrengthData) -> list[tuple[str, str, MotionFit]]:
