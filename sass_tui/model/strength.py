@@ -30,6 +30,7 @@ import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -132,6 +133,10 @@ class StrengthData:
     path: str
     sections: dict[tuple[str, str], StrengthSection] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    # A person's own measurements: the conditions they were measured at
+    # (strength_type, motion_speed, training_level, fatigue_level); the
+    # modifiers then scale from these, not from rested isometric strength.
+    measured_at: tuple[str, float, float, float] | None = None
     _models: dict = field(default_factory=dict, repr=False)
 
     @property
@@ -144,6 +149,8 @@ class StrengthData:
         """What the numbers are, for a page title or a file comment."""
         if self.test_data:
             return f"{TEST_DATA_LABEL} ({Path(self.path).name})"
+        if self.measured_at is not None:
+            return self.title
         return f"{self.title} ({Path(self.path).name})"
 
     def section(self, gender: str, side: str) -> tuple[StrengthSection, bool]:
@@ -326,6 +333,58 @@ def _build_section(key, section_line, entries, name, warnings) -> StrengthSectio
         lines=np.array([r[0] for r in rows], dtype=int),
         notes=[r[5] for r in rows],
     )
+
+
+# --- a person's own strength ---------------------------------------------------
+
+
+def person_strength_data(
+    name: str,
+    gender: str,
+    measurements: list[tuple[str, str, tuple[float, ...], float, tuple[str, float, float, float]]],
+    conditions: tuple[str, float, float, float] | None = None,
+) -> StrengthData:
+    """A person's own strength (report §12.4, Disp. Indv.) as strength data the
+    strength page shows like a file's: one stored row per experiment and
+    motion, at the person's angles, in ft-lb.  `measurements` are
+    (side, motion, 7 angles deg, strength N-m, conditions) as
+    db.individual.strength_measurements gives them.  Only the experiments
+    measured at `conditions` (strength_type, motion_speed, training_level,
+    fatigue_level; default: those most of the experiments share) are used, so
+    that isokinetic values are not fitted together with isometric ones.
+    StrengthError when the person has no strength experiments."""
+    if not measurements:
+        raise StrengthError(f"{name} has no strength experiments in the database")
+    if conditions is None or not any(m[4] == conditions for m in measurements):
+        counts: dict[tuple[str, float, float, float], int] = {}
+        for m in measurements:
+            counts[m[4]] = counts.get(m[4], 0) + 1
+        conditions = max(counts, key=lambda c: counts[c])
+    kind, speed, training, fatigue = conditions
+    what = kind if kind == "isometric" else f"{kind} at {speed:g} deg/s"
+    title = (
+        f"{name}'s own strength experiments ({what}, training {training:g}, "
+        f"fatigue {fatigue:g}; database)"
+    )
+    source = f"database:{name}"
+    warnings: list[str] = []
+    data = StrengthData(title=title, path=source, warnings=warnings, measured_at=conditions)
+    for side in SIDES:
+        entries = []
+        for i, (where, motion, angles, value_nm, measured) in enumerate(measurements):
+            if where != side or measured != conditions:
+                continue
+            value = float(convert(value_nm, "N_m", "ft_lb"))
+            numbers = [*map(float, angles), value, 50.0]
+            entries.append((i + 1, MOTION_NAMES.index(motion), numbers, f"{motion}: measured"))
+        if entries:
+            entries.sort(key=lambda e: e[1])
+            data.sections[(gender, side)] = _build_section(
+                (gender, side), 0, entries, source, warnings
+            )
+    # A person measures a few motions: the others are "no data", not a warning.
+    data.warnings[:] = [w for w in warnings if "has no data for" not in w]
+    return data
 
 
 # --- percentiles ------------------------------------------------------------
@@ -694,10 +753,27 @@ class StrengthSheet:
 
     # --- reading -------------------------------------------------------------
     def values(self) -> tuple[np.ndarray, np.ndarray]:
-        """Every row's strength (ft-lb, modifiers applied) and stored? mask."""
+        """Every row's strength (ft-lb, modifiers applied) and stored? mask.
+
+        A person's own data were measured at their own conditions: the
+        modifiers scale from those (at the same conditions and side, the
+        measured value comes back unchanged)."""
         model = self.data.model(self.figure.gender, self.side)
         base, stored = model.evaluate(np.arange(len(MOTIONS)), self.angles, self.percentile)
-        return base * modifier_factors(self.figure, self.side, self.non_dominant_factor), stored
+        factors = modifier_factors(self.figure, self.side, self.non_dominant_factor)
+        if self.data.measured_at is not None:
+            kind, speed, training, fatigue = self.data.measured_at
+            measured = SimpleNamespace(
+                strength_type=kind,
+                motion_speed=speed,
+                training_level=training,
+                fatigue_level=fatigue,
+                handedness=self.figure.handedness,
+            )
+            factors = factors / modifier_factors(
+                measured, model.section.side, self.non_dominant_factor
+            )
+        return base * factors, stored
 
     def rows(self) -> list[StrengthRow]:
         values, stored = self.values()
