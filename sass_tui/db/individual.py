@@ -161,7 +161,7 @@ def strength_measurements(person: Individual) -> list[StrengthMeasurement]:
 
     out: list[StrengthMeasurement] = []
 
-    def add(row: dict, motions: tuple[str, str], angles: tuple[float, ...]) -> None:
+    def add(row: dict[str, object], motions: tuple[str, str], angles: tuple[float, ...]) -> None:
         experiment = experiments.get(row["exp_num"])
         if experiment is None:
             return
@@ -174,7 +174,7 @@ def strength_measurements(person: Individual) -> list[StrengthMeasurement]:
         for motion, value in zip(motions, (row["pstrgh"], row["nstrgh"])):
             if value is not None:
                 out.append(
-                    (str(experiment["side_of_limb"]), motion, angles, float(value), conditions)
+                    (str(experiment["side_of_limb"]), motion, angles, angle(value), conditions)
                 )
 
     for row in person.shoulder:

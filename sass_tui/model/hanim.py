@@ -12,6 +12,7 @@ import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -26,6 +27,9 @@ from sass_tui.model.names import (
     ROWS,
     row_index,
 )
+
+if TYPE_CHECKING:
+    from sass_tui.model.figure import Figure
 
 HANIM_VERSION = "2.0"
 LOA = 1  # clause 4.8.5: the 18 joints of figure 4.4
@@ -225,7 +229,7 @@ def build_humanoid(figure) -> Humanoid:
     return Humanoid(_humanoid_name(figure), _info(figure), centers, segments, limits, sites)
 
 
-def humanoid_stature(figure) -> float:
+def humanoid_stature(figure: Figure) -> float:
     """The stature (cm) the humanoid stands to: the figure's, else (a person
     whose stature was not measured) the population's median."""
     if not math.isnan(figure.stature):
@@ -253,11 +257,13 @@ def landmark_heights(gender: str, stature: float) -> dict[str, float]:
     return heights
 
 
-def _population_girth(figure) -> np.ndarray:
+def _population_girth(figure: Figure) -> np.ndarray:
     """The population's segment dimensions (cm) at the figure's girth percentile."""
     from sass_tui.model.percentile import value_at
 
     state = figure.groups[GIRTH]
+    if state.source is None:
+        raise HAnimError("cannot export a humanoid: no girth statistics loaded")
     return np.asarray(value_at(state.source.stats(figure.gender), state.percentile), dtype=float)
 
 
@@ -328,7 +334,9 @@ def _segment_table() -> list[tuple[str, str | None, str, np.ndarray, np.ndarray,
     return table
 
 
-def _extents(dim, centers, heights) -> dict[str, float]:
+def _extents(
+    dim: dict[str, np.ndarray], centers: dict[str, np.ndarray], heights: dict[str, float]
+) -> dict[str, float]:
     """Each segment's length along its long axis (m) in the humanoid: to the
     next joint, or to the landmark that ends it.  The segment's table length
     is kept only where no landmark ends it (hand, fingers, toes)."""
@@ -468,7 +476,9 @@ def _limits(figure) -> dict[str, Limits]:
     return out
 
 
-def _sites(dim, centers, heights) -> list[Site]:
+def _sites(
+    dim: dict[str, np.ndarray], centers: dict[str, np.ndarray], heights: dict[str, float]
+) -> list[Site]:
     # eye location: x head depth to the eyes, y half the eye spacing, z the
     # ectocanthus below the top of the head (report 10.1, eyelocz)
     eyes = dim["eye_location"]

@@ -36,7 +36,7 @@ import numpy as np
 
 from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
-from sass_tui.model.figure import EDIT_SEQUENCE
+from sass_tui.model.figure import EDIT_SEQUENCE, Figure
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
@@ -626,7 +626,7 @@ def joint_limit_range(figure, side: str, joint_axis: str) -> tuple[float, float]
     return _joint_limit_range(figure, side, joint_axis)[:2]
 
 
-def _joint_limit_range(figure, side: str, joint_axis: str) -> tuple[float, float, bool]:
+def _joint_limit_range(figure: Figure, side: str, joint_axis: str) -> tuple[float, float, bool]:
     """(lower, upper, taken from the population because not measured)."""
     state = figure.groups[JOINT_LIMITS]
     if not state.loaded:
@@ -674,7 +674,7 @@ def check_angle(figure, side: str, joint_axis: str, degrees: float) -> None:
         )
 
 
-def limits_source(figure) -> str:
+def limits_source(figure: Figure) -> str:
     """Which joint limits the strength page checks angles against, in words."""
     percentile = figure.groups[JOINT_LIMITS].percentile
     if figure.person is not None and figure.groups[JOINT_LIMITS].loaded:
