@@ -30,7 +30,7 @@ def main(out: Path = Path(__file__).resolve().parents[1] / "docs" / "hanim-figur
     for i, (gender, percentile) in enumerate(ROW):
         humanoid = build_humanoid(figure_at(gender, percentile))
         tallest = max(tallest, float(humanoid.sites[0].translation[1]))
-        element = humanoid_element(humanoid, gender, prefix=f"{gender}{percentile:g}_")
+        element = humanoid_element(humanoid, gender)
         elements.append((element, (i - 1) * SPACING))
     text = scene_document(elements, "SASS HAnim: 5th female, 50th male, 95th male", tallest)
     with tempfile.TemporaryDirectory() as tmp:

@@ -4,7 +4,12 @@ from __future__ import annotations
 
 import argparse
 
-from sass_tui.cli.options import add_figure_options, figure_from_args, print_warnings
+from sass_tui.cli.options import (
+    add_figure_options,
+    figure_from_args,
+    person_file_name,
+    print_warnings,
+)
 
 
 def register(commands: argparse._SubParsersAction) -> None:
@@ -13,7 +18,7 @@ def register(commands: argparse._SubParsersAction) -> None:
         "-o",
         "--output",
         metavar="OUT.fig",
-        help="output file (default: the report's MALE50.FIG convention)",
+        help="output file (default: the report's MALE50.FIG convention; a person's name)",
     )
     add_figure_options(fig)
     strength = fig.add_mutually_exclusive_group()
@@ -39,9 +44,12 @@ def run(args: argparse.Namespace) -> int:
         warnings += strength.warnings
         extra_sections.append(fig_section(StrengthSheet(strength, figure)))
     print_warnings(warnings)
-    out = args.output or default_fig_name(
-        figure.gender, figure.groups[GIRTH].percentile, figure.figure_type
-    )
+    if args.output:
+        out = args.output
+    elif figure.person is not None:
+        out = person_file_name(figure.person, ".fig")
+    else:
+        out = default_fig_name(figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
     write_fig(figure, out, extra_sections)
     print(f"wrote {out}")
     return 0

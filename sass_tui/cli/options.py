@@ -49,7 +49,15 @@ def percentile(text: str) -> float:
 
 def add_figure_options(parser: argparse.ArgumentParser) -> None:
     """The options that describe a figure (shared by `fig` and `export hanim`)."""
-    parser.add_argument("--gender", choices=GENDERS, default="male")
+    parser.add_argument(
+        "--person",
+        metavar="ID",
+        help="a real person from the database (--db): the id or the name, e.g. "
+        "'ANSUR II M 10037'; unmeasured values come from the population at the "
+        "group percentiles",
+    )
+    add_db_option(parser)
+    parser.add_argument("--gender", choices=GENDERS, help="default male (a person's own)")
     parser.add_argument(
         "--percentile",
         type=percentile,
@@ -73,12 +81,17 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
 
 def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     """Build the figure the options describe; returns it and the load warnings."""
-    from sass_tui.model.figure import Figure
+    from sass_tui.model.figure import Figure, FigureError
     from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
     from sass_tui.model.popfile import read_population_file
     from sass_tui.model.units import parse_quantity
 
-    figure = Figure.default(args.gender)
+    if args.person is not None:
+        given = [o for o, v in (("--mass", args.mass), ("--stature", args.stature)) if v]
+        given += [o for o, v in (("--gender", args.gender),) if v]
+        if given:
+            raise FigureError(f"--person takes the person's own {', '.join(given)}; leave it out")
+    figure = Figure.default(args.gender or "male")
     warnings: list[str] = []
     for group, option in (
         (GIRTH, args.girth),
@@ -87,8 +100,8 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     ):
         if option:
             data = read_population_file(option, group)
-            warnings += data.warnings
             figure.load_group(group, data)
+            warnings += [w for w in data.warnings if w not in warnings]
     for group, option in (
         (GIRTH, args.girth_percentile),
         (JOINT_LIMITS, args.joint_limit_percentile),
@@ -104,7 +117,41 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     else:
         figure.set_stature_percentile(args.stature_percentile or args.percentile)
     figure.set_figure_type(args.figure_type)
+    if args.person is not None:
+        figure = person_figure(args, figure)
     return figure, warnings
+
+
+def person_figure(args: argparse.Namespace, population: Figure) -> Figure:
+    """The person `--person` names, measured against the population figure."""
+    from sass_tui.db.individual import fetch_individual, find_person
+    from sass_tui.model.names import GROUPS
+
+    conn = open_db(args)
+    try:
+        person = fetch_individual(conn, find_person(conn, args.person))
+    finally:
+        conn.close()
+    figure = population.for_person(
+        person.name,
+        person.gender,
+        {g: person.groups[g] for g in GROUPS},
+        mass=person.mass,
+        stature=person.stature,
+        handedness=person.handedness if person.handedness in ("right", "left") else None,
+        **{
+            k: person.strength.get(k)
+            for k in ("strength_type", "motion_speed", "training_level", "fatigue_level")
+        },
+    )
+    figure.set_figure_type(population.figure_type)
+    return figure
+
+
+def person_file_name(name: str, suffix: str) -> str:
+    """'ANSUR II M 10037' -> 'ANSUR_II_M_10037.fig'."""
+    stem = "".join(ch if ch.isalnum() or ch in "-." else "_" for ch in name).strip("_")
+    return f"{stem or 'person'}{suffix}"
 
 
 def print_warnings(warnings: list[str]) -> None:

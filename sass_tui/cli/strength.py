@@ -68,6 +68,7 @@ def run(args: argparse.Namespace) -> int:
     from sass_tui.model.figure import Figure
     from sass_tui.model.names import JOINT_LIMITS
     from sass_tui.model.strength import (
+        EXTRAPOLATION_MARGIN_DEG,
         StrengthError,
         StrengthSheet,
         motion_index,
@@ -93,6 +94,13 @@ def run(args: argparse.Namespace) -> int:
             raise StrengthError(f"{item!r}: expected JOINT_AXIS=ANGLE, e.g. shoulder_x=30")
         sheet.set_angle(index, parse_joint_axis(axis), value)
     row = sheet.row(index)
+    if row.source == "predicted":
+        note, refused = data.model(figure.gender, sheet.side).coverage(index, sheet.angles[index])
+        if refused:
+            raise StrengthError(
+                f"{row.label.lower()}: {note}; sass strength refuses a prediction more than "
+                f"{EXTRAPOLATION_MARGIN_DEG:g} deg outside the data (docs/model.md, Strength)"
+            )
     if row.source == "no data":
         raise StrengthError(f"{data.path}: no {args.gender} data for {row.label.lower()}")
     where = " ".join(f"{axis}={angle:g}" for axis, angle in zip(JOINT_AXES, row.angles))
@@ -100,8 +108,12 @@ def run(args: argparse.Namespace) -> int:
     if row.source == "predicted":
         fit = data.model(figure.gender, sheet.side).fits[index]
         how += f" by the least-squares equation, fit error {fit.rms_percent:.1f} % RMS"
+    if row.extrapolated:
+        how += f"; EXTRAPOLATED: {row.extrapolated}"
     print(
         f"{row.side} {row.label.lower()}: {row.value:.2f} {row.unit} ({how}; "
         f"{figure.gender}, {sheet.percentile:g}th percentile) at {where}"
     )
+    if data.test_data:
+        print(f"note: {data.label}: values made for testing (docs/data-sources.md, Strength)")
     return 0

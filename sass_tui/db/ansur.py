@@ -67,13 +67,27 @@ def _diameter(circumference: np.ndarray) -> np.ndarray:
 # segment -> (x, y, z) as functions of the column table (cm).  x = thickness
 # (depth), y = width, z = length, the axes of appendix B.  Appendix B's arm
 # rows have y/x equal to the report's ratio, so the ellipse's 2A goes to y.
+# Where report 10.1 allows more than one measurement, the one closest to what
+# the report measured is taken; docs/data-sources.md ("ANSUR II derivations
+# against appendices B and C", written by scripts/ansur_derivations.py) has
+# every cell's 5/50/95 against the report's and why each differs:
+# - lower torso depth: abdominal extension depth (10.1's first choice for the
+#   two-segment torso, #10; ANSUR II measures it sitting), not buttock depth
+#   (the three-segment torso's);
+# - thigh depth: thigh clearance (10.1's alternative to the unmeasured thigh
+#   depth); thigh breadth: the diameter of the mid-thigh circumference, taken
+#   as the mean of ANSUR II's two, at the gluteal furrow (the thigh's largest,
+#   +31 % against appendix B as a diameter) and above the knee (-15 %);
+# - foot z: 10.1's ankle height (#64, at the ankle's narrowest) is not in
+#   ANSUR II; the lateral malleolus height is (-45 %: a lower landmark), and
+#   the lower leg (tibiale - malleolus) takes up the difference.
 def _derive(c: dict[str, np.ndarray], n: int) -> np.ndarray:
     nan = np.full(n, np.nan)
     one = np.ones(n)
     arm_y, arm_x = ellipse_axes(c["bicepscircumferenceflexed"], UPPER_ARM_RATIO)
     fore_y, fore_x = ellipse_axes(c["forearmcircumferenceflexed"], FOREARM_RATIO)
     neck = _diameter(c["neckcircumference"])
-    thigh = _diameter(c["thighcircumference"])
+    mid_thigh = _diameter((c["thighcircumference"] + c["lowerthighcircumference"]) / 2)
     calf = _diameter(c["calfcircumference"])
     upper_leg = c["trochanterionheight"] - c["tibialheight"]
     lower_leg = c["tibialheight"] - c["lateralmalleolusheight"]
@@ -82,13 +96,13 @@ def _derive(c: dict[str, np.ndarray], n: int) -> np.ndarray:
         "neck": (neck, neck, neck),
         "center_torso": (c["chestdepth"], c["interscyei"], c["waistbacklength"]),
         "lower_torso": (
-            c["buttockdepth"],
+            c["abdominalextensiondepthsitting"],
             c["hipbreadth"],
             c["waistheightomphalion"] - c["crotchheight"],
         ),
         "upper_arm": (arm_x, arm_y, c["acromionradialelength"]),
         "lower_arm": (fore_x, fore_y, c["radialestylionlength"]),
-        "upper_leg": (thigh, thigh, upper_leg),
+        "upper_leg": (c["thighclearance"], mid_thigh, upper_leg),
         "lower_leg": (calf, calf, lower_leg),
         "foot": (c["balloffootlength"], c["footbreadthhorizontal"], c["lateralmalleolusheight"]),
         "hand": (nan, c["handbreadth"], c["palmlength"]),
@@ -112,7 +126,7 @@ MEASUREMENTS = (
     "chestdepth",
     "interscyei",
     "waistbacklength",
-    "buttockdepth",
+    "abdominalextensiondepthsitting",
     "hipbreadth",
     "waistheightomphalion",
     "crotchheight",
@@ -121,6 +135,8 @@ MEASUREMENTS = (
     "forearmcircumferenceflexed",
     "radialestylionlength",
     "thighcircumference",
+    "lowerthighcircumference",
+    "thighclearance",
     "trochanterionheight",
     "tibialheight",
     "calfcircumference",
@@ -295,13 +311,17 @@ def _read_chunks(
     rows: list[list[str]] = []
     lines: list[int] = []
     total = 0
+    last_line = reader.line_num
     for row in reader:
+        # A quote in a value makes csv read on into the next lines: name the
+        # line where the record starts, where the fault is.
+        lineno, last_line = last_line + 1, reader.line_num
         if not row:
             continue
-        lineno = reader.line_num
         if len(row) != len(header):
+            spans = f" (an unclosed quote runs to line {last_line})" if last_line > lineno else ""
             raise AnsurImportError(
-                f"{path}:{lineno}: expected {len(header)} fields, found {len(row)}"
+                f"{path}:{lineno}: expected {len(header)} fields, found {len(row)}{spans}"
             )
         rows.append(row)
         lines.append(lineno)

@@ -130,7 +130,7 @@ _AXES = ("x", "y", "z")
 
 def find_person(conn: sqlite3.Connection, key: str) -> int:
     """The id of the person `key` names: a database id, or a name (any case)."""
-    text = key.strip()
+    text = " ".join(key.split())  # spacing as typed does not matter
     if text.isdigit():
         row = conn.execute("SELECT id_num FROM person WHERE id_num = ?", (int(text),)).fetchone()
         if row is not None:
@@ -214,3 +214,67 @@ def person_record(conn: sqlite3.Connection, id_num: int) -> dict[str, object]:
         "measures": measures,
         "unmeasured": unmeasured,
     }
+
+
+# (side, motion, 7 angles in JOINT_AXES order in deg, strength N-m,
+#  (strength_type, motion_speed, training_level, fatigue_level))
+StrengthMeasurement = tuple[str, str, tuple[float, ...], float, tuple[str, float, float, float]]
+
+
+def strength_measurements(person: Individual) -> list[StrengthMeasurement]:
+    """The person's own strength experiments, one entry per motion measured
+    (pstrgh is the axis's positive motion, nstrgh its negative one; the
+    motions of schema.SHOULDER_MOTIONS, ELBOW_MOTIONS, WRIST_MOTIONS).  Angles
+    an experiment does not record (the wrist in a shoulder experiment, the
+    shoulder in a wrist one) are taken as neutral, 0 deg."""
+    from sass_tui.db.schema import ELBOW_MOTIONS, SHOULDER_MOTIONS, WRIST_MOTIONS
+
+    experiments = {e["exp_num"]: e for e in person.experiments}
+
+    def angle(value: object) -> float:
+        return 0.0 if value is None else float(value)  # type: ignore[arg-type]
+
+    out: list[StrengthMeasurement] = []
+
+    def add(row: dict[str, object], motions: tuple[str, str], angles: tuple[float, ...]) -> None:
+        experiment = experiments.get(row["exp_num"])
+        if experiment is None:
+            return
+        conditions = (
+            str(experiment["strgh_type"]),
+            angle(experiment["speed"]),
+            angle(experiment["training"]),
+            angle(experiment["fatigue"]),
+        )
+        for motion, value in zip(motions, (row["pstrgh"], row["nstrgh"])):
+            if value is not None:
+                out.append(
+                    (str(experiment["side_of_limb"]), motion, angles, angle(value), conditions)
+                )
+
+    for row in person.shoulder:
+        shoulder = (row["shoulder_ang_x"], row["shoulder_ang_y"], row["shoulder_ang_z"])
+        add(
+            row,
+            SHOULDER_MOTIONS[row["axis"]],
+            (*map(angle, shoulder), angle(row["elbow_ang"]), 0.0, 0.0, 0.0),
+        )
+    for row in person.elbow:
+        names = (
+            "shoulder_ang_x",
+            "shoulder_ang_y",
+            "shoulder_ang_z",
+            "elbow_ang",
+            "wrist_ang_x",
+            "wrist_ang_y",
+            "wrist_ang_z",
+        )
+        add(row, ELBOW_MOTIONS, tuple(angle(row[n]) for n in names))
+    for row in person.wrist:
+        wrist = (row["wrist_ang_x"], row["wrist_ang_y"], row["wrist_ang_z"])
+        add(
+            row,
+            WRIST_MOTIONS[row["axis"]],
+            (0.0, 0.0, 0.0, angle(row["elbow_ang"]), *map(angle, wrist)),
+        )
+    return out

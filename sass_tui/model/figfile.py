@@ -13,6 +13,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
+import numpy as np
+
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
@@ -97,15 +99,21 @@ def render_fig(figure, extra_sections: list[tuple[str, list[tuple[str, float, st
         f"mass {figure.output_mass():.2f} kg, stature "
         f"{'not measured' if math.isnan(figure.stature) else f'{figure.stature:.1f} cm'} */",
     ]
-    filled = {
-        GROUP_TITLES[g]: int(figure.output_values(g)[1].sum())
-        for g in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)
-    }
-    if any(filled.values()) or math.isnan(figure.mass):
-        counts = ", ".join(f"{what} {n}" for what, n in filled.items() if n)
+    counts = []
+    for group in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS):
+        values, filled = figure.output_values(group)
+        if filled.any():
+            counts.append(
+                f"{int(filled.sum())} of the {int(np.count_nonzero(~np.isnan(values)))} "
+                f"{GROUP_TITLES[group].lower()} values (at the {GROUP_TITLES[group].lower()} "
+                f"percentile, {groups[group].percentile:g})"
+            )
+    if math.isnan(figure.mass):
+        counts.append(f"the total mass (the population's median, {figure.output_mass():.2f} kg)")
+    if counts:
         lines.append(
-            f"/* not measured for {who}, taken from the population at the group "
-            f"percentile: {counts or 'none'}{'; total mass' if math.isnan(figure.mass) else ''} */"
+            f"/* not measured for {who}, so taken from the population "
+            f"({figure.population}): {'; '.join(counts)} */"
         )
     lines.append("")
     sections = [

@@ -26,9 +26,17 @@ from sass_tui.model.names import (
     ROWS,
 )
 from sass_tui.model.percentile import check_percentile, percentile_of, value_at
-from sass_tui.model.popfile import PopulationData, read_population_file
+from sass_tui.model.popfile import (
+    PopulationData,
+    check_center_of_mass_rules,
+    read_population_file,
+)
 from sass_tui.model.units import GROUP_UNITS
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS, HANDEDNESS, STRENGTH_TYPES
+
+# A stature outside these is a typing error (2 for 200, metres for cm), not a person.
+MIN_STATURE_CM = 50.0
+MAX_STATURE_CM = 300.0
 
 # One sequence for every undoable edit, so that undo can take the newest one
 # whichever object (figure, strength page) holds it.
@@ -104,6 +112,12 @@ class Figure:
         if group == GIRTH and self.person is None:
             self.population = data.title
         self._rescale(state)
+        girth, cmass = self.groups[GIRTH].source, self.groups[CENTER_OF_MASS].source
+        if group in (GIRTH, CENTER_OF_MASS) and girth is not None and cmass is not None:
+            # appendix L.1's rules tie the two files: say what they find on loading either
+            data.warnings += [
+                w for w in check_center_of_mass_rules(cmass, girth) if w not in data.warnings
+            ]
 
     def for_person(
         self,
@@ -188,8 +202,11 @@ class Figure:
         self.mass = self._global_value("mass", p)
 
     def set_stature(self, cm: float) -> None:
-        if not cm > 0:
-            raise FigureError(f"stature must be positive, got {cm:g} cm")
+        if not MIN_STATURE_CM <= cm <= MAX_STATURE_CM:
+            raise FigureError(
+                f"stature {cm:g} cm is not a human one; expected "
+                f"{MIN_STATURE_CM:g}-{MAX_STATURE_CM:g} cm"
+            )
         self._remember()
         self.stature = float(cm)
         self.stature_percentile = self._global_percentile("stature", cm)
@@ -223,8 +240,14 @@ class Figure:
         self._rescale(state)
 
     def set_value(self, group: str, row: int, axis: int, value: float) -> None:
-        """Set one cell's value (canonical unit); its percentile follows."""
+        """Set one cell's value (canonical unit); its percentile follows.  A
+        segment size (girth) must be positive."""
         state = self._cell(group, row, axis)
+        if group == GIRTH and not value > 0:
+            raise FigureError(
+                f"{state.rows[row].label} {'xyz'[axis]}: a segment size must be "
+                f"positive, got {value:g} cm"
+            )
         self._remember()
         state.values[row, axis] = value
         stats = self._stats(state)

@@ -12,6 +12,7 @@ import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -27,7 +28,11 @@ from sass_tui.model.names import (
     row_index,
 )
 
+if TYPE_CHECKING:
+    from sass_tui.model.figure import Figure
+
 HANIM_VERSION = "2.0"
+LOA = 1  # clause 4.8.5: the 18 joints of figure 4.4
 
 # Figure 4.10 (clause 4.9.6.1): joint, its segment, its parent joint.
 LOA1: tuple[tuple[str, str, str | None], ...] = (
@@ -52,9 +57,42 @@ LOA1: tuple[tuple[str, str, str | None], ...] = (
 )
 SEGMENT_OF = {joint: segment for joint, segment, _ in LOA1}
 
-# BODY.FIG (appendix D) hangs the head on the neck's distal site, at this
-# fraction of the neck length above the base of the neck.
-NECK_DISTAL_FRACTION = 0.4620
+# Where the joint centres stand (clause 4.8.2: "placed so that the joints
+# rotate in the same way that they do on a real human body"): each at the
+# height of a body landmark, the landmark heights being the figure's stature
+# times the mean landmark/stature ratio of the ANSUR II public data (Gordon et
+# al. 2014, 4,082 men and 1,986 women; scripts/hanim_landmarks.py computes the
+# ratios and measures the joint errors they give, docs/hanim.md).
+#   ankle (talocrural)  lateral malleolus height
+#   knee                lateral femoral epicondyle height (the flexion axis)
+#   hip                 trochanterion height (level with the femoral head)
+#   vl5                 iliocristale height (the iliac crest, at L4-L5)
+#   shoulder            acromion height less SHOULDER_BELOW_ACROMION
+#   neck base (top of l5) cervicale height; skullbase: tragion height
+#   skull vertex        the stature
+LANDMARK_FRACTIONS: dict[str, dict[str, float]] = {
+    "male": {
+        "lateral_malleolus": 0.0415,
+        "femoral_epicondyle": 0.2799,
+        "trochanterion": 0.5128,
+        "iliocristale": 0.6044,
+        "acromion": 0.8203,
+        "cervicale": 0.8639,
+        "tragion": 0.9252,
+    },
+    "female": {
+        "lateral_malleolus": 0.0385,
+        "femoral_epicondyle": 0.2860,
+        "trochanterion": 0.5190,
+        "iliocristale": 0.6113,
+        "acromion": 0.8198,
+        "cervicale": 0.8570,
+        "tragion": 0.9222,
+    },
+}
+# The centre of the humeral head lies below the acromion's tip by about the
+# head's radius and the subacromial space (an assumption, docs/hanim.md).
+SHOULDER_BELOW_ACROMION = 0.04  # m
 # Appendix L.1: the anklebone lies 0.2516 foot lengths in front of the heel.
 HEEL_BEHIND_ANKLE = 0.2516
 
@@ -183,47 +221,84 @@ def build_humanoid(figure) -> Humanoid:
         bad = [ROWS[GIRTH][i].label for i in np.unique(np.nonzero(np.isnan(girth))[0])]
         raise HAnimError(f"cannot export a humanoid: no segment dimensions for {', '.join(bad)}")
     dim = {row.name: girth[i] for i, row in enumerate(ROWS[GIRTH])}
-    centers = _joint_centers(dim)
-    segments = _segments(figure, dim, centers)
+    heights = landmark_heights(figure.gender, humanoid_stature(figure) / 100.0)
+    centers = _joint_centers(dim, heights)
+    segments = _segments(figure, dim, centers, heights)
     limits = _limits(figure)
-    sites = _sites(dim, centers)
+    sites = _sites(dim, centers, heights)
     return Humanoid(_humanoid_name(figure), _info(figure), centers, segments, limits, sites)
+
+
+def humanoid_stature(figure: Figure) -> float:
+    """The stature (cm) the humanoid stands to: the figure's, else (a person
+    whose stature was not measured) the population's median."""
+    if not math.isnan(figure.stature):
+        return float(figure.stature)
+    from sass_tui.model.names import GLOBAL, row_index
+    from sass_tui.model.percentile import value_at
+
+    if figure.global_stats is None or not figure.global_stats.has(figure.gender):
+        raise HAnimError("cannot export a humanoid: no stature, and no population stature")
+    stats = figure.global_stats.stats(figure.gender)[row_index(GLOBAL, "stature"), 0]
+    return float(value_at(stats, 50.0))
+
+
+def landmark_heights(gender: str, stature: float) -> dict[str, float]:
+    """Landmark and joint-centre heights (m) of a figure `stature` m tall."""
+    fractions = LANDMARK_FRACTIONS[gender]
+    heights = {name: fraction * stature for name, fraction in fractions.items()}
+    heights["vertex"] = stature
+    heights["ankle"] = heights["lateral_malleolus"]
+    heights["knee"] = heights["femoral_epicondyle"]
+    heights["hip"] = heights["trochanterion"]
+    heights["vl5"] = heights["iliocristale"]
+    heights["shoulder"] = heights["acromion"] - SHOULDER_BELOW_ACROMION
+    heights["skullbase"] = heights["tragion"]
+    return heights
+
+
+def _population_girth(figure: Figure) -> np.ndarray:
+    """The population's segment dimensions (cm) at the figure's girth percentile."""
+    from sass_tui.model.percentile import value_at
+
+    state = figure.groups[GIRTH]
+    if state.source is None:
+        raise HAnimError("cannot export a humanoid: no girth statistics loaded")
+    return np.asarray(value_at(state.source.stats(figure.gender), state.percentile), dtype=float)
 
 
 def _rows(figure, group: str) -> np.ndarray:
     return np.asarray(figure.output_values(group)[0], dtype=float)
 
 
-def _joint_centers(dim: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
-    """Built upwards from the floor as BODY.FIG stacks the segments."""
+def _joint_centers(dim: dict[str, np.ndarray], heights: dict[str, float]) -> dict[str, np.ndarray]:
+    """Heights from the landmarks (LANDMARK_FRACTIONS); side spacing and the
+    arm and foot lengths from the segment dimensions."""
     c: dict[str, np.ndarray] = {}
     for side, name in (("l", "left"), ("r", "right")):
         sign = 1.0 if side == "l" else -1.0
-        foot, lower, upper = dim[f"{name}_foot"], dim[f"{name}_lower_leg"], dim[f"{name}_upper_leg"]
+        foot, upper = dim[f"{name}_foot"], dim[f"{name}_upper_leg"]
         # hip centre in the middle of the thigh's width, inside the lower torso
         x = sign * (dim["lower_torso"][1] - upper[1]) / 2
-        ankle = foot[2]  # foot z: the ankle height
-        c[f"{side}_talocrural"] = np.array([x, ankle, 0.0])
-        c[f"{side}_knee"] = np.array([x, ankle + lower[2], 0.0])
-        c[f"{side}_hip"] = np.array([x, ankle + lower[2] + upper[2], 0.0])
+        c[f"{side}_talocrural"] = np.array([x, heights["ankle"], 0.0])
+        c[f"{side}_knee"] = np.array([x, heights["knee"], 0.0])
+        c[f"{side}_hip"] = np.array([x, heights["hip"], 0.0])
         toes = dim[f"{name}_ball_of_foot"]
         c[f"{side}_metatarsophalangeal_2"] = np.array(
             [x, toes[2] / 2, (1 - HEEL_BEHIND_ANKLE) * foot[0]]
         )
-    # flooroffset = rfootz + rlowlegz + ruplegz (appendix F)
-    floor_offset = c["r_hip"][1]
-    c["humanoid_root"] = np.array([0.0, floor_offset, 0.0])
+    c["humanoid_root"] = np.array([0.0, heights["hip"], 0.0])
     c["sacroiliac"] = c["humanoid_root"].copy()
-    # SASS's waist joins the lower torso's distal end to the centre torso
-    c["vl5"] = np.array([0.0, floor_offset + dim["lower_torso"][2], 0.0])
-    neck_base = c["vl5"][1] + dim["center_torso"][2]
-    c["skullbase"] = np.array([0.0, neck_base + NECK_DISTAL_FRACTION * dim["neck"][2], 0.0])
+    c["vl5"] = np.array([0.0, heights["vl5"], 0.0])
+    c["skullbase"] = np.array([0.0, heights["skullbase"], 0.0])
     # sternum (ctorsoy - clavz, psurf half widths) + clavicle = half the torso width
     half_width = dim["center_torso"][1] / 2
     for side, name in (("l", "left"), ("r", "right")):
         sign = 1.0 if side == "l" else -1.0
-        shoulder = np.array([sign * half_width, neck_base, 0.0])
-        elbow = shoulder - _Y * dim[f"{name}_upper_arm"][2]
+        shoulder = np.array([sign * half_width, heights["shoulder"], 0.0])
+        # ANSUR's acromion-radiale length (SASS upper arm z) runs from the acromion
+        elbow = np.array([sign * half_width, heights["acromion"], 0.0])
+        elbow -= _Y * dim[f"{name}_upper_arm"][2]
         c[f"{side}_shoulder"], c[f"{side}_elbow"] = shoulder, elbow
         c[f"{side}_radiocarpal"] = elbow - _Y * dim[f"{name}_lower_arm"][2]
     return {joint: c[joint] for joint, _, _ in LOA1}
@@ -259,20 +334,58 @@ def _segment_table() -> list[tuple[str, str | None, str, np.ndarray, np.ndarray,
     return table
 
 
-def _segments(figure, dim, centers) -> dict[str, Segment]:
+def _extents(
+    dim: dict[str, np.ndarray], centers: dict[str, np.ndarray], heights: dict[str, float]
+) -> dict[str, float]:
+    """Each segment's length along its long axis (m) in the humanoid: to the
+    next joint, or to the landmark that ends it.  The segment's table length
+    is kept only where no landmark ends it (hand, fingers, toes)."""
+    out = {
+        "pelvis": heights["vl5"] - heights["hip"],
+        "l5": heights["cervicale"] - heights["vl5"],
+        "skull": float(dim["bottom_head"][2]),  # chin to vertex, ending at the stature
+    }
+    for side in ("l", "r"):
+        out[f"{side}_thigh"] = heights["hip"] - heights["knee"]
+        out[f"{side}_calf"] = heights["knee"] - heights["ankle"]
+        out[f"{side}_talus"] = heights["ankle"]
+        out[f"{side}_upperarm"] = float(
+            centers[f"{side}_shoulder"][1] - centers[f"{side}_elbow"][1]
+        )
+        out[f"{side}_forearm"] = float(
+            centers[f"{side}_elbow"][1] - centers[f"{side}_radiocarpal"][1]
+        )
+    return out
+
+
+def _segments(figure, dim, centers, heights) -> dict[str, Segment]:
     fractions = dict(MASS_FRACTIONS)
     com_rows = {row.name: i for i, row in enumerate(ROWS[CENTER_OF_MASS])}
-    com_values = _rows(figure, CENTER_OF_MASS) / 100.0
+    com_values, com_filled = figure.output_values(CENTER_OF_MASS)
+    com_values = np.asarray(com_values, dtype=float) / 100.0
+    # A centre of mass taken from the population (a person's is not measured)
+    # goes with the population's segment length, not the person's.
+    population_lengths = _population_girth(figure)[:, 2] / 100.0
+    extents = _extents(dim, centers, heights)
     segments: dict[str, Segment] = {}
     for name, row, joint, long_axis, depth_axis, solid in _segment_table():
         mass = figure.output_mass() * sum(fractions[v] for v in SEGMENT_MASSES[name])
         origin = centers[joint]
+        if name == "skull":  # the head is measured from the chin (appendix L.1)
+            origin = np.array([0.0, heights["vertex"] - extents["skull"], 0.0])
         width_axis = np.abs(np.cross(long_axis, depth_axis))
-        shapes = _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers)
+        shapes = _shapes(
+            name, row, dim, origin, long_axis, depth_axis, width_axis, centers, heights, extents
+        )
         # size along X, Y, Z of the principal solid (first shape)
         size = shapes[0][2] if shapes else np.zeros(3)
         if row in com_rows and not np.isnan(com_values[com_rows[row]]).any():
             cx, cy, cz = com_values[com_rows[row]]
+            # the table's distance along the segment, in proportion to its length here
+            i = com_rows[row]
+            length = float(population_lengths[i] if com_filled[i, 2] else dim[row][2])
+            if name in extents and length > 0:
+                cz *= extents[name] / length
             com = origin + cz * long_axis + cx * depth_axis + cy * width_axis
         elif shapes:  # the toes: appendix L.1 gives them no centre of mass (nor mass)
             com = shapes[0][1].copy()
@@ -282,18 +395,20 @@ def _segments(figure, dim, centers) -> dict[str, Segment]:
     return segments
 
 
-def _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers):
-    """Boxes and ellipsoids in place (humanoid coordinates), one per SASS psurf."""
+def _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers, heights, extents):
+    """Boxes and ellipsoids in place (humanoid coordinates), one per SASS psurf,
+    each as long as the segment is in the humanoid (_extents)."""
     if row is None:
         return []
     depth, width, length = dim[row]
+    length = extents.get(name, length)
 
     def along(start, extent_long, d, w):
         size = np.abs(depth_axis) * d + width_axis * w + np.abs(long_axis) * extent_long
         return start + long_axis * extent_long / 2, size
 
     if name.endswith("_talus"):
-        # foot x is heel to ball, z the ankle height: the box stands on the floor
+        # foot x is heel to ball; the box stands on the floor up to the ankle
         size = np.array([width, length, depth])
         centre = origin + np.array([0, -length / 2, (0.5 - HEEL_BEHIND_ANKLE) * depth])
         return [("box", centre, size)]
@@ -306,7 +421,7 @@ def _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers):
         return [("ellipsoid", centre, size)]
     centre, size = along(origin, length, depth, width)
     shapes = [("box", centre, size)]
-    if name == "l5":  # the neck, up to the skull base where BODY.FIG hangs the head
+    if name == "l5":  # the neck, from the cervicale up to the skull base
         neck = dim["neck"]
         neck_base = origin + long_axis * length
         extent = centers["skullbase"][1] - neck_base[1]
@@ -361,29 +476,29 @@ def _limits(figure) -> dict[str, Limits]:
     return out
 
 
-def _sites(dim, centers) -> list[Site]:
-    head = dim["bottom_head"]
-    eyes = dim[
-        "eye_location"
-    ]  # x: head depth to the eyes, y: half the eye spacing, z: above the chin
-    base = centers["skullbase"]
-    # BODY.FIG's head psurf starts at the chin, on the neck's distal site
-    eye_height = base[1] + eyes[2]
+def _sites(
+    dim: dict[str, np.ndarray], centers: dict[str, np.ndarray], heights: dict[str, float]
+) -> list[Site]:
+    # eye location: x head depth to the eyes, y half the eye spacing, z the
+    # ectocanthus below the top of the head (report 10.1, eyelocz)
+    eyes = dim["eye_location"]
+    eye_height = heights["vertex"] - eyes[2]
     front = eyes[0] / 2
     # the eye sites look where the humanoid looks (4.6): a camera's -Z turned to +Z
     looking_front = (0.0, 1.0, 0.0, math.pi)
     sites = [
-        Site("skull_vertex_pt", "skull", base + _Y * head[2]),
+        Site("skull_vertex_pt", "skull", np.array([0.0, heights["vertex"], 0.0])),
         Site("sellion_pt", "skull", np.array([0.0, eye_height, front])),
         Site("x_l_eye_pt", "skull", np.array([eyes[1], eye_height, front]), looking_front),
         Site("x_r_eye_pt", "skull", np.array([-eyes[1], eye_height, front]), looking_front),
     ]
     for side, name in (("l", "left"), ("r", "right")):
         sign = 1.0 if side == "l" else -1.0
-        shoulder = centers[f"{side}_shoulder"]
+        acromion = centers[f"{side}_shoulder"].copy()
+        acromion[1] = heights["acromion"]
         sites.append(
             Site(
-                f"{side}_acromion_pt", "l5", shoulder + _X * sign * dim[f"{name}_upper_arm"][1] / 2
+                f"{side}_acromion_pt", "l5", acromion + _X * sign * dim[f"{name}_upper_arm"][1] / 2
             )
         )
         tip = centers[f"{side}_radiocarpal"] - _Y * (
@@ -476,21 +591,25 @@ def _mfstring(values: list[str]) -> str:
 SKIN = {"male": "0.80 0.62 0.50", "female": "0.86 0.66 0.58"}
 
 
-def humanoid_element(humanoid: Humanoid, gender: str, prefix: str = "hanim_") -> ET.Element:
-    """The HAnimHumanoid node; `prefix` keeps DEF names unique in a shared scene."""
+def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
+    """The HAnimHumanoid node.  DEF names follow the HAnim convention the x3d
+    package checks: the humanoid's name, '_', the node's name ('male_50_l_hip');
+    humanoids with different names can share a scene."""
+    prefix = f"{humanoid.name}_"
     # skeletalConfiguration is "BASIC" (clause 4.8.2) through the field's X3D 4.0
     # default: X3D's canonical XML form leaves defaults out, and Debian's
     # view3dscene 4.2, which predates the field, warns when it is written.
     root = ET.Element(
         "HAnimHumanoid",
         {
-            "DEF": f"{prefix}humanoid",
+            "DEF": humanoid.name,
             "name": humanoid.name,
             "version": HANIM_VERSION,
+            "loa": str(LOA),
             "info": _mfstring(humanoid.info),
         },
     )
-    appearance_def = f"{prefix}skin"
+    appearance_def = f"{prefix}skin_appearance"
     joints: dict[str, ET.Element] = {}
     first_shape = True
     sites_by_segment: dict[str, list[Site]] = {}

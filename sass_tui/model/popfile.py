@@ -24,6 +24,9 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
     AXES,
     AXES_OF,
+    CENTER_OF_MASS,
+    GIRTH,
+    GLOBAL,
     GROUP_TITLES,
     JOINT_LIMITS,
     ROWS,
@@ -33,6 +36,14 @@ from sass_tui.model.names import (
 from sass_tui.model.vocabulary import GENDERS
 
 NO_VALUE = 999.0
+
+# What a file of each group is called when it is loaded as another group's.
+FILE_KINDS = {
+    GIRTH: "a girth (segment dimensions) file",
+    JOINT_LIMITS: "a joint-limits file",
+    CENTER_OF_MASS: "a center-of-mass file",
+    GLOBAL: "a global statistics file",
+}
 
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?$")
 
@@ -110,13 +121,46 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
     if not raw:
         raise PopulationFileError(f"{name}:{len(lines)}: no 'T MALE' or 'T FEMALE' section")
 
+    for entries in raw.values():
+        _check_kind(entries, group, name)
     data = PopulationData(group=group, title=title or Path(name).name, path=name)
     for gender, entries in raw.items():
         data.sections[gender], data.lines[gender] = _place_rows(
             entries, gender, group, lookup, name, section_line, data.warnings
         )
     _check_rows(data, name)
+    _check_cross_gender(data, name)
     return data
+
+
+def _check_kind(entries: list[tuple[int, list[float], str]], group: str, name: str) -> None:
+    """Refuse a file of another group (its row labels are that group's, not
+    this one's): `--girth jntlmt.dat` would otherwise load joint limits as
+    segment sizes, by position."""
+    labels = [(lineno, normalise_label(label)) for lineno, _, label in entries if label]
+    if not labels or group == GLOBAL:
+        return
+
+    def score(kind: str) -> tuple[int, bool]:
+        lookup = label_lookup(kind)
+        return sum(label in lookup for _, label in labels), len(ROWS[kind]) == len(entries)
+
+    mine = label_lookup(group)
+    kinds = [k for k in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS) if AXES_OF[k] == AXES_OF[group]]
+    best = max(kinds, key=score)
+    if best != group and score(best) > score(group):
+        lineno, label = next(((n, lb) for n, lb in labels if lb not in mine), labels[0])
+        what = (
+            f"row {label!r} is not a {GROUP_TITLES[group]} row"
+            if label not in mine
+            else (
+                f"its {len(entries)} rows are the {GROUP_TITLES[best]} rows ({GROUP_TITLES[group]} has {len(ROWS[group])})"
+            )
+        )
+        raise PopulationFileError(
+            f"{name}:{lineno}: {what}; this looks like {FILE_KINDS[best]}, not "
+            f"{FILE_KINDS[group]}; nothing was loaded"
+        )
 
 
 def split_data_row(
@@ -218,6 +262,133 @@ def _check_rows(data: PopulationData, name: str) -> None:
                             f"{where}: a {'lower' if lower else 'upper'} limit that is "
                             f"{'positive' if lower else 'negative'} ({v5:g}, {v50:g}, {v95:g})"
                         )
+
+
+# A cell whose female/male ratio is this many times the median ratio of its
+# axis over all rows (or 1/this) is suspect: segment sizes of the two genders
+# differ by 5-20 %, and appendix C's lower torso length (2.3x the median)
+# and ball-of-foot x (1.8x) stand out where the next largest is 1.4x (the
+# neck length, which the report says it took from the neck diameter).
+CROSS_GENDER_LIMIT = 1.5
+
+
+def _check_cross_gender(data: PopulationData, name: str) -> None:
+    """Girth: the female/male ratio of each cell at the 50th percentile
+    against the median ratio of its axis."""
+    if data.group != GIRTH or not (data.has("male") and data.has("female")):
+        return
+    male, female = data.stats("male")[..., 1], data.stats("female")[..., 1]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = np.where(male > 0, female / male, np.nan)
+    median = np.nanmedian(ratio, axis=0)
+    for i, row in enumerate(ROWS[GIRTH]):
+        for a, axis in enumerate(AXES):
+            relative = ratio[i, a] / median[a]
+            if np.isnan(relative) or 1 / CROSS_GENDER_LIMIT <= relative <= CROSS_GENDER_LIMIT:
+                continue
+            data.warnings.append(
+                f"{name}:{data.lines['female'][i]}: {row.label} {axis}: the female values "
+                f"({_three(data.stats('female')[i, a])}) are {ratio[i, a]:.2f} times the male "
+                f"({_three(data.stats('male')[i, a])}) where the {axis} of the other "
+                f"rows are {median[a]:.2f} times; a misprint? (docs/model.md, "
+                "suspected misprints)"
+            )
+
+
+def _three(values: np.ndarray) -> str:
+    return "/".join(f"{v:g}" for v in values)
+
+
+# Appendix L.1: the female center of mass scaled from the male by segment length.
+# (center-of-mass row, girth rows whose z lengths add up to the segment length)
+SCALED_BY_LENGTH = {
+    "bottom_head": ("bottom_head",),
+    "neck": ("neck",),
+    "right_upper_arm": ("right_upper_arm",),
+    "left_upper_arm": ("left_upper_arm",),
+    "right_lower_arm": ("right_lower_arm",),
+    "left_lower_arm": ("left_lower_arm",),
+    "right_upper_leg": ("right_upper_leg",),
+    "left_upper_leg": ("left_upper_leg",),
+    "right_hand": ("right_hand", "right_knuckles"),
+    "left_hand": ("left_hand", "left_knuckles"),
+}
+# L.1, both genders: lower leg center of mass 0.44 lowlegz from the knee; the
+# foot's 0.44 (footx + toesx) - 0.2516 footx in front of the anklebone.
+LOWER_LEG_FRACTION = 0.44
+FOOT_FRACTION = 0.44
+HEEL_BEHIND_ANKLE = 0.2516
+# A cell is suspect when it is this far off the rule AND off its own row's
+# agreement with the rule (a whole row off by the same factor is another
+# source of lengths, e.g. appendix F's arm lengths, not a misprint).
+RULE_TOLERANCE = 0.05
+IMPLIED_TOLERANCE = 0.20
+
+
+def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> list[str]:
+    """Appendix L.1's own rules, applied to a center-of-mass file and the girth
+    it goes with; warnings name the file:line of the suspect cell."""
+    out: list[str] = []
+    com_rows = {row.name: i for i, row in enumerate(ROWS[CENTER_OF_MASS])}
+    girth_rows = {row.name: i for i, row in enumerate(ROWS[GIRTH])}
+    percentiles = ("5th", "50th", "95th")
+
+    def where(data: PopulationData, gender: str, index: int, group: str, axis: str) -> str:
+        return f"{data.path}:{data.lines[gender][index]}: {ROWS[group][index].label} {axis}"
+
+    if all(cmass.has(g) and girth.has(g) for g in ("male", "female")):
+        for row, parts in SCALED_BY_LENGTH.items():
+            i = com_rows[row]
+            lengths = {
+                g: sum(girth.stats(g)[girth_rows[part], 2] for part in parts)
+                for g in ("male", "female")
+            }
+            expected = cmass.stats("male")[i, 2] * lengths["female"] / lengths["male"]
+            actual = cmass.stats("female")[i, 2]
+            with np.errstate(divide="ignore", invalid="ignore"):
+                q = actual / expected
+            if np.isnan(q).any():
+                continue
+            for k in range(3):
+                if abs(q[k] - 1) > RULE_TOLERANCE and abs(q[k] - np.median(q)) > RULE_TOLERANCE:
+                    out.append(
+                        f"{where(cmass, 'female', i, CENTER_OF_MASS, 'z')}: the {percentiles[k]} "
+                        f"value {actual[k]:g} is not what appendix L.1's scaling rule gives "
+                        f"(male {cmass.stats('male')[i, 2, k]:g} x female length "
+                        f"{lengths['female'][k]:g} / male {lengths['male'][k]:g} = "
+                        f"{expected[k]:.1f}), though the other percentiles follow it; "
+                        "a misprint? (docs/model.md, suspected misprints)"
+                    )
+    for gender in ("male", "female"):
+        if not (cmass.has(gender) and girth.has(gender)):
+            continue
+        for side in ("right", "left"):
+            i = com_rows[f"{side}_lower_leg"]
+            actual = cmass.stats(gender)[i, 2]
+            expected = LOWER_LEG_FRACTION * girth.stats(gender)[girth_rows[f"{side}_lower_leg"], 2]
+            for k in range(3):
+                if abs(actual[k] / expected[k] - 1) > RULE_TOLERANCE:
+                    out.append(
+                        f"{where(cmass, gender, i, CENTER_OF_MASS, 'z')}: the {percentiles[k]} "
+                        f"value {actual[k]:g} is not appendix L.1's 0.44 x lower leg length "
+                        f"({expected[k]:.1f})"
+                    )
+            foot_x = girth.stats(gender)[girth_rows[f"{side}_foot"], 0]
+            toes_row = girth_rows[f"{side}_ball_of_foot"]
+            toes_x = girth.stats(gender)[toes_row, 0]
+            foot_com = cmass.stats(gender)[com_rows[f"{side}_foot"], 0]
+            implied = (foot_com + HEEL_BEHIND_ANKLE * foot_x) / FOOT_FRACTION - foot_x
+            off = [k for k in range(3) if abs(toes_x[k] / implied[k] - 1) > IMPLIED_TOLERANCE]
+            if off:
+                out.append(
+                    f"{where(girth, gender, toes_row, GIRTH, 'x')}: {_three(toes_x)}, but "
+                    f"appendix L.1's foot rule, center of mass = 0.44 (foot x + toes x) - "
+                    f"0.2516 foot x, with the foot's center of mass {_three(foot_com)} "
+                    f"({cmass.path}) and foot x {_three(foot_x)} gives "
+                    f"{'/'.join(f'{v:.1f}' for v in implied)}; a misprint? "
+                    "(docs/model.md, suspected misprints)"
+                )
+    return out
 
 
 def write_population_file(data: PopulationData, path: str | Path) -> None:

@@ -30,12 +30,13 @@ import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
 from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
-from sass_tui.model.figure import EDIT_SEQUENCE
+from sass_tui.model.figure import EDIT_SEQUENCE, Figure
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
@@ -91,6 +92,15 @@ ENDURANCE_POWER_MODEL = {
 }
 
 
+# A prediction for an angle further than this outside the angles a motion's
+# data cover is refused: the fitted quadratic has nothing to hold it there
+# (shoulder flexion at 180 deg, data to 75 deg, predicted 0.01 ft-lb).
+EXTRAPOLATION_MARGIN_DEG = 20.0
+# A file whose 'P' title says this is test data, and every output from it says so.
+TEST_DATA_MARKER = "test data"
+TEST_DATA_LABEL = "TEST DATA, not measured strength"
+
+
 class StrengthFileError(ValueError, SassError):
     """The strength file breaks the format; nothing of it was loaded."""
 
@@ -123,7 +133,25 @@ class StrengthData:
     path: str
     sections: dict[tuple[str, str], StrengthSection] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    # A person's own measurements: the conditions they were measured at
+    # (strength_type, motion_speed, training_level, fatigue_level); the
+    # modifiers then scale from these, not from rested isometric strength.
+    measured_at: tuple[str, float, float, float] | None = None
     _models: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def test_data(self) -> bool:
+        """The file says (in its P title) that its values are test data."""
+        return TEST_DATA_MARKER in self.title.lower()
+
+    @property
+    def label(self) -> str:
+        """What the numbers are, for a page title or a file comment."""
+        if self.test_data:
+            return f"{TEST_DATA_LABEL} ({Path(self.path).name})"
+        if self.measured_at is not None:
+            return self.title
+        return f"{self.title} ({Path(self.path).name})"
 
     def section(self, gender: str, side: str) -> tuple[StrengthSection, bool]:
         """The section for gender and side, or the other side's (measured=False)."""
@@ -307,6 +335,58 @@ def _build_section(key, section_line, entries, name, warnings) -> StrengthSectio
     )
 
 
+# --- a person's own strength ---------------------------------------------------
+
+
+def person_strength_data(
+    name: str,
+    gender: str,
+    measurements: list[tuple[str, str, tuple[float, ...], float, tuple[str, float, float, float]]],
+    conditions: tuple[str, float, float, float] | None = None,
+) -> StrengthData:
+    """A person's own strength (report §12.4, Disp. Indv.) as strength data the
+    strength page shows like a file's: one stored row per experiment and
+    motion, at the person's angles, in ft-lb.  `measurements` are
+    (side, motion, 7 angles deg, strength N-m, conditions) as
+    db.individual.strength_measurements gives them.  Only the experiments
+    measured at `conditions` (strength_type, motion_speed, training_level,
+    fatigue_level; default: those most of the experiments share) are used, so
+    that isokinetic values are not fitted together with isometric ones.
+    StrengthError when the person has no strength experiments."""
+    if not measurements:
+        raise StrengthError(f"{name} has no strength experiments in the database")
+    if conditions is None or not any(m[4] == conditions for m in measurements):
+        counts: dict[tuple[str, float, float, float], int] = {}
+        for m in measurements:
+            counts[m[4]] = counts.get(m[4], 0) + 1
+        conditions = max(counts, key=lambda c: counts[c])
+    kind, speed, training, fatigue = conditions
+    what = kind if kind == "isometric" else f"{kind} at {speed:g} deg/s"
+    title = (
+        f"{name}'s own strength experiments ({what}, training {training:g}, "
+        f"fatigue {fatigue:g}; database)"
+    )
+    source = f"database:{name}"
+    warnings: list[str] = []
+    data = StrengthData(title=title, path=source, warnings=warnings, measured_at=conditions)
+    for side in SIDES:
+        entries = []
+        for i, (where, motion, angles, value_nm, measured) in enumerate(measurements):
+            if where != side or measured != conditions:
+                continue
+            value = float(convert(value_nm, "N_m", "ft_lb"))
+            numbers = [*map(float, angles), value, 50.0]
+            entries.append((i + 1, MOTION_NAMES.index(motion), numbers, f"{motion}: measured"))
+        if entries:
+            entries.sort(key=lambda e: e[1])
+            data.sections[(gender, side)] = _build_section(
+                (gender, side), 0, entries, source, warnings
+            )
+    # A person measures a few motions: the others are "no data", not a warning.
+    data.warnings[:] = [w for w in warnings if "has no data for" not in w]
+    return data
+
+
 # --- percentiles ------------------------------------------------------------
 
 
@@ -353,6 +433,9 @@ class StrengthModel:
         self.ceiling = np.full(n, np.nan)
         self.fits: list[MotionFit | None] = [None] * n
         self._stored: list[dict[tuple[float, ...], tuple[float, float]]] = [{} for _ in range(n)]
+        # the angles each motion's data cover (deg): lowest and highest per axis
+        self.low = np.full((n, N_ANGLES), np.nan)
+        self.high = np.full((n, N_ANGLES), np.nan)
         median = section.values / percentile_factor(section.percentiles)
         for row, motion in enumerate(section.motions):
             key = _config_key(section.angles[row])
@@ -360,6 +443,8 @@ class StrengthModel:
         for motion in range(n):
             mask = section.motions == motion
             if mask.any():
+                self.low[motion] = section.angles[mask].min(axis=0)
+                self.high[motion] = section.angles[mask].max(axis=0)
                 self.fits[motion] = self._fit(motion, section.angles[mask], median[mask])
                 self.coefficients[motion] = self.fits[motion].coefficients
                 self.available[motion] = True
@@ -386,6 +471,37 @@ class StrengthModel:
             max_percent=float(np.abs(relative).max() * 100.0),
             varied=tuple(JOINT_AXES[j] for j in range(N_ANGLES) if distinct[j] >= 2),
         )
+
+    def coverage(self, motion: int, angles) -> tuple[str, bool]:
+        """(note, refused) for a prediction at `angles`: the note names every
+        angle outside the data of this motion ('' inside them); refused when a
+        varied angle lies more than EXTRAPOLATION_MARGIN_DEG outside."""
+        if not self.available[motion]:
+            return "", False
+        notes, refused = [], False
+        for j, angle in enumerate(np.asarray(angles, dtype=float)):
+            low, high = self.low[motion, j], self.high[motion, j]
+            if low - 1e-9 <= angle <= high + 1e-9:
+                continue
+            axis = JOINT_AXES[j]
+            if low == high:
+                notes.append(
+                    f"{axis} {angle:g} deg: the data hold {axis} only at {low:g} deg, "
+                    "so the prediction does not vary with it"
+                )
+                continue
+            off = low - angle if angle < low else angle - high
+            far = off > EXTRAPOLATION_MARGIN_DEG
+            refused = refused or far
+            notes.append(
+                f"{axis} {angle:g} deg is outside the data's {low:g} to {high:g} deg"
+                + (
+                    f", more than {EXTRAPOLATION_MARGIN_DEG:g} deg: not to be trusted"
+                    if far
+                    else ""
+                )
+            )
+        return "; ".join(notes), refused
 
     def stored(self, motion: int, angles) -> tuple[float, float] | None:
         """(value ft-lb, its percentile) when the configuration is in the data."""
@@ -504,24 +620,35 @@ def parse_side_factor(text: str) -> float:
 def joint_limit_range(figure, side: str, joint_axis: str) -> tuple[float, float]:
     """(lower, upper) deg of a joint axis from the figure's current joint limits.
 
-    NaN, NaN: no motion about this axis (999).  A lower limit with the sign of
-    an upper one (the male shoulder z of appendix H, warned at load) is read as
-    its negative, as the female table and the ul/ll convention say."""
+    NaN, NaN: no motion about this axis (999).  A person the database has no
+    joint limits for (every ANSUR II person) gets the population's limits at
+    the group percentile, as the figure's outputs do (Figure.output_values)."""
+    return _joint_limit_range(figure, side, joint_axis)[:2]
+
+
+def _joint_limit_range(figure: Figure, side: str, joint_axis: str) -> tuple[float, float, bool]:
+    """(lower, upper, taken from the population because not measured)."""
     state = figure.groups[JOINT_LIMITS]
     if not state.loaded:
         raise StrengthError("joint limits are not loaded; angles cannot be checked")
     joint, axis = joint_axis.split("_")
     column = "xyz".index(axis)
-    upper = float(state.values[row_index(JOINT_LIMITS, f"{side}_{joint}_ul"), column])
-    lower = float(state.values[row_index(JOINT_LIMITS, f"{side}_{joint}_ll"), column])
-    if lower > 0 and upper > 0:
-        lower = -lower
-    return lower, upper
+    values, filled = figure.output_values(JOINT_LIMITS)
+    upper_row = row_index(JOINT_LIMITS, f"{side}_{joint}_ul")
+    lower_row = row_index(JOINT_LIMITS, f"{side}_{joint}_ll")
+    from_population = bool(filled[upper_row, column] or filled[lower_row, column])
+    return (
+        float(values[lower_row, column]),
+        float(values[upper_row, column]),
+        from_population,
+    )
 
 
 def check_angle(figure, side: str, joint_axis: str, degrees: float) -> None:
-    """Refuse an angle outside the figure's current joint limits, naming the limit."""
-    lower, upper = joint_limit_range(figure, side, joint_axis)
+    """Refuse an angle outside the figure's current joint limits, naming the limit
+    and where it comes from (the figure's own, or the population's for a person
+    whose joint limits were not measured)."""
+    lower, upper, from_population = _joint_limit_range(figure, side, joint_axis)
     joint, axis = joint_axis.split("_")
     what = f"{side} {joint} {axis}"
     percentile = figure.groups[JOINT_LIMITS].percentile
@@ -529,16 +656,34 @@ def check_angle(figure, side: str, joint_axis: str, degrees: float) -> None:
         if degrees != 0:
             raise StrengthError(f"{what}: no motion about this axis (joint limits)")
         return
+    source = f"joint limits, {percentile:g}th percentile"
+    if from_population:
+        source = (
+            f"not measured for {figure.person}: the population's joint limits "
+            f"at the {percentile:g}th percentile"
+        )
     if degrees > upper:
         raise StrengthError(
             f"{what} {degrees:g} deg is above the {side} {joint} upper limit "
-            f"{upper:g} deg (joint limits, {percentile:g}th percentile)"
+            f"{upper:g} deg ({source})"
         )
     if degrees < lower:
         raise StrengthError(
             f"{what} {degrees:g} deg is below the {side} {joint} lower limit "
-            f"{lower:g} deg (joint limits, {percentile:g}th percentile)"
+            f"{lower:g} deg ({source})"
         )
+
+
+def limits_source(figure: Figure) -> str:
+    """Which joint limits the strength page checks angles against, in words."""
+    percentile = figure.groups[JOINT_LIMITS].percentile
+    if figure.person is not None and figure.groups[JOINT_LIMITS].loaded:
+        if figure.output_values(JOINT_LIMITS)[1].any():
+            return (
+                f"joint limits: not measured for {figure.person}; the population's "
+                f"at the {percentile:g}th percentile"
+            )
+    return f"joint limits: {percentile:g}th percentile"
 
 
 def parse_joint_axis(text: str) -> int:
@@ -565,6 +710,8 @@ class StrengthRow:
     value: float  # NaN = no data for this motion
     source: str  # "stored" | "predicted" | "no data"
     unit: str  # display spelling, "ft-lb" | "N-m"
+    # "" or why a predicted value is an extrapolation (angles outside the data)
+    extrapolated: str = ""
 
 
 class StrengthSheet:
@@ -606,14 +753,32 @@ class StrengthSheet:
 
     # --- reading -------------------------------------------------------------
     def values(self) -> tuple[np.ndarray, np.ndarray]:
-        """Every row's strength (ft-lb, modifiers applied) and stored? mask."""
+        """Every row's strength (ft-lb, modifiers applied) and stored? mask.
+
+        A person's own data were measured at their own conditions: the
+        modifiers scale from those (at the same conditions and side, the
+        measured value comes back unchanged)."""
         model = self.data.model(self.figure.gender, self.side)
         base, stored = model.evaluate(np.arange(len(MOTIONS)), self.angles, self.percentile)
-        return base * modifier_factors(self.figure, self.side, self.non_dominant_factor), stored
+        factors = modifier_factors(self.figure, self.side, self.non_dominant_factor)
+        if self.data.measured_at is not None:
+            kind, speed, training, fatigue = self.data.measured_at
+            measured = SimpleNamespace(
+                strength_type=kind,
+                motion_speed=speed,
+                training_level=training,
+                fatigue_level=fatigue,
+                handedness=self.figure.handedness,
+            )
+            factors = factors / modifier_factors(
+                measured, model.section.side, self.non_dominant_factor
+            )
+        return base * factors, stored
 
     def rows(self) -> list[StrengthRow]:
         values, stored = self.values()
         shown = convert(values, GROUP_UNITS[STRENGTH][0], self.unit)
+        model = self.data.model(self.figure.gender, self.side)
         return [
             StrengthRow(
                 i,
@@ -624,9 +789,15 @@ class StrengthSheet:
                 float(shown[i]),
                 "no data" if math.isnan(values[i]) else "stored" if stored[i] else "predicted",
                 DISPLAY[self.unit],
+                "" if stored[i] or math.isnan(values[i]) else model.coverage(i, self.angles[i])[0],
             )
             for i, m in enumerate(MOTIONS)
         ]
+
+    @property
+    def title(self) -> str:
+        """What the page shows, for its title: the data's label."""
+        return f"Strength: {self.data.label}"
 
     def row(self, index: int) -> StrengthRow:
         return self.rows()[index]
@@ -712,8 +883,9 @@ class StrengthSheet:
 
 
 def fig_section(sheet: StrengthSheet) -> tuple[str, list[tuple[str, float, str]]]:
-    """The strength section for figfile.render_fig(extra_sections=[...])."""
-    return ("strength variables", sheet.fig_variables())
+    """The strength section for figfile.render_fig(extra_sections=[...]); its
+    title says what the values are (test data, or the file's title)."""
+    return (f"strength variables: {sheet.data.label}", sheet.fig_variables())
 
 
 def fit_summary(data: StrengthData) -> list[tuple[str, str, MotionFit]]:

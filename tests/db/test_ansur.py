@@ -88,7 +88,7 @@ CASES = [
         lambda r: (
             r["gender"] == "Male"
             and (
-                float(r["thighcircumference"]) / 10 / math.pi > 20
+                float(r["thighclearance"]) / 10 > 20  # thigh depth: 10.1's thigh clearance
                 or float(r["neckcircumference"]) / 10 / math.pi < 12
             )
             and float(r["age"]) >= 30

@@ -117,7 +117,8 @@ def test_male_95th_by_hand(tmp_path):
         "botheadx": 21.1 / 2,
         "eyelocx": 20.8 / 2,
         "right_shoulder_x_ulimit": 188.7,
-        "neck_y_llimit": 103.0,
+        "neck_y_llimit": -103.0,  # appendices J and F; H misprints +103.0
+        "right_shoulder_z_llimit": -126.6,  # appendix F; H and J misprint +126.6
         "right_knee_y_ulimit": 145.6,
         "ctorsocmx": -2.6,
         "rfootcmx": 7.41,

@@ -85,8 +85,10 @@ def test_files_for_a_person_with_unmeasured_values_take_the_population_values(tm
     text = render_fig(person)
     assert "nan" not in text.lower()
     assert (
-        "/* not measured for SMITH, taken from the population at the group percentile: "
-        f"Girth 3, Joint Limits {filled.sum()}; total mass */"
+        f"/* not measured for SMITH, so taken from the population ({population.population}): "
+        "3 of the 75 girth values (at the girth percentile, 50); "
+        f"{filled.sum()} of the {filled.sum()} joint limits values (at the joint limits "
+        "percentile, 95); the total mass (the population's median, 82.20 kg) */"
     ) in text
     fig = read_fig(write_fig(person, tmp_path / "smith.fig"))
     assert fig.variables["right_elbow_y_ulimit"] == (159.0, "deg")
@@ -95,3 +97,29 @@ def test_files_for_a_person_with_unmeasured_values_take_the_population_values(tm
     assert sum(v for v, u in fig.variables.values() if u == "kg") == pytest.approx(82.2, abs=0.05)
     export_hanim(person, tmp_path / "smith.x3d")
     assert "nan" not in (tmp_path / "smith.x3d").read_text().lower()
+
+
+def test_unmeasured_joint_limits_are_the_populations_on_the_strength_page():
+    """An ANSUR II soldier has no joint limits: the strength page checks angles
+    against the population's at the group percentile, and says so; it never
+    says "no motion about this axis" for an axis that has motion."""
+    from sass_tui.model.strength import StrengthError, check_angle, joint_limit_range, limits_source
+
+    population = Figure.default("male")
+    population.set_group_percentile(JOINT_LIMITS, 95)
+    groups = person_groups(population)
+    groups[JOINT_LIMITS] = np.full_like(groups[JOINT_LIMITS], np.nan)
+    person = population.for_person("SMITH", "male", groups)
+    assert joint_limit_range(person, "right", "elbow_y") == (0.0, 159.0)
+    check_angle(person, "right", "elbow_y", 150)
+    with pytest.raises(StrengthError) as refused:
+        check_angle(person, "right", "elbow_y", 170)
+    message = str(refused.value)
+    assert "upper limit 159 deg" in message
+    assert "not measured for SMITH: the population's joint limits at the 95th percentile" in message
+    assert "no motion" not in message
+    # 999 in the population stays no motion
+    with pytest.raises(StrengthError, match="no motion about this axis"):
+        check_angle(person, "right", "elbow_x", 10)
+    assert "not measured for SMITH" in limits_source(person)
+    assert limits_source(population) == "joint limits: 95th percentile"

@@ -74,7 +74,7 @@ def test_elbow_170_refused_for_a_male_at_the_95th_joint_limits(male):
     assert male.set_angle(ELBOW_FLEXION, "elbow_y", 155).angles[3] == 155
 
 
-def test_male_shoulder_z_lower_limit_with_wrong_sign_is_read_as_negative(male):
+def test_male_shoulder_z_lower_limit_is_negative(male):
     male.set_angle(4, "shoulder_z", -90)  # medial rotation within -108.55
     with pytest.raises(StrengthError, match="lower limit -108.55"):
         male.set_angle(4, "shoulder_z", -120)
@@ -277,3 +277,93 @@ def test_angle_edits_undo_in_order_with_figure_edits():
     assert figure.undo() and figure.mass_percentile == 50
     assert sheet.undo() and (sheet.angles == before).all()
     assert not sheet.undo() and sheet.last_edit == -1
+
+
+# --- issue 11: strength answers say what they are --------------------------------
+
+
+def test_every_output_of_the_shipped_test_data_says_so(tmp_path, capsys, data, male):
+    assert data.test_data and "TEST DATA" in data.label
+    assert "TEST DATA" in male.title  # the strength page's title comes from here
+    assert main(["strength", "shoulder_abduction"]) == 0
+    assert "test data" in capsys.readouterr().out.lower()
+    out = tmp_path / "m.fig"
+    assert main(["fig", "-o", str(out)]) == 0
+    assert "/* strength variables: TEST DATA, not measured strength (strength.dat) */" in (
+        out.read_text()
+    )
+    # a file that does not call itself test data is not labelled so
+    mine = parse_strength_text(GOOD, "mine.dat")
+    assert not mine.test_data and "TEST DATA" not in mine.label
+
+
+def test_shoulder_flexion_far_outside_the_data_is_marked_or_refused(male, capsys):
+    flexion = MOTION_NAMES.index("shoulder_flexion")
+    model = male.data.model("male", "right")
+    high = model.high[flexion, 1]
+    far = male.set_angle(flexion, "shoulder_y", 180)  # the page marks it
+    assert far.extrapolated == (
+        "shoulder_y 180 deg is outside the data's 0 to 75 deg, more than 20 deg: not to be trusted"
+    )
+    assert main(["strength", "shoulder_flexion", "shoulder_y=180"]) == 2  # the CLI refuses
+    assert "refuses a prediction more than 20 deg outside the data" in capsys.readouterr().err
+    # within the margin: predicted and marked
+    row = male.set_angle(flexion, "shoulder_y", high + 10)
+    assert row.source == "predicted" and "outside the data's 0 to 75 deg" in row.extrapolated
+    inside = male.set_angle(flexion, "shoulder_y", 30)
+    assert inside.source == "predicted" and inside.extrapolated == ""
+
+
+def test_an_angle_the_data_never_vary_says_so(male, capsys):
+    flexion = MOTION_NAMES.index("shoulder_flexion")
+    before = male.set_angle(flexion, "shoulder_y", 30)  # predicted, inside the data
+    row = male.set_angle(flexion, "shoulder_z", -30)
+    assert row.extrapolated == (
+        "shoulder_z -30 deg: the data hold shoulder_z only at 0 deg, so the prediction "
+        "does not vary with it"
+    )
+    assert row.value == pytest.approx(before.value)
+    assert main(["strength", "shoulder_flexion", "shoulder_y=30", "shoulder_z=-30"]) == 0
+    assert "EXTRAPOLATED: shoulder_z -30 deg" in capsys.readouterr().out
+
+
+def _curve(data, motion: str, column: int) -> tuple[np.ndarray, np.ndarray]:
+    section = data.sections[("male", "right")]
+    rows = section.motions == MOTION_NAMES.index(motion)
+    order = np.argsort(section.angles[rows, column])
+    return section.angles[rows, column][order], section.values[rows][order]
+
+
+def test_elbow_flexion_has_the_usual_shape(data):
+    """Peak near 90 deg of flexion, about half with the arm straight (it
+    peaked at 20 deg and was 53 % at 90 deg)."""
+    angles, values = _curve(data, "elbow_flexion", 3)
+    assert angles[np.argmax(values)] == 90
+    assert 0.5 < values[angles == 5][0] / values.max() < 0.65
+
+
+def test_forearm_and_wrist_deviation_follow_millards_signs(data):
+    """Millard counts supination and ulnar deviation positive; SASS's columns
+    count pronation and radial deviation positive: the peaks change sign."""
+    angles, values = _curve(data, "forearm_pronation", 6)
+    assert angles[np.argmax(values)] > 0  # Millard's peak at -0.21 rad of supination
+    angles, values = _curve(data, "wrist_ulnar_deviation", 4)
+    assert angles[np.argmax(values)] < 0  # ulnar is negative wrist_x
+    angles, values = _curve(data, "wrist_radial_deviation", 4)
+    assert angles[np.argmax(values)] > 0
+
+
+def test_the_report_point_is_kept(data):
+    section = data.sections[("male", "right")]
+    report = [i for i, note in enumerate(section.notes) if "report figure 5" in note]
+    assert len(report) == 1
+    assert section.values[report[0]] == 17.98 and section.percentiles[report[0]] == 50
+
+
+def test_shipped_file_is_what_the_script_writes():
+    import runpy
+
+    from _paths import DATASETS, ROOT
+
+    script = runpy.run_path(str(ROOT / "scripts" / "make_strength_dat.py"))
+    assert script["render"]() == (DATASETS / "strength.dat").read_text()
