@@ -17,12 +17,14 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from sass_tui.db import accelerator
+from sass_tui.db.individual import fetch_individual
 from sass_tui.db.query import CompiledQuery, Query, compile_query, run_query
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
     JOINT_LIMIT_NAMES,
     QUERY_TABLES,
+    STRENGTH_PARAMETERS,
     PeopleBatch,
     connect,
     delete_people,
@@ -373,3 +375,31 @@ def test_query_tables_cover_the_copy():
     assert all(
         table.startswith("q_") for group in QUERY_TABLES.values() for table in group.values()
     )
+
+
+def test_fetched_strength_summary_is_the_query_tables(generated_db_file):
+    """fetch_individual computes the strength summary from the experiments
+    instead of reading strength_q and q_strength_*: the same numbers, for
+    every person (with none, one or two experiments)."""
+    conn = connect(generated_db_file)
+    try:
+        ids = [r[0] for r in conn.execute("SELECT id_num FROM person ORDER BY id_num")]
+        with_strength = 0
+        for id_num in ids:
+            row = conn.execute(
+                f"SELECT {', '.join(STRENGTH_PARAMETERS)} FROM strength_q WHERE id_num = ?",
+                (id_num,),
+            ).fetchone()
+            expected = {}
+            if row is not None:
+                with_strength += 1
+                expected = dict(zip(STRENGTH_PARAMETERS, row))
+                for motion, table in QUERY_TABLES["strength"].items():
+                    found = conn.execute(
+                        f"SELECT max FROM {table} WHERE id_num = ?", (id_num,)
+                    ).fetchone()
+                    expected[f"{motion}_max"] = found[0] if found else None
+            assert fetch_individual(conn, id_num).strength == expected, id_num
+        assert 0 < with_strength < len(ids)
+    finally:
+        conn.close()
