@@ -54,6 +54,8 @@ if TYPE_CHECKING:
     from sass_tui.db.query import CompiledQuery
 
 MIN_PEOPLE = 200_000
+# A text column with more different values than this is left to SQLite.
+MAX_WORDS = 200
 # Where the copies live; None: $XDG_CACHE_HOME/sass/columns (~/.cache/sass/columns).
 CACHE_DIR: Path | None = None
 
@@ -282,21 +284,31 @@ class ColumnStore:
     def _build_text(self, conn: sqlite3.Connection, table: str, column: str) -> TextColumn:
         import numpy as np
 
-        words: dict[str, int] = {}
-        ids: list[int] = []
-        codes: list[int] = []
-        cursor = conn.execute(f"SELECT id_num, {column} FROM {table} WHERE {column} IS NOT NULL")
-        while rows := cursor.fetchmany(65536):
-            for id_num, value in rows:
-                if type(value) is not str:
-                    raise Unsupported(f"{table}.{column} holds a value that is not TEXT")
-                ids.append(id_num)
-                codes.append(words.setdefault(value, len(words)))
+        # The distinct words first, then each row's word number computed by
+        # SQLite (a CASE over the words, with the column's own BINARY
+        # comparison): no Python work per row.  A value that is not text
+        # becomes -2 and refuses the copy.
+        words = [
+            w
+            for (w,) in conn.execute(
+                f"SELECT DISTINCT {column} FROM {table} WHERE typeof({column}) = 'text'"
+            )
+        ]
+        if len(words) > MAX_WORDS:
+            raise Unsupported(f"{table}.{column} has more than {MAX_WORDS} different values")
+        cases = "".join(f" WHEN {column} = ? THEN {k}" for k in range(len(words)))
+        cursor = conn.execute(
+            f"SELECT id_num, CASE WHEN typeof({column}) <> 'text' THEN -2{cases} ELSE -3 END "
+            f"FROM {table} WHERE {column} IS NOT NULL",
+            words,
+        )
+        rows = _fetch_pairs(cursor, np.int32)
+        if len(rows) and int(rows["v"].min()) < 0:
+            raise Unsupported(f"{table}.{column} holds a value that is not TEXT")
         out = np.full(len(self.person_ids(conn)), -1, dtype=np.int32)
-        id_array = np.asarray(ids, dtype=np.int64)
-        at, known = self._positions(conn, id_array)
-        out[at[known]] = np.asarray(codes, dtype=np.int32)[known]
-        return TextColumn(out, list(words))
+        at, known = self._positions(conn, rows["id"])
+        out[at[known]] = rows["v"][known]
+        return TextColumn(out, words)
 
     def _save(self, path: Path, array: Any) -> None:
         import numpy as np
@@ -424,7 +436,11 @@ def _cache_folder(path: Path) -> Path:
 
 
 def _large_enough(conn: sqlite3.Connection) -> bool:
-    low, high = conn.execute("SELECT min(id_num), max(id_num) FROM person").fetchone()
+    # Two subqueries: SQLite reads a lone min() or max() off the B-tree's edge,
+    # but scans the whole table for both in one SELECT.
+    low, high = conn.execute(
+        "SELECT (SELECT min(id_num) FROM person), (SELECT max(id_num) FROM person)"
+    ).fetchone()
     return low is not None and high - low + 1 >= MIN_PEOPLE
 
 
@@ -460,7 +476,7 @@ def _answer(conn: sqlite3.Connection, compiled: CompiledQuery, ids: bool) -> Any
         conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
         mask, store = _matches(conn, compiled)
         if ids:
-            return [int(i) for i in store.person_ids(conn)[mask]]
+            return store.person_ids(conn)[mask].tolist()
         return int(mask.sum())
     except (Unsupported, OSError, sqlite3.Error, ValueError):
         return None

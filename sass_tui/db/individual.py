@@ -5,7 +5,9 @@
 from __future__ import annotations
 
 import sqlite3
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -32,14 +34,14 @@ class Individual:
     source: str
     groups: dict[str, np.ndarray]  # GIRTH (25, 3), JOINT_LIMITS (40, 3), CENTER_OF_MASS (21, 3)
     segment_masses: dict[str, float]  # girth seg_name -> kg (also the mass-only segments)
-    strength: dict[str, object]  # strength_q: type, speed, training, fatigue, <motion>_max (N-m)
-    experiments: list[dict] = field(default_factory=list)  # strength_par rows
-    shoulder: list[dict] = field(default_factory=list)
-    elbow: list[dict] = field(default_factory=list)
-    wrist: list[dict] = field(default_factory=list)
+    strength: dict[str, object]  # as strength_q: type, speed, training, fatigue, <motion>_max (N-m)
+    experiments: list[dict[str, Any]] = field(default_factory=list)  # strength_par rows
+    shoulder: list[dict[str, Any]] = field(default_factory=list)
+    elbow: list[dict[str, Any]] = field(default_factory=list)
+    wrist: list[dict[str, Any]] = field(default_factory=list)
 
 
-def _fill(rows, names) -> np.ndarray:
+def _fill(rows: Sequence[Sequence[Any]], names: Sequence[str]) -> np.ndarray:
     index = {n: i for i, n in enumerate(names)}
     out = np.full((len(names), 3), np.nan)
     for seg, *values in rows:
@@ -48,12 +50,12 @@ def _fill(rows, names) -> np.ndarray:
     return out
 
 
-def _batch_row(row: dict) -> tuple:
+def _batch_row(row: dict[str, Any]) -> tuple[Any, ...]:
     """A relation row as storage's batch tuple: person index 0, then the fields after id_num."""
     return (0, *tuple(row.values())[1:])
 
 
-def _dicts(cursor: sqlite3.Cursor) -> list[dict]:
+def _dicts(cursor: sqlite3.Cursor) -> list[dict[str, Any]]:
     names = [d[0] for d in cursor.description]
     return [dict(zip(names, row)) for row in cursor]
 
@@ -106,7 +108,7 @@ def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
         [id_num],
     )
 
-    def nan(v):
+    def nan(v: float | None) -> float:
         return np.nan if v is None else float(v)
 
     return Individual(
