@@ -234,9 +234,10 @@ def connect(
         path.parent.mkdir(parents=True, exist_ok=True)
     conn = sqlite3.connect(str(path), isolation_level=None, check_same_thread=check_same_thread)
     conn.execute("PRAGMA cache_size = -65536")
-    # Map the whole file (address space only): the query tables of a million
-    # people sit all over a 2.5 GB file, and read() calls cost more than page faults.
-    conn.execute("PRAGMA mmap_size = 17179869184")
+    # No memory map: on a cold file each page fault made the kernel read far
+    # around the page (1.1 GB read for 200 people fetched at 1,000,000 against
+    # 7 MB with read(); scans no faster mapped; docs/performance.md,
+    # "Database at scale").
     try:
         has_schema = conn.execute(
             "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'meta'"
