@@ -150,12 +150,6 @@ def _factor(tokens: list[tuple[str, Any]], i: int) -> tuple[Node, int]:
     raise Unsupported(f"unexpected {kind}")
 
 
-def comparisons(node: Node) -> list[Comparison]:
-    if isinstance(node, Comparison):
-        return [node]
-    return [c for item in node[1] for c in comparisons(item)]
-
-
 # --- the data version ------------------------------------------------------
 
 
@@ -206,7 +200,8 @@ class ColumnStore:
         if not self.folder.exists():
             if folder.exists():  # copies of older versions are stale for good
                 for old in folder.iterdir():
-                    shutil.rmtree(old, ignore_errors=True)
+                    if old.name != version:
+                        shutil.rmtree(old, ignore_errors=True)
             self.folder.mkdir(parents=True, exist_ok=True)
             _write_atomic(self.folder / "key.json", json.dumps(self.key).encode())
 
