@@ -36,13 +36,9 @@ per database file) for the next process.
 
 from __future__ import annotations
 
-import hashlib
-import json
 import os
 import re
-import shutil
 import sqlite3
-import struct
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -156,6 +152,8 @@ def _factor(tokens: list[tuple[str, Any]], i: int) -> tuple[Node, int]:
 def data_version(conn: sqlite3.Connection) -> tuple[int, ...]:
     """The key of the copy: header change counter, page count and schema cookie,
     with the file's size, mtime and inode.  Call inside a read transaction."""
+    import struct
+
     path = database_path(conn)
     with open(path, "rb") as f:
         header = f.read(100)
@@ -191,6 +189,10 @@ class ColumnStore:
     """The copy of one database file at one data version."""
 
     def __init__(self, folder: Path, key: tuple[int, ...]):
+        import hashlib
+        import json
+        import shutil
+
         # One folder per data version: files of two versions never mix.
         self.key = list(key)
         version = hashlib.sha256(json.dumps(self.key).encode()).hexdigest()[:16]
@@ -210,16 +212,18 @@ class ColumnStore:
 
         if self.ids is None:
             path = self.folder / "person.id_num.npy"
-            if path.exists():
-                self.ids = np.load(path, mmap_mode="r")
-            else:
+            ids = _load(path, np.int64, None)
+            if ids is None:
                 ids = _fetch_ints(conn, "SELECT id_num FROM person ORDER BY id_num")
                 self._save(path, ids)
-                self.ids = ids
-        assert self.ids is not None
+            self.ids = ids
         return self.ids
 
     def column(self, conn: sqlite3.Connection, table: str, column: str) -> Any:
+        """The column as an array aligned on person_ids (a TextColumn for text):
+        read from this version's folder if there (and whole), else built from SQLite."""
+        import json
+
         import numpy as np
 
         key = (table, column)
@@ -227,18 +231,22 @@ class ColumnStore:
             return self.columns[key]
         kind = _column_kind(conn, table, column)
         path = self.folder / f"{table}.{column}.npy"
+        people = len(self.person_ids(conn))
+        loaded: Any
         if kind == "real":
-            if path.exists():
-                loaded: Any = np.load(path, mmap_mode="r")
-            else:
+            loaded = _load(path, np.float64, people)
+            if loaded is None:
                 loaded = self._build_real(conn, table, column)
                 self._save(path, loaded)
         else:
             words_path = self.folder / f"{table}.{column}.json"
-            if path.exists() and words_path.exists():
-                loaded = TextColumn(
-                    np.load(path, mmap_mode="r"), json.loads(words_path.read_text())
-                )
+            codes = _load(path, np.int32, people)
+            try:
+                words = json.loads(words_path.read_text()) if codes is not None else None
+            except (OSError, ValueError):
+                words = None
+            if codes is not None and isinstance(words, list):
+                loaded = TextColumn(codes, words)
             else:
                 loaded = self._build_text(conn, table, column)
                 self._save(path, loaded.codes)
@@ -311,6 +319,19 @@ class ColumnStore:
         tmp = path.with_name(path.name + ".tmp.npy")
         np.save(tmp, array)
         os.replace(tmp, path)
+
+
+def _load(path: Path, dtype: Any, length: int | None) -> Any:
+    """A saved array of that type and length, or None (absent, damaged or other)."""
+    import numpy as np
+
+    try:
+        array = np.load(path, mmap_mode="r")
+    except (OSError, ValueError):
+        return None
+    if array.dtype != dtype or array.ndim != 1 or (length is not None and len(array) != length):
+        return None
+    return array
 
 
 def _write_atomic(path: Path, data: bytes) -> None:
@@ -422,6 +443,8 @@ _STORES: dict[Path, ColumnStore] = {}
 
 
 def _cache_folder(path: Path) -> Path:
+    import hashlib
+
     base = CACHE_DIR
     if base is None:
         xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")

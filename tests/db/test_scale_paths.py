@@ -298,6 +298,18 @@ def test_disk_copy_is_reused_by_the_next_process(db, accelerated):
     assert sorted(p.name for p in accelerated.rglob("*.npy")) == copies
 
 
+def test_damaged_disk_copy_is_rebuilt(db, accelerated):
+    compiled = compile_query(SAMPLE)
+    expected = accelerator.count(db, compiled)
+    (column,) = accelerated.rglob("q_girth_right_upper_arm.z.npy")
+    column.write_bytes(column.read_bytes()[:200])  # cut short
+    (words,) = accelerated.rglob("person.gender.json")
+    words.write_text("not json")
+    accelerator._STORES.clear()
+    assert accelerator.count(db, compiled) == expected == sqlite_count(db, compiled)
+    assert len(np.load(column)) == PEOPLE  # written again, whole
+
+
 def test_another_database_copied_over_the_file(db, tmp_path, generated_db_file):
     compiled = compile_query("gender = male")
     assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
