@@ -2,7 +2,7 @@
 
 SQLite answers a count by visiting, for each person, one row of every query
 table the query names: on 5,000,000 people the report's sample query takes
-about 2 s that way.  Here each queried column (`person.gender`,
+2-4 s that way.  Here each queried column (`person.gender`,
 `q_girth_right_upper_arm.z`, ...) is copied once into a numpy array aligned
 on the sorted person ids, and a compiled query's WHERE clause is evaluated
 over those arrays: tens of milliseconds at 5,000,000 people
