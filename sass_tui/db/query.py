@@ -38,6 +38,7 @@ from lark.exceptions import (
     VisitError,
 )
 
+from sass_tui.db import accelerator
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
@@ -435,6 +436,9 @@ class Query:
     compiled: CompiledQuery
 
     def count(self) -> int:
+        fast = accelerator.count(self.conn, self.compiled)  # None below ~200k people
+        if fast is not None:
+            return fast
         sql = f"SELECT count(*) FROM {self.compiled.from_clause()} WHERE {self.compiled.where}"
         return self.conn.execute(sql, self.compiled.params).fetchone()[0]
 
@@ -460,6 +464,9 @@ class Query:
         return self._rows(" AND p.id_num > ? ORDER BY p.id_num LIMIT ?", (int(last_id), int(limit)))
 
     def ids(self) -> list[int]:
+        fast = accelerator.ids(self.conn, self.compiled)
+        if fast is not None:
+            return fast
         sql = f"SELECT p.id_num FROM {self.compiled.from_clause()} WHERE {self.compiled.where}"
         return [r[0] for r in self.conn.execute(sql, self.compiled.params)]
 

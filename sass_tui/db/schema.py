@@ -291,9 +291,10 @@ def connect(
         raise DatabaseError(f"{path}: cannot open the database ({exc})") from None
     try:
         conn.execute("PRAGMA cache_size = -65536")
-        # Map the whole file (address space only): the query tables of a million
-        # people sit all over a 2.5 GB file, and read() calls cost more than page faults.
-        conn.execute("PRAGMA mmap_size = 17179869184")
+        # No memory map: on a cold file each page fault made the kernel read far
+        # around the page (1.1 GB read for 200 people fetched at 1,000,000 against
+        # 7 MB with read(); scans no faster mapped; docs/performance.md,
+        # "Database at scale").
         _check_schema(conn, path, create, rebuild)
     except sqlite3.DatabaseError as exc:
         conn.close()

@@ -1,0 +1,417 @@
+"""The column copy (sass_tui/db/accelerator.py) answers exactly as SQLite does,
+and never out of step with the SQLite file after a write.
+
+A generated database of 3,000 people with every group, NULLs and missing
+rows; the accelerator's size threshold is lowered to 0 so it answers here.
+"""
+
+from __future__ import annotations
+
+import shutil
+import sqlite3
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from sass_tui.db import accelerator
+from sass_tui.db.individual import fetch_individual
+from sass_tui.db.query import CompiledQuery, Query, compile_query, run_query
+from sass_tui.db.schema import (
+    CENTER_OF_MASS_NAMES,
+    GIRTH_NAMES,
+    JOINT_LIMIT_NAMES,
+    QUERY_TABLES,
+    STRENGTH_PARAMETERS,
+    PeopleBatch,
+    connect,
+    delete_people,
+    store_people,
+    transaction,
+)
+from sass_tui.model.strength import MOTION_NAMES
+from sass_tui.model.vocabulary import PERSON_HANDEDNESS, STRENGTH_TYPES
+
+PEOPLE = 3000
+
+
+def generated_batch(rng: np.random.Generator, ids: np.ndarray) -> PeopleBatch:
+    n = len(ids)
+
+    def holes(values: np.ndarray, share: float) -> np.ndarray:
+        values[rng.random(values.shape) < share] = np.nan
+        return values
+
+    handedness = [
+        None if r < 0.05 else PERSON_HANDEDNESS[int(r * 100) % 3] for r in rng.random(n).tolist()
+    ]
+    strength_par, shoulder, elbow, wrist = [], [], [], []
+    for i in range(n):
+        for exp in range(1, int(rng.integers(0, 3)) + 1):
+            kind = STRENGTH_TYPES[int(rng.integers(0, 3))]
+            speed = float(rng.choice([0.0, 30.0, 60.0, 180.0]))
+            strength_par.append((i, exp, "right", kind, speed, float(rng.integers(0, 4)), 1.0))
+            p, q = (rng.gamma(4.0, 12.0, 2)).round(1).tolist()
+            elbow.append((i, exp, 90.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, p, None if q < 20 else q))
+            for axis in "xyz":
+                if rng.random() < 0.7:
+                    a, b = rng.gamma(5.0, 10.0, 2).round(1).tolist()
+                    shoulder.append((i, exp, 0.0, 0.0, 0.0, 90.0, axis, a, b))
+                if rng.random() < 0.5:
+                    a, b = rng.gamma(2.0, 4.0, 2).round(2).tolist()
+                    wrist.append((i, exp, 0.0, 0.0, 0.0, 90.0, axis, a, b))
+    girth = holes(rng.normal(20.0, 8.0, (n, len(GIRTH_NAMES), 4)).round(1), 0.03)
+    joint_limits = holes(rng.normal(60.0, 40.0, (n, len(JOINT_LIMIT_NAMES), 3)).round(0), 0.05)
+    center_of_mass = holes(rng.normal(5.0, 3.0, (n, len(CENTER_OF_MASS_NAMES), 3)).round(2), 0.05)
+    joint_limits[rng.random(n) < 0.3] = np.nan  # people without any joint limits
+    return PeopleBatch(
+        id_num=ids,
+        name=[f"P{i}" for i in ids.tolist()],
+        gender=["male" if r < 0.5 else "female" for r in rng.random(n).tolist()],
+        stature=holes(rng.normal(172.0, 9.0, n).round(1), 0.02),
+        mass=holes(rng.normal(75.0, 12.0, n).round(1), 0.02),
+        handedness=handedness,
+        age=holes(rng.integers(18, 60, n).astype(float), 0.02),
+        source=["generated test"] * n,
+        source_key=[None] * n,
+        girth=girth,
+        joint_limits=joint_limits,
+        center_of_mass=center_of_mass,
+        strength_par=strength_par,
+        shoulder=shoulder,
+        elbow=elbow,
+        wrist=wrist,
+    )
+
+
+@pytest.fixture(scope="session")
+def generated_db_file(tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("scale") / "generated.db"
+    conn = connect(path, create=True)
+    rng = np.random.default_rng(16)
+    # ids with gaps, as after deletions and imports from several sources
+    ids = np.sort(rng.choice(np.arange(1, 3 * PEOPLE), PEOPLE, replace=False))
+    with transaction(conn):
+        store_people(conn, generated_batch(rng, ids), replace=False)
+    conn.close()
+    return path
+
+
+@pytest.fixture()
+def accelerated(monkeypatch, tmp_path):
+    """The accelerator answering on any size, its disk copies in tmp_path."""
+    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
+    accelerator._STORES.clear()
+    yield tmp_path / "columns"
+    accelerator._STORES.clear()
+
+
+@pytest.fixture()
+def db(generated_db_file, tmp_path, accelerated):
+    copy = tmp_path / "generated.db"
+    shutil.copyfile(generated_db_file, copy)
+    conn = connect(copy)
+    yield conn
+    conn.close()
+
+
+def sqlite_count(conn: sqlite3.Connection, compiled: CompiledQuery) -> int:
+    sql = f"SELECT count(*) FROM {compiled.from_clause()} WHERE {compiled.where}"
+    return conn.execute(sql, compiled.params).fetchone()[0]
+
+
+def sqlite_ids(conn: sqlite3.Connection, compiled: CompiledQuery) -> list[int]:
+    sql = f"SELECT p.id_num FROM {compiled.from_clause()} WHERE {compiled.where} ORDER BY p.id_num"
+    return [r[0] for r in conn.execute(sql, compiled.params)]
+
+
+def assert_same(conn: sqlite3.Connection, text: str) -> int:
+    compiled = compile_query(text)
+    expected = sqlite_count(conn, compiled)
+    assert accelerator.count(conn, compiled) == expected, text
+    assert accelerator.ids(conn, compiled) == sqlite_ids(conn, compiled), text
+    assert run_query(conn, text).count() == expected
+    return expected
+
+
+QUERIES = [
+    "gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb",
+    "gender = female",
+    "gender != male",
+    "handedness = left OR handedness = either",
+    "handedness != right",
+    "stature > 70 in",
+    "stature <= 172 cm AND mass >= 70 kg",
+    "stature = 172 cm",
+    "stature != 172 cm",
+    "age < 30 OR age >= 50",
+    "age != 40",
+    "mass > 80 kg OR (gender = female AND stature > 175 cm)",
+    "strength_type = isokinetic",
+    "strength_type != isometric",
+    "motion_speed > 30 deg/s",
+    "motion_speed = 0",
+    "training_level >= 2 OR fatigue_level < 2",
+    "fatigue_level != 1",
+    "girth.neck.x < 15 cm AND girth.neck.y > 20 cm",
+    "girth.bottom_head.z != 20 cm",
+    "joint_limit.right_shoulder_ul.x > 60 OR joint_limit.left_hip_ll.z <= 0",
+    "joint_limit.right_shoulder_ul.y != 60",
+    "center_of_mass.bottom_head.y > 5 cm",
+    "center_of_mass.bottom_head.y >= 5 cm AND center_of_mass.bottom_head.x <= 5 cm",
+    "strength.shoulder_abduction.max > 50 N-m",
+    "strength.elbow_extension.max != 40 N-m",
+    "strength.wrist_flexion.max > 5 ft-lb AND (gender = male OR age > 40)",
+    "((gender = male) AND ((stature > 170 cm)))",
+    "gender = male AND gender = female",
+    "stature > 1000 cm",
+    "(gender = male OR handedness = left) AND (girth.neck.x > 20 cm OR strength.elbow_flexion.max < 30 N-m)",
+]
+
+
+@pytest.mark.parametrize("text", QUERIES)
+def test_copy_counts_and_lists_as_sqlite(db, text):
+    assert_same(db, text)
+
+
+def test_the_queries_reach_every_group(db):
+    """Guard against a vacuous comparison: most queries match some people, not all."""
+    counts = [assert_same(db, text) for text in QUERIES]
+    assert sum(0 < c < PEOPLE for c in counts) >= len(QUERIES) - 3
+
+
+# Fields and the values their comparisons take: stored values (so = and !=
+# meet real ties) and values around them.
+FIELDS = (
+    [("gender", w) for w in ("male", "female")]
+    + [("handedness", w) for w in PERSON_HANDEDNESS]
+    + [("strength_type", w) for w in STRENGTH_TYPES]
+    + [(f, None) for f in ("stature", "mass", "age", "motion_speed", "training_level")]
+    + [(f"girth.{GIRTH_NAMES[k]}.{a}", None) for k in (0, 7, 24) for a in "xyz"]
+    + [(f"joint_limit.{JOINT_LIMIT_NAMES[k]}.{a}", None) for k in (0, 39) for a in "xz"]
+    + [(f"center_of_mass.{CENTER_OF_MASS_NAMES[k]}.y", None) for k in (0, 20)]
+    + [(f"strength.{m}.max", None) for m in MOTION_NAMES[::3]]
+)
+
+
+@st.composite
+def queries(draw, conn: sqlite3.Connection, depth: int = 0) -> str:
+    if depth < 2 and draw(st.booleans()):
+        parts = draw(st.lists(queries(conn, depth + 1), min_size=2, max_size=3))
+        word = draw(st.sampled_from([" AND ", " OR "]))
+        return "(" + word.join(parts) + ")"
+    field, word = draw(st.sampled_from(FIELDS))
+    if word is not None:
+        return f"{field} {draw(st.sampled_from(['=', '!=']))} {word}"
+    compiled = compile_query(f"{field} > 0")
+    alias, column = compiled.where.strip("()").split(" ")[0].split(".")
+    table = dict(compiled.tables).get(alias, "person")
+    value = conn.execute(
+        f"SELECT {column} FROM {table} WHERE {column} IS NOT NULL ORDER BY id_num LIMIT 1 OFFSET ?",
+        (draw(st.integers(0, 500)),),
+    ).fetchone()[0]
+    op = draw(st.sampled_from(["<", ">", "<=", ">=", "=", "!="]))
+    return f"{field} {op} {value!r}"
+
+
+def test_random_queries_agree(generated_db_file, tmp_path_factory, monkeypatch):
+    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path_factory.mktemp("columns"))
+    accelerator._STORES.clear()
+    conn = connect(generated_db_file)
+
+    @settings(max_examples=80, deadline=None, suppress_health_check=list(HealthCheck))
+    @given(queries(conn))
+    def agree(text):
+        compiled = compile_query(text)
+        assert accelerator.count(conn, compiled) == sqlite_count(conn, compiled), text
+
+    try:
+        agree()
+    finally:
+        conn.close()
+        accelerator._STORES.clear()
+
+
+SAMPLE = (
+    "gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb"
+)
+
+
+def test_answer_follows_writes_through_sass(db):
+    compiled = compile_query(SAMPLE)
+    before = accelerator.count(db, compiled)
+    assert before == sqlite_count(db, compiled) > 0
+    matching = accelerator.ids(db, compiled)
+    with transaction(db):
+        delete_people(db, matching[:10])
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled) == before - 10
+    # new people, every one a match, stored under fresh ids
+    rng = np.random.default_rng(7)
+    batch = generated_batch(rng, np.arange(100_001, 100_051))
+    batch.gender = ["male"] * 50
+    batch.girth[:, GIRTH_NAMES.index("right_upper_arm"), 2] = 40.0
+    batch.strength_par = [(i, 1, "right", "isometric", 0.0, 0.0, 0.0) for i in range(50)]
+    batch.elbow = [(i, 1, 90.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 100.0, 50.0) for i in range(50)]
+    batch.shoulder, batch.wrist = [], []
+    with transaction(db):
+        store_people(db, batch)
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled) == before + 40
+    assert accelerator.ids(db, compiled)[-50:] == list(range(100_001, 100_051))
+
+
+def test_answer_follows_a_write_from_another_connection(db):
+    compiled = compile_query("stature > 180 cm")
+    before = accelerator.count(db, compiled)
+    path = accelerator.database_path(db)
+    other = sqlite3.connect(path)
+    other.execute("UPDATE person SET stature = 200.0 WHERE stature <= 180")
+    other.commit()
+    other.close()
+    after = accelerator.count(db, compiled)
+    assert after == sqlite_count(db, compiled) > before
+
+
+def test_answer_follows_a_write_in_another_process_with_journal_off(db):
+    """The copy on disk, written by one process, is not taken by the next after a write."""
+    compiled = compile_query("girth.neck.x > 25 cm")
+    before = accelerator.count(db, compiled)
+    path = accelerator.database_path(db)
+    other = sqlite3.connect(path, isolation_level=None)
+    other.execute("PRAGMA journal_mode = OFF")
+    other.execute("UPDATE q_girth_neck SET x = 30.0 WHERE x <= 25")
+    other.close()
+    accelerator._STORES.clear()  # as a new process: only the disk copy is left
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled) > before
+
+
+def test_disk_copy_is_reused_by_the_next_process(db, accelerated):
+    compiled = compile_query(SAMPLE)
+    expected = accelerator.count(db, compiled)
+    copies = sorted(p.name for p in accelerated.rglob("*.npy"))
+    assert "person.gender.npy" in copies and "q_girth_right_upper_arm.z.npy" in copies
+    accelerator._STORES.clear()
+    assert accelerator.count(db, compiled) == expected
+    assert sorted(p.name for p in accelerated.rglob("*.npy")) == copies
+
+
+def test_damaged_disk_copy_is_rebuilt(db, accelerated):
+    compiled = compile_query(SAMPLE)
+    expected = accelerator.count(db, compiled)
+    (column,) = accelerated.rglob("q_girth_right_upper_arm.z.npy")
+    column.write_bytes(column.read_bytes()[:200])  # cut short
+    (words,) = accelerated.rglob("person.gender.json")
+    words.write_text("not json")
+    accelerator._STORES.clear()
+    assert accelerator.count(db, compiled) == expected == sqlite_count(db, compiled)
+    assert len(np.load(column)) == PEOPLE  # written again, whole
+
+
+def test_another_database_copied_over_the_file(db, tmp_path, generated_db_file):
+    compiled = compile_query("gender = male")
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+    path = accelerator.database_path(db)
+    db.close()
+    other = tmp_path / "other.db"
+    shutil.copyfile(generated_db_file, other)
+    conn = sqlite3.connect(other)
+    conn.execute("UPDATE person SET gender = 'male'")
+    conn.commit()
+    conn.close()
+    shutil.copyfile(other, path)
+    conn = connect(path)
+    try:
+        assert accelerator.count(conn, compiled) == sqlite_count(conn, compiled) == PEOPLE
+    finally:
+        conn.close()
+
+
+def test_own_uncommitted_write_is_seen(db):
+    compiled = compile_query("gender = female")
+    db.execute("BEGIN")
+    db.execute("UPDATE person SET gender = 'female'")
+    assert accelerator.count(db, compiled) is None  # the copy cannot know: SQLite answers
+    assert Query(db, compiled).count() == PEOPLE
+    db.execute("ROLLBACK")
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled) < PEOPLE
+
+
+def test_wal_database_is_answered_by_sqlite(db):
+    db.execute("PRAGMA journal_mode = WAL")
+    compiled = compile_query(SAMPLE)
+    assert accelerator.count(db, compiled) is None
+    assert Query(db, compiled).count() == sqlite_count(db, compiled)
+
+
+def test_values_of_another_type_are_answered_by_sqlite(db):
+    compiled = compile_query("girth.neck.x > 25 cm")
+    assert accelerator.count(db, compiled) is not None
+    # SQLite keeps text in a REAL column, and text sorts above every number
+    db.execute("UPDATE q_girth_neck SET x = 'wide' WHERE id_num = (SELECT min(id_num) FROM person)")
+    assert accelerator.count(db, compiled) is None
+    assert Query(db, compiled).count() == sqlite_count(db, compiled)
+    compiled = compile_query("strength_type != isometric")
+    db.execute(
+        "UPDATE strength_q SET strength_type = x'00' WHERE id_num = (SELECT min(id_num) FROM strength_q)"
+    )
+    assert accelerator.count(db, compiled) is None
+    assert Query(db, compiled).count() == sqlite_count(db, compiled)
+
+
+def test_sql_it_does_not_understand_is_answered_by_sqlite(db):
+    plain = compile_query("stature > 170 cm")
+    for where, params in (
+        ("NOT (p.stature > ?)", (170.0,)),
+        ("p.stature > ? + 1", (170.0,)),
+        ("p.stature > ?", ()),
+        ("p.stature > ? OR p.name LIKE ?", (170.0, "P1%")),
+        ("p.name > ?", (170.0,)),
+        ("p.id_num > ?", (10,)),
+    ):
+        odd = CompiledQuery(plain.text, where, params, plain.tables)
+        assert accelerator.count(db, odd) is None, where
+    long_join = CompiledQuery("", "t0.thickness > ?", (10.0,), (("t0", "girth"),))
+    assert accelerator.count(db, long_join) is None
+
+
+def test_small_databases_do_not_use_the_copy(db, monkeypatch):
+    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 10 * PEOPLE)
+    assert accelerator.count(db, compile_query("gender = male")) is None
+
+
+def test_query_tables_cover_the_copy():
+    """Every query table is one row per person (what the copy requires)."""
+    assert all(
+        table.startswith("q_") for group in QUERY_TABLES.values() for table in group.values()
+    )
+
+
+def test_fetched_strength_summary_is_the_query_tables(generated_db_file):
+    """fetch_individual computes the strength summary from the experiments
+    instead of reading strength_q and q_strength_*: the same numbers, for
+    every person (with none, one or two experiments)."""
+    conn = connect(generated_db_file)
+    try:
+        ids = [r[0] for r in conn.execute("SELECT id_num FROM person ORDER BY id_num")]
+        with_strength = 0
+        for id_num in ids:
+            row = conn.execute(
+                f"SELECT {', '.join(STRENGTH_PARAMETERS)} FROM strength_q WHERE id_num = ?",
+                (id_num,),
+            ).fetchone()
+            expected = {}
+            if row is not None:
+                with_strength += 1
+                expected = dict(zip(STRENGTH_PARAMETERS, row))
+                for motion, table in QUERY_TABLES["strength"].items():
+                    found = conn.execute(
+                        f"SELECT max FROM {table} WHERE id_num = ?", (id_num,)
+                    ).fetchone()
+                    expected[f"{motion}_max"] = found[0] if found else None
+            assert fetch_individual(conn, id_num).strength == expected, id_num
+        assert 0 < with_strength < len(ids)
+    finally:
+        conn.close()
