@@ -97,5 +97,7 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
 def print_warnings(warnings: list[str]) -> None:
     import sys
 
+    from sass_tui.model.text import printable
+
     for warning in warnings:
-        print(f"warning: {warning}", file=sys.stderr)
+        print(f"warning: {printable(warning)}", file=sys.stderr)

@@ -12,6 +12,8 @@ For the UI: `Query.count()` and `Query.page(offset, limit)` (or
 
 from __future__ import annotations
 
+import math
+import re
 import sqlite3
 from dataclasses import dataclass
 from functools import lru_cache
@@ -33,7 +35,7 @@ from sass_tui.db.schema import (
 )
 from sass_tui.model.errors import SassError
 from sass_tui.model.strength import MOTION_NAMES
-from sass_tui.model.units import DISPLAY, UnitError, convert, unit_name
+from sass_tui.model.units import DISPLAY, LARGEST_NUMBER, UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 
@@ -132,8 +134,15 @@ class _Compiler(Transformer):
         super().__init__()
         self.text = text
         self.tables: dict[str, str] = {}  # table -> alias
+        self._field_token: Token | None = None
 
     def _alias(self, table: str) -> str:
+        if table not in self.tables and len(self.tables) >= MAX_JOINED_TABLES:
+            self._fail(
+                f"the query uses more than {MAX_JOINED_TABLES} different segments, joints "
+                "and motions; split it",
+                self._field_token,
+            )
         return self.tables.setdefault(table, f"t{len(self.tables)}")
 
     def _fail(self, message: str, token) -> None:
@@ -152,6 +161,7 @@ class _Compiler(Transformer):
         )
 
     def field(self, names):
+        self._field_token = names[0]  # for _alias's error: the field being resolved
         return list(names)
 
     @v_args(inline=True)
@@ -178,6 +188,8 @@ class _Compiler(Transformer):
         if kind != "number":
             self._fail(f"{'.'.join(names)} needs a number, not {str(token)!r}", token)
         number = float(token)
+        if not math.isfinite(number) or abs(number) > LARGEST_NUMBER:
+            self._fail(f"{str(token)!r} is not a usable number", token)
         if unit_token is not None:
             if not unit:
                 self._fail(
@@ -226,12 +238,49 @@ class _Compiler(Transformer):
         return self._alias(QUERY_TABLES[group][row]), axis, unit, None
 
 
+# Bounds on a query's shape, checked before parsing: deeper nesting would
+# exhaust Python's recursion in the tree walk, and more comparisons SQLite's
+# expression tree (its limit is 1000 levels; "a OR b OR ..." nests one a term).
+MAX_NESTING = 50
+MAX_COMPARISONS = 200
+MAX_LENGTH = 20_000
+MAX_JOINED_TABLES = 63  # SQLite joins at most 64 tables: person and 63 more
+_COMPARISON_OPERATOR = re.compile(r"<=|>=|!=|<>|[<>=≤≥≠]")
+
+
+def _check_size(text: str) -> None:
+    """Refuse a query too long, too deeply nested or with too many comparisons."""
+    if len(text) > MAX_LENGTH:
+        raise QueryError(
+            f"the query is {len(text)} characters long; at most {MAX_LENGTH} are allowed",
+            text[:80],
+            None,
+        )
+    depth = 0
+    for column, char in enumerate(text, start=1):
+        if char == "(":
+            depth += 1
+            if depth > MAX_NESTING:
+                raise QueryError(f"parentheses nested more than {MAX_NESTING} deep", text, column)
+        elif char == ")":
+            depth -= 1
+    for count, match in enumerate(_COMPARISON_OPERATOR.finditer(text), start=1):
+        if count > MAX_COMPARISONS:
+            raise QueryError(
+                f"more than {MAX_COMPARISONS} comparisons in one query; "
+                "split it or use a range (e.g. stature > 170 cm AND stature < 180 cm)",
+                text,
+                match.start() + 1,
+            )
+
+
 def compile_query(text: str) -> CompiledQuery:
     """Parse and check a query; raises QueryError pointing at the bad token."""
     if not text.strip():
         raise QueryError(
             "the query is empty; expected e.g. gender = male AND stature > 180 cm", text, 1
         )
+    _check_size(text)
     try:
         tree = parser().parse(text)
     except UnexpectedCharacters as exc:
