@@ -1,0 +1,66 @@
+"""Fuzzing in the suite (issue 17): every parser, a modest budget each.
+
+Each input is a mutated seed file or random text (tests/fuzz/fuzz_targets.py);
+the parser must return or raise SassError/OSError, never another exception.
+A watchdog ends the run (with every thread's traceback) if one input takes
+longer than WATCHDOG seconds: a hang fails the suite instead of stalling it.
+scripts/fuzz.py runs the same targets for longer, each input in a worker
+process under a time limit.
+"""
+
+from __future__ import annotations
+
+import faulthandler
+import random
+
+import pytest
+from fuzz_targets import KNOWN_ELSEWHERE, TARGET_MAKERS, outcome, target
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+WATCHDOG = 60.0
+# About 30 s for the whole folder on one core (flat and fig cost ~10 ms an input).
+EXAMPLES = {"population": 60, "strength": 150, "fig": 80, "query": 150, "flat": 60,
+            "ansur": 80, "units": 300}  # fmt: skip
+
+
+def check(name: str, value: object) -> str:
+    faulthandler.dump_traceback_later(WATCHDOG, exit=True)
+    try:
+        return outcome(name, value)
+    except KNOWN_ELSEWHERE.get(name, ()):
+        return "known"
+    finally:
+        faulthandler.cancel_dump_traceback_later()
+
+
+@pytest.mark.parametrize("name", sorted(TARGET_MAKERS))
+def test_every_parser_survives_its_fuzz_inputs(name):
+    target(name)  # build the seeds (and for queries the database) outside the examples
+
+    @settings(
+        max_examples=EXAMPLES[name],
+        deadline=None,
+        derandomize=True,
+        database=None,
+        suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+    )
+    @given(st.randoms(use_true_random=False))
+    def run(rng: random.Random) -> None:
+        check(name, target(name).generate(rng))
+
+    run()
+
+
+@pytest.mark.parametrize("name", sorted(TARGET_MAKERS))
+def test_every_seed_parses(name):
+    # The fuzzer starts from valid files: each seed must be accepted as it is.
+    for seed in target(name).seeds:
+        assert check(name, seed) == "ok", seed
+
+
+@given(st.text(max_size=200))
+@settings(max_examples=100, deadline=None, derandomize=True, database=None)
+def test_arbitrary_text_in_every_text_parser(text):
+    for name in ("population", "strength", "fig", "query", "ansur", "units"):
+        check(name, text)
