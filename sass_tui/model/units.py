@@ -187,6 +187,11 @@ def parse_quantity(text: str, unit: str) -> float:
     dimension, text that is not a number, or a number too large to hold
     ("1e400", which float() reads as infinity) raises UnitError.
     """
+    if len(text) > MAX_QUANTITY_LENGTH:
+        raise UnitError(
+            f"expected a number with an optional unit, got {len(text)} characters "
+            f"(at most {MAX_QUANTITY_LENGTH})"
+        )
     match = _NUMBER.match(text)
     if not match:
         raise UnitError(f"expected a number with an optional unit, got {text.strip()!r}")
@@ -199,6 +204,9 @@ def parse_quantity(text: str, unit: str) -> float:
         raise UnitError(f"{text.strip()!r} is too large a number")
     return converted
 
+
+# "12.5 cm", "17.98 ft-lb": a quantity is short; a pasted file is not one.
+MAX_QUANTITY_LENGTH = 200
 
 # Beyond this magnitude no quantity SASS handles means anything, and squaring
 # it (the strength fit, percentiles) would overflow a float.

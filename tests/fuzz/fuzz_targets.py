@@ -44,6 +44,10 @@ _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 _ALPHABET = "0123456789.,-+eE ;\n\t()=<>*/\"'aAzZ_\x00\x1b\x07é名\u202e\ufeff"
 
 
+# Inputs stay under ~1 MB: larger ones measure the machine, not the parser.
+MAX_INPUT = 1_000_000
+
+
 def mutate(text: str, rng: random.Random, count: int | None = None) -> str:
     """Apply 1-4 random mutations to `text`."""
     for _ in range(count if count is not None else rng.randint(1, 4)):
@@ -98,7 +102,10 @@ def _repeat(text: str, rng: random.Random) -> str:
     spans = [m.span() for m in _TOKEN.finditer(text)] or [(0, 0)]
     start, end = rng.choice(spans)
     piece = text[start:end] or rng.choice(NASTY_TEXT)
-    return text[:start] + piece * rng.choice((2, 10, 300)) + text[end:]
+    times = rng.choice((2, 10, 300))
+    if len(text) + len(piece) * times > MAX_INPUT:
+        times = 2
+    return text[:start] + piece * times + text[end:]
 
 
 _MUTATIONS: tuple[Callable[[str, random.Random], str], ...] = (

@@ -130,3 +130,8 @@ def test_common_conversions_do_not_import_pint():
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() == "False"
+
+
+def test_a_pasted_page_is_not_a_quantity():
+    with pytest.raises(UnitError, match="at most 200"):
+        parse_quantity("12in" * 1000, "cm")
