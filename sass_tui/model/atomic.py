@@ -27,10 +27,20 @@ _TEMP_MARK = ".sass-tmp-"
 
 
 class OutputFileError(OSError, SassError):
-    """The output file cannot be written; the message names the target."""
+    """The output file cannot be written; the message names the target.
+
+    `strerror` is the reason alone ("no such directory: /x"), `filename` the
+    target, for callers that word the message themselves.
+    """
+
+    def __init__(self, path: Path, reason: str, errno_code: int | None = None) -> None:
+        super().__init__(f"cannot write {path}: {reason}")
+        self.errno = errno_code
+        self.strerror = reason
+        self.filename = str(path)
 
     def __str__(self) -> str:
-        return str(self.args[0]) if self.args else ""
+        return str(self.args[0])
 
 
 def temporary_name(path: Path, pid: int | None = None) -> Path:
@@ -73,7 +83,7 @@ def _mode_for(path: Path) -> int:
     parent = path.parent
     if not parent.is_dir():
         what = "not a directory" if parent.exists() else "no such directory"
-        raise OutputFileError(f"cannot write {path}: {what}: {parent}")
+        raise OutputFileError(path, f"{what}: {parent}", errno.ENOENT)
     try:
         info = os.stat(path)
     except FileNotFoundError:
@@ -84,7 +94,7 @@ def _mode_for(path: Path) -> int:
         raise _error(path, exc) from None
     if not stat.S_ISREG(info.st_mode):
         kind = _kind(info.st_mode)
-        raise OutputFileError(f"cannot write {path}: it is {kind}, not a regular file")
+        raise OutputFileError(path, f"it is {kind}, not a regular file")
     return stat.S_IMODE(info.st_mode)
 
 
@@ -141,6 +151,4 @@ def _error(path: Path, exc: OSError) -> OutputFileError:
     reason = exc.strerror or str(exc)
     if exc.errno == errno.ENOENT:
         reason = f"no such directory: {path.parent}"
-    error = OutputFileError(f"cannot write {path}: {reason}")
-    error.errno = exc.errno
-    return error
+    return OutputFileError(path, reason, exc.errno)

@@ -172,3 +172,13 @@ def test_an_error_in_the_temporary_names_the_target(tmp_path):
     assert message.startswith(f"cannot write {out}: ")
     assert "sass-tmp" not in message
     assert list(tmp_path.iterdir()) == []
+
+
+def test_the_error_carries_the_reason_and_the_target(tmp_path):
+    # The TUI words it "{path}: cannot write: {strerror}".
+    target = tmp_path / "nowhere" / "x.fig"
+    with pytest.raises(OutputFileError) as info:
+        write_text_atomic(target, "x")
+    assert info.value.strerror == f"no such directory: {tmp_path / 'nowhere'}"
+    assert info.value.filename == str(target)
+    assert str(info.value) == f"cannot write {target}: {info.value.strerror}"
