@@ -5,7 +5,8 @@ suite) and by scripts/fuzz.py (a longer campaign, each input in a worker
 process under a time limit).  An input is generated from a `random.Random`:
 either a valid seed file with a few mutations (numbers replaced by "nan",
 "1e309", huge ids, fields dropped or doubled, lines deleted, duplicated or
-truncated, control characters and stray Unicode inserted) or short random
+truncated, control characters and stray Unicode inserted, the whole input
+nested in 300 parentheses or chained 1,000 times with OR) or short random
 text.  A parser passes when it returns or raises SassError/OSError: any other
 exception is a traceback for the user, and a run that does not end is a hang.
 """
@@ -108,6 +109,20 @@ def _repeat(text: str, rng: random.Random) -> str:
     return text[:start] + piece * times + text[end:]
 
 
+def _nest(text: str, rng: random.Random) -> str:
+    """The whole input in parentheses many levels deep (queries nest)."""
+    depth = rng.choice((2, 60, 300))
+    return "(" * depth + text + ")" * depth
+
+
+def _chain(text: str, rng: random.Random) -> str:
+    """The whole input many times over, joined as a query or a file would be."""
+    times = rng.choice((2, 30, 300, 1000))
+    if len(text) * times > MAX_INPUT:
+        times = 2
+    return rng.choice((" OR ", " AND ", "\n", ",")).join([text] * times)
+
+
 _MUTATIONS: tuple[Callable[[str, random.Random], str], ...] = (
     _replace_number,
     _replace_number,
@@ -116,6 +131,8 @@ _MUTATIONS: tuple[Callable[[str, random.Random], str], ...] = (
     _lines,
     _truncate,
     _repeat,
+    _nest,
+    _chain,
 )
 
 
