@@ -169,7 +169,8 @@ GROUP_UNITS = {
     STRENGTH: ("ft_lb", "N_m"),
 }
 
-_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+# Possessive quantifiers: no backtracking through a long run of digits.
+_NUMBER = re.compile(r"^\s*([-+]?(?:\d++(?:\.\d*+)?|\.\d++)(?:[eE][-+]?\d++)?)\s*(.*?)\s*$")
 
 
 def unit_name(text: str) -> str:

@@ -61,6 +61,9 @@ def _replace_number(text: str, rng: random.Random) -> str:
     if not spans:
         return _insert_text(text, rng)
     start, end = rng.choice(spans)
+    if rng.random() < 0.05:  # a long run of digits: regular expressions can backtrack
+        digits = "1" * rng.choice((1_000, 30_000, 200_000)) + rng.choice(("", "x", ".", "e"))
+        return text[:start] + digits + text[end:]
     return text[:start] + rng.choice(NASTY_NUMBERS) + text[end:]
 
 

@@ -64,3 +64,21 @@ def test_every_seed_parses(name):
 def test_arbitrary_text_in_every_text_parser(text):
     for name in ("population", "strength", "fig", "query", "ansur", "units"):
         check(name, text)
+
+
+DIGITS = "1" * 200_000 + "x"
+LONG_NUMBERS = {
+    "population": f"C t\nT MALE\n{DIGITS} 1 1 1 1 1 1 1 1 /* Bottom head */\n",
+    "strength": f"P t\nG MALE\nL RIGHT\n{DIGITS} 45 0 90 0 0 0 17 50 /* shoulder abduction */\n",
+    "fig": f'botheadx = {DIGITS}cm;\nfigure ["body.fig"] ("skinny.a");\n',
+    "query": f"stature > {DIGITS}",
+    "units": DIGITS,
+}
+
+
+@pytest.mark.parametrize("name", sorted(LONG_NUMBERS))
+def test_a_long_run_of_digits_does_not_stall_a_parser(name):
+    # 200,000 digits then a letter: the number patterns backtracked through
+    # every split of the digits (20 s at 20,000 digits in popfile.py, growing
+    # with the square); the watchdog in check() ends a stalled run.
+    assert check(name, LONG_NUMBERS[name]) == "error"
