@@ -13,6 +13,7 @@ exception is a traceback for the user, and a run that does not end is a hang.
 
 from __future__ import annotations
 
+import csv
 import random
 import re
 import sqlite3
@@ -381,6 +382,7 @@ def target(name: str) -> Target:
 # them as tracebacks all the same.
 KNOWN_ELSEWHERE: dict[str, tuple[type[BaseException], ...]] = {
     "flat": (OverflowError,),  # person id 99999999999999999999 (flatfile.py, id_num as int64)
+    "ansur": (csv.Error,),  # a field over 131,072 characters (ansur.py, csv.reader)
 }
 
 
