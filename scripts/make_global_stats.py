@@ -15,6 +15,8 @@ from pathlib import Path
 
 import numpy as np
 
+from sass_tui.model.atomic import write_text_atomic
+
 ROOT = Path(__file__).resolve().parent.parent
 ANSUR = ROOT.parent / "shared" / "data" / "ansur2"
 REPORT_MALE_MEDIAN_MASS = 82.2  # kg: appendix F masses / appendix K fractions
@@ -48,7 +50,7 @@ def main() -> None:
         lines.append("  " + "  ".join(f"{v:6.1f}" for v in stature) + "   /* stature */")
         lines.append("  " + "  ".join(f"{v:6.1f}" for v in mass) + "   /* mass */")
     text = "\n".join(lines) + "\n"
-    (ROOT / "datasets" / "global.dat").write_text(text)
+    write_text_atomic(ROOT / "datasets" / "global.dat", text)
     sys.stdout.write(text)
 
 

@@ -62,3 +62,35 @@ def test_the_command_line_starts_without_its_heavy_imports():
         "print(','.join(sorted(m for m in heavy if m in sys.modules)))\n"
     )
     assert _run(code) == ""
+
+
+def _imported_while_running(argv: list[str], cwd) -> set[str]:
+    code = (
+        "import sys\nfrom sass_tui.cli import main\n"
+        f"status = main({argv!r})\n"
+        "heavy = ('lark', 'pint', 'textual', 'numpy')\n"
+        "print(status, ','.join(m for m in heavy if m in sys.modules), file=sys.stderr)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=cwd)
+    last = done.stderr.strip().splitlines()[-1]
+    status, _, modules = last.partition(" ")
+    assert status == "0", done.stderr
+    return set(filter(None, modules.split(",")))
+
+
+def test_a_query_in_inches_does_not_import_pint(tmp_path):
+    # Issue 16: "70 in" is converted from the unit table, not by pint.
+    from sass_tui.db.default import create_default_database
+
+    db = tmp_path / "sass.db"
+    create_default_database(db)
+    imported = _imported_while_running(
+        ["--db", str(db), "query", "--format", "csv", "stature > 70 in"], tmp_path
+    )
+    assert "pint" not in imported and "textual" not in imported
+
+
+def test_sass_fig_does_not_import_pint(tmp_path):
+    imported = _imported_while_running(["fig", "-o", str(tmp_path / "X.fig")], tmp_path)
+    assert "pint" not in imported and "textual" not in imported
+    assert (tmp_path / "X.fig").is_file()

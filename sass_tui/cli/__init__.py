@@ -74,6 +74,7 @@ def main(argv: list[str] | None = None) -> int:
 def run_verb(args: argparse.Namespace) -> int:
     """Run the chosen verb; every error a user can cause ends here as a message."""
     from sass_tui.model.errors import SassError
+    from sass_tui.model.text import printable
 
     try:
         status: int = args.func(args)
@@ -87,10 +88,11 @@ def run_verb(args: argparse.Namespace) -> int:
         print(f"sass {args.command}: interrupted", file=sys.stderr)
         return 130
     except (SassError, OSError) as exc:
-        print(f"sass {args.command}: error: {exc}", file=sys.stderr)
+        # Messages quote file names and file text: show no control characters.
+        print(f"sass {args.command}: error: {printable(exc)}", file=sys.stderr)
         pointer = exc.pointer() if isinstance(exc, SassError) else ""
-        if pointer:
-            print(pointer, file=sys.stderr)
+        for line in pointer.splitlines():
+            print(printable(line), file=sys.stderr)
         return 2
     except Exception as exc:
         sqlite3 = sys.modules.get("sqlite3")

@@ -157,5 +157,7 @@ def person_file_name(name: str, suffix: str) -> str:
 def print_warnings(warnings: list[str]) -> None:
     import sys
 
+    from sass_tui.model.text import printable
+
     for warning in warnings:
-        print(f"warning: {warning}", file=sys.stderr)
+        print(f"warning: {printable(warning)}", file=sys.stderr)

@@ -22,7 +22,7 @@ import math
 import sqlite3
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
-from typing import BinaryIO, NoReturn, cast
+from typing import Any, BinaryIO, NoReturn, cast
 
 import numpy as np
 
@@ -188,6 +188,32 @@ def _decoded_lines(stream: BinaryIO) -> Iterator[str]:
             yield raw_line.decode("cp1252", errors="replace")
 
 
+class _LineNamedReader:
+    """csv.reader whose own errors (a stray carriage return, a field over csv's
+    size limit) come out as AnsurImportError naming the line."""
+
+    def __init__(self, path: str | Path, reader: Any) -> None:
+        self.path = path
+        self.reader = reader
+
+    @property
+    def line_num(self) -> int:
+        return int(self.reader.line_num)
+
+    def __iter__(self) -> _LineNamedReader:
+        return self
+
+    def __next__(self) -> list[str]:
+        try:
+            row: list[str] = next(self.reader)
+        except csv.Error as exc:
+            raise AnsurImportError(
+                f"{self.path}:{self.reader.line_num}: not a CSV record the survey's "
+                f"format allows ({exc})"
+            ) from None
+        return row
+
+
 class _Chunk:
     """Rows of one chunk of the file and their line numbers, checked column by column."""
 
@@ -295,7 +321,7 @@ def _read_chunks(
     chunk_rows: int,
     progress: Callable[[int], None] | None,
 ) -> Iterator[PeopleBatch]:
-    reader = csv.reader(_decoded_lines(stream))
+    reader = _LineNamedReader(path, csv.reader(_decoded_lines(stream)))
     header_row = next(reader, None)
     if header_row is None:
         raise AnsurImportError(f"{path}:1: the file is empty; expected the ANSUR II header")
@@ -344,7 +370,8 @@ def _subject_ids(chunk: _Chunk, column: int, seen: dict[int, int]) -> list[int]:
     out = []
     for k, row in enumerate(chunk.rows):
         text = row[column].strip()
-        if not text.isdigit() or int(text) < 1 or int(text) > MAX_SUBJECT_ID:
+        # isascii: str.isdigit also takes superscripts such as "¹", which int() refuses
+        if not (text.isascii() and text.isdigit()) or not 1 <= int(text) <= MAX_SUBJECT_ID:
             chunk.fail(
                 k,
                 f"column {ID_COLUMN}: expected a whole number from 1 to {MAX_SUBJECT_ID}, "

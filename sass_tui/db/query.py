@@ -24,6 +24,7 @@ For the UI: `Query.count()` and `Query.page(offset, limit)` (or
 
 from __future__ import annotations
 
+import math
 import re
 import sqlite3
 from dataclasses import dataclass
@@ -48,7 +49,7 @@ from sass_tui.db.schema import (
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, suggest
 from sass_tui.model.strength import MOTION_NAMES
-from sass_tui.model.units import DISPLAY, UnitError, convert, unit_name
+from sass_tui.model.units import DISPLAY, LARGEST_NUMBER, UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 
@@ -159,8 +160,15 @@ class _Compiler(Transformer):
         super().__init__()
         self.text = text
         self.tables: dict[str, str] = {}  # table -> alias
+        self._field_token: Token | None = None
 
     def _alias(self, table: str) -> str:
+        if table not in self.tables and len(self.tables) >= MAX_JOINED_TABLES:
+            self._fail(
+                f"the query uses more than {MAX_JOINED_TABLES} different segments, joints "
+                "and motions; split it",
+                self._field_token,
+            )
         return self.tables.setdefault(table, f"t{len(self.tables)}")
 
     def _fail(self, message: str, token) -> None:
@@ -179,6 +187,7 @@ class _Compiler(Transformer):
         )
 
     def field(self, names):
+        self._field_token = names[0]  # for _alias's error: the field being resolved
         return list(names)
 
     @v_args(inline=True)
@@ -228,6 +237,8 @@ class _Compiler(Transformer):
         if kind != "number":
             self._fail(f"{'.'.join(names)} needs a number, not {str(token)!r}", token)
         number = float(token)
+        if not math.isfinite(number) or abs(number) > LARGEST_NUMBER:
+            self._fail(f"{str(token)!r} is not a usable number", token)
         if unit_token is not None:
             if not unit:
                 self._fail(
@@ -320,20 +331,30 @@ def field_names() -> list[tuple[str, str]]:
     return out
 
 
-# Bounds that keep every query within what the parser's recursion and SQLite's
-# expression tree (depth 1000) take, with a message instead of a crash.
+# Bounds on a query's shape, checked before parsing: deeper nesting would
+# exhaust Python's recursion in the tree walk, and more comparisons SQLite's
+# expression tree (its limit is 1000 levels; "a OR b OR ..." nests one a term).
 MAX_NESTING = 50
 MAX_COMPARISONS = 200
-_OPERATOR_START = re.compile(r"<=|>=|!=|<>|[<>=≤≥≠]")
+MAX_LENGTH = 20_000
+MAX_JOINED_TABLES = 63  # SQLite joins at most 64 tables: person and 63 more
+_COMPARISON_OPERATOR = re.compile(r"<=|>=|!=|<>|[<>=≤≥≠]")
 
 
 def _check_size(text: str) -> None:
+    """Refuse a query too long, too deeply nested or with too many comparisons."""
+    if len(text) > MAX_LENGTH:
+        raise QueryError(
+            f"the query is {len(text)} characters long; at most {MAX_LENGTH} are allowed",
+            text[:80],
+            None,
+        )
     depth = 0
     comparisons = 0
-    quote: str | None = None
-    k = 0
-    while k < len(text):
-        char = text[k]
+    quote: str | None = None  # brackets and operators inside quoted text do not count
+    column = 0
+    while column < len(text):
+        char = text[column]
         if quote:
             if char == quote:
                 quote = None
@@ -342,20 +363,25 @@ def _check_size(text: str) -> None:
         elif char == "(":
             depth += 1
             if depth > MAX_NESTING:
-                raise QueryError(f"parentheses nested more than {MAX_NESTING} deep", text, k + 1)
+                raise QueryError(
+                    f"parentheses nested more than {MAX_NESTING} deep", text, column + 1
+                )
         elif char == ")":
             depth -= 1
         else:
-            match = _OPERATOR_START.match(text, k)
+            match = _COMPARISON_OPERATOR.match(text, column)
             if match:
                 comparisons += 1
                 if comparisons > MAX_COMPARISONS:
                     raise QueryError(
-                        f"more than {MAX_COMPARISONS} comparisons in one query", text, k + 1
+                        f"more than {MAX_COMPARISONS} comparisons in one query; "
+                        "split it or use a range (e.g. stature > 170 cm AND stature < 180 cm)",
+                        text,
+                        column + 1,
                     )
-                k = match.end()
+                column = match.end()
                 continue
-        k += 1
+        column += 1
 
 
 def compile_query(text: str) -> CompiledQuery:

@@ -1,25 +1,154 @@
-"""Atomic file writes: a reader never sees a half-written file."""
+"""Atomic file writes: a reader never sees a half-written file.
+
+Every file sass writes goes through `write_text_atomic`: the text goes to a
+temporary file beside the target (`.NAME.sass-tmp-PID-RANDOM`), is flushed to
+disk, then renamed over the target.  So that nothing surprising happens:
+
+- the new file gets the mode a plain `open(path, "w")` would give it
+  (0666 & ~umask), or keeps the mode of the file it replaces;
+- a target that is not a regular file (a FIFO, a device such as /dev/null,
+  a directory) is refused: renaming over it would replace it;
+- errors name the target, never the temporary file;
+- a write killed half-way leaves a temporary file; the next write of the same
+  target removes it once its process is gone.
+"""
 
 from __future__ import annotations
 
+import errno
 import os
-import tempfile
+import secrets
+import stat
 from pathlib import Path
+
+from sass_tui.model.errors import SassError
+
+_TEMP_MARK = ".sass-tmp-"
+
+
+class OutputFileError(OSError, SassError):
+    """The output file cannot be written; the message names the target.
+
+    `strerror` is the reason alone ("no such directory: /x"), `filename` the
+    target, for callers that word the message themselves.
+    """
+
+    def __init__(self, path: Path, reason: str, errno_code: int | None = None) -> None:
+        super().__init__(f"cannot write {path}: {reason}")
+        self.errno = errno_code
+        self.strerror = reason
+        self.filename = str(path)
+
+    def __str__(self) -> str:
+        return str(self.args[0])
+
+
+def temporary_name(path: Path, pid: int | None = None) -> Path:
+    """Where the text for `path` is written before the rename."""
+    pid = os.getpid() if pid is None else pid
+    return path.with_name(f".{path.name}{_TEMP_MARK}{pid}-{secrets.token_hex(4)}")
 
 
 def write_text_atomic(path: str | Path, text: str, encoding: str = "utf-8") -> None:
-    """Write to a temporary file beside `path`, then rename it over `path`."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent or ".")
+    """Write `text` to `path` atomically, or raise OutputFileError naming `path`."""
+    path = Path(os.fspath(path))
+    mode = _mode_for(path)
+    _remove_stale_temporaries(path)
+    data = text.encode(encoding)
+    tmp = temporary_name(path)
     try:
-        with os.fdopen(fd, "w", encoding=encoding, newline="\n") as handle:
-            handle.write(text)
-            handle.flush()
-            os.fsync(handle.fileno())
-        os.replace(tmp, path)
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o600)
+    except OSError as exc:
+        raise _error(path, exc) from None
+    try:
+        try:
+            with os.fdopen(fd, "wb") as handle:
+                handle.write(data)
+                handle.flush()
+                os.fchmod(handle.fileno(), mode)
+                os.fsync(handle.fileno())
+            os.replace(tmp, path)
+        except OSError as exc:
+            raise _error(path, exc) from None
     except BaseException:
         try:
             os.unlink(tmp)
         except FileNotFoundError:
             pass
         raise
+
+
+def _mode_for(path: Path) -> int:
+    """The mode the written file gets; refuses a target that is not a regular file."""
+    parent = path.parent
+    if not parent.is_dir():
+        what = "not a directory" if parent.exists() else "no such directory"
+        raise OutputFileError(path, f"{what}: {parent}", errno.ENOENT)
+    try:
+        info = os.stat(path)
+    except FileNotFoundError:
+        umask = os.umask(0)
+        os.umask(umask)
+        return 0o666 & ~umask
+    except OSError as exc:
+        raise _error(path, exc) from None
+    if not stat.S_ISREG(info.st_mode):
+        kind = _kind(info.st_mode)
+        raise OutputFileError(path, f"it is {kind}, not a regular file")
+    return stat.S_IMODE(info.st_mode)
+
+
+def _kind(mode: int) -> str:
+    if stat.S_ISDIR(mode):
+        return "a directory"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (named pipe)"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "a special file"
+
+
+def _remove_stale_temporaries(path: Path) -> None:
+    """Remove temporaries of `path` left by a write that was killed.
+
+    A temporary is stale when the process that made it (the PID in its name)
+    is gone; a write still going in another process keeps its own.
+    """
+    prefix = f".{path.name}{_TEMP_MARK}"
+    try:
+        names = os.listdir(path.parent)
+    except OSError:
+        return
+    for name in names:
+        if not name.startswith(prefix):
+            continue
+        pid_text = name[len(prefix) :].split("-", 1)[0]
+        if pid_text.isdigit() and _process_alive(int(pid_text)):
+            continue
+        try:
+            os.unlink(path.parent / name)
+        except OSError:
+            pass
+
+
+def _process_alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    except OSError:
+        return False
+    return True
+
+
+def _error(path: Path, exc: OSError) -> OutputFileError:
+    reason = exc.strerror or str(exc)
+    if exc.errno == errno.ENOENT:
+        reason = f"no such directory: {path.parent}"
+    return OutputFileError(path, reason, exc.errno)

@@ -125,10 +125,21 @@ def render_fig(figure, extra_sections: list[tuple[str, list[tuple[str, float, st
     ]
     for title, variables in sections:
         lines.append(f"/* {title} */")
-        lines += [f"{name} = {value:.2f}{unit};" for name, value, unit in variables]
+        lines += [_assignment(name, value, unit) for name, value, unit in variables]
         lines.append("")
     lines.append(f'figure ["body.fig"] ("{ARCHIVES[figure.figure_type]}");')
     return "\n".join(lines) + "\n"
+
+
+class FigValueError(ValueError, SassError):
+    """A value that cannot be written to a .fig file (not a finite number)."""
+
+
+def _assignment(name: str, value: float, unit: str) -> str:
+    """`name = value unit;`, refusing a value the reader could not read back."""
+    if not math.isfinite(value):
+        raise FigValueError(f"cannot write the figure: {name} is {value} {unit}, not a number")
+    return f"{name} = {value:.2f}{unit};"
 
 
 def write_fig(figure, path: str | Path, extra_sections=()) -> Path:
@@ -203,7 +214,12 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
             var, number, *unit = node.children
             if str(var) in fig.variables:
                 raise FigParseError(f"{name}:{var.line}:{var.column}: {var} assigned twice")
-            fig.variables[str(var)] = (float(number), str(unit[0]) if unit else "")
+            value = float(number)
+            if not math.isfinite(value):
+                raise FigParseError(
+                    f"{name}:{number.line}:{number.column}: {var} = {number}: too large a number"
+                )
+            fig.variables[str(var)] = (value, str(unit[0]) if unit else "")
         else:
             body, archive = (str(s)[1:-1] for s in node.children)
             fig.body, fig.archive = body, archive

@@ -225,6 +225,8 @@ class Figure:
             self.handedness = _check_choice(value, HANDEDNESS, "handedness")
         elif name in ("motion_speed", "training_level", "fatigue_level"):
             number = float(value)
+            if not math.isfinite(number):
+                raise FigureError(f"{name.replace('_', ' ')} must be a number, not {value!r}")
             if number < 0:
                 raise FigureError(f"{name.replace('_', ' ')} cannot be negative")
             setattr(self, name, number)

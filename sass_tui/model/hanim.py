@@ -576,6 +576,8 @@ def rotation_matrix(axis, angle: float) -> np.ndarray:
 
 
 def _num(value: float) -> str:
+    if not math.isfinite(value):
+        raise HAnimError(f"cannot write the humanoid: a value is {value}, not a number")
     text = f"{value:.6f}".rstrip("0").rstrip(".")
     return "0" if text in ("-0", "") else text
 

@@ -265,6 +265,7 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
             motion = motion_index(label)
         except StrengthError as exc:
             raise StrengthFileError(f"{where}: {exc}") from None
+        _check_magnitudes(numbers, where)
         percentile = numbers[-1]
         if percentile != NO_VALUE and not 0.5 <= percentile <= 99.5:
             raise StrengthFileError(
@@ -279,6 +280,29 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
     for key, (line, entries) in raw.items():
         data.sections[key] = _build_section(key, line, entries, name, warnings)
     return data
+
+
+# No joint turns further than a full circle, and no human joint exerts more
+# than a few hundred ft-lb: beyond these a number is a typing error, and left
+# in it would overflow the fit (t^2 of an angle of 1e200 is infinite).
+LARGEST_ANGLE = 360.0
+LARGEST_STRENGTH = 10_000.0  # ft-lb
+
+
+def _check_magnitudes(numbers: list[float], where: str) -> None:
+    """Refuse angles and strength values no measurement can have (999 = no value)."""
+    for col, angle in enumerate(numbers[:N_ANGLES], start=1):
+        if angle != NO_VALUE and abs(angle) > LARGEST_ANGLE:
+            raise StrengthFileError(
+                f"{where}: value {col} ({JOINT_AXIS_LABELS[col - 1]}) is {angle:g} deg; "
+                f"expected an angle within ±{LARGEST_ANGLE:g} deg (999 = no value)"
+            )
+    value = numbers[N_ANGLES]
+    if value != NO_VALUE and abs(value) > LARGEST_STRENGTH:
+        raise StrengthFileError(
+            f"{where}: value {N_ANGLES + 1} (strength) is {value:g} ft-lb; "
+            f"expected at most {LARGEST_STRENGTH:g} ft-lb (999 = no value)"
+        )
 
 
 def _build_section(key, section_line, entries, name, warnings) -> StrengthSection:
@@ -459,7 +483,14 @@ class StrengthModel:
             + [1 + j for j in range(N_ANGLES) if distinct[j] >= 2]
             + [1 + N_ANGLES + j for j in range(N_ANGLES) if distinct[j] >= 3]
         )
-        solution, *_ = np.linalg.lstsq(full[:, used], np.log(median), rcond=None)
+        target = np.log(median)
+        if not (np.isfinite(full).all() and np.isfinite(target).all()):
+            # lstsq never returns on an infinite entry and LAPACK prints on NaN.
+            raise StrengthError(f"{MOTIONS[motion].label}: the data hold a number too large to fit")
+        try:
+            solution, *_ = np.linalg.lstsq(full[:, used], target, rcond=None)
+        except np.linalg.LinAlgError as exc:
+            raise StrengthError(f"{MOTIONS[motion].label}: the fit failed ({exc})") from None
         coefficients = np.zeros(N_FEATURES)
         coefficients[used] = solution
         relative = np.minimum(np.exp(full @ coefficients), median.max()) / median - 1.0

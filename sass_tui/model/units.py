@@ -1,12 +1,16 @@
-"""Units: one pint registry for the whole program, built once from units.txt.
+"""Units: the factors of the units SASS uses, and one pint registry for the rest.
 
 Users type units the way the report does ("12in", "30deg", "17.98 ft-lb",
 "24 N-m"); pint would read "ft-lb" as feet minus pounds, so unit spellings are
-mapped to registry names before pint sees them.
+mapped to registry names first.  Every unit a user can type has its factor in
+`BASE_FACTORS` (checked against pint by tests/model/test_units.py), so
+converting "70 in" costs a multiplication, not pint's ~0.15 s import; pint is
+imported only for a unit outside that table.
 """
 
 from __future__ import annotations
 
+import math
 import re
 from functools import cache, lru_cache
 from pathlib import Path
@@ -28,17 +32,55 @@ def registry():
     return pint.UnitRegistry(str(Path(__file__).with_name("units.txt")), cache_folder=None)
 
 
+# Registry name -> (dimension, factor to the SI unit of that dimension).  The
+# values are units.txt's definitions written out; a test compares each pair's
+# factor with pint's.
+BASE_FACTORS: dict[str, tuple[str, float]] = {
+    "m": ("length", 1.0),
+    "cm": ("length", 1e-2),
+    "mm": ("length", 1e-3),
+    "in": ("length", 0.0254),
+    "ft": ("length", 0.3048),
+    "kg": ("mass", 1.0),
+    "g": ("mass", 1e-3),
+    "lb": ("mass", 0.45359237),
+    "rad": ("angle", 1.0),
+    "deg": ("angle", math.pi / 180.0),
+    "rad/s": ("angular speed", 1.0),
+    "deg/s": ("angular speed", math.pi / 180.0),
+    "N_m": ("torque", 1.0),
+    "ft_lb": ("torque", 0.3048 * 4.4482216152605),
+}
+
+
 @cache
 def _factor(from_unit: str, to_unit: str) -> float:
+    if from_unit in BASE_FACTORS and to_unit in BASE_FACTORS:
+        (from_dimension, from_base), (to_dimension, to_base) = (
+            BASE_FACTORS[from_unit],
+            BASE_FACTORS[to_unit],
+        )
+        if from_dimension == to_dimension:
+            return from_base / to_base
+        raise _wrong_dimension(from_unit, to_unit)
+    return _pint_factor(from_unit, to_unit)
+
+
+def _pint_factor(from_unit: str, to_unit: str) -> float:
+    """A unit outside BASE_FACTORS: ask pint (imported now, the first time)."""
     import pint
 
     try:
-        return registry().Quantity(1.0, from_unit).to(to_unit).magnitude
+        return float(registry().Quantity(1.0, from_unit).to(to_unit).magnitude)
     except pint.DimensionalityError:
-        raise UnitError(
-            f"{DISPLAY.get(from_unit, from_unit)} is not a unit of "
-            f"{_dimension_word(to_unit)} (expected e.g. {DISPLAY.get(to_unit, to_unit)})"
-        ) from None
+        raise _wrong_dimension(from_unit, to_unit) from None
+
+
+def _wrong_dimension(from_unit: str, to_unit: str) -> UnitError:
+    return UnitError(
+        f"{DISPLAY.get(from_unit, from_unit)} is not a unit of "
+        f"{_dimension_word(to_unit)} (expected e.g. {DISPLAY.get(to_unit, to_unit)})"
+    )
 
 
 # Display spelling -> registry name.  Keys are compared after lower-casing,
@@ -127,7 +169,8 @@ GROUP_UNITS = {
     STRENGTH: ("ft_lb", "N_m"),
 }
 
-_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+# Possessive quantifiers: no backtracking through a long run of digits.
+_NUMBER = re.compile(r"^\s*([-+]?(?:\d++(?:\.\d*+)?|\.\d++)(?:[eE][-+]?\d++)?)\s*(.*?)\s*$")
 
 
 def unit_name(text: str) -> str:
@@ -142,16 +185,48 @@ def parse_quantity(text: str, unit: str) -> float:
     """Read "12", "12in", "12 in", "0.5 rad", "24 N·m" as a number in `unit`.
 
     A bare number is taken to be in `unit` already.  A unit of the wrong
-    dimension, or text that is not a number, raises UnitError.
+    dimension, text that is not a number, or a number too large to hold
+    ("1e400", which float() reads as infinity) raises UnitError.
     """
+    if len(text) > MAX_QUANTITY_LENGTH:
+        raise UnitError(
+            f"expected a number with an optional unit, got {len(text)} characters "
+            f"(at most {MAX_QUANTITY_LENGTH})"
+        )
     match = _NUMBER.match(text)
     if not match:
         raise UnitError(f"expected a number with an optional unit, got {text.strip()!r}")
-    value = float(match.group(1))
+    value = finite_number(match.group(1))
     if not match.group(2):
         return value
     given = unit_name(match.group(2))
-    return convert(value, given, unit)
+    converted = float(convert(value, given, unit))
+    if not math.isfinite(converted):
+        raise UnitError(f"{text.strip()!r} is too large a number")
+    return converted
+
+
+# "12.5 cm", "17.98 ft-lb": a quantity is short; a pasted file is not one.
+MAX_QUANTITY_LENGTH = 200
+
+# Beyond this magnitude no quantity SASS handles means anything, and squaring
+# it (the strength fit, percentiles) would overflow a float.
+LARGEST_NUMBER = 1e15
+
+
+def finite_number(text: str) -> float:
+    """float(text) for a number that is finite and at most LARGEST_NUMBER in size.
+
+    "nan", "inf" and "1e400" (which float() reads as infinity) raise UnitError;
+    the caller adds where the text came from.
+    """
+    try:
+        value = float(text)
+    except ValueError:
+        raise UnitError(f"expected a number, got {text.strip()!r}") from None
+    if not math.isfinite(value) or abs(value) > LARGEST_NUMBER:
+        raise UnitError(f"{text.strip()!r} is not a usable number (largest {LARGEST_NUMBER:g})")
+    return value
 
 
 def convert(value, from_unit: str, to_unit: str):

@@ -16,7 +16,12 @@ from textual.binding import Binding
 from textual.containers import Horizontal
 from textual.widgets import Button, Footer
 
-from sass_tui.model.figfile import FigureIncompleteError, default_fig_name, write_fig
+from sass_tui.model.figfile import (
+    FigureIncompleteError,
+    FigValueError,
+    default_fig_name,
+    write_fig,
+)
 from sass_tui.model.figure import Figure, FigureError
 from sass_tui.model.names import (
     AXES,
@@ -494,7 +499,7 @@ class SassApp(QueryCommands, App):
     def write_figure(self, path: Path, extra_sections=()) -> None:
         try:
             write_fig(self.figure, path, extra_sections)
-        except FigureIncompleteError as exc:
+        except (FigureIncompleteError, FigValueError) as exc:
             self.call_from_thread(self.complain, str(exc))
             return
         except OSError as exc:

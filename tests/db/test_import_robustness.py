@@ -206,3 +206,22 @@ def test_optional_survey_columns_may_be_absent(tmp_path, male_lines):
     assert batch.attributes["branch"] == [None] * 30
     assert batch.attributes["component"][0] == "Regular Army"
     assert batch.measures is not None and math.isnan(batch.measures[0, 73])  # span
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        ("17\r5", ":2: not a CSV record"),  # a stray carriage return inside a line
+        ("9" * 200_000, ":2: not a CSV record"),  # over csv's field size limit
+    ],
+)
+def test_csv_level_faults_name_the_line(tmp_path, male_lines, value, message):
+    path = _write(tmp_path, _with_value(male_lines[:3], 1, "stature", value))
+    with pytest.raises(AnsurImportError, match=message):
+        read_ansur(path)
+
+
+def test_a_subject_id_in_superscript_digits_is_refused(tmp_path, male_lines):
+    path = _write(tmp_path, _with_value(male_lines[:3], 1, "subjectid", "¹²"))
+    with pytest.raises(AnsurImportError, match=":2: column subjectid"):
+        read_ansur(path)

@@ -2,12 +2,25 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import GIRTH
-from sass_tui.model.units import UnitError, convert, parse_quantity, registry
+from sass_tui.model.units import (
+    _ALIASES,
+    BASE_FACTORS,
+    UnitError,
+    _factor,
+    _pint_factor,
+    convert,
+    finite_number,
+    parse_quantity,
+    registry,
+)
 
 
 @pytest.mark.parametrize(
@@ -63,3 +76,62 @@ def test_degrees_radians_round_trip_keeps_no_value():
     back = convert(convert(values, "deg", "rad"), "rad", "deg")
     np.testing.assert_allclose(back, values, rtol=1e-12)
     assert np.isnan(back).sum() == np.isnan(values).sum() > 0
+
+
+@pytest.mark.parametrize(
+    "text", ["1e400", "-1e400 cm", "1e400 in", "1e16", "nan", "inf", "inf cm", "-inf", "NaN cm"]
+)
+def test_non_finite_and_absurd_numbers_are_refused(text):
+    with pytest.raises(UnitError):
+        parse_quantity(text, "cm")
+
+
+def test_a_number_too_large_to_convert_is_refused():
+    with pytest.raises(UnitError, match="usable number"):
+        parse_quantity("1e308 ft", "mm")
+
+
+@pytest.mark.parametrize("text", ["nan", "inf", "-inf", "1e309", "1e16", "x"])
+def test_finite_number_refuses(text):
+    with pytest.raises(UnitError):
+        finite_number(text)
+
+
+def test_finite_number_accepts_ordinary_numbers():
+    assert finite_number(" -3.5e2 ") == -350.0
+    assert finite_number("1e15") == 1e15
+
+
+def test_the_unit_table_agrees_with_pint():
+    # Every pair of units a user can type, table against pint (units.txt).
+    names = sorted(set(_ALIASES.values()))
+    assert set(names) == set(BASE_FACTORS)
+    for a in names:
+        for b in names:
+            table_dimension = BASE_FACTORS[a][0] == BASE_FACTORS[b][0]
+            try:
+                expected = _pint_factor(a, b)
+            except UnitError:
+                assert not table_dimension, (a, b)
+                continue
+            assert table_dimension, (a, b)
+            assert _factor(a, b) == pytest.approx(expected, rel=1e-14), (a, b)
+
+
+def test_common_conversions_do_not_import_pint():
+    code = (
+        "import sys\n"
+        "from sass_tui.model.units import parse_quantity, convert\n"
+        "assert abs(parse_quantity('70 in', 'cm') - 177.8) < 1e-9\n"
+        "assert abs(parse_quantity('17.98 ft-lb', 'N_m') - 24.377606711) < 1e-6\n"
+        "convert(1.0, 'deg', 'rad')\n"
+        "print('pint' in sys.modules)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "False"
+
+
+def test_a_pasted_page_is_not_a_quantity():
+    with pytest.raises(UnitError, match="at most 200"):
+        parse_quantity("12in" * 1000, "cm")

@@ -371,7 +371,11 @@ def test_create_figure_writes_and_asks_before_overwriting(drive, tmp_path, monke
             await pilot.press("enter", "enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
-            assert f"{tmp_path / 'no' / 'dir.fig'}: cannot write: No such file" in message(app)
+            # Issue 11: the missing directory is named, not a temporary file.
+            assert (
+                f"{tmp_path / 'no' / 'dir.fig'}: cannot write: no such directory: {tmp_path / 'no'}"
+                in message(app)
+            )
             assert app.query_one("#message").has_class("-error")
 
     drive(scenario())

@@ -1,0 +1,46 @@
+"""Text from files and databases made safe to show on a terminal.
+
+A name, title or source read from a file can hold control characters: an
+escape sequence such as "\\x1b[2J\\x1b]0;pwned\\x07" clears the screen and sets
+the terminal's title when printed.  Everything that shows such text (the
+`sass query` table, the TUI's lists and titles) passes it through
+`printable` first.
+"""
+
+from __future__ import annotations
+
+import re
+
+# C0 controls, DEL, C1 controls, the Unicode characters that reorder text
+# (bidi marks and overrides) or break lines, and lone surrogates (which no
+# terminal encoding can print).
+_CONTROL = re.compile(
+    "[\x00-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029\ud800-\udfff]"
+)
+
+
+def _escape(match: re.Match[str]) -> str:
+    char = match.group(0)
+    code = ord(char)
+    if code == 0x1B:
+        return "^["
+    if code < 0x20:
+        return "^" + chr(code + 0x40)  # ^A .. ^_ as terminals show them
+    if code == 0x7F:
+        return "^?"
+    return f"\\u{code:04x}" if code > 0xFF else f"\\x{code:02x}"
+
+
+def printable(text: object) -> str:
+    """`text` as a string with every control character made visible.
+
+    ESC becomes "^[", other C0 controls "^A".."^_", DEL "^?", C1 controls
+    "\\x9b", and bidirectional overrides "\\u202e"; nothing a terminal would
+    act on is left.  None becomes "".
+    """
+    if text is None:
+        return ""
+    string = str(text)
+    if _CONTROL.search(string) is None:
+        return string
+    return _CONTROL.sub(_escape, string)

@@ -1,0 +1,72 @@
+"""A query's depth and size are bounded with a message that points at the
+token (issue 17: 247 nested parentheses raised RecursionError, an OR of
+1,000 terms SQLite's "Expression tree is too large")."""
+
+from __future__ import annotations
+
+import pytest
+
+from sass_tui.cli import main
+from sass_tui.db.query import (
+    MAX_COMPARISONS,
+    MAX_JOINED_TABLES,
+    MAX_NESTING,
+    Query,
+    QueryError,
+    compile_query,
+)
+from sass_tui.db.schema import QUERY_TABLES
+
+
+def test_deep_nesting_is_refused_at_the_parenthesis():
+    text = "(" * 247 + "stature > 170" + ")" * 247
+    with pytest.raises(QueryError, match=f"nested more than {MAX_NESTING} deep") as info:
+        compile_query(text)
+    assert info.value.column == MAX_NESTING + 1
+
+
+def test_nesting_at_the_limit_runs(default_db):
+    text = "(" * MAX_NESTING + "stature > 170 cm" + ")" * MAX_NESTING
+    assert Query(default_db, compile_query(text)).count() >= 0
+
+
+def test_a_thousand_ors_are_refused_at_the_first_extra_comparison():
+    terms = [f"stature > {i}" for i in range(1000)]
+    text = " OR ".join(terms)
+    with pytest.raises(QueryError, match=f"more than {MAX_COMPARISONS} comparisons") as info:
+        compile_query(text)
+    extra = " OR ".join(terms[:MAX_COMPARISONS]) + " OR "
+    assert info.value.column == len(extra) + len("stature ") + 1
+
+
+def test_the_largest_query_allowed_runs_in_sqlite(default_db):
+    # MAX_COMPARISONS terms, each inside MAX_NESTING - 1 parentheses, mixing
+    # AND and OR: SQLite's expression depth limit is not reached.
+    one = "(" * (MAX_NESTING - 1) + "stature > 1 cm AND mass > 1 kg" + ")" * (MAX_NESTING - 1)
+    text = " OR ".join([one] * (MAX_COMPARISONS // 2))
+    assert Query(default_db, compile_query(text)).count() > 0
+
+
+def test_too_many_joined_tables_are_refused_at_the_field(default_db):
+    fields = [f"girth.{r}.x" for r in QUERY_TABLES["girth"]]
+    fields += [f"joint_limit.{r}.x" for r in QUERY_TABLES["joint_limits"]]
+    fields += [f"center_of_mass.{r}.x" for r in QUERY_TABLES["center_of_mass"]]
+    text = " OR ".join(f"{f} > 1" for f in fields)
+    with pytest.raises(QueryError, match="more than 63 different") as info:
+        compile_query(text)
+    assert text[info.value.column - 1 :].startswith(fields[MAX_JOINED_TABLES])
+    allowed = " OR ".join(f"{f} > 1" for f in fields[:MAX_JOINED_TABLES])
+    assert Query(default_db, compile_query(allowed)).count() >= 0
+
+
+@pytest.mark.parametrize("number", ["1e400", "-1e309", "1e16"])
+def test_non_finite_numbers_are_refused(number):
+    with pytest.raises(QueryError, match="not a usable number") as info:
+        compile_query(f"stature > {number} cm")
+    assert info.value.column == len("stature > ") + 1
+
+
+def test_the_cli_prints_the_limit_not_a_traceback(capsys):
+    assert main(["query", "(" * 300 + "stature > 1" + ")" * 300]) == 2
+    err = capsys.readouterr().err
+    assert "nested more than" in err and "Traceback" not in err

@@ -1,0 +1,391 @@
+"""Every parser sass has, as a fuzz target: seeds, a mutator and a run function.
+
+Shared by the hypothesis tests beside this file (a modest budget in the
+suite) and by scripts/fuzz.py (a longer campaign, each input in a worker
+process under a time limit).  An input is generated from a `random.Random`:
+either a valid seed file with a few mutations (numbers replaced by "nan",
+"1e309", huge ids, fields dropped or doubled, lines deleted, duplicated or
+truncated, control characters and stray Unicode inserted, the whole input
+nested in 300 parentheses or chained 1,000 times with OR) or short random
+text.  A parser passes when it returns or raises SassError/OSError: any other
+exception is a traceback for the user, and a run that does not end is a hang.
+"""
+
+from __future__ import annotations
+
+import random
+import re
+import sqlite3
+import tempfile
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+from sass_tui.model.errors import SassError
+
+ROOT = Path(__file__).resolve().parents[2]
+DATASETS = ROOT / "datasets"
+
+# What a user's files and fingers produce that a parser must survive.
+NASTY_NUMBERS = (
+    "nan", "NaN", "inf", "-inf", "Infinity", "1e309", "-1e309", "1e400", "1e200", "1e-400",
+    "1e30", "-1e30", "1e16", "0", "-0", "-1", "999", "999.0", "-999", "1e3", "0x10", "1_000",
+    "9223372036854775807", "9223372036854775808", "99999999999999999999", "-9223372036854775809",
+    "1.5", "10037.9", ".", "-", "+", "e5", "1e", "--1", "1..2", "١٢", "¹", "½",
+)  # fmt: skip
+NASTY_TEXT = (
+    "", " ", ",", ",,", ";", "/*", "*/", "/* x */", '"', "'", "(", ")", "((((", "))))",
+    "AND", "OR", "and or", "\t", "\r", "\x00", "\x1b[2J", "\x1b]0;pwned\x07", "\x7f", "\u202e",
+    "\ufeff", "\ud800", "é", "名", "T MALE", "T FEMALE", "G MALE", "L RIGHT", "C", "P", "999",
+    "male", "female", "right", "left", "deg", "rad", "cm", "in", "ft-lb", "N-m", "kg",
+    'figure ["body.fig"] ("skinny.a");', "=", "==", "<", ">=", "≠", "~", "%", "\\",
+)  # fmt: skip
+_TOKEN = re.compile(r"[^\s,;()=<>]+")
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+_ALPHABET = "0123456789.,-+eE ;\n\t()=<>*/\"'aAzZ_\x00\x1b\x07é名\u202e\ufeff"
+
+
+# Inputs stay under ~1 MB: larger ones measure the machine, not the parser.
+MAX_INPUT = 1_000_000
+
+
+def mutate(text: str, rng: random.Random, count: int | None = None) -> str:
+    """Apply 1-4 random mutations to `text`."""
+    for _ in range(count if count is not None else rng.randint(1, 4)):
+        text = rng.choice(_MUTATIONS)(text, rng)
+    return text
+
+
+def _replace_number(text: str, rng: random.Random) -> str:
+    spans = [m.span() for m in _NUMBER.finditer(text)]
+    if not spans:
+        return _insert_text(text, rng)
+    start, end = rng.choice(spans)
+    if rng.random() < 0.05:  # a long run of digits: regular expressions can backtrack
+        digits = "1" * rng.choice((1_000, 30_000, 200_000)) + rng.choice(("", "x", ".", "e"))
+        return text[:start] + digits + text[end:]
+    return text[:start] + rng.choice(NASTY_NUMBERS) + text[end:]
+
+
+def _replace_token(text: str, rng: random.Random) -> str:
+    spans = [m.span() for m in _TOKEN.finditer(text)]
+    if not spans:
+        return _insert_text(text, rng)
+    start, end = rng.choice(spans)
+    return text[:start] + rng.choice(NASTY_TEXT + NASTY_NUMBERS) + text[end:]
+
+
+def _insert_text(text: str, rng: random.Random) -> str:
+    at = rng.randint(0, len(text))
+    piece = rng.choice(NASTY_TEXT) if rng.random() < 0.5 else _random_text(rng, 6)
+    return text[:at] + piece + text[at:]
+
+
+def _lines(text: str, rng: random.Random) -> str:
+    lines = text.split("\n")
+    i = rng.randrange(len(lines))
+    what = rng.random()
+    if what < 0.3:
+        del lines[i]
+    elif what < 0.6:
+        lines.insert(i, lines[i])
+    elif what < 0.8:
+        j = rng.randrange(len(lines))
+        lines[i], lines[j] = lines[j], lines[i]
+    else:
+        lines[i] = lines[i][: rng.randint(0, len(lines[i]))]
+    return "\n".join(lines)
+
+
+def _truncate(text: str, rng: random.Random) -> str:
+    return text[: rng.randint(0, len(text))]
+
+
+def _repeat(text: str, rng: random.Random) -> str:
+    """A field or line many times over: deep nesting, long rows, many terms."""
+    spans = [m.span() for m in _TOKEN.finditer(text)] or [(0, 0)]
+    start, end = rng.choice(spans)
+    piece = text[start:end] or rng.choice(NASTY_TEXT)
+    times = rng.choice((2, 10, 300))
+    if len(text) + len(piece) * times > MAX_INPUT:
+        times = 2
+    return text[:start] + piece * times + text[end:]
+
+
+def _nest(text: str, rng: random.Random) -> str:
+    """The whole input in parentheses many levels deep (queries nest)."""
+    depth = rng.choice((2, 60, 300))
+    return "(" * depth + text + ")" * depth
+
+
+def _chain(text: str, rng: random.Random) -> str:
+    """The whole input many times over, joined as a query or a file would be."""
+    times = rng.choice((2, 30, 300, 1000))
+    if len(text) * times > MAX_INPUT:
+        times = 2
+    return rng.choice((" OR ", " AND ", "\n", ",")).join([text] * times)
+
+
+_MUTATIONS: tuple[Callable[[str, random.Random], str], ...] = (
+    _replace_number,
+    _replace_number,
+    _replace_token,
+    _insert_text,
+    _lines,
+    _truncate,
+    _repeat,
+    _nest,
+    _chain,
+)
+
+
+def _random_text(rng: random.Random, size: int) -> str:
+    return "".join(rng.choice(_ALPHABET) for _ in range(rng.randint(0, size)))
+
+
+@dataclass
+class Target:
+    """One parser: `generate` makes an input, `run` feeds it to the parser."""
+
+    name: str
+    seeds: list
+    run: Callable[[object], object]
+
+    def generate(self, rng: random.Random) -> object:
+        seed = rng.choice(self.seeds)
+        if rng.random() < 0.1:
+            text = _random_text(rng, 80)
+            return {**seed, rng.choice(sorted(seed)): text} if isinstance(seed, dict) else text
+        if isinstance(seed, dict):
+            name = rng.choice(sorted(seed))
+            return {**seed, name: mutate(seed[name], rng)}
+        return mutate(seed, rng)
+
+
+ALLOWED = (SassError, OSError)
+
+
+# --- the targets --------------------------------------------------------------
+
+
+def _population() -> Target:
+    from sass_tui.model.datasets import FILES
+    from sass_tui.model.figfile import render_fig
+    from sass_tui.model.figure import Figure
+    from sass_tui.model.popfile import parse_population_text
+
+    seeds = [(DATASETS / name).read_text(encoding="utf-8") for name in FILES.values()]
+    groups = list(FILES)
+
+    def run(text: object) -> object:
+        results, refused = [], None
+        for group in groups:  # every group reads every file: wrong kinds too
+            try:
+                data = parse_population_text(str(text), group, "p.dat")
+                figure = Figure.default(next(iter(data.sections)))
+                figure.load_group(group, data)
+                results.append(render_fig(figure))
+            except SassError as exc:
+                refused = exc
+        if not results and refused is not None:
+            raise refused
+        return results
+
+    return Target("population", seeds, run)
+
+
+def _strength() -> Target:
+    import numpy as np
+
+    from sass_tui.model.strength import MOTIONS, parse_strength_text
+
+    full = (DATASETS / "strength.dat").read_text(encoding="utf-8").split("\n")
+    # A short seed (the first section's first rows) mutates faster and still fits.
+    short = "\n".join(full[:60])
+
+    def run(text: object) -> object:
+        data = parse_strength_text(str(text), "s.dat")
+        out = []
+        for gender, side in data.sections:
+            model = data.model(gender, side)
+            section = model.section
+            motions = np.arange(len(MOTIONS))
+            angles = np.repeat(section.angles[:1], len(motions), axis=0)
+            if len(angles):
+                out.append(model.evaluate(motions, angles, 95.0))
+        return out
+
+    return Target("strength", [short, "\n".join(full)], run)
+
+
+def _fig() -> Target:
+    from sass_tui.model.figfile import parse_fig, render_fig
+    from sass_tui.model.figure import Figure
+
+    seed = render_fig(Figure.default())
+    return Target("fig", [seed, render_fig(Figure.default("female"))], lambda t: parse_fig(str(t)))
+
+
+def _units() -> Target:
+    from sass_tui.model.units import parse_quantity
+
+    seeds = ["12", "12in", "30 deg", "0.5 rad", "17.98 ft-lb", "24 N-m", "176 lb", "60 deg/s"]
+
+    def run(text: object) -> object:
+        results, refused = [], None
+        for unit in ("cm", "deg", "kg", "N_m", "deg/s"):
+            try:
+                results.append(parse_quantity(str(text), unit))
+            except SassError as exc:
+                refused = exc
+        if not results and refused is not None:
+            raise refused
+        return results
+
+    return Target("units", seeds, run)
+
+
+class _Databases:
+    """An empty sass database built once, copied into memory for each input."""
+
+    def __init__(self) -> None:
+        self._template: sqlite3.Connection | None = None
+        self._with_people: sqlite3.Connection | None = None
+
+    def _build(self, fill: bool) -> sqlite3.Connection:
+        from sass_tui.db.default import create_default_database
+        from sass_tui.db.schema import connect
+
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "t.db"
+            if fill:
+                create_default_database(path)
+            conn = connect(path, create=True)
+            memory = sqlite3.connect(":memory:", isolation_level=None)
+            conn.backup(memory)
+            conn.close()
+        return memory
+
+    def empty(self) -> sqlite3.Connection:
+        if self._template is None:
+            self._template = self._build(fill=False)
+        copy = sqlite3.connect(":memory:", isolation_level=None)
+        self._template.backup(copy)
+        return copy
+
+    def default(self) -> sqlite3.Connection:
+        """The default database (200 people), shared: queries only read it."""
+        if self._with_people is None:
+            self._with_people = self._build(fill=True)
+        return self._with_people
+
+
+DATABASES = _Databases()
+
+
+def _query() -> Target:
+    from sass_tui.db.query import Query, compile_query
+
+    seeds = [
+        "gender = male",
+        "gender = male AND girth.right_upper_arm.z > 28 cm",
+        "stature > 70 in OR (mass < 60 kg AND handedness = left)",
+        "strength.elbow_flexion.max > 20 ft-lb AND joint_limit.neck_ul.y >= 40 deg",
+        "(age >= 30 AND age < 40) OR center_of_mass.neck.z != 5 cm",
+        "motion_speed > 1 rad/s AND training_level = 0 AND strength_type = isokinetic",
+    ]
+
+    def run(text: object) -> object:
+        query = Query(DATABASES.default(), compile_query(str(text)))
+        return query.count(), query.page(0, 5)
+
+    return Target("query", seeds, run)
+
+
+def _flat() -> Target:
+    from sass_tui.db.flatfile import FILE_NAMES, FlatFiles, import_flat_files
+
+    def first_people(name: str) -> str:
+        lines = (DATASETS / "db" / name).read_text(encoding="utf-8").splitlines()
+        return "\n".join(ln for ln in lines if ln.split(",", 1)[0] in ("1", "2")) + "\n"
+
+    seed = {name: first_people(name) for name in FILE_NAMES.values()}
+
+    def run(files: object) -> object:
+        assert isinstance(files, dict)
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, text in files.items():
+                (Path(tmp) / name).write_text(text, encoding="utf-8", errors="surrogatepass")
+            conn = DATABASES.empty()
+            try:
+                return import_flat_files(conn, FlatFiles.in_directory(tmp))
+            finally:
+                conn.close()
+
+    return Target("flat", [seed], run)
+
+
+def ansur_seed() -> str:
+    """Three made-up subjects in the ANSUR II public layout (every required column)."""
+    from sass_tui.db.ansur import MEASUREMENTS
+
+    header = ["subjectid", "gender", "weightkg", "age", "writingpreference", *MEASUREMENTS]
+    rows = [header]
+    for k, (sid, gender, hand) in enumerate(
+        ((10037, "Male", "Right hand"), (10038, "Female", "Left hand"), (10039, "Male",
+         "Either hand (No preference)"))
+    ):  # fmt: skip
+        values = [str(300 + 10 * k + i) for i in range(len(MEASUREMENTS))]
+        values[MEASUREMENTS.index("stature")] = str(1700 + 30 * k)
+        rows.append([str(sid), gender, str(815 + k), str(25 + k), hand, *values])
+    return "\n".join(",".join(row) for row in rows) + "\n"
+
+
+def _ansur() -> Target:
+    from sass_tui.db.ansur import import_ansur
+
+    def run(text: object) -> object:
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "ANSUR_II_MALE_Public.csv"
+            path.write_bytes(str(text).encode("cp1252", errors="replace"))
+            conn = DATABASES.empty()
+            try:
+                return import_ansur(conn, [path])
+            finally:
+                conn.close()
+
+    return Target("ansur", [ansur_seed()], run)
+
+
+TARGET_MAKERS: dict[str, Callable[[], Target]] = {
+    "population": _population,
+    "strength": _strength,
+    "fig": _fig,
+    "query": _query,
+    "flat": _flat,
+    "ansur": _ansur,
+    "units": _units,
+}
+_BUILT: dict[str, Target] = {}
+
+
+def target(name: str) -> Target:
+    if name not in _BUILT:
+        _BUILT[name] = TARGET_MAKERS[name]()
+    return _BUILT[name]
+
+
+# Crashes found by fuzzing in parsers other work owns (issue 17: ANSUR/flat
+# import robustness).  The suite's fuzz tests let exactly these through until
+# that work lands, so that a new crash still fails them; scripts/fuzz.py counts
+# them as tracebacks all the same.
+KNOWN_ELSEWHERE: dict[str, tuple[type[BaseException], ...]] = {}
+
+
+def outcome(name: str, value: object) -> str:
+    """Run one input: "ok", "error" (a clean SassError/OSError) or raise."""
+    try:
+        target(name).run(value)
+    except ALLOWED:
+        return "error"
+    return "ok"

@@ -1,0 +1,64 @@
+"""Control characters never reach a terminal (issue 17: a person named
+"\\x1b[2J\\x1b]0;pwned\\x07" cleared the screen when listed)."""
+
+from __future__ import annotations
+
+from hypothesis import given
+from hypothesis import strategies as st
+
+from sass_tui.cli import main
+from sass_tui.model.text import printable
+
+HOSTILE = "\x1b[2J\x1b]0;pwned\x07"
+
+
+def test_escape_sequences_are_made_visible():
+    assert printable(HOSTILE) == "^[[2J^[]0;pwned^G"
+    assert printable("a\tb\nc\rd\x00") == "a^Ib^Jc^Md^@"
+    assert printable("\x7f\x9b2J") == "^?\\x9b2J"
+    assert printable("abc\u202edef") == "abc\\u202edef"
+    assert printable("lone \ud800") == "lone \\ud800"
+
+
+def test_ordinary_text_is_unchanged():
+    for text in ("ANSUR II M 10037", "Zoë Ångström", "名前", "García-Núñez", ""):
+        assert printable(text) == text
+    assert printable(None) == ""
+    assert printable(12) == "12"
+
+
+@given(st.text())
+def test_no_control_character_survives(text):
+    shown = printable(text)
+    assert not any(ord(c) < 0x20 or 0x7F <= ord(c) <= 0x9F for c in shown)
+    assert not any(0xD800 <= ord(c) <= 0xDFFF for c in shown)
+    shown.encode("utf-8")  # printable on any UTF-8 terminal
+
+
+def test_sass_query_table_shows_a_hostile_name_inertly(tmp_path, capsys):
+    from sass_tui.db.default import create_default_database
+    from sass_tui.db.schema import connect
+
+    db = tmp_path / "s.db"
+    create_default_database(db)
+    conn = connect(db)
+    with conn:
+        first = conn.execute("SELECT MIN(id_num) FROM person").fetchone()[0]
+        conn.execute(
+            "UPDATE person SET name = ?, source = ? WHERE id_num = ?",
+            (HOSTILE, "file\x1b]0;title\x07.dat", first),
+        )
+    conn.close()
+    assert main(["--db", str(db), "query", "mass > 0"]) == 0
+    out = capsys.readouterr().out
+    assert "\x1b" not in out and "\x07" not in out
+    assert "^[[2J^[]0;pwned^G" in out
+    assert "file^[]0;title^G.dat" in out
+
+
+def test_error_messages_show_no_control_characters(tmp_path, capsys):
+    bad = tmp_path / "s.dat"
+    bad.write_text("P x\nG MALE\nL RIGHT\n1 2 3 4 5 6 7 8 50 /* \x1b[2Jshoulder */\n")
+    assert main(["strength", "--file", str(bad), "shoulder_abduction"]) == 2
+    err = capsys.readouterr().err
+    assert "\x1b" not in err and "error:" in err

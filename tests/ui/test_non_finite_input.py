@@ -1,0 +1,26 @@
+"""The spreadsheet refuses numbers that are not numbers (issue 17: "1e400"
+became "inf cm" in a cell, and Create Figure then wrote `botheadx = infcm;`)."""
+
+from __future__ import annotations
+
+from sass_tui.model.names import GIRTH
+from sass_tui.ui.app import SassApp
+
+
+def message(app) -> str:
+    return str(app.query_one("#message").render())
+
+
+def test_a_cell_refuses_1e400_and_keeps_its_value(drive):
+    async def scenario():
+        app = SassApp(cursor_blink=False)
+        async with app.run_test(size=(80, 24)) as pilot:
+            await pilot.press(*"1e400", "enter")
+            assert "not a usable number" in message(app)
+            assert app.query_one("#message").has_class("-error")
+            assert app.figure.groups[GIRTH].values[0, 0] == 20.0
+            await pilot.press("enter", *"inf cm", "enter")
+            assert "expected a number" in message(app)
+            assert app.figure.groups[GIRTH].values[0, 0] == 20.0
+
+    drive(scenario())
