@@ -21,7 +21,7 @@ import numpy as np
 
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.query import run_query
-from sass_tui.db.schema import GIRTH_MASS_FRACTIONS, PeopleBatch, connect, store_people, transaction
+from sass_tui.db.schema import PeopleBatch, connect, girth_mass_fractions, store_people, transaction
 from sass_tui.model import datasets
 from sass_tui.model.names import GIRTH, GLOBAL
 from sass_tui.model.percentile import Z95
@@ -61,7 +61,7 @@ def build(conn, people: int, rng: np.random.Generator) -> None:
                 s = girth_stats.stats(g)
                 z = 0.6 * size[mask][:, None, None] + 0.8 * rng.standard_normal((k, 25, 3))
                 girth[mask, :, :3] = at_z(s, z)
-            girth[:, :, 3] = mass[:, None] * GIRTH_MASS_FRACTIONS
+            girth[:, :, 3] = mass[:, None] * girth_mass_fractions()
             elbow = np.where(male, 65.0, 39.0) * np.exp(0.25 * rng.standard_normal(n))
             ids = np.arange(start + 1, start + n + 1)
             batch = PeopleBatch(

@@ -23,10 +23,10 @@ import numpy as np
 from sass_tui.db.flatfile import write_flat_files
 from sass_tui.db.schema import (
     ELBOW_MOTIONS,
-    GIRTH_MASS_FRACTIONS,
     SHOULDER_MOTIONS,
     WRIST_MOTIONS,
     PeopleBatch,
+    girth_mass_fractions,
 )
 from sass_tui.model import datasets
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
@@ -91,7 +91,7 @@ def generate(rng: np.random.Generator) -> PeopleBatch:
 
         girth = np.empty((n, 25, 4))
         girth[:, :, :3] = group(GIRTH)
-        girth[:, :, 3] = mass[:, None] * GIRTH_MASS_FRACTIONS[None, :]
+        girth[:, :, 3] = mass[:, None] * girth_mass_fractions()[None, :]
         hand = rng.choice(["right", "left", "either"], size=n, p=[0.88, 0.10, 0.02])
         ids = np.arange(next_id, next_id + n)
         letter = gender[0].upper()

@@ -30,7 +30,10 @@ from sass_tui.cli.options import DB_HELP
 VERBS = (fig, export, strength, query, person, population, predict, fit, family, db, serve)
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
+    """The parser; given the command line, only the verb it names gets its
+    options built (the others are listed with their help: `sass --help` is
+    whole), since argparse costs start-up time for every option."""
     parser = argparse.ArgumentParser(
         prog="sass",
         description="Spreadsheet Anthropometry Scaling System. "
@@ -43,9 +46,42 @@ def build_parser() -> argparse.ArgumentParser:
         "--version", action=_VersionAction, nargs=0, help="print the version and exit"
     )
     commands = parser.add_subparsers(dest="command", metavar="COMMAND")
+    chosen = None if argv is None else _verb_named(argv)
     for verb in VERBS:
-        verb.register(commands)
+        verb.register(
+            commands if chosen in (None, verb.__name__.rsplit(".", 1)[1]) else _NamesOnly(commands)
+        )
     return parser
+
+
+def _verb_named(argv: list[str]) -> str | None:
+    """The verb on a command line (the first word that is not an option or --db's value)."""
+    words = iter(argv)
+    for word in words:
+        if word == "--db":
+            next(words, None)
+        elif not word.startswith("-"):
+            return word
+    return None
+
+
+class _NamesOnly:
+    """Stands in for the subparsers of a verb not being run: the verb is listed
+    with its help, and the options it would add are not built."""
+
+    def __init__(self, commands: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+        self.commands = commands
+
+    def add_parser(self, name: str, **kwargs: object) -> _Sink:
+        self.commands.add_parser(name, help=kwargs.get("help"))
+        return _Sink()
+
+
+class _Sink:
+    """Takes any call a verb's register() makes on its parser, and does nothing."""
+
+    def __getattr__(self, _name: str) -> object:
+        return lambda *args, **kwargs: self
 
 
 class _VersionAction(argparse.Action):
@@ -62,8 +98,9 @@ class _VersionAction(argparse.Action):
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    words = sys.argv[1:] if argv is None else argv
+    parser = build_parser(words)
+    args = parser.parse_args(words)
     if args.command is None:
         from sass_tui.ui.app import run_app
 

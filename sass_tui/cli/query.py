@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Iterable
+from typing import TextIO
 
 from sass_tui.cli.options import add_db_option, open_db
 
@@ -19,44 +21,54 @@ def register(commands: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    import csv
-    import json
-
     from sass_tui.db.query import PERSON_FIELDS, Query, compile_query
-    from sass_tui.model.text import printable
 
     compiled = compile_query(args.query)  # before opening: a bad query touches nothing
     conn = open_db(args)
     query = Query(conn, compiled)
-    count = query.count()
-    people = ({k: row[k] for k in PERSON_FIELDS} for row in query.iter_all())
+    rows = query.person_rows()  # tuples in PERSON_FIELDS order
     out = sys.stdout
-    if args.format == "json":
-        persons = [_finite(p) for p in people]
-        json.dump({"count": count, "persons": persons}, out, indent=1, allow_nan=False)
+    if args.format == "csv":
+        import csv
+
+        # Data as stored (no escaping): CSV is for programs, not for a terminal.
+        writer = csv.writer(out, lineterminator="\n")
+        writer.writerow(PERSON_FIELDS)
+        writer.writerows(rows)
+    elif args.format == "json":
+        import json
+
+        persons = [_finite(dict(zip(PERSON_FIELDS, row))) for row in rows]
+        json.dump({"count": len(persons), "persons": persons}, out, indent=1, allow_nan=False)
         out.write("\n")
-    elif args.format == "csv":
-        writer = csv.DictWriter(out, fieldnames=PERSON_FIELDS, lineterminator="\n")
-        writer.writeheader()
-        writer.writerows(people)
     else:
-        out.write(
-            f"{'id':>7}  {'name':<20} {'gender':<6} {'mass kg':>7} {'stature cm':>10} "
-            f"{'hand':<6} {'age':>4}  source\n"
-        )
-        for p in people:
-            # Names and sources come from files: no escape sequence reaches the terminal.
-            out.write(
-                f"{p['id']:>7}  {printable(p['name']):<20.20} {printable(p['gender']):<6} "
-                f"{_num(p['mass']):>7} {_num(p['stature']):>10} {printable(p['handedness']):<6} "
-                f"{_num(p['age'], 0):>4}  {printable(p['source'])}\n"
-            )
-        out.write(f"{count} {'person' if count == 1 else 'people'}\n")
+        _write_table(out, rows)
     return 0
 
 
-def _num(value: float | None, digits: int = 1) -> str:
-    return "" if value is None else f"{value:.{digits}f}"
+def _write_table(out: TextIO, rows: Iterable[tuple]) -> None:
+    from sass_tui.model.text import printable
+
+    out.write(
+        f"{'id':>7}  {'name':<20} {'gender':<6} {'mass kg':>7} {'stature cm':>10} "
+        f"{'hand':<6} {'age':>4}  source\n"
+    )
+    count = 0
+    lines = []
+    for id_num, name, gender, mass, stature, hand, age, source in rows:
+        # Names and sources come from files: no escape sequence reaches the terminal.
+        lines.append(
+            f"{id_num:>7}  {printable(name):<20.20} {printable(gender):<6} "
+            f"{'' if mass is None else f'{mass:.1f}':>7} "
+            f"{'' if stature is None else f'{stature:.1f}':>10} {printable(hand):<6} "
+            f"{'' if age is None else f'{age:.0f}':>4}  {printable(source)}\n"
+        )
+        count += 1
+        if len(lines) == 1000:
+            out.write("".join(lines))
+            lines.clear()
+    out.write("".join(lines))
+    out.write(f"{count} {'person' if count == 1 else 'people'}\n")
 
 
 def _finite(person: dict) -> dict:

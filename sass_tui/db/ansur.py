@@ -27,11 +27,11 @@ from typing import Any, BinaryIO, NoReturn, cast
 import numpy as np
 
 from sass_tui.db.schema import (
-    GIRTH_MASS_FRACTIONS,
     GIRTH_NAMES,
     PERSON_ATTRIBUTES,
     PeopleBatch,
     check_writable,
+    girth_mass_fractions,
     store_people,
     transaction,
 )
@@ -405,7 +405,7 @@ def _batch(
     mass = by_name["weightkg"]
     girth = np.empty((n, len(GIRTH_NAMES), 4))
     girth[:, :, :3] = _derive(by_name, n)
-    girth[:, :, 3] = mass[:, None] * GIRTH_MASS_FRACTIONS[None, :]
+    girth[:, :, 3] = mass[:, None] * girth_mass_fractions()[None, :]
     letter = {"male": "M", "female": "F"}
     if label == DEFAULT_LABEL:
         names = [f"ANSUR II {letter[g]} {s}" for g, s in zip(gender, subject)]

@@ -29,17 +29,23 @@ import re
 import sqlite3
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Any
 
-from lark import Lark, Token, Transformer, Tree, v_args
-from lark.exceptions import (
+# The parser is lark's stand-alone LALR module generated from GRAMMAR by
+# scripts/make_query_parser.py: importing it costs a third of importing lark
+# and building the grammar in every process (docs/performance.md).
+from sass_tui.db._query_parser import (
+    Lark_StandAlone,
+    Token,
+    Transformer,
+    Tree,
     UnexpectedCharacters,
     UnexpectedEOF,
     UnexpectedInput,
     UnexpectedToken,
     VisitError,
+    v_args,
 )
-
-from sass_tui.db import accelerator
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
@@ -48,32 +54,9 @@ from sass_tui.db.schema import (
 )
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, suggest
-from sass_tui.model.strength import MOTION_NAMES
 from sass_tui.model.units import DISPLAY, LARGEST_NUMBER, UnitError, convert, unit_name
-from sass_tui.model.vocabulary import GENDERS, STRENGTH_TYPES
+from sass_tui.model.vocabulary import GENDERS, MOTION_NAMES, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
-
-GRAMMAR = r"""
-?start: or_expr
-?or_expr: and_expr (_OR and_expr)*
-?and_expr: atom (_AND atom)*
-?atom: "(" or_expr ")"
-     | comparison
-comparison: field OP value
-field: NAME ("." NAME)*
-value: NUMBER UNIT?   -> number
-     | NAME           -> word
-     | STRING         -> quoted
-_OR.3: /or\b/i
-_AND.3: /and\b/i
-OP: "<=" | ">=" | "!=" | "<>" | "<" | ">" | "=" | "≤" | "≥" | "≠"
-NAME.2: /[A-Za-z_][A-Za-z0-9_]*/
-STRING: /'[^']*'|"[^"]*"/
-NUMBER: /[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?/
-UNIT: /(ft|lbf?|N|n)[-·*]?(lbf?|lbs|m|ft)\b|deg\/s|rad\/s|°\/s|[A-Za-z°"]+/
-%import common.WS
-%ignore WS
-"""
 
 _OPERATORS = {
     "<": "<",
@@ -136,8 +119,9 @@ class QueryError(ValueError, SassError):
 
 
 @lru_cache(maxsize=1)
-def parser() -> Lark:
-    return Lark(GRAMMAR, parser="lalr", propagate_positions=True, maybe_placeholders=False)
+def parser() -> Any:
+    """The LALR parser of GRAMMAR (positions kept for error columns)."""
+    return Lark_StandAlone()
 
 
 @dataclass(frozen=True)
@@ -448,9 +432,9 @@ def _expected(expected) -> str:
 
 PERSON_FIELDS = ("id", "name", "gender", "mass", "stature", "handedness", "age", "source")
 LIST_FIELDS = PERSON_FIELDS + ("strength_type", "motion_speed", "training_level", "fatigue_level")
+_PERSON_SELECT = "p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source"
 _SELECT = (
-    "p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source, "
-    "sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level"
+    f"{_PERSON_SELECT}, sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level"
 )
 
 
@@ -462,6 +446,8 @@ class Query:
     compiled: CompiledQuery
 
     def count(self) -> int:
+        from sass_tui.db import accelerator  # its imports cost start-up time; counts only
+
         fast = accelerator.count(self.conn, self.compiled)  # None below ~200k people
         if fast is not None:
             return fast
@@ -490,11 +476,22 @@ class Query:
         return self._rows(" AND p.id_num > ? ORDER BY p.id_num LIMIT ?", (int(last_id), int(limit)))
 
     def ids(self) -> list[int]:
+        from sass_tui.db import accelerator
+
         fast = accelerator.ids(self.conn, self.compiled)
         if fast is not None:
             return fast
         sql = f"SELECT p.id_num FROM {self.compiled.from_clause()} WHERE {self.compiled.where}"
         return [r[0] for r in self.conn.execute(sql, self.compiled.params)]
+
+    def person_rows(self) -> sqlite3.Cursor:
+        """Every selected person as a tuple in PERSON_FIELDS order, id order, one
+        statement (the command line's listing: no dict per row, no paging)."""
+        sql = (
+            f"SELECT {_PERSON_SELECT} FROM {self.compiled.from_clause()} "
+            f"WHERE {self.compiled.where} ORDER BY p.id_num"
+        )
+        return self.conn.execute(sql, self.compiled.params)
 
     def iter_all(self, page_size: int = 1000):
         last = None

@@ -26,9 +26,12 @@ import re
 import sqlite3
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import numpy as np
+if TYPE_CHECKING:
+    import numpy as np
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURES
@@ -39,8 +42,7 @@ from sass_tui.model.names import (
     JOINT_LIMIT_ROWS,
     MASS_FRACTIONS,
 )
-from sass_tui.model.strength import MOTION_NAMES
-from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS
+from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS, MOTION_NAMES
 
 SCHEMA_VERSION = "2"
 AXES = ("x", "y", "z")
@@ -75,13 +77,20 @@ WRIST_MOTIONS = {
 }
 
 _MASS_FRACTION = dict(MASS_FRACTIONS)
-# Appendix K fraction of each girth row (0 for eyes and eye location).
-GIRTH_MASS_FRACTIONS = np.array(
-    [
-        _MASS_FRACTION.get(f"{FIG_PREFIX[name]}mass", 0.0) if name != "eye_location" else np.nan
-        for name in GIRTH_NAMES
-    ]
-)
+
+
+@lru_cache(maxsize=1)
+def girth_mass_fractions() -> np.ndarray:
+    """Appendix K fraction of each girth row (0 for eyes, NaN for eye location).
+    A function so that opening a database does not import numpy."""
+    import numpy as np
+
+    return np.array(
+        [
+            _MASS_FRACTION.get(f"{FIG_PREFIX[name]}mass", 0.0) if name != "eye_location" else np.nan
+            for name in GIRTH_NAMES
+        ]
+    )
 
 
 class DatabaseError(ValueError, SassError):
@@ -504,6 +513,8 @@ def _opt(value) -> float | None:
 
 def _nullable(array: np.ndarray) -> list:
     """Array -> nested lists with None for NaN (vectorised: object array)."""
+    import numpy as np
+
     out = array.astype(object)
     out[np.isnan(array)] = None
     return out.tolist()
@@ -511,6 +522,8 @@ def _nullable(array: np.ndarray) -> list:
 
 def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iterable[tuple]:
     """(id, row name, v...) for every row that has at least one value."""
+    import numpy as np
+
     present = ~np.all(np.isnan(values), axis=2)
     person, row = np.nonzero(present)
     id_array = np.asarray(ids, dtype=np.int64)
@@ -533,6 +546,8 @@ def delete_people(conn: sqlite3.Connection, ids: Sequence[int]) -> None:
 def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool = True) -> None:
     """Insert a batch (inside the caller's transaction).  With replace, people
     whose id_num is already stored are deleted first, with all their data."""
+    import numpy as np
+
     ids = [int(i) for i in batch.id_num]
     if replace:
         delete_people(conn, ids)
