@@ -20,8 +20,10 @@ def add_db_option(parser: argparse.ArgumentParser) -> None:
 
 def open_db(args: argparse.Namespace, create: bool = False):  # -> sqlite3.Connection
     from sass_tui.db.default import open_database
+    from sass_tui.model.paths import user_path
 
-    return open_database(getattr(args, "db", None), create=create)
+    path = getattr(args, "db", None)
+    return open_database(user_path(path) if path else None, create=create)
 
 
 def percentile(text: str) -> float:
