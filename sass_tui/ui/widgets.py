@@ -87,6 +87,12 @@ class EditorKeys:
             event.stop()
             event.prevent_default()
             self.start_typing(event.character)
+        elif event.key == "enter":
+            # Here, not by a binding run after the key has bubbled up: the
+            # letters typed next must find the edit already asked for.
+            event.stop()
+            event.prevent_default()
+            self.start_typing("")
 
     def on_paste(self, event: events.Paste) -> None:
         event.stop()
