@@ -61,13 +61,15 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
 
 
 def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
-    """Build the figure the options describe; returns it and the load warnings."""
+    """Build the figure the options describe, through a Session as the TUI
+    does (each edit checked the same way); returns it and the load warnings."""
     from sass_tui.model.figure import Figure
     from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
     from sass_tui.model.popfile import read_population_file
+    from sass_tui.model.session import Session
     from sass_tui.model.units import parse_quantity
 
-    figure = Figure.default(args.gender)
+    session = Session(Figure.default(args.gender))
     warnings: list[str] = []
     for group, option in (
         (GIRTH, args.girth),
@@ -77,23 +79,23 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
         if option:
             data = read_population_file(option, group)
             warnings += data.warnings
-            figure.load_group(group, data)
+            session.load_group(group, data)
     for group, option in (
         (GIRTH, args.girth_percentile),
         (JOINT_LIMITS, args.joint_limit_percentile),
         (CENTER_OF_MASS, args.cmass_percentile),
     ):
-        figure.set_group_percentile(group, option if option is not None else args.percentile)
+        session.set_group_percentile(group, option if option is not None else args.percentile)
     if args.mass is not None:
-        figure.set_mass(parse_quantity(args.mass, "kg"))
+        session.set_mass(parse_quantity(args.mass, "kg"))
     else:
-        figure.set_mass_percentile(args.mass_percentile or args.percentile)
+        session.set_mass_percentile(args.mass_percentile or args.percentile)
     if args.stature is not None:
-        figure.set_stature(parse_quantity(args.stature, "cm"))
+        session.set_stature(parse_quantity(args.stature, "cm"))
     else:
-        figure.set_stature_percentile(args.stature_percentile or args.percentile)
-    figure.set_figure_type(args.figure_type)
-    return figure, warnings
+        session.set_stature_percentile(args.stature_percentile or args.percentile)
+    session.set_figure_type(args.figure_type)
+    return session.figure, warnings
 
 
 def print_warnings(warnings: list[str]) -> None:
