@@ -49,11 +49,22 @@ class SassScreen(Screen):
                 return  # a widget's own binding comes first (the app runs it)
             node = node.parent
         for binding in self._bindings.key_to_bindings.get(event.key, ()):
-            if self.check_action(binding.action, ()):
+            enabled = self.check_action(binding.action, ())
+            reason = None if enabled else self.why_not(binding.action)
+            if enabled or reason:
                 event.stop()
                 event.prevent_default()
+            if enabled:
                 await self.run_action(binding.action)
                 return
+            if reason:
+                self.say(reason)
+                return
+
+    def why_not(self, action: str) -> str | None:
+        """Why a command's key does nothing here (its slot shows another
+        command), for the message line; None: say nothing."""
+        return None
 
     def on_typed_ahead(self, event: TypedAhead) -> None:
         event.stop()

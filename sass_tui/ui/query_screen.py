@@ -200,8 +200,15 @@ class ListSheet(Widget, can_focus=True):
         header = self.get_component_rich_style("listsheet--header")
         cursor = self.get_component_rich_style("listsheet--cursor")
         page_style = self.get_component_rich_style("listsheet--page")
+        # The name column is as wide as the longest name on the page: a name
+        # ("ANSUR II F 11533") is shown whole, never cut.
+        longest = max((len(_cell(row, "name")) for row in self.rows), default=0)
+        columns = [
+            (title, key, max(width, longest + 1) if key == "name" else width, align)
+            for title, key, width, align in LIST_COLUMNS
+        ]
         top = Text(no_wrap=True, overflow="crop")
-        for title, _, width, align in LIST_COLUMNS:
+        for title, _, width, align in columns:
             top.append(f"{title:{align}{width - 1}} "[:width], header)
         pages = max(1, -(-self.total // self.page_size))
         page = self.first // self.page_size + 1
@@ -210,7 +217,7 @@ class ListSheet(Widget, can_focus=True):
             lines.append(Text("(empty)"))
         for index, row in enumerate(self.rows):
             line = Text(no_wrap=True, overflow="crop")
-            for _, key, width, align in LIST_COLUMNS:
+            for _, key, width, align in columns:
                 line.append(f"{_cell(row, key)[: width - 1]:{align}{width - 1}} ")
             if index == self.cursor and self.has_focus:
                 line.stylize(cursor)

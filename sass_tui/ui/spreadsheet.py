@@ -10,6 +10,7 @@ rendered text) and post their result as a Message.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Callable
 from pathlib import Path
@@ -139,6 +140,7 @@ class SpreadsheetScreen(SassScreen):
         Binding("u", "undo", "Undo"),
         Binding("ctrl+z", "undo", show=False),
         Binding("w", "next_warning", "Warnings"),
+        Binding("l", "message_log", show=False),
         *(Binding(key, f"select_group('{group}')", show=False) for group, key in GROUP_KEYS),
     ]
 
@@ -211,6 +213,23 @@ class SpreadsheetScreen(SassScreen):
         if spec is not None and not spec.available(self):
             return False  # its slot shows the other command; the key does nothing
         return True
+
+    def why_not(self, action: str) -> str | None:
+        if action == "switch_side" and self.session.strength_sheet is None:
+            return self.strength_error
+        return {
+            "switch_side": "Right → Left (r) applies to the Strength group: press s first.",
+            "display_more": (
+                "Disp. More (x) shows more of the selected list once a person is "
+                "shown: Disp. Indv. (v) first."
+            ),
+            "display_population": (
+                "The population is already shown; Disp. Pop. (o) returns to it "
+                "after Disp. Indv. (v)."
+            ),
+            "query": "Query (d) works from the population: Disp. Pop. (o) first.",
+            "display_individual": "A person is shown: Disp. More (x) shows another.",
+        }.get(action)
 
     # --- message line ---------------------------------------------------------
     def on_message_line_answered(self, event: MessageLine.Answered) -> None:
@@ -297,6 +316,11 @@ class SpreadsheetScreen(SassScreen):
             self.say("Undone.")
         else:
             self.say("Nothing to undo.")
+
+    def action_message_log(self) -> None:
+        from sass_tui.ui.message_log import MessageLog
+
+        self.app.push_screen(MessageLog(self.message_line.history))
 
     def action_next_warning(self) -> None:
         if not self.session.warnings:
@@ -525,11 +549,22 @@ class SpreadsheetScreen(SassScreen):
                 group, row, axis, convert(typed, state.unit, GROUP_UNITS[group][0])
             )
         state = self.figure.groups[group]
-        shown = convert(state.values[row, axis], GROUP_UNITS[group][0], state.unit)
-        self.say(
-            f"{name} = {format_value(shown, state.unit)} {DISPLAY[state.unit]} "
-            f"({format_percentile(state.percentiles[row, axis])} percentile)."
-        )
+        canonical = GROUP_UNITS[group][0]
+        shown = convert(state.values[row, axis], canonical, state.unit)
+        percentile = state.percentiles[row, axis]
+        if math.isnan(percentile):
+            stats = state.source.stats(self.figure.gender)[row, axis]
+            if stats[0] == stats[1] == stats[2]:
+                flat = convert(stats[1], canonical, state.unit)
+                where = (
+                    f"no percentile: the population's 5th, 50th and 95th are all "
+                    f"{format_value(flat, state.unit)} {DISPLAY[state.unit]}"
+                )
+            else:
+                where = "no percentile: the population's statistics give none for this value"
+        else:
+            where = f"{format_percentile(percentile)} percentile"
+        self.say(f"{name} = {format_value(shown, state.unit)} {DISPLAY[state.unit]} ({where}).")
 
     def edit_angle(self, row: int, column: int, initial: str = "") -> None:
         """Prompt for a joint angle of the strength page (column 0-6)."""

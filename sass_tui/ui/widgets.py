@@ -45,6 +45,18 @@ def format_percentile(p: float) -> str:
     return f"{p:.1f}"
 
 
+NO_PERCENTILE = "—"
+
+
+def format_cell_percentile(value: float, p: float) -> str:
+    """A value without a percentile (its row has no spread: 5th, 50th and
+    95th equal, and the value is another) shows "—", not a blank that looks
+    like a missing value."""
+    if not math.isnan(value) and math.isnan(p):
+        return NO_PERCENTILE
+    return format_percentile(p)
+
+
 class TypedAhead(Message):
     """Keys typed after an edit was asked for but before its prompt took the
     focus: the app routed them to the widget that asked.  They belong to the
@@ -522,7 +534,10 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
                     text = f"{format_value(shown[index, axis], state.unit):>{value_w - 1}} "
                     style = ""
                 else:
-                    text = f"{format_percentile(state.percentiles[index, axis]):>{pct_w - 1}} "
+                    percentile = format_cell_percentile(
+                        values[index, axis], state.percentiles[index, axis]
+                    )
+                    text = f"{percentile:>{pct_w - 1}} "
                     style = pct_style
                 if index == self.cursor_row and column == self.cursor_column:
                     style = cursor_style
@@ -585,6 +600,7 @@ class AnswerInput(Input):
 
 
 Handler = Callable[[str], None]
+HISTORY_LENGTH = 200
 # What a user may cause in an answer: shown on the message line, never a
 # traceback; anything else is a bug and shows as one.
 USER_ERRORS = (SassError, OSError)
@@ -607,6 +623,9 @@ class MessageLine(Horizontal):
         self._on_answer: Handler | None = None
         self._on_cancel: Callable[[], None] | None = None
         self._focus_after: Widget | None = None
+        # What was said, oldest first: one line is cut at the terminal's width,
+        # the message log (`l`) shows it whole.
+        self.history: list[tuple[str, str]] = []
 
     def compose(self):
         yield Label("", id="message")
@@ -620,6 +639,9 @@ class MessageLine(Horizontal):
         return self.query_one("#answer", AnswerInput)
 
     def show(self, text: str, kind: str = "info") -> None:
+        if kind != "prompt" and (not self.history or self.history[-1] != (kind, text)):
+            self.history.append((kind, text))
+            del self.history[:-HISTORY_LENGTH]
         label = self.query_one("#message", Label)
         label.update(Text(text))
         for name in ("info", "error", "warning", "prompt"):
