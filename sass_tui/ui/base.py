@@ -16,7 +16,7 @@ from collections.abc import Callable
 from textual import events
 from textual.screen import Screen
 
-from sass_tui.ui.widgets import MessageLine, TypedAhead
+from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
 
 
 class SassScreen(Screen):
@@ -48,18 +48,30 @@ class SassScreen(Screen):
             if event.key in node._bindings.key_to_bindings:
                 return  # a widget's own binding comes first (the app runs it)
             node = node.parent
-        for binding in self._bindings.key_to_bindings.get(event.key, ()):
-            enabled = self.check_action(binding.action, ())
-            reason = None if enabled else self.why_not(binding.action)
-            if enabled or reason:
-                event.stop()
-                event.prevent_default()
-            if enabled:
+        if await self._run_binding(event.key):
+            event.stop()
+            event.prevent_default()
+
+    async def on_screen_key(self, event: ScreenKey) -> None:
+        event.stop()
+        if self.message_line.prompting:
+            # A prompt opened after the key was typed: it is the prompt's.
+            self.message_line.type_ahead(event.key, event.character)
+        else:
+            await self._run_binding(event.key)
+
+    async def _run_binding(self, key: str) -> bool:
+        """Run this screen's binding for `key`, or say why it does nothing
+        here.  False when the screen has nothing to do with the key."""
+        for binding in self._bindings.key_to_bindings.get(key, ()):
+            if self.check_action(binding.action, ()):
                 await self.run_action(binding.action)
-                return
+                return True
+            reason = self.why_not(binding.action)
             if reason:
                 self.say(reason)
-                return
+                return True
+        return False
 
     def why_not(self, action: str) -> str | None:
         """Why a command's key does nothing here (its slot shows another

@@ -20,6 +20,7 @@ from textual import events, work
 from textual.binding import Binding
 from textual.containers import Horizontal
 from textual.message import Message
+from textual.reactive import reactive
 from textual.screen import ModalScreen
 from textual.widget import Widget
 from textual.widgets import Button, Footer, OptionList, Static
@@ -183,9 +184,16 @@ class ListSheet(Widget, can_focus=True):
         self.total = 0
         self.cursor = 0
 
+    # Set by the screen from the terminal's height, not from this widget's
+    # layout: the page size must not depend on when the layout ran.
+    page_rows: reactive[int] = reactive(PAGE_ROWS, init=False)
+
+    def validate_page_rows(self, rows: int) -> int:
+        return max(1, min(self.PAGE_ROWS, rows))
+
     @property
     def page_size(self) -> int:
-        return max(1, min(self.PAGE_ROWS, self.content_size.height - self.HEADER_LINES))
+        return self.page_rows
 
     def show_rows(self, rows: list[dict], first: int, total: int) -> None:
         self.rows, self.first, self.total = rows, first, total
@@ -275,6 +283,11 @@ class ImportFinished(Message):
         self.error = error
 
 
+# Lines of the query screen that are not list rows: summary and command menu
+# 6, the list's border 1 and header 2, message line 1, footer 1 (query.tcss).
+LIST_FIXED_LINES = 6 + 1 + ListSheet.HEADER_LINES + 1 + 1
+
+
 class QueryScreen(SassScreen):
     CSS_PATH = Path(__file__).with_name("query.tcss")
     BINDINGS = [
@@ -306,6 +319,7 @@ class QueryScreen(SassScreen):
         yield Footer(compact=True)
 
     def on_mount(self) -> None:
+        self.sheet.page_rows = self.app.size.height - LIST_FIXED_LINES
         self.sheet.focus()
         self.refresh_screen()
         if self.lists is None:
@@ -324,6 +338,9 @@ class QueryScreen(SassScreen):
         return self.query_one(QueryPopup)
 
     # --- message line -----------------------------------------------------------------
+    def on_resize(self, event: events.Resize) -> None:
+        self.sheet.page_rows = event.size.height - LIST_FIXED_LINES
+
     def on_message_line_answered(self, event: MessageLine.Answered) -> None:
         event.stop()
         if not self.message_line.prompting:

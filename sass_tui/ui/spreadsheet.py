@@ -506,8 +506,22 @@ class SpreadsheetScreen(SassScreen):
         )
 
     # --- editing the data section -------------------------------------------------------
+    def _pass_to_prompt(self, widget: EditorKeys, initial: str) -> bool:
+        """An edit asked for while a prompt is already open (its key was typed
+        before the prompt took the focus): the key is the prompt's."""
+        if not self.message_line.prompting:
+            return False
+        if initial:
+            self.message_line.type_ahead("paste", None, initial)
+        else:
+            self.message_line.type_ahead("enter", None)
+        widget.typing_done()
+        return True
+
     def on_data_sheet_edit_requested(self, event: DataSheet.EditRequested) -> None:
         event.stop()
+        if self._pass_to_prompt(self.active_sheet, event.initial):
+            return
         try:
             if self.data_group == STRENGTH:
                 self.edit_angle(event.row, event.column, event.initial)
@@ -595,6 +609,8 @@ class SpreadsheetScreen(SassScreen):
     # --- editing the global data --------------------------------------------------------
     def on_global_panel_edit_requested(self, event: GlobalPanel.EditRequested) -> None:
         event.stop()
+        if self._pass_to_prompt(self.query_one(GlobalPanel), event.initial):
+            return
         self.edit_global(event.field, event.initial)
         self._after_edit_request(self.query_one(GlobalPanel))
 

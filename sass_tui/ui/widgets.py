@@ -69,6 +69,16 @@ class TypedAhead(Message):
         self.text = text
 
 
+class ScreenKey(Message):
+    """A key an editing widget does not take, sent to its screen in the order
+    typed: the screen's command, or the open prompt's if one opened meanwhile."""
+
+    def __init__(self, key: str, character: str | None) -> None:
+        super().__init__()
+        self.key = key
+        self.character = character
+
+
 class EditorKeys:
     """Keys of a widget whose cells are edited on the message line.
 
@@ -105,6 +115,11 @@ class EditorKeys:
             event.stop()
             event.prevent_default()
             self.start_typing("")
+        elif event.key not in self._bindings.key_to_bindings:  # type: ignore[attr-defined]
+            # Not this widget's (its arrows are): the screen's, in this order.
+            event.stop()
+            event.prevent_default()
+            self.post_message(ScreenKey(event.key, event.character))  # type: ignore[attr-defined]
 
     def on_paste(self, event: events.Paste) -> None:
         event.stop()
