@@ -259,7 +259,7 @@ class SpreadsheetScreen(SassScreen):
         self.sheet.display = not on_strength
         self.strength_page.display = on_strength
         if had_focus or self.focused is None:
-            self.active_sheet.focus()
+            self.set_focus(self.active_sheet)  # now: an edit asked for next keeps its prompt
         self.refresh_screen()
         self._say_group_shown()
 

@@ -413,8 +413,15 @@ def test_keys_typed_in_one_burst_run_in_order(drive):
             await pilot.pause()
             assert app.data_group == CENTER_OF_MASS
             assert message(app).startswith("Bottom Head x value")
+            assert app.query_one("#answer").value == "12"
             await pilot.press("enter")
-            assert app.figure.groups[CENTER_OF_MASS].values[0, 0] == 12.0
+            await pilot.pause()
+            assert app.figure.groups[CENTER_OF_MASS].values[0, 0] == 12.0, (
+                message(app),
+                app.focused,
+                app.query_one("#answer").value,
+                app.data_group,
+            )
             assert app.figure.groups[GIRTH].values[0, 0] == 20.0
             # While the answer is typed, letters are text, not commands.
             await pilot.press("1", "i", "n")
