@@ -213,3 +213,52 @@ def test_run_app_exits_non_zero_after_a_crash(monkeypatch):
 
     monkeypatch.setattr(SpreadsheetScreen, "on_mount", crash)
     assert run_app(headless=True) != 0
+
+
+def test_the_write_worker_writes_the_figure_as_it_was_when_asked(drive, tmp_path, monkeypatch):
+    """Issue 10: the worker wrote whatever the figure held when the thread got
+    to it; an edit made meanwhile went into the file.  Every file step taken
+    off the UI thread here waits until the test has edited the figure."""
+    import threading
+
+    from sass_tui.model import atomic, figfile
+    from sass_tui.model.figfile import read_fig
+
+    edited, working = threading.Event(), threading.Event()
+
+    def after_the_edit(function):
+        def wrapper(*args, **kwargs):
+            if threading.current_thread() is not threading.main_thread():
+                working.set()
+                assert edited.wait(30)
+            return function(*args, **kwargs)
+
+        return wrapper
+
+    monkeypatch.setattr(figfile, "render_fig", after_the_edit(figfile.render_fig))
+    monkeypatch.setattr(figfile, "write_text_atomic", after_the_edit(figfile.write_text_atomic))
+    monkeypatch.setattr(atomic, "write_text_atomic", after_the_edit(atomic.write_text_atomic))
+    out = tmp_path / "asked.fig"
+
+    async def scenario():
+        app = SassApp(strength_path=tmp_path / "no-strength.dat")
+        async with app.run_test(size=LARGE) as pilot:
+            await pilot.press("f")
+            app.post_message(events.Paste(str(out)))
+            await pilot.pause()
+            await pilot.press("enter")
+            for _ in range(300):  # until the worker is at work
+                if working.is_set():
+                    break
+                await pilot.pause(0.01)
+            assert working.is_set()
+            app.session.set_value(GIRTH, 0, 0, 10.0)  # the user edits while it writes
+            edited.set()
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            assert f"Wrote {out}" in message(app)
+        # Bottom head x: half the girth cell, 20 cm as asked (10 cm after the edit).
+        assert read_fig(out).variables["botheadx"] == (10.0, "cm")
+        assert app.figure.groups[GIRTH].values[0, 0] == 10.0
+
+    drive(scenario())
