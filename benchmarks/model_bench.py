@@ -45,13 +45,12 @@ def main() -> None:
         p = next(percentiles)
         for group in GROUPS:
             figure.set_group_percentile(group, p)
-        figure._history.clear()
 
     out = Path(tempfile.mkdtemp()) / "bench.fig"
     rows = [
         ("percentile interpolation, all 3 groups (86 rows x 3 axes)", best_of(rescale_values)),
         (
-            "Figure.set_group_percentile for all 3 groups (with undo record)",
+            "Figure.set_group_percentile for all 3 groups",
             best_of(rescale_figure),
         ),
         ("render a .fig (254 variables)", best_of(lambda: render_fig(figure), number=100)),

@@ -61,7 +61,7 @@ async def pilot_ms(runs: int) -> tuple[list[float], list[float], list[float]]:
 
     baseline, show, edit = [], [], []
     for _ in range(runs):
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=(100, 37)) as pilot:
             await pilot.pause()
             # Pilot's own waits per key, for comparison: another group's page.

@@ -102,9 +102,14 @@ def main(argv: list[str] | None = None) -> int:
     parser = build_parser(words)
     args = parser.parse_args(words)
     if args.command is None:
+        from sass_tui.model.errors import SassError
         from sass_tui.ui.app import run_app
 
-        return run_app(args.db)
+        try:
+            return run_app(args.db)
+        except SassError as exc:  # e.g. --db '~nosuchuser/x.db'
+            print(f"sass: error: {exc}", file=sys.stderr)
+            return 2
     return run_verb(args)
 
 

@@ -26,12 +26,13 @@ def open_db(args: argparse.Namespace, create: bool = False):  # -> sqlite3.Conne
     from sass_tui.cli.progress import progress_for
     from sass_tui.db.default import needs_building, open_database
     from sass_tui.db.schema import default_db_path
+    from sass_tui.model.paths import user_path
 
     path = getattr(args, "db", None)
     bar = None
     if path is None and needs_building(default_db_path()):
         bar = progress_for(sys.stderr, f"building {default_db_path()}")
-    conn = open_database(path, create=create, progress=bar)
+    conn = open_database(user_path(path) if path else None, create=create, progress=bar)
     if bar:
         bar.finish()
     return conn
@@ -80,10 +81,12 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
 
 
 def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
-    """Build the figure the options describe; returns it and the load warnings."""
+    """Build the figure the options describe, through a Session as the TUI
+    does (each edit checked the same way); returns it and the load warnings."""
     from sass_tui.model.figure import Figure, FigureError
     from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
     from sass_tui.model.popfile import read_population_file
+    from sass_tui.model.session import Session
     from sass_tui.model.units import parse_quantity
 
     if args.person is not None:
@@ -91,7 +94,7 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
         given += [o for o, v in (("--gender", args.gender),) if v]
         if given:
             raise FigureError(f"--person takes the person's own {', '.join(given)}; leave it out")
-    figure = Figure.default(args.gender or "male")
+    session = Session(Figure.default(args.gender or "male"))
     warnings: list[str] = []
     for group, option in (
         (GIRTH, args.girth),
@@ -100,26 +103,26 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     ):
         if option:
             data = read_population_file(option, group)
-            figure.load_group(group, data)
+            session.load_group(group, data)
             warnings += [w for w in data.warnings if w not in warnings]
     for group, option in (
         (GIRTH, args.girth_percentile),
         (JOINT_LIMITS, args.joint_limit_percentile),
         (CENTER_OF_MASS, args.cmass_percentile),
     ):
-        figure.set_group_percentile(group, option if option is not None else args.percentile)
+        session.set_group_percentile(group, option if option is not None else args.percentile)
     if args.mass is not None:
-        figure.set_mass(parse_quantity(args.mass, "kg"))
+        session.set_mass(parse_quantity(args.mass, "kg"))
     else:
-        figure.set_mass_percentile(args.mass_percentile or args.percentile)
+        session.set_mass_percentile(args.mass_percentile or args.percentile)
     if args.stature is not None:
-        figure.set_stature(parse_quantity(args.stature, "cm"))
+        session.set_stature(parse_quantity(args.stature, "cm"))
     else:
-        figure.set_stature_percentile(args.stature_percentile or args.percentile)
-    figure.set_figure_type(args.figure_type)
+        session.set_stature_percentile(args.stature_percentile or args.percentile)
+    session.set_figure_type(args.figure_type)
     if args.person is not None:
-        figure = person_figure(args, figure)
-    return figure, warnings
+        return person_figure(args, session.figure), warnings
+    return session.figure, warnings
 
 
 def person_figure(args: argparse.Namespace, population: Figure) -> Figure:

@@ -7,7 +7,6 @@ display unit the user can switch (cm|in, deg|rad).  No Textual import here.
 from __future__ import annotations
 
 import copy
-import itertools
 import math
 from dataclasses import dataclass, field
 
@@ -37,10 +36,6 @@ from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS, HANDEDNESS, STRENGT
 # A stature outside these is a typing error (2 for 200, metres for cm), not a person.
 MIN_STATURE_CM = 50.0
 MAX_STATURE_CM = 300.0
-
-# One sequence for every undoable edit, so that undo can take the newest one
-# whichever object (figure, strength page) holds it.
-EDIT_SEQUENCE = itertools.count()
 
 
 class FigureError(ValueError, SassError):
@@ -84,7 +79,6 @@ class Figure:
     fatigue_level: float = 0.0
     global_stats: PopulationData | None = None
     groups: dict[str, GroupState] = field(default_factory=dict)
-    _history: list = field(default_factory=list, repr=False)
 
     def __post_init__(self) -> None:
         for group in GROUPS:
@@ -101,12 +95,10 @@ class Figure:
                 group, read_population_file(datasets.path(datasets.FILES[group]), group)
             )
         figure._reset_globals()
-        figure._history.clear()
         return figure
 
     def load_group(self, group: str, data: PopulationData) -> None:
         """Replace a group's statistics (Input Data), keeping its percentile."""
-        self._remember()
         state = self.groups[group]
         state.source = data
         if group == GIRTH and self.person is None:
@@ -172,32 +164,27 @@ class Figure:
         person.mass, person.stature = float(mass), float(stature)
         person.mass_percentile = person._global_percentile("mass", mass)
         person.stature_percentile = person._global_percentile("stature", stature)
-        person._history.clear()
         return person
 
     # --- global data -----------------------------------------------------
     def set_gender(self, gender: str) -> None:
         gender = _check_choice(gender, GENDERS, "gender")
-        self._remember()
         self.gender = gender
         for state in self.groups.values():
             self._rescale(state)
         self._reset_globals()
 
     def set_figure_type(self, figure_type: str) -> None:
-        self._remember()
         self.figure_type = _check_choice(figure_type, FIGURE_TYPES, "figure type")
 
     def set_mass(self, kg: float) -> None:
         if not kg > 0:
             raise FigureError(f"mass must be positive, got {kg:g} kg")
-        self._remember()
         self.mass = float(kg)
         self.mass_percentile = self._global_percentile("mass", kg)
 
     def set_mass_percentile(self, p: float) -> None:
         check_percentile(p)
-        self._remember()
         self.mass_percentile = float(p)
         self.mass = self._global_value("mass", p)
 
@@ -207,18 +194,15 @@ class Figure:
                 f"stature {cm:g} cm is not a human one; expected "
                 f"{MIN_STATURE_CM:g}-{MAX_STATURE_CM:g} cm"
             )
-        self._remember()
         self.stature = float(cm)
         self.stature_percentile = self._global_percentile("stature", cm)
 
     def set_stature_percentile(self, p: float) -> None:
         check_percentile(p)
-        self._remember()
         self.stature_percentile = float(p)
         self.stature = self._global_value("stature", p)
 
     def set_strength_parameter(self, name: str, value) -> None:
-        self._remember()
         if name == "strength_type":
             self.strength_type = _check_choice(value, STRENGTH_TYPES, "strength type")
         elif name == "handedness":
@@ -236,7 +220,6 @@ class Figure:
     # --- group data ------------------------------------------------------
     def set_group_percentile(self, group: str, p: float) -> None:
         check_percentile(p)
-        self._remember()
         state = self.groups[group]
         state.percentile = float(p)
         self._rescale(state)
@@ -250,7 +233,6 @@ class Figure:
                 f"{state.rows[row].label} {'xyz'[axis]}: a segment size must be "
                 f"positive, got {value:g} cm"
             )
-        self._remember()
         state.values[row, axis] = value
         stats = self._stats(state)
         state.percentiles[row, axis] = percentile_of(stats[row, axis], value)
@@ -259,7 +241,6 @@ class Figure:
         """Set one cell's percentile; its value follows."""
         check_percentile(p)
         state = self._cell(group, row, axis)
-        self._remember()
         stats = self._stats(state)
         state.values[row, axis] = value_at(stats[row, axis], p)
         state.percentiles[row, axis] = p
@@ -311,35 +292,18 @@ class Figure:
             if not self.groups[g].loaded
         ]
 
-    # --- undo --------------------------------------------------------------
-    def undo(self) -> bool:
-        """Go back one edit.  False when there is nothing to undo."""
-        if not self._history:
-            return False
-        _, snapshot = self._history.pop()
-        history = self._history
-        # Display units are a view setting, not an edit: undo keeps the current ones.
+    # --- undo (the journal is sass_tui.model.session.Session's) -----------
+    def snapshot(self) -> dict[str, object]:
+        """Everything an edit may change, for Session's undo journal."""
+        return {k: copy.deepcopy(v) if k == "groups" else v for k, v in self.__dict__.items()}
+
+    def restore(self, snapshot: dict[str, object]) -> None:
+        """Go back to a snapshot (taken once, restored once).  Display units are a view setting, not an
+        edit: the current ones are kept."""
         units = {group: state.unit for group, state in self.groups.items()}
         self.__dict__.update(snapshot)
-        self._history = history
         for group, unit in units.items():
             self.groups[group].unit = unit
-        return True
-
-    @property
-    def last_edit(self) -> int:
-        """Sequence number of the newest undoable edit (-1: none), comparable
-        with other editors' (the strength page's angles)."""
-        return self._history[-1][0] if self._history else -1
-
-    def _remember(self) -> None:
-        state = {
-            k: copy.deepcopy(v) if k == "groups" else v
-            for k, v in self.__dict__.items()
-            if k != "_history"
-        }
-        self._history.append((next(EDIT_SEQUENCE), state))
-        del self._history[:-100]
 
     # --- internals -----------------------------------------------------------
     def _rescale(self, state: GroupState) -> None:

@@ -36,7 +36,7 @@ import numpy as np
 
 from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
-from sass_tui.model.figure import EDIT_SEQUENCE, Figure
+from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
@@ -762,7 +762,6 @@ class StrengthSheet:
         self.percentile = 50.0
         self.non_dominant_factor = DEFAULT_NON_DOMINANT_FACTOR
         self.angles = self._default_angles()
-        self._history: list[tuple[int, int, int, float]] = []  # (edit, row, column, old)
 
     @classmethod
     def default(cls, figure) -> StrengthSheet:
@@ -849,25 +848,8 @@ class StrengthSheet:
         column = joint_axis if isinstance(joint_axis, int) else parse_joint_axis(joint_axis)
         degrees = parse_quantity(value, "deg") if isinstance(value, str) else float(value)
         check_angle(self.figure, self.side, JOINT_AXES[column], degrees)
-        self._history.append(
-            (next(EDIT_SEQUENCE), index, column, float(self.angles[index, column]))
-        )
-        del self._history[:-100]
         self.angles[index, column] = degrees
         return self.row(index)
-
-    @property
-    def last_edit(self) -> int:
-        """Sequence number of the newest angle edit (-1: none); see Figure.last_edit."""
-        return self._history[-1][0] if self._history else -1
-
-    def undo(self) -> bool:
-        """Put back the angle the last edit changed.  False when there is none."""
-        if not self._history:
-            return False
-        _, index, column, old = self._history.pop()
-        self.angles[index, column] = old
-        return True
 
     def set_unit(self, unit: str) -> None:
         from sass_tui.model.units import unit_name

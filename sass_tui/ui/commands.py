@@ -1,8 +1,9 @@
 """The command menu of the anthropometric spreadsheet (report figure 6).
 
-Each command is a spec: the menu builds its buttons and the app its key
-bindings from COMMANDS, so a later command (Query, Disp. Indv., Disp. More,
-Right->Left) is one more entry here plus its `action_` method on the app.
+Each command is a spec: the menu builds its buttons and the screen its key
+bindings from COMMANDS, so a later command is one more entry here plus its
+`action_` method on the screen.  `label` and `available` are given the screen
+(the spreadsheet: its `data_group` and `session`).
 Figure 6 has two columns; `column` and `row` place a command in them.
 """
 
@@ -24,47 +25,50 @@ class CommandSpec:
     label: Callable[[object], str]
     column: int = 0
     row: int = 0
-    available: Callable[[object], bool] = lambda app: True
+    available: Callable[[object], bool] = lambda screen: True
 
 
-def _conversion_label(app) -> str:
-    group = app.data_group
+def _conversion_label(screen) -> str:
+    group = screen.data_group
     if group == STRENGTH:
         # The strength unit is the strength page's, not a Figure group's.
-        sheet = app.strength_sheet
+        sheet = screen.session.strength_sheet
         unit = sheet.unit if sheet is not None else GROUP_UNITS[STRENGTH][0]
     else:
-        unit = app.figure.groups[group].unit
+        unit = screen.session.figure.groups[group].unit
     return f"{DISPLAY[unit]} → {DISPLAY[other_unit(group, unit)]}"
 
 
-def _side_label(app) -> str:
-    side = app.strength_sheet.side if app.strength_sheet is not None else "right"
+def _side_label(screen) -> str:
+    sheet = screen.session.strength_sheet
+    side = sheet.side if sheet is not None else "right"
     other = "left" if side == "right" else "right"
     return f"{side.capitalize()} → {other.capitalize()}"
 
 
-def _showing_person(app) -> bool:
-    return getattr(app, "population_figure", None) is not None
+def _showing_person(screen) -> bool:
+    return screen.session.person is not None
 
 
-def _showing_population(app) -> bool:
-    return not _showing_person(app)
+def _showing_population(screen) -> bool:
+    return not _showing_person(screen)
 
 
-def _on_strength_page(app) -> bool:
-    return app.data_group == STRENGTH and app.strength_sheet is not None
+def _on_strength_page(screen) -> bool:
+    return screen.data_group == STRENGTH and screen.session.strength_sheet is not None
 
 
 COMMANDS: tuple[CommandSpec, ...] = (
-    CommandSpec("next_page", "n", "next_page", "Next", lambda app: "Next Page", row=0),
-    CommandSpec("previous_page", "p", "previous_page", "Prev", lambda app: "Previous Page", row=1),
-    CommandSpec("convert_units", "c", "convert_units", "Units", _conversion_label, row=2),
-    CommandSpec("input_data", "i", "input_data", "Input", lambda app: "Input Data", row=3),
+    CommandSpec("next_page", "n", "next_page", "Next", lambda screen: "Next Page", row=0),
     CommandSpec(
-        "create_figure", "f", "create_figure", "Figure", lambda app: "Create Figure", row=4
+        "previous_page", "p", "previous_page", "Prev", lambda screen: "Previous Page", row=1
     ),
-    CommandSpec("quit", "q", "quit", "Quit", lambda app: "Quit", row=5),
+    CommandSpec("convert_units", "c", "convert_units", "Units", _conversion_label, row=2),
+    CommandSpec("input_data", "i", "input_data", "Input", lambda screen: "Input Data", row=3),
+    CommandSpec(
+        "create_figure", "f", "create_figure", "Figure", lambda screen: "Create Figure", row=4
+    ),
+    CommandSpec("quit", "q", "quit", "Quit", lambda screen: "Quit", row=5),
     # Figure 6's second column shares slots: "Query or Disp. Pop.", "Disp. Indv. or
     # Disp. More" -- the second of each pair while a person is displayed (§12.2.4).
     CommandSpec(
@@ -72,7 +76,7 @@ COMMANDS: tuple[CommandSpec, ...] = (
         "d",
         "query",
         "Query",
-        lambda app: "Query",
+        lambda screen: "Query",
         column=1,
         row=0,
         available=_showing_population,
@@ -82,7 +86,7 @@ COMMANDS: tuple[CommandSpec, ...] = (
         "o",
         "display_population",
         "Disp. Pop.",
-        lambda app: "Disp. Pop.",
+        lambda screen: "Disp. Pop.",
         column=1,
         row=0,
         available=_showing_person,
@@ -92,7 +96,7 @@ COMMANDS: tuple[CommandSpec, ...] = (
         "v",
         "display_individual",
         "Disp. Indv.",
-        lambda app: "Disp. Indv.",
+        lambda screen: "Disp. Indv.",
         column=1,
         row=1,
         available=_showing_population,
@@ -102,14 +106,14 @@ COMMANDS: tuple[CommandSpec, ...] = (
         "x",
         "display_more",
         "Disp. More",
-        lambda app: "Disp. More",
+        lambda screen: "Disp. More",
         column=1,
         row=1,
         available=_showing_person,
     ),
     # One of figure 6's void slots.
     CommandSpec(
-        "export_hanim", "e", "export_hanim", "HAnim", lambda app: "Export HAnim", column=1, row=2
+        "export_hanim", "e", "export_hanim", "HAnim", lambda screen: "Export HAnim", column=1, row=2
     ),
     CommandSpec(
         "switch_side",

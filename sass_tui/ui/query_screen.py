@@ -19,18 +19,22 @@ from rich.text import Text
 from textual import events, work
 from textual.binding import Binding
 from textual.containers import Horizontal
-from textual.screen import ModalScreen, Screen
+from textual.message import Message
+from textual.reactive import reactive
+from textual.screen import ModalScreen
 from textual.widget import Widget
 from textual.widgets import Button, Footer, OptionList, Static
 from textual.widgets.option_list import Option
 
-from sass_tui.db.flatfile import FlatFileError, FlatFiles
+from sass_tui.db.flatfile import FlatFiles
 from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.query import QueryError
-from sass_tui.db.schema import DatabaseError
+from sass_tui.model.errors import SassError
+from sass_tui.model.paths import regular_file
+from sass_tui.ui.base import SassScreen
 from sass_tui.ui.commands import CommandSpec
 from sass_tui.ui.query_builder import PREVIOUS, VALUE_PROMPT, QueryBuilder, QueryPopup
-from sass_tui.ui.widgets import AnswerInput, CommandMenu, MessageLine
+from sass_tui.ui.widgets import CommandMenu, MessageLine
 
 BUILD_PROMPT = "Press rightmouse to build query."
 WAIT = "Query on database, please wait..."
@@ -49,29 +53,31 @@ INPUT_DB_FILES = (
     ("elbow", "Elbow Strength"),
     ("wrist", "Wrist Strength"),
 )
-DB_ERRORS = (QueryError, DatabaseError, FlatFileError, sqlite3.Error, OSError, ValueError)
+# What the database may answer a user's request with (QueryError, DatabaseError
+# and FlatFileError are SassErrors); anything else is a bug and shows as one.
+DB_ERRORS = (SassError, sqlite3.Error, OSError)
 
 
 class Busy(Exception):
     """The database is in use by a running query or import."""
 
 
-def _on_query_list(app) -> bool:
-    return app.screen.which == QUERY_LIST
+def _on_query_list(screen) -> bool:
+    return screen.which == QUERY_LIST
 
 
 def _void_unless_query_list(label: str):
-    return lambda app: label if _on_query_list(app) else "void"
+    return lambda screen: label if _on_query_list(screen) else "void"
 
 
 # Figure 11: the first label is the one shown with the query list.  The list
 # button names the list it will display.
 QUERY_COMMANDS: tuple[CommandSpec, ...] = (
-    CommandSpec("q_next_page", "n", "next_page", "Next", lambda app: "Next Page", row=0),
+    CommandSpec("q_next_page", "n", "next_page", "Next", lambda screen: "Next Page", row=0),
     CommandSpec(
-        "q_previous_page", "p", "previous_page", "Prev", lambda app: "Previous Page", row=1
+        "q_previous_page", "p", "previous_page", "Prev", lambda screen: "Previous Page", row=1
     ),
-    CommandSpec("query_db", "d", "query_db", "Query DB", lambda app: "Query DB", row=2),
+    CommandSpec("query_db", "d", "query_db", "Query DB", lambda screen: "Query DB", row=2),
     CommandSpec(
         "select_all",
         "a",
@@ -90,17 +96,19 @@ QUERY_COMMANDS: tuple[CommandSpec, ...] = (
         row=4,
         available=_on_query_list,
     ),
-    CommandSpec("delete_one", "x", "delete_one", "Delete", lambda app: "Delete One", row=5),
+    CommandSpec("delete_one", "x", "delete_one", "Delete", lambda screen: "Delete One", row=5),
     CommandSpec(
         "display_list",
         "l",
         "display_list",
         "List",
-        lambda app: "Disp. Selected List" if _on_query_list(app) else "Disp. Query List",
+        lambda screen: "Disp. Selected List" if _on_query_list(screen) else "Disp. Query List",
         column=1,
         row=0,
     ),
-    CommandSpec("input_db", "i", "input_db", "Input DB", lambda app: "Input DB", column=1, row=1),
+    CommandSpec(
+        "input_db", "i", "input_db", "Input DB", lambda screen: "Input DB", column=1, row=1
+    ),
     CommandSpec(
         "exit_query",
         "e",
@@ -120,8 +128,8 @@ class QueryCommandMenu(CommandMenu):
     def refresh_labels(self) -> None:
         for spec in self.commands:
             button = self.query_one(f"#command-{spec.name}", Button)
-            button.label = spec.label(self.app)
-            button.disabled = not spec.available(self.app)
+            button.label = spec.label(self.context)
+            button.disabled = not spec.available(self.context)
 
 
 class SummaryPanel(Static):
@@ -176,9 +184,16 @@ class ListSheet(Widget, can_focus=True):
         self.total = 0
         self.cursor = 0
 
+    # Set by the screen from the terminal's height, not from this widget's
+    # layout: the page size must not depend on when the layout ran.
+    page_rows: reactive[int] = reactive(PAGE_ROWS, init=False)
+
+    def validate_page_rows(self, rows: int) -> int:
+        return max(1, min(self.PAGE_ROWS, rows))
+
     @property
     def page_size(self) -> int:
-        return max(1, min(self.PAGE_ROWS, self.content_size.height - self.HEADER_LINES))
+        return self.page_rows
 
     def show_rows(self, rows: list[dict], first: int, total: int) -> None:
         self.rows, self.first, self.total = rows, first, total
@@ -193,8 +208,15 @@ class ListSheet(Widget, can_focus=True):
         header = self.get_component_rich_style("listsheet--header")
         cursor = self.get_component_rich_style("listsheet--cursor")
         page_style = self.get_component_rich_style("listsheet--page")
+        # The name column is as wide as the longest name on the page: a name
+        # ("ANSUR II F 11533") is shown whole, never cut.
+        longest = max((len(_cell(row, "name")) for row in self.rows), default=0)
+        columns = [
+            (title, key, max(width, longest + 1) if key == "name" else width, align)
+            for title, key, width, align in LIST_COLUMNS
+        ]
         top = Text(no_wrap=True, overflow="crop")
-        for title, _, width, align in LIST_COLUMNS:
+        for title, _, width, align in columns:
             top.append(f"{title:{align}{width - 1}} "[:width], header)
         pages = max(1, -(-self.total // self.page_size))
         page = self.first // self.page_size + 1
@@ -203,7 +225,7 @@ class ListSheet(Widget, can_focus=True):
             lines.append(Text("(empty)"))
         for index, row in enumerate(self.rows):
             line = Text(no_wrap=True, overflow="crop")
-            for _, key, width, align in LIST_COLUMNS:
+            for _, key, width, align in columns:
                 line.append(f"{_cell(row, key)[: width - 1]:{align}{width - 1}} ")
             if index == self.cursor and self.has_focus:
                 line.stylize(cursor)
@@ -231,13 +253,47 @@ class ListSheet(Widget, can_focus=True):
         self.refresh()
 
 
-class QueryScreen(Screen):
+class DatabaseOpened(Message):
+    def __init__(self, lists: QueryLists, path: Path) -> None:
+        super().__init__()
+        self.lists = lists
+        self.path = path
+
+
+class DatabaseFailed(Message):
+    def __init__(self, text: str) -> None:
+        super().__init__()
+        self.text = text
+
+
+class QueryFinished(Message):
+    """A query's outcome: the count and first page, or what went wrong."""
+
+    def __init__(self, count: int = 0, rows: list[dict] | None = None, error: str = "") -> None:
+        super().__init__()
+        self.count = count
+        self.rows = rows or []
+        self.error = error
+
+
+class ImportFinished(Message):
+    def __init__(self, count: int | None, error: str = "") -> None:
+        super().__init__()
+        self.count = count
+        self.error = error
+
+
+# Lines of the query screen that are not list rows: summary and command menu
+# 6, the list's border 1 and header 2, message line 1, footer 1 (query.tcss).
+LIST_FIXED_LINES = 6 + 1 + ListSheet.HEADER_LINES + 1 + 1
+
+
+class QueryScreen(SassScreen):
     CSS_PATH = Path(__file__).with_name("query.tcss")
-    # The anthropometric spreadsheet's commands are not this screen's.
-    blocks_app_commands = True
     BINDINGS = [
         *(Binding(spec.key, spec.action, spec.footer) for spec in QUERY_COMMANDS),
         Binding("b", "build", "Build query"),
+        Binding("q", "app.quit", "Quit"),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
     ]
@@ -250,13 +306,11 @@ class QueryScreen(Screen):
         self.builder: QueryBuilder | None = None
         self.awaiting_build = False
         self.running = False
-        self._on_answer = None
-        self._on_cancel = None
 
     def compose(self):
         with Horizontal(id="query-top"):
             yield SummaryPanel(id="summary")
-            yield QueryCommandMenu(QUERY_COMMANDS, id="query-commands")
+            yield QueryCommandMenu(QUERY_COMMANDS, self, id="query-commands")
         yield ListSheet(id="list")
         popup = QueryPopup(id="popup")
         popup.display = False
@@ -265,12 +319,12 @@ class QueryScreen(Screen):
         yield Footer(compact=True)
 
     def on_mount(self) -> None:
-        self.query_one(AnswerInput).cursor_blink = self.app.cursor_blink
+        self.sheet.page_rows = self.app.size.height - LIST_FIXED_LINES
         self.sheet.focus()
         self.refresh_screen()
         if self.lists is None:
             self.say("Opening the database ...")
-            self.open_database()
+            self.open_database(self.db_path)
         else:
             self.show_page(0)
             self.say("Query DB (d) to query the database; Exit Query (e) returns.")
@@ -283,39 +337,14 @@ class QueryScreen(Screen):
     def popup(self) -> QueryPopup:
         return self.query_one(QueryPopup)
 
-    # --- message line (as the spreadsheet's) -------------------------------------
-    def say(self, text: str) -> None:
-        self.query_one(MessageLine).show(text, "info")
+    # --- message line -----------------------------------------------------------------
+    def on_resize(self, event: events.Resize) -> None:
+        self.sheet.page_rows = event.size.height - LIST_FIXED_LINES
 
-    def complain(self, text: str) -> None:
-        self.query_one(MessageLine).show(text, "error")
-
-    def ask(self, prompt: str, on_answer, on_cancel=None, initial: str = "") -> None:
-        self._on_answer, self._on_cancel = on_answer, on_cancel
-        self.query_one(MessageLine).ask(prompt, initial)
-
-    def _close_prompt(self):
-        handlers = self._on_answer, self._on_cancel
-        self._on_answer = self._on_cancel = None
-        self.query_one(MessageLine).close()
-        return handlers
-
-    def on_input_submitted(self, event: AnswerInput.Submitted) -> None:
+    def on_message_line_answered(self, event: MessageLine.Answered) -> None:
         event.stop()
-        on_answer, _ = self._close_prompt()
-        self._focus_back()
-        if on_answer is not None:
-            on_answer(event.value)
-        self.refresh_screen()
-
-    def on_answer_input_cancelled(self, event: AnswerInput.Cancelled) -> None:
-        event.stop()
-        _, on_cancel = self._close_prompt()
-        self._focus_back()
-        if on_cancel is not None:
-            on_cancel()
-        else:
-            self.say("Cancelled; nothing changed.")
+        if not self.message_line.prompting:
+            self._focus_back()
         self.refresh_screen()
 
     def _focus_back(self) -> None:
@@ -326,23 +355,29 @@ class QueryScreen(Screen):
 
     # --- database ------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
-    def open_database(self) -> None:
+    def open_database(self, db_path: Path | None) -> None:
         from sass_tui.db.default import create_default_database
         from sass_tui.db.schema import default_db_path
 
-        path = self.db_path or default_db_path()
+        path = db_path or default_db_path()
         try:
-            if self.db_path is None and not path.exists():
-                self.app.call_from_thread(self.say, f"Creating the default database {path} ...")
+            if db_path is None and not path.exists():
+                self.post_message(DatabaseFailed(f"Creating the default database {path} ..."))
                 create_default_database(path)
             lists = QueryLists.open(path)
         except DB_ERRORS as exc:
-            self.app.call_from_thread(self.complain, f"Cannot open the database: {exc}")
+            self.post_message(DatabaseFailed(f"Cannot open the database: {exc}"))
             return
-        self.app.call_from_thread(self._database_open, lists, path)
+        self.post_message(DatabaseOpened(lists, path))
 
-    def _database_open(self, lists: QueryLists, path: Path) -> None:
-        self.lists = self.app.query_lists = lists
+    def on_database_failed(self, event: DatabaseFailed) -> None:
+        event.stop()
+        (self.say if event.text.endswith("...") else self.complain)(event.text)
+
+    def on_database_opened(self, event: DatabaseOpened) -> None:
+        # Not stopped: the app keeps the lists for Disp. Indv.
+        lists, path = event.lists, event.path
+        self.lists = lists
         self.refresh_screen()
         self.show_page(0)
         self.say(f"Database {path} open. Query DB (d) to query it; Exit Query (e) returns.")
@@ -531,8 +566,8 @@ class QueryScreen(Screen):
                 f"{exc}. {VALUE_PROMPT}",
                 self._constraint,
                 on_cancel=lambda: self.on_query_popup_chosen(QueryPopup.Chosen(PREVIOUS)),
+                kind="error",
             )
-            self.query_one("#message").set_class(True, "-error")
             return
         self._show_current()
 
@@ -586,27 +621,27 @@ class QueryScreen(Screen):
     def start_query(self, text: str) -> None:
         self.running = True
         self.say(WAIT)
-        self.run_query(text, self.sheet.page_size)
+        self.run_query(self.lists, text, self.sheet.page_size)
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
-    def run_query(self, text: str, page_size: int) -> None:
-        lists = self.lists
+    def run_query(self, lists: QueryLists, text: str, page_size: int) -> None:
         try:
             with lists.lock:
                 count = lists.run(text)
                 rows = lists.page(QUERY_LIST, 0, page_size)
         except DB_ERRORS as exc:
-            self.app.call_from_thread(self._query_failed, exc)
+            self.post_message(QueryFinished(error=str(exc)))
             return
-        self.app.call_from_thread(self._query_done, count, rows)
+        self.post_message(QueryFinished(count, rows))
 
-    def _query_failed(self, exc: Exception) -> None:
+    def on_query_finished(self, event: QueryFinished) -> None:
+        event.stop()
         self.running = False
-        self.complain(f"The query was not run: {exc}")
-        self.refresh_screen()
-
-    def _query_done(self, count: int, rows: list[dict]) -> None:
-        self.running = False
+        if event.error:
+            self.complain(f"The query was not run: {event.error}")
+            self.refresh_screen()
+            return
+        count, rows = event.count, event.rows
         self.which = QUERY_LIST
         self.sheet.cursor = 0
         self.sheet.show_rows(rows, 0, count)
@@ -649,9 +684,10 @@ class QueryScreen(Screen):
                     return
                 again("A strength file is needed once Strength Parameter is given.")
                 return
-            path = Path(name).expanduser()
-            if not path.is_file():
-                again(f"{path}: no such file.")
+            try:
+                path = regular_file(name)
+            except SassError as exc:
+                again(f"{exc}.")
                 return
             self._ask_file({**chosen, key: path}, index + 1)
 
@@ -673,19 +709,21 @@ class QueryScreen(Screen):
     def _import(self, chosen: dict) -> None:
         self.running = True
         self.say("Loading the files into the database, please wait...")
-        self.import_files(FlatFiles(**chosen))
+        self.import_files(self.lists, FlatFiles(**chosen))
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
-    def import_files(self, files: FlatFiles) -> None:
+    def import_files(self, lists: QueryLists, files: FlatFiles) -> None:
         try:
-            with self.lists.lock:
-                count = self.lists.import_files(files)
+            with lists.lock:
+                count = lists.import_files(files)
         except DB_ERRORS as exc:
-            self.app.call_from_thread(self._import_done, None, f"{exc}")
+            self.post_message(ImportFinished(None, str(exc)))
             return
-        self.app.call_from_thread(self._import_done, count, "")
+        self.post_message(ImportFinished(count))
 
-    def _import_done(self, count: int | None, error: str) -> None:
+    def on_import_finished(self, event: ImportFinished) -> None:
+        event.stop()
+        count, error = event.count, event.error
         self.running = False
         if count is None:
             self.complain(f"Input DB failed, the database is unchanged: {error}")
@@ -705,7 +743,6 @@ class MoreMenu(ModalScreen[str | None]):
     MoreMenu > OptionList { width: 24; height: auto; border: round $accent;
                             border-title-style: bold; background: $surface; }
     """
-    blocks_app_commands = True
     BINDINGS = [Binding("escape", "dismiss(None)", "Cancel")]
 
     def compose(self):

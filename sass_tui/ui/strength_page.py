@@ -2,7 +2,8 @@
 
 Motion impetus (read-only, the limb side under its header), the joint angles
 of the configuration (editable), and the strength there, stored or predicted.
-The numbers come from the app's StrengthSheet; edits go through the app.
+The numbers come from the StrengthSheet its screen hands it; edits are asked
+for with DataSheet.EditRequested and go through the screen to the Session.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ import math
 
 from rich.text import Text
 
-from sass_tui.model.strength import JOINT_AXES, StrengthError, joint_limit_range
+from sass_tui.model.strength import JOINT_AXES, StrengthError, StrengthSheet, joint_limit_range
 from sass_tui.ui.widgets import DataSheet
 
 ANGLE_WIDTH = 6
@@ -47,10 +48,17 @@ class StrengthPage(DataSheet):
     PAGE_ROWS = 14  # report §12.2.4: fixed to 14 lines for strength
     COLUMNS = len(JOINT_AXES)
 
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.sheet: StrengthSheet | None = None
+
+    def show_sheet(self, sheet: StrengthSheet | None) -> None:
+        self.sheet = sheet
+        self.refresh()
+
     @property
     def row_count(self) -> int:
-        sheet = self.app.strength_sheet
-        return len(sheet.angles) if sheet is not None else 0
+        return len(self.sheet.angles) if self.sheet is not None else 0
 
     def column_widths(self) -> tuple[int, int, int]:
         """Name, angle and source widths."""
@@ -66,12 +74,12 @@ class StrengthPage(DataSheet):
         """(lower, upper) of each angle column for the shown side; the joint
         limits change with their percentile and the gender, so ask each time."""
         try:
-            return [joint_limit_range(self.app.figure, sheet.side, axis) for axis in JOINT_AXES]
+            return [joint_limit_range(sheet.figure, sheet.side, axis) for axis in JOINT_AXES]
         except StrengthError:
             return [(-math.inf, math.inf)] * self.COLUMNS
 
     def render(self) -> Text:
-        sheet = self.app.strength_sheet
+        sheet = self.sheet
         name_w, angle_w, source_w = self.column_widths()
         style = self.get_component_rich_style
         header_style = style("datasheet--header")
@@ -122,9 +130,3 @@ class StrengthPage(DataSheet):
             line.append(source[:source_w], style("datasheet--percentile"))
             lines.append(line)
         return Text("\n", no_wrap=True).join(lines)
-
-    def action_edit(self) -> None:
-        self.app.edit_angle(self.cursor_row, self.cursor_column)
-
-    def start_typing(self, character: str) -> None:
-        self.app.edit_angle(self.cursor_row, self.cursor_column, character)

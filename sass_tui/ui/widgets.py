@@ -1,12 +1,15 @@
 """The sections of the anthropometric spreadsheet (report figure 4).
 
-The widgets only show the app's Figure and turn clicks and keys into calls
-on the app; every change to the data goes through the app to the model.
+Data down, messages up: a widget shows what its screen hands it (a figure, a
+group, a page size) and posts a Message for what the user did; it never
+reaches into the app.  Every change to the data goes through the screen to
+the Session.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from rich.text import Text
@@ -14,10 +17,13 @@ from textual import events
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
 from textual.message import Message
+from textual.reactive import reactive
 from textual.widget import Widget
 from textual.widgets import Button, Input, Label, Static
 
-from sass_tui.model.names import AXES, GROUP_TITLES, STRENGTH
+from sass_tui.model.errors import SassError
+from sass_tui.model.figure import Figure
+from sass_tui.model.names import AXES, GIRTH, GROUP_TITLES, STRENGTH
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert
 from sass_tui.ui.commands import CommandSpec
 
@@ -39,16 +45,93 @@ def format_percentile(p: float) -> str:
     return f"{p:.1f}"
 
 
-def forward_to_answer(widget: Widget, event: events.Key) -> bool:
-    """Keys typed fast reach the app before the answer line takes the focus, and
-    the app hands them to the widget focused when they arrived: pass them on."""
-    answer = widget.app.query_one("#answer", Input)
-    if not answer.display:
-        return False
-    event.stop()
-    event.prevent_default()
-    answer.post_message(events.Key(event.key, event.character))
-    return True
+NO_PERCENTILE = "—"
+
+
+def format_cell_percentile(value: float, p: float) -> str:
+    """A value without a percentile (its row has no spread: 5th, 50th and
+    95th equal, and the value is another) shows "—", not a blank that looks
+    like a missing value."""
+    if not math.isnan(value) and math.isnan(p):
+        return NO_PERCENTILE
+    return format_percentile(p)
+
+
+class TypedAhead(Message):
+    """Keys typed after an edit was asked for but before its prompt took the
+    focus: the app routed them to the widget that asked.  They belong to the
+    prompt, in the order typed (a paste arrives as one `text`)."""
+
+    def __init__(self, key: str, character: str | None, text: str = "") -> None:
+        super().__init__()
+        self.key = key
+        self.character = character
+        self.text = text
+
+
+class ScreenKey(Message):
+    """A key an editing widget does not take, sent to its screen in the order
+    typed: the screen's command, or the open prompt's if one opened meanwhile."""
+
+    def __init__(self, key: str, character: str | None) -> None:
+        super().__init__()
+        self.key = key
+        self.character = character
+
+
+class EditorKeys:
+    """Keys of a widget whose cells are edited on the message line.
+
+    A number key (or Enter) asks the screen for a prompt with a Message; from
+    then until the widget loses the focus (the prompt took it) or the screen
+    says no prompt came (`typing_done`), every key and paste is passed on as
+    TypedAhead, never to a binding: `14in` typed fast edits the cell, it does
+    not open Input Data on the `i`."""
+
+    _typing_ahead = False
+
+    def request_edit(self, message: Message) -> None:
+        self._typing_ahead = True
+        self.post_message(message)  # type: ignore[attr-defined]
+
+    def typing_done(self) -> None:
+        self._typing_ahead = False
+
+    def start_typing(self, text: str) -> None:
+        raise NotImplementedError
+
+    def on_key(self, event: events.Key) -> None:
+        if self._typing_ahead:
+            event.stop()
+            event.prevent_default()
+            self.post_message(TypedAhead(event.key, event.character))  # type: ignore[attr-defined]
+        elif event.character and event.character in NUMBER_START:
+            event.stop()
+            event.prevent_default()
+            self.start_typing(event.character)
+        elif event.key == "enter":
+            # Here, not by a binding run after the key has bubbled up: the
+            # letters typed next must find the edit already asked for.
+            event.stop()
+            event.prevent_default()
+            self.start_typing("")
+        elif event.key not in self._bindings.key_to_bindings:  # type: ignore[attr-defined]
+            # Not this widget's (its arrows are): the screen's, in this order.
+            event.stop()
+            event.prevent_default()
+            self.post_message(ScreenKey(event.key, event.character))  # type: ignore[attr-defined]
+
+    def on_paste(self, event: events.Paste) -> None:
+        event.stop()
+        event.prevent_default()
+        if self._typing_ahead:
+            self.post_message(TypedAhead("paste", None, event.text))  # type: ignore[attr-defined]
+        elif event.text.strip():
+            self.start_typing(event.text.strip())
+
+    def on_blur(self) -> None:
+        self._typing_ahead = False
+        self.refresh()  # type: ignore[attr-defined]
 
 
 # --- anthropometric group status line ------------------------------------
@@ -139,8 +222,9 @@ def global_text(figure, group: str, field: str, strength_percentile: float | Non
     return f"{value:g}" if isinstance(value, float) else str(value)
 
 
-class GlobalPanel(Widget, can_focus=True):
-    """The eleven labels of §12.2.2; a cell is chosen with the mouse or arrows."""
+class GlobalPanel(EditorKeys, Widget, can_focus=True):
+    """The eleven labels of §12.2.2; a cell is chosen with the mouse or arrows.
+    Shows the figure, group and strength percentile its screen gives it."""
 
     COMPONENT_CLASSES = {
         "globalpanel--label",
@@ -156,9 +240,22 @@ class GlobalPanel(Widget, can_focus=True):
         Binding("enter", "edit", "Edit", show=False),
     ]
 
+    class EditRequested(Message):
+        def __init__(self, field: str, initial: str = "") -> None:
+            super().__init__()
+            self.field = field
+            self.initial = initial
+
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
         self.cursor = GLOBAL_CELLS[1]
+        self.figure: Figure | None = None
+        self.group = GIRTH
+        self.strength_percentile: float | None = None
+
+    def show(self, figure: Figure, group: str, strength_percentile: float | None) -> None:
+        self.figure, self.group, self.strength_percentile = figure, group, strength_percentile
+        self.refresh()
 
     def select(self, field: str) -> None:
         self.cursor = next(c for c in GLOBAL_CELLS if c.field == field)
@@ -180,7 +277,9 @@ class GlobalPanel(Widget, can_focus=True):
         return starts[slot], widths[slot]
 
     def render(self) -> Text:
-        figure, group = self.app.figure, self.app.data_group
+        figure, group = self.figure, self.group
+        if figure is None:
+            return Text()
         label_style = self.get_component_rich_style("globalpanel--label")
         cursor_style = self.get_component_rich_style(
             "globalpanel--cursor" if self.has_focus else "globalpanel--cursor-blur"
@@ -197,16 +296,18 @@ class GlobalPanel(Widget, can_focus=True):
                     span = width - start
                 if cell.label:
                     label_start = 0 if cell.slot == 0 else start - self._label_b()
-                    line.append(" " * (label_start - column))
+                    line.append(" " * max(0, label_start - column))
                     line.append(
                         f"{self._label(cell):<{start - label_start}}"[: start - label_start],
                         label_style,
                     )
                     column = start
                 line.append(" " * max(0, start - column))
-                text = global_text(figure, group, cell.field, self.app.strength_percentile)
+                text = global_text(figure, group, cell.field, self.strength_percentile)
                 cell_style = cursor_style if cell == self.cursor else ""
-                line.append(f"{text:<{span - 1}}"[: span - 1], cell_style)
+                # A terminal narrower than the panel leaves a cell no room (issue 17).
+                width = max(0, span - 1)
+                line.append(f"{text:<{width}}"[:width], cell_style)
                 line.append(" ")
                 column = start + span
             lines.append(line)
@@ -245,21 +346,12 @@ class GlobalPanel(Widget, can_focus=True):
         self.refresh()
 
     def action_edit(self) -> None:
-        self.app.edit_global(self.cursor.field)
+        self.request_edit(self.EditRequested(self.cursor.field))
 
-    def on_key(self, event: events.Key) -> None:
-        if forward_to_answer(self, event):
-            return
-        if event.character and event.character in NUMBER_START:
-            event.stop()
-            event.prevent_default()
-            # Called, not posted: the answer line must have the focus before the next key.
-            self.app.edit_global(self.cursor.field, event.character)
+    def start_typing(self, text: str) -> None:
+        self.request_edit(self.EditRequested(self.cursor.field, text))
 
     def on_focus(self) -> None:
-        self.refresh()
-
-    def on_blur(self) -> None:
         self.refresh()
 
 
@@ -267,11 +359,13 @@ class GlobalPanel(Widget, can_focus=True):
 
 
 class CommandMenu(Horizontal):
-    """Figure 6: buttons in two columns, built from the command specs."""
+    """Figure 6: buttons in two columns, built from the command specs; the
+    labels and availability come from `context` (the screen the menu is on)."""
 
-    def __init__(self, commands: tuple[CommandSpec, ...], **kwargs) -> None:
+    def __init__(self, commands: tuple[CommandSpec, ...], context: object, **kwargs) -> None:
         super().__init__(**kwargs)
         self.commands = commands
+        self.context = context
 
     def compose(self):
         for column in sorted({c.column for c in self.commands}):
@@ -280,7 +374,7 @@ class CommandMenu(Horizontal):
                     (c for c in self.commands if c.column == column), key=lambda c: c.row
                 ):
                     button = Button(
-                        spec.label(self.app),
+                        spec.label(self.context),
                         id=f"command-{spec.name}",
                         classes="command",
                         compact=True,
@@ -294,16 +388,20 @@ class CommandMenu(Horizontal):
     def refresh_labels(self) -> None:
         for spec in self.commands:
             button = self.query_one(f"#command-{spec.name}", Button)
-            button.label = spec.label(self.app)
-            button.display = spec.available(self.app)
+            button.label = spec.label(self.context)
+            button.display = spec.available(self.context)
 
 
 # --- data section ----------------------------------------------------------------
 
 
-class DataSheet(Widget, can_focus=True):
+class DataSheet(EditorKeys, Widget, can_focus=True):
     """Names column, then value and percentile for x, y and z; 25 rows a page,
-    fewer when the terminal is too short (paging still reaches every row)."""
+    fewer when the terminal is too short (paging still reaches every row).
+
+    The screen hands it the figure and the rows a page may hold
+    (`page_rows`, from the terminal's height, not from this widget's layout:
+    the page size must not depend on when the layout ran)."""
 
     COMPONENT_CLASSES = {
         "datasheet--header",
@@ -326,21 +424,43 @@ class DataSheet(Widget, can_focus=True):
     PAGE_ROWS = 25  # the report's fixed page
     COLUMNS = 6  # value and percentile for x, y, z
 
+    class EditRequested(Message):
+        """Edit the cell at (row, column); `initial` = what was typed so far."""
+
+        def __init__(self, row: int, column: int, initial: str = "") -> None:
+            super().__init__()
+            self.row = row
+            self.column = column
+            self.initial = initial
+
+    page_rows: reactive[int] = reactive(PAGE_ROWS, init=False)
+
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
         self.cursor_row = 0
         self.cursor_column = 0
         self._cursors: dict[str, tuple[int, int]] = {}
         self._group = ""
+        self.figure: Figure | None = None
+
+    def validate_page_rows(self, rows: int) -> int:
+        return max(1, min(self.PAGE_ROWS, rows))
+
+    def watch_page_rows(self) -> None:
+        if self.row_count:
+            self.cursor_row = min(self.cursor_row, self.row_count - 1)
+        self.refresh()
 
     # --- paging ---------------------------------------------------------
     @property
     def page_size(self) -> int:
-        return max(1, min(self.PAGE_ROWS, self.content_size.height - self.HEADER_LINES))
+        return self.page_rows
 
     @property
     def row_count(self) -> int:
-        return len(self.app.figure.groups[self._group].rows) if self._group else 0
+        if not self._group or self.figure is None:
+            return 0
+        return len(self.figure.groups[self._group].rows)
 
     @property
     def page(self) -> int:
@@ -350,7 +470,11 @@ class DataSheet(Widget, can_focus=True):
     def pages(self) -> int:
         return max(1, -(-self.row_count // self.page_size))
 
-    def show_group(self, group: str) -> None:
+    def show_group(self, figure: Figure, group: str) -> None:
+        self.figure = figure
+        if group == self._group:
+            self.refresh()
+            return
         if self._group:
             self._cursors[self._group] = (self.cursor_row, self.cursor_column)
         self._group = group
@@ -385,7 +509,9 @@ class DataSheet(Widget, can_focus=True):
         return start, value if column % 2 == 0 else percentile
 
     def render(self) -> Text:
-        figure = self.app.figure
+        figure = self.figure
+        if figure is None or not self._group:
+            return Text()
         state = figure.groups[self._group]
         unit = DISPLAY[state.unit]
         name_w, value_w, pct_w = self.column_widths()
@@ -423,7 +549,10 @@ class DataSheet(Widget, can_focus=True):
                     text = f"{format_value(shown[index, axis], state.unit):>{value_w - 1}} "
                     style = ""
                 else:
-                    text = f"{format_percentile(state.percentiles[index, axis]):>{pct_w - 1}} "
+                    percentile = format_cell_percentile(
+                        values[index, axis], state.percentiles[index, axis]
+                    )
+                    text = f"{percentile:>{pct_w - 1}} "
                     style = pct_style
                 if index == self.cursor_row and column == self.cursor_column:
                     style = cursor_style
@@ -455,31 +584,20 @@ class DataSheet(Widget, can_focus=True):
         self.refresh()
 
     def action_jump(self, row: int) -> None:
-        self.cursor_row = row % self.row_count
-        self.refresh()
+        if self.row_count:
+            self.cursor_row = row % self.row_count
+            self.refresh()
 
     def action_edit(self) -> None:
-        self.app.edit_cell(self.cursor_row, self.cursor_column)
+        self.request_edit(self.EditRequested(self.cursor_row, self.cursor_column))
 
-    def on_key(self, event: events.Key) -> None:
-        if forward_to_answer(self, event):
-            return
-        if event.character and event.character in NUMBER_START:
-            event.stop()
-            event.prevent_default()
-            # Called, not posted: the answer line must have the focus before the next key.
-            self.start_typing(event.character)
-
-    def start_typing(self, character: str) -> None:
-        self.app.edit_cell(self.cursor_row, self.cursor_column, character)
+    def start_typing(self, text: str) -> None:
+        self.request_edit(self.EditRequested(self.cursor_row, self.cursor_column, text))
 
     def on_resize(self) -> None:
         self.refresh()
 
     def on_focus(self) -> None:
-        self.refresh()
-
-    def on_blur(self) -> None:
         self.refresh()
 
 
@@ -496,36 +614,136 @@ class AnswerInput(Input):
         self.post_message(self.Cancelled())
 
 
+Handler = Callable[[str], None]
+HISTORY_LENGTH = 200
+# What a user may cause in an answer: shown on the message line, never a
+# traceback; anything else is a bug and shows as one.
+USER_ERRORS = (SassError, OSError)
+
+
 class MessageLine(Horizontal):
-    """Prompts, typed answers, errors and warnings (report 'command/message window')."""
+    """The report's command/message window: says things, and asks.
+
+    It owns its prompt: the answer being typed, the handler the answer goes
+    to, the handler of a cancel (Escape), and the widget to give the focus
+    back to.  A handler may ask again (a follow-up question).  A handler's
+    SassError or OSError is shown as an error; after each answer or cancel
+    the line posts `Answered` so the screen can redraw."""
+
+    class Answered(Message):
+        pass
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self._on_answer: Handler | None = None
+        self._on_cancel: Callable[[], None] | None = None
+        self._focus_after: Widget | None = None
+        # What was said, oldest first: one line is cut at the terminal's width,
+        # the message log (`l`) shows it whole.
+        self.history: list[tuple[str, str]] = []
 
     def compose(self):
         yield Label("", id="message")
         yield AnswerInput(id="answer", compact=True, select_on_focus=False)
 
     def on_mount(self) -> None:
-        self.query_one("#answer").display = False
+        self.answer.display = False
+
+    @property
+    def answer(self) -> AnswerInput:
+        return self.query_one("#answer", AnswerInput)
 
     def show(self, text: str, kind: str = "info") -> None:
+        if kind != "prompt" and (not self.history or self.history[-1] != (kind, text)):
+            self.history.append((kind, text))
+            del self.history[:-HISTORY_LENGTH]
         label = self.query_one("#message", Label)
         label.update(Text(text))
         for name in ("info", "error", "warning", "prompt"):
             label.set_class(name == kind, f"-{name}")
 
+    def say(self, text: str) -> None:
+        self.show(text, "info")
+
+    def complain(self, text: str) -> None:
+        self.show(text, "error")
+
     @property
     def prompting(self) -> bool:
-        return bool(self.query_one("#answer").display)
+        return bool(self.answer.display)
 
-    def ask(self, prompt: str, initial: str = "") -> None:
-        self.show(prompt + " ", "prompt")
-        answer = self.query_one("#answer", AnswerInput)
+    def ask(
+        self,
+        prompt: str,
+        on_answer: Handler,
+        initial: str = "",
+        on_cancel: Callable[[], None] | None = None,
+        kind: str = "prompt",
+    ) -> None:
+        focused = self.screen.focused
+        if focused is not None and focused is not self.answer:
+            self._focus_after = focused
+        self._on_answer, self._on_cancel = on_answer, on_cancel
+        self.show(prompt + " ", kind)
+        answer = self.answer
         answer.value = initial
         answer.display = True
-        # Focus now, not on the next idle: keys typed fast must land in the answer.
+        # Now, not on the next idle: the keys that follow belong to the answer.
         self.screen.set_focus(answer)
         answer.cursor_position = len(initial)
 
-    def close(self) -> None:
-        answer = self.query_one("#answer", AnswerInput)
+    def keep_focus(self) -> None:
+        """While asking, the answer keeps the focus (a click elsewhere does not
+        take the keys away from the prompt)."""
+        if self.prompting and self.screen.focused is not self.answer:
+            self.screen.set_focus(self.answer)
+
+    def type_ahead(self, key: str, character: str | None, text: str = "") -> None:
+        """A key that reached another widget before the answer had the focus."""
+        if not self.prompting:
+            return
+        answer = self.answer
+        if text:
+            answer.insert_text_at_cursor(text)
+        elif key == "enter":
+            answer.action_submit()
+        elif key == "escape":
+            answer.action_cancel()
+        elif key == "backspace":
+            answer.action_delete_left()
+        elif character and character.isprintable():
+            answer.insert_text_at_cursor(character)
+
+    def _close(self) -> tuple[Handler | None, Callable[[], None] | None]:
+        handlers = self._on_answer, self._on_cancel
+        self._on_answer = self._on_cancel = None
+        answer = self.answer
         answer.value = ""
         answer.display = False
+        focus, self._focus_after = self._focus_after, None
+        if focus is not None and focus.is_attached and focus.display:
+            # Synchronously, so that a follow-up question keeps the focus.
+            self.screen.set_focus(focus)
+        return handlers
+
+    def _run(self, handler: Callable[[], None]) -> None:
+        try:
+            handler()
+        except USER_ERRORS as exc:
+            self.complain(str(exc))
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        event.stop()
+        on_answer, _ = self._close()
+        if on_answer is not None:
+            self._run(lambda: on_answer(event.value))
+        self.post_message(self.Answered())
+
+    def on_answer_input_cancelled(self, event: AnswerInput.Cancelled) -> None:
+        event.stop()
+        _, on_cancel = self._close()
+        if on_cancel is not None:
+            self._run(on_cancel)
+        else:
+            self.say("Cancelled; nothing changed.")
+        self.post_message(self.Answered())

@@ -1,4 +1,4 @@
-"""The figure model: global data, group percentiles, per-cell overrides, undo."""
+"""The figure model: global data, group percentiles, per-cell overrides (undo: test_session)."""
 
 from __future__ import annotations
 
@@ -79,18 +79,6 @@ def test_segment_masses_sum_to_the_total():
     assert masses["ctorsomass"] == pytest.approx(0.138 * 82.2)
 
 
-def test_undo_goes_back_one_edit_at_a_time():
-    figure = Figure.default()
-    figure.set_value(GIRTH, ARM, 2, 30.0)
-    figure.set_group_percentile(JOINT_LIMITS, 5)
-    assert figure.undo()
-    assert figure.groups[JOINT_LIMITS].percentile == 50
-    assert figure.groups[GIRTH].values[ARM, 2] == 30.0
-    assert figure.undo()
-    assert figure.groups[GIRTH].values[ARM, 2] == 36.6
-    assert not figure.undo()
-
-
 def test_refused_edits_change_nothing():
     figure = Figure.default()
     with pytest.raises(FigureError, match="gender must be male or female"):
@@ -98,4 +86,3 @@ def test_refused_edits_change_nothing():
     with pytest.raises(PercentileError):
         figure.set_group_percentile(GIRTH, 120)
     assert figure.gender == "male" and figure.groups[GIRTH].percentile == 50
-    assert not figure.undo()

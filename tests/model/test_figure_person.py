@@ -8,6 +8,7 @@ import pytest
 from sass_tui.model.figure import Figure, FigureError
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
 from sass_tui.model.percentile import percentile_of
+from sass_tui.model.session import Session
 
 
 def person_groups(figure: Figure, scale: float = 1.1) -> dict[str, np.ndarray]:
@@ -42,17 +43,18 @@ def test_person_values_percentiles_and_population_untouched():
     assert person.mass == 90.0 and person.mass_percentile > 50
     assert person.handedness == "left" and person.strength_type == "isokinetic"
     assert population.person is None and population.handedness == "right"
-    assert not person.undo()  # a fresh figure: nothing to undo
 
 
 def test_person_is_editable_like_population_data():
     population = Figure.default("female")
     person = population.for_person("DOE", "female", person_groups(population, 0.95))
     arm = row_index(GIRTH, "right_upper_arm")
-    person.set_value(GIRTH, arm, 2, 30.0)
+    session = Session(population)
+    session.show_person(person, 0)
+    session.set_value(GIRTH, arm, 2, 30.0)
     assert person.groups[GIRTH].values[arm, 2] == 30.0
-    person.set_cell_percentile(JOINT_LIMITS, 0, 0, 50.0)
-    assert person.undo() and person.undo()
+    session.set_cell_percentile(JOINT_LIMITS, 0, 0, 50.0)
+    assert session.undo() and session.undo() and not session.undo()
     assert person.groups[GIRTH].values[arm, 2] == pytest.approx(
         population.groups[GIRTH].values[arm, 2] * 0.95
     )

@@ -263,22 +263,6 @@ def test_fig_includes_strength_unless_told_not_to(tmp_path, capsys):
     assert not (tmp_path / "no.fig").exists()
 
 
-def test_angle_edits_undo_in_order_with_figure_edits():
-    figure = Figure.default()
-    sheet = StrengthSheet.default(figure)
-    before = sheet.angles.copy()
-    sheet.set_angle(0, "shoulder_x", "60")
-    figure.set_mass_percentile(95)
-    sheet.set_angle(0, "shoulder_y", "0.5 rad")
-    assert sheet.last_edit > figure.last_edit
-    assert sheet.undo()
-    assert sheet.angles[0, 1] == before[0, 1] and sheet.angles[0, 0] == 60
-    assert figure.last_edit > sheet.last_edit
-    assert figure.undo() and figure.mass_percentile == 50
-    assert sheet.undo() and (sheet.angles == before).all()
-    assert not sheet.undo() and sheet.last_edit == -1
-
-
 # --- issue 11: strength answers say what they are --------------------------------
 
 

@@ -4,8 +4,15 @@ import asyncio
 import shutil
 
 import pytest
+from textual.widgets import Input
 
 from sass_tui.db.default import create_default_database
+
+
+@pytest.fixture(autouse=True)
+def no_cursor_blink(monkeypatch):
+    """A steady cursor: snapshots must not depend on when the blink timer fired."""
+    monkeypatch.setattr(Input.__dict__["cursor_blink"], "_default", False)
 
 
 @pytest.fixture
@@ -15,16 +22,17 @@ def drive():
 
 
 @pytest.fixture(scope="session")
-def default_db(tmp_path_factory):
-    """The default database (synthetic people), built once per test process."""
+def shipped_db_file(tmp_path_factory):
+    """The database `sass` builds from the shipped data (synthetic people),
+    built once per test process."""
     path = tmp_path_factory.mktemp("db") / "sass.db"
     create_default_database(path)
     return path
 
 
 @pytest.fixture
-def db(default_db, tmp_path):
+def db(shipped_db_file, tmp_path):
     """A private copy: Input DB and the lists must not leak between tests."""
     path = tmp_path / "sass.db"
-    shutil.copy(default_db, path)
+    shutil.copy(shipped_db_file, path)
     return path

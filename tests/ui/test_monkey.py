@@ -40,7 +40,7 @@ def test_random_keys_never_crash(drive, db, tmp_path, monkeypatch, seed):
     rnd = random.Random(seed)
 
     async def scenario():
-        app = SassApp(cursor_blink=False, db_path=db)
+        app = SassApp(db_path=db)
         async with app.run_test(size=(100, 37)) as pilot:
             for _ in range(150):
                 await pilot.press(rnd.choice(KEYS))

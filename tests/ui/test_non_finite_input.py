@@ -13,7 +13,7 @@ def message(app) -> str:
 
 def test_a_cell_refuses_1e400_and_keeps_its_value(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=(80, 24)) as pilot:
             await pilot.press(*"1e400", "enter")
             assert "not a usable number" in message(app)

@@ -108,7 +108,7 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
         expected = run_query(conn, SAMPLE).count()
 
     async def scenario():
-        app = SassApp(cursor_blink=False, db_path=db)
+        app = SassApp(db_path=db)
         async with app.run_test(size=SIZE) as pilot:
             await open_query_screen(pilot)
             assert "Query List" in summary(app) and "Exit Query" in str(
@@ -206,7 +206,7 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
 
 def test_previous_menu_and_abort(drive, db):
     async def scenario():
-        app = SassApp(cursor_blink=False, db_path=db)
+        app = SassApp(db_path=db)
         async with app.run_test(size=SIZE) as pilot:
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
@@ -250,7 +250,7 @@ def test_query_text_edited_before_done_then_re_executed(drive, db):
         expected = run_query(conn, "gender = female AND stature > 165 cm").count()
 
     async def scenario():
-        app = SassApp(cursor_blink=False, db_path=db)
+        app = SassApp(db_path=db)
         async with app.run_test(size=SIZE) as pilot:
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
@@ -281,7 +281,7 @@ def test_query_text_edited_before_done_then_re_executed(drive, db):
 
 def test_constraint_that_is_not_a_number(drive, db):
     async def scenario():
-        app = SassApp(cursor_blink=False, db_path=db)
+        app = SassApp(db_path=db)
         async with app.run_test(size=SIZE) as pilot:
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
@@ -303,7 +303,7 @@ def test_constraint_that_is_not_a_number(drive, db):
 
 def test_paging_delete_and_busy_while_a_query_runs(drive, db):
     async def scenario():
-        app = SassApp(cursor_blink=False, db_path=db)
+        app = SassApp(db_path=db)
         async with app.run_test(size=SIZE) as pilot:
             screen = await open_query_screen(pilot)
             screen.start_query("stature > 0")
@@ -357,7 +357,7 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
         )
 
     async def scenario():
-        app = SassApp(cursor_blink=False, db_path=db)
+        app = SassApp(db_path=db)
         async with app.run_test(size=SIZE) as pilot:
             screen = await open_query_screen(pilot)
 

@@ -26,9 +26,7 @@ def test_query_screen_with_results(snap_compare, db):
         await settle(pilot)
         await pilot.press("down", "s")
 
-    assert snap_compare(
-        SassApp(cursor_blink=False, db_path=db), run_before=run_before, terminal_size=SIZE
-    )
+    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
 
 
 # The menus of figure 13's sequence, each reached by the choices before it.
@@ -59,9 +57,7 @@ def test_popup_menu(snap_compare, db, menu):
         for label in MENU_PATHS[menu]:
             await choose(pilot, label)
 
-    assert snap_compare(
-        SassApp(cursor_blink=False, db_path=db), run_before=run_before, terminal_size=SIZE
-    )
+    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
 
 
 def test_individual_displayed(snap_compare, db):
@@ -72,9 +68,7 @@ def test_individual_displayed(snap_compare, db):
         await settle(pilot)
         await pilot.press("s", "e", "v")
 
-    assert snap_compare(
-        SassApp(cursor_blink=False, db_path=db), run_before=run_before, terminal_size=SIZE
-    )
+    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
 
 
 def test_more_menu(snap_compare, db):
@@ -85,6 +79,4 @@ def test_more_menu(snap_compare, db):
         await settle(pilot)
         await pilot.press("a", "e", "v", "x")
 
-    assert snap_compare(
-        SassApp(cursor_blink=False, db_path=db), run_before=run_before, terminal_size=SIZE
-    )
+    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)

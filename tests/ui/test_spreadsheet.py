@@ -11,7 +11,8 @@ from sass_tui.model.figfile import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH, row_index
 from sass_tui.model.popfile import parse_population_text, read_population_file
-from sass_tui.ui.app import FIRST_MESSAGE, SassApp
+from sass_tui.ui.app import SassApp
+from sass_tui.ui.spreadsheet import FIRST_MESSAGE
 from sass_tui.ui.widgets import DataSheet, GlobalPanel
 
 SMALL = (80, 24)
@@ -47,7 +48,7 @@ async def click_cell(pilot, row: int, column: int) -> None:
 
 def test_start_screen_shows_default_data(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SMALL) as pilot:
             await pilot.pause()
             assert message(app) == FIRST_MESSAGE
@@ -64,7 +65,7 @@ def test_start_screen_shows_default_data(drive):
 
 def test_click_cell_type_value_with_unit(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         row = row_index(GIRTH, "right_upper_arm")
         async with app.run_test(size=LARGE) as pilot:
             await click_cell(pilot, row, 4)  # z value
@@ -87,7 +88,7 @@ def test_click_cell_type_value_with_unit(drive):
 
 def test_percentile_drives_value_and_blank_return_and_escape(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         stats = read_population_file(datasets.path("girth.dat"), GIRTH).stats("male")
         async with app.run_test(size=LARGE) as pilot:
             await click_cell(pilot, 2, 1)  # Center Torso x percentile
@@ -109,7 +110,7 @@ def test_percentile_drives_value_and_blank_return_and_escape(drive):
 
 def test_wrong_unit_is_refused_and_the_cell_kept(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SMALL) as pilot:
             await pilot.press(*"12 deg", "enter")
             assert "deg is not a unit of length" in message(app)
@@ -125,7 +126,7 @@ def test_wrong_unit_is_refused_and_the_cell_kept(drive):
 
 def test_paging_reaches_every_row_at_80x24(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SMALL) as pilot:
             await pilot.press("j")
             sheet = app.query_one(DataSheet)
@@ -155,7 +156,7 @@ def test_paging_reaches_every_row_at_80x24(drive):
 
 def test_large_terminal_holds_the_reports_25_rows(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=LARGE) as pilot:
             await pilot.press("j")
             sheet = app.query_one(DataSheet)
@@ -168,7 +169,7 @@ def test_large_terminal_holds_the_reports_25_rows(drive):
 
 def test_switch_group_by_key_and_click_and_strength(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=LARGE) as pilot:
             await pilot.press("j")
             assert app.data_group == JOINT_LIMITS
@@ -189,7 +190,7 @@ def test_switch_group_by_key_and_click_and_strength(drive):
 
 def test_strength_group_refused_when_its_data_failed_to_load(drive, tmp_path):
     async def scenario():
-        app = SassApp(cursor_blink=False, strength_path=tmp_path / "missing.dat")
+        app = SassApp(strength_path=tmp_path / "missing.dat")
         async with app.run_test(size=LARGE) as pilot:
             await pilot.press("m")
             await pilot.click("#group-strength")
@@ -204,7 +205,7 @@ def test_strength_group_refused_when_its_data_failed_to_load(drive, tmp_path):
 
 def test_switch_gender_reloads_every_group(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         girth = read_population_file(datasets.path("girth.dat"), GIRTH).stats("female")
         async with app.run_test(size=SMALL) as pilot:
             await pilot.click(GlobalPanel, offset=(15, 2))  # the gender value
@@ -225,7 +226,7 @@ def test_switch_gender_reloads_every_group(drive):
 
 def test_group_percentile_rescales_that_group_only(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         stats = read_population_file(datasets.path("girth.dat"), GIRTH).stats("male")
         joint_limits = app.figure.groups[JOINT_LIMITS].values.copy()
         async with app.run_test(size=SMALL) as pilot:
@@ -252,7 +253,7 @@ def test_group_percentile_rescales_that_group_only(drive):
 
 def test_convert_units_and_back(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=LARGE) as pilot:
             await pilot.press("m")
             before = sheet_text(app)
@@ -289,7 +290,7 @@ def test_bad_file_is_refused_and_data_kept(drive, tmp_path):
     bad.write_text(BAD_GIRTH)
 
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         values = app.figure.groups[GIRTH].values.copy()
         async with app.run_test(size=SMALL) as pilot:
             await pilot.click("#command-input_data")
@@ -307,7 +308,8 @@ def test_bad_file_is_refused_and_data_kept(drive, tmp_path):
             await pilot.press("enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
-            assert "cannot read" in message(app)
+            assert "missing.dat: no such file" in message(app)
+            assert app.figure.population == "NASA Crewmember Trainees"
 
     drive(scenario())
 
@@ -322,7 +324,7 @@ def test_input_data_loads_and_shows_warnings(drive, tmp_path):
     assert warnings  # the seed table's inconsistencies
 
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=LARGE) as pilot:
             await pilot.press("j", "i")
             await paste(pilot, str(population))
@@ -342,7 +344,7 @@ def test_create_figure_writes_and_asks_before_overwriting(drive, tmp_path, monke
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SMALL) as pilot:
             await pilot.press("f")
             assert "[MALE50.FIG]" in message(app)
@@ -392,7 +394,7 @@ def test_create_figure_refused_without_a_group(drive):
     assert not figure.groups[CENTER_OF_MASS].loaded
 
     async def scenario():
-        app = SassApp(figure, cursor_blink=False)
+        app = SassApp(figure)
         async with app.run_test(size=SMALL) as pilot:
             await pilot.press("f")
             assert "Cannot create a figure: Center of Mass not loaded" in message(app)
@@ -408,15 +410,22 @@ def test_keys_typed_in_one_burst_run_in_order(drive):
     `tmux send-keys "m12"`): the group switch happens before the edit starts."""
 
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=LARGE) as pilot:
             for key in ("m", "1", "2"):
                 app.post_message(events.Key(key, key))
             await pilot.pause()
             assert app.data_group == CENTER_OF_MASS
             assert message(app).startswith("Bottom Head x value")
+            assert app.query_one("#answer").value == "12"
             await pilot.press("enter")
-            assert app.figure.groups[CENTER_OF_MASS].values[0, 0] == 12.0
+            await pilot.pause()
+            assert app.figure.groups[CENTER_OF_MASS].values[0, 0] == 12.0, (
+                message(app),
+                app.focused,
+                app.query_one("#answer").value,
+                app.data_group,
+            )
             assert app.figure.groups[GIRTH].values[0, 0] == 20.0
             # While the answer is typed, letters are text, not commands.
             await pilot.press("1", "i", "n")

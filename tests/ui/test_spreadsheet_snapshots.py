@@ -14,21 +14,21 @@ SIZE = (100, 37)
 
 
 def test_start_screen(snap_compare):
-    assert snap_compare(SassApp(cursor_blink=False), terminal_size=SIZE)
+    assert snap_compare(SassApp(), terminal_size=SIZE)
 
 
 def test_start_screen_80x24(snap_compare):
-    assert snap_compare(SassApp(cursor_blink=False), terminal_size=(80, 24))
+    assert snap_compare(SassApp(), terminal_size=(80, 24))
 
 
 def test_joint_limits_page_2(snap_compare):
-    assert snap_compare(SassApp(cursor_blink=False), press=["j", "n"], terminal_size=SIZE)
+    assert snap_compare(SassApp(), press=["j", "n"], terminal_size=SIZE)
 
 
 def test_center_of_mass_in_inches(snap_compare):
-    assert snap_compare(SassApp(cursor_blink=False), press=["m", "c"], terminal_size=SIZE)
+    assert snap_compare(SassApp(), press=["m", "c"], terminal_size=SIZE)
 
 
 def test_error_message(snap_compare):
     # A length typed in degrees into a girth cell.
-    assert snap_compare(SassApp(cursor_blink=False), press=[*"12deg", "enter"], terminal_size=SIZE)
+    assert snap_compare(SassApp(), press=[*"12deg", "enter"], terminal_size=SIZE)

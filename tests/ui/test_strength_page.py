@@ -81,7 +81,7 @@ def expected_sheet(**figure_settings) -> StrengthSheet:
 
 def test_strength_page_shows_figure_5(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
             text = page_text(app)
@@ -114,7 +114,7 @@ def test_strength_page_shows_figure_5(drive):
 
 def test_edit_angle_recomputes_row_stored_then_predicted(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         expected = expected_sheet()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
@@ -147,7 +147,7 @@ def test_edit_angle_recomputes_row_stored_then_predicted(drive):
 
 def test_click_an_angle_cell_then_edit(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
             page = app.query_one(StrengthPage)
@@ -167,7 +167,7 @@ def test_click_an_angle_cell_then_edit(drive):
 
 def test_angle_beyond_the_joint_limit_is_refused(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
             await pilot.press(*"200", "enter")
@@ -193,7 +193,7 @@ def test_angle_beyond_the_joint_limit_is_refused(drive):
 
 def test_ft_lb_to_n_m_and_back(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
             await pilot.press("c")
@@ -209,7 +209,7 @@ def test_ft_lb_to_n_m_and_back(drive):
 
 def test_right_to_left_with_a_typed_factor_and_with_return(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
             assert button_label(app, "switch_side") == "Right → Left"
@@ -243,7 +243,7 @@ def test_right_to_left_with_a_typed_factor_and_with_return(drive):
 
 def test_global_strength_parameters_move_the_values(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
             await edit_global(pilot, "strength_type", "isokinetic")
@@ -290,7 +290,7 @@ def test_input_data_on_the_strength_page(drive, tmp_path):
     )
 
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
             await pilot.press("i")
@@ -320,7 +320,7 @@ def test_create_figure_with_and_without_strength(drive, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await pilot.press("f", "enter")
             assert "Include strength in the figure? (Y/n)" in message(app)
@@ -356,7 +356,7 @@ def test_create_figure_without_strength_data_does_not_ask(drive, tmp_path, monke
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp(cursor_blink=False, strength_path=tmp_path / "missing.dat")
+        app = SassApp(strength_path=tmp_path / "missing.dat")
         async with app.run_test(size=SIZE) as pilot:
             await pilot.press("f", "enter")
             await app.workers.wait_for_complete()
@@ -372,7 +372,7 @@ def test_export_hanim_writes_x3d_and_asks_before_overwriting(drive, tmp_path, mo
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await pilot.click("#command-export_hanim")
             assert "HAnim file name [MALE50.x3d]:" in message(app)
@@ -414,7 +414,7 @@ def test_export_hanim_refuses_an_incomplete_figure(drive, tmp_path, monkeypatch)
     figure.groups[JOINT_LIMITS].values = None  # as if no joint limits for this gender
 
     async def scenario():
-        app = SassApp(figure, cursor_blink=False)
+        app = SassApp(figure)
         async with app.run_test(size=SIZE) as pilot:
             await pilot.press("e", "enter")
             await app.workers.wait_for_complete()
@@ -426,7 +426,7 @@ def test_export_hanim_refuses_an_incomplete_figure(drive, tmp_path, monkeypatch)
 
 
 def test_strength_page_snapshot(snap_compare):
-    assert snap_compare(SassApp(cursor_blink=False), press=["s"], terminal_size=SIZE)
+    assert snap_compare(SassApp(), press=["s"], terminal_size=SIZE)
 
 
 def test_angles_outside_new_limits_are_marked(drive):
@@ -440,7 +440,7 @@ def test_angles_outside_new_limits_are_marked(drive):
         ]
 
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
             await pilot.press(*"175", "enter", "right")  # allowed at the 50th (180.95)
@@ -458,7 +458,7 @@ def test_angles_outside_new_limits_are_marked(drive):
 
 def test_undo_takes_the_newest_edit_angle_or_figure(drive):
     async def scenario():
-        app = SassApp(cursor_blink=False)
+        app = SassApp()
         async with app.run_test(size=SIZE) as pilot:
             await open_strength(pilot)
             await pilot.press("enter")  # shoulder abduction, shoulder x

@@ -1,0 +1,87 @@
+"""What every SASS screen shares: its message line, and keys taken in the
+order they were typed.
+
+A key the focused widget does not take bubbles to the screen.  The screen
+runs its own BINDINGS for it there, at once, rather than leaving them to the
+app after the bubbling: a burst such as `m12` (Center of Mass, then 12) then
+switches the group before the edit that the `1` asks for (a Message sent
+after the `m` reached the screen) begins.  Nothing here is app-wide: each
+screen's bindings are its own.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from textual import events
+from textual.screen import Screen
+
+from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
+
+
+class SassScreen(Screen):
+    @property
+    def message_line(self) -> MessageLine:
+        return self.query_one(MessageLine)
+
+    def say(self, text: str) -> None:
+        self.message_line.say(text)
+
+    def complain(self, text: str) -> None:
+        self.message_line.complain(text)
+
+    def ask(
+        self,
+        prompt: str,
+        on_answer: Callable[[str], None],
+        initial: str = "",
+        on_cancel: Callable[[], None] | None = None,
+        kind: str = "prompt",
+    ) -> None:
+        self.message_line.ask(prompt, on_answer, initial, on_cancel, kind)
+
+    async def on_key(self, event: events.Key) -> None:
+        if self.message_line.prompting:
+            return  # the prompt's own keys (Enter, Escape) are the answer's bindings
+        node = self.focused
+        while node is not None and node is not self:
+            if event.key in node._bindings.key_to_bindings:
+                return  # a widget's own binding comes first (the app runs it)
+            node = node.parent
+        if await self._run_binding(event.key):
+            event.stop()
+            event.prevent_default()
+
+    async def on_screen_key(self, event: ScreenKey) -> None:
+        event.stop()
+        if self.message_line.prompting:
+            # A prompt opened after the key was typed: it is the prompt's.
+            self.message_line.type_ahead(event.key, event.character)
+        else:
+            await self._run_binding(event.key)
+
+    async def _run_binding(self, key: str) -> bool:
+        """Run this screen's binding for `key`, or say why it does nothing
+        here.  False when the screen has nothing to do with the key."""
+        for binding in self._bindings.key_to_bindings.get(key, ()):
+            if self.check_action(binding.action, ()):
+                await self.run_action(binding.action)
+                return True
+            reason = self.why_not(binding.action)
+            if reason:
+                self.say(reason)
+                return True
+        return False
+
+    def why_not(self, action: str) -> str | None:
+        """Why a command's key does nothing here (its slot shows another
+        command), for the message line; None: say nothing."""
+        return None
+
+    def on_typed_ahead(self, event: TypedAhead) -> None:
+        event.stop()
+        self.message_line.type_ahead(event.key, event.character, event.text)
+
+    def on_descendant_focus(self, event: events.DescendantFocus) -> None:
+        # While a prompt is open the keys are its own, wherever the user clicks.
+        self.message_line.keep_focus()

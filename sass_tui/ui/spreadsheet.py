@@ -1,0 +1,737 @@
+"""The anthropometric spreadsheet (report §12.2, figures 3, 4 and 6): the
+app's default screen.
+
+The screen hands its widgets what they show and answers their Messages;
+every change to the data goes through the app's Session, so a refused edit
+leaves the data as it was and says why on the message line.  Files are read
+and written in worker threads that get an immutable input (a path, the
+rendered text) and post their result as a Message.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections.abc import Callable
+from pathlib import Path
+
+from textual import events, work
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal
+from textual.message import Message
+from textual.widgets import Button, Footer
+
+from sass_tui.model.errors import SassError
+from sass_tui.model.figfile import default_fig_name, render_fig
+from sass_tui.model.figure import Figure
+from sass_tui.model.names import (
+    AXES,
+    CENTER_OF_MASS,
+    GIRTH,
+    GROUP_TITLES,
+    GROUPS,
+    JOINT_LIMITS,
+    STRENGTH,
+)
+from sass_tui.model.paths import regular_file, user_path
+from sass_tui.model.popfile import PopulationData, read_population_file
+from sass_tui.model.session import Session
+from sass_tui.model.strength import (
+    DEFAULT_NON_DOMINANT_FACTOR,
+    JOINT_AXIS_LABELS,
+    MOTIONS,
+    StrengthData,
+    fig_section,
+    read_strength_file,
+)
+from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, other_unit, parse_quantity
+from sass_tui.model.vocabulary import STRENGTH_PARAMETERS
+from sass_tui.ui.base import SassScreen
+from sass_tui.ui.commands import COMMANDS
+from sass_tui.ui.strength_page import StrengthPage, format_angle, format_strength
+from sass_tui.ui.widgets import (
+    CommandMenu,
+    DataSheet,
+    EditorKeys,
+    GlobalPanel,
+    GroupBar,
+    GroupTab,
+    MessageLine,
+    format_percentile,
+    format_value,
+    global_text,
+)
+
+FIRST_MESSAGE = "Press left-mouse to select items."
+GROUP_KEYS = ((GIRTH, "g"), (JOINT_LIMITS, "j"), (CENTER_OF_MASS, "m"), (STRENGTH, "s"))
+STRENGTH_NOT_LOADED = (
+    "Strength data is not loaded; SASS runs without it (Create Figure leaves strength out)."
+)
+# Lines of the screen that are not data rows: group bar 1, global panel and
+# command menu 6, the data section's border 1 and header 2, message line 1,
+# footer 1 (sass.tcss).  The page size follows from the terminal's height.
+FIXED_LINES = 1 + 6 + 1 + DataSheet.HEADER_LINES + 1 + 1
+GLOBAL_HINTS = {
+    "figure_type": "skinny or polybody",
+    "gender": "male or female",
+    "mass": "kg, or e.g. 180 lb",
+    "stature": "cm, or e.g. 70 in",
+    "mass_percentile": "percentile",
+    "stature_percentile": "percentile",
+    "strength_type": "isometric, isokinetic or isotonic",
+    "motion_speed": "deg/s",
+    "handedness": "right or left",
+    "training_level": "0 = no training",
+    "fatigue_level": "0 = not tired",
+}
+
+
+class AnswerError(ValueError, SassError):
+    """An answer typed on the message line that is not what was asked for."""
+
+
+def parse_percentile(text: str) -> float:
+    cleaned = text.strip().removesuffix("%").strip()
+    try:
+        return float(cleaned)
+    except ValueError:
+        raise AnswerError(
+            f"expected a percentile such as 50 or 95%, got {text.strip()!r}"
+        ) from None
+
+
+def _slug(name: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("_") or "person"
+
+
+# --- what the workers post ------------------------------------------------------------
+
+
+class PopulationRead(Message):
+    def __init__(self, group: str, data: PopulationData) -> None:
+        super().__init__()
+        self.group = group
+        self.data = data
+
+
+class StrengthRead(Message):
+    def __init__(self, data: StrengthData) -> None:
+        super().__init__()
+        self.data = data
+
+
+class WorkerSaid(Message):
+    """A worker's outcome for the message line: kind is "info" or "error"."""
+
+    def __init__(self, text: str, kind: str = "info") -> None:
+        super().__init__()
+        self.text = text
+        self.kind = kind
+
+
+class SpreadsheetScreen(SassScreen):
+    """Figure 4: group bar, global data | command menu, data section, message line."""
+
+    BINDINGS = [
+        *(Binding(spec.key, spec.action, spec.footer) for spec in COMMANDS),
+        Binding("pagedown", "next_page", show=False),
+        Binding("pageup", "previous_page", show=False),
+        Binding("u", "undo", "Undo"),
+        Binding("ctrl+z", "undo", show=False),
+        Binding("w", "next_warning", "Warnings"),
+        Binding("l", "message_log", show=False),
+        *(Binding(key, f"select_group('{group}')", show=False) for group, key in GROUP_KEYS),
+    ]
+
+    def __init__(self, session: Session, strength_error: str = STRENGTH_NOT_LOADED) -> None:
+        super().__init__(id="spreadsheet")
+        self.session = session
+        self.strength_error = strength_error
+        self.data_group = GIRTH
+        self._warning_index = 0
+
+    # --- layout ---------------------------------------------------------------
+    def compose(self) -> ComposeResult:
+        yield GroupBar(GROUP_KEYS, id="groups")
+        with Horizontal(id="top"):
+            yield GlobalPanel(id="global")
+            yield CommandMenu(COMMANDS, self, id="commands")
+        yield DataSheet(id="sheet")
+        yield StrengthPage(id="strength-sheet")
+        yield MessageLine(id="message-line")
+        yield Footer(compact=True)
+
+    def on_mount(self) -> None:
+        self.strength_page.display = False
+        self._set_page_rows(self.app.size.height)
+        self.refresh_screen()
+        self.sheet.focus()
+        self.say(FIRST_MESSAGE)
+
+    def on_resize(self, event: events.Resize) -> None:
+        self._set_page_rows(event.size.height)
+
+    def _set_page_rows(self, height: int) -> None:
+        self.sheet.page_rows = height - FIXED_LINES
+        self.strength_page.page_rows = height - FIXED_LINES
+
+    @property
+    def sheet(self) -> DataSheet:
+        return self.query_one("#sheet", DataSheet)
+
+    @property
+    def strength_page(self) -> StrengthPage:
+        return self.query_one(StrengthPage)
+
+    @property
+    def active_sheet(self) -> DataSheet:
+        """The data section on the screen: the group sheet or the strength page."""
+        return self.strength_page if self.data_group == STRENGTH else self.sheet
+
+    @property
+    def figure(self) -> Figure:
+        return self.session.figure
+
+    @property
+    def strength_percentile(self) -> float | None:
+        sheet = self.session.strength_sheet
+        return sheet.percentile if sheet is not None else None
+
+    def refresh_screen(self) -> None:
+        """Hand every widget what it shows now."""
+        self.query_one(GroupBar).highlight(self.data_group)
+        self.query_one(GlobalPanel).show(self.figure, self.data_group, self.strength_percentile)
+        self.query_one(CommandMenu).refresh_labels()
+        self.refresh_bindings()
+        if self.data_group != STRENGTH:
+            self.sheet.show_group(self.figure, self.data_group)
+        self.strength_page.show_sheet(self.session.strength_sheet)
+
+    def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
+        spec = next((c for c in COMMANDS if c.action == action), None)
+        if spec is not None and not spec.available(self):
+            return False  # its slot shows the other command; the key does nothing
+        return True
+
+    def why_not(self, action: str) -> str | None:
+        if action == "switch_side" and self.session.strength_sheet is None:
+            return self.strength_error
+        return {
+            "switch_side": "Right → Left (r) applies to the Strength group: press s first.",
+            "display_more": (
+                "Disp. More (x) shows more of the selected list once a person is "
+                "shown: Disp. Indv. (v) first."
+            ),
+            "display_population": (
+                "The population is already shown; Disp. Pop. (o) returns to it "
+                "after Disp. Indv. (v)."
+            ),
+            "query": "Query (d) works from the population: Disp. Pop. (o) first.",
+            "display_individual": "A person is shown: Disp. More (x) shows another.",
+        }.get(action)
+
+    # --- message line ---------------------------------------------------------
+    def on_message_line_answered(self, event: MessageLine.Answered) -> None:
+        event.stop()
+        self.refresh_screen()
+
+    def on_worker_said(self, event: WorkerSaid) -> None:
+        self.message_line.show(event.text, event.kind)
+
+    def _after_edit_request(self, widget: EditorKeys) -> None:
+        if not self.message_line.prompting:
+            widget.typing_done()  # refused: no prompt takes the keys that follow
+
+    # --- groups -----------------------------------------------------------------
+    def on_group_tab_chosen(self, event: GroupTab.Chosen) -> None:
+        self.action_select_group(event.group)
+
+    def action_select_group(self, group: str) -> None:
+        if self.message_line.prompting:
+            return
+        if group == STRENGTH and self.session.strength_sheet is None:
+            self.complain(self.strength_error)
+            return
+        had_focus = self.focused is self.active_sheet
+        self.data_group = group
+        on_strength = group == STRENGTH
+        self.sheet.display = not on_strength
+        self.strength_page.display = on_strength
+        if had_focus or self.focused is None:
+            self.set_focus(self.active_sheet)  # now: an edit asked for next keeps its prompt
+        self.refresh_screen()
+        self._say_group_shown()
+
+    def _say_group_shown(self) -> None:
+        sheet = self.active_sheet
+        message = (
+            f"{GROUP_TITLES[self.data_group]}: {sheet.row_count} rows, "
+            f"{sheet.pages} page{'s' if sheet.pages > 1 else ''}."
+        )
+        strength = self.session.strength_sheet
+        if self.data_group == STRENGTH and strength is not None:
+            message += f" {strength.side.capitalize()} limb, from {strength.data.title}."
+        self.say(message)
+
+    # --- commands ---------------------------------------------------------------
+    async def on_button_pressed(self, event: Button.Pressed) -> None:
+        spec = next((c for c in COMMANDS if event.button.id == f"command-{c.name}"), None)
+        if spec is not None:
+            event.stop()
+            await self.run_action(spec.action)
+
+    def action_quit(self) -> None:
+        self.app.exit()
+
+    def action_next_page(self) -> None:
+        self._turn_page(1)
+
+    def action_previous_page(self) -> None:
+        self._turn_page(-1)
+
+    def _turn_page(self, pages: int) -> None:
+        sheet = self.active_sheet
+        if not sheet.turn_page(pages):
+            self.say("This is the last page." if pages > 0 else "This is the first page.")
+        else:
+            self.say(f"Page {sheet.page + 1} of {sheet.pages}.")
+
+    def action_convert_units(self) -> None:
+        strength = self.session.strength_sheet
+        if self.data_group == STRENGTH and strength is not None:
+            unit = strength.toggle_unit()
+            self.refresh_screen()
+            self.say(f"Strength now shown in {unit}.")
+            return
+        state = self.figure.groups[self.data_group]
+        self.session.set_unit(self.data_group, other_unit(self.data_group, state.unit))
+        self.refresh_screen()
+        self.say(f"{GROUP_TITLES[self.data_group]} now shown in {DISPLAY[state.unit]}.")
+
+    def action_undo(self) -> None:
+        """Undo the newest edit, whether of the figure or of a strength angle."""
+        if self.session.undo():
+            self.refresh_screen()
+            self.say("Undone.")
+        else:
+            self.say("Nothing to undo.")
+
+    def action_message_log(self) -> None:
+        from sass_tui.ui.message_log import MessageLog
+
+        self.app.push_screen(MessageLog(self.message_line.history))
+
+    def action_next_warning(self) -> None:
+        if not self.session.warnings:
+            self.say("No warnings from the last file loaded.")
+            return
+        self._warning_index = (self._warning_index + 1) % len(self.session.warnings)
+        self._show_warning()
+
+    def _show_warning(self) -> None:
+        warnings = self.session.warnings
+        self.message_line.show(
+            f"{warnings[self._warning_index]}  "
+            f"[warning {self._warning_index + 1} of {len(warnings)}; w: next]",
+            "warning",
+        )
+
+    # --- Input Data -----------------------------------------------------------------
+    def action_input_data(self) -> None:
+        if self.data_group == STRENGTH:
+            self.ask("Strength data file:", self._input_data_from)
+            return
+        self.ask(f"{GROUP_TITLES[self.data_group]} population file:", self._input_data_from)
+
+    def _input_data_from(self, text: str) -> None:
+        if not text.strip():
+            self.say("No file given; nothing loaded.")
+            return
+        # Refused here, before any worker opens it: a FIFO would block it forever.
+        path = regular_file(text.strip())
+        self.say(f"Reading {text.strip()} ...")
+        self.read_data_file(path, self.data_group)
+
+    @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
+    def read_data_file(self, path: Path, group: str) -> None:
+        """Input Data: read in a worker; a file that fails changes nothing."""
+        what = "strength data" if group == STRENGTH else GROUP_TITLES[group]
+        try:
+            if group == STRENGTH:
+                self.post_message(StrengthRead(read_strength_file(path)))
+            else:
+                self.post_message(PopulationRead(group, read_population_file(path, group)))
+        except SassError as exc:
+            self.post_message(WorkerSaid(f"{exc}; {what} unchanged.", "error"))
+        except OSError as exc:
+            self.post_message(
+                WorkerSaid(f"{path}: {exc.strerror or exc}; {what} unchanged.", "error")
+            )
+
+    def on_strength_read(self, event: StrengthRead) -> None:
+        data = event.data
+        self.session.load_strength(data)
+        self._warning_index = 0
+        self.refresh_screen()
+        self.say(f"Loaded strength from {data.path} ({data.title}).")
+        if self.session.warnings:
+            self._show_warning()
+
+    def on_population_read(self, event: PopulationRead) -> None:
+        group, data = event.group, event.data
+        gender = self.figure.gender
+        if not data.has(gender):
+            self.complain(
+                f"{data.path}: no 'T {gender.upper()}' section for this {gender} "
+                f"figure; {GROUP_TITLES[group]} unchanged."
+            )
+            return
+        try:
+            self.session.load_group(group, data)
+        except SassError as exc:
+            self.complain(f"{exc}; {GROUP_TITLES[group]} unchanged.")
+            return
+        self._warning_index = 0
+        self.refresh_screen()
+        self.say(f"Loaded {GROUP_TITLES[group]} from {data.path} ({data.title}).")
+        if self.session.warnings:
+            self._show_warning()
+
+    # --- Right -> Left -------------------------------------------------------------------
+    def action_switch_side(self) -> None:
+        strength = self.session.strength_sheet
+        if not (self.data_group == STRENGTH and strength is not None):
+            self.say("Right → Left applies to the Strength group (press s).")
+            return
+        self.ask(
+            f"Scaling factor for the non-dominant limb "
+            f"(RETURN = default {DEFAULT_NON_DOMINANT_FACTOR:.3f}):",
+            lambda text: self.say(strength.switch_side(text) + "."),
+        )
+
+    # --- Create Figure --------------------------------------------------------------
+    def _default_name(self) -> str:
+        figure = self.figure
+        return default_fig_name(figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
+
+    def action_create_figure(self) -> None:
+        missing = self.figure.missing_groups()
+        if missing:
+            self.complain(
+                f"Cannot create a figure: {', '.join(missing)} not loaded for {self.figure.gender}."
+            )
+            return
+        default = self._default_name()
+        if self.figure.person:
+            default = f"{_slug(self.figure.person)}.fig"
+        self.ask(
+            f"Figure file name [{default}]:",
+            lambda text: self._create_figure_named(text.strip() or default),
+        )
+
+    def _create_figure_named(self, name: str) -> None:
+        path = user_path(name)
+        strength = self.session.strength_sheet
+        if strength is None:
+            self._write_unless_kept(path, lambda: self._write_figure(path, []))
+            return
+
+        def include(answer: str) -> None:
+            word = answer.strip().lower()
+            if word in ("n", "no"):
+                sections = []
+            elif word in ("", "y", "yes"):
+                sections = [fig_section(strength)]
+            else:
+                raise AnswerError(f"expected y or n, got {answer.strip()!r}; nothing written")
+            self._write_unless_kept(path, lambda: self._write_figure(path, sections))
+
+        self.ask("Include strength in the figure? (Y/n)", include)
+
+    def _write_unless_kept(self, path: Path, write: Callable[[], None]) -> None:
+        """Write, but an existing file only after the user says y."""
+        if not path.exists():
+            write()
+            return
+
+        def overwrite(answer: str) -> None:
+            if answer.strip().lower() in ("y", "yes"):
+                write()
+            else:
+                self.say(f"Not written; {path} kept as it was.")
+
+        self.ask(f"{path} exists. Overwrite it? (y/N)", overwrite)
+
+    def _write_figure(self, path: Path, sections: list) -> None:
+        """Rendered here, on the UI thread: the worker gets the text, never the
+        figure the user may be editing meanwhile."""
+        figure = self.figure
+        text = render_fig(figure, sections)
+        filled = sum(int(figure.output_values(g)[1].sum()) for g in GROUPS)
+        note = (
+            f" {filled} values not measured for {figure.person} came from the population."
+            if filled
+            else ""
+        )
+        self.write_text(path, text, f"Wrote {path}.{note}")
+
+    @work(thread=True, group="write", exit_on_error=False)
+    def write_text(self, path: Path, text: str, done: str) -> None:
+        from sass_tui.model.atomic import write_text_atomic
+
+        try:
+            write_text_atomic(path, text)
+        except (SassError, OSError) as exc:
+            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else exc
+            self.post_message(WorkerSaid(f"{path}: cannot write: {reason}", "error"))
+            return
+        self.post_message(WorkerSaid(done))
+
+    # --- Export HAnim -----------------------------------------------------------------
+    def action_export_hanim(self) -> None:
+        default = Path(self._default_name()).with_suffix(".x3d").name
+        self.ask(
+            f"HAnim file name [{default}]:",
+            lambda text: self._export_hanim_named(user_path(text.strip() or default)),
+        )
+
+    def _export_hanim_named(self, path: Path) -> None:
+        from sass_tui.model.hanim import render_hanim
+
+        text = render_hanim(self.figure)  # on the UI thread: see _write_figure
+        self._write_unless_kept(
+            path,
+            lambda: self.write_text(path, text, f"Exported the HAnim humanoid to {path}."),
+        )
+
+    # --- editing the data section -------------------------------------------------------
+    def _pass_to_prompt(self, widget: EditorKeys, initial: str) -> bool:
+        """An edit asked for while a prompt is already open (its key was typed
+        before the prompt took the focus): the key is the prompt's."""
+        if not self.message_line.prompting:
+            return False
+        if initial:
+            self.message_line.type_ahead("paste", None, initial)
+        else:
+            self.message_line.type_ahead("enter", None)
+        widget.typing_done()
+        return True
+
+    def on_data_sheet_edit_requested(self, event: DataSheet.EditRequested) -> None:
+        event.stop()
+        if self._pass_to_prompt(self.active_sheet, event.initial):
+            return
+        try:
+            if self.data_group == STRENGTH:
+                self.edit_angle(event.row, event.column, event.initial)
+            else:
+                self.edit_cell(event.row, event.column, event.initial)
+        except SassError as exc:
+            self.complain(str(exc))
+        self._after_edit_request(self.active_sheet)
+
+    def edit_cell(self, row: int, column: int, initial: str = "") -> None:
+        """Prompt for a data cell (column 0-5: value, percentile of x, y, z)."""
+        group = self.data_group
+        axis, is_percentile = column // 2, bool(column % 2)
+        self.figure.check_cell(group, row, axis)
+        state = self.figure.groups[group]
+        name = f"{state.rows[row].label} {AXES[axis]}"
+        if is_percentile:
+            current = format_percentile(state.percentiles[row, axis])
+            prompt = f"{name} percentile [{current}]:"
+        else:
+            shown = convert(state.values[row, axis], GROUP_UNITS[group][0], state.unit)
+            current = format_value(shown, state.unit)
+            prompt = f"{name} value [{current} {DISPLAY[state.unit]}]:"
+        self.ask(
+            prompt, lambda text: self._edit_cell(group, row, axis, is_percentile, text), initial
+        )
+
+    def _edit_cell(self, group: str, row: int, axis: int, is_percentile: bool, text: str) -> None:
+        state = self.figure.groups[group]
+        name = f"{state.rows[row].label} {AXES[axis]}"
+        if not text.strip():
+            self.say(f"{name} unchanged.")
+            return
+        if is_percentile:
+            self.session.set_cell_percentile(group, row, axis, parse_percentile(text))
+        else:
+            typed = parse_quantity(text, state.unit)
+            self.session.set_value(
+                group, row, axis, convert(typed, state.unit, GROUP_UNITS[group][0])
+            )
+        state = self.figure.groups[group]
+        canonical = GROUP_UNITS[group][0]
+        shown = convert(state.values[row, axis], canonical, state.unit)
+        percentile = state.percentiles[row, axis]
+        if math.isnan(percentile):
+            stats = state.source.stats(self.figure.gender)[row, axis]
+            if stats[0] == stats[1] == stats[2]:
+                flat = convert(stats[1], canonical, state.unit)
+                where = (
+                    f"no percentile: the population's 5th, 50th and 95th are all "
+                    f"{format_value(flat, state.unit)} {DISPLAY[state.unit]}"
+                )
+            else:
+                where = "no percentile: the population's statistics give none for this value"
+        else:
+            where = f"{format_percentile(percentile)} percentile"
+        self.say(f"{name} = {format_value(shown, state.unit)} {DISPLAY[state.unit]} ({where}).")
+
+    def edit_angle(self, row: int, column: int, initial: str = "") -> None:
+        """Prompt for a joint angle of the strength page (column 0-6)."""
+        sheet = self.session.strength_sheet
+        if sheet is None:
+            self.complain(self.strength_error)
+            return
+        name = f"{sheet.side} {MOTIONS[row].label.lower()}, {JOINT_AXIS_LABELS[column].lower()}"
+        current = format_angle(sheet.angles[row, column])
+        self.ask(
+            f"{name} angle [{current} deg]:",
+            lambda text: self._edit_angle(row, column, text),
+            initial,
+        )
+
+    def _edit_angle(self, row: int, column: int, text: str) -> None:
+        axis = JOINT_AXIS_LABELS[column].lower()
+        if not text.strip():
+            self.say(f"{MOTIONS[row].label} {axis} unchanged.")
+            return
+        result = self.session.set_angle(row, column, text)
+        self.say(
+            f"{result.side.capitalize()} {result.label.lower()} at {axis} "
+            f"{format_angle(result.angles[column])} deg: "
+            f"{format_strength(result.value)} {result.unit} ({result.source})."
+        )
+
+    # --- editing the global data --------------------------------------------------------
+    def on_global_panel_edit_requested(self, event: GlobalPanel.EditRequested) -> None:
+        event.stop()
+        if self._pass_to_prompt(self.query_one(GlobalPanel), event.initial):
+            return
+        self.edit_global(event.field, event.initial)
+        self._after_edit_request(self.query_one(GlobalPanel))
+
+    def edit_global(self, field: str, initial: str = "") -> None:
+        if field == "population":
+            self.complain("The population is read from the population file; it cannot be edited.")
+            return
+        if field == "group_percentile" and self.data_group == STRENGTH:
+            if self.session.strength_sheet is None:
+                self.complain(self.strength_error)
+                return
+        current = global_text(self.figure, self.data_group, field, self.strength_percentile)
+        hint = GLOBAL_HINTS.get(field, f"percentile of every {GROUP_TITLES[self.data_group]} row")
+        label = field.replace("_", " ").capitalize()
+        self.ask(
+            f"{label} ({hint}) [{current}]:", lambda text: self._edit_global(field, text), initial
+        )
+
+    def _edit_global(self, field: str, text: str) -> None:
+        label = field.replace("_", " ").capitalize()
+        if not text.strip():
+            self.say(f"{label} unchanged.")
+            return
+        session = self.session
+        strength = session.strength_sheet
+        if field == "figure_type":
+            session.set_figure_type(text)
+        elif field == "gender":
+            session.set_gender(text)
+        elif field == "mass":
+            session.set_mass(parse_quantity(text, "kg"))
+        elif field == "stature":
+            session.set_stature(parse_quantity(text, "cm"))
+        elif field == "mass_percentile":
+            session.set_mass_percentile(parse_percentile(text))
+        elif field == "stature_percentile":
+            session.set_stature_percentile(parse_percentile(text))
+        elif field == "group_percentile" and self.data_group == STRENGTH and strength is not None:
+            strength.set_percentile(parse_percentile(text))
+        elif field == "group_percentile":
+            session.set_group_percentile(self.data_group, parse_percentile(text))
+        elif field == "motion_speed":
+            session.set_strength_parameter(field, parse_quantity(text, "deg/s"))
+        elif field in ("training_level", "fatigue_level"):
+            try:
+                number = float(text)
+            except ValueError:
+                raise AnswerError(
+                    f"{label.lower()} must be a number, got {text.strip()!r}"
+                ) from None
+            session.set_strength_parameter(field, number)
+        else:
+            session.set_strength_parameter(field, text)
+        shown = global_text(self.figure, self.data_group, field, self.strength_percentile)
+        message = f"{label} = {shown}."
+        if field == "gender":
+            message += " Every group reloaded for this gender."
+        elif field in STRENGTH_PARAMETERS and strength is None:
+            message += " It changes strength only (strength data is not loaded)."
+        elif field in STRENGTH_PARAMETERS:
+            message += " Strength values recomputed."
+        self.say(message)
+
+    # --- Query, Disp. Indv., Disp. More, Disp. Pop. (§12.2.4, §12.4) ----------------------
+    def action_query(self) -> None:
+        self.app.open_query_screen()
+
+    def action_display_individual(self) -> None:
+        self.show_person(0)
+
+    def action_display_more(self) -> None:
+        if self.session.person is None:
+            self.complain("Disp. Indv. first: Disp. More shows more of the selected list.")
+            return
+        from sass_tui.ui.query_screen import MoreMenu
+
+        def chosen(choice: str | None) -> None:
+            if choice is None:
+                self.say("Disp. More cancelled.")
+            elif choice == "Nth Person":
+                self.ask("Enter the number:", self._nth_person)
+            else:
+                total = self.app.selected_count()
+                index = {
+                    "First": 0,
+                    "Last": total - 1,
+                    "Previous": self.session.person_index - 1,
+                    "Next": self.session.person_index + 1,
+                }[choice]
+                self.show_person(index)
+
+        self.app.push_screen(MoreMenu(), chosen)
+
+    def _nth_person(self, text: str) -> None:
+        try:
+            number = int(text.strip())
+        except ValueError:
+            raise AnswerError(f"expected a whole number such as 3, got {text.strip()!r}") from None
+        self.show_person(number - 1)
+
+    def show_person(self, index: int) -> None:
+        total = self.app.selected_count()
+        if total == 0:
+            self.complain("The selected list is empty: Query, then Select One or Select All.")
+            return
+        if not 0 <= index < total:
+            self.complain(f"There is no person {index + 1}: the selected list holds {total}.")
+            return
+        try:
+            person = self.app.person_figure(index, self.session.population)
+        except (SassError, OSError) as exc:
+            self.complain(f"Cannot display person {index + 1}: {exc}")
+            return
+        self.session.show_person(person, index)
+        self.refresh_screen()
+        self.say(f"Person {index + 1} of {total} in the selected list: {person.person}.")
+
+    def action_display_population(self) -> None:
+        if self.session.person is None:
+            self.say("The population is already shown.")
+            return
+        self.session.show_population()
+        self.refresh_screen()
+        self.say(f"Population {self.figure.population} displayed.")
