@@ -8,7 +8,10 @@ display label, and the labels a population file may give it in its row comment.
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cache
+from types import MappingProxyType
 
 AXES = ("x", "y", "z")
 PERCENTILE_COLUMNS = (5.0, 50.0, 95.0)
@@ -35,6 +38,9 @@ class Row:
     aliases: tuple[str, ...] = ()
 
 
+_SPACES = re.compile(r"\s+")
+
+
 def normalise_label(text: str) -> str:
     """'/* r Upper Arm */' -> 'r upper arm' (for matching row comments)."""
     text = text.strip()
@@ -42,7 +48,7 @@ def normalise_label(text: str) -> str:
         text = text[2:]
     if text.endswith("*/"):
         text = text[:-2]
-    return re.sub(r"\s+", " ", text.strip().lower())
+    return _SPACES.sub(" ", text.strip().lower())
 
 
 def _side_rows(stem: str, label: str, extra: tuple[str, ...] = ()) -> list[Row]:
@@ -136,14 +142,17 @@ def row_index(group: str, name: str) -> int:
     raise KeyError(f"no row {name!r} in {GROUP_TITLES[group]}")
 
 
-def label_lookup(group: str) -> dict[str, int]:
+@cache
+def label_lookup(group: str) -> Mapping[str, int]:
+    """Every way a file may label a row of `group` -> the row's index (read-only:
+    built once, it is shared)."""
     table: dict[str, int] = {}
     for i, row in enumerate(ROWS[group]):
         table[normalise_label(row.label)] = i
         table[row.name.replace("_", " ")] = i
         for alias in row.aliases:
             table[normalise_label(alias)] = i
-    return table
+    return MappingProxyType(table)
 
 
 # --- .fig variable names -------------------------------------------------
