@@ -147,6 +147,9 @@ def main() -> int:
     rows: list[tuple[str, float, float, str]] = []
     with tempfile.TemporaryDirectory() as tmp:
         env = dict(os.environ, SASS_DB=str(Path(tmp) / "ansur.db"))
+        # As on a user's machine: Python keeps compiled modules (some shells set
+        # PYTHONDONTWRITEBYTECODE, which makes every start compile sass anew).
+        env.pop("PYTHONDONTWRITEBYTECODE", None)
         build_ansur_db(Path(env["SASS_DB"]), env)
 
         def run(*command: str) -> Callable[[], float]:
