@@ -128,25 +128,14 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
 def person_figure(args: argparse.Namespace, population: Figure) -> Figure:
     """The person `--person` names, measured against the population figure."""
     from sass_tui.db.individual import fetch_individual, find_person
-    from sass_tui.model.names import GROUPS
+    from sass_tui.db.individual import person_figure as figure_of
 
     conn = open_db(args)
     try:
         person = fetch_individual(conn, find_person(conn, args.person))
     finally:
         conn.close()
-    figure = population.for_person(
-        person.name,
-        person.gender,
-        {g: person.groups[g] for g in GROUPS},
-        mass=person.mass,
-        stature=person.stature,
-        handedness=person.handedness if person.handedness in ("right", "left") else None,
-        **{
-            k: person.strength.get(k)
-            for k in ("strength_type", "motion_speed", "training_level", "fatigue_level")
-        },
-    )
+    figure = figure_of(person, population)
     figure.set_figure_type(population.figure_type)
     return figure
 

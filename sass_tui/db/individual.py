@@ -7,7 +7,7 @@ from __future__ import annotations
 import sqlite3
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -22,6 +22,9 @@ from sass_tui.db.schema import (
     strength_summary,
 )
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
+
+if TYPE_CHECKING:
+    from sass_tui.model.figure import Figure
 
 
 @dataclass
@@ -291,3 +294,21 @@ def strength_measurements(person: Individual) -> list[StrengthMeasurement]:
             (0.0, 0.0, 0.0, angle(row["elbow_ang"]), *map(angle, wrist)),
         )
     return out
+
+
+def person_figure(person: Individual, population: Figure) -> Figure:
+    """The person's figure (report §12.4, Disp. Indv.): their own values,
+    percentiles against `population`, unmeasured cells from the population
+    (the figure says which); `population` is left as it was."""
+    from sass_tui.model.names import GROUPS
+    from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS
+
+    return population.for_person(
+        person.name,
+        person.gender,
+        {g: person.groups[g] for g in GROUPS},
+        mass=person.mass,
+        stature=person.stature,
+        handedness=person.handedness if person.handedness in ("right", "left") else None,
+        **{k: person.strength.get(k) for k in EXPERIMENT_PARAMETERS},
+    )
