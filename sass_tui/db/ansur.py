@@ -370,12 +370,18 @@ def _subject_ids(chunk: _Chunk, column: int, seen: dict[int, int]) -> list[int]:
     out = []
     for k, row in enumerate(chunk.rows):
         text = row[column].strip()
-        # isascii: str.isdigit also takes superscripts such as "¹", which int() refuses
-        if not (text.isascii() and text.isdigit()) or not 1 <= int(text) <= MAX_SUBJECT_ID:
+        # isascii: str.isdigit also takes superscripts such as "¹", which int()
+        # refuses; the length bound keeps int() off a 30,000-digit string.
+        if (
+            not (text.isascii() and text.isdigit())
+            or len(text) > 20
+            or not 1 <= int(text) <= MAX_SUBJECT_ID
+        ):
+            shown = text if len(text) <= 40 else f"{text[:20]}… ({len(text)} characters)"
             chunk.fail(
                 k,
                 f"column {ID_COLUMN}: expected a whole number from 1 to {MAX_SUBJECT_ID}, "
-                f"found {text!r}",
+                f"found {shown!r}",
             )
         subject = int(text)
         if subject in seen:

@@ -225,3 +225,10 @@ def test_a_subject_id_in_superscript_digits_is_refused(tmp_path, male_lines):
     path = _write(tmp_path, _with_value(male_lines[:3], 1, "subjectid", "¹²"))
     with pytest.raises(AnsurImportError, match=":2: column subjectid"):
         read_ansur(path)
+
+
+def test_a_subject_id_of_30000_digits_is_refused_cleanly(tmp_path, male_lines):
+    # int() refuses strings over 4,300 digits with a ValueError of its own.
+    path = _write(tmp_path, _with_value(male_lines[:3], 1, "subjectid", "9" * 30_000))
+    with pytest.raises(AnsurImportError, match=r":2: column subjectid.*30000 characters"):
+        read_ansur(path)
