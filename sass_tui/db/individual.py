@@ -206,11 +206,11 @@ def person_record(conn: sqlite3.Connection, id_num: int) -> dict[str, object]:
     ).fetchone()
     measures: dict[str, float] = {}
     for k, name in enumerate(MEASURES):
-        value = None if measured is None else measured[k]
-        if value is None:
+        stored = None if measured is None else measured[k]
+        if stored is None:
             unmeasured.append(f"measure.{name}")
         else:
-            measures[name] = float(value)
+            measures[name] = float(stored)
 
     def number(value: float) -> float | None:
         return None if value != value else value
