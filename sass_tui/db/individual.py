@@ -36,7 +36,8 @@ class Individual:
     source: str
     groups: dict[str, np.ndarray]  # GIRTH (25, 3), JOINT_LIMITS (40, 3), CENTER_OF_MASS (21, 3)
     segment_masses: dict[str, float]  # girth seg_name -> kg (also the mass-only segments)
-    strength: dict[str, object]  # as strength_q: type, speed, training, fatigue, <motion>_max (N-m)
+    # as strength_q: type, speed, training, fatigue, <motion>_max (N-m)
+    strength: dict[str, str | float | None]
     experiments: list[dict[str, Any]] = field(default_factory=list)  # strength_par rows
     shoulder: list[dict[str, Any]] = field(default_factory=list)
     elbow: list[dict[str, Any]] = field(default_factory=list)
