@@ -25,7 +25,7 @@ from sass_tui.cli import (
     serve,
     strength,
 )
-from sass_tui.cli.options import DB_HELP
+from sass_tui.cli.options import DB_HELP, SubParsers
 
 VERBS = (fig, export, strength, query, person, population, predict, fit, family, db, serve)
 
@@ -69,11 +69,11 @@ class _NamesOnly:
     """Stands in for the subparsers of a verb not being run: the verb is listed
     with its help, and the options it would add are not built."""
 
-    def __init__(self, commands: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    def __init__(self, commands: SubParsers) -> None:
         self.commands = commands
 
-    def add_parser(self, name: str, **kwargs: object) -> _Sink:
-        self.commands.add_parser(name, help=kwargs.get("help"))
+    def add_parser(self, name: str, help: str | None = None, **kwargs: object) -> _Sink:
+        self.commands.add_parser(name, help=help)
         return _Sink()
 
 

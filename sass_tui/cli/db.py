@@ -6,11 +6,11 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.options import add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.cli.progress import progress_for
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     db = commands.add_parser("db", help="create the database or import data into it")
     add_db_option(db)
     actions = db.add_subparsers(dest="db_command", metavar="ACTION", required=True)

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import argparse
 
-from sass_tui.cli.options import add_figure_options, figure_from_args, print_warnings
+from sass_tui.cli.options import SubParsers, add_figure_options, figure_from_args, print_warnings
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     export = commands.add_parser("export", help="export the figure to another format")
     formats = export.add_subparsers(dest="format", metavar="FORMAT", required=True)
     hanim = formats.add_parser(

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from sass_tui.cli.options import add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.vocabulary import GENDERS
 
 DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.fit.DEFAULT_POPULATION (no import here)
@@ -30,7 +30,7 @@ def measures_argument(text: str) -> list[str]:
     return names
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     family = commands.add_parser(
         "family",
         help="manikin family: boundary figures of a coverage ellipsoid, coverage counted",

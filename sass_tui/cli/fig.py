@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 
 from sass_tui.cli.options import (
+    SubParsers,
     add_figure_options,
     figure_from_args,
     person_file_name,
@@ -12,7 +13,7 @@ from sass_tui.cli.options import (
 )
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     fig = commands.add_parser("fig", help="write a PEABODY body description file (.fig)")
     fig.add_argument(
         "-o",

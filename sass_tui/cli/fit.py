@@ -6,7 +6,7 @@ import argparse
 import sys
 from typing import TYPE_CHECKING
 
-from sass_tui.cli.options import add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -35,7 +35,7 @@ def mix_argument(text: str) -> dict[str, float]:
     return mix
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     fit = commands.add_parser(
         "fit",
         help="fit test: the share of a population that design limits accommodate",

@@ -3,12 +3,15 @@
 from __future__ import annotations
 
 import argparse
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeAlias
 
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS
 
 if TYPE_CHECKING:
     from sass_tui.model.figure import Figure
+
+# What a verb's register() adds its parser to (argparse's class is generic only to type checkers).
+SubParsers: TypeAlias = "argparse._SubParsersAction[argparse.ArgumentParser]"
 
 DB_HELP = "database file (default: $SASS_DB, else $XDG_DATA_HOME/sass/sass.db)"
 

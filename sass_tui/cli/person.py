@@ -8,10 +8,10 @@ from __future__ import annotations
 import argparse
 import sys
 
-from sass_tui.cli.options import add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     person = commands.add_parser("person", help="show people of the database, every value")
     add_db_option(person)
     person.add_argument("--format", choices=("table", "json"), default="table")

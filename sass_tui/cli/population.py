@@ -12,10 +12,10 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.options import add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     population = commands.add_parser(
         "population", help="make population files from the people a query selects"
     )

@@ -13,7 +13,7 @@ import argparse
 import sys
 from typing import TYPE_CHECKING, Any, TextIO
 
-from sass_tui.cli.options import add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
 
@@ -28,7 +28,7 @@ class PredictArgumentError(ValueError, SassError):
         SassError.__init__(self, message, where=where)
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     predict = commands.add_parser(
         "predict",
         help="predict every value of a person from the known ones (with 90 %% intervals)",

@@ -7,10 +7,10 @@ import sys
 from collections.abc import Iterable
 from typing import TextIO
 
-from sass_tui.cli.options import add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     query = commands.add_parser("query", help="query the anthropometric database")
     add_db_option(query)
     query.add_argument("--format", choices=("table", "csv", "json"), default="table")

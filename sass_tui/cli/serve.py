@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import argparse
 
-from sass_tui.cli.options import add_db_option
+from sass_tui.cli.options import SubParsers, add_db_option
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     serve = commands.add_parser(
         "serve",
         help="serve the spreadsheet to a web browser",

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 
+from sass_tui.cli.options import SubParsers
 from sass_tui.model.vocabulary import (
     GENDERS,
     HANDEDNESS,
@@ -20,7 +21,7 @@ from sass_tui.model.vocabulary import (
 )
 
 
-def register(commands: argparse._SubParsersAction) -> None:
+def register(commands: SubParsers) -> None:
     parser = commands.add_parser(
         "strength",
         help="print a strength at a joint configuration (stored or predicted)",
@@ -107,6 +108,7 @@ def run(args: argparse.Namespace) -> int:
     how = row.source
     if row.source == "predicted":
         fit = data.model(figure.gender, sheet.side).fits[index]
+        assert fit is not None  # a predicted row's motion has data, so a fit
         how += f" by the least-squares equation, fit error {fit.rms_percent:.1f} % RMS"
     if row.extrapolated:
         how += f"; EXTRAPOLATED: {row.extrapolated}"

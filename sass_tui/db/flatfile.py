@@ -27,9 +27,10 @@ from __future__ import annotations
 
 import math
 import sqlite3
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any, NoReturn
 
 import numpy as np
 
@@ -39,6 +40,7 @@ from sass_tui.db.schema import (
     JOINT_LIMIT_NAMES,
     MASS_ONLY_SEGMENTS,
     PeopleBatch,
+    SqlRow,
     check_writable,
     store_people,
     transaction,
@@ -103,7 +105,7 @@ class _Reader:
             raise FlatFileError(f"{path}: cannot read: {exc.strerror or exc}") from None
         self.line = 0
 
-    def records(self, width: int, what: str, rest: bool = False):
+    def records(self, width: int, what: str, rest: bool = False) -> Iterator[list[str]]:
         for line_number, text in enumerate(self.text.splitlines(), start=1):
             self.line = line_number  # fail() names it
             if not text.strip():
@@ -113,7 +115,7 @@ class _Reader:
                 self.fail(f"expected {width} comma-separated fields ({what}), found {len(fields)}")
             yield fields
 
-    def fail(self, message: str):
+    def fail(self, message: str) -> NoReturn:
         raise FlatFileError(f"{self.path}:{self.line}: {message}")
 
     def number(self, text: str, field_name: str) -> float:
@@ -197,7 +199,7 @@ def read_flat_files(files: FlatFiles) -> PeopleBatch:
             _Reader(Path(files.center_of_mass)), index, CENTER_OF_MASS_NAMES, 3
         )
     if files.strength_par:
-        _read_strength(files, index, batch)
+        _read_strength(files, files.strength_par, index, batch)
     return batch
 
 
@@ -208,8 +210,8 @@ def _person_id(reader: _Reader, text: str, index: dict[int, int]) -> int:
     return index[pid]
 
 
-def _read_person(reader: _Reader) -> dict[str, list]:
-    out: dict[str, list] = {
+def _read_person(reader: _Reader) -> dict[str, list[Any]]:
+    out: dict[str, list[Any]] = {
         k: []
         for k in ("id_num", "name", "gender", "stature", "mass", "handedness", "age", "source")
     }
@@ -246,11 +248,11 @@ def _read_group(
     names: Sequence[str],
     width: int,
     extra_names: Sequence[str] = (),
-) -> tuple[np.ndarray, list[tuple]]:
+) -> tuple[np.ndarray, list[SqlRow]]:
     values = np.full((len(index), len(names), width), np.nan)
     row_of = {name: r for r, name in enumerate(names)}
     seen: dict[tuple[int, str], int] = {}
-    extra: list[tuple] = []
+    extra: list[SqlRow] = []
     what = "id, name, " + ", ".join(f"value {k + 1}" for k in range(width))
     for f in reader.records(width + 2, what):
         i = _person_id(reader, f[0], index)
@@ -277,8 +279,10 @@ def _unit(reader: _Reader, text: str, canonical: str) -> str:
     return unit
 
 
-def _read_strength(files: FlatFiles, index: dict[int, int], batch: PeopleBatch) -> None:
-    reader = _Reader(Path(files.strength_par))
+def _read_strength(
+    files: FlatFiles, strength_par: Path, index: dict[int, int], batch: PeopleBatch
+) -> None:
+    reader = _Reader(Path(strength_par))
     units: dict[tuple[int, int], tuple[str, str]] = {}
     for f in reader.records(
         10,
@@ -312,17 +316,17 @@ def _read_strength(files: FlatFiles, index: dict[int, int], batch: PeopleBatch) 
             reader.fail(f"experiment {exp} of id_num {f[0]} is not in the strength parameter file")
         return (i, exp, *units[i, exp])
 
-    def angles(reader, texts, unit):
+    def angles(reader: _Reader, texts: list[str], unit: str) -> list[float | None]:
         return [_none(convert(reader.number(t, "angle"), unit, "deg")) for t in texts]
 
-    def strengths(reader, texts, unit):
+    def strengths(reader: _Reader, texts: list[str], unit: str) -> list[float | None]:
         return [_none(convert(reader.number(t, "strength"), unit, "N_m")) for t in texts]
 
     for key, target in (("shoulder", batch.shoulder), ("wrist", batch.wrist)):
         if getattr(files, key) is None:
             continue
         reader = _Reader(Path(getattr(files, key)))
-        seen = set()
+        seen: set[tuple[int, int, str]] = set()
         for f in reader.records(9, f"id, exp_num, {key} x, y, z, elbow, axis, pstrgh, nstrgh"):
             i, exp, angle_unit, strength_unit = experiment(reader, f)
             axis = reader.choice(f[6], ("x", "y", "z"), "axis")
@@ -340,14 +344,14 @@ def _read_strength(files: FlatFiles, index: dict[int, int], batch: PeopleBatch) 
             )
     if files.elbow is not None:
         reader = _Reader(Path(files.elbow))
-        seen = set()
+        seen_experiments: set[tuple[int, int]] = set()
         for f in reader.records(
             11, "id, exp_num, elbow, shoulder x, y, z, wrist x, y, z, pstrgh, nstrgh"
         ):
             i, exp, angle_unit, strength_unit = experiment(reader, f)
-            if (i, exp) in seen:
+            if (i, exp) in seen_experiments:
                 reader.fail(f"duplicate experiment {exp} for id_num {f[0]}")
-            seen.add((i, exp))
+            seen_experiments.add((i, exp))
             batch.elbow.append(
                 (
                     i,
@@ -358,7 +362,7 @@ def _read_strength(files: FlatFiles, index: dict[int, int], batch: PeopleBatch) 
             )
 
 
-def _none(value: float):
+def _none(value: float) -> float | None:
     return None if value != value else value
 
 
@@ -375,7 +379,7 @@ def import_flat_files(conn: sqlite3.Connection, files: FlatFiles) -> int:
 # --- writing (the default data set generator) ------------------------------
 
 
-def _fmt(value) -> str:
+def _fmt(value: float | None) -> str:
     if value is None or value != value:
         return "999.0"
     return f"{value:.2f}"

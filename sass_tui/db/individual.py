@@ -39,7 +39,8 @@ class Individual:
     source: str
     groups: dict[str, np.ndarray]  # GIRTH (25, 3), JOINT_LIMITS (40, 3), CENTER_OF_MASS (21, 3)
     segment_masses: dict[str, float]  # girth seg_name -> kg (also the mass-only segments)
-    strength: dict[str, object]  # as strength_q: type, speed, training, fatigue, <motion>_max (N-m)
+    # as strength_q: type, speed, training, fatigue, <motion>_max (N-m)
+    strength: dict[str, str | float | None]
     experiments: list[dict[str, Any]] = field(default_factory=list)  # strength_par rows
     shoulder: list[dict[str, Any]] = field(default_factory=list)
     elbow: list[dict[str, Any]] = field(default_factory=list)
@@ -209,11 +210,11 @@ def person_record(conn: sqlite3.Connection, id_num: int) -> dict[str, object]:
     ).fetchone()
     measures: dict[str, float] = {}
     for k, name in enumerate(MEASURES):
-        value = None if measured is None else measured[k]
-        if value is None:
+        stored = None if measured is None else measured[k]
+        if stored is None:
             unmeasured.append(f"measure.{name}")
         else:
-            measures[name] = float(value)
+            measures[name] = float(stored)
 
     def number(value: float) -> float | None:
         return None if value != value else value

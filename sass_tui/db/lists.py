@@ -21,6 +21,7 @@ from __future__ import annotations
 import sqlite3
 import threading
 from pathlib import Path
+from typing import Any
 
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.query import LIST_FIELDS, compile_query
@@ -78,7 +79,7 @@ class QueryLists:
         return count
 
     # --- reading -----------------------------------------------------------------
-    def page(self, which: str, offset: int, limit: int = 25) -> list[dict]:
+    def page(self, which: str, offset: int, limit: int = 25) -> list[dict[str, Any]]:
         sql = (
             f"SELECT {_SELECT} FROM {_TABLES[which]} l JOIN person p ON p.id_num = l.id_num "
             f"LEFT JOIN strength_q sq ON sq.id_num = l.id_num "

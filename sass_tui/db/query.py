@@ -27,14 +27,16 @@ from __future__ import annotations
 import math
 import re
 import sqlite3
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any
+from typing import Any, NoReturn
 
 # The parser is lark's stand-alone LALR module generated from GRAMMAR by
 # scripts/make_query_parser.py: importing it costs a third of importing lark
 # and building the grammar in every process (docs/performance.md).
 from sass_tui.db._query_parser import (
+    Lark,
     Lark_StandAlone,
     Token,
     Transformer,
@@ -119,16 +121,17 @@ class QueryError(ValueError, SassError):
 
 
 @lru_cache(maxsize=1)
-def parser() -> Any:
+def parser() -> Lark:
     """The LALR parser of GRAMMAR (positions kept for error columns)."""
-    return Lark_StandAlone()
+    standalone: Lark = Lark_StandAlone()
+    return standalone
 
 
 @dataclass(frozen=True)
 class CompiledQuery:
     text: str
     where: str
-    params: tuple
+    params: tuple[object, ...]
     tables: tuple[tuple[str, str], ...]  # (alias, table) joined to person p
 
     def from_clause(self) -> str:
@@ -139,7 +142,12 @@ class CompiledQuery:
         return f"person p{joins}"
 
 
-class _Compiler(Transformer):
+# What the compiler makes of a subtree: SQL and its parameters; of a value: (kind, token, unit).
+_Fragment = tuple[str, list[object]]
+_Value = tuple[str, Token, "Token | None"]
+
+
+class _Compiler(Transformer[Token, _Fragment]):
     def __init__(self, text: str):
         super().__init__()
         self.text = text
@@ -155,39 +163,39 @@ class _Compiler(Transformer):
             )
         return self.tables.setdefault(table, f"t{len(self.tables)}")
 
-    def _fail(self, message: str, token) -> None:
+    def _fail(self, message: str, token: Token | None) -> NoReturn:
         raise QueryError(message, self.text, getattr(token, "column", None))
 
-    def or_expr(self, items):
+    def or_expr(self, items: list[_Fragment]) -> _Fragment:
         return (
             "(" + " OR ".join(sql for sql, _ in items) + ")",
             [p for _, ps in items for p in ps],
         )
 
-    def and_expr(self, items):
+    def and_expr(self, items: list[_Fragment]) -> _Fragment:
         return (
             "(" + " AND ".join(sql for sql, _ in items) + ")",
             [p for _, ps in items for p in ps],
         )
 
-    def field(self, names):
+    def field(self, names: list[Token]) -> list[Token]:
         self._field_token = names[0]  # for _alias's error: the field being resolved
         return list(names)
 
     @v_args(inline=True)
-    def number(self, value, unit=None):
+    def number(self, value: Token, unit: Token | None = None) -> _Value:
         return ("number", value, unit)
 
     @v_args(inline=True)
-    def word(self, value):
+    def word(self, value: Token) -> _Value:
         return ("word", value, None)
 
     @v_args(inline=True)
-    def quoted(self, value):
+    def quoted(self, value: Token) -> _Value:
         return ("text", value, None)
 
     @v_args(inline=True)
-    def comparison(self, names, op, value):
+    def comparison(self, names: list[Token], op: Token, value: _Value) -> _Fragment:
         alias, column, unit, words = self._resolve(names)
         sql_op = _OPERATORS[str(op)]
         kind, token, unit_token = value
@@ -210,7 +218,9 @@ class _Compiler(Transformer):
             )
         if words is not None:
             if kind == "text":
-                token = Token.new_borrow_pos("NAME", _unquote(token), token)
+                # lark's stand-alone generator defines _T three times, so mypy reads this
+                # classmethod's cls as a Lark's: the generated module's own typing slip.
+                token = Token.new_borrow_pos("NAME", _unquote(token), token)  # type: ignore[misc]
             if kind not in ("word", "text") or token.lower() not in words:
                 self._fail(
                     f"{'.'.join(names)} is one of {', '.join(words)}, not {str(token)!r}", token
@@ -234,7 +244,7 @@ class _Compiler(Transformer):
                 self._fail(f"{exc}", unit_token)
         return (f"{alias}.{column} {sql_op} ?", [number])
 
-    def _resolve(self, names: list[Token]):
+    def _resolve(self, names: list[Token]) -> FieldInfo:
         try:
             table, column, unit, words = resolve_field([str(n) for n in names])
         except _FieldError as exc:
@@ -378,9 +388,7 @@ def compile_query(text: str) -> CompiledQuery:
     try:
         tree = parser().parse(text)
     except UnexpectedCharacters as exc:
-        raise QueryError(
-            f"unexpected character {text[exc.pos_in_stream]!r}", text, exc.column
-        ) from None
+        raise QueryError(f"unexpected character {exc.char!r}", text, exc.column) from None
     except UnexpectedEOF:
         raise QueryError("the query ends too early", text, len(text) + 1) from None
     except UnexpectedToken as exc:
@@ -424,7 +432,7 @@ _TOKEN_WORDS = {
 }
 
 
-def _expected(expected) -> str:
+def _expected(expected: Iterable[str]) -> str:
     return ", ".join(sorted({_TOKEN_WORDS.get(e, e) for e in expected}))
 
 
@@ -452,9 +460,10 @@ class Query:
         if fast is not None:
             return fast
         sql = f"SELECT count(*) FROM {self.compiled.from_clause()} WHERE {self.compiled.where}"
-        return self.conn.execute(sql, self.compiled.params).fetchone()[0]
+        count: int = self.conn.execute(sql, self.compiled.params).fetchone()[0]
+        return count
 
-    def _rows(self, extra: str, params: tuple) -> list[dict]:
+    def _rows(self, extra: str, params: tuple[object, ...]) -> list[dict[str, Any]]:
         sql = (
             f"SELECT {_SELECT} FROM {self.compiled.from_clause()} "
             f"LEFT JOIN strength_q sq ON sq.id_num = p.id_num "
@@ -465,11 +474,11 @@ class Query:
             for row in self.conn.execute(sql, self.compiled.params + params)
         ]
 
-    def page(self, offset: int = 0, limit: int = 25) -> list[dict]:
+    def page(self, offset: int = 0, limit: int = 25) -> list[dict[str, Any]]:
         """People offset .. offset+limit-1 in id order (the query list's page)."""
         return self._rows(" ORDER BY p.id_num LIMIT ? OFFSET ?", (int(limit), int(offset)))
 
-    def page_after(self, last_id: int | None, limit: int = 25) -> list[dict]:
+    def page_after(self, last_id: int | None, limit: int = 25) -> list[dict[str, Any]]:
         """The next page after person `last_id` (keyset paging: cost independent of depth)."""
         if last_id is None:
             return self.page(0, limit)
@@ -493,7 +502,7 @@ class Query:
         )
         return self.conn.execute(sql, self.compiled.params)
 
-    def iter_all(self, page_size: int = 1000):
+    def iter_all(self, page_size: int = 1000) -> Iterator[dict[str, Any]]:
         last = None
         while True:
             rows = self.page_after(last, page_size)

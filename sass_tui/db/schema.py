@@ -28,7 +28,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     import numpy as np
@@ -101,7 +101,7 @@ STRENGTH_PARAMETERS = list(EXPERIMENT_PARAMETERS)
 STRENGTH_Q_COLUMNS = STRENGTH_PARAMETERS + [f"{m}_max" for m in MOTION_NAMES]
 
 # query-table name of each (group, row); the axis columns are x, y, z (max for strength)
-QUERY_TABLES = {
+QUERY_TABLES: dict[str, dict[str, str]] = {
     "girth": {name: f"q_girth_{name}" for name in GIRTH_NAMES},
     "joint_limits": {name: f"q_joint_limit_{name}" for name in JOINT_LIMIT_NAMES},
     "center_of_mass": {name: f"q_center_of_mass_{name}" for name in CENTER_OF_MASS_NAMES},
@@ -466,6 +466,9 @@ def row_counts(conn: sqlite3.Connection) -> dict[str, int]:
 
 # --- bulk storage ---------------------------------------------------------
 
+# A row of SQLite values (numbers, text, None), as inserted or fetched.
+SqlRow = tuple[Any, ...]
+
 
 @dataclass
 class PeopleBatch:
@@ -488,15 +491,15 @@ class PeopleBatch:
     girth: np.ndarray | None = None  # (n, 25, 4): x, y, z, mass
     joint_limits: np.ndarray | None = None  # (n, 40, 3)
     center_of_mass: np.ndarray | None = None  # (n, 21, 3)
-    extra_girth: list[tuple] = field(default_factory=list)  # (i, seg, x, y, z, mass)
-    strength_par: list[tuple] = field(
+    extra_girth: list[SqlRow] = field(default_factory=list)  # (i, seg, x, y, z, mass)
+    strength_par: list[SqlRow] = field(
         default_factory=list
     )  # (i, exp, side, type, speed, fatigue, training)
-    shoulder: list[tuple] = field(default_factory=list)  # (i, exp, ax, ay, az, elbow, axis, p, n)
-    elbow: list[tuple] = field(
+    shoulder: list[SqlRow] = field(default_factory=list)  # (i, exp, ax, ay, az, elbow, axis, p, n)
+    elbow: list[SqlRow] = field(
         default_factory=list
     )  # (i, exp, elbow, sx, sy, sz, wx, wy, wz, p, n)
-    wrist: list[tuple] = field(default_factory=list)  # (i, exp, wx, wy, wz, elbow, axis, p, n)
+    wrist: list[SqlRow] = field(default_factory=list)  # (i, exp, wx, wy, wz, elbow, axis, p, n)
     # Survey attributes (PERSON_ATTRIBUTES), each a list of n values or None (no value).
     attributes: dict[str, list[object]] = field(default_factory=dict)
     measures: np.ndarray | None = None  # (n, len(MEASURES)), canonical units
@@ -505,22 +508,17 @@ class PeopleBatch:
         return len(self.id_num)
 
 
-def _opt(value) -> float | None:
-    """NaN -> NULL."""
-    value = float(value)
-    return None if value != value else value
-
-
-def _nullable(array: np.ndarray) -> list:
+def _nullable(array: np.ndarray) -> list[Any]:
     """Array -> nested lists with None for NaN (vectorised: object array)."""
     import numpy as np
 
     out = array.astype(object)
     out[np.isnan(array)] = None
-    return out.tolist()
+    rows: list[Any] = out.tolist()
+    return rows
 
 
-def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iterable[tuple]:
+def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iterable[SqlRow]:
     """(id, row name, v...) for every row that has at least one value."""
     import numpy as np
 
@@ -637,22 +635,29 @@ def _store_strength(conn: sqlite3.Connection, ids: list[int], batch: PeopleBatch
         )
 
 
-def strength_summary(par, shoulder, elbow, wrist, ids: list[int]) -> list[tuple]:
+def strength_summary(
+    par: list[SqlRow],
+    shoulder: list[SqlRow],
+    elbow: list[SqlRow],
+    wrist: list[SqlRow],
+    ids: list[int],
+) -> list[SqlRow]:
     """Per person: id, the parameters of the first experiment (what the query
     list shows), then each motion's maximum over all experiments (None if none)."""
-    motion_index = {m: k for k, m in enumerate(MOTION_NAMES)}
-    first: dict[int, tuple] = {}
+    motion_index: dict[str, int] = {m: k for k, m in enumerate(MOTION_NAMES)}
+    first: dict[int, SqlRow] = {}
     for i, exp, _side, kind, speed, fatigue, training in par:
         if i not in first or exp < first[i][0]:
             first[i] = (exp, kind, speed, training, fatigue)
-    maxima: dict[int, list] = {i: [None] * len(MOTION_NAMES) for i in first}
+    maxima: dict[int, list[float | None]] = {i: [None] * len(MOTION_NAMES) for i in first}
 
-    def note(i: int, motion: str, value) -> None:
+    def note(i: int, motion: str, value: float | None) -> None:
         if value is None or value != value:
             return
         slot = maxima[i]
         k = motion_index[motion]
-        if slot[k] is None or value > slot[k]:
+        current = slot[k]
+        if current is None or value > current:
             slot[k] = value
 
     for i, _exp, *_angles, axis, p, n in shoulder:

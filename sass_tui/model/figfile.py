@@ -9,9 +9,11 @@ The writer follows appendix F; the reader is a lark grammar, built once.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING, cast
 
 import numpy as np
 
@@ -31,7 +33,15 @@ from sass_tui.model.names import (
     joint_limit_variable,
 )
 
+if TYPE_CHECKING:
+    from lark import Lark, Token, Tree
+
+    from sass_tui.model.figure import Figure
+
 ARCHIVES = {"skinny": "skinny.a", "polybody": "polybody.a"}
+# One `name = value unit;` line, and a titled section of them.
+FigVariable = tuple[str, float, str]
+FigSection = tuple[str, list[FigVariable]]
 
 
 class FigureIncompleteError(ValueError, SassError):
@@ -52,10 +62,10 @@ class FigFile:
 # --- writing -------------------------------------------------------------
 
 
-def girth_variables(figure) -> list[tuple[str, float, str]]:
+def girth_variables(figure: Figure) -> list[FigVariable]:
     """Segment scale variables (cm) and flooroffset, in appendix F order."""
     values_by_row, _ = figure.output_values(GIRTH)
-    out = []
+    out: list[FigVariable] = []
     for row, values in zip(ROWS[GIRTH], values_by_row):
         scale = FIG_SCALE.get(row.name, DEFAULT_SCALE)
         for axis, value, factor in zip(AXES, values, scale):
@@ -65,9 +75,11 @@ def girth_variables(figure) -> list[tuple[str, float, str]]:
     return out
 
 
-def _axis_variables(figure, group: str, variable_name, unit: str) -> list[tuple[str, float, str]]:
+def _axis_variables(
+    figure: Figure, group: str, variable_name: Callable[[str, str], str], unit: str
+) -> list[FigVariable]:
     """One variable per row and axis that has a value (999 = none, left out)."""
-    out = []
+    out: list[FigVariable] = []
     for row, values in zip(ROWS[group], figure.output_values(group)[0]):
         for axis, value in zip(AXES, values):
             if not math.isnan(value):
@@ -75,15 +87,15 @@ def _axis_variables(figure, group: str, variable_name, unit: str) -> list[tuple[
     return out
 
 
-def joint_limit_variables(figure) -> list[tuple[str, float, str]]:
+def joint_limit_variables(figure: Figure) -> list[FigVariable]:
     return _axis_variables(figure, JOINT_LIMITS, joint_limit_variable, "deg")
 
 
-def center_of_mass_variables(figure) -> list[tuple[str, float, str]]:
+def center_of_mass_variables(figure: Figure) -> list[FigVariable]:
     return _axis_variables(figure, CENTER_OF_MASS, center_of_mass_variable, "cm")
 
 
-def render_fig(figure, extra_sections: list[tuple[str, list[tuple[str, float, str]]]] = ()) -> str:
+def render_fig(figure: Figure, extra_sections: Sequence[FigSection] = ()) -> str:
     missing = figure.missing_groups()
     if missing:
         raise FigureIncompleteError(
@@ -142,7 +154,7 @@ def _assignment(name: str, value: float, unit: str) -> str:
     return f"{name} = {value:.2f}{unit};"
 
 
-def write_fig(figure, path: str | Path, extra_sections=()) -> Path:
+def write_fig(figure: Figure, path: str | Path, extra_sections: Sequence[FigSection] = ()) -> Path:
     """Write the figure's .fig file atomically.  Refuses an incomplete figure."""
     text = render_fig(figure, extra_sections)
     write_text_atomic(path, text)
@@ -178,7 +190,7 @@ COMMENT: /\/\*(.|\n)*?\*\//
 
 
 @lru_cache(maxsize=1)
-def _parser():
+def _parser() -> Lark:
     from lark import Lark
 
     return Lark(_GRAMMAR, parser="lalr", propagate_positions=True)
@@ -202,16 +214,17 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
         ) from None
     except UnexpectedCharacters as exc:
         raise FigParseError(
-            f"{name}:{exc.line}:{exc.column}: unexpected character {text[exc.pos_in_stream]!r}"
+            f"{name}:{exc.line}:{exc.column}: unexpected character {exc.char!r}"
         ) from None
     except UnexpectedEOF:
         raise FigParseError(f"{name}: the file ends in the middle of a statement") from None
     except UnexpectedInput as exc:  # pragma: no cover - other lark errors
         raise FigParseError(f"{name}:{exc.line}:{exc.column}: {exc}") from None
     fig = FigFile()
-    for node in tree.children:
+    # The grammar makes every statement a Tree and every leaf under one a Token.
+    for node in cast("list[Tree[Token]]", tree.children):
         if node.data == "assignment":
-            var, number, *unit = node.children
+            var, number, *unit = cast("list[Token]", node.children)
             if str(var) in fig.variables:
                 raise FigParseError(f"{name}:{var.line}:{var.column}: {var} assigned twice")
             value = float(number)

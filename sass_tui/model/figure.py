@@ -23,6 +23,7 @@ from sass_tui.model.names import (
     JOINT_LIMITS,
     MASS_FRACTIONS,
     ROWS,
+    Row,
 )
 from sass_tui.model.percentile import check_percentile, percentile_of, value_at
 from sass_tui.model.popfile import (
@@ -58,7 +59,7 @@ class GroupState:
         return self.values is not None
 
     @property
-    def rows(self):
+    def rows(self) -> tuple[Row, ...]:
         return ROWS[self.group]
 
 
@@ -119,7 +120,7 @@ class Figure:
         *,
         mass: float = float("nan"),
         stature: float = float("nan"),
-        **strength_parameters,
+        **strength_parameters: str | float | None,
     ) -> Figure:
         """A real person's figure (report §12.4, Disp. Indv.): the person's values
         (canonical units, NaN where the database has none) with percentiles taken
@@ -202,11 +203,11 @@ class Figure:
         self.stature_percentile = float(p)
         self.stature = self._global_value("stature", p)
 
-    def set_strength_parameter(self, name: str, value) -> None:
+    def set_strength_parameter(self, name: str, value: str | float) -> None:
         if name == "strength_type":
-            self.strength_type = _check_choice(value, STRENGTH_TYPES, "strength type")
+            self.strength_type = _check_choice(str(value), STRENGTH_TYPES, "strength type")
         elif name == "handedness":
-            self.handedness = _check_choice(value, HANDEDNESS, "handedness")
+            self.handedness = _check_choice(str(value), HANDEDNESS, "handedness")
         elif name in ("motion_speed", "training_level", "fatigue_level"):
             number = float(value)
             if not math.isfinite(number):
@@ -233,6 +234,7 @@ class Figure:
                 f"{state.rows[row].label} {'xyz'[axis]}: a segment size must be "
                 f"positive, got {value:g} cm"
             )
+        assert state.values is not None and state.percentiles is not None  # _cell: loaded
         state.values[row, axis] = value
         stats = self._stats(state)
         state.percentiles[row, axis] = percentile_of(stats[row, axis], value)
@@ -242,6 +244,7 @@ class Figure:
         check_percentile(p)
         state = self._cell(group, row, axis)
         stats = self._stats(state)
+        assert state.values is not None and state.percentiles is not None  # _cell: loaded
         state.values[row, axis] = value_at(stats[row, axis], p)
         state.percentiles[row, axis] = p
 
@@ -269,7 +272,8 @@ class Figure:
         population's value at the group percentile.  A population figure has
         nothing to fill.  999 cells (no motion) stay NaN."""
         state = self.groups[group]
-        population = value_at(state.source.stats(self.gender), state.percentile)
+        assert state.values is not None, f"{group} not loaded"  # callers check missing_groups()
+        population = value_at(self._stats(state), state.percentile)
         filled = np.isnan(state.values) & ~np.isnan(population)
         return np.where(filled, population, state.values), filled
 
@@ -283,6 +287,7 @@ class Figure:
     def value(self, group: str, row_name: str, axis: int) -> float:
         state = self.groups[group]
         index = [r.name for r in state.rows].index(row_name)
+        assert state.values is not None, f"{group} not loaded"
         return float(state.values[index, axis])
 
     def missing_groups(self) -> list[str]:
@@ -315,6 +320,7 @@ class Figure:
         state.percentiles = np.where(np.isnan(state.values), np.nan, state.percentile)
 
     def _stats(self, state: GroupState) -> np.ndarray:
+        assert state.source is not None, f"{state.group} not loaded"
         return state.source.stats(self.gender)
 
     def _cell(self, group: str, row: int, axis: int) -> GroupState:
@@ -336,7 +342,8 @@ class Figure:
         if self.global_stats is None or not self.global_stats.has(self.gender):
             raise FigureError(f"no {self.gender} {name} statistics loaded")
         index = [r.name for r in ROWS[GLOBAL]].index(name)
-        return self.global_stats.stats(self.gender)[index, 0]
+        row: np.ndarray = self.global_stats.stats(self.gender)[index, 0]
+        return row
 
     def _global_value(self, name: str, p: float) -> float:
         return float(value_at(self._global_stats_row(name), p))

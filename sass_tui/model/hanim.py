@@ -10,11 +10,13 @@ from __future__ import annotations
 
 import math
 import xml.etree.ElementTree as ET
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
@@ -175,14 +177,17 @@ class Limits:
         return axis_angle(self.frame)
 
 
+# (box|ellipsoid, centre, full size along X, Y, Z)
+Shape = tuple[str, np.ndarray, np.ndarray]
+
+
 @dataclass
 class Segment:
     name: str
     mass: float  # kg
     center_of_mass: np.ndarray  # m, humanoid coordinates
     inertia: np.ndarray  # 3x3 kg m^2 about the centre of mass
-    shapes: list[tuple[str, np.ndarray, np.ndarray]] = field(default_factory=list)
-    # (box|ellipsoid, centre, full size along X, Y, Z)
+    shapes: list[Shape] = field(default_factory=list)
 
 
 @dataclass
@@ -208,7 +213,7 @@ class Humanoid:
 # --- construction ------------------------------------------------------------
 
 
-def build_humanoid(figure) -> Humanoid:
+def build_humanoid(figure: Figure) -> Humanoid:
     missing = figure.missing_groups()
     if missing:
         raise FigureIncompleteError(
@@ -267,7 +272,7 @@ def _population_girth(figure: Figure) -> np.ndarray:
     return np.asarray(value_at(state.source.stats(figure.gender), state.percentile), dtype=float)
 
 
-def _rows(figure, group: str) -> np.ndarray:
+def _rows(figure: Figure, group: str) -> np.ndarray:
     return np.asarray(figure.output_values(group)[0], dtype=float)
 
 
@@ -358,7 +363,12 @@ def _extents(
     return out
 
 
-def _segments(figure, dim, centers, heights) -> dict[str, Segment]:
+def _segments(
+    figure: Figure,
+    dim: dict[str, np.ndarray],
+    centers: dict[str, np.ndarray],
+    heights: dict[str, float],
+) -> dict[str, Segment]:
     fractions = dict(MASS_FRACTIONS)
     com_rows = {row.name: i for i, row in enumerate(ROWS[CENTER_OF_MASS])}
     com_values, com_filled = figure.output_values(CENTER_OF_MASS)
@@ -395,7 +405,18 @@ def _segments(figure, dim, centers, heights) -> dict[str, Segment]:
     return segments
 
 
-def _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers, heights, extents):
+def _shapes(
+    name: str,
+    row: str | None,
+    dim: dict[str, np.ndarray],
+    origin: np.ndarray,
+    long_axis: np.ndarray,
+    depth_axis: np.ndarray,
+    width_axis: np.ndarray,
+    centers: dict[str, np.ndarray],
+    heights: dict[str, float],
+    extents: dict[str, float],
+) -> list[Shape]:
     """Boxes and ellipsoids in place (humanoid coordinates), one per SASS psurf,
     each as long as the segment is in the humanoid (_extents)."""
     if row is None:
@@ -403,7 +424,9 @@ def _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers, 
     depth, width, length = dim[row]
     length = extents.get(name, length)
 
-    def along(start, extent_long, d, w):
+    def along(
+        start: np.ndarray, extent_long: float, d: float, w: float
+    ) -> tuple[np.ndarray, np.ndarray]:
         size = np.abs(depth_axis) * d + width_axis * w + np.abs(long_axis) * extent_long
         return start + long_axis * extent_long / 2, size
 
@@ -420,7 +443,7 @@ def _shapes(name, row, dim, origin, long_axis, depth_axis, width_axis, centers, 
         centre, size = along(origin, length, depth, width)
         return [("ellipsoid", centre, size)]
     centre, size = along(origin, length, depth, width)
-    shapes = [("box", centre, size)]
+    shapes: list[Shape] = [("box", centre, size)]
     if name == "l5":  # the neck, from the cervicale up to the skull base
         neck = dim["neck"]
         neck_base = origin + long_axis * length
@@ -459,7 +482,7 @@ def _inertia(solid: str, mass: float, size: np.ndarray, long_axis: np.ndarray) -
     return np.diag(moments)
 
 
-def _limits(figure) -> dict[str, Limits]:
+def _limits(figure: Figure) -> dict[str, Limits]:
     values = np.radians(_rows(figure, JOINT_LIMITS))
     out: dict[str, Limits] = {}
     for joint, stem, x_axis, y_axis, z_anatomical in _LIMIT_AXES:
@@ -511,12 +534,12 @@ def _sites(
     return sites
 
 
-def _humanoid_name(figure) -> str:
+def _humanoid_name(figure: Figure) -> str:
     who = figure.person or f"{figure.gender}_{figure.groups[GIRTH].percentile:g}"
     return "".join(ch if ch.isalnum() else "_" for ch in who).strip("_") or "sass_figure"
 
 
-def _info(figure) -> list[str]:
+def _info(figure: Figure) -> list[str]:
     groups = figure.groups
     info = []
     if figure.person:
@@ -564,12 +587,13 @@ def axis_angle(matrix: np.ndarray) -> tuple[float, float, float, float]:
     return (float(axis[0]), float(axis[1]), float(axis[2]), angle)
 
 
-def rotation_matrix(axis, angle: float) -> np.ndarray:
+def rotation_matrix(axis: npt.ArrayLike, angle: float) -> np.ndarray:
     """Rodrigues' formula (the inverse of axis_angle)."""
     a = np.asarray(axis, dtype=float)
     a = a / np.linalg.norm(a)
     k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
-    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * (k @ k)
+    rotation: np.ndarray = np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * (k @ k)
+    return rotation
 
 
 # --- X3D ---------------------------------------------------------------------
@@ -582,7 +606,7 @@ def _num(value: float) -> str:
     return "0" if text in ("-0", "") else text
 
 
-def _vec(values) -> str:
+def _vec(values: Iterable[float]) -> str:
     return " ".join(_num(v) for v in values)
 
 
@@ -742,7 +766,7 @@ def scene_document(humanoids: list[tuple[ET.Element, float]], title: str, height
     )
 
 
-def figure_title(figure) -> str:
+def figure_title(figure: Figure) -> str:
     if figure.person:
         return f"{figure.person} ({figure.gender}) - SASS HAnim humanoid"
     return (
@@ -751,7 +775,7 @@ def figure_title(figure) -> str:
     )
 
 
-def render_hanim(figure) -> str:
+def render_hanim(figure: Figure) -> str:
     humanoid = build_humanoid(figure)
     height = float(humanoid.sites[0].translation[1])  # skull vertex
     return scene_document(
@@ -759,7 +783,7 @@ def render_hanim(figure) -> str:
     )
 
 
-def export_hanim(figure, path: str | Path) -> Path:
+def export_hanim(figure: Figure, path: str | Path) -> Path:
     """Write the figure as an HAnim X3D file, atomically (the TUI's Export HAnim)."""
     text = render_hanim(figure)
     write_text_atomic(path, text)

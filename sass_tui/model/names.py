@@ -54,7 +54,7 @@ def normalise_label(text: str) -> str:
 def _side_rows(stem: str, label: str, extra: tuple[str, ...] = ()) -> list[Row]:
     rows = []
     for side, short in (("right", "r"), ("left", "l")):
-        aliases = (f"{short} {label.lower()}", f"{side} {label.lower()}")
+        aliases: tuple[str, ...] = (f"{short} {label.lower()}", f"{side} {label.lower()}")
         aliases += tuple(e.format(side=side, short=short) for e in extra)
         rows.append(Row(f"{side}_{stem}", f"{side.capitalize()} {label}", aliases))
     return rows

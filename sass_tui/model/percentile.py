@@ -13,6 +13,7 @@ from __future__ import annotations
 from statistics import NormalDist
 
 import numpy as np
+import numpy.typing as npt
 
 from sass_tui.model.errors import SassError
 
@@ -30,7 +31,7 @@ class PercentileError(ValueError, SassError):
     """A percentile outside 0.5-99.5, or not a number."""
 
 
-def check_percentile(p) -> np.ndarray | float:
+def check_percentile(p: npt.ArrayLike) -> npt.ArrayLike:
     arr = np.asarray(p, dtype=float)
     bad = ~((arr >= MIN_PERCENTILE) & (arr <= MAX_PERCENTILE))
     if np.any(bad):
@@ -41,15 +42,15 @@ def check_percentile(p) -> np.ndarray | float:
     return p
 
 
-def z_score(p) -> np.ndarray:
+def z_score(p: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Standard normal quantile of percentile(s) p (0.5-99.5)."""
     arr = np.asarray(p, dtype=float)
     if arr.ndim == 0:
         return np.float64(_STANDARD.inv_cdf(float(arr) / 100.0))
-    return _ppf(arr / 100.0).astype(float)
+    return np.asarray(_ppf(arr / 100.0), dtype=float)
 
 
-def value_at(stats: np.ndarray, p) -> np.ndarray:
+def value_at(stats: npt.NDArray[np.float64], p: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Values at percentile p.  stats[..., 0:3] = (v5, v50, v95); p broadcasts
     against stats[..., 0].  NaN (no value) stays NaN."""
     check_percentile(p)
@@ -64,7 +65,9 @@ def value_at(stats: np.ndarray, p) -> np.ndarray:
     return np.where(p == 95.0, v95, out)
 
 
-def percentile_of(stats: np.ndarray, value) -> np.ndarray:
+def percentile_of(
+    stats: npt.NDArray[np.float64], value: npt.ArrayLike
+) -> npt.NDArray[np.float64] | np.float64:
     """Percentile of value(s) against stats (the inverse of value_at).
 
     The result is not clipped to 0.5-99.5: a real person can lie outside it.

@@ -197,7 +197,15 @@ def split_data_row(
     return values, label
 
 
-def _place_rows(entries, gender, group, lookup, name, section_line, warnings):
+def _place_rows(
+    entries: list[tuple[int, list[float], str]],
+    gender: str,
+    group: str,
+    lookup: dict[str, int],
+    name: str,
+    section_line: int,
+    warnings: list[str],
+) -> tuple[np.ndarray, list[int]]:
     rows = ROWS[group]
     n = len(rows)
     stats = np.full((n, AXES_OF[group], 3), np.nan)

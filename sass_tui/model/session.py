@@ -98,7 +98,7 @@ class Session:
     def set_stature_percentile(self, p: float) -> None:
         self._edit_figure(lambda f: f.set_stature_percentile(p))
 
-    def set_strength_parameter(self, name: str, value: object) -> None:
+    def set_strength_parameter(self, name: str, value: str | float) -> None:
         self._edit_figure(lambda f: f.set_strength_parameter(name, value))
 
     def set_group_percentile(self, group: str, p: float) -> None:

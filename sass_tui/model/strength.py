@@ -28,11 +28,13 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
-from types import SimpleNamespace
+from typing import Protocol
 
 import numpy as np
+import numpy.typing as npt
 
 from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
@@ -137,7 +139,7 @@ class StrengthData:
     # (strength_type, motion_speed, training_level, fatigue_level); the
     # modifiers then scale from these, not from rested isometric strength.
     measured_at: tuple[str, float, float, float] | None = None
-    _models: dict = field(default_factory=dict, repr=False)
+    _models: dict[tuple[str, str], StrengthModel] = field(default_factory=dict, repr=False)
 
     @property
     def test_data(self) -> bool:
@@ -171,6 +173,8 @@ class StrengthData:
 
 
 _WIDTH = N_ANGLES + 2
+# A data row as read: (line, motion index, the 9 numbers, its /* comment */).
+_RawRow = tuple[int, int, list[float], str]
 _LAYOUT = "(shoulder x y z, elbow y, wrist x y z, strength value, percentile)"
 
 
@@ -212,7 +216,7 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
     title = ""
     gender: str | None = None
     key: tuple[str, str] | None = None
-    raw: dict[tuple[str, str], tuple[int, list]] = {}
+    raw: dict[tuple[str, str], tuple[int, list[_RawRow]]] = {}
     warnings: list[str] = []
     for lineno, line in enumerate(lines, start=1):
         where = f"{name}:{lineno}"
@@ -277,8 +281,8 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
             f"{name}:{len(lines)}: no 'G MALE|FEMALE' with an 'L RIGHT|LEFT' section"
         )
     data = StrengthData(title=title or Path(name).name, path=name, warnings=warnings)
-    for key, (line, entries) in raw.items():
-        data.sections[key] = _build_section(key, line, entries, name, warnings)
+    for key, (section_line, entries) in raw.items():
+        data.sections[key] = _build_section(key, section_line, entries, name, warnings)
     return data
 
 
@@ -305,11 +309,17 @@ def _check_magnitudes(numbers: list[float], where: str) -> None:
         )
 
 
-def _build_section(key, section_line, entries, name, warnings) -> StrengthSection:
+def _build_section(
+    key: tuple[str, str],
+    section_line: int,
+    entries: list[_RawRow],
+    name: str,
+    warnings: list[str],
+) -> StrengthSection:
     gender, side = key
     heading = f"G {gender.upper()} / L {side.upper()}"
     kept: dict[tuple[int, tuple[float, ...]], int] = {}
-    rows = []
+    rows: list[tuple[int, int, list[float], float, float, str]] = []
     last_motion = -1
     for lineno, motion, numbers, comment in entries:
         where = f"{name}:{lineno}: {MOTIONS[motion].label}"
@@ -340,11 +350,11 @@ def _build_section(key, section_line, entries, name, warnings) -> StrengthSectio
         kept[config] = len(rows)
         rows.append((lineno, motion, angles, value, percentile, comment))
     present = {r[1] for r in rows}
-    missing = [MOTIONS[i].label for i in range(len(MOTIONS)) if i not in present]
-    if missing:
+    missing_motions = [MOTIONS[i].label for i in range(len(MOTIONS)) if i not in present]
+    if missing_motions:
         warnings.append(
             f"{name}:{section_line}: {heading} has no data for "
-            f"{', '.join(missing)}; those rows stay blank"
+            f"{', '.join(missing_motions)}; those rows stay blank"
         )
     return StrengthSection(
         gender=gender,
@@ -414,7 +424,7 @@ def person_strength_data(
 # --- percentiles ------------------------------------------------------------
 
 
-def percentile_factor(p) -> np.ndarray:
+def percentile_factor(p: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Strength at percentile p over the 50th: 1 + z(p) * CV (normal, CV 0.277)."""
     check_percentile(p)
     return 1.0 + z_score(p) * STRENGTH_CV
@@ -469,8 +479,9 @@ class StrengthModel:
             if mask.any():
                 self.low[motion] = section.angles[mask].min(axis=0)
                 self.high[motion] = section.angles[mask].max(axis=0)
-                self.fits[motion] = self._fit(motion, section.angles[mask], median[mask])
-                self.coefficients[motion] = self.fits[motion].coefficients
+                fit = self._fit(motion, section.angles[mask], median[mask])
+                self.fits[motion] = fit
+                self.coefficients[motion] = fit.coefficients
                 self.available[motion] = True
                 # A quadratic can rise without bound away from the data.
                 self.ceiling[motion] = median[mask].max()
@@ -503,7 +514,7 @@ class StrengthModel:
             varied=tuple(JOINT_AXES[j] for j in range(N_ANGLES) if distinct[j] >= 2),
         )
 
-    def coverage(self, motion: int, angles) -> tuple[str, bool]:
+    def coverage(self, motion: int, angles: npt.ArrayLike) -> tuple[str, bool]:
         """(note, refused) for a prediction at `angles`: the note names every
         angle outside the data of this motion ('' inside them); refused when a
         varied angle lies more than EXTRAPOLATION_MARGIN_DEG outside."""
@@ -534,7 +545,7 @@ class StrengthModel:
             )
         return "; ".join(notes), refused
 
-    def stored(self, motion: int, angles) -> tuple[float, float] | None:
+    def stored(self, motion: int, angles: Iterable[float]) -> tuple[float, float] | None:
         """(value ft-lb, its percentile) when the configuration is in the data."""
         return self._stored[motion].get(_config_key(angles))
 
@@ -545,7 +556,9 @@ class StrengthModel:
         value = np.minimum(np.exp(log_value), self.ceiling[motions])
         return np.where(self.available[motions], value, np.nan)
 
-    def evaluate(self, motions, angles, percentile: float = 50.0) -> tuple[np.ndarray, np.ndarray]:
+    def evaluate(
+        self, motions: npt.ArrayLike, angles: npt.ArrayLike, percentile: float = 50.0
+    ) -> tuple[np.ndarray, np.ndarray]:
         """Strength (ft-lb, before modifiers) at `percentile`, and a stored? mask.
 
         A stored value is scaled from its own percentile to `percentile` (it
@@ -565,7 +578,7 @@ class StrengthModel:
         return values, stored
 
 
-def _config_key(angles) -> tuple[float, ...]:
+def _config_key(angles: Iterable[float]) -> tuple[float, ...]:
     return tuple(round(float(a), 3) for a in angles)
 
 
@@ -614,11 +627,37 @@ def fatigue_factor(level: float, joint: str = "shoulder") -> float:
     if level == 0:
         return 1.0
     b0, b1 = ENDURANCE_POWER_MODEL[joint]
-    return min(1.0, (level / b0) ** (1.0 / b1))
+    fraction: float = (level / b0) ** (1.0 / b1)
+    return min(1.0, fraction)
+
+
+class StrengthConditions(Protocol):
+    """What the modifiers read: a Figure's strength parameters, or the
+    conditions a person's own strengths were measured at."""
+
+    @property
+    def strength_type(self) -> str: ...
+    @property
+    def motion_speed(self) -> float: ...
+    @property
+    def handedness(self) -> str: ...
+    @property
+    def training_level(self) -> float: ...
+    @property
+    def fatigue_level(self) -> float: ...
+
+
+@dataclass(frozen=True)
+class _MeasuredConditions:
+    strength_type: str
+    motion_speed: float
+    handedness: str
+    training_level: float
+    fatigue_level: float
 
 
 def modifier_factors(
-    figure, side: str, non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR
+    figure: StrengthConditions, side: str, non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR
 ) -> np.ndarray:
     """The product of every modifier, one factor per motion (14,)."""
     common = (
@@ -648,7 +687,7 @@ def parse_side_factor(text: str) -> float:
 # --- joint limits ---------------------------------------------------------
 
 
-def joint_limit_range(figure, side: str, joint_axis: str) -> tuple[float, float]:
+def joint_limit_range(figure: Figure, side: str, joint_axis: str) -> tuple[float, float]:
     """(lower, upper) deg of a joint axis from the figure's current joint limits.
 
     NaN, NaN: no motion about this axis (999).  A person the database has no
@@ -675,7 +714,7 @@ def _joint_limit_range(figure: Figure, side: str, joint_axis: str) -> tuple[floa
     )
 
 
-def check_angle(figure, side: str, joint_axis: str, degrees: float) -> None:
+def check_angle(figure: Figure, side: str, joint_axis: str, degrees: float) -> None:
     """Refuse an angle outside the figure's current joint limits, naming the limit
     and where it comes from (the figure's own, or the population's for a person
     whose joint limits were not measured)."""
@@ -754,7 +793,7 @@ class StrengthSheet:
 
     ROWS_PER_PAGE = 14
 
-    def __init__(self, data: StrengthData, figure) -> None:
+    def __init__(self, data: StrengthData, figure: Figure) -> None:
         self.data = data
         self.figure = figure
         self.side = "right"
@@ -764,7 +803,7 @@ class StrengthSheet:
         self.angles = self._default_angles()
 
     @classmethod
-    def default(cls, figure) -> StrengthSheet:
+    def default(cls, figure: Figure) -> StrengthSheet:
         return cls(read_strength_file(), figure)
 
     def _default_angles(self) -> np.ndarray:
@@ -793,7 +832,7 @@ class StrengthSheet:
         factors = modifier_factors(self.figure, self.side, self.non_dominant_factor)
         if self.data.measured_at is not None:
             kind, speed, training, fatigue = self.data.measured_at
-            measured = SimpleNamespace(
+            measured = _MeasuredConditions(
                 strength_type=kind,
                 motion_speed=speed,
                 training_level=training,

@@ -14,9 +14,15 @@ import math
 import re
 from functools import cache, lru_cache
 from pathlib import Path
+from typing import TYPE_CHECKING, overload
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+    import pint
 
 
 class UnitError(ValueError, SassError):
@@ -24,7 +30,7 @@ class UnitError(ValueError, SassError):
 
 
 @lru_cache(maxsize=1)
-def registry():
+def registry() -> pint.UnitRegistry[float]:
     """The pint UnitRegistry.  pint is imported here, not at module level: it
     costs ~0.1 s, and a figure in its canonical units never needs it."""
     import pint
@@ -229,7 +235,15 @@ def finite_number(text: str) -> float:
     return value
 
 
-def convert(value, from_unit: str, to_unit: str):
+@overload
+def convert(value: float, from_unit: str, to_unit: str) -> float: ...
+@overload
+def convert(
+    value: npt.NDArray[np.float64], from_unit: str, to_unit: str
+) -> npt.NDArray[np.float64]: ...
+def convert(
+    value: float | npt.NDArray[np.float64], from_unit: str, to_unit: str
+) -> float | npt.NDArray[np.float64]:
     """Convert a number or numpy array between registry units (NaN stays NaN)."""
     if from_unit == to_unit:
         return value
