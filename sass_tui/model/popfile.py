@@ -15,6 +15,7 @@ warnings and loading goes on.
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -201,7 +202,7 @@ def _place_rows(
     entries: list[tuple[int, list[float], str]],
     gender: str,
     group: str,
-    lookup: dict[str, int],
+    lookup: Mapping[str, int],
     name: str,
     section_line: int,
     warnings: list[str],
