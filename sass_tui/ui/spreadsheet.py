@@ -49,6 +49,13 @@ from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, other_unit, pars
 from sass_tui.model.vocabulary import STRENGTH_PARAMETERS
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.commands import COMMANDS
+from sass_tui.ui.predict import (
+    KNOWN_PROMPT,
+    KnownSuggester,
+    PredictorOpened,
+    interval_text,
+    open_predictor_at,
+)
 from sass_tui.ui.strength_page import StrengthPage, format_angle, format_strength
 from sass_tui.ui.widgets import (
     CommandMenu,
@@ -134,7 +141,7 @@ class SpreadsheetScreen(SassScreen):
     """Figure 4: group bar, global data | command menu, data section, message line."""
 
     BINDINGS = [
-        *(Binding(spec.key, spec.action, spec.footer) for spec in COMMANDS),
+        *(Binding(spec.key, spec.action, spec.footer, show=spec.in_footer) for spec in COMMANDS),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
         Binding("u", "undo", "Undo"),
@@ -150,6 +157,9 @@ class SpreadsheetScreen(SassScreen):
         self.strength_error = strength_error
         self.data_group = GIRTH
         self._warning_index = 0
+        self._predictor = None  # sass_tui.model.prediction.Predictor, opened on first Predict
+        # The prediction shown and its figure (shown while it is session.person).
+        self.prediction = None
 
     # --- layout ---------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -229,6 +239,7 @@ class SpreadsheetScreen(SassScreen):
             ),
             "query": "Query (d) works from the population: Disp. Pop. (o) first.",
             "display_individual": "A person is shown: Disp. More (x) shows another.",
+            "interval": "Interval (a) applies to a predicted figure: Predict (k) first.",
         }.get(action)
 
     # --- message line ---------------------------------------------------------
@@ -729,9 +740,87 @@ class SpreadsheetScreen(SassScreen):
         self.say(f"Person {index + 1} of {total} in the selected list: {person.person}.")
 
     def action_display_population(self) -> None:
+        self.prediction = None
         if self.session.person is None:
             self.say("The population is already shown.")
             return
         self.session.show_population()
         self.refresh_screen()
         self.say(f"Population {self.figure.population} displayed.")
+
+    # --- Predict (issue 13) ---------------------------------------------------------------
+    def action_predict(self) -> None:
+        if self._predictor is not None:
+            self._ask_known()
+            return
+        self.say("Opening the prediction model (fitting it the first time takes a second) ...")
+        self.open_predictor(getattr(self.app, "db_path", None))
+
+    @work(thread=True, exclusive=True, group="predictor", exit_on_error=False)
+    def open_predictor(self, db_path: Path | None) -> None:
+        import sqlite3
+
+        try:
+            self.post_message(PredictorOpened(open_predictor_at(db_path)))
+        except (SassError, OSError) as exc:
+            self.post_message(WorkerSaid(f"Cannot open the prediction model: {exc}", "error"))
+        except sqlite3.Error as exc:
+            self.post_message(WorkerSaid(f"Cannot open the prediction model: {exc}", "error"))
+
+    def on_predictor_opened(self, event: PredictorOpened) -> None:
+        self._predictor = event.predictor
+        self._ask_known()
+
+    def _ask_known(self) -> None:
+        gender = self.session.population.gender
+        answer = self.message_line.answer
+        answer.suggester = KnownSuggester(self._predictor.fields(gender))
+
+        def done(text: str) -> None:
+            answer.suggester = None
+            self._predict_from(text)
+
+        def cancelled() -> None:
+            answer.suggester = None
+            self.say("Predict cancelled; nothing changed.")
+
+        self.ask(KNOWN_PROMPT.format(gender=gender), done, on_cancel=cancelled)
+
+    def _predict_from(self, text: str) -> None:
+        from sass_tui.model.prediction import split_known
+
+        if not text.strip():
+            self.say("No known values given; nothing predicted.")
+            return
+        gender = self.session.population.gender
+        predictor = self._predictor
+        known = predictor.parse_known(gender, split_known(text))
+        prediction = predictor.predict(gender, known, nearest=1)
+        figure = prediction.figure(self.session.population)
+        self.session.show_person(figure, -1)
+        self.prediction = (prediction, figure)
+        self.refresh_screen()
+        nearest = (
+            f" Nearest real person: {prediction.nearest[0].name}." if prediction.nearest else ""
+        )
+        self.say(
+            f"Figure {prediction.label()}.{nearest} a: a cell's 90 % interval; "
+            "o: back to the population."
+        )
+
+    def action_interval(self) -> None:
+        if self.prediction is None or self.session.person is not self.prediction[1]:
+            self.complain(self.why_not("interval"))
+            return
+        group = self.data_group
+        if group not in (GIRTH, CENTER_OF_MASS):
+            self.say(
+                f"{GROUP_TITLES[group]} is not predicted: it is the population's at the "
+                "group percentile."
+            )
+            return
+        sheet = self.sheet
+        state = self.figure.groups[group]
+        axis = sheet.cursor_column // 2
+        field = f"{group}.{state.rows[sheet.cursor_row].name}.{AXES[axis]}"
+        self.say(interval_text(self.prediction[0], field, state.unit, convert))
