@@ -216,7 +216,7 @@ class SpreadsheetScreen(SassScreen):
         self.refresh_bindings()
         if self.data_group != STRENGTH:
             self.sheet.show_group(self.figure, self.data_group)
-        self.strength_page.show_sheet(self.session.strength_sheet)
+        self.strength_page.show_sheet(self.session.strength_sheet, self.session.strength_missing)
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         spec = next((c for c in COMMANDS if c.action == action), None)
@@ -261,7 +261,8 @@ class SpreadsheetScreen(SassScreen):
     def action_select_group(self, group: str) -> None:
         if self.message_line.prompting:
             return
-        if group == STRENGTH and self.session.strength_sheet is None:
+        session = self.session
+        if group == STRENGTH and session.strength_sheet is None and not session.strength_missing:
             self.complain(self.strength_error)
             return
         had_focus = self.focused is self.active_sheet
@@ -282,7 +283,9 @@ class SpreadsheetScreen(SassScreen):
         )
         strength = self.session.strength_sheet
         if self.data_group == STRENGTH and strength is not None:
-            message += f" {strength.side.capitalize()} limb, from {strength.data.title}."
+            message += f" {strength.side.capitalize()} limb: {strength.data.label}."
+        elif self.data_group == STRENGTH and self.session.strength_missing:
+            message += f" {self.session.strength_missing}"
         self.say(message)
 
     # --- commands ---------------------------------------------------------------
@@ -735,9 +738,37 @@ class SpreadsheetScreen(SassScreen):
         except (SassError, OSError) as exc:
             self.complain(f"Cannot display person {index + 1}: {exc}")
             return
-        self.session.show_person(person, index)
+        self.session.show_person(person, index, self._own_strength(index, person))
         self.refresh_screen()
         self.say(f"Person {index + 1} of {total} in the selected list: {person.person}.")
+
+    def _own_strength(self, index: int, person: Figure) -> StrengthData | str:
+        """The person's own strength experiments (issue 11), or why there are none."""
+        import sqlite3
+
+        from sass_tui.db.individual import fetch_individual, strength_measurements
+        from sass_tui.model.strength import person_strength_data
+
+        lists = self.app.query_lists
+        try:
+            with lists.lock:
+                individual = fetch_individual(lists.conn, lists.selected_id(index))
+        except sqlite3.Error as exc:
+            return f"{person.person}: strength not read ({exc})."
+        measurements = strength_measurements(individual)
+        if not measurements:
+            return (
+                f"{person.person} has no strength experiments in the database: "
+                "no strength is shown for them."
+            )
+        # The experiments at the person's own conditions (the global panel's).
+        conditions = (
+            person.strength_type,
+            person.motion_speed,
+            person.training_level,
+            person.fatigue_level,
+        )
+        return person_strength_data(person.person, person.gender, measurements, conditions)
 
     def action_display_population(self) -> None:
         self.prediction = None
