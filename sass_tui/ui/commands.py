@@ -154,4 +154,17 @@ COMMANDS: tuple[CommandSpec, ...] = (
         available=_showing_prediction,
         in_footer=False,
     ),
+    # Issue 14: a manikin family, on a screen of its own; its slot is Interval's
+    # while a person or a prediction is shown.
+    CommandSpec(
+        "family",
+        "y",
+        "family",
+        "Family",
+        lambda screen: "Family",
+        column=1,
+        row=4,
+        available=_showing_population,
+        in_footer=False,
+    ),
 )

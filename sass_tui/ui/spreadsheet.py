@@ -239,6 +239,7 @@ class SpreadsheetScreen(SassScreen):
             ),
             "query": "Query (d) works from the population: Disp. Pop. (o) first.",
             "display_individual": "A person is shown: Disp. More (x) shows another.",
+            "family": "Family (y) works from the population: Disp. Pop. (o) first.",
             "interval": "Interval (a) applies to a predicted figure: Predict (k) first.",
         }.get(action)
 
@@ -778,6 +779,14 @@ class SpreadsheetScreen(SassScreen):
         self.session.show_population()
         self.refresh_screen()
         self.say(f"Population {self.figure.population} displayed.")
+
+    # --- Family (issue 14) ----------------------------------------------------------------
+    def action_family(self) -> None:
+        from sass_tui.ui.family_screen import FamilyScreen
+
+        self.app.push_screen(
+            FamilyScreen(getattr(self.app, "db_path", None), self.session.population.gender)
+        )
 
     # --- Predict (issue 13) ---------------------------------------------------------------
     def action_predict(self) -> None:
