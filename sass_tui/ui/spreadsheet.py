@@ -813,8 +813,13 @@ class SpreadsheetScreen(SassScreen):
 
     def _ask_known(self) -> None:
         gender = self.session.population.gender
+        try:
+            fields = self._predictor.fields(gender)
+        except SassError as exc:  # no people of this gender in the database
+            self.complain(f"Cannot predict: {exc}")
+            return
         answer = self.message_line.answer
-        answer.suggester = KnownSuggester(self._predictor.fields(gender))
+        answer.suggester = KnownSuggester(fields)
 
         def done(text: str) -> None:
             answer.suggester = None

@@ -131,3 +131,22 @@ def test_predicted_figure_snapshot(db, snap_compare):
         await pilot.press("down", "a")
 
     assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=(80, 24))
+
+
+def test_a_gender_without_people_is_said(db, drive):
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(80, 40)) as pilot:
+            await pilot.press("k")
+            await _wait_prompt(app, pilot)
+            await pilot.press("escape")
+            # The database's women gone from the model: as a database of men only.
+            del app.spreadsheet._predictor.models["female"]
+            app.session.set_gender("female")
+            await pilot.press("k")
+            await pilot.pause()
+            kind, text = app.message_line.history[-1]
+            assert kind == "error" and "no female people" in text, text
+            assert not app.message_line.prompting
+
+    drive(scenario())
