@@ -36,6 +36,10 @@ class Session:
         self.person: Figure | None = None
         self.person_index = 0
         self.strength_sheet = strength_sheet
+        # The population's sheet, shown again after a person's own (Disp. Pop.).
+        self.population_strength = strength_sheet
+        # Why a person shown has no strength (None: the sheet is shown).
+        self.strength_missing: str | None = None
         if strength_sheet is not None:
             strength_sheet.figure = population
         self.warnings: list[str] = []
@@ -139,7 +143,8 @@ class Session:
         if old is not None:
             sheet.side, sheet.unit = old.side, old.unit
             sheet.percentile, sheet.non_dominant_factor = old.percentile, old.non_dominant_factor
-        self.strength_sheet = sheet
+        self.strength_sheet = self.population_strength = sheet
+        self.strength_missing = None
         self._drop_entries_of([old])
         self.warnings = list(data.warnings)
         return sheet
@@ -152,16 +157,36 @@ class Session:
         return self.strength_sheet
 
     # --- the person shown ----------------------------------------------------------------
-    def show_person(self, person: Figure, index: int) -> None:
-        """Show a real person (Disp. Indv.); the population is kept to come back to."""
-        self._drop_entries_of([self.person])
+    def show_person(
+        self, person: Figure, index: int, own_strength: StrengthData | str | None = None
+    ) -> None:
+        """Show a person (Disp. Indv., or a predicted figure); the population is
+        kept to come back to.  `own_strength`: the person's own strength data
+        (shown instead of the population's), a sentence saying why they have
+        none (the strength page shows it), or None to keep the population's
+        strength (a predicted figure)."""
+        self._leave_person()
         self.person, self.person_index = person, index
+        if isinstance(own_strength, str):
+            self.strength_sheet, self.strength_missing = None, own_strength
+        elif own_strength is not None:
+            sheet = StrengthSheet(own_strength, person)
+            shown = self.population_strength
+            if shown is not None:
+                sheet.side, sheet.unit = shown.side, shown.unit
+            self.strength_sheet = sheet
         self._follow_figure()
 
     def show_population(self) -> None:
-        self._drop_entries_of([self.person])
+        self._leave_person()
         self.person = None
         self._follow_figure()
+
+    def _leave_person(self) -> None:
+        if self.strength_sheet is not self.population_strength:
+            self._drop_entries_of([self.strength_sheet])
+        self._drop_entries_of([self.person])
+        self.strength_sheet, self.strength_missing = self.population_strength, None
 
     def _follow_figure(self) -> None:
         if self.strength_sheet is not None:

@@ -26,6 +26,8 @@ class CommandSpec:
     column: int = 0
     row: int = 0
     available: Callable[[object], bool] = lambda screen: True
+    # The footer holds what fits 80 columns; the menu shows every command.
+    in_footer: bool = True
 
 
 def _conversion_label(screen) -> str:
@@ -52,6 +54,11 @@ def _showing_person(screen) -> bool:
 
 def _showing_population(screen) -> bool:
     return not _showing_person(screen)
+
+
+def _showing_prediction(screen) -> bool:
+    prediction = getattr(screen, "prediction", None)
+    return prediction is not None and screen.session.person is prediction[1]
 
 
 def _on_strength_page(screen) -> bool:
@@ -124,5 +131,40 @@ COMMANDS: tuple[CommandSpec, ...] = (
         column=1,
         row=5,
         available=_on_strength_page,
+    ),
+    # Issue 13: predict a figure from known values; the interval of a predicted cell.
+    CommandSpec(
+        "predict",
+        "k",
+        "predict",
+        "Predict",
+        lambda screen: "Predict",
+        column=1,
+        row=3,
+        in_footer=False,
+    ),
+    CommandSpec(
+        "interval",
+        "a",
+        "interval",
+        "Interval",
+        lambda screen: "Interval",
+        column=1,
+        row=4,
+        available=_showing_prediction,
+        in_footer=False,
+    ),
+    # Issue 14: a manikin family, on a screen of its own; its slot is Interval's
+    # while a person or a prediction is shown.
+    CommandSpec(
+        "family",
+        "y",
+        "family",
+        "Family",
+        lambda screen: "Family",
+        column=1,
+        row=4,
+        available=_showing_population,
+        in_footer=False,
     ),
 )

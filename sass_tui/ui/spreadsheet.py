@@ -49,6 +49,13 @@ from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, other_unit, pars
 from sass_tui.model.vocabulary import STRENGTH_PARAMETERS
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.commands import COMMANDS
+from sass_tui.ui.predict import (
+    KNOWN_PROMPT,
+    KnownSuggester,
+    PredictorOpened,
+    interval_text,
+    open_predictor_at,
+)
 from sass_tui.ui.strength_page import StrengthPage, format_angle, format_strength
 from sass_tui.ui.widgets import (
     CommandMenu,
@@ -134,7 +141,7 @@ class SpreadsheetScreen(SassScreen):
     """Figure 4: group bar, global data | command menu, data section, message line."""
 
     BINDINGS = [
-        *(Binding(spec.key, spec.action, spec.footer) for spec in COMMANDS),
+        *(Binding(spec.key, spec.action, spec.footer, show=spec.in_footer) for spec in COMMANDS),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
         Binding("u", "undo", "Undo"),
@@ -150,6 +157,9 @@ class SpreadsheetScreen(SassScreen):
         self.strength_error = strength_error
         self.data_group = GIRTH
         self._warning_index = 0
+        self._predictor = None  # sass_tui.model.prediction.Predictor, opened on first Predict
+        # The prediction shown and its figure (shown while it is session.person).
+        self.prediction = None
 
     # --- layout ---------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -206,7 +216,7 @@ class SpreadsheetScreen(SassScreen):
         self.refresh_bindings()
         if self.data_group != STRENGTH:
             self.sheet.show_group(self.figure, self.data_group)
-        self.strength_page.show_sheet(self.session.strength_sheet)
+        self.strength_page.show_sheet(self.session.strength_sheet, self.session.strength_missing)
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         spec = next((c for c in COMMANDS if c.action == action), None)
@@ -229,6 +239,8 @@ class SpreadsheetScreen(SassScreen):
             ),
             "query": "Query (d) works from the population: Disp. Pop. (o) first.",
             "display_individual": "A person is shown: Disp. More (x) shows another.",
+            "family": "Family (y) works from the population: Disp. Pop. (o) first.",
+            "interval": "Interval (a) applies to a predicted figure: Predict (k) first.",
         }.get(action)
 
     # --- message line ---------------------------------------------------------
@@ -250,7 +262,8 @@ class SpreadsheetScreen(SassScreen):
     def action_select_group(self, group: str) -> None:
         if self.message_line.prompting:
             return
-        if group == STRENGTH and self.session.strength_sheet is None:
+        session = self.session
+        if group == STRENGTH and session.strength_sheet is None and not session.strength_missing:
             self.complain(self.strength_error)
             return
         had_focus = self.focused is self.active_sheet
@@ -271,7 +284,9 @@ class SpreadsheetScreen(SassScreen):
         )
         strength = self.session.strength_sheet
         if self.data_group == STRENGTH and strength is not None:
-            message += f" {strength.side.capitalize()} limb, from {strength.data.title}."
+            message += f" {strength.side.capitalize()} limb: {strength.data.label}."
+        elif self.data_group == STRENGTH and self.session.strength_missing:
+            message += f" {self.session.strength_missing}"
         self.say(message)
 
     # --- commands ---------------------------------------------------------------
@@ -724,14 +739,133 @@ class SpreadsheetScreen(SassScreen):
         except (SassError, OSError) as exc:
             self.complain(f"Cannot display person {index + 1}: {exc}")
             return
-        self.session.show_person(person, index)
+        self.session.show_person(person, index, self._own_strength(index, person))
         self.refresh_screen()
         self.say(f"Person {index + 1} of {total} in the selected list: {person.person}.")
 
+    def _own_strength(self, index: int, person: Figure) -> StrengthData | str:
+        """The person's own strength experiments (issue 11), or why there are none."""
+        import sqlite3
+
+        from sass_tui.db.individual import fetch_individual, strength_measurements
+        from sass_tui.model.strength import person_strength_data
+
+        lists = self.app.query_lists
+        try:
+            with lists.lock:
+                individual = fetch_individual(lists.conn, lists.selected_id(index))
+        except sqlite3.Error as exc:
+            return f"{person.person}: strength not read ({exc})."
+        measurements = strength_measurements(individual)
+        if not measurements:
+            return (
+                f"{person.person} has no strength experiments in the database: "
+                "no strength is shown for them."
+            )
+        # The experiments at the person's own conditions (the global panel's).
+        conditions = (
+            person.strength_type,
+            person.motion_speed,
+            person.training_level,
+            person.fatigue_level,
+        )
+        return person_strength_data(person.person, person.gender, measurements, conditions)
+
     def action_display_population(self) -> None:
+        self.prediction = None
         if self.session.person is None:
             self.say("The population is already shown.")
             return
         self.session.show_population()
         self.refresh_screen()
         self.say(f"Population {self.figure.population} displayed.")
+
+    # --- Family (issue 14) ----------------------------------------------------------------
+    def action_family(self) -> None:
+        from sass_tui.ui.family_screen import FamilyScreen
+
+        self.app.push_screen(
+            FamilyScreen(getattr(self.app, "db_path", None), self.session.population.gender)
+        )
+
+    # --- Predict (issue 13) ---------------------------------------------------------------
+    def action_predict(self) -> None:
+        if self._predictor is not None:
+            self._ask_known()
+            return
+        self.say("Opening the prediction model (fitting it the first time takes a second) ...")
+        self.open_predictor(getattr(self.app, "db_path", None))
+
+    @work(thread=True, exclusive=True, group="predictor", exit_on_error=False)
+    def open_predictor(self, db_path: Path | None) -> None:
+        import sqlite3
+
+        try:
+            self.post_message(PredictorOpened(open_predictor_at(db_path)))
+        except (SassError, OSError) as exc:
+            self.post_message(WorkerSaid(f"Cannot open the prediction model: {exc}", "error"))
+        except sqlite3.Error as exc:
+            self.post_message(WorkerSaid(f"Cannot open the prediction model: {exc}", "error"))
+
+    def on_predictor_opened(self, event: PredictorOpened) -> None:
+        self._predictor = event.predictor
+        self._ask_known()
+
+    def _ask_known(self) -> None:
+        gender = self.session.population.gender
+        try:
+            fields = self._predictor.fields(gender)
+        except SassError as exc:  # no people of this gender in the database
+            self.complain(f"Cannot predict: {exc}")
+            return
+        answer = self.message_line.answer
+        answer.suggester = KnownSuggester(fields)
+
+        def done(text: str) -> None:
+            answer.suggester = None
+            self._predict_from(text)
+
+        def cancelled() -> None:
+            answer.suggester = None
+            self.say("Predict cancelled; nothing changed.")
+
+        self.ask(KNOWN_PROMPT.format(gender=gender), done, on_cancel=cancelled)
+
+    def _predict_from(self, text: str) -> None:
+        from sass_tui.model.prediction import split_known
+
+        if not text.strip():
+            self.say("No known values given; nothing predicted.")
+            return
+        gender = self.session.population.gender
+        predictor = self._predictor
+        known = predictor.parse_known(gender, split_known(text))
+        prediction = predictor.predict(gender, known, nearest=1)
+        figure = prediction.figure(self.session.population)
+        self.session.show_person(figure, -1)
+        self.prediction = (prediction, figure)
+        self.refresh_screen()
+        nearest = (
+            f" Nearest real person: {prediction.nearest[0].name}." if prediction.nearest else ""
+        )
+        self.say(
+            f"Figure {prediction.label()}.{nearest} a: a cell's 90 % interval; "
+            "o: back to the population."
+        )
+
+    def action_interval(self) -> None:
+        if self.prediction is None or self.session.person is not self.prediction[1]:
+            self.complain(self.why_not("interval"))
+            return
+        group = self.data_group
+        if group not in (GIRTH, CENTER_OF_MASS):
+            self.say(
+                f"{GROUP_TITLES[group]} is not predicted: it is the population's at the "
+                "group percentile."
+            )
+            return
+        sheet = self.sheet
+        state = self.figure.groups[group]
+        axis = sheet.cursor_column // 2
+        field = f"{group}.{state.rows[sheet.cursor_row].name}.{AXES[axis]}"
+        self.say(interval_text(self.prediction[0], field, state.unit, convert))

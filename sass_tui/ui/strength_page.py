@@ -51,9 +51,13 @@ class StrengthPage(DataSheet):
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
         self.sheet: StrengthSheet | None = None
+        self.missing: str | None = None
 
-    def show_sheet(self, sheet: StrengthSheet | None) -> None:
-        self.sheet = sheet
+    def show_sheet(self, sheet: StrengthSheet | None, missing: str | None = None) -> None:
+        """`missing`: why there is no sheet (a person without strength experiments)."""
+        self.sheet, self.missing = sheet, missing
+        # What the numbers are, on the page's top line: TEST DATA says so there.
+        self.border_title = sheet.title if sheet is not None else None
         self.refresh()
 
     @property
@@ -92,7 +96,7 @@ class StrengthPage(DataSheet):
         top.append(f"{'Strength':>{VALUE_WIDTH - 1}}", header_style)
         second = Text(no_wrap=True, overflow="crop")
         if sheet is None:
-            return Text("\n").join([top, Text("Strength data is not loaded.")])
+            return Text("\n").join([top, Text(self.missing or "Strength data is not loaded.")])
         try:
             rows = sheet.rows()
         except StrengthError as exc:  # e.g. no data for this gender in the file

@@ -1,0 +1,223 @@
+"""A manikin family on screen (issue 14): the gender, measures and coverage
+asked on the message line, the family computed in a worker (`load_family`,
+as `sass family` does), shown as a table and as a scatter plot of the first
+two measures with the population's people and the manikins; `w` writes the
+family's files with `write_family`.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from textual import work
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Horizontal
+from textual.message import Message
+from textual.widgets import DataTable, Footer, Label
+from textual_plotext import PlotextPlot
+
+from sass_tui.model.errors import SassError
+from sass_tui.model.paths import user_path
+from sass_tui.model.vocabulary import GENDERS
+from sass_tui.ui.base import SassScreen
+from sass_tui.ui.widgets import MessageLine
+
+DEFAULT_MEASURES = "stature,mass"
+DEFAULT_COVERAGE = 90.0
+
+
+class FamilyAnswerError(ValueError, SassError):
+    """An answer to the family screen's questions that is not what was asked for."""
+
+
+class FamilyBuilt(Message):
+    def __init__(self, family, people_x, people_y) -> None:
+        super().__init__()
+        self.family = family
+        self.people_x = people_x
+        self.people_y = people_y
+
+
+class FamilyFailed(Message):
+    def __init__(self, text: str) -> None:
+        super().__init__()
+        self.text = text
+
+
+def parse_measures(text: str) -> list[str]:
+    names = [name.strip() for name in (text.strip() or DEFAULT_MEASURES).split(",")]
+    names = [name for name in names if name]
+    if not 2 <= len(names) <= 6:
+        raise FamilyAnswerError(f"give 2 to 6 measurements separated by commas, not {len(names)}")
+    from sass_tui.model.accommodation import measure_field
+
+    for name in names:
+        measure_field(name)  # a typo is said now, before the database is opened
+    return names
+
+
+def parse_coverage(text: str) -> float:
+    cleaned = text.strip().rstrip("%").strip()
+    try:
+        value = float(cleaned) if cleaned else DEFAULT_COVERAGE
+    except ValueError:
+        raise FamilyAnswerError(f"expected a coverage such as 90, got {text.strip()!r}") from None
+    if not 0 < value < 100:
+        raise FamilyAnswerError(f"coverage {value:g} % is outside 0-100 %")
+    return value
+
+
+class FamilyScreen(SassScreen):
+    """Table of the manikins and their nearest real people; scatter plot."""
+
+    BINDINGS = [
+        Binding("escape", "back", "Back"),
+        Binding("w", "write", "Write files"),
+        Binding("b", "build", "New family"),
+    ]
+
+    DEFAULT_CSS = """
+    FamilyScreen #family-body { height: 1fr; }
+    FamilyScreen #family-table { width: 1fr; }
+    FamilyScreen #family-plot { width: 1fr; }
+    """
+
+    def __init__(self, db_path: Path | None, gender: str = "male") -> None:
+        super().__init__(id="family")
+        self.db_path = db_path
+        self.default_gender = gender
+        self.family = None
+
+    def compose(self) -> ComposeResult:
+        yield Label("Manikin family", id="family-title")
+        with Horizontal(id="family-body"):
+            yield DataTable(id="family-table", cursor_type="row")
+            yield PlotextPlot(id="family-plot")
+        yield MessageLine(id="message-line")
+        yield Footer(compact=True)
+
+    def on_mount(self) -> None:
+        self.action_build()
+
+    def action_back(self) -> None:
+        self.app.pop_screen()
+
+    # --- the questions ------------------------------------------------------------
+    def action_build(self) -> None:
+        self.ask(
+            f"Gender ({' or '.join(GENDERS)}) [{self.default_gender}]:",
+            self._gender_given,
+        )
+
+    def _gender_given(self, text: str) -> None:
+        gender = text.strip().lower() or self.default_gender
+        if gender not in GENDERS:
+            raise FamilyAnswerError(f"expected {' or '.join(GENDERS)}, got {text.strip()!r}")
+        self.ask(
+            f"Measures, 2 to 6 separated by commas [{DEFAULT_MEASURES}]:",
+            lambda answer: self._measures_given(gender, answer),
+        )
+
+    def _measures_given(self, gender: str, text: str) -> None:
+        measures = parse_measures(text)
+        self.ask(
+            f"Coverage in % [{DEFAULT_COVERAGE:g}]:",
+            lambda answer: self._coverage_given(gender, measures, answer),
+        )
+
+    def _coverage_given(self, gender: str, measures: list[str], text: str) -> None:
+        coverage = parse_coverage(text)
+        self.say(
+            f"Building the {gender} family over {', '.join(measures)} at {coverage:g} % "
+            "(the prediction model completes each manikin) ..."
+        )
+        self.build_family(self.db_path, gender, tuple(measures), coverage)
+
+    # --- the worker -------------------------------------------------------------------
+    @work(thread=True, exclusive=True, group="family", exit_on_error=False)
+    def build_family(
+        self, db_path: Path | None, gender: str, measures: tuple[str, ...], coverage: float
+    ) -> None:
+        import sqlite3
+
+        from sass_tui.db.default import open_database
+        from sass_tui.db.fit import DEFAULT_POPULATION, load_family
+        from sass_tui.db.values import load_values
+
+        try:
+            conn = open_database(db_path)
+            try:
+                family = load_family(
+                    conn, gender, measures, coverage / 100.0, "boundary", DEFAULT_POPULATION
+                )
+                people = load_values(
+                    conn,
+                    list(family.measures[:2]),
+                    f"({DEFAULT_POPULATION}) AND gender = {gender}",
+                )
+            finally:
+                conn.close()
+        except (SassError, OSError, sqlite3.Error) as exc:
+            self.post_message(FamilyFailed(f"Cannot build the family: {exc}"))
+            return
+        matrix = people.matrix
+        self.post_message(FamilyBuilt(family, list(matrix[:, 0]), list(matrix[:, 1])))
+
+    def on_family_failed(self, event: FamilyFailed) -> None:
+        self.complain(event.text)
+
+    def on_family_built(self, event: FamilyBuilt) -> None:
+        family = self.family = event.family
+        table = self.query_one(DataTable)
+        table.clear(columns=True)
+        short = [f.removeprefix("measure.") for f in family.measures]
+        table.add_columns("manikin", *short, "nearest person")
+        for manikin in family.manikins:
+            table.add_row(
+                manikin.name,
+                *(f"{manikin.values[f]:.1f}" for f in family.measures),
+                f"{manikin.nearest.name} ({manikin.nearest.distance:.2f})",
+            )
+        x_name, y_name = family.measures[:2]
+        plot = self.query_one(PlotextPlot).plt
+        plot.clear_data()
+        plot.clear_figure()
+        plot.scatter(event.people_x, event.people_y, marker="dot", label="people")
+        plot.scatter(
+            [m.values[x_name] for m in family.manikins],
+            [m.values[y_name] for m in family.manikins],
+            marker="x",
+            label="manikins",
+        )
+        plot.xlabel(short[0])
+        plot.ylabel(short[1])
+        self.query_one(PlotextPlot).refresh()
+        coverage = family.coverage
+        self.query_one("#family-title", Label).update(
+            f"{family.gender} {family.kind} family over {', '.join(short)}: "
+            f"{len(family.manikins)} manikins; {coverage.inside_percent:.1f} % of "
+            f"{coverage.n} people inside (promised {coverage.promised_percent:g} %)"
+        )
+        self.say(f"{len(family.manikins)} manikins. w: write their files; b: another family.")
+
+    # --- writing ---------------------------------------------------------------------
+    def action_write(self) -> None:
+        if self.family is None:
+            self.complain("No family built yet: answer the questions first (b).")
+            return
+        default = f"family_{self.family.gender}"
+        self.ask(
+            f"Directory for the family's files [{default}]:",
+            lambda text: self._write_to(user_path(text.strip() or default)),
+        )
+
+    def _write_to(self, directory: Path) -> None:
+        from sass_tui.model.accommodation import write_family
+        from sass_tui.model.figure import Figure
+
+        family = self.family
+        written = write_family(family, directory, Figure.default(family.gender))
+        self.say(
+            f"Wrote {len(written.manikins)} manikins (.fig, .x3d) and family.json to {directory}."
+        )

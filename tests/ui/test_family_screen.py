@@ -1,0 +1,72 @@
+"""The manikin family screen (issue 14), driven by keys: its table equals
+`load_family`, and `w` writes the files `sass family` writes."""
+
+from __future__ import annotations
+
+import json
+
+from textual.widgets import DataTable
+
+from sass_tui.db.default import open_database
+from sass_tui.db.fit import load_family
+from sass_tui.model.figfile import read_fig
+from sass_tui.ui.app import SassApp
+from sass_tui.ui.family_screen import FamilyScreen
+
+
+async def settle(pilot) -> None:
+    await pilot.app.workers.wait_for_complete()
+    await pilot.pause()
+
+
+def test_the_family_table_equals_load_family(db, drive, tmp_path):
+    conn = open_database(db)
+    try:
+        expected = load_family(conn, "male", ["stature", "mass"], 0.9)
+    finally:
+        conn.close()
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(100, 37)) as pilot:
+            await pilot.press("y")
+            assert isinstance(app.screen, FamilyScreen)
+            await pilot.press("enter")  # gender: male
+            await pilot.press(*"stature,mass", "enter")
+            await pilot.press(*"90", "enter")
+            await settle(pilot)
+            table = app.screen.query_one(DataTable)
+            assert table.row_count == len(expected.manikins)
+            for index, manikin in enumerate(expected.manikins):
+                row = table.get_row_at(index)
+                assert row[0] == manikin.name
+                assert row[1:3] == [f"{manikin.values[f]:.1f}" for f in expected.measures]
+                assert manikin.nearest.name in row[3]
+            await pilot.press("w")
+            await pilot.press(*str(tmp_path / "fam"), "enter")
+            written = json.loads((tmp_path / "fam" / "family.json").read_text())
+            assert len(written["manikins"]) == len(expected.manikins)
+            assert read_fig(tmp_path / "fam" / f"male_{expected.manikins[0].name}.fig")
+            await pilot.press("escape")
+            assert not isinstance(app.screen, FamilyScreen)
+
+    drive(scenario())
+
+
+def test_a_wrong_measure_is_said(db, drive):
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(100, 37)) as pilot:
+            await pilot.press("y", "enter", *"stature,nosuch", "enter")
+            kind, text = app.screen.message_line.history[-1]
+            assert kind == "error" and "nosuch" in text
+
+    drive(scenario())
+
+
+def test_family_screen_snapshot(db, snap_compare):
+    async def run_before(pilot):
+        await pilot.press("y", "enter", *"stature,mass", "enter", *"90", "enter")
+        await settle(pilot)
+
+    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=(100, 37))
