@@ -92,6 +92,11 @@ class SassApp(App):
 
         self.push_screen(QueryScreen(self.query_lists, self.db_path))
 
+    def open_figure_screen(self) -> None:
+        from sass_tui.ui.figure_screen import FigureScreen
+
+        self.push_screen(FigureScreen(self.session))
+
     def on_database_opened(self, event) -> None:
         self.query_lists = event.lists
 

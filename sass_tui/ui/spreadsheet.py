@@ -141,6 +141,7 @@ class SpreadsheetScreen(SassScreen):
         Binding("ctrl+z", "undo", show=False),
         Binding("w", "next_warning", "Warnings"),
         Binding("l", "message_log", show=False),
+        Binding("b", "see_figure", "See figure", show=False),
         *(Binding(key, f"select_group('{group}')", show=False) for group, key in GROUP_KEYS),
     ]
 
@@ -677,6 +678,9 @@ class SpreadsheetScreen(SassScreen):
     # --- Query, Disp. Indv., Disp. More, Disp. Pop. (§12.2.4, §12.4) ----------------------
     def action_query(self) -> None:
         self.app.open_query_screen()
+
+    def action_see_figure(self) -> None:
+        self.app.open_figure_screen()
 
     def action_display_individual(self) -> None:
         self.show_person(0)
