@@ -25,7 +25,9 @@ class SassApp(App):
     # Absolute: the app may be started from any directory.
     CSS_PATH = Path(__file__).with_name("sass.tcss")
     TITLE = "SASS"
-    ENABLE_COMMAND_PALETTE = False
+    # ctrl+p: the active screen's commands (sass_tui/ui/palette.py) and
+    # Textual's own (themes, keys, screenshot, quit).
+    COMMANDS = App.COMMANDS | {lambda: _screen_commands_provider()}
 
     def __init__(
         self,
@@ -129,6 +131,12 @@ class SassApp(App):
                 for k in ("strength_type", "motion_speed", "training_level", "fatigue_level")
             },
         )
+
+
+def _screen_commands_provider():
+    from sass_tui.ui.palette import ScreenCommands
+
+    return ScreenCommands
 
 
 def run_app(db_path: str | Path | None = None, **run_options) -> int:
