@@ -43,6 +43,7 @@ class SassApp(App):
         sheet, self.strength_error = self._load_strength(figure, strength_path)
         self.session = Session(figure, sheet)
         self.query_lists = None  # sass_tui.db.lists.QueryLists, opened by the query screen
+        self._quit_asked_at = float("-inf")
 
     @staticmethod
     def _load_strength(figure: Figure, path: str | Path | None) -> tuple[StrengthSheet | None, str]:
@@ -57,6 +58,24 @@ class SassApp(App):
         except StrengthError:
             pass  # no data for this gender: the page says so when shown
         return sheet, STRENGTH_NOT_LOADED
+
+    # --- quitting -------------------------------------------------------------
+    QUIT_AGAIN_S = 3.0  # a second q within this long quits
+
+    async def action_quit(self) -> None:
+        """Quit; with edits that would be lost, only on a second q."""
+        import time
+
+        now = time.monotonic()
+        if not self.session.can_undo() or now - self._quit_asked_at < self.QUIT_AGAIN_S:
+            self.exit()
+            return
+        self._quit_asked_at = now
+        say = getattr(self.screen, "say", None)
+        if say is not None:
+            say("There are edits that would be lost: press q again to quit.")
+        else:
+            self.notify("There are edits that would be lost: press q again to quit.")
 
     def get_default_screen(self) -> SpreadsheetScreen:
         return SpreadsheetScreen(self.session, self.strength_error)

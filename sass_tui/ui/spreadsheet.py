@@ -282,8 +282,8 @@ class SpreadsheetScreen(SassScreen):
             event.stop()
             await self.run_action(spec.action)
 
-    def action_quit(self) -> None:
-        self.app.exit()
+    async def action_quit(self) -> None:
+        await self.app.action_quit()
 
     def action_next_page(self) -> None:
         self._turn_page(1)
