@@ -44,6 +44,25 @@ class SassApp(App):
         self.session = Session(figure, sheet)
         self.query_lists = None  # sass_tui.db.lists.QueryLists, opened by the query screen
         self._quit_asked_at = float("-inf")
+        self._restore_theme()
+
+    # --- the theme, chosen in the palette ("Change theme"), remembered -----------
+    def _restore_theme(self) -> None:
+        from sass_tui.ui.settings import load_settings
+
+        theme = load_settings().get("theme")
+        if isinstance(theme, str) and theme in self.available_themes:
+            self.theme = theme
+        self._theme_restored = True
+
+    def watch_theme(self, theme: str) -> None:
+        if not getattr(self, "_theme_restored", False):
+            return  # the default, or the one just read back
+        from sass_tui.ui.settings import save_setting
+
+        problem = save_setting("theme", theme)
+        if problem:
+            self.notify(f"The theme is not remembered: {problem}", severity="warning")
 
     @staticmethod
     def _load_strength(figure: Figure, path: str | Path | None) -> tuple[StrengthSheet | None, str]:
