@@ -81,3 +81,15 @@ def test_help_on_the_figure_screen_lists_its_own_keys(drive):
             assert "Create Figure" not in names
 
     drive(scenario())
+
+
+def test_palette_snapshot(snap_compare):
+    async def type_query(pilot):
+        await pilot.press("ctrl+p", *"create fig")
+        await pilot.pause(0.3)
+
+    assert snap_compare(SassApp(), run_before=type_query, terminal_size=(80, 24))
+
+
+def test_help_screen_snapshot(snap_compare):
+    assert snap_compare(SassApp(), press=["f1"], terminal_size=(80, 24))
