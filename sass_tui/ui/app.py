@@ -25,7 +25,9 @@ class SassApp(App):
     # Absolute: the app may be started from any directory.
     CSS_PATH = Path(__file__).with_name("sass.tcss")
     TITLE = "SASS"
-    ENABLE_COMMAND_PALETTE = False
+    # ctrl+p: the active screen's commands (sass_tui/ui/palette.py) and
+    # Textual's own (themes, keys, screenshot, quit).
+    COMMANDS = App.COMMANDS | {lambda: _screen_commands_provider()}
 
     def __init__(
         self,
@@ -41,6 +43,26 @@ class SassApp(App):
         sheet, self.strength_error = self._load_strength(figure, strength_path)
         self.session = Session(figure, sheet)
         self.query_lists = None  # sass_tui.db.lists.QueryLists, opened by the query screen
+        self._quit_asked_at = float("-inf")
+        self._restore_theme()
+
+    # --- the theme, chosen in the palette ("Change theme"), remembered -----------
+    def _restore_theme(self) -> None:
+        from sass_tui.ui.settings import load_settings
+
+        theme = load_settings().get("theme")
+        if isinstance(theme, str) and theme in self.available_themes:
+            self.theme = theme
+        self._theme_restored = True
+
+    def watch_theme(self, theme: str) -> None:
+        if not getattr(self, "_theme_restored", False):
+            return  # the default, or the one just read back
+        from sass_tui.ui.settings import save_setting
+
+        problem = save_setting("theme", theme)
+        if problem:
+            self.notify(f"The theme is not remembered: {problem}", severity="warning")
 
     @staticmethod
     def _load_strength(figure: Figure, path: str | Path | None) -> tuple[StrengthSheet | None, str]:
@@ -55,6 +77,24 @@ class SassApp(App):
         except StrengthError:
             pass  # no data for this gender: the page says so when shown
         return sheet, STRENGTH_NOT_LOADED
+
+    # --- quitting -------------------------------------------------------------
+    QUIT_AGAIN_S = 3.0  # a second q within this long quits
+
+    async def action_quit(self) -> None:
+        """Quit; with edits that would be lost, only on a second q."""
+        import time
+
+        now = time.monotonic()
+        if not self.session.can_undo() or now - self._quit_asked_at < self.QUIT_AGAIN_S:
+            self.exit()
+            return
+        self._quit_asked_at = now
+        say = getattr(self.screen, "say", None)
+        if say is not None:
+            say("There are edits that would be lost: press q again to quit.")
+        else:
+            self.notify("There are edits that would be lost: press q again to quit.")
 
     def get_default_screen(self) -> SpreadsheetScreen:
         return SpreadsheetScreen(self.session, self.strength_error)
@@ -92,6 +132,11 @@ class SassApp(App):
 
         self.push_screen(QueryScreen(self.query_lists, self.db_path))
 
+    def open_figure_screen(self) -> None:
+        from sass_tui.ui.figure_screen import FigureScreen
+
+        self.push_screen(FigureScreen(self.session))
+
     def on_database_opened(self, event) -> None:
         self.query_lists = event.lists
 
@@ -124,6 +169,12 @@ class SassApp(App):
                 for k in ("strength_type", "motion_speed", "training_level", "fatigue_level")
             },
         )
+
+
+def _screen_commands_provider():
+    from sass_tui.ui.palette import ScreenCommands
+
+    return ScreenCommands
 
 
 def run_app(db_path: str | Path | None = None, **run_options) -> int:

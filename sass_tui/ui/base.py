@@ -14,12 +14,19 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from textual import events
+from textual.binding import Binding
 from textual.screen import Screen
 
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
 
 
 class SassScreen(Screen):
+    # Every screen's help (bindings merge down the class hierarchy).
+    BINDINGS = [
+        Binding("f1", "help", "Help", show=False),
+        Binding("question_mark", "help", "Help", show=False),
+    ]
+
     @property
     def message_line(self) -> MessageLine:
         return self.query_one(MessageLine)
@@ -72,6 +79,20 @@ class SassScreen(Screen):
                 self.say(reason)
                 return True
         return False
+
+    async def run_command(self, action: str) -> None:
+        """Run a command chosen in the palette, as its key would."""
+        if self.check_action(action, ()):
+            await self.run_action(action)
+        else:
+            self.say(self.why_not(action) or "That command does not apply here.")
+
+    def action_help(self) -> None:
+        """List every key of this screen, what it runs and what that does."""
+        from sass_tui.ui.palette import HelpScreen, screen_commands
+
+        title = f"Keys of {type(self).__name__.removesuffix('Screen') or 'this'} screen"
+        self.app.push_screen(HelpScreen(screen_commands(self), title))
 
     def why_not(self, action: str) -> str | None:
         """Why a command's key does nothing here (its slot shows another

@@ -148,6 +148,7 @@ class SpreadsheetScreen(SassScreen):
         Binding("ctrl+z", "undo", show=False),
         Binding("w", "next_warning", "Warnings"),
         Binding("l", "message_log", show=False),
+        Binding("b", "see_figure", "See figure", show=False),
         *(Binding(key, f"select_group('{group}')", show=False) for group, key in GROUP_KEYS),
     ]
 
@@ -296,8 +297,8 @@ class SpreadsheetScreen(SassScreen):
             event.stop()
             await self.run_action(spec.action)
 
-    def action_quit(self) -> None:
-        self.app.exit()
+    async def action_quit(self) -> None:
+        await self.app.action_quit()
 
     def action_next_page(self) -> None:
         self._turn_page(1)
@@ -692,6 +693,9 @@ class SpreadsheetScreen(SassScreen):
     # --- Query, Disp. Indv., Disp. More, Disp. Pop. (§12.2.4, §12.4) ----------------------
     def action_query(self) -> None:
         self.app.open_query_screen()
+
+    def action_see_figure(self) -> None:
+        self.app.open_figure_screen()
 
     def action_display_individual(self) -> None:
         self.show_person(0)

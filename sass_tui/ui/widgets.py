@@ -325,9 +325,12 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
                 0 if cell.slot == 0 else start - self._label_b() if cell.slot == 2 else start
             )
             if cell.row == offset.y and label_start <= offset.x < start + span:
+                again = self.has_focus and (event.chain > 1 or self.cursor == cell)
                 self.cursor = cell
                 self.focus()
                 self.refresh()
+                if again:  # a second click on the chosen value edits it
+                    self.action_edit()
                 return
 
     def action_move(self, rows: int, slots: int) -> None:
@@ -570,6 +573,8 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
             self.row_count, (self.page + 1) * self.page_size
         ):
             return
+        chosen = (self.cursor_row, self.cursor_column)
+        was_focused = self.has_focus  # not while a prompt has the keys
         self.cursor_row = row
         for column in range(self.COLUMNS):
             start, width = self._column_start(column)
@@ -577,6 +582,17 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
                 self.cursor_column = column
         self.focus()
         self.refresh()
+        # A click chooses the cell; a second click on it (or a double click) edits it.
+        if was_focused and (event.chain > 1 or chosen == (self.cursor_row, self.cursor_column)):
+            self.action_edit()
+
+    def on_mouse_scroll_down(self, event: events.MouseScrollDown) -> None:
+        event.stop()
+        self.turn_page(1)
+
+    def on_mouse_scroll_up(self, event: events.MouseScrollUp) -> None:
+        event.stop()
+        self.turn_page(-1)
 
     def action_move(self, rows: int, columns: int) -> None:
         self.cursor_row = min(max(self.cursor_row + rows, 0), self.row_count - 1)

@@ -15,6 +15,12 @@ def no_cursor_blink(monkeypatch):
     monkeypatch.setattr(Input.__dict__["cursor_blink"], "_default", False)
 
 
+@pytest.fixture(autouse=True)
+def own_config_dir(tmp_path_factory, monkeypatch):
+    """Never the user's remembered theme (snapshots), nor write to it."""
+    monkeypatch.setenv("XDG_CONFIG_HOME", str(tmp_path_factory.mktemp("config")))
+
+
 @pytest.fixture
 def drive():
     """Run an async Pilot scenario from a plain test (no asyncio plugin needed)."""

@@ -1,0 +1,105 @@
+"""The figure screen: opened from the spreadsheet, drawn to scale, overlays."""
+
+from __future__ import annotations
+
+import pytest
+from textual_canvas import Canvas
+
+from sass_tui.model.figure import Figure
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
+from sass_tui.ui.app import SassApp
+from sass_tui.ui.figure_screen import FigureScreen
+from sass_tui.ui.figure_view import FILL, OVERLAY, FigureView
+
+
+def percentile_figure(gender: str, p: float) -> Figure:
+    figure = Figure.default(gender)
+    for group in (GIRTH, CENTER_OF_MASS, JOINT_LIMITS):
+        figure.set_group_percentile(group, p)
+    figure.set_stature_percentile(p)
+    figure.set_mass_percentile(p)
+    return figure
+
+
+def colour_rows(app, colour) -> list[int]:
+    canvas = app.screen.query_one(Canvas)
+    return [
+        y
+        for y in range(canvas.height)
+        if any(canvas.get_pixel(x, y) == colour for x in range(canvas.width))
+    ]
+
+
+@pytest.mark.parametrize("size", [(80, 24), (120, 40)])
+@pytest.mark.parametrize("gender, p", [("male", 95), ("female", 5)])
+def test_figure_view_snapshot(snap_compare, gender, p, size):
+    assert snap_compare(SassApp(percentile_figure(gender, p)), press=["b"], terminal_size=size)
+
+
+def test_figure_view_snapshot_with_overlay(snap_compare):
+    app = SassApp(percentile_figure("female", 5))
+    assert snap_compare(app, press=["b", "o"], terminal_size=(120, 40))
+
+
+def test_b_opens_the_figure_and_escape_goes_back(drive):
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(100, 30)) as pilot:
+            await pilot.press("b")
+            await pilot.pause()
+            assert isinstance(app.screen, FigureScreen)
+            assert len(app.screen.query_one(FigureView).outlines) == 1
+            assert colour_rows(app, FILL)
+            await pilot.press("escape")
+            await pilot.pause()
+            assert not isinstance(app.screen, FigureScreen)
+
+    drive(scenario())
+
+
+def test_an_edit_is_drawn_when_the_screen_is_shown_again(drive):
+    """Stature 50th -> 99th on the spreadsheet: the figure stands taller."""
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(100, 30)) as pilot:
+            await pilot.press("b")
+            await pilot.pause()
+            before = app.screen.query_one(FigureView).outlines[0].height
+            await pilot.press("escape")
+            app.session.set_group_percentile(GIRTH, 99)
+            app.session.set_stature_percentile(99)
+            await pilot.press("b")
+            await pilot.pause()
+            after = app.screen.query_one(FigureView).outlines[0].height
+            assert after > before + 5  # cm
+            # u undoes on the figure screen too, and the figure is redrawn.
+            await pilot.press("u", "u")
+            await pilot.pause()
+            assert app.screen.query_one(FigureView).outlines[0].height == pytest.approx(before)
+
+    drive(scenario())
+
+
+def test_o_cycles_the_population_overlay(drive):
+    async def scenario():
+        app = SassApp(percentile_figure("male", 95))
+        async with app.run_test(size=(120, 40)) as pilot:
+            await pilot.press("b", "o")
+            await pilot.pause()
+            view = app.screen.query_one(FigureView)
+            shown, overlay = view.outlines
+            assert overlay.label == "population 50th"
+            assert overlay.height < shown.height  # the 50th is shorter than the 95th
+            fifty_height = overlay.height
+            assert colour_rows(app, OVERLAY)
+            await pilot.press("o")  # the 5th
+            await pilot.pause()
+            assert view.outlines[1].height < fifty_height
+            await pilot.press("o", "o")  # the 95th, then none
+            await pilot.pause()
+            assert len(view.outlines) == 1
+            # The overlay never changes the figure shown.
+            assert app.session.figure.stature_percentile == 95
+
+    drive(scenario())
