@@ -146,9 +146,11 @@ class SummaryPanel(Static):
         self.update(text.rstrip() or text)
 
 
-# Name, gender, mass, stature, strength type, motion speed, handedness, training, fatigue.
+# Name, source, gender, mass, stature, strength type, motion speed, handedness,
+# training, fatigue.
 LIST_COLUMNS = (
     ("Name", "name", 14, "<"),
+    ("Source", "source", 10, "<"),
     ("Gender", "gender", 7, "<"),
     ("Mass kg", "mass", 8, ">"),
     ("Stature cm", "stature", 11, ">"),
@@ -160,8 +162,15 @@ LIST_COLUMNS = (
 )
 
 
+# How a person's source label reads in the list; an imported file's label is
+# shown as stored.
+SOURCE_NAMES = {"ansur2": "ANSUR II", "synthetic": "synthetic"}
+
+
 def _cell(row: dict, key: str) -> str:
     value = row.get(key)
+    if key == "source" and isinstance(value, str):
+        return SOURCE_NAMES.get(value, value)
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
     if isinstance(value, float):
@@ -349,7 +358,11 @@ class QueryScreen(SassScreen):
 
     def _focus_back(self) -> None:
         if self.popup.display:
-            self.set_focus(self.popup.query_one(OptionList))
+            menu = self.popup.menu
+            searchable = menu is not None and menu.searchable
+            self.set_focus(
+                self.popup.query_one("#popup-search" if searchable else "#popup-options")
+            )
         else:
             self.set_focus(self.sheet)
 
