@@ -313,6 +313,7 @@ class QueryScreen(SassScreen):
         *(Binding(spec.key, spec.action, spec.footer) for spec in QUERY_COMMANDS),
         Binding("b", "build", "Build query"),
         Binding("m", "make_population", "Make Pop."),
+        Binding("f", "fit_test", "Fit Test"),
         Binding("q", "app.quit", "Quit"),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
@@ -740,6 +741,28 @@ class QueryScreen(SassScreen):
             f"Population of {people_words(event.result.counts)} written ({files}) and loaded: "
             "Create Figure now sizes this subpopulation; joint limits and strength keep "
             "the loaded population."
+        )
+
+    # --- Fit Test (issue 14) ------------------------------------------------------------
+    def action_fit_test(self) -> None:
+        from sass_tui.db.fit import DEFAULT_POPULATION
+        from sass_tui.ui.fit_screen import FitScreen
+
+        if self.running:
+            self.say(WAIT)
+            return
+        limits = self.lists.last_query if self.lists else None
+        if not limits:
+            self.say("Fit Test uses the last query as design limits: run a query first.")
+            return
+
+        def answer(text: str) -> None:
+            self.app.push_screen(FitScreen(self.lists, limits, text.strip() or DEFAULT_POPULATION))
+
+        self.ask(
+            f"Population to test (Enter: {DEFAULT_POPULATION}):",
+            answer,
+            on_cancel=lambda: self.say("Fit Test cancelled."),
         )
 
     # --- Input DB ----------------------------------------------------------------------
