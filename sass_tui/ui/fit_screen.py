@@ -13,7 +13,7 @@ from textual.message import Message
 from textual.screen import Screen
 from textual.widgets import Footer, Static
 
-from sass_tui.cli.fit import format_table
+from sass_tui.db.fit_table import format_table
 from sass_tui.db.lists import QueryLists
 
 

@@ -7,8 +7,8 @@ from __future__ import annotations
 from test_query_measurements import csv_rows
 from test_query_screen import choose, settle
 
-from sass_tui.cli.fit import format_table
 from sass_tui.db.fit import fit_test
+from sass_tui.db.fit_table import format_table
 from sass_tui.db.schema import connect
 from sass_tui.ui.app import SassApp
 from sass_tui.ui.fit_screen import FitScreen
