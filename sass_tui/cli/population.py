@@ -32,15 +32,11 @@ def register(commands: SubParsers) -> None:
     population.set_defaults(func=run)
 
 
-def cmass_path(girth_path: Path) -> Path:
-    return girth_path.with_name(f"{girth_path.stem}-cmass{girth_path.suffix or '.dat'}")
-
-
 def run(args: argparse.Namespace) -> int:
     from sass_tui.db.population import people_words, population_of
+    from sass_tui.db.population_files import write_population_files
     from sass_tui.db.query import compile_query
-    from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUP_TITLES
-    from sass_tui.model.popfile import write_population_file
+    from sass_tui.model.names import GROUP_TITLES
 
     compile_query(args.query)  # a bad query touches nothing
     conn = open_db(args)
@@ -48,11 +44,8 @@ def run(args: argparse.Namespace) -> int:
         result = population_of(conn, args.query, title=args.title)
     finally:
         conn.close()
-    target = Path(args.output)
-    paths = {GIRTH: target, CENTER_OF_MASS: cmass_path(target)}
-    for group, data in result.groups.items():
-        write_population_file(data, paths[group])
-        print(f"wrote {paths[group]} ({GROUP_TITLES[group].lower()})")
+    for group, path in write_population_files(result, Path(args.output)).items():
+        print(f"wrote {path} ({GROUP_TITLES[group].lower()})")
     for group in result.empty_groups:
         print(
             f"no {GROUP_TITLES[group].lower()} file: none of these people has a value of it",

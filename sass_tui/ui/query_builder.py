@@ -20,10 +20,11 @@ from dataclasses import dataclass, field
 from textual.binding import Binding
 from textual.containers import Vertical
 from textual.message import Message
-from textual.widgets import OptionList
+from textual.widgets import Input, OptionList
 from textual.widgets.option_list import Option
 
 from sass_tui.db.query import QueryError, compile_query
+from sass_tui.model.measures import MEASURE_UNITS, MEASURES
 from sass_tui.model.names import CENTER_OF_MASS_ROWS, GIRTH_ROWS, JOINT_LIMIT_ROWS
 from sass_tui.model.strength import MOTIONS
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
@@ -46,6 +47,7 @@ class Menu:
     title: str
     items: tuple[Item, ...]
     previous: bool = True  # every menu but the Query Menu has Previous Menu
+    searchable: bool = False  # too long for a plain menu: typing filters it
 
 
 def _rows_menu(key: str, title: str, rows, then: str, suffix: str = "") -> Menu:
@@ -57,6 +59,14 @@ def _words_menu(key: str, title: str, words) -> Menu:
 
 
 _NUMERIC = "operation"
+_TEXT = "text_operation"  # = / != and a typed value put in quotes
+# The 93 ANSUR II measurements, as the survey spells them, with their unit.
+MEASUREMENTS_MENU = Menu(
+    "measure",
+    "Measurements",
+    tuple(Item(f"{n} ({MEASURE_UNITS[n]})", f"measure.{n}", _NUMERIC) for n in MEASURES),
+    searchable=True,
+)
 MENUS: dict[str, Menu] = {
     m.key: m
     for m in (
@@ -66,6 +76,7 @@ MENUS: dict[str, Menu] = {
             (
                 Item("Global Information", "", "global"),
                 Item("Anthropometric Groups", "", "group"),
+                Item("Measurements", "", "measure"),
                 Item("Re_execute", "", "re_execute"),
                 Item("Abort", "", "abort"),
             ),
@@ -76,8 +87,16 @@ MENUS: dict[str, Menu] = {
             "Global Information",
             (
                 Item("Gender", "gender", "gender"),
-                Item("Mass", "mass", _NUMERIC),
-                Item("Stature", "stature", _NUMERIC),
+                Item("Mass (kg)", "mass", _NUMERIC),
+                Item("Stature (cm)", "stature", _NUMERIC),
+                Item("Age (years)", "age", _NUMERIC),
+                Item("Source", "source", _TEXT),
+                Item("Component", "component", _TEXT),
+                Item("Branch", "branch", _TEXT),
+                Item("Writing Preference", "writingpreference", "handedness"),
+                Item("Ethnicity", "ethnicity", _TEXT),
+                Item("Subject Numeric Race", "subjectnumericrace", _NUMERIC),
+                Item("DoD Race", "dodrace", _NUMERIC),
                 Item("Strength Type", "strength_type", "strength_type"),
                 Item("Handedness", "handedness", "handedness"),
                 Item("Motion Speed", "motion_speed", _NUMERIC),
@@ -118,6 +137,12 @@ MENUS: dict[str, Menu] = {
                 Item("Not Equal (≠)", " != ", "value"),
             ),
         ),
+        Menu(
+            _TEXT,
+            "Relational Operation Menu",
+            (Item("Equal (=)", " = ", "value"), Item("Not Equal (≠)", " != ", "value")),
+        ),
+        MEASUREMENTS_MENU,
         Menu(
             "conjunction",
             "Conjunction Menu",
@@ -176,14 +201,32 @@ class QueryBuilder:
     def constraint(self, typed: str) -> None:
         """The typed constraint value; raises QueryError (builder unchanged) when
         the condition it completes is not valid, e.g. not a number."""
-        condition = self._condition_text() + typed.strip()
+        typed = self._completed_value(typed.strip())
+        condition = self._condition_text() + typed
         try:
             compile_query(condition)
         except QueryError as exc:
             reason = re.sub(r"^column \d+: ", "", str(exc))
             raise QueryError(f"{typed.strip()!r} is not a valid constraint: {reason}") from None
-        self.steps.append(Step("value", typed.strip()))
+        self.steps.append(Step("value", typed))
         self.current = "conjunction"
+
+    def _completed_value(self, typed: str) -> str:
+        """A text field's value goes in quotes (unless typed in quotes); a
+        measurement's bare number gets the measurement's unit."""
+        if len(self.steps) < 2 or not typed:
+            return typed
+        field_step, operation_step = self.steps[-2], self.steps[-1]
+        if operation_step.shown == _TEXT and typed[0] not in "'\"":
+            quote = '"' if "'" in typed else "'"
+            return f"{quote}{typed}{quote}"
+        if field_step.text.startswith("measure."):
+            try:
+                float(typed)
+            except ValueError:
+                return typed
+            return f"{typed} {MEASURE_UNITS[field_step.text.removeprefix('measure.')]}"
+        return typed
 
     def replace_text(self, text: str) -> None:
         """The query edited as text on the message line: it becomes one piece,
@@ -199,6 +242,22 @@ class QueryBuilder:
                 break
             pieces.append(step.text)
         return "".join(reversed(pieces))
+
+
+class MenuSearch(Input):
+    """The filter above a searchable menu: typing narrows the items, the arrow
+    keys move in the menu below, Enter chooses the highlighted item."""
+
+    BINDINGS = [
+        Binding("down", "move(1)", show=False),
+        Binding("up", "move(-1)", show=False),
+    ]
+
+    def action_move(self, rows: int) -> None:
+        options = self.parent.query_one(OptionList)
+        if options.option_count:
+            current = options.highlighted if options.highlighted is not None else -1
+            options.highlighted = max(0, min(current + rows, options.option_count - 1))
 
 
 class QueryPopup(Vertical):
@@ -219,20 +278,49 @@ class QueryPopup(Vertical):
         pass
 
     def compose(self):
+        search = MenuSearch(placeholder="type to filter", id="popup-search", compact=True)
+        search.display = False
+        yield search
         yield OptionList(id="popup-options")
 
     menu_key: str | None = None
+    menu: Menu | None = None
 
     def show_menu(self, menu: Menu) -> None:
         self.menu_key = menu.key
+        self.menu = menu
         self.border_title = menu.title
+        search = self.query_one(MenuSearch)
+        search.display = menu.searchable
+        self.set_class(menu.searchable, "-searchable")
+        with search.prevent(Input.Changed):
+            search.value = ""
+        self._fill("")
+        self.display = True
+        (search if menu.searchable else self.query_one(OptionList)).focus()
+
+    def _fill(self, typed: str) -> None:
+        menu = self.menu
+        words = typed.lower().split()
+        labels = [
+            item.label for item in menu.items if all(word in item.label.lower() for word in words)
+        ] + ([PREVIOUS] if menu.previous else [])
         options = self.query_one(OptionList)
         options.clear_options()
-        labels = [item.label for item in menu.items] + ([PREVIOUS] if menu.previous else [])
         options.add_options([Option(label, id=f"opt-{i}") for i, label in enumerate(labels)])
         options.highlighted = 0
-        self.display = True
-        options.focus()
+
+    def on_input_changed(self, event: Input.Changed) -> None:
+        event.stop()
+        if self.menu is not None:
+            self._fill(event.value)
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        event.stop()
+        options = self.query_one(OptionList)
+        if options.highlighted is not None and options.option_count:
+            prompt = options.get_option_at_index(options.highlighted).prompt
+            self.post_message(self.Chosen(str(prompt), self.menu_key))
 
     def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
         event.stop()

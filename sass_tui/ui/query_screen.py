@@ -146,9 +146,11 @@ class SummaryPanel(Static):
         self.update(text.rstrip() or text)
 
 
-# Name, gender, mass, stature, strength type, motion speed, handedness, training, fatigue.
+# Name, source, gender, mass, stature, strength type, motion speed, handedness,
+# training, fatigue.
 LIST_COLUMNS = (
     ("Name", "name", 14, "<"),
+    ("Source", "source", 10, "<"),
     ("Gender", "gender", 7, "<"),
     ("Mass kg", "mass", 8, ">"),
     ("Stature cm", "stature", 11, ">"),
@@ -160,8 +162,15 @@ LIST_COLUMNS = (
 )
 
 
+# How a person's source label reads in the list; an imported file's label is
+# shown as stored.
+SOURCE_NAMES = {"ansur2": "ANSUR II", "synthetic": "synthetic"}
+
+
 def _cell(row: dict, key: str) -> str:
     value = row.get(key)
+    if key == "source" and isinstance(value, str):
+        return SOURCE_NAMES.get(value, value)
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
     if isinstance(value, float):
@@ -276,6 +285,16 @@ class QueryFinished(Message):
         self.error = error
 
 
+class PopulationMade(Message):
+    """Make Population's outcome: the population and the files written, or why not."""
+
+    def __init__(self, result=None, paths: dict | None = None, error: str = "") -> None:
+        super().__init__()
+        self.result = result
+        self.paths = paths or {}
+        self.error = error
+
+
 class ImportFinished(Message):
     def __init__(self, count: int | None, error: str = "") -> None:
         super().__init__()
@@ -293,6 +312,8 @@ class QueryScreen(SassScreen):
     BINDINGS = [
         *(Binding(spec.key, spec.action, spec.footer) for spec in QUERY_COMMANDS),
         Binding("b", "build", "Build query"),
+        Binding("m", "make_population", "Make Pop."),
+        Binding("f", "fit_test", "Fit Test"),
         Binding("q", "app.quit", "Quit"),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
@@ -349,7 +370,11 @@ class QueryScreen(SassScreen):
 
     def _focus_back(self) -> None:
         if self.popup.display:
-            self.set_focus(self.popup.query_one(OptionList))
+            menu = self.popup.menu
+            searchable = menu is not None and menu.searchable
+            self.set_focus(
+                self.popup.query_one("#popup-search" if searchable else "#popup-options")
+            )
         else:
             self.set_focus(self.sheet)
 
@@ -650,6 +675,95 @@ class QueryScreen(SassScreen):
             self.say(f"{COMPLETE} {count:,} people found.")
         else:
             self.say(NO_DATA)
+
+    # --- Make Population (issue 12) ----------------------------------------------------
+    def action_make_population(self) -> None:
+        if self.running:
+            self.say(WAIT)
+            return
+        query = self.lists.last_query if self.lists else None
+        if not query:
+            self.say("Make Population uses the people of the last query: run a query first.")
+            return
+
+        def answer(text: str) -> None:
+            name = text.strip()
+            if not name:
+                self.say("Make Population cancelled: no file name given.")
+                return
+            self.running = True
+            self.say(f"Making the population of {query}, please wait...")
+            self.make_population(self.lists, query, Path(name).expanduser())
+
+        self.ask(
+            "Population file name (girth; the center-of-mass file goes beside it):",
+            answer,
+            on_cancel=lambda: self.say("Make Population cancelled."),
+        )
+
+    @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
+    def make_population(self, lists: QueryLists, query: str, target: Path) -> None:
+        from sass_tui.db.population import population_of
+        from sass_tui.db.population_files import write_population_files
+
+        try:
+            with lists.lock:
+                result = population_of(lists.conn, query)
+            paths = write_population_files(result, target)
+        except DB_ERRORS as exc:
+            self.post_message(PopulationMade(error=str(exc)))
+            return
+        self.post_message(PopulationMade(result, paths))
+
+    def on_population_made(self, event: PopulationMade) -> None:
+        from dataclasses import replace
+
+        from sass_tui.db.population import people_words
+        from sass_tui.model.names import GROUP_TITLES
+
+        event.stop()
+        self.running = False
+        if event.error:
+            self.complain(f"Make Population: nothing written or loaded: {event.error}")
+            return
+        session = self.app.session
+        if session.person is not None:
+            session.show_population()  # the population is what the next figure is sized from
+        genders = list(event.result.counts)
+        if len(genders) == 1 and session.population.gender != genders[0]:
+            session.set_gender(genders[0])  # the only gender the population has
+        for group, data in event.result.groups.items():
+            session.load_group(group, replace(data, path=str(event.paths[group])))
+        files = ", ".join(
+            f"{GROUP_TITLES[group].lower()} {path}" for group, path in event.paths.items()
+        )
+        self.say(
+            f"Population of {people_words(event.result.counts)} written ({files}) and loaded: "
+            "Create Figure now sizes this subpopulation; joint limits and strength keep "
+            "the loaded population."
+        )
+
+    # --- Fit Test (issue 14) ------------------------------------------------------------
+    def action_fit_test(self) -> None:
+        from sass_tui.db.fit import DEFAULT_POPULATION
+        from sass_tui.ui.fit_screen import FitScreen
+
+        if self.running:
+            self.say(WAIT)
+            return
+        limits = self.lists.last_query if self.lists else None
+        if not limits:
+            self.say("Fit Test uses the last query as design limits: run a query first.")
+            return
+
+        def answer(text: str) -> None:
+            self.app.push_screen(FitScreen(self.lists, limits, text.strip() or DEFAULT_POPULATION))
+
+        self.ask(
+            f"Population to test (Enter: {DEFAULT_POPULATION}):",
+            answer,
+            on_cancel=lambda: self.say("Fit Test cancelled."),
+        )
 
     # --- Input DB ----------------------------------------------------------------------
     def action_input_db(self) -> None:

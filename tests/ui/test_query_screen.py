@@ -121,6 +121,7 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
             assert popup_labels(app) == [
                 "Global Information",
                 "Anthropometric Groups",
+                "Measurements",
                 "Re_execute",
                 "Abort",
             ]
@@ -286,7 +287,7 @@ def test_constraint_that_is_not_a_number(drive, db):
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
             await choose(pilot, "Global Information")
-            await choose(pilot, "Stature")
+            await choose(pilot, "Stature (cm)")
             await choose(pilot, "Greater Than (>)")
             await type_answer(pilot, "tall")
             assert "'tall' is not a valid constraint" in message(app)

@@ -60,6 +60,15 @@ def test_popup_menu(snap_compare, db, menu):
     assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
 
 
+def test_measurement_menu_filtered(snap_compare, db):
+    async def run_before(pilot):
+        await open_builder(pilot)
+        await choose(pilot, "Measurements")
+        await pilot.press(*"sitting")
+
+    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
+
+
 def test_individual_displayed(snap_compare, db):
     async def run_before(pilot):
         await pilot.press("d")

@@ -93,10 +93,23 @@ def test_the_query_list_shows_whole_names(drive, db):
             assert isinstance(app.screen, QueryScreen)
             sheet = app.screen.query_one(ListSheet)
             sheet.show_rows(
-                [{"id": 1, "name": "ANSUR II F 11533", "gender": "female", "mass": 60.1}], 0, 1
+                [
+                    {
+                        "id": 1,
+                        "name": "ANSUR II F 11533",
+                        "source": "ansur2",
+                        "gender": "female",
+                        "mass": 60.1,
+                    }
+                ],
+                0,
+                1,
             )
             await pilot.pause()
             rows = str(sheet.render()).splitlines()
-            assert rows[2].startswith("ANSUR II F 11533 female")
+            # the whole name, then the Source column (issue 12), then the gender
+            assert rows[2].split()[:6] == ["ANSUR", "II", "F", "11533", "ANSUR", "II"]
+            assert rows[2].startswith("ANSUR II F 11533 ANSUR II")
+            assert rows[2].split()[6] == "female"
 
     drive(scenario())

@@ -1,0 +1,26 @@
+"""Writing a selection's population (db/population.py) as files: the girth
+file where the user asked, the center-of-mass file beside it as
+NAME-cmass.dat.  One code path for `sass population` and the query screen's
+Make Population."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from sass_tui.db.population import SelectionPopulation
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH
+from sass_tui.model.popfile import write_population_file
+
+
+def cmass_path(girth_path: Path) -> Path:
+    return girth_path.with_name(f"{girth_path.stem}-cmass{girth_path.suffix or '.dat'}")
+
+
+def write_population_files(result: SelectionPopulation, target: Path) -> dict[str, Path]:
+    """Write each group the population has; returns group -> the file written."""
+    paths = {GIRTH: target, CENTER_OF_MASS: cmass_path(target)}
+    written: dict[str, Path] = {}
+    for group, data in result.groups.items():
+        write_population_file(data, paths[group])
+        written[group] = paths[group]
+    return written

@@ -1,0 +1,77 @@
+"""Fit Test on the query screen (issue 14): the last query as design limits
+over ANSUR II, driven by key presses; the shares on screen are fit_test's and
+a direct count over the survey's CSV files."""
+
+from __future__ import annotations
+
+from test_query_measurements import csv_rows
+from test_query_screen import choose, settle
+
+from sass_tui.db.fit import fit_test
+from sass_tui.db.fit_table import format_table
+from sass_tui.db.schema import connect
+from sass_tui.ui.app import SassApp
+from sass_tui.ui.fit_screen import FitScreen
+from sass_tui.ui.query_screen import QueryScreen
+
+SIZE = (120, 40)
+LIMITS = "measure.sittingheight < 95 cm AND stature > 160"  # as the menus build it
+
+
+def test_fit_test_of_the_query_over_ansur2(drive, db):
+    fit = {"male": 0, "female": 0}
+    people = {"male": 0, "female": 0}
+    for row in csv_rows():
+        gender = row["gender"].lower()
+        people[gender] += 1
+        fit[gender] += float(row["sittingheight"]) < 950 and float(row["stature"]) > 1600
+    with connect(db) as conn:
+        expected = fit_test(conn, LIMITS)
+    for gender in ("male", "female"):
+        assert expected.genders[gender].fit == fit[gender]
+        assert expected.genders[gender].n == people[gender]
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("d")
+            await settle(pilot)
+            await pilot.press("d", "b")
+            await choose(pilot, "Measurements")
+            await pilot.press(*"sittingh", "enter")
+            await choose(pilot, "Less Than (<)")
+            await pilot.press(*"95", "enter")
+            await choose(pilot, "And")
+            await choose(pilot, "Global Information")
+            await choose(pilot, "Stature (cm)")
+            await choose(pilot, "Greater Than (>)")
+            await pilot.press(*"160", "enter")
+            await choose(pilot, "Done")
+            await settle(pilot)
+            await pilot.press("f", "enter")
+            await settle(pilot)
+            assert isinstance(app.screen, FitScreen)
+            shown = str(app.screen.query_one("#fit-table").render())
+            assert shown.strip() == format_table(expected).strip()
+            for gender in ("male", "female"):
+                line = next(x for x in shown.splitlines() if x.startswith(gender))
+                assert line.split()[1:3] == [str(people[gender]), str(fit[gender])]
+                share = 100 * fit[gender] / people[gender]
+                assert f"{share:.1f} %" in line
+            await pilot.press("escape")
+            await pilot.pause()
+            assert isinstance(app.screen, QueryScreen)
+
+    drive(scenario())
+
+
+def test_fit_screen_snapshot(snap_compare, db):
+    async def run_before(pilot):
+        await pilot.press("d")
+        await settle(pilot)
+        pilot.app.screen.start_query(LIMITS)
+        await settle(pilot)
+        await pilot.press("f", "enter")
+        await settle(pilot)
+
+    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=(80, 24))

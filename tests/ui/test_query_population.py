@@ -1,0 +1,109 @@
+"""Make Population on the query screen (issue 12): the people of the query,
+driven by key presses, written as population files and loaded for the next
+Create Figure; a gender with too few people refused with the count."""
+
+from __future__ import annotations
+
+import numpy as np
+from test_query_screen import choose, message, settle
+
+from sass_tui.db.individual import fetch_individual
+from sass_tui.db.population_files import cmass_path
+from sass_tui.db.schema import connect
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH
+from sass_tui.model.popfile import read_population_file
+from sass_tui.ui.app import SassApp
+
+SIZE = (120, 40)
+
+
+async def query_young_women(pilot) -> None:
+    """gender = female AND age < 25, through the pop-up menus."""
+    await pilot.press("d")
+    await settle(pilot)
+    await pilot.press("d", "b")
+    for label in ("Global Information", "Gender", "Female", "And", "Global Information"):
+        await choose(pilot, label)
+    await choose(pilot, "Age (years)")
+    await choose(pilot, "Less Than (<)")
+    await pilot.press(*"25", "enter")
+    await choose(pilot, "Done")
+    await settle(pilot)
+
+
+def test_make_population_writes_files_of_the_medians_and_loads_them(drive, db, tmp_path):
+    with connect(db) as conn:
+        ids = [
+            r[0]
+            for r in conn.execute(
+                "SELECT id_num FROM person WHERE gender = 'female' AND age < 25 ORDER BY id_num"
+            )
+        ]
+        people = [fetch_individual(conn, i) for i in ids]
+    medians = {
+        group: np.nanmedian(np.stack([p.groups[group] for p in people]), axis=0)
+        for group in (GIRTH, CENTER_OF_MASS)
+    }
+    target = tmp_path / "young.dat"
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            await query_young_women(pilot)
+            assert f"{len(ids):,} people found" in message(app)
+            await pilot.press("m")
+            await pilot.press(*str(target), "enter")
+            await settle(pilot)
+            said = message(app)
+            assert f"{len(ids):,} women" in said
+            assert "joint limits and strength keep the loaded population" in said
+            figure = app.session.population
+            assert figure.gender == "female"  # the population holds women only
+            for group, path in ((GIRTH, target), (CENTER_OF_MASS, cmass_path(target))):
+                source = figure.groups[group].source
+                assert source.path == str(path)
+                assert "gender = female AND age < 25" in source.title
+                np.testing.assert_allclose(
+                    source.sections["female"],
+                    read_population_file(path, group).sections["female"],
+                    atol=0.006,
+                )
+
+    drive(scenario())
+    for group, path in ((GIRTH, target), (CENTER_OF_MASS, cmass_path(target))):
+        data = read_population_file(path, group)
+        fiftieth = data.sections["female"][:, :, 1]
+        expected = medians[group]
+        measured = ~np.isnan(expected)
+        assert measured.any()
+        np.testing.assert_allclose(fiftieth[measured], expected[measured], atol=0.006)
+
+
+def test_make_population_refuses_a_gender_with_fewer_than_20(drive, db, tmp_path):
+    with connect(db) as conn:
+        (count,) = conn.execute(
+            "SELECT count(*) FROM person WHERE gender = 'female' AND stature > 180"
+        ).fetchone()
+    assert 0 < count < 20
+    target = tmp_path / "tall.dat"
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("d")
+            await settle(pilot)
+            await pilot.press("d", "b")
+            for label in ("Global Information", "Gender", "Female", "And", "Global Information"):
+                await choose(pilot, label)
+            await choose(pilot, "Stature (cm)")
+            await choose(pilot, "Greater Than (>)")
+            await pilot.press(*"180", "enter")
+            await choose(pilot, "Done")
+            await settle(pilot)
+            await pilot.press("m", *str(target), "enter")
+            await settle(pilot)
+            word = "woman" if count == 1 else "women"
+            assert f"only {count} {word}" in message(app)
+            assert not target.exists()
+
+    drive(scenario())
