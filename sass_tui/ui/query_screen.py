@@ -31,6 +31,7 @@ from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.query import QueryError
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
+from sass_tui.model.text import printable
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.commands import CommandSpec
 from sass_tui.ui.query_builder import PREVIOUS, VALUE_PROMPT, QueryBuilder, QueryPopup
@@ -170,12 +171,12 @@ SOURCE_NAMES = {"ansur2": "ANSUR II", "synthetic": "synthetic"}
 def _cell(row: dict, key: str) -> str:
     value = row.get(key)
     if key == "source" and isinstance(value, str):
-        return SOURCE_NAMES.get(value, value)
+        return printable(SOURCE_NAMES.get(value, value))
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
     if isinstance(value, float):
         return f"{value:.1f}" if key in ("mass", "stature") else f"{value:g}"
-    return str(value)
+    return printable(value)  # names and sources come from files (issue 17)
 
 
 class ListSheet(Widget, can_focus=True):

@@ -24,6 +24,7 @@ from textual.widgets import Button, Input, Label, Static
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import AXES, GIRTH, GROUP_TITLES, STRENGTH
+from sass_tui.model.text import printable
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert
 from sass_tui.ui.commands import CommandSpec
 
@@ -204,9 +205,14 @@ _LABEL_B, _SHORT_LABEL_B = 15, 10
 _NARROW = _LABEL_A + _SLOT0 + _SLOT1 + _GAP + _LABEL_B + 11
 
 
+def printable_lines(text: str) -> str:
+    """`printable` line by line: a message may span lines, and keeps them."""
+    return "\n".join(printable(line) for line in text.split("\n"))
+
+
 def global_text(figure, group: str, field: str, strength_percentile: float | None = None) -> str:
     if field == "population":
-        return figure.person or figure.population
+        return printable(figure.person or figure.population)
     if field in ("mass", "stature"):
         value = getattr(figure, field)
         return "" if math.isnan(value) else f"{value:.1f} {'kg' if field == 'mass' else 'cm'}"
@@ -670,6 +676,9 @@ class MessageLine(Horizontal):
         return self.query_one("#answer", AnswerInput)
 
     def show(self, text: str, kind: str = "info") -> None:
+        # Messages quote names and titles from files: no escape sequence in
+        # them may reach the terminal (issue 17).
+        text = printable_lines(text)
         if kind != "prompt" and (not self.history or self.history[-1] != (kind, text)):
             self.history.append((kind, text))
             del self.history[:-HISTORY_LENGTH]
