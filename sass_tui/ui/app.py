@@ -14,7 +14,6 @@ from textual.app import App
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
-from sass_tui.model.names import GROUPS
 from sass_tui.model.paths import user_path
 from sass_tui.model.session import Session
 from sass_tui.model.strength import StrengthError, StrengthSheet, read_strength_file
@@ -150,6 +149,7 @@ class SassApp(App):
         import sqlite3
 
         from sass_tui.db.individual import fetch_individual
+        from sass_tui.db.individual import person_figure as figure_of
 
         lists = self.query_lists
         try:
@@ -157,18 +157,7 @@ class SassApp(App):
                 person = fetch_individual(lists.conn, lists.selected_id(index))
         except sqlite3.Error as exc:
             raise OSError(f"database error: {exc}") from exc
-        return population.for_person(
-            person.name,
-            person.gender,
-            {g: person.groups[g] for g in GROUPS},
-            mass=person.mass,
-            stature=person.stature,
-            handedness=person.handedness if person.handedness in ("right", "left") else None,
-            **{
-                k: person.strength.get(k)
-                for k in ("strength_type", "motion_speed", "training_level", "fatigue_level")
-            },
-        )
+        return figure_of(person, population)
 
 
 def _screen_commands_provider():
