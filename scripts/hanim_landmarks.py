@@ -13,7 +13,9 @@ put them (docs/hanim.md, "Joint centres").
      knee              lateralfemoralepicondyleheight (and tibialheight)
      ankle             lateralmalleolusheight
    and the whole-body centre of mass (segment masses and centres of the
-   export) as a share of the stature.
+   export, de Leva 1996) as a share of the stature.
+3. The same centre of mass for the shipped male 50th and female 5th
+   percentile figures.
 
     python scripts/hanim_landmarks.py [--people 200]
 
@@ -27,8 +29,12 @@ import csv
 import sys
 import tempfile
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from sass_tui.model.hanim import Humanoid
 
 ROOT = Path(__file__).resolve().parents[1]
 ANSUR = ROOT.parent / "shared" / "data" / "ansur2"
@@ -40,6 +46,7 @@ COLUMNS = {
     "iliocristale": "iliocristaleheight",
     "acromion": "acromialheight",
     "cervicale": "cervicaleheight",
+    "omphalion": "waistheightomphalion",
 }
 # (joint, the CSV column whose height (mm) puts it, offset below that landmark in m)
 CHECKS = (
@@ -68,6 +75,31 @@ def landmark_fractions(folder: Path = ANSUR) -> dict[str, dict[str, float]]:
         top = np.array([float(r["tragiontopofhead"]) for r in rows])
         fractions["tragion"] = float(np.mean(1 - top / stature))
         out[gender] = {k: round(v, 4) for k, v in fractions.items()}
+    return out
+
+
+def center_of_mass_share(humanoid: Humanoid, stature: float) -> float:
+    """The humanoid's whole-body centre-of-mass height over `stature` (m)."""
+    segments = humanoid.segments.values()
+    mass = sum(s.mass for s in segments)
+    return float(sum(s.mass * s.center_of_mass[1] for s in segments) / mass / stature)
+
+
+def percentile_figures() -> dict[str, float]:
+    """Centre of mass / stature of the shipped male 50th and female 5th figures."""
+    from sass_tui.model.figure import Figure
+    from sass_tui.model.hanim import build_humanoid
+
+    out = {}
+    for gender, percentile in (("male", 50.0), ("female", 5.0)):
+        figure = Figure.default(gender)
+        for group in figure.groups:
+            figure.set_group_percentile(group, percentile)
+        figure.set_mass_percentile(percentile)
+        figure.set_stature_percentile(percentile)
+        out[f"{gender} {percentile:g}th"] = center_of_mass_share(
+            build_humanoid(figure), figure.stature / 100
+        )
     return out
 
 
@@ -117,15 +149,14 @@ def measure(people: int = 200, folder: Path = ANSUR) -> dict[str, object]:
                 errors["knee vs tibiale"].append(
                     humanoid.centers["r_knee"][1] - float(row["tibialheight"]) / 1000
                 )
-                mass = sum(s.mass for s in humanoid.segments.values())
-                com = sum(s.mass * s.center_of_mass[1] for s in humanoid.segments.values())
-                com_share.append(com / mass / (float(row["stature"]) / 1000))
+                com_share.append(center_of_mass_share(humanoid, float(row["stature"]) / 1000))
         conn.close()
     return {
         "people": people,
         "mae_cm": {k: float(np.mean(np.abs(v)) * 100) for k, v in errors.items()},
         "max_cm": {k: float(np.max(np.abs(v)) * 100) for k, v in errors.items()},
         "bias_cm": {k: float(np.mean(v) * 100) for k, v in errors.items()},
+        "com_shares": com_share,
         "com_percent": (
             float(np.min(com_share) * 100),
             float(np.mean(com_share) * 100),
@@ -164,7 +195,9 @@ def main() -> int:
             f"{result['max_cm'][key]:.2f} cm | {result['bias_cm'][key]:+.2f} cm |"
         )
     low, mean, high = result["com_percent"]
-    print(f"\nwhole-body centre of mass: {low:.1f} - {high:.1f} % of stature (mean {mean:.1f} %)")
+    print(f"\nwhole-body centre of mass: {low:.2f} - {high:.2f} % of stature (mean {mean:.2f} %)")
+    for name, share in percentile_figures().items():
+        print(f"  {name} percentile figure: {share * 100:.2f} %")
     return 0
 
 

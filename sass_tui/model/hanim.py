@@ -25,7 +25,6 @@ from sass_tui.model.names import (
     CENTER_OF_MASS,
     GIRTH,
     JOINT_LIMITS,
-    MASS_FRACTIONS,
     ROWS,
     row_index,
 )
@@ -71,6 +70,8 @@ SEGMENT_OF = {joint: segment for joint, segment, _ in LOA1}
 #   vl5                 iliocristale height (the iliac crest, at L4-L5)
 #   shoulder            acromion height less SHOULDER_BELOW_ACROMION
 #   neck base (top of l5) cervicale height; skullbase: tragion height
+#   omphalion           the navel (waist height, omphalion): where de Leva's
+#                       lower trunk begins (segment masses, below)
 #   skull vertex        the stature
 LANDMARK_FRACTIONS: dict[str, dict[str, float]] = {
     "male": {
@@ -80,6 +81,7 @@ LANDMARK_FRACTIONS: dict[str, dict[str, float]] = {
         "iliocristale": 0.6044,
         "acromion": 0.8203,
         "cervicale": 0.8639,
+        "omphalion": 0.6014,
         "tragion": 0.9252,
     },
     "female": {
@@ -89,6 +91,7 @@ LANDMARK_FRACTIONS: dict[str, dict[str, float]] = {
         "iliocristale": 0.6113,
         "acromion": 0.8198,
         "cervicale": 0.8570,
+        "omphalion": 0.6017,
         "tragion": 0.9222,
     },
 }
@@ -98,34 +101,78 @@ SHOULDER_BELOW_ACROMION = 0.04  # m
 # Appendix L.1: the anklebone lies 0.2516 foot lengths in front of the heel.
 HEEL_BEHIND_ANKLE = 0.2516
 
-# Which App. K mass variables each HAnim segment carries.  Every variable is
-# used exactly once, so the segment masses add up to the figure's mass.
-SEGMENT_MASSES: dict[str, tuple[str, ...]] = {
-    "sacrum": ("bodyrootmass",),
-    "pelvis": ("ltorsomass", "rhipmass", "lhipmass"),
-    "l5": (
-        "ctorsomass",
-        "uptorsomass",
-        "neckmass",
-        "rclavmass",
-        "lclavmass",
-        "rsternummass",
-        "lsternummass",
-    ),
-    "skull": ("botheadmass", "topheadmass", "reyemass", "leyemass"),
+# Segment masses and centres of mass: de Leva (1996), "Adjustments to
+# Zatsiorsky-Seluyanov's segment inertia parameters", J. Biomech. 29(9),
+# 1223-1230, table 4 (young adults: 100 men, 15 women).  Appendix K's fractions
+# give the legs ~32 % of the body and the trunk ~50 %, where these measured
+# tables give ~40 % and ~43 %: with K's masses the humanoid's centre of mass
+# stood at ~58 % of the stature, the top of the adult range (docs/hanim.md).
+# The .fig keeps appendix K (BODY.FIG's masses); only the export uses these.
+# Per segment: % of body mass, and the centre of mass as % of the distance
+# between de Leva's two endpoints, from the first:
+#   head    vertex - cervicale (head and neck)      thigh  hip - knee centre
+#   trunk   cervicale - hip centres (the whole)     shank  knee - lateral malleolus
+#   lower trunk  omphalion - hip centres            foot   heel - toe tip
+#   upper arm  shoulder - elbow centre              hand   wrist - middle fingertip
+#   forearm    elbow - wrist centre
+DE_LEVA: dict[str, dict[str, tuple[float, float]]] = {
+    "male": {
+        "head": (6.94, 50.02),
+        "trunk": (43.46, 51.38),
+        "lower_trunk": (11.17, 61.15),
+        "upper_arm": (2.71, 57.72),
+        "forearm": (1.62, 45.74),
+        "hand": (0.61, 36.24),
+        "thigh": (14.16, 40.95),
+        "shank": (4.33, 44.59),
+        "foot": (1.37, 44.15),
+    },
+    "female": {
+        "head": (6.68, 48.41),
+        "trunk": (42.57, 49.64),
+        "lower_trunk": (12.47, 49.20),
+        "upper_arm": (2.55, 57.54),
+        "forearm": (1.38, 45.59),
+        "hand": (0.56, 34.27),
+        "thigh": (14.78, 36.12),
+        "shank": (4.81, 44.16),
+        "foot": (1.29, 40.14),
+    },
 }
-for _side, _s in (("l", "l"), ("r", "r")):
+# Which de Leva segment each HAnim segment carries: the pelvis is the lower
+# trunk, l5 the rest of the trunk (upper and middle), the skull the head with
+# the neck; sacrum and toes (in de Leva's foot) carry nothing.
+SEGMENT_MASSES: dict[str, str | None] = {
+    "sacrum": None,
+    "pelvis": "lower_trunk",
+    "l5": "trunk",  # less the lower trunk
+    "skull": "head",
+}
+for _side in ("l", "r"):
     SEGMENT_MASSES.update(
         {
-            f"{_side}_thigh": (f"{_s}uplegmass",),
-            f"{_side}_calf": (f"{_s}lowlegmass",),
-            f"{_side}_talus": (f"{_s}footmass",),
-            f"{_side}_tarsal_proximal_phalanx_2": (f"{_s}toesmass",),
-            f"{_side}_upperarm": (f"{_s}uparmmass",),
-            f"{_side}_forearm": (f"{_s}lowarmmass",),
-            f"{_side}_carpal": (f"{_s}handmass", f"{_s}fingersmass"),
+            f"{_side}_thigh": "thigh",
+            f"{_side}_calf": "shank",
+            f"{_side}_talus": "foot",
+            f"{_side}_tarsal_proximal_phalanx_2": None,
+            f"{_side}_upperarm": "upper_arm",
+            f"{_side}_forearm": "forearm",
+            f"{_side}_carpal": "hand",
         }
     )
+
+
+def segment_mass_fractions(gender: str) -> dict[str, float]:
+    """Each HAnim segment's share of the body mass (de Leva 1996), scaled to
+    add up to exactly 1 (the female table adds up to 99.99 %)."""
+    table = DE_LEVA[gender]
+    shares = {
+        name: 0.0 if part is None else table[part][0] for name, part in SEGMENT_MASSES.items()
+    }
+    shares["l5"] -= table["lower_trunk"][0]
+    total = sum(shares.values())
+    return {name: share / total for name, share in shares.items()}
+
 
 _X, _Y, _Z = np.eye(3)
 
@@ -369,7 +416,7 @@ def _segments(
     centers: dict[str, np.ndarray],
     heights: dict[str, float],
 ) -> dict[str, Segment]:
-    fractions = dict(MASS_FRACTIONS)
+    shares = segment_mass_fractions(figure.gender)
     com_rows = {row.name: i for i, row in enumerate(ROWS[CENTER_OF_MASS])}
     com_values, com_filled = figure.output_values(CENTER_OF_MASS)
     com_values = np.asarray(com_values, dtype=float) / 100.0
@@ -377,9 +424,10 @@ def _segments(
     # goes with the population's segment length, not the person's.
     population_lengths = _population_girth(figure)[:, 2] / 100.0
     extents = _extents(dim, centers, heights)
+    along_axis = _de_leva_centers(figure.gender, dim, centers, heights, extents)
     segments: dict[str, Segment] = {}
     for name, row, joint, long_axis, depth_axis, solid in _segment_table():
-        mass = figure.output_mass() * sum(fractions[v] for v in SEGMENT_MASSES[name])
+        mass = figure.output_mass() * shares[name]
         origin = centers[joint]
         if name == "skull":  # the head is measured from the chin (appendix L.1)
             origin = np.array([0.0, heights["vertex"] - extents["skull"], 0.0])
@@ -389,20 +437,74 @@ def _segments(
         )
         # size along X, Y, Z of the principal solid (first shape)
         size = shapes[0][2] if shapes else np.zeros(3)
-        if row in com_rows and not np.isnan(com_values[com_rows[row]]).any():
-            cx, cy, cz = com_values[com_rows[row]]
-            # the table's distance along the segment, in proportion to its length here
-            i = com_rows[row]
+        # SASS's centre-of-mass row: its offsets off the segment's axis (x
+        # forward, y sideways) stay; de Leva's tables place the centre on the axis.
+        i = com_rows.get(row) if row is not None else None
+        offset = None
+        if i is not None and not np.isnan(com_values[i]).any():
+            offset = com_values[i].copy()
+        if name in along_axis:
+            cx, cy = (offset[0], offset[1]) if offset is not None else (0.0, 0.0)
+            com = origin + along_axis[name] * long_axis + cx * depth_axis + cy * width_axis
+        elif name.endswith("_talus") and offset is not None and i is not None and row:
+            # de Leva's foot centre lies along heel - toe tip (forward, here Z);
+            # its height is SASS's (appendix L.2, down from the ankle), the
+            # table's distance in proportion to the ankle height here
             length = float(population_lengths[i] if com_filled[i, 2] else dim[row][2])
-            if name in extents and length > 0:
-                cz *= extents[name] / length
-            com = origin + cz * long_axis + cx * depth_axis + cy * width_axis
-        elif shapes:  # the toes: appendix L.1 gives them no centre of mass (nor mass)
+            down = offset[2] * (extents[name] / length if length > 0 else 1.0)
+            side = "left" if name[0] == "l" else "right"
+            foot = float(dim[f"{side}_foot"][0])
+            toe_tip = foot + float(dim[f"{side}_ball_of_foot"][0])
+            forward = -HEEL_BEHIND_ANKLE * foot + DE_LEVA[figure.gender]["foot"][1] / 100 * toe_tip
+            com = origin + down * long_axis + forward * depth_axis + offset[1] * width_axis
+        elif shapes:  # the toes (their mass is in de Leva's foot)
             com = shapes[0][1].copy()
         else:
             com = origin.copy()
         segments[name] = Segment(name, mass, com, _inertia(solid, mass, size, long_axis), shapes)
     return segments
+
+
+def _de_leva_centers(
+    gender: str,
+    dim: dict[str, np.ndarray],
+    centers: dict[str, np.ndarray],
+    heights: dict[str, float],
+    extents: dict[str, float],
+) -> dict[str, float]:
+    """Each segment's centre of mass as a distance (m) along its long axis from
+    its origin (_segment_table's joint; the skull's chin), from de Leva's
+    percentages of the distance between his endpoints (DE_LEVA)."""
+
+    def share(part: str) -> float:
+        return DE_LEVA[gender][part][1] / 100
+
+    def mass(part: str) -> float:
+        return DE_LEVA[gender][part][0]
+
+    hip, cervicale, vertex = heights["hip"], heights["cervicale"], heights["vertex"]
+    omphalion = heights["omphalion"]
+    lower_trunk = omphalion - share("lower_trunk") * (omphalion - hip)
+    trunk = cervicale - share("trunk") * (cervicale - hip)
+    # l5 carries the trunk above the lower trunk: the two together have the
+    # whole trunk's centre of mass
+    upper_trunk = (mass("trunk") * trunk - mass("lower_trunk") * lower_trunk) / (
+        mass("trunk") - mass("lower_trunk")
+    )
+    head = vertex - share("head") * (vertex - cervicale)
+    out = {
+        "pelvis": lower_trunk - hip,
+        "l5": upper_trunk - heights["vl5"],
+        "skull": head - (vertex - extents["skull"]),
+    }
+    for side, name in (("l", "left"), ("r", "right")):
+        hand = float(dim[f"{name}_hand"][2] + dim[f"{name}_knuckles"][2])  # wrist to fingertip
+        out[f"{side}_thigh"] = share("thigh") * extents[f"{side}_thigh"]
+        out[f"{side}_calf"] = share("shank") * extents[f"{side}_calf"]
+        out[f"{side}_upperarm"] = share("upper_arm") * extents[f"{side}_upperarm"]
+        out[f"{side}_forearm"] = share("forearm") * extents[f"{side}_forearm"]
+        out[f"{side}_carpal"] = share("hand") * hand
+    return out
 
 
 def _shapes(

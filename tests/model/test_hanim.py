@@ -238,12 +238,27 @@ def test_segment_masses_add_up_to_the_figure_mass(male50):
     # a long thigh turns more easily about its own (vertical) axis
     assert inertia[1, 1] < inertia[0, 0] and inertia[1, 1] < inertia[2, 2]
     assert np.count_nonzero(inertia - np.diag(np.diag(inertia))) == 0
-    # appendix L.2: the thigh's centre of mass lies 18.0 cm below the hip on a
-    # 43.4 cm thigh (appendix B); the humanoid's thigh runs hip to knee
+    # de Leva (1996) table 4: a man's thigh is 14.16 % of his mass, its centre
+    # of mass 40.95 % of the way from the hip centre to the knee centre
     hip = _floats(_joints(root)["l_hip"].get("center"))
     knee = _floats(_joints(root)["l_knee"].get("center"))
     below = hip[1] - _floats(thigh.get("centerOfMass"))[1]
-    assert below == pytest.approx(0.18 * (hip[1] - knee[1]) / 0.434, abs=1e-6)
+    assert below == pytest.approx(0.4095 * (hip[1] - knee[1]), abs=1e-6)
+    assert float(thigh.get("mass")) == pytest.approx(0.1416 * figure.mass, abs=1e-4)
+
+
+def test_the_fig_keeps_appendix_k_masses_the_humanoid_de_levas(male50, tmp_path):
+    """The .fig stays as BODY.FIG builds it (appendix K: legs ~32 % of the
+    mass); the humanoid's legs carry de Leva's ~40 %."""
+    figure, _, root = male50
+    fig = dict(figure.segment_masses())
+    k_legs = sum(fig[f"{s}{p}mass"] for s in "lr" for p in ("upleg", "lowleg", "foot", "toes"))
+    masses = {
+        s.get("name"): float(s.get("mass")) for s in root.iter("HAnimSegment") if s.get("DEF")
+    }
+    legs = sum(masses[f"{s}_{p}"] for s in "lr" for p in ("thigh", "calf", "talus"))
+    assert k_legs / figure.mass == pytest.approx(0.32, abs=0.02)
+    assert legs / figure.mass == pytest.approx(2 * (14.16 + 4.33 + 1.37) / 100, abs=1e-4)
 
 
 def test_fifth_female_is_smaller_than_ninety_fifth_male_everywhere(tmp_path):
@@ -513,7 +528,7 @@ def ansur_measurement(ansur_dir):
     from _paths import ROOT
 
     script = runpy.run_path(str(ROOT / "scripts" / "hanim_landmarks.py"))
-    return script, script["measure"](60, ansur_dir)
+    return script, script["measure"](200, ansur_dir)
 
 
 def test_landmark_fractions_are_the_ansur_means(ansur_measurement, ansur_dir):
@@ -524,12 +539,24 @@ def test_landmark_fractions_are_the_ansur_means(ansur_measurement, ansur_dir):
 
 
 def test_ansur_people_from_the_database_stand_on_their_landmarks(ansur_measurement):
-    """60 ANSUR II people (30 men, 30 women) imported, fetched and exported:
-    vertex within 0.5 cm of the stature, shoulder, hip, knee and ankle within
-    3 cm of their own landmarks on average (docs/hanim.md has 200)."""
+    """200 ANSUR II people (100 men, 100 women) imported, fetched and exported
+    (as docs/hanim.md reports): vertex within 0.5 cm of the stature, shoulder,
+    hip, knee and ankle within 3 cm of their own landmarks on average."""
     _, result = ansur_measurement
+    assert result["people"] == 200
     assert result["max_cm"]["vertex"] <= 0.5
     for joint in ("r_shoulder", "r_hip", "r_knee", "r_talocrural"):
         assert result["mae_cm"][joint] < 3.0, joint
-    low, _, high = result["com_percent"]
-    assert 54 <= low and high <= 59
+
+
+def test_every_ansur_person_has_a_real_bodys_center_of_mass(ansur_measurement):
+    """Issue 11: each of the 200 people's whole-body centre of mass is at 54-58 %
+    of their stature (adults: ~55-57 %); appendix K's masses put it at 57.6-58.2."""
+    _, result = ansur_measurement
+    shares = result["com_shares"]
+    assert len(shares) == 200
+    assert all(0.54 <= share <= 0.58 for share in shares), (min(shares), max(shares))
+    # the shipped percentile figures, as the script reports them
+    script, _ = ansur_measurement
+    for name, share in script["percentile_figures"]().items():
+        assert 0.54 <= share <= 0.58, name
