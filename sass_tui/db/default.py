@@ -27,6 +27,7 @@ from sass_tui.db.schema import (
     connect,
     default_db_path,
     recreate_schema,
+    write_refused,
 )
 
 Progress = Callable[[int, int], None]
@@ -86,28 +87,41 @@ def create_default_database(
     path = Path(path)
     conn = connect(path, create=True, rebuild=True)
     try:
-        check_writable(conn, path)
-        try:
-            conn.execute("BEGIN EXCLUSIVE")
-        except sqlite3.OperationalError as exc:
-            raise DatabaseError(
-                f"{path} is busy ({exc}): another process is writing to it; "
-                "nothing changed, try again when it has finished"
-            ) from None
-        try:
-            if not replace and people_count(conn):
-                conn.execute("ROLLBACK")
-                return {}
-            recreate_schema(conn)
-            counts = fill_default(conn, progress)
-            conn.execute("COMMIT")
-        except BaseException:
-            if conn.in_transaction:
-                conn.execute("ROLLBACK")
+        return _build(conn, path, progress, replace)
+    except sqlite3.Error as exc:
+        refused = write_refused(exc, path)  # a full disk: rolled back, say so
+        if refused is None:
             raise
-        return counts
+        raise refused from None
     finally:
         conn.close()
+
+
+def _build(
+    conn: sqlite3.Connection, path: Path, progress: Progress | None, replace: bool
+) -> dict[str, int]:
+    check_writable(conn, path)
+    try:
+        conn.execute("BEGIN EXCLUSIVE")
+    except sqlite3.OperationalError as exc:
+        if write_refused(exc, path) is not None:
+            raise
+        raise DatabaseError(
+            f"{path} is busy ({exc}): another process is writing to it; "
+            "nothing changed, try again when it has finished"
+        ) from None
+    try:
+        if not replace and people_count(conn):
+            conn.execute("ROLLBACK")
+            return {}
+        recreate_schema(conn)
+        counts = fill_default(conn, progress)
+        conn.execute("COMMIT")
+    except BaseException:
+        if conn.in_transaction:
+            conn.execute("ROLLBACK")
+        raise
+    return counts
 
 
 def fill_default(conn: sqlite3.Connection, progress: Progress | None = None) -> dict[str, int]:

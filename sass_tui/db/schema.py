@@ -283,12 +283,15 @@ def connect(
     sass database, whatever its version or state, since it is about to be
     rebuilt."""
     path = Path(path)
-    if not path.exists() and not create:
+    new_file = not path.exists()
+    if new_file and not create:
         raise DatabaseError(
             f"{path}: no database there (create it with `sass db init --db {path}`)"
         )
     if create:
         path.parent.mkdir(parents=True, exist_ok=True)
+        if new_file:
+            _check_not_read_only(path)
     try:
         conn = sqlite3.connect(
             str(path),
@@ -307,11 +310,55 @@ def connect(
         _check_schema(conn, path, create, rebuild)
     except sqlite3.DatabaseError as exc:
         conn.close()
+        if new_file:  # a database that could not be made leaves no file behind
+            _remove_new_database(path)
+        refused = write_refused(exc, path)
+        if refused is not None:
+            raise refused from None
         raise DatabaseError(f"{path}: not a usable sass database ({exc})") from None
     except BaseException:
         conn.close()
+        if new_file:
+            _remove_new_database(path)
         raise
     return conn
+
+
+def _remove_new_database(path: Path) -> None:
+    """Remove the file connect() created (and its journal), if it is still empty
+    of tables: a schema another process committed meanwhile stays."""
+    for leftover in (path, path.with_name(path.name + "-journal")):
+        try:
+            if leftover is path and leftover.stat().st_size:
+                probe = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
+                try:
+                    if _tables(probe):
+                        return
+                finally:
+                    probe.close()
+            leftover.unlink()
+        except (OSError, sqlite3.Error):
+            pass
+
+
+def write_refused(exc: BaseException, path: str | Path) -> DatabaseError | None:
+    """The message for a write the file system refused (a full disk, a
+    read-only file, an I/O error), naming the database; None for any other
+    error.  SQLite has rolled the transaction back: nothing changed."""
+    if not isinstance(exc, sqlite3.Error):
+        return None
+    code = getattr(exc, "sqlite_errorcode", 0) & 0xFF
+    if code == sqlite3.SQLITE_FULL:
+        why = "the disk is full"
+    elif code == sqlite3.SQLITE_READONLY:
+        why = "the database is read-only"
+    elif code == sqlite3.SQLITE_IOERR:
+        why = "the disk reported an error"
+    elif code == sqlite3.SQLITE_CANTOPEN:
+        why = "a file beside it cannot be created (its directory is full or read-only)"
+    else:
+        return None
+    return DatabaseError(f"cannot write {path}: {why} ({exc}); nothing changed")
 
 
 def _tables(conn: sqlite3.Connection) -> set[str]:
@@ -416,6 +463,7 @@ def check_writable(conn: sqlite3.Connection, path: str | Path | None = None) -> 
     """Refuse to write to a damaged database (`PRAGMA quick_check`, the
     integrity check without the index cross-check: O(size), ~0.1 s for ANSUR II)."""
     where = path if path is not None else _db_file(conn)
+    _check_not_read_only(Path(where))
     try:
         result = [row[0] for row in conn.execute("PRAGMA quick_check(5)")]
     except sqlite3.DatabaseError as exc:
@@ -425,6 +473,22 @@ def check_writable(conn: sqlite3.Connection, path: str | Path | None = None) -> 
             f"{where}: the database is damaged ({'; '.join(result)}); nothing written. "
             "Move it away and run `sass db init` for a new one"
         )
+
+
+def _check_not_read_only(path: Path) -> None:
+    """A write needs the file and its directory (the rollback journal) writable:
+    refuse before starting, saying which and why."""
+    if str(path) in (":memory:", ""):  # an in-memory database
+        return
+    for target, what in ((path, "the database"), (path.parent, "its directory")):
+        if target.exists() and not os.access(target, os.W_OK):
+            try:
+                read_only_fs = bool(os.statvfs(target).f_flag & os.ST_RDONLY)
+            except OSError:
+                read_only_fs = False
+            why = "on a read-only file system" if read_only_fs else "not writable by you"
+            still = " (queries and Disp. Indv. still read it)" if path.exists() else ""
+            raise DatabaseError(f"cannot write {path}: {what} is {why}; nothing changed{still}")
 
 
 def _db_file(conn: sqlite3.Connection) -> str:
@@ -447,14 +511,34 @@ class transaction:
         self.mode = mode
 
     def __enter__(self) -> sqlite3.Connection:
-        self.conn.execute(f"BEGIN {self.mode}")
+        try:
+            self.conn.execute(f"BEGIN {self.mode}")
+        except sqlite3.Error as exc:
+            self._raise_refused(exc)
+            raise
         return self.conn
 
-    def __exit__(self, exc_type: object, exc: object, tb: object) -> None:
-        if exc_type is None:
-            self.conn.execute("COMMIT")
-        elif self.conn.in_transaction:
+    def __exit__(self, exc_type: object, exc: BaseException | None, tb: object) -> None:
+        if exc is None:
+            try:
+                self.conn.execute("COMMIT")
+            except sqlite3.Error as error:
+                self._rollback()
+                self._raise_refused(error)
+                raise
+            return
+        self._rollback()
+        self._raise_refused(exc)
+
+    def _rollback(self) -> None:
+        if self.conn.in_transaction:
             self.conn.execute("ROLLBACK")
+
+    def _raise_refused(self, exc: BaseException) -> None:
+        """A full disk or a read-only file: say so, naming the database."""
+        refused = write_refused(exc, _db_file(self.conn))
+        if refused is not None:
+            raise refused from None
 
 
 def row_counts(conn: sqlite3.Connection) -> dict[str, int]:

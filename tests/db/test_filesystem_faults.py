@@ -1,0 +1,209 @@
+"""A full file system and a read-only one (issue 17, "Fault tests in the
+suite"): every write is refused with a message that names the file, never a
+traceback; the database is unchanged and passes `PRAGMA integrity_check`; no
+temporary file, journal or half-made database is left behind; reading goes on.
+
+The file systems are real: a tmpfs mounted for the test, filled to the last
+byte (or to a few pages) or remounted read-only (tests/_tmpfs.py; skipped
+where this process may not mount).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import sqlite3
+from pathlib import Path
+
+import pytest
+from _tmpfs import fill, mounted_tmpfs, remount_read_only
+
+from sass_tui.cli import main
+from sass_tui.db.default import shipped_ansur_files
+from sass_tui.db.flatfile import FlatFiles, import_flat_files
+from sass_tui.db.schema import connect
+from sass_tui.model import datasets
+
+PERSON = "99907,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
+
+
+@pytest.fixture(scope="module")
+def small_db_file(tmp_path_factory) -> Path:
+    """A sass database of the 200 shipped synthetic people (~1.8 MB, small
+    enough for a tmpfs of a few MB)."""
+    path = tmp_path_factory.mktemp("small") / "small.db"
+    conn = connect(path, create=True)
+    try:
+        import_flat_files(conn, FlatFiles.in_directory(datasets.directory() / "db"))
+    finally:
+        conn.close()
+    return path
+
+
+@pytest.fixture()
+def person_file(tmp_path) -> Path:
+    path = tmp_path / "person.db"
+    path.write_text(PERSON)
+    return path
+
+
+@pytest.fixture()
+def tmpfs_with_db(tmp_path, small_db_file):
+    """A tmpfs (the database's size + 2 MB) holding a copy of the small database."""
+    with mounted_tmpfs(tmp_path / "mnt", small_db_file.stat().st_size + 2 * 1024 * 1024) as mnt:
+        db = mnt / "sass.db"
+        db.write_bytes(small_db_file.read_bytes())
+        yield mnt, db
+
+
+def _digest(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def _integrity(path: Path) -> str:
+    conn = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
+    try:
+        return str(conn.execute("PRAGMA integrity_check").fetchone()[0])
+    finally:
+        conn.close()
+
+
+def _flat_import(db: Path, person: Path) -> list[str]:
+    return [
+        "db",
+        "import-flat",
+        "--db",
+        str(db),
+        "--person",
+        str(person),
+        "--girth",
+        "/dev/null",
+        "--jntlmt",
+        "/dev/null",
+        "--cmass",
+        "/dev/null",
+    ]
+
+
+# (name, argv from (mount, db, person file), the file the message must name)
+WRITES = {
+    "import-ansur": (
+        lambda mnt, db, p: [
+            "db",
+            "import-ansur",
+            "--db",
+            str(db),
+            *map(str, shipped_ansur_files()),
+        ],
+        lambda mnt, db: db,
+    ),
+    "import-flat": (lambda mnt, db, p: _flat_import(db, p), lambda mnt, db: db),
+    "db init": (lambda mnt, db, p: ["db", "init", "--force", "--db", str(db)], lambda mnt, db: db),
+    "import into a new database": (
+        lambda mnt, db, p: _flat_import(mnt / "new.db", p),
+        lambda mnt, db: mnt / "new.db",
+    ),
+    "fig -o": (lambda mnt, db, p: ["fig", "-o", str(mnt / "x.fig")], lambda mnt, db: mnt / "x.fig"),
+    "population -o": (
+        lambda mnt, db, p: [
+            "population",
+            "--db",
+            str(db),
+            "--query",
+            "gender = female",
+            "-o",
+            str(mnt / "p.dat"),
+        ],
+        lambda mnt, db: mnt / "p.dat",
+    ),
+}
+
+
+@pytest.mark.parametrize("name", list(WRITES))
+def test_a_full_file_system_refuses_each_write_naming_the_file(
+    name, tmpfs_with_db, person_file, capsys
+):
+    mnt, db = tmpfs_with_db
+    fill(mnt)
+    argv, target = WRITES[name]
+    before = sorted(p.name for p in mnt.iterdir())
+    digest = _digest(db)
+    assert main(argv(mnt, db, person_file)) == 2
+    err = capsys.readouterr().err
+    assert str(target(mnt, db)) in err, err
+    assert "disk is full" in err or "No space left on device" in err, err
+    assert "Traceback" not in err and "database error" not in err, err
+    assert len(err.strip().splitlines()) == 1, err  # one line: the message
+    assert _digest(db) == digest and _integrity(db) == "ok"
+    # no temporary file, journal or half-made database left behind
+    assert sorted(p.name for p in mnt.iterdir()) == before
+
+
+@pytest.mark.parametrize("name", ["import-ansur", "db init"])
+def test_a_write_that_runs_out_of_space_half_way_leaves_the_database_as_it_was(
+    name, tmpfs_with_db, person_file, capsys
+):
+    """A few pages free: the import starts, then the disk fills under it."""
+    mnt, db = tmpfs_with_db
+    fill(mnt, leave=256 * 1024)
+    argv, target = WRITES[name]
+    before = sorted(p.name for p in mnt.iterdir())
+    digest = _digest(db)
+    assert main(argv(mnt, db, person_file)) == 2
+    err = capsys.readouterr().err
+    assert f"cannot write {db}: the disk is full" in err, err
+    assert "Traceback" not in err
+    assert _digest(db) == digest and _integrity(db) == "ok"
+    assert sorted(p.name for p in mnt.iterdir()) == before
+    # and once there is room again, the database takes an import
+    (mnt / "filler").unlink()
+    assert main(_flat_import(db, person_file)) == 0, capsys.readouterr().err
+    assert "imported 1 people" in capsys.readouterr().out
+    assert _integrity(db) == "ok"
+
+
+def test_a_read_only_file_system_still_answers_queries_and_refuses_writes(
+    tmpfs_with_db, person_file, capsys
+):
+    mnt, db = tmpfs_with_db
+    remount_read_only(mnt)
+    digest = _digest(db)
+    # reading works: a query, a person, a population
+    assert main(["query", "--db", str(db), "gender = female AND stature > 150 cm"]) == 0
+    assert "SYNTH_F_" in capsys.readouterr().out
+    assert main(["person", "--db", str(db), "17"]) == 0
+    assert "SYNTH_M_017" in capsys.readouterr().out
+    assert main(["query", "--db", str(db), "--format", "json", "source = synthetic"]) == 0
+    capsys.readouterr()
+    # every write says the database is read-only, names it, and changes nothing
+    for name in ("import-flat", "import-ansur", "db init", "import into a new database"):
+        argv, target = WRITES[name]
+        assert main(argv(mnt, db, person_file)) == 2, name
+        err = capsys.readouterr().err
+        assert f"cannot write {target(mnt, db)}" in err, err
+        assert "read-only file system" in err, err
+        assert "Traceback" not in err and "database error" not in err, err
+    assert sorted(p.name for p in mnt.iterdir()) == ["sass.db"]
+    assert _digest(db) == digest and _integrity(db) == "ok"
+
+
+def test_the_library_refuses_a_read_only_database_before_writing(tmpfs_with_db, person_file):
+    """The check is in the db layer (check_writable), for the TUI as for the CLI."""
+    from sass_tui.db.schema import DatabaseError
+
+    mnt, db = tmpfs_with_db
+    remount_read_only(mnt)
+    conn = connect(db)
+    try:
+        with pytest.raises(DatabaseError, match="read-only file system"):
+            import_flat_files(
+                conn,
+                FlatFiles(
+                    person=person_file,
+                    girth=Path("/dev/null"),
+                    joint_limits=Path("/dev/null"),
+                    center_of_mass=Path("/dev/null"),
+                ),
+            )
+        assert conn.execute("SELECT count(*) FROM person").fetchone()[0] == 200
+    finally:
+        conn.close()
