@@ -71,3 +71,18 @@ def fill(folder: Path, leave: int = 0) -> Path:
         else:
             raise AssertionError(f"{folder} still takes writes")
     return filler
+
+
+def build_small_db(path: Path) -> Path:
+    """A sass database of the 200 shipped synthetic people (~1.8 MB: small
+    enough for a tmpfs of a few MB)."""
+    from sass_tui.db.flatfile import FlatFiles, import_flat_files
+    from sass_tui.db.schema import connect
+    from sass_tui.model import datasets
+
+    conn = connect(path, create=True)
+    try:
+        import_flat_files(conn, FlatFiles.in_directory(datasets.directory() / "db"))
+    finally:
+        conn.close()
+    return path

@@ -15,28 +15,19 @@ import sqlite3
 from pathlib import Path
 
 import pytest
-from _tmpfs import fill, mounted_tmpfs, remount_read_only
+from _tmpfs import build_small_db, fill, mounted_tmpfs, remount_read_only
 
 from sass_tui.cli import main
 from sass_tui.db.default import shipped_ansur_files
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.schema import connect
-from sass_tui.model import datasets
 
 PERSON = "99907,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
 
 
 @pytest.fixture(scope="module")
 def small_db_file(tmp_path_factory) -> Path:
-    """A sass database of the 200 shipped synthetic people (~1.8 MB, small
-    enough for a tmpfs of a few MB)."""
-    path = tmp_path_factory.mktemp("small") / "small.db"
-    conn = connect(path, create=True)
-    try:
-        import_flat_files(conn, FlatFiles.in_directory(datasets.directory() / "db"))
-    finally:
-        conn.close()
-    return path
+    return build_small_db(tmp_path_factory.mktemp("small") / "small.db")
 
 
 @pytest.fixture()
