@@ -158,12 +158,15 @@ def test_a_read_only_file_system_still_answers_queries_and_refuses_writes(
     mnt, db = tmpfs_with_db
     remount_read_only(mnt)
     digest = _digest(db)
-    # reading works: a query, a person, a population
+    # reading works: a query, a person, a population written elsewhere
     assert main(["query", "--db", str(db), "gender = female AND stature > 150 cm"]) == 0
     assert "SYNTH_F_" in capsys.readouterr().out
     assert main(["person", "--db", str(db), "17"]) == 0
     assert "SYNTH_M_017" in capsys.readouterr().out
     assert main(["query", "--db", str(db), "--format", "json", "source = synthetic"]) == 0
+    out = person_file.parent / "young.dat"
+    assert main(["population", "--db", str(db), "--query", "age < 30", "-o", str(out)]) == 0
+    assert out.is_file()
     capsys.readouterr()
     # every write says the database is read-only, names it, and changes nothing
     for name in ("import-flat", "import-ansur", "db init", "import into a new database"):
