@@ -58,7 +58,19 @@ def default_database(progress: Progress | None = None) -> sqlite3.Connection:
     path = default_db_path()
     if needs_building(path):
         create_default_database(path, progress)
-    return connect(path)
+    conn = connect(path)
+    if not holds_people(conn):
+        # Only a first build that failed half-way (a full disk) leaves the
+        # default database with its schema and nobody in it: finish it now
+        # rather than answer every query with "0 people".
+        conn.close()
+        create_default_database(path, progress)
+        conn = connect(path)
+    return conn
+
+
+def holds_people(conn: sqlite3.Connection) -> bool:
+    return conn.execute("SELECT 1 FROM person LIMIT 1").fetchone() is not None
 
 
 def needs_building(path: Path) -> bool:

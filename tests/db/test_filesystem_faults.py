@@ -201,3 +201,22 @@ def test_the_library_refuses_a_read_only_database_before_writing(tmpfs_with_db, 
         assert conn.execute("SELECT count(*) FROM person").fetchone()[0] == 200
     finally:
         conn.close()
+
+
+def test_a_first_build_the_disk_cut_short_is_finished_by_the_next_run(
+    tmp_path, monkeypatch, capsys
+):
+    """The default database is built on first use; a disk that fills half-way
+    left its schema with nobody in it, and every later query said "0 people"."""
+    with mounted_tmpfs(tmp_path / "mnt", 40 * 1024 * 1024) as mnt:
+        db = mnt / "sass.db"
+        monkeypatch.setenv("SASS_DB", str(db))
+        filler = fill(mnt, leave=1024 * 1024)
+        assert main(["query", "gender = male"]) == 2
+        err = capsys.readouterr().err
+        assert f"cannot write {db}: the disk is full" in err and "Traceback" not in err, err
+        filler.unlink()
+        assert main(["query", "--format", "json", "gender = male"]) == 0
+        people = capsys.readouterr().out
+        assert '"ANSUR II M ' in people
+        assert _integrity(db) == "ok"
