@@ -56,25 +56,34 @@ def _expandable(path: str | Path) -> bool:
 def default_database(progress: Progress | None = None) -> sqlite3.Connection:
     """Open the default database, creating it from the shipped data sets on first use."""
     path = default_db_path()
-    if needs_building(path):
+    if default_needs_building(path):
         create_default_database(path, progress)
-    conn = connect(path)
-    if not holds_people(conn):
-        # Only a first build that failed half-way (a full disk) leaves the
-        # default database with its schema and nobody in it: finish it now
-        # rather than answer every query with "0 people".
-        conn.close()
-        create_default_database(path, progress)
-        conn = connect(path)
-    return conn
-
-
-def holds_people(conn: sqlite3.Connection) -> bool:
-    return conn.execute("SELECT 1 FROM person LIMIT 1").fetchone() is not None
+    return connect(path)
 
 
 def needs_building(path: Path) -> bool:
     return not path.exists() or path.stat().st_size == 0
+
+
+def default_needs_building(path: Path) -> bool:
+    """The default database at `path` is missing or empty, or a first build
+    was cut short (a full disk): its schema with nobody in it.  Only such a
+    build leaves a sass database without people (`sass db init` and every
+    import store some), and it would answer every query with "0 people"."""
+    if needs_building(path):
+        return True
+    try:
+        conn = connect(path)
+    except DatabaseError:
+        return False  # opening it again says what is wrong with it
+    try:
+        return not holds_people(conn)
+    finally:
+        conn.close()
+
+
+def holds_people(conn: sqlite3.Connection) -> bool:
+    return conn.execute("SELECT 1 FROM person LIMIT 1").fetchone() is not None
 
 
 def shipped_ansur_files() -> list[Path]:

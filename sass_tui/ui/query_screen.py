@@ -382,12 +382,12 @@ class QueryScreen(SassScreen):
     # --- database ------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def open_database(self, db_path: Path | None) -> None:
-        from sass_tui.db.default import create_default_database
+        from sass_tui.db.default import create_default_database, default_needs_building
         from sass_tui.db.schema import default_db_path
 
         path = db_path or default_db_path()
         try:
-            if db_path is None and not path.exists():
+            if db_path is None and default_needs_building(path):
                 self.post_message(DatabaseFailed(f"Creating the default database {path} ..."))
                 create_default_database(path)
             lists = QueryLists.open(path)

@@ -130,3 +130,28 @@ def test_on_a_full_file_system_input_db_and_create_figure_name_the_file(
     drive(create_figure())
     assert hashlib.sha256(db.read_bytes()).hexdigest() == digest
     assert sorted(p.name for p in mnt.iterdir()) == before
+
+
+def test_the_query_screen_finishes_a_default_database_build_cut_short(drive, tmp_path, monkeypatch):
+    """What a disk that filled during the first build leaves: the schema and
+    nobody in it.  The Query screen built the default database only when the
+    file was missing, and listed nobody for good."""
+    from sass_tui.db.schema import connect
+
+    path = tmp_path / "sass.db"
+    connect(path, create=True).close()  # the schema, no people
+    monkeypatch.setenv("SASS_DB", str(path))
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("d")
+            await settle(pilot)
+            screen = app.screen
+            assert isinstance(screen, QueryScreen)
+            screen.start_query("gender = male AND source = ansur2")
+            await settle(pilot)
+            names = [row["name"] for row in screen.query_one(ListSheet).rows]
+            assert names and names[0].startswith("ANSUR II M ")
+
+    drive(scenario())
