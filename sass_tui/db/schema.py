@@ -484,7 +484,7 @@ def _check_not_read_only(path: Path) -> None:
         if target.exists() and not os.access(target, os.W_OK):
             try:
                 read_only_fs = bool(os.statvfs(target).f_flag & os.ST_RDONLY)
-            except OSError:
+            except (OSError, AttributeError):  # no statvfs (Windows)
                 read_only_fs = False
             why = "on a read-only file system" if read_only_fs else "not writable by you"
             still = " (queries and Disp. Indv. still read it)" if path.exists() else ""
