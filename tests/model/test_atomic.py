@@ -11,6 +11,7 @@ import sys
 import textwrap
 
 import pytest
+from _tmpfs import mounted_tmpfs, remount_read_only
 
 from sass_tui.cli import main
 from sass_tui.model.atomic import OutputFileError, temporary_name, write_text_atomic
@@ -93,19 +94,28 @@ def test_a_missing_directory_is_named(tmp_path, capsys):
 
 def test_errors_name_the_target_not_the_temporary(tmp_path):
     if os.geteuid() == 0:
-        pytest.skip("root writes into a read-only directory")
+        # chmod does not stop root; a read-only file system does (issue 17)
+        with mounted_tmpfs(tmp_path / "locked", 64 * 1024) as locked:
+            remount_read_only(locked)
+            _refused_naming_the_target(locked)
+        return
     locked = tmp_path / "locked"
     locked.mkdir()
     os.chmod(locked, 0o500)
     try:
-        with pytest.raises(OutputFileError) as info:
-            write_text_atomic(locked / "x.fig", "x")
+        _refused_naming_the_target(locked)
     finally:
         os.chmod(locked, 0o700)
+
+
+def _refused_naming_the_target(locked):
+    with pytest.raises(OutputFileError) as info:
+        write_text_atomic(locked / "x.fig", "x")
     message = str(info.value)
     assert message.startswith(f"cannot write {locked / 'x.fig'}: ")
     assert "sass-tmp" not in message and ".x.fig." not in message
     assert isinstance(info.value, SassError) and isinstance(info.value, OSError)
+    assert list(locked.iterdir()) == []
 
 
 def test_a_stale_temporary_of_a_dead_process_is_cleaned(tmp_path):
