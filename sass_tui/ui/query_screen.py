@@ -645,7 +645,7 @@ class QueryScreen(SassScreen):
         if event.error:
             self.complain(f"Make Population: nothing written or loaded: {event.error}")
             return
-        session = self.app.session
+        session = self.sass_app.session
         if session.person is not None:
             session.show_population()  # the population is what the next figure is sized from
         genders = list(event.result.counts)

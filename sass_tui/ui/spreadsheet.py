@@ -692,10 +692,10 @@ class SpreadsheetScreen(SassScreen):
 
     # --- Query, Disp. Indv., Disp. More, Disp. Pop. (§12.2.4, §12.4) ----------------------
     def action_query(self) -> None:
-        self.app.open_query_screen()
+        self.sass_app.open_query_screen()
 
     def action_see_figure(self) -> None:
-        self.app.open_figure_screen()
+        self.sass_app.open_figure_screen()
 
     def action_display_individual(self) -> None:
         self.show_person(0)
@@ -712,7 +712,7 @@ class SpreadsheetScreen(SassScreen):
             elif choice == "Nth Person":
                 self.ask("Enter the number:", self._nth_person)
             else:
-                total = self.app.selected_count()
+                total = self.sass_app.selected_count()
                 index = {
                     "First": 0,
                     "Last": total - 1,
@@ -731,7 +731,7 @@ class SpreadsheetScreen(SassScreen):
         self.show_person(number - 1)
 
     def show_person(self, index: int) -> None:
-        total = self.app.selected_count()
+        total = self.sass_app.selected_count()
         if total == 0:
             self.complain("The selected list is empty: Query, then Select One or Select All.")
             return
@@ -739,7 +739,7 @@ class SpreadsheetScreen(SassScreen):
             self.complain(f"There is no person {index + 1}: the selected list holds {total}.")
             return
         try:
-            person = self.app.person_figure(index, self.session.population)
+            person = self.sass_app.person_figure(index, self.session.population)
         except (SassError, OSError) as exc:
             self.complain(f"Cannot display person {index + 1}: {exc}")
             return
@@ -754,7 +754,7 @@ class SpreadsheetScreen(SassScreen):
         from sass_tui.db.individual import fetch_individual, strength_measurements
         from sass_tui.model.strength import person_strength_data
 
-        lists = self.app.query_lists
+        lists = self.sass_app.query_lists
         try:
             with lists.lock:
                 individual = fetch_individual(lists.conn, lists.selected_id(index))
@@ -788,9 +788,7 @@ class SpreadsheetScreen(SassScreen):
     def action_family(self) -> None:
         from sass_tui.ui.family_screen import FamilyScreen
 
-        self.app.push_screen(
-            FamilyScreen(getattr(self.app, "db_path", None), self.session.population.gender)
-        )
+        self.app.push_screen(FamilyScreen(self.sass_app.db_path, self.session.population.gender))
 
     # --- Predict (issue 13) ---------------------------------------------------------------
     def action_predict(self) -> None:
@@ -798,7 +796,7 @@ class SpreadsheetScreen(SassScreen):
             self._ask_known()
             return
         self.say("Opening the prediction model (fitting it the first time takes a second) ...")
-        self.open_predictor(getattr(self.app, "db_path", None))
+        self.open_predictor(self.sass_app.db_path)
 
     @work(thread=True, exclusive=True, group="predictor", exit_on_error=False)
     def open_predictor(self, db_path: Path | None) -> None:
