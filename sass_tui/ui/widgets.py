@@ -635,6 +635,11 @@ class AnswerInput(Input):
     def action_cancel(self) -> None:
         self.post_message(self.Cancelled())
 
+    def submit(self) -> None:
+        """Enter, from code that cannot await: what Input.action_submit (a
+        coroutine) does for an input without validators."""
+        self.post_message(self.Submitted(self, self.value))
+
 
 Handler = Callable[[str], None]
 HISTORY_LENGTH = 200
@@ -731,7 +736,7 @@ class MessageLine(Horizontal):
         if text:
             answer.insert_text_at_cursor(text)
         elif key == "enter":
-            answer.action_submit()
+            answer.submit()
         elif key == "escape":
             answer.action_cancel()
         elif key == "backspace":
