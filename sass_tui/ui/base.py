@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, cast
 
 from textual import events
 from textual.binding import Binding
+from textual.dom import DOMNode
 from textual.screen import Screen
 
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
@@ -60,7 +61,7 @@ class SassScreen(Screen):
     async def on_key(self, event: events.Key) -> None:
         if self.message_line.prompting:
             return  # the prompt's own keys (Enter, Escape) are the answer's bindings
-        node = self.focused
+        node: DOMNode | None = self.focused
         while node is not None and node is not self:
             if event.key in node._bindings.key_to_bindings:
                 return  # a widget's own binding comes first (the app runs it)

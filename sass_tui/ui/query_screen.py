@@ -144,7 +144,8 @@ class SummaryPanel(Static):
         ):
             text.append(f"{label}: ", "bold")
             text.append(f"{value}\n")
-        self.update(text.rstrip() or text)
+        text.rstrip()  # in place: no empty line after the last
+        self.update(text)
 
 
 # Name, source, gender, mass, stature, strength type, motion speed, handedness,
@@ -424,7 +425,7 @@ class QueryScreen(SassScreen):
     def refresh_screen(self) -> None:
         lists = self.lists
         totals = (lists.count(QUERY_LIST), lists.count(SELECTED_LIST)) if lists else (0, 0)
-        query = lists.last_query if lists else ""
+        query = (lists.last_query or "") if lists else ""
         if self.builder is not None and not self.awaiting_build:
             query = f"{self.builder.text}▏ (being built)"
         self.query_one(SummaryPanel).show(query, self.which, *totals)
@@ -670,13 +671,14 @@ class QueryScreen(SassScreen):
         if self.running:
             self.say(WAIT)
             return
-        limits = self.lists.last_query if self.lists else None
-        if not limits:
+        lists = self.lists
+        limits = lists.last_query if lists else None
+        if lists is None or not limits:
             self.say("Fit Test uses the last query as design limits: run a query first.")
             return
 
         def answer(text: str) -> None:
-            self.app.push_screen(FitScreen(self.lists, limits, text.strip() or DEFAULT_POPULATION))
+            self.app.push_screen(FitScreen(lists, limits, text.strip() or DEFAULT_POPULATION))
 
         self.ask(
             f"Population to test (Enter: {DEFAULT_POPULATION}):",
