@@ -11,7 +11,6 @@ one runs, keys are still answered and list commands say so instead of waiting.
 from __future__ import annotations
 
 import math
-import sqlite3
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -28,7 +27,7 @@ from textual.widgets import Button, Footer, OptionList, Static
 from textual.widgets.option_list import Option
 
 from sass_tui.db.flatfile import FlatFiles
-from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
 from sass_tui.model.text import printable
@@ -54,9 +53,6 @@ INPUT_DB_FILES = (
     ("elbow", "Elbow Strength"),
     ("wrist", "Wrist Strength"),
 )
-# What the database may answer a user's request with (QueryError, DatabaseError
-# and FlatFileError are SassErrors); anything else is a bug and shows as one.
-DB_ERRORS = (SassError, sqlite3.Error, OSError)
 
 
 class Busy(Exception):
