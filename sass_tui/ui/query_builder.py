@@ -446,6 +446,8 @@ class QueryBuilderScreen(SassScreen, ModalScreen[str | None]):
 
     def _choose(self, label: str, menu: str | None) -> None:
         builder = self.builder
+        if self.app.screen is not self:
+            return  # dismissed: a choice still queued (Enter typed twice at once) is dropped
         if menu is not None and menu != builder.current:
             # Enter pressed again before the next menu was up: it chose in a menu
             # that is gone, so it is dropped rather than applied to the wrong one.

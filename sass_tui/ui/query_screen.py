@@ -788,4 +788,5 @@ class MoreMenu(ModalScreen[str | None]):
 
     def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
         event.stop()
-        self.dismiss(str(event.option.prompt))
+        if self.app.screen is self:  # not again for an Enter typed twice at once
+            self.dismiss(str(event.option.prompt))

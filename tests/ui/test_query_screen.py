@@ -432,3 +432,44 @@ def test_builder_is_a_modal_screen_that_owns_its_keys(drive, db):
             assert "aborted" in message(app)
 
     drive(scenario())
+
+
+def test_enters_in_a_burst_on_abort_close_the_builder_once(drive, db):
+    """Enter typed several times at once on Abort: the builder closes once,
+    the query screen stays (the extra Enters used to pop it, then crash)."""
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            screen = await open_query_screen(pilot)
+            await pilot.press("d", "b")
+            await pilot.press(*["down"] * popup_labels(app).index("Abort"))
+            for _ in range(3):
+                app.post_message(events.Key("enter", "\r"))
+            await pilot.pause()
+            await pilot.pause()
+            assert app.screen is screen and "aborted" in message(app)
+
+    drive(scenario())
+
+
+def test_enters_in_a_burst_in_the_more_menu_choose_once(drive, db):
+    """Enter typed several times at once in the More Menu: one choice (Next),
+    the spreadsheet stays (the extra Enters popped it, then crashed)."""
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            screen = await open_query_screen(pilot)
+            screen.start_query("stature > 0")
+            await settle(pilot)
+            await pilot.press("a", "e", "v", "x")  # Select All, Exit, Disp. Indv., Disp. More
+            await pilot.press("down", "down", "down")  # Next
+            for _ in range(3):
+                app.post_message(events.Key("enter", "\r"))
+            await pilot.pause()
+            await pilot.pause()
+            assert app.screen is app.spreadsheet
+            assert message(app).startswith("Person 2 of ")
+
+    drive(scenario())
