@@ -94,18 +94,3 @@ def test_sass_fig_does_not_import_pint(tmp_path):
     imported = _imported_while_running(["fig", "-o", str(tmp_path / "X.fig")], tmp_path)
     assert "pint" not in imported and "textual" not in imported
     assert (tmp_path / "X.fig").is_file()
-
-
-def test_no_module_imports_one_that_imports_it_back():
-    """No two modules of sass_tui import each other, at the top or inside a
-    function (an import only for type checking does not run, and does not count)."""
-    import grimp
-
-    graph = grimp.build_graph("sass_tui", exclude_type_checking_imports=True, cache_dir=None)
-    both_ways = sorted(
-        (a, b)
-        for a in graph.modules
-        for b in graph.find_modules_directly_imported_by(a)
-        if a < b and a in graph.find_modules_directly_imported_by(b)
-    )
-    assert both_ways == []
