@@ -26,6 +26,12 @@ from typing import Any
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.query import LIST_FIELDS, compile_query
 from sass_tui.db.schema import connect, transaction
+from sass_tui.model.errors import SassError
+
+# What the database may answer a user's request with (QueryError, DatabaseError
+# and FlatFileError are SassErrors): the UI's edges catch these; anything else is
+# a bug and shows as one.
+DB_ERRORS = (SassError, sqlite3.Error, OSError)
 
 QUERY_LIST = "query"
 SELECTED_LIST = "selected"

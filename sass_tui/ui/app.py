@@ -9,6 +9,7 @@ See docs/architecture.md.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from textual.app import App
 
@@ -18,6 +19,11 @@ from sass_tui.model.paths import user_path
 from sass_tui.model.session import Session
 from sass_tui.model.strength import StrengthError, StrengthSheet, read_strength_file
 from sass_tui.ui.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
+
+if TYPE_CHECKING:  # the database costs start-up time: imported when first used
+    from sass_tui.db.individual import Individual
+    from sass_tui.db.lists import QueryLists
+    from sass_tui.ui.query_screen import DatabaseOpened
 
 
 class SassApp(App):
@@ -41,7 +47,7 @@ class SassApp(App):
         figure = figure or Figure.default()
         sheet, self.strength_error = self._load_strength(figure, strength_path)
         self.session = Session(figure, sheet)
-        self.query_lists = None  # sass_tui.db.lists.QueryLists, opened by the query screen
+        self.query_lists: QueryLists | None = None  # opened by the query screen
         self._quit_asked_at = float("-inf")
         self._restore_theme()
 
@@ -136,7 +142,7 @@ class SassApp(App):
 
         self.push_screen(FigureScreen(self.session))
 
-    def on_database_opened(self, event) -> None:
+    def on_database_opened(self, event: DatabaseOpened) -> None:
         self.query_lists = event.lists
 
     def selected_count(self) -> int:
@@ -144,20 +150,31 @@ class SassApp(App):
 
         return self.query_lists.count(SELECTED_LIST) if self.query_lists else 0
 
-    def person_figure(self, index: int, population: Figure) -> Figure:
-        """The figure of person `index` of the selected list (report §12.4)."""
+    def selected_individual(self, index: int) -> Individual:
+        """Person `index` of the selected list, read from the database; OSError
+        when it cannot be read, DatabaseError when there is no such person."""
         import sqlite3
 
         from sass_tui.db.individual import fetch_individual
-        from sass_tui.db.individual import person_figure as figure_of
+        from sass_tui.db.schema import DatabaseError
 
         lists = self.query_lists
+        if lists is None:
+            raise OSError("the database is not open")
         try:
             with lists.lock:
-                person = fetch_individual(lists.conn, lists.selected_id(index))
+                id_num = lists.selected_id(index)
+                if id_num is None:
+                    raise DatabaseError(f"there is no person {index + 1} in the selected list")
+                return fetch_individual(lists.conn, id_num)
         except sqlite3.Error as exc:
             raise OSError(f"database error: {exc}") from exc
-        return figure_of(person, population)
+
+    def person_figure(self, index: int, population: Figure) -> Figure:
+        """The figure of person `index` of the selected list (report §12.4)."""
+        from sass_tui.db.individual import person_figure as figure_of
+
+        return figure_of(self.selected_individual(index), population)
 
 
 def _screen_commands_provider():

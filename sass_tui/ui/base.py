@@ -12,12 +12,17 @@ screen's bindings are its own.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING, cast
 
 from textual import events
 from textual.binding import Binding
+from textual.dom import DOMNode
 from textual.screen import Screen
 
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
+
+if TYPE_CHECKING:  # app.py imports the screens: at run time this would be a cycle
+    from sass_tui.ui.app import SassApp
 
 
 class SassScreen(Screen):
@@ -26,6 +31,12 @@ class SassScreen(Screen):
         Binding("f1", "help", "Help", show=False),
         Binding("question_mark", "help", "Help", show=False),
     ]
+
+    @property
+    def sass_app(self) -> SassApp:
+        """The app, typed: what a screen reads of it (the Session, the database
+        lists, the screens it opens) is checked by mypy."""
+        return cast("SassApp", self.app)
 
     @property
     def message_line(self) -> MessageLine:
@@ -50,7 +61,7 @@ class SassScreen(Screen):
     async def on_key(self, event: events.Key) -> None:
         if self.message_line.prompting:
             return  # the prompt's own keys (Enter, Escape) are the answer's bindings
-        node = self.focused
+        node: DOMNode | None = self.focused
         while node is not None and node is not self:
             if event.key in node._bindings.key_to_bindings:
                 return  # a widget's own binding comes first (the app runs it)

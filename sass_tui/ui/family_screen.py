@@ -8,6 +8,7 @@ family's files with `write_family`.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from textual import work
 from textual.app import ComposeResult
@@ -22,6 +23,9 @@ from sass_tui.model.paths import user_path
 from sass_tui.model.vocabulary import GENDERS
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.widgets import MessageLine
+
+if TYPE_CHECKING:  # numpy: imported when a family is written
+    from sass_tui.model.accommodation import Family
 
 DEFAULT_MEASURES = "stature,mass"
 DEFAULT_COVERAGE = 90.0
@@ -87,7 +91,7 @@ class FamilyScreen(SassScreen):
         super().__init__(id="family")
         self.db_path = db_path
         self.default_gender = gender
-        self.family = None
+        self.family: Family | None = None
 
     def compose(self) -> ComposeResult:
         yield Label("Manikin family", id="family-title")
@@ -203,20 +207,22 @@ class FamilyScreen(SassScreen):
 
     # --- writing ---------------------------------------------------------------------
     def action_write(self) -> None:
-        if self.family is None:
+        family = self.family
+        if family is None:
             self.complain("No family built yet: answer the questions first (b).")
             return
-        default = f"family_{self.family.gender}"
+        default = f"family_{family.gender}"
+        # The family offered now is the one written, even if another is built
+        # while the directory is asked.
         self.ask(
             f"Directory for the family's files [{default}]:",
-            lambda text: self._write_to(user_path(text.strip() or default)),
+            lambda text: self._write_to(family, user_path(text.strip() or default)),
         )
 
-    def _write_to(self, directory: Path) -> None:
+    def _write_to(self, family: Family, directory: Path) -> None:
         from sass_tui.model.accommodation import write_family
         from sass_tui.model.figure import Figure
 
-        family = self.family
         written = write_family(family, directory, Figure.default(family.gender))
         self.say(
             f"Wrote {len(written.manikins)} manikins (.fig, .x3d) and family.json to {directory}."

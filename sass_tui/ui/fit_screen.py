@@ -14,7 +14,7 @@ from textual.screen import Screen
 from textual.widgets import Footer, Static
 
 from sass_tui.db.fit_table import format_table
-from sass_tui.db.lists import QueryLists
+from sass_tui.db.lists import DB_ERRORS, QueryLists
 
 
 class FitDone(Message):
@@ -49,7 +49,6 @@ class FitScreen(Screen):
     @work(thread=True, exclusive=True, group="fit", exit_on_error=False)
     def run_fit(self, lists: QueryLists, limits: str, population: str) -> None:
         from sass_tui.db.fit import fit_test
-        from sass_tui.ui.query_screen import DB_ERRORS
 
         try:
             with lists.lock:

@@ -10,8 +10,10 @@ name; its help text is the first line of the `action_` method's docstring.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import partial
+from typing import Any
 
 from rich.text import Text
 from textual.binding import Binding
@@ -87,10 +89,10 @@ def screen_commands(screen) -> list[ScreenCommand]:
 class ScreenCommands(Provider):
     """The palette's commands: those of the screen it was opened on."""
 
-    def _commands(self) -> list[tuple[str, str, object]]:
+    def _commands(self) -> list[tuple[str, str, Callable[[], Any]]]:
         screen = self.screen
         runner = getattr(screen, "run_command", None)
-        found = []
+        found: list[tuple[str, str, Callable[[], Any]]] = []
         for command in screen_commands(screen):
             if runner is None or not screen.check_action(command.action, ()):
                 continue

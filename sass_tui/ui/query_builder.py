@@ -9,18 +9,26 @@ the menus build is exactly what `sass query` accepts; Previous Menu takes the
 last piece off and shows the menu it was chosen in again.
 
 `QueryBuilder` is the menu logic (no widgets, easy to test); `QueryPopup`
-shows its current menu.
+shows its current menu; `QueryBuilderScreen` is the modal screen that holds
+the pop-up over the query screen, owns its keys (Escape, `e`) and its message
+line (the live query, the constraint prompt), and is dismissed with the query
+to run (None: aborted).
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Protocol
 
+from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
 from textual.message import Message
-from textual.widgets import Input, OptionList
+from textual.screen import ModalScreen
+from textual.widgets import Footer, Input, OptionList
 from textual.widgets.option_list import Option
 
 from sass_tui.db.query import QueryError, compile_query
@@ -29,6 +37,8 @@ from sass_tui.model.names import CENTER_OF_MASS_ROWS, GIRTH_ROWS, JOINT_LIMIT_RO
 from sass_tui.model.strength import MOTIONS
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 from sass_tui.model.vocabulary import STRENGTH_TYPES
+from sass_tui.ui.base import SassScreen
+from sass_tui.ui.widgets import MessageLine
 
 PREVIOUS = "Previous Menu"
 VALUE_PROMPT = "Type in the constraint value:"
@@ -50,11 +60,18 @@ class Menu:
     searchable: bool = False  # too long for a plain menu: typing filters it
 
 
-def _rows_menu(key: str, title: str, rows, then: str, suffix: str = "") -> Menu:
+class _Row(Protocol):
+    @property
+    def label(self) -> str: ...
+    @property
+    def name(self) -> str: ...
+
+
+def _rows_menu(key: str, title: str, rows: Iterable[_Row], then: str, suffix: str = "") -> Menu:
     return Menu(key, title, tuple(Item(r.label, f".{r.name}{suffix}", then) for r in rows))
 
 
-def _words_menu(key: str, title: str, words) -> Menu:
+def _words_menu(key: str, title: str, words: Iterable[str]) -> Menu:
     return Menu(key, title, tuple(Item(w.capitalize(), f" = {w}", "conjunction") for w in words))
 
 
@@ -254,19 +271,15 @@ class MenuSearch(Input):
     ]
 
     def action_move(self, rows: int) -> None:
-        options = self.parent.query_one(OptionList)
+        options = self.screen.query_one("#popup-options", OptionList)
         if options.option_count:
             current = options.highlighted if options.highlighted is not None else -1
             options.highlighted = max(0, min(current + rows, options.option_count - 1))
 
 
 class QueryPopup(Vertical):
-    """One pop-up menu at a time; Escape is Previous Menu (Abort in the Query Menu)."""
-
-    BINDINGS = [
-        Binding("escape", "back", "Previous Menu", show=False),
-        Binding("e", "edit_text", "Edit query", show=False),
-    ]
+    """One pop-up menu at a time: shows the menu its screen hands it and posts
+    `Chosen` for the item picked."""
 
     class Chosen(Message):
         def __init__(self, label: str, menu: str | None = None) -> None:
@@ -274,50 +287,66 @@ class QueryPopup(Vertical):
             self.label = label
             self.menu = menu  # the menu it was chosen in (None: the current one)
 
-    class EditText(Message):
-        pass
-
-    def compose(self):
+    def compose(self) -> ComposeResult:
         search = MenuSearch(placeholder="type to filter", id="popup-search", compact=True)
         search.display = False
         yield search
         yield OptionList(id="popup-options")
 
-    menu_key: str | None = None
     menu: Menu | None = None
 
+    @property
+    def menu_key(self) -> str | None:
+        return self.menu.key if self.menu is not None else None
+
+    @property
+    def options(self) -> OptionList:
+        return self.query_one("#popup-options", OptionList)
+
+    @property
+    def search(self) -> MenuSearch:
+        return self.query_one(MenuSearch)
+
     def show_menu(self, menu: Menu) -> None:
-        self.menu_key = menu.key
         self.menu = menu
         self.border_title = menu.title
-        search = self.query_one(MenuSearch)
+        search = self.search
         search.display = menu.searchable
         self.set_class(menu.searchable, "-searchable")
         with search.prevent(Input.Changed):
             search.value = ""
-        self._fill("")
+        self._fill(menu, "")
         self.display = True
-        (search if menu.searchable else self.query_one(OptionList)).focus()
+        self.focus_menu()
 
-    def _fill(self, typed: str) -> None:
+    def focus_menu(self) -> None:
+        """The keys go to the filter of a searchable menu, else to the menu."""
         menu = self.menu
+        (self.search if menu is not None and menu.searchable else self.options).focus()
+
+    def _fill(self, menu: Menu, typed: str) -> None:
         words = typed.lower().split()
         labels = [
             item.label for item in menu.items if all(word in item.label.lower() for word in words)
         ] + ([PREVIOUS] if menu.previous else [])
-        options = self.query_one(OptionList)
+        options = self.options
         options.clear_options()
         options.add_options([Option(label, id=f"opt-{i}") for i, label in enumerate(labels)])
         options.highlighted = 0
 
+    @property
+    def labels(self) -> list[str]:
+        options = self.options
+        return [str(options.get_option_at_index(i).prompt) for i in range(options.option_count)]
+
     def on_input_changed(self, event: Input.Changed) -> None:
         event.stop()
         if self.menu is not None:
-            self._fill(event.value)
+            self._fill(self.menu, event.value)
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         event.stop()
-        options = self.query_one(OptionList)
+        options = self.options
         if options.highlighted is not None and options.option_count:
             prompt = options.get_option_at_index(options.highlighted).prompt
             self.post_message(self.Chosen(str(prompt), self.menu_key))
@@ -326,10 +355,128 @@ class QueryPopup(Vertical):
         event.stop()
         self.post_message(self.Chosen(str(event.option.prompt), self.menu_key))
 
+
+class QueryBuilderScreen(SassScreen, ModalScreen[str | None]):
+    """The pop-up query builder over the query screen (figure 13).
+
+    It is handed the query screen's `QueryBuilder` (the query screen shows
+    the query being built in its summary: `on_change` tells it to redraw),
+    the last query run (for Re_execute) and where the pop-up goes.  It is
+    dismissed with the query to run (Done, Re_execute) or None (Abort).
+    Escape is Previous Menu (Abort in the Query Menu); `e` edits the query as
+    text on the message line."""
+
+    CSS_PATH = Path(__file__).with_name("query.tcss")
+    BINDINGS = [
+        Binding("escape", "back", "Previous Menu"),
+        Binding("e", "edit_text", "Edit query"),
+        # The app's palette key works over a modal screen, but the footer lists
+        # only this screen's keys: name it here so the footer shows it.
+        Binding("ctrl+p", "app.command_palette", "palette", show=False),
+    ]
+
+    def __init__(
+        self,
+        builder: QueryBuilder,
+        last_query: str | None,
+        offset: tuple[int, int] | None = None,
+        on_change: Callable[[], None] | None = None,
+    ) -> None:
+        super().__init__(id="query-builder")
+        self.builder = builder
+        self.last_query = last_query
+        self.popup_offset = offset
+        self.on_change = on_change
+
+    def compose(self) -> ComposeResult:
+        popup = QueryPopup(id="popup", classes="pop-up-menu")
+        if self.popup_offset is not None:
+            popup.styles.offset = self.popup_offset
+        yield popup
+        yield MessageLine(id="message-line")
+        yield Footer(compact=True)  # this screen's keys, not the query screen's
+
+    def on_mount(self) -> None:
+        self._show_current()
+
+    @property
+    def popup(self) -> QueryPopup:
+        return self.query_one(QueryPopup)
+
+    def on_message_line_answered(self, event: MessageLine.Answered) -> None:
+        event.stop()
+        if not self.message_line.prompting and self.popup.display:
+            self.popup.focus_menu()
+
+    def _changed(self) -> None:
+        if self.on_change is not None:
+            self.on_change()
+
+    def _show_live(self) -> None:
+        self.say(f"Query: {self.builder.text}▏  (e: edit the query as text)")
+
+    def _show_current(self) -> None:
+        builder = self.builder
+        self._changed()
+        menu = builder.menu
+        if menu is None:  # "value": the constraint is typed on the message line
+            self.popup.display = False
+            self.ask(VALUE_PROMPT, self._constraint, on_cancel=self._previous)
+            return
+        self.popup.show_menu(menu)
+        self._show_live()
+
+    def _previous(self) -> None:
+        self._choose(PREVIOUS, None)
+
+    def _constraint(self, typed: str) -> None:
+        try:
+            self.builder.constraint(typed)
+        except QueryError as exc:
+            # The builder stays where it was: ask again, saying what was wrong.
+            self.ask(
+                f"{exc}. {VALUE_PROMPT}", self._constraint, on_cancel=self._previous, kind="error"
+            )
+            return
+        self._show_current()
+
+    def on_query_popup_chosen(self, event: QueryPopup.Chosen) -> None:
+        event.stop()
+        self._choose(event.label, event.menu)
+
+    def _choose(self, label: str, menu: str | None) -> None:
+        builder = self.builder
+        if self.app.screen is not self:
+            return  # dismissed: a choice still queued (Enter typed twice at once) is dropped
+        if menu is not None and menu != builder.current:
+            # Enter pressed again before the next menu was up: it chose in a menu
+            # that is gone, so it is dropped rather than applied to the wrong one.
+            return
+        outcome = builder.choose(label)
+        if outcome == "abort":
+            self.dismiss(None)
+        elif outcome == "re_execute":
+            if not self.last_query:
+                self.complain("There is no previous query to re-execute.")
+                return
+            self.dismiss(self.last_query)
+        elif outcome == "done":
+            text = builder.text
+            try:
+                compile_query(text)
+            except QueryError as exc:
+                self.complain(f"{exc}; edit the query (e) or use Previous Menu.")
+                return
+            self.dismiss(text)
+        else:
+            self._show_current()
+
     def action_back(self) -> None:
-        options = self.query_one(OptionList)
-        labels = [str(options.get_option_at_index(i).prompt) for i in range(options.option_count)]
-        self.post_message(self.Chosen(PREVIOUS if PREVIOUS in labels else "Abort", self.menu_key))
+        self._choose(PREVIOUS if PREVIOUS in self.popup.labels else "Abort", self.popup.menu_key)
 
     def action_edit_text(self) -> None:
-        self.post_message(self.EditText())
+        def edited(text: str) -> None:
+            self.builder.replace_text(text)
+            self._show_current()
+
+        self.ask("Query:", edited, on_cancel=self._show_current, initial=self.builder.text)

@@ -11,14 +11,14 @@ one runs, keys are still answered and list commands say so instead of waiting.
 from __future__ import annotations
 
 import math
-import sqlite3
 from contextlib import contextmanager
 from pathlib import Path
 
 from rich.text import Text
 from textual import events, work
+from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Horizontal
+from textual.containers import Horizontal, Vertical
 from textual.message import Message
 from textual.reactive import reactive
 from textual.screen import ModalScreen
@@ -27,14 +27,13 @@ from textual.widgets import Button, Footer, OptionList, Static
 from textual.widgets.option_list import Option
 
 from sass_tui.db.flatfile import FlatFiles
-from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
-from sass_tui.db.query import QueryError
+from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
 from sass_tui.model.text import printable
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.commands import CommandSpec
-from sass_tui.ui.query_builder import PREVIOUS, VALUE_PROMPT, QueryBuilder, QueryPopup
+from sass_tui.ui.query_builder import QueryBuilder, QueryBuilderScreen
 from sass_tui.ui.widgets import CommandMenu, MessageLine
 
 BUILD_PROMPT = "Press rightmouse to build query."
@@ -54,9 +53,6 @@ INPUT_DB_FILES = (
     ("elbow", "Elbow Strength"),
     ("wrist", "Wrist Strength"),
 )
-# What the database may answer a user's request with (QueryError, DatabaseError
-# and FlatFileError are SassErrors); anything else is a bug and shows as one.
-DB_ERRORS = (SassError, sqlite3.Error, OSError)
 
 
 class Busy(Exception):
@@ -144,7 +140,8 @@ class SummaryPanel(Static):
         ):
             text.append(f"{label}: ", "bold")
             text.append(f"{value}\n")
-        self.update(text.rstrip() or text)
+        text.rstrip()  # in place: no empty line after the last
+        self.update(text)
 
 
 # Name, source, gender, mass, stature, strength type, motion speed, handedness,
@@ -334,9 +331,6 @@ class QueryScreen(SassScreen):
             yield SummaryPanel(id="summary")
             yield QueryCommandMenu(QUERY_COMMANDS, self, id="query-commands")
         yield ListSheet(id="list")
-        popup = QueryPopup(id="popup")
-        popup.display = False
-        yield popup
         yield MessageLine(id="message-line")
         yield Footer(compact=True)
 
@@ -355,10 +349,6 @@ class QueryScreen(SassScreen):
     def sheet(self) -> ListSheet:
         return self.query_one(ListSheet)
 
-    @property
-    def popup(self) -> QueryPopup:
-        return self.query_one(QueryPopup)
-
     # --- message line -----------------------------------------------------------------
     def on_resize(self, event: events.Resize) -> None:
         self.sheet.page_rows = event.size.height - LIST_FIXED_LINES
@@ -366,18 +356,8 @@ class QueryScreen(SassScreen):
     def on_message_line_answered(self, event: MessageLine.Answered) -> None:
         event.stop()
         if not self.message_line.prompting:
-            self._focus_back()
-        self.refresh_screen()
-
-    def _focus_back(self) -> None:
-        if self.popup.display:
-            menu = self.popup.menu
-            searchable = menu is not None and menu.searchable
-            self.set_focus(
-                self.popup.query_one("#popup-search" if searchable else "#popup-options")
-            )
-        else:
             self.set_focus(self.sheet)
+        self.refresh_screen()
 
     # --- database ------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
@@ -441,7 +421,7 @@ class QueryScreen(SassScreen):
     def refresh_screen(self) -> None:
         lists = self.lists
         totals = (lists.count(QUERY_LIST), lists.count(SELECTED_LIST)) if lists else (0, 0)
-        query = lists.last_query if lists else ""
+        query = (lists.last_query or "") if lists else ""
         if self.builder is not None and not self.awaiting_build:
             query = f"{self.builder.text}▏ (being built)"
         self.query_one(SummaryPanel).show(query, self.which, *totals)
@@ -535,9 +515,6 @@ class QueryScreen(SassScreen):
 
     # --- Query DB: the pop-up builder -------------------------------------------------
     def action_query_db(self) -> None:
-        if self.builder is not None and not self.awaiting_build:
-            self.say("A query is being built: Done runs it, Abort (Query Menu) drops it.")
-            return
         if self.running:
             self.say(WAIT)
             return
@@ -549,99 +526,37 @@ class QueryScreen(SassScreen):
         self.say(f"{BUILD_PROMPT} (or press b)")
 
     def action_build(self, x: int | None = None, y: int | None = None) -> None:
-        if not self.awaiting_build:
-            if self.builder is None:
-                self.say("Query DB (d) first, then the right mouse button builds the query.")
+        builder = self.builder
+        if not self.awaiting_build or builder is None:
+            self.say("Query DB (d) first, then the right mouse button builds the query.")
             return
         self.awaiting_build = False
+        offset = None
         if x is not None and y is not None:
-            self.popup.styles.offset = (
+            offset = (
                 max(0, min(x, self.size.width - 40)),
                 max(0, min(y, self.size.height - 16)),
             )
-        self._show_current()
+        last_query = self.lists.last_query if self.lists is not None else None
+        self.app.push_screen(
+            QueryBuilderScreen(builder, last_query, offset, on_change=self.refresh_screen),
+            self._built,
+        )
 
     def on_mouse_down(self, event: events.MouseDown) -> None:
         if event.button == 3 and self.awaiting_build:
             event.stop()
             self.action_build(event.screen_x, event.screen_y)
 
-    def _show_live(self) -> None:
-        self.say(f"Query: {self.builder.text}▏  (e: edit the query as text)")
-
-    def _show_current(self) -> None:
-        builder = self.builder
-        self.refresh_screen()
-        if builder.current == "value":
-            self.popup.display = False
-            self.ask(
-                VALUE_PROMPT,
-                self._constraint,
-                on_cancel=lambda: self.on_query_popup_chosen(QueryPopup.Chosen(PREVIOUS)),
-            )
-            return
-        self.popup.show_menu(builder.menu)
-        self._show_live()
-
-    def _constraint(self, typed: str) -> None:
-        try:
-            self.builder.constraint(typed)
-        except QueryError as exc:
-            # The builder stays where it was: ask again, saying what was wrong.
-            self.ask(
-                f"{exc}. {VALUE_PROMPT}",
-                self._constraint,
-                on_cancel=lambda: self.on_query_popup_chosen(QueryPopup.Chosen(PREVIOUS)),
-                kind="error",
-            )
-            return
-        self._show_current()
-
-    def on_query_popup_chosen(self, event: QueryPopup.Chosen) -> None:
-        event.stop()
-        builder = self.builder
-        if builder is None or (event.menu is not None and event.menu != builder.current):
-            # Enter pressed again before the next menu was up: it chose in a menu
-            # that is gone, so it is dropped rather than applied to the wrong one.
-            return
-        outcome = builder.choose(event.label)
-        if outcome == "abort":
-            self._close_builder()
-            self.say("Query aborted; nothing was run.")
-        elif outcome == "re_execute":
-            if not self.lists.last_query:
-                self.complain("There is no previous query to re-execute.")
-                return
-            self._close_builder()
-            self.start_query(self.lists.last_query)
-        elif outcome == "done":
-            text = builder.text
-            from sass_tui.db.query import compile_query
-
-            try:
-                compile_query(text)
-            except QueryError as exc:
-                self.complain(f"{exc}; edit the query (e) or use Previous Menu.")
-                return
-            self._close_builder()
-            self.start_query(text)
-        else:
-            self._show_current()
-
-    def on_query_popup_edit_text(self, event: QueryPopup.EditText) -> None:
-        event.stop()
-
-        def edited(text: str) -> None:
-            self.builder.replace_text(text)
-            self._show_current()
-
-        self.ask("Query:", edited, on_cancel=self._show_current, initial=self.builder.text)
-
-    def _close_builder(self) -> None:
+    def _built(self, query: str | None) -> None:
+        """The pop-up builder closed: run its query, or it was aborted."""
         self.builder = None
-        self.popup.display = False
         self.set_focus(self.sheet)
         self.refresh_screen()
+        if query is None:
+            self.say("Query aborted; nothing was run.")
+        else:
+            self.start_query(query)
 
     # --- running a query --------------------------------------------------------------
     def start_query(self, text: str) -> None:
@@ -727,7 +642,7 @@ class QueryScreen(SassScreen):
         if event.error:
             self.complain(f"Make Population: nothing written or loaded: {event.error}")
             return
-        session = self.app.session
+        session = self.sass_app.session
         if session.person is not None:
             session.show_population()  # the population is what the next figure is sized from
         genders = list(event.result.counts)
@@ -752,13 +667,14 @@ class QueryScreen(SassScreen):
         if self.running:
             self.say(WAIT)
             return
-        limits = self.lists.last_query if self.lists else None
-        if not limits:
+        lists = self.lists
+        limits = lists.last_query if lists else None
+        if lists is None or not limits:
             self.say("Fit Test uses the last query as design limits: run a query first.")
             return
 
         def answer(text: str) -> None:
-            self.app.push_screen(FitScreen(self.lists, limits, text.strip() or DEFAULT_POPULATION))
+            self.app.push_screen(FitScreen(lists, limits, text.strip() or DEFAULT_POPULATION))
 
         self.ask(
             f"Population to test (Enter: {DEFAULT_POPULATION}):",
@@ -853,21 +769,24 @@ MORE_CHOICES = ("First", "Last", "Previous", "Next", "Nth Person")
 
 
 class MoreMenu(ModalScreen[str | None]):
+    """The More Menu: a pop-up menu that looks like the query builder's
+    (`.pop-up-menu`, sass.tcss) over the spreadsheet."""
+
     DEFAULT_CSS = """
-    MoreMenu { align: center middle; background: $background 40%; }
-    MoreMenu > OptionList { width: 24; height: auto; border: round $accent;
-                            border-title-style: bold; background: $surface; }
+    MoreMenu { align: center middle; background: transparent; }
+    MoreMenu > #more-popup { width: 24; }
     """
     BINDINGS = [Binding("escape", "dismiss(None)", "Cancel")]
 
-    def compose(self):
-        options = OptionList(
-            *(Option(choice, id=f"more-{i}") for i, choice in enumerate(MORE_CHOICES)),
-            id="more-menu",
-        )
-        options.border_title = "More Menu"
-        yield options
+    def compose(self) -> ComposeResult:
+        with Vertical(id="more-popup", classes="pop-up-menu") as popup:
+            popup.border_title = "More Menu"
+            yield OptionList(
+                *(Option(choice, id=f"more-{i}") for i, choice in enumerate(MORE_CHOICES)),
+                id="more-menu",
+            )
 
     def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
         event.stop()
-        self.dismiss(str(event.option.prompt))
+        if self.app.screen is self:  # not again for an Enter typed twice at once
+            self.dismiss(str(event.option.prompt))

@@ -14,6 +14,7 @@ import math
 import re
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from textual import events, work
 from textual.app import ComposeResult
@@ -69,6 +70,9 @@ from sass_tui.ui.widgets import (
     format_value,
     global_text,
 )
+
+if TYPE_CHECKING:  # numpy-heavy: imported on the first Predict
+    from sass_tui.model.prediction import Prediction, Predictor
 
 FIRST_MESSAGE = "Press left-mouse to select items."
 GROUP_KEYS = ((GIRTH, "g"), (JOINT_LIMITS, "j"), (CENTER_OF_MASS, "m"), (STRENGTH, "s"))
@@ -158,9 +162,9 @@ class SpreadsheetScreen(SassScreen):
         self.strength_error = strength_error
         self.data_group = GIRTH
         self._warning_index = 0
-        self._predictor = None  # sass_tui.model.prediction.Predictor, opened on first Predict
+        self._predictor: Predictor | None = None  # opened on the first Predict
         # The prediction shown and its figure (shown while it is session.person).
-        self.prediction = None
+        self.prediction: tuple[Prediction, Figure] | None = None
 
     # --- layout ---------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -465,7 +469,7 @@ class SpreadsheetScreen(SassScreen):
 
         self.ask("Include strength in the figure? (Y/n)", include)
 
-    def _write_unless_kept(self, path: Path, write: Callable[[], None]) -> None:
+    def _write_unless_kept(self, path: Path, write: Callable[[], object]) -> None:
         """Write, but an existing file only after the user says y."""
         if not path.exists():
             write()
@@ -553,12 +557,14 @@ class SpreadsheetScreen(SassScreen):
         axis, is_percentile = column // 2, bool(column % 2)
         self.figure.check_cell(group, row, axis)
         state = self.figure.groups[group]
+        values, percentiles = state.values, state.percentiles
+        assert values is not None and percentiles is not None  # check_cell: loaded
         name = f"{state.rows[row].label} {AXES[axis]}"
         if is_percentile:
-            current = format_percentile(state.percentiles[row, axis])
+            current = format_percentile(percentiles[row, axis])
             prompt = f"{name} percentile [{current}]:"
         else:
-            shown = convert(state.values[row, axis], GROUP_UNITS[group][0], state.unit)
+            shown = convert(values[row, axis], GROUP_UNITS[group][0], state.unit)
             current = format_value(shown, state.unit)
             prompt = f"{name} value [{current} {DISPLAY[state.unit]}]:"
         self.ask(
@@ -579,11 +585,14 @@ class SpreadsheetScreen(SassScreen):
                 group, row, axis, convert(typed, state.unit, GROUP_UNITS[group][0])
             )
         state = self.figure.groups[group]
+        values, percentiles, source = state.values, state.percentiles, state.source
+        assert values is not None and percentiles is not None  # the edit was accepted
+        assert source is not None  # a loaded group has its population
         canonical = GROUP_UNITS[group][0]
-        shown = convert(state.values[row, axis], canonical, state.unit)
-        percentile = state.percentiles[row, axis]
+        shown = convert(values[row, axis], canonical, state.unit)
+        percentile = percentiles[row, axis]
         if math.isnan(percentile):
-            stats = state.source.stats(self.figure.gender)[row, axis]
+            stats = source.stats(self.figure.gender)[row, axis]
             if stats[0] == stats[1] == stats[2]:
                 flat = convert(stats[1], canonical, state.unit)
                 where = (
@@ -692,10 +701,10 @@ class SpreadsheetScreen(SassScreen):
 
     # --- Query, Disp. Indv., Disp. More, Disp. Pop. (§12.2.4, §12.4) ----------------------
     def action_query(self) -> None:
-        self.app.open_query_screen()
+        self.sass_app.open_query_screen()
 
     def action_see_figure(self) -> None:
-        self.app.open_figure_screen()
+        self.sass_app.open_figure_screen()
 
     def action_display_individual(self) -> None:
         self.show_person(0)
@@ -712,7 +721,7 @@ class SpreadsheetScreen(SassScreen):
             elif choice == "Nth Person":
                 self.ask("Enter the number:", self._nth_person)
             else:
-                total = self.app.selected_count()
+                total = self.sass_app.selected_count()
                 index = {
                     "First": 0,
                     "Last": total - 1,
@@ -731,7 +740,7 @@ class SpreadsheetScreen(SassScreen):
         self.show_person(number - 1)
 
     def show_person(self, index: int) -> None:
-        total = self.app.selected_count()
+        total = self.sass_app.selected_count()
         if total == 0:
             self.complain("The selected list is empty: Query, then Select One or Select All.")
             return
@@ -739,7 +748,7 @@ class SpreadsheetScreen(SassScreen):
             self.complain(f"There is no person {index + 1}: the selected list holds {total}.")
             return
         try:
-            person = self.app.person_figure(index, self.session.population)
+            person = self.sass_app.person_figure(index, self.session.population)
         except (SassError, OSError) as exc:
             self.complain(f"Cannot display person {index + 1}: {exc}")
             return
@@ -749,16 +758,12 @@ class SpreadsheetScreen(SassScreen):
 
     def _own_strength(self, index: int, person: Figure) -> StrengthData | str:
         """The person's own strength experiments (issue 11), or why there are none."""
-        import sqlite3
-
-        from sass_tui.db.individual import fetch_individual, strength_measurements
+        from sass_tui.db.individual import strength_measurements
         from sass_tui.model.strength import person_strength_data
 
-        lists = self.app.query_lists
         try:
-            with lists.lock:
-                individual = fetch_individual(lists.conn, lists.selected_id(index))
-        except sqlite3.Error as exc:
+            individual = self.sass_app.selected_individual(index)
+        except (SassError, OSError) as exc:
             return f"{person.person}: strength not read ({exc})."
         measurements = strength_measurements(individual)
         if not measurements:
@@ -773,7 +778,8 @@ class SpreadsheetScreen(SassScreen):
             person.training_level,
             person.fatigue_level,
         )
-        return person_strength_data(person.person, person.gender, measurements, conditions)
+        name = person.person or f"person {index + 1}"  # a person's figure is always named
+        return person_strength_data(name, person.gender, measurements, conditions)
 
     def action_display_population(self) -> None:
         self.prediction = None
@@ -788,9 +794,7 @@ class SpreadsheetScreen(SassScreen):
     def action_family(self) -> None:
         from sass_tui.ui.family_screen import FamilyScreen
 
-        self.app.push_screen(
-            FamilyScreen(getattr(self.app, "db_path", None), self.session.population.gender)
-        )
+        self.app.push_screen(FamilyScreen(self.sass_app.db_path, self.session.population.gender))
 
     # --- Predict (issue 13) ---------------------------------------------------------------
     def action_predict(self) -> None:
@@ -798,7 +802,7 @@ class SpreadsheetScreen(SassScreen):
             self._ask_known()
             return
         self.say("Opening the prediction model (fitting it the first time takes a second) ...")
-        self.open_predictor(getattr(self.app, "db_path", None))
+        self.open_predictor(self.sass_app.db_path)
 
     @work(thread=True, exclusive=True, group="predictor", exit_on_error=False)
     def open_predictor(self, db_path: Path | None) -> None:
@@ -816,9 +820,12 @@ class SpreadsheetScreen(SassScreen):
         self._ask_known()
 
     def _ask_known(self) -> None:
+        predictor = self._predictor
+        if predictor is None:
+            return  # asked only once the model is open
         gender = self.session.population.gender
         try:
-            fields = self._predictor.fields(gender)
+            fields = predictor.fields(gender)
         except SassError as exc:  # no people of this gender in the database
             self.complain(f"Cannot predict: {exc}")
             return
@@ -843,6 +850,8 @@ class SpreadsheetScreen(SassScreen):
             return
         gender = self.session.population.gender
         predictor = self._predictor
+        if predictor is None:
+            return  # asked only once the model is open
         known = predictor.parse_known(gender, split_known(text))
         prediction = predictor.predict(gender, known, nearest=1)
         figure = prediction.figure(self.session.population)
@@ -859,7 +868,7 @@ class SpreadsheetScreen(SassScreen):
 
     def action_interval(self) -> None:
         if self.prediction is None or self.session.person is not self.prediction[1]:
-            self.complain(self.why_not("interval"))
+            self.complain(self.why_not("interval") or "Predict (k) first.")
             return
         group = self.data_group
         if group not in (GIRTH, CENTER_OF_MASS):

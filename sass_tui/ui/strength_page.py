@@ -12,7 +12,8 @@ import math
 
 from rich.text import Text
 
-from sass_tui.model.strength import JOINT_AXES, StrengthError, StrengthSheet, joint_limit_range
+from sass_tui.model.strength import StrengthError, StrengthSheet, joint_limit_range
+from sass_tui.model.vocabulary import JOINT_AXES
 from sass_tui.ui.widgets import DataSheet
 
 ANGLE_WIDTH = 6

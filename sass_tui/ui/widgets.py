@@ -12,6 +12,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from rich.style import Style
 from rich.text import Text
 from textual import events
 from textual.binding import Binding
@@ -543,23 +544,25 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
             second.append(f"{'%':>{pct_w - 1}} ", header_style)
         lines = [top, second]
 
-        if not state.loaded:
+        values, percentiles = state.values, state.percentiles
+        if values is None or percentiles is None:
             lines.append(Text(f"No {figure.gender} data loaded for {GROUP_TITLES[self._group]}."))
             return Text("\n").join(lines)
         first = self.page * self.page_size
-        values = state.values
         shown = convert(values, GROUP_UNITS[self._group][0], state.unit)
         for index in range(first, min(first + self.page_size, self.row_count)):
             line = Text(no_wrap=True, overflow="crop")
             line.append(f"{state.rows[index].label:<{name_w}}"[:name_w], name_style)
             for column in range(self.COLUMNS):
-                axis = column // 2
+                axis_index = column // 2
+                style: str | Style
                 if column % 2 == 0:
-                    text = f"{format_value(shown[index, axis], state.unit):>{value_w - 1}} "
+                    value = format_value(shown[index, axis_index], state.unit)
+                    text = f"{value:>{value_w - 1}} "
                     style = ""
                 else:
                     percentile = format_cell_percentile(
-                        values[index, axis], state.percentiles[index, axis]
+                        values[index, axis_index], percentiles[index, axis_index]
                     )
                     text = f"{percentile:>{pct_w - 1}} "
                     style = pct_style
@@ -634,6 +637,11 @@ class AnswerInput(Input):
 
     def action_cancel(self) -> None:
         self.post_message(self.Cancelled())
+
+    def submit(self) -> None:
+        """Enter, from code that cannot await: what Input.action_submit (a
+        coroutine) does for an input without validators."""
+        self.post_message(self.Submitted(self, self.value))
 
 
 Handler = Callable[[str], None]
@@ -731,7 +739,7 @@ class MessageLine(Horizontal):
         if text:
             answer.insert_text_at_cursor(text)
         elif key == "enter":
-            answer.action_submit()
+            answer.submit()
         elif key == "escape":
             answer.action_cancel()
         elif key == "backspace":

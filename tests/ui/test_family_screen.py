@@ -9,9 +9,10 @@ from textual.widgets import DataTable
 
 from sass_tui.db.default import open_database
 from sass_tui.db.fit import load_family
+from sass_tui.db.values import load_values
 from sass_tui.model.figfile import read_fig
 from sass_tui.ui.app import SassApp
-from sass_tui.ui.family_screen import FamilyScreen
+from sass_tui.ui.family_screen import FamilyBuilt, FamilyScreen
 
 
 async def settle(pilot) -> None:
@@ -60,6 +61,32 @@ def test_a_wrong_measure_is_said(db, drive):
             await pilot.press("y", "enter", *"stature,nosuch", "enter")
             kind, text = app.screen.message_line.history[-1]
             assert kind == "error" and "nosuch" in text
+
+    drive(scenario())
+
+
+def test_w_writes_the_family_it_offered_even_if_another_arrives_meanwhile(db, drive, tmp_path):
+    """`w` offers the family shown; a family built meanwhile (a worker started
+    by `b` finishing while the directory is asked) does not take its place."""
+    conn = open_database(db)
+    try:
+        female = load_family(conn, "female", ["stature", "mass"], 0.9)
+        people = load_values(conn, ["stature", "mass"], "gender = female").matrix
+    finally:
+        conn.close()
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(100, 37)) as pilot:
+            await pilot.press("y", "enter", *"stature,mass", "enter", *"90", "enter")
+            await settle(pilot)
+            await pilot.press("w")
+            assert "[family_male]" in str(app.screen.query_one("#message").render())
+            app.screen.post_message(FamilyBuilt(female, list(people[:, 0]), list(people[:, 1])))
+            await pilot.pause()
+            await pilot.press(*str(tmp_path / "fam"), "enter")
+            names = sorted(p.name for p in (tmp_path / "fam").glob("*.fig"))
+            assert names and all(name.startswith("male_") for name in names), names
 
     drive(scenario())
 

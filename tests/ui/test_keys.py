@@ -66,6 +66,25 @@ def test_a_value_typed_fast_is_the_prompts_not_input_datas(drive, how):
     drive(scenario())
 
 
+def test_enter_typed_ahead_with_the_value_submits_it(drive):
+    """`14in` and Enter in one burst: the Enter that reached the sheet before
+    the prompt had the focus submits the answer (it was dropped: the submit
+    coroutine was never awaited)."""
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=LARGE) as pilot:
+            await choose_cell(pilot, ARM, 4)
+            burst(app, "14in")
+            app.post_message(events.Key("enter", "\r"))
+            await pilot.pause()
+            await pilot.pause()
+            assert not app.screen.query_one("#answer").display  # answered
+            assert app.figure.value(GIRTH, "right_upper_arm", 2) == pytest.approx(35.56)
+
+    drive(scenario())
+
+
 @pytest.mark.parametrize("how", ["burst", "paste"])
 def test_an_angle_in_radians_does_not_open_the_query_screen(drive, how):
     async def scenario():

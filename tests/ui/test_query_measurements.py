@@ -11,8 +11,8 @@ from _paths import ANSUR
 from test_query_screen import choose, message, popup_labels, settle, summary
 
 from sass_tui.ui.app import SassApp
-from sass_tui.ui.query_builder import MenuSearch
-from sass_tui.ui.query_screen import ListSheet, QueryPopup
+from sass_tui.ui.query_builder import MenuSearch, QueryPopup
+from sass_tui.ui.query_screen import ListSheet
 
 SIZE = (120, 40)
 

@@ -14,14 +14,13 @@ from sass_tui.db.schema import connect
 from sass_tui.model.figfile import read_fig
 from sass_tui.model.names import GIRTH, row_index
 from sass_tui.ui.app import SassApp
-from sass_tui.ui.query_builder import VALUE_PROMPT
+from sass_tui.ui.query_builder import VALUE_PROMPT, QueryBuilderScreen, QueryPopup
 from sass_tui.ui.query_screen import (
     BUILD_PROMPT,
     COMPLETE,
     NO_DATA,
     WAIT,
     ListSheet,
-    QueryPopup,
     QueryScreen,
     SummaryPanel,
 )
@@ -217,9 +216,12 @@ def test_previous_menu_and_abort(drive, db):
             assert screen.builder.text.startswith("joint_limit.")
             await choose(pilot, "Previous Menu")  # erases the joint
             assert screen.builder.text == "joint_limit"
-            assert screen.popup.border_title == "Joint Limit Menu"
+            assert app.screen.query_one(QueryPopup).border_title == "Joint Limit Menu"
             await pilot.press("escape")  # Escape is Previous Menu too
-            assert screen.builder.text == "" and screen.popup.border_title == "Anthropometric Group"
+            assert (
+                screen.builder.text == ""
+                and app.screen.query_one(QueryPopup).border_title == "Anthropometric Group"
+            )
             await choose(pilot, "Girth")
             await choose(pilot, "Neck")
             await choose(pilot, "X Axis")
@@ -230,17 +232,19 @@ def test_previous_menu_and_abort(drive, db):
             assert VALUE_PROMPT in message(app) and screen.builder.text == "girth.neck.x < "
             await type_answer(pilot, "5")
             await choose(pilot, "Or")
-            assert screen.popup.border_title == "Query Menu"
+            assert app.screen.query_one(QueryPopup).border_title == "Query Menu"
             assert "Previous Menu" not in popup_labels(app)
             await choose(pilot, "Abort")
-            assert not screen.popup.display and screen.builder is None
+            assert not isinstance(app.screen, QueryBuilderScreen) and screen.builder is None
             assert "aborted" in message(app)
             assert "Total Data in Query List: 0" in summary(app)  # nothing was run
 
             # Re_execute with no previous query says so and keeps the menu open.
             await pilot.press("d", "b")
             await choose(pilot, "Re_execute")
-            assert "no previous query" in message(app) and screen.popup.display
+            assert "no previous query" in message(app) and isinstance(
+                app.screen, QueryBuilderScreen
+            )
             await choose(pilot, "Abort")
 
     drive(scenario())
@@ -263,7 +267,7 @@ def test_query_text_edited_before_done_then_re_executed(drive, db):
             assert answer.display and answer.value == "gender = male"
             await pilot.press(*["backspace"] * 4, *"female AND stature > 165 cm", "enter")
             assert screen.builder.text == "gender = female AND stature > 165 cm"
-            assert screen.popup.border_title == "Conjunction Menu"
+            assert app.screen.query_one(QueryPopup).border_title == "Conjunction Menu"
             await choose(pilot, "Done")
             await settle(pilot)
             assert message(app) == f"{COMPLETE} {expected} people found."
@@ -297,7 +301,7 @@ def test_constraint_that_is_not_a_number(drive, db):
             assert "'70 kg' is not a valid constraint" in message(app)
             await type_answer(pilot, "70 in")
             assert screen.builder.text == "stature > 70 in"
-            assert screen.popup.border_title == "Conjunction Menu"
+            assert app.screen.query_one(QueryPopup).border_title == "Conjunction Menu"
 
     drive(scenario())
 
@@ -405,5 +409,67 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
             screen.start_query("source = test AND handedness = left AND stature < 161 cm")
             await settle(pilot)
             assert "NEW_PERSON" in [r["name"] for r in screen.query_one(ListSheet).rows]
+
+    drive(scenario())
+
+
+def test_builder_is_a_modal_screen_that_owns_its_keys(drive, db):
+    """While the pop-up builder is up, its screen has the keys: a query-screen
+    command key (l: Display Selected List, n: Next Page) does nothing to the
+    query screen below; the builder's result comes back when it closes."""
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            screen = await open_query_screen(pilot)
+            await pilot.press("d", "b")
+            assert isinstance(app.screen, QueryBuilderScreen)
+            await pilot.press("l", "n")
+            assert screen.which == "query" and isinstance(app.screen, QueryBuilderScreen)
+            assert app.screen.query_one(QueryPopup).border_title == "Query Menu"
+            await pilot.press("escape")  # Abort: the query screen hears the result
+            assert app.screen is screen and screen.builder is None
+            assert "aborted" in message(app)
+
+    drive(scenario())
+
+
+def test_enters_in_a_burst_on_abort_close_the_builder_once(drive, db):
+    """Enter typed several times at once on Abort: the builder closes once,
+    the query screen stays (the extra Enters used to pop it, then crash)."""
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            screen = await open_query_screen(pilot)
+            await pilot.press("d", "b")
+            await pilot.press(*["down"] * popup_labels(app).index("Abort"))
+            for _ in range(3):
+                app.post_message(events.Key("enter", "\r"))
+            await pilot.pause()
+            await pilot.pause()
+            assert app.screen is screen and "aborted" in message(app)
+
+    drive(scenario())
+
+
+def test_enters_in_a_burst_in_the_more_menu_choose_once(drive, db):
+    """Enter typed several times at once in the More Menu: one choice (Next),
+    the spreadsheet stays (the extra Enters popped it, then crashed)."""
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            screen = await open_query_screen(pilot)
+            screen.start_query("stature > 0")
+            await settle(pilot)
+            await pilot.press("a", "e", "v", "x")  # Select All, Exit, Disp. Indv., Disp. More
+            await pilot.press("down", "down", "down")  # Next
+            for _ in range(3):
+                app.post_message(events.Key("enter", "\r"))
+            await pilot.pause()
+            await pilot.pause()
+            assert app.screen is app.spreadsheet
+            assert message(app).startswith("Person 2 of ")
 
     drive(scenario())
