@@ -41,6 +41,61 @@ from typing import (
 )
 
 
+class _LazyLogger:
+    """lark's logger ("lark", level CRITICAL), made when first used."""
+
+    def __getattr__(self, name):
+        import logging
+
+        real = logging.getLogger("lark")
+        if not real.handlers:
+            real.addHandler(logging.StreamHandler())
+            real.setLevel(logging.CRITICAL)
+        return getattr(real, name)
+
+
+def _lazy(module):
+    """`module`, imported when first used."""
+    return __import__(module)
+
+
+def _frozen_record(*fields):
+    """What @dataclass(frozen=True) makes of a class with `fields`, without
+    importing dataclasses: __init__ (then __post_init__), __eq__, __hash__,
+    __repr__, and no assignment."""
+
+    def decorate(cls):
+        def __init__(self, *args):
+            for name, value in zip(fields, args, strict=True):
+                object.__setattr__(self, name, value)
+            self.__post_init__()
+
+        def __setattr__(self, name, value):
+            raise AttributeError(f"cannot assign to field {name!r}")
+
+        def _values(self):
+            return tuple(getattr(self, name) for name in fields)
+
+        def __eq__(self, other):
+            if other.__class__ is not self.__class__:
+                return NotImplemented
+            return _values(self) == _values(other)
+
+        def __repr__(self):
+            inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in fields)
+            return f"{cls.__qualname__}({inner})"
+
+        cls.__init__ = __init__
+        cls.__setattr__ = __setattr__
+        cls.__delattr__ = __setattr__
+        cls.__eq__ = __eq__
+        cls.__hash__ = lambda self: hash(_values(self))
+        cls.__repr__ = __repr__
+        return cls
+
+    return decorate
+
+
 class LarkError(Exception):
     pass
 
@@ -274,17 +329,13 @@ class MissingVariableError(LarkError):
 
 
 import sys, re
-import logging
-from dataclasses import dataclass
 from typing import Generic, AnyStr
 
-logger: logging.Logger = logging.getLogger("lark")
-logger.addHandler(logging.StreamHandler())
+logger = _LazyLogger()
 ##
 
 ##
 
-logger.setLevel(logging.CRITICAL)
 
 
 NO_VALUE = object()
@@ -437,7 +488,7 @@ def get_regexp_width(expr: str) -> Union[Tuple[int, int], List[int]]:
                 return 0, int(MAXWIDTH)
 
 
-@dataclass(frozen=True)
+@_frozen_record("text", "start", "end")
 class TextSlice(Generic[AnyStr]):
     #--
     text: AnyStr
@@ -610,7 +661,6 @@ class Tree(Generic[_Leaf_T]):
 
 
 from functools import wraps, update_wrapper
-from inspect import getmembers, getmro
 
 _Return_T = TypeVar('_Return_T')
 _Return_V = TypeVar('_Return_V')
@@ -636,6 +686,7 @@ class _Decoratable:
 
     @classmethod
     def _apply_v_args(cls, visit_wrapper):
+        from inspect import getmembers, getmro
         mro = getmro(cls)
         assert mro[0] is cls
         libmembers = {name for _cls in mro[1:] for name, _ in getmembers(_cls)}
@@ -3168,9 +3219,9 @@ class Lark(Serialize):
                         for name in (set(options) - _LOAD_ALLOWED_OPTIONS):
                             del options[name]
                         file_sha256 = f.readline().rstrip(b'\n')
-                        cached_used_files = pickle.load(f)
+                        cached_used_files = _lazy('pickle').load(f)
                         if file_sha256 == cache_sha256.encode('utf8') and verify_used_files(cached_used_files):
-                            cached_parser_data = pickle.load(f)
+                            cached_parser_data = _lazy('pickle').load(f)
                             self._load(cached_parser_data, **options)
                             return
                 except FileNotFoundError:
@@ -3290,7 +3341,7 @@ class Lark(Serialize):
                 with FS.open(cache_fn, 'wb') as f:
                     assert cache_sha256 is not None
                     f.write(cache_sha256.encode('utf8') + b'\n')
-                    pickle.dump(used_files, f)
+                    _lazy('pickle').dump(used_files, f)
                     self.save(f, _LOAD_ALLOWED_OPTIONS)
             except IOError as e:
                 logger.exception("Failed to save Lark to cache: %r.", cache_fn, e)
@@ -3340,7 +3391,7 @@ class Lark(Serialize):
         data, m = self.memo_serialize([TerminalDef, Rule])
         if exclude_options:
             data["options"] = {n: v for n, v in data["options"].items() if n not in exclude_options}
-        pickle.dump({'data': data, 'memo': m}, f, protocol=pickle.HIGHEST_PROTOCOL)
+        _lazy('pickle').dump({'data': data, 'memo': m}, f, protocol=_lazy('pickle').HIGHEST_PROTOCOL)
 
     @classmethod
     def load(cls: Type[_T], f) -> _T:
@@ -3362,7 +3413,7 @@ class Lark(Serialize):
         if isinstance(f, dict):
             d = f
         else:
-            d = pickle.load(f)
+            d = _lazy('pickle').load(f)
         memo_json = d['memo']
         data = d['data']
 
@@ -3564,9 +3615,8 @@ class PythonIndenter(Indenter):
     tab_len = 8
 
 
-import pickle, zlib, base64
 DATA = (
-{'parser': {'lexer_conf': {'terminals': [{'@': 0}, {'@': 1}, {'@': 2}, {'@': 3}, {'@': 4}, {'@': 5}, {'@': 6}, {'@': 7}, {'@': 8}, {'@': 9}, {'@': 10}], 'ignore': ['WS'], 'g_regex_flags': 0, 'use_bytes': False, 'lexer_type': 'contextual', '__type__': 'LexerConf'}, 'parser_conf': {'rules': [{'@': 11}, {'@': 12}, {'@': 13}, {'@': 14}, {'@': 15}, {'@': 16}, {'@': 17}, {'@': 18}, {'@': 19}, {'@': 20}, {'@': 21}, {'@': 22}, {'@': 23}, {'@': 24}, {'@': 25}, {'@': 26}, {'@': 27}, {'@': 28}, {'@': 29}, {'@': 30}], 'start': ['start'], 'parser_type': 'lalr', '__type__': 'ParserConf'}, 'parser': {'tokens': {0: 'NAME', 1: 'or_expr', 2: 'atom', 3: 'LPAR', 4: 'field', 5: 'and_expr', 6: 'comparison', 7: '__or_expr_star_0', 8: '_OR', 9: 'RPAR', 10: '$END', 11: 'NUMBER', 12: 'STRING', 13: 'value', 14: '_AND', 15: 'UNIT', 16: 'DOT', 17: '__field_star_2', 18: 'OP', 19: '__and_expr_star_1', 20: 'start'}, 'states': {0: {0: (0, 23)}, 1: {0: (0, 10), 1: (0, 17), 2: (0, 21), 3: (0, 1), 4: (0, 20), 5: (0, 2), 6: (0, 8)}, 2: {7: (0, 15), 8: (0, 12), 9: (1, {'@': 13}), 10: (1, {'@': 13})}, 3: {11: (0, 7), 0: (0, 18), 12: (0, 26), 13: (0, 30)}, 4: {0: (0, 10), 2: (0, 9), 3: (0, 1), 4: (0, 20), 6: (0, 8)}, 5: {8: (1, {'@': 21}), 9: (1, {'@': 21}), 10: (1, {'@': 21}), 14: (1, {'@': 21})}, 6: {14: (0, 4), 8: (1, {'@': 14}), 9: (1, {'@': 14}), 10: (1, {'@': 14})}, 7: {15: (0, 5), 8: (1, {'@': 22}), 9: (1, {'@': 22}), 10: (1, {'@': 22}), 14: (1, {'@': 22})}, 8: {8: (1, {'@': 17}), 14: (1, {'@': 17}), 9: (1, {'@': 17}), 10: (1, {'@': 17})}, 9: {10: (1, {'@': 28}), 9: (1, {'@': 28}), 8: (1, {'@': 28}), 14: (1, {'@': 28})}, 10: {16: (0, 19), 17: (0, 24), 18: (1, {'@': 20})}, 11: {8: (1, {'@': 16}), 14: (1, {'@': 16}), 9: (1, {'@': 16}), 10: (1, {'@': 16})}, 12: {0: (0, 10), 5: (0, 28), 2: (0, 21), 3: (0, 1), 4: (0, 20), 6: (0, 8)}, 13: {10: (1, {'@': 11})}, 14: {8: (1, {'@': 26}), 10: (1, {'@': 26}), 9: (1, {'@': 26})}, 15: {8: (0, 25), 9: (1, {'@': 12}), 10: (1, {'@': 12})}, 16: {18: (1, {'@': 29}), 16: (1, {'@': 29})}, 17: {9: (0, 11)}, 18: {8: (1, {'@': 23}), 9: (1, {'@': 23}), 10: (1, {'@': 23}), 14: (1, {'@': 23})}, 19: {0: (0, 16)}, 20: {18: (0, 3)}, 21: {19: (0, 6), 14: (0, 22), 8: (1, {'@': 15}), 9: (1, {'@': 15}), 10: (1, {'@': 15})}, 22: {0: (0, 10), 3: (0, 1), 4: (0, 20), 6: (0, 8), 2: (0, 27)}, 23: {18: (1, {'@': 30}), 16: (1, {'@': 30})}, 24: {16: (0, 0), 18: (1, {'@': 19})}, 25: {0: (0, 10), 2: (0, 21), 3: (0, 1), 4: (0, 20), 5: (0, 14), 6: (0, 8)}, 26: {8: (1, {'@': 24}), 9: (1, {'@': 24}), 10: (1, {'@': 24}), 14: (1, {'@': 24})}, 27: {10: (1, {'@': 27}), 9: (1, {'@': 27}), 8: (1, {'@': 27}), 14: (1, {'@': 27})}, 28: {8: (1, {'@': 25}), 10: (1, {'@': 25}), 9: (1, {'@': 25})}, 29: {20: (0, 31), 0: (0, 10), 2: (0, 21), 3: (0, 1), 4: (0, 20), 5: (0, 2), 6: (0, 8), 1: (0, 13)}, 30: {8: (1, {'@': 18}), 14: (1, {'@': 18}), 9: (1, {'@': 18}), 10: (1, {'@': 18})}, 31: {}}, 'start_states': {'start': 29}, 'end_states': {'start': 31}}, '__type__': 'ParsingFrontend'}, 'rules': [{'@': 11}, {'@': 12}, {'@': 13}, {'@': 14}, {'@': 15}, {'@': 16}, {'@': 17}, {'@': 18}, {'@': 19}, {'@': 20}, {'@': 21}, {'@': 22}, {'@': 23}, {'@': 24}, {'@': 25}, {'@': 26}, {'@': 27}, {'@': 28}, {'@': 29}, {'@': 30}], 'options': {'debug': False, 'strict': False, 'keep_all_tokens': False, 'tree_class': None, 'cache': False, 'cache_grammar': False, 'postlex': None, 'parser': 'lalr', 'lexer': 'contextual', 'transformer': None, 'start': ['start'], 'priority': 'normal', 'ambiguity': 'auto', 'regex': False, 'propagate_positions': True, 'lexer_callbacks': {}, 'maybe_placeholders': False, 'edit_terminals': None, 'g_regex_flags': 0, 'use_bytes': False, 'ordered_sets': True, 'import_paths': [], 'source_path': None, '_plugins': {}}, '__type__': 'Lark'}
+{'parser': {'lexer_conf': {'terminals': [{'@': 0}, {'@': 1}, {'@': 2}, {'@': 3}, {'@': 4}, {'@': 5}, {'@': 6}, {'@': 7}, {'@': 8}, {'@': 9}, {'@': 10}], 'ignore': ['WS'], 'g_regex_flags': 0, 'use_bytes': False, 'lexer_type': 'contextual', '__type__': 'LexerConf'}, 'parser_conf': {'rules': [{'@': 11}, {'@': 12}, {'@': 13}, {'@': 14}, {'@': 15}, {'@': 16}, {'@': 17}, {'@': 18}, {'@': 19}, {'@': 20}, {'@': 21}, {'@': 22}, {'@': 23}, {'@': 24}, {'@': 25}, {'@': 26}, {'@': 27}, {'@': 28}, {'@': 29}, {'@': 30}], 'start': ['start'], 'parser_type': 'lalr', '__type__': 'ParserConf'}, 'parser': {'tokens': {0: 'OP', 1: 'DOT', 2: 'NUMBER', 3: 'STRING', 4: 'NAME', 5: 'value', 6: 'and_expr', 7: 'atom', 8: 'start', 9: 'or_expr', 10: 'field', 11: 'LPAR', 12: 'comparison', 13: '_AND', 14: 'RPAR', 15: '$END', 16: '_OR', 17: 'UNIT', 18: '__or_expr_star_0', 19: '__and_expr_star_1', 20: '__field_star_2'}, 'states': {0: {0: (1, {'@': 30}), 1: (1, {'@': 30})}, 1: {2: (0, 10), 3: (0, 6), 4: (0, 31), 5: (0, 21)}, 2: {6: (0, 20), 7: (0, 22), 8: (0, 5), 4: (0, 23), 9: (0, 8), 10: (0, 24), 11: (0, 17), 12: (0, 27)}, 3: {7: (0, 22), 4: (0, 23), 10: (0, 24), 11: (0, 17), 12: (0, 27), 6: (0, 12)}, 4: {13: (1, {'@': 21}), 14: (1, {'@': 21}), 15: (1, {'@': 21}), 16: (1, {'@': 21})}, 5: {}, 6: {13: (1, {'@': 24}), 14: (1, {'@': 24}), 15: (1, {'@': 24}), 16: (1, {'@': 24})}, 7: {4: (0, 0)}, 8: {15: (1, {'@': 11})}, 9: {13: (1, {'@': 28}), 15: (1, {'@': 28}), 14: (1, {'@': 28}), 16: (1, {'@': 28})}, 10: {17: (0, 4), 13: (1, {'@': 22}), 14: (1, {'@': 22}), 15: (1, {'@': 22}), 16: (1, {'@': 22})}, 11: {13: (0, 29), 15: (1, {'@': 14}), 16: (1, {'@': 14}), 14: (1, {'@': 14})}, 12: {15: (1, {'@': 26}), 14: (1, {'@': 26}), 16: (1, {'@': 26})}, 13: {4: (0, 26)}, 14: {1: (0, 7), 0: (1, {'@': 19})}, 15: {14: (0, 19)}, 16: {13: (1, {'@': 27}), 15: (1, {'@': 27}), 14: (1, {'@': 27}), 16: (1, {'@': 27})}, 17: {6: (0, 20), 7: (0, 22), 4: (0, 23), 9: (0, 15), 10: (0, 24), 11: (0, 17), 12: (0, 27)}, 18: {7: (0, 22), 4: (0, 23), 10: (0, 24), 6: (0, 30), 11: (0, 17), 12: (0, 27)}, 19: {13: (1, {'@': 16}), 15: (1, {'@': 16}), 16: (1, {'@': 16}), 14: (1, {'@': 16})}, 20: {18: (0, 25), 16: (0, 18), 15: (1, {'@': 13}), 14: (1, {'@': 13})}, 21: {13: (1, {'@': 18}), 15: (1, {'@': 18}), 16: (1, {'@': 18}), 14: (1, {'@': 18})}, 22: {19: (0, 11), 13: (0, 28), 15: (1, {'@': 15}), 16: (1, {'@': 15}), 14: (1, {'@': 15})}, 23: {20: (0, 14), 1: (0, 13), 0: (1, {'@': 20})}, 24: {0: (0, 1)}, 25: {16: (0, 3), 15: (1, {'@': 12}), 14: (1, {'@': 12})}, 26: {0: (1, {'@': 29}), 1: (1, {'@': 29})}, 27: {13: (1, {'@': 17}), 15: (1, {'@': 17}), 16: (1, {'@': 17}), 14: (1, {'@': 17})}, 28: {4: (0, 23), 7: (0, 16), 10: (0, 24), 11: (0, 17), 12: (0, 27)}, 29: {7: (0, 9), 4: (0, 23), 10: (0, 24), 11: (0, 17), 12: (0, 27)}, 30: {15: (1, {'@': 25}), 14: (1, {'@': 25}), 16: (1, {'@': 25})}, 31: {13: (1, {'@': 23}), 14: (1, {'@': 23}), 15: (1, {'@': 23}), 16: (1, {'@': 23})}}, 'start_states': {'start': 2}, 'end_states': {'start': 5}}, '__type__': 'ParsingFrontend'}, 'rules': [{'@': 11}, {'@': 12}, {'@': 13}, {'@': 14}, {'@': 15}, {'@': 16}, {'@': 17}, {'@': 18}, {'@': 19}, {'@': 20}, {'@': 21}, {'@': 22}, {'@': 23}, {'@': 24}, {'@': 25}, {'@': 26}, {'@': 27}, {'@': 28}, {'@': 29}, {'@': 30}], 'options': {'debug': False, 'strict': False, 'keep_all_tokens': False, 'tree_class': None, 'cache': False, 'cache_grammar': False, 'postlex': None, 'parser': 'lalr', 'lexer': 'contextual', 'transformer': None, 'start': ['start'], 'priority': 'normal', 'ambiguity': 'auto', 'regex': False, 'propagate_positions': True, 'lexer_callbacks': {}, 'maybe_placeholders': False, 'edit_terminals': None, 'g_regex_flags': 0, 'use_bytes': False, 'ordered_sets': True, 'import_paths': [], 'source_path': None, '_plugins': {}}, '__type__': 'Lark'}
 )
 MEMO = (
 {0: {'name': 'WS', 'pattern': {'value': '(?:[ \t\x0c\r\n])+', 'flags': [], 'raw': None, '_width': [1, 18446744073709551616], '__type__': 'PatternRE'}, 'priority': 0, '__type__': 'TerminalDef'}, 1: {'name': '_OR', 'pattern': {'value': 'or\\b', 'flags': ['i'], 'raw': '/or\\b/i', '_width': [2, 2], '__type__': 'PatternRE'}, 'priority': 3, '__type__': 'TerminalDef'}, 2: {'name': '_AND', 'pattern': {'value': 'and\\b', 'flags': ['i'], 'raw': '/and\\b/i', '_width': [3, 3], '__type__': 'PatternRE'}, 'priority': 3, '__type__': 'TerminalDef'}, 3: {'name': 'OP', 'pattern': {'value': '(?:<=|>=|!=|<>|<|>|=|≤|≥|≠)', 'flags': [], 'raw': None, '_width': [1, 2], '__type__': 'PatternRE'}, 'priority': 0, '__type__': 'TerminalDef'}, 4: {'name': 'NAME', 'pattern': {'value': '[A-Za-z_][A-Za-z0-9_]*', 'flags': [], 'raw': '/[A-Za-z_][A-Za-z0-9_]*/', '_width': [1, 18446744073709551616], '__type__': 'PatternRE'}, 'priority': 2, '__type__': 'TerminalDef'}, 5: {'name': 'STRING', 'pattern': {'value': '\'[^\']*\'|"[^"]*"', 'flags': [], 'raw': '/\'[^\']*\'|"[^"]*"/', '_width': [2, 18446744073709551616], '__type__': 'PatternRE'}, 'priority': 0, '__type__': 'TerminalDef'}, 6: {'name': 'NUMBER', 'pattern': {'value': '[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?', 'flags': [], 'raw': '/[-+]?(\\d+\\.?\\d*|\\.\\d+)([eE][-+]?\\d+)?/', '_width': [1, 18446744073709551616], '__type__': 'PatternRE'}, 'priority': 0, '__type__': 'TerminalDef'}, 7: {'name': 'UNIT', 'pattern': {'value': '(ft|lbf?|N|n)[-·*]?(lbf?|lbs|m|ft)\\b|deg\\/s|rad\\/s|°\\/s|[A-Za-z°"]+', 'flags': [], 'raw': '/(ft|lbf?|N|n)[-·*]?(lbf?|lbs|m|ft)\\b|deg\\/s|rad\\/s|°\\/s|[A-Za-z°"]+/', '_width': [1, 18446744073709551616], '__type__': 'PatternRE'}, 'priority': 0, '__type__': 'TerminalDef'}, 8: {'name': 'LPAR', 'pattern': {'value': '(', 'flags': [], 'raw': '"("', '__type__': 'PatternStr'}, 'priority': 0, '__type__': 'TerminalDef'}, 9: {'name': 'RPAR', 'pattern': {'value': ')', 'flags': [], 'raw': '")"', '__type__': 'PatternStr'}, 'priority': 0, '__type__': 'TerminalDef'}, 10: {'name': 'DOT', 'pattern': {'value': '.', 'flags': [], 'raw': '"."', '__type__': 'PatternStr'}, 'priority': 0, '__type__': 'TerminalDef'}, 11: {'origin': {'name': 'start', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'or_expr', '__type__': 'NonTerminal'}], 'order': 0, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': True, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 12: {'origin': {'name': 'or_expr', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'and_expr', '__type__': 'NonTerminal'}, {'name': '__or_expr_star_0', '__type__': 'NonTerminal'}], 'order': 0, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': True, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 13: {'origin': {'name': 'or_expr', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'and_expr', '__type__': 'NonTerminal'}], 'order': 1, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': True, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 14: {'origin': {'name': 'and_expr', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'atom', '__type__': 'NonTerminal'}, {'name': '__and_expr_star_1', '__type__': 'NonTerminal'}], 'order': 0, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': True, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 15: {'origin': {'name': 'and_expr', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'atom', '__type__': 'NonTerminal'}], 'order': 1, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': True, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 16: {'origin': {'name': 'atom', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'LPAR', 'filter_out': True, '__type__': 'Terminal'}, {'name': 'or_expr', '__type__': 'NonTerminal'}, {'name': 'RPAR', 'filter_out': True, '__type__': 'Terminal'}], 'order': 0, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': True, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 17: {'origin': {'name': 'atom', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'comparison', '__type__': 'NonTerminal'}], 'order': 1, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': True, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 18: {'origin': {'name': 'comparison', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'field', '__type__': 'NonTerminal'}, {'name': 'OP', 'filter_out': False, '__type__': 'Terminal'}, {'name': 'value', '__type__': 'NonTerminal'}], 'order': 0, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 19: {'origin': {'name': 'field', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'NAME', 'filter_out': False, '__type__': 'Terminal'}, {'name': '__field_star_2', '__type__': 'NonTerminal'}], 'order': 0, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 20: {'origin': {'name': 'field', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'NAME', 'filter_out': False, '__type__': 'Terminal'}], 'order': 1, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 21: {'origin': {'name': 'value', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'NUMBER', 'filter_out': False, '__type__': 'Terminal'}, {'name': 'UNIT', 'filter_out': False, '__type__': 'Terminal'}], 'order': 0, 'alias': 'number', 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 22: {'origin': {'name': 'value', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'NUMBER', 'filter_out': False, '__type__': 'Terminal'}], 'order': 1, 'alias': 'number', 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 23: {'origin': {'name': 'value', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'NAME', 'filter_out': False, '__type__': 'Terminal'}], 'order': 2, 'alias': 'word', 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 24: {'origin': {'name': 'value', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'STRING', 'filter_out': False, '__type__': 'Terminal'}], 'order': 3, 'alias': 'quoted', 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 25: {'origin': {'name': '__or_expr_star_0', '__type__': 'NonTerminal'}, 'expansion': [{'name': '_OR', 'filter_out': True, '__type__': 'Terminal'}, {'name': 'and_expr', '__type__': 'NonTerminal'}], 'order': 0, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 26: {'origin': {'name': '__or_expr_star_0', '__type__': 'NonTerminal'}, 'expansion': [{'name': '__or_expr_star_0', '__type__': 'NonTerminal'}, {'name': '_OR', 'filter_out': True, '__type__': 'Terminal'}, {'name': 'and_expr', '__type__': 'NonTerminal'}], 'order': 1, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 27: {'origin': {'name': '__and_expr_star_1', '__type__': 'NonTerminal'}, 'expansion': [{'name': '_AND', 'filter_out': True, '__type__': 'Terminal'}, {'name': 'atom', '__type__': 'NonTerminal'}], 'order': 0, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 28: {'origin': {'name': '__and_expr_star_1', '__type__': 'NonTerminal'}, 'expansion': [{'name': '__and_expr_star_1', '__type__': 'NonTerminal'}, {'name': '_AND', 'filter_out': True, '__type__': 'Terminal'}, {'name': 'atom', '__type__': 'NonTerminal'}], 'order': 1, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 29: {'origin': {'name': '__field_star_2', '__type__': 'NonTerminal'}, 'expansion': [{'name': 'DOT', 'filter_out': True, '__type__': 'Terminal'}, {'name': 'NAME', 'filter_out': False, '__type__': 'Terminal'}], 'order': 0, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}, 30: {'origin': {'name': '__field_star_2', '__type__': 'NonTerminal'}, 'expansion': [{'name': '__field_star_2', '__type__': 'NonTerminal'}, {'name': 'DOT', 'filter_out': True, '__type__': 'Terminal'}, {'name': 'NAME', 'filter_out': False, '__type__': 'Terminal'}], 'order': 1, 'alias': None, 'options': {'keep_all_tokens': False, 'expand1': False, 'priority': None, 'template_source': None, 'empty_indices': (), '__type__': 'RuleOptions'}, '__type__': 'Rule'}}
