@@ -44,3 +44,12 @@ def printable(text: object) -> str:
     if _CONTROL.search(string) is None:
         return string
     return _CONTROL.sub(_escape, string)
+
+
+def is_printable_lines(text: str, lines: int) -> bool:
+    """Whether `text` is `lines` lines, each ending in a newline, that
+    printable() would leave as they are: one check for many values (a newline
+    inside a value makes one line too many)."""
+    if text.count("\n") != lines:
+        return False
+    return _CONTROL.search(text.replace("\n", "")) is None
