@@ -64,11 +64,18 @@ def test_the_command_line_starts_without_its_heavy_imports():
     assert _run(code) == ""
 
 
-def _imported_while_running(argv: list[str], cwd) -> set[str]:
+HEAVY = ("lark", "pint", "textual", "numpy")
+# What `sass query` must not import either (issue 16: <= 5x a bare interpreter):
+# the generated parser's logging, dataclasses/inspect and pickle, and shutil
+# (argparse's help formatter imports it for the terminal's width).
+QUERY_NEEDS_NONE_OF = (*HEAVY, "logging", "dataclasses", "inspect", "pickle", "shutil")
+
+
+def _imported_while_running(argv: list[str], cwd, heavy: tuple[str, ...] = HEAVY) -> set[str]:
     code = (
         "import sys\nfrom sass_tui.cli import main\n"
         f"status = main({argv!r})\n"
-        "heavy = ('lark', 'pint', 'textual', 'numpy')\n"
+        f"heavy = {heavy!r}\n"
         "print(status, ','.join(m for m in heavy if m in sys.modules), file=sys.stderr)\n"
     )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=cwd)
@@ -88,9 +95,14 @@ def test_a_query_in_inches_does_not_import_pint(tmp_path):
         ["--db", str(db), "query", "--format", "csv", "stature > 70 in"], tmp_path
     )
     assert "pint" not in imported and "textual" not in imported
+    # The table (the default format), a unit converted, parentheses, OR, a group row:
+    # the parser, the compiler, the database and the table writer all ran.
+    query = "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"
+    argv = ["--db", str(db), "query", query]
+    assert _imported_while_running(argv, tmp_path, QUERY_NEEDS_NONE_OF) == set()
 
 
 def test_sass_fig_does_not_import_pint(tmp_path):
     imported = _imported_while_running(["fig", "-o", str(tmp_path / "X.fig")], tmp_path)
-    assert "pint" not in imported and "textual" not in imported
+    assert imported == {"numpy"}  # no pint, no lark, no Textual
     assert (tmp_path / "X.fig").is_file()
