@@ -106,3 +106,21 @@ def test_sass_fig_does_not_import_pint(tmp_path):
     imported = _imported_while_running(["fig", "-o", str(tmp_path / "X.fig")], tmp_path)
     assert imported == {"numpy"}  # no pint, no lark, no Textual
     assert (tmp_path / "X.fig").is_file()
+
+
+def test_only_the_verb_being_run_is_built():
+    # Issue 16: each verb's parser costs start-up time; `sass query` builds only
+    # its own, while `sass --help` (and an unknown verb's error) lists them all.
+    import argparse
+
+    from sass_tui.cli import VERBS, build_parser
+
+    def verbs(argv: list[str]) -> set[str]:
+        parser = build_parser(argv)
+        (commands,) = (a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+        return set(commands.choices)
+
+    assert verbs(["query", "gender = male"]) == {"query"}
+    assert verbs(["--db", "query", "fig", "-o", "X.fig"]) == {"fig"}
+    for argv in ([], ["-h", "query"], ["--version", "fig"], ["nosuch"]):
+        assert len(verbs(argv)) == len(VERBS), argv

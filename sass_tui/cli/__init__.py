@@ -32,9 +32,10 @@ VERBS = (fig, export, strength, query, person, population, predict, fit, family,
 
 
 def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
-    """The parser; given the command line, only the verb it names gets its
-    options built (the others are listed with their help: `sass --help` is
-    whole), since argparse costs start-up time for every option."""
+    """The parser; given the command line, only the verb it names is built
+    (with no verb, or before -h, every verb is listed with its help and none
+    built: `sass --help` is whole), since argparse costs start-up time for
+    every parser and option."""
     parser = _Parser(
         prog="sass",
         description="Spreadsheet Anthropometry Scaling System. "
@@ -48,17 +49,25 @@ def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     )
     commands = cast(SubParsers, parser.add_subparsers(dest="command", metavar="COMMAND"))
     chosen = None if argv is None else _verb_named(argv)
-    for verb in VERBS:
-        verb.register(
-            commands if chosen in (None, verb.__name__.rsplit(".", 1)[1]) else _NamesOnly(commands)
-        )
+    names = [verb.__name__.rsplit(".", 1)[1] for verb in VERBS]
+    for verb, name in zip(VERBS, names, strict=True):
+        if argv is None or chosen == name:
+            verb.register(commands)
+        elif chosen not in names:  # sass --help, the TUI, or an unknown verb's error
+            verb.register(_NamesOnly(commands))
+        # else another verb runs: this one is not built at all (each parser
+        # argparse makes costs ~0.2 ms, most of it gettext looking for
+        # translations).
     return parser
 
 
 def _verb_named(argv: list[str]) -> str | None:
-    """The verb on a command line (the first word that is not an option or --db's value)."""
+    """The verb on a command line (the first word that is not an option or
+    --db's value); None if none, or if help or the version is asked first."""
     words = iter(argv)
     for word in words:
+        if word in ("-h", "--help", "--version"):
+            return None
         if word == "--db":
             next(words, None)
         elif not word.startswith("-"):
