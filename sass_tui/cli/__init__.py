@@ -11,24 +11,32 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+from types import ModuleType
 from typing import Any, cast
 
-from sass_tui.cli import (
-    db,
-    export,
-    family,
-    fig,
-    fit,
-    person,
-    population,
-    predict,
-    query,
-    serve,
-    strength,
-)
 from sass_tui.cli.options import DB_HELP, SubParsers
 
-VERBS = (fig, export, strength, query, person, population, predict, fit, family, db, serve)
+# The verbs in `sass --help`'s order, each the module sass_tui.cli.VERB,
+# imported when its parser is built or listed (a verb run imports only its own).
+VERBS = (
+    "fig",
+    "export",
+    "strength",
+    "query",
+    "person",
+    "population",
+    "predict",
+    "fit",
+    "family",
+    "db",
+    "serve",
+)
+
+
+def _verb_module(name: str) -> ModuleType:
+    module = f"sass_tui.cli.{name}"
+    __import__(module)
+    return sys.modules[module]
 
 
 def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
@@ -49,12 +57,11 @@ def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     )
     commands = cast(SubParsers, parser.add_subparsers(dest="command", metavar="COMMAND"))
     chosen = None if argv is None else _verb_named(argv)
-    names = [verb.__name__.rsplit(".", 1)[1] for verb in VERBS]
-    for verb, name in zip(VERBS, names, strict=True):
+    for name in VERBS:
         if argv is None or chosen == name:
-            verb.register(commands)
-        elif chosen not in names:  # sass --help, the TUI, or an unknown verb's error
-            verb.register(_NamesOnly(commands))
+            _verb_module(name).register(commands)
+        elif chosen not in VERBS:  # sass --help, the TUI, or an unknown verb's error
+            _verb_module(name).register(_NamesOnly(commands))
         # else another verb runs: this one is not built at all (each parser
         # argparse makes costs ~0.2 ms, most of it gettext looking for
         # translations).

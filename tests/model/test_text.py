@@ -110,3 +110,13 @@ def test_a_chunk_is_printable_lines_only_without_controls_or_extra_newlines():
     assert not is_printable_lines("a\nb\nc\n", 2)  # a newline inside a value
     assert not is_printable_lines(f"a{HOSTILE}\nb\n", 2)
     assert not is_printable_lines("a\u202e\n", 1)
+
+
+def test_no_control_character_is_isprintable():
+    # printable() skips its regex for text that str.isprintable(): that is
+    # right only if every character it escapes is not isprintable().
+    from sass_tui.model.text import _control
+
+    escaped = [c for c in map(chr, range(0x110000)) if _control().match(c)]
+    assert len(escaped) > 2000  # C0, DEL, C1, bidi controls, surrogates
+    assert not any(c.isprintable() for c in escaped)
