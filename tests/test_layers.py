@@ -127,3 +127,15 @@ def test_only_the_verb_being_run_is_built():
     assert verbs(["--db", "query", "fig", "-o", "X.fig"]) == {"fig"}
     for argv in ([], ["-h", "query"], ["--version", "fig"], ["nosuch"]):
         assert len(verbs(argv)) == len(VERBS), argv
+
+
+def test_the_spreadsheet_starts_without_what_other_screens_use():
+    # Issue 16 (TUI first screen): the database, the query language, pint, the
+    # prediction model and the other screens load when first used.
+    code = (
+        "import sys\nimport sass_tui.ui.app\n"
+        "later = ('sqlite3', 'lark', 'pint', 'sass_tui.model.prediction', 'sass_tui.db',\n"
+        "         'sass_tui.ui.query_screen', 'sass_tui.ui.figure_screen', 'numpy.ma')\n"
+        "print(','.join(sorted(m for m in later if m in sys.modules)))\n"
+    )
+    assert _run(code) == ""
