@@ -87,7 +87,8 @@ def py_spy(
     command: list[str], env: dict[str, str], out: Path, tmux: bool = False
 ) -> Counter[tuple[str, ...]]:
     """Stacks sampled by py-spy (raw format), each a tuple of frames, outermost first."""
-    record = [PY_SPY, "record", "-r", "1000", "--format", "raw", "-o", str(out), "--", *command]
+    record = [PY_SPY, "record", "-r", "1000", "--nolineno", "--format", "raw", "-o", str(out)]
+    record += ["--", *command]
     if not tmux:
         subprocess.run(record, env=env, capture_output=True, check=True)
     else:
@@ -110,6 +111,8 @@ def py_spy(
     stacks: Counter[tuple[str, ...]] = Counter()
     for row in out.read_text().splitlines():
         frames, _, count = row.rpartition(" ")
+        if frames.startswith("_bootstrap (threading.py"):
+            continue  # another thread (Textual's input thread): the main one only
         stacks[tuple(frames.split(";"))] += int(count)
     return stacks
 
@@ -122,7 +125,9 @@ def show_profile(stacks: Counter[tuple[str, ...]], top: int = 10) -> None:
         own[_short(frames[-1])] += count
         for frame in {_short(f) for f in frames if "sass_tui" in f}:
             inclusive[frame] += count
-    print(f"  py-spy: {total} samples at 1 kHz (~{total} ms of the process's time)")
+    # py-spy stops the process for each sample, so a profiled start takes longer
+    # than a plain one: the shares are what to read, not the sample count.
+    print(f"  py-spy: {total} samples of the main thread at 1 kHz")
     print("    own samples:")
     for frame, count in own.most_common(top):
         print(f"      {100 * count / total:5.1f} %  {frame}")
@@ -132,9 +137,11 @@ def show_profile(stacks: Counter[tuple[str, ...]], top: int = 10) -> None:
 
 
 def _short(frame: str) -> str:
-    """'f (/long/path/site-packages/pkg/mod.py:12)' -> 'f (pkg/mod.py:12)'."""
+    """'f (/long/path/site-packages/pkg/mod.py)' -> 'f (pkg/mod.py)'."""
     name, _, where = frame.partition(" (")
-    for marker in ("site-packages/", "python3.11/", "wt-fast/", "sass_tui/"):
+    if not name.strip():
+        return "(no Python frame: the interpreter starting or native code)"
+    for marker in ("site-packages/", "python3.11/", "sass_tui/"):
         if marker in where:
             where = where.split(marker, 1)[1]
             break
