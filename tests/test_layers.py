@@ -64,11 +64,18 @@ def test_the_command_line_starts_without_its_heavy_imports():
     assert _run(code) == ""
 
 
-def _imported_while_running(argv: list[str], cwd) -> set[str]:
+HEAVY = ("lark", "pint", "textual", "numpy")
+# What `sass query` must not import either (issue 16: <= 5x a bare interpreter):
+# the generated parser's logging, dataclasses/inspect and pickle, and shutil
+# (argparse's help formatter imports it for the terminal's width).
+QUERY_NEEDS_NONE_OF = (*HEAVY, "logging", "dataclasses", "inspect", "pickle", "shutil")
+
+
+def _imported_while_running(argv: list[str], cwd, heavy: tuple[str, ...] = HEAVY) -> set[str]:
     code = (
         "import sys\nfrom sass_tui.cli import main\n"
         f"status = main({argv!r})\n"
-        "heavy = ('lark', 'pint', 'textual', 'numpy')\n"
+        f"heavy = {heavy!r}\n"
         "print(status, ','.join(m for m in heavy if m in sys.modules), file=sys.stderr)\n"
     )
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=cwd)
@@ -88,9 +95,47 @@ def test_a_query_in_inches_does_not_import_pint(tmp_path):
         ["--db", str(db), "query", "--format", "csv", "stature > 70 in"], tmp_path
     )
     assert "pint" not in imported and "textual" not in imported
+    # The table (the default format), a unit converted, parentheses, OR, a group row:
+    # the parser, the compiler, the database and the table writer all ran.
+    query = "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"
+    argv = ["--db", str(db), "query", query]
+    assert _imported_while_running(argv, tmp_path, QUERY_NEEDS_NONE_OF) == set()
 
 
 def test_sass_fig_does_not_import_pint(tmp_path):
-    imported = _imported_while_running(["fig", "-o", str(tmp_path / "X.fig")], tmp_path)
-    assert "pint" not in imported and "textual" not in imported
+    # Nor numpy.ma (np.median and np.unique import it: 25 ms), nor secrets
+    # (hashlib, hmac, random) for a temporary file's name.
+    heavy = (*HEAVY, "numpy.ma", "secrets", "logging", "shutil")
+    imported = _imported_while_running(["fig", "-o", str(tmp_path / "X.fig")], tmp_path, heavy)
+    assert imported == {"numpy"}  # no pint, no lark, no Textual
     assert (tmp_path / "X.fig").is_file()
+
+
+def test_only_the_verb_being_run_is_built():
+    # Issue 16: each verb's parser costs start-up time; `sass query` builds only
+    # its own, while `sass --help` (and an unknown verb's error) lists them all.
+    import argparse
+
+    from sass_tui.cli import VERBS, build_parser
+
+    def verbs(argv: list[str]) -> set[str]:
+        parser = build_parser(argv)
+        (commands,) = (a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+        return set(commands.choices)
+
+    assert verbs(["query", "gender = male"]) == {"query"}
+    assert verbs(["--db", "query", "fig", "-o", "X.fig"]) == {"fig"}
+    for argv in ([], ["-h", "query"], ["--version", "fig"], ["nosuch"]):
+        assert len(verbs(argv)) == len(VERBS), argv
+
+
+def test_the_spreadsheet_starts_without_what_other_screens_use():
+    # Issue 16 (TUI first screen): the database, the query language, pint, the
+    # prediction model and the other screens load when first used.
+    code = (
+        "import sys\nimport sass_tui.ui.app\n"
+        "later = ('sqlite3', 'lark', 'pint', 'sass_tui.model.prediction', 'sass_tui.db',\n"
+        "         'sass_tui.ui.query_screen', 'sass_tui.ui.figure_screen', 'numpy.ma')\n"
+        "print(','.join(sorted(m for m in later if m in sys.modules)))\n"
+    )
+    assert _run(code) == ""

@@ -11,30 +11,40 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+from types import ModuleType
+from typing import Any, cast
 
-from sass_tui.cli import (
-    db,
-    export,
-    family,
-    fig,
-    fit,
-    person,
-    population,
-    predict,
-    query,
-    serve,
-    strength,
-)
 from sass_tui.cli.options import DB_HELP, SubParsers
 
-VERBS = (fig, export, strength, query, person, population, predict, fit, family, db, serve)
+# The verbs in `sass --help`'s order, each the module sass_tui.cli.VERB,
+# imported when its parser is built or listed (a verb run imports only its own).
+VERBS = (
+    "fig",
+    "export",
+    "strength",
+    "query",
+    "person",
+    "population",
+    "predict",
+    "fit",
+    "family",
+    "db",
+    "serve",
+)
+
+
+def _verb_module(name: str) -> ModuleType:
+    module = f"sass_tui.cli.{name}"
+    __import__(module)
+    return sys.modules[module]
 
 
 def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
-    """The parser; given the command line, only the verb it names gets its
-    options built (the others are listed with their help: `sass --help` is
-    whole), since argparse costs start-up time for every option."""
-    parser = argparse.ArgumentParser(
+    """The parser; given the command line, only the verb it names is built
+    (with no verb, or before -h, every verb is listed with its help and none
+    built: `sass --help` is whole), since argparse costs start-up time for
+    every parser and option."""
+    parser = _Parser(
         prog="sass",
         description="Spreadsheet Anthropometry Scaling System. "
         "With no command, opens the spreadsheet (TUI).",
@@ -45,24 +55,71 @@ def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     parser.add_argument(
         "--version", action=_VersionAction, nargs=0, help="print the version and exit"
     )
-    commands = parser.add_subparsers(dest="command", metavar="COMMAND")
+    commands = cast(SubParsers, parser.add_subparsers(dest="command", metavar="COMMAND"))
     chosen = None if argv is None else _verb_named(argv)
-    for verb in VERBS:
-        verb.register(
-            commands if chosen in (None, verb.__name__.rsplit(".", 1)[1]) else _NamesOnly(commands)
-        )
+    for name in VERBS:
+        if argv is None or chosen == name:
+            _verb_module(name).register(commands)
+        elif chosen not in VERBS:  # sass --help, the TUI, or an unknown verb's error
+            _verb_module(name).register(_NamesOnly(commands))
+        # else another verb runs: this one is not built at all (each parser
+        # argparse makes costs ~0.2 ms, most of it gettext looking for
+        # translations).
     return parser
 
 
 def _verb_named(argv: list[str]) -> str | None:
-    """The verb on a command line (the first word that is not an option or --db's value)."""
+    """The verb on a command line (the first word that is not an option or
+    --db's value); None if none, or if help or the version is asked first."""
     words = iter(argv)
     for word in words:
+        if word in ("-h", "--help", "--version"):
+            return None
         if word == "--db":
             next(words, None)
         elif not word.startswith("-"):
             return word
     return None
+
+
+class _HelpFormatter(argparse.HelpFormatter):
+    """argparse's own, given the terminal's width without importing shutil
+    (argparse makes a formatter for every option it is given, and its own
+    imports shutil, and with it bz2 and lzma: 1.5 ms of every command)."""
+
+    def __init__(
+        self,
+        prog: str,
+        indent_increment: int = 2,
+        max_help_position: int = 24,
+        width: int | None = None,
+    ) -> None:
+        width = _terminal_columns() - 2 if width is None else width
+        super().__init__(prog, indent_increment, max_help_position, width)
+
+
+def _terminal_columns() -> int:
+    """shutil.get_terminal_size().columns: $COLUMNS, else the terminal's, else 80."""
+    try:
+        columns = int(os.environ.get("COLUMNS", "0"))
+    except ValueError:
+        columns = 0
+    stdout = sys.__stdout__
+    if columns <= 0 and stdout is not None:
+        try:
+            columns = os.get_terminal_size(stdout.fileno()).columns
+        except (AttributeError, ValueError, OSError):
+            columns = 0
+    return columns if columns > 0 else 80
+
+
+class _Parser(argparse.ArgumentParser):
+    """An ArgumentParser whose help is made by _HelpFormatter (the verbs'
+    parsers are of this class too: add_subparsers makes its own kind)."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        kwargs.setdefault("formatter_class", _HelpFormatter)
+        super().__init__(*args, **kwargs)
 
 
 class _NamesOnly:

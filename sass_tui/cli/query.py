@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Iterable
+from itertools import islice
 from typing import TextIO
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
@@ -47,28 +48,48 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _write_table(out: TextIO, rows: Iterable[tuple]) -> None:
-    from sass_tui.model.text import printable
-
     out.write(
         f"{'id':>7}  {'name':<20} {'gender':<6} {'mass kg':>7} {'stature cm':>10} "
         f"{'hand':<6} {'age':>4}  source\n"
     )
     count = 0
-    lines = []
-    for id_num, name, gender, mass, stature, hand, age, source in rows:
-        # Names and sources come from files: no escape sequence reaches the terminal.
-        lines.append(
+    remaining = iter(rows)
+    while chunk := list(islice(remaining, 1000)):
+        out.write(_table_lines(chunk))
+        count += len(chunk)
+    out.write(f"{count} {'person' if count == 1 else 'people'}\n")
+
+
+# A row of the table when every value is there and of its type (the fast
+# path of _table_lines; the same text as the f-strings below).
+_LINE = "%7s  %-20.20s %-6s %7.1f %10.1f %-6s %4.0f  %s\n"
+
+
+def _table_lines(rows: list[tuple]) -> str:
+    """The rows as lines of the table.  Names and sources come from files, so
+    no escape sequence may reach the terminal: the text is first made as
+    stored, with one format per row, and checked once; only a chunk that holds
+    a control character, a missing value or a value of another type is made
+    again with every text through printable() (docs/performance.md)."""
+    from sass_tui.model.text import is_printable_lines, printable
+
+    if not any(None in row for row in rows):
+        try:
+            text = "".join([_LINE % row for row in rows])
+        except (TypeError, ValueError):  # e.g. text stored as a mass
+            pass
+        else:
+            if is_printable_lines(text, len(rows)):
+                return text
+    return "".join(
+        [
             f"{id_num:>7}  {printable(name):<20.20} {printable(gender):<6} "
             f"{'' if mass is None else f'{mass:.1f}':>7} "
             f"{'' if stature is None else f'{stature:.1f}':>10} {printable(hand):<6} "
             f"{'' if age is None else f'{age:.0f}':>4}  {printable(source)}\n"
-        )
-        count += 1
-        if len(lines) == 1000:
-            out.write("".join(lines))
-            lines.clear()
-    out.write("".join(lines))
-    out.write(f"{count} {'person' if count == 1 else 'people'}\n")
+            for id_num, name, gender, mass, stature, hand, age, source in rows
+        ]
+    )
 
 
 def _finite(person: dict) -> dict:

@@ -28,9 +28,8 @@ import math
 import re
 import sqlite3
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass
 from functools import lru_cache
-from typing import Any, NoReturn
+from typing import Any, NamedTuple, NoReturn
 
 # The parser is lark's stand-alone LALR module generated from GRAMMAR by
 # scripts/make_query_parser.py: importing it costs a third of importing lark
@@ -127,8 +126,7 @@ def parser() -> Lark:
     return standalone
 
 
-@dataclass(frozen=True)
-class CompiledQuery:
+class CompiledQuery(NamedTuple):  # not a dataclass: see model.names.Row
     text: str
     where: str
     params: tuple[object, ...]
@@ -446,12 +444,12 @@ _SELECT = (
 )
 
 
-@dataclass
 class Query:
     """A compiled query bound to a connection: count it, fetch it a page at a time."""
 
-    conn: sqlite3.Connection
-    compiled: CompiledQuery
+    def __init__(self, conn: sqlite3.Connection, compiled: CompiledQuery) -> None:
+        self.conn = conn
+        self.compiled = compiled
 
     def count(self) -> int:
         from sass_tui.db import accelerator  # its imports cost start-up time; counts only

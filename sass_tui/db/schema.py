@@ -25,7 +25,6 @@ import os
 import re
 import sqlite3
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -554,39 +553,58 @@ def row_counts(conn: sqlite3.Connection) -> dict[str, int]:
 SqlRow = tuple[Any, ...]
 
 
-@dataclass
 class PeopleBatch:
     """People to store, every group as arrays in the model's row order (NaN = no value).
 
     Strength experiments are lists of tuples whose first element is the
     person's index in the batch, the rest the relation's fields after id_num
-    (canonical units).
+    (canonical units).  A plain class, not a dataclass: this module is on
+    `sass query`'s path, and dataclasses imports inspect (docs/performance.md).
     """
 
-    id_num: np.ndarray  # int64
-    name: list[str]
-    gender: list[str]
-    stature: np.ndarray
-    mass: np.ndarray
-    handedness: list[str | None]
-    age: np.ndarray
-    source: list[str]
-    source_key: list[str | None]
-    girth: np.ndarray | None = None  # (n, 25, 4): x, y, z, mass
-    joint_limits: np.ndarray | None = None  # (n, 40, 3)
-    center_of_mass: np.ndarray | None = None  # (n, 21, 3)
-    extra_girth: list[SqlRow] = field(default_factory=list)  # (i, seg, x, y, z, mass)
-    strength_par: list[SqlRow] = field(
-        default_factory=list
-    )  # (i, exp, side, type, speed, fatigue, training)
-    shoulder: list[SqlRow] = field(default_factory=list)  # (i, exp, ax, ay, az, elbow, axis, p, n)
-    elbow: list[SqlRow] = field(
-        default_factory=list
-    )  # (i, exp, elbow, sx, sy, sz, wx, wy, wz, p, n)
-    wrist: list[SqlRow] = field(default_factory=list)  # (i, exp, wx, wy, wz, elbow, axis, p, n)
-    # Survey attributes (PERSON_ATTRIBUTES), each a list of n values or None (no value).
-    attributes: dict[str, list[object]] = field(default_factory=dict)
-    measures: np.ndarray | None = None  # (n, len(MEASURES)), canonical units
+    def __init__(
+        self,
+        *,
+        id_num: np.ndarray,  # int64
+        name: list[str],
+        gender: list[str],
+        stature: np.ndarray,
+        mass: np.ndarray,
+        handedness: list[str | None],
+        age: np.ndarray,
+        source: list[str],
+        source_key: list[str | None],
+        girth: np.ndarray | None = None,  # (n, 25, 4): x, y, z, mass
+        joint_limits: np.ndarray | None = None,  # (n, 40, 3)
+        center_of_mass: np.ndarray | None = None,  # (n, 21, 3)
+        extra_girth: list[SqlRow] | None = None,  # (i, seg, x, y, z, mass)
+        strength_par: list[SqlRow] | None = None,  # (i, exp, side, type, speed, fatigue, training)
+        shoulder: list[SqlRow] | None = None,  # (i, exp, ax, ay, az, elbow, axis, p, n)
+        elbow: list[SqlRow] | None = None,  # (i, exp, elbow, sx, sy, sz, wx, wy, wz, p, n)
+        wrist: list[SqlRow] | None = None,  # (i, exp, wx, wy, wz, elbow, axis, p, n)
+        # Survey attributes (PERSON_ATTRIBUTES), each a list of n values or None (no value).
+        attributes: dict[str, list[object]] | None = None,
+        measures: np.ndarray | None = None,  # (n, len(MEASURES)), canonical units
+    ) -> None:
+        self.id_num = id_num
+        self.name = name
+        self.gender = gender
+        self.stature = stature
+        self.mass = mass
+        self.handedness = handedness
+        self.age = age
+        self.source = source
+        self.source_key = source_key
+        self.girth = girth
+        self.joint_limits = joint_limits
+        self.center_of_mass = center_of_mass
+        self.extra_girth: list[SqlRow] = [] if extra_girth is None else extra_girth
+        self.strength_par: list[SqlRow] = [] if strength_par is None else strength_par
+        self.shoulder: list[SqlRow] = [] if shoulder is None else shoulder
+        self.elbow: list[SqlRow] = [] if elbow is None else elbow
+        self.wrist: list[SqlRow] = [] if wrist is None else wrist
+        self.attributes: dict[str, list[object]] = {} if attributes is None else attributes
+        self.measures = measures
 
     def __len__(self) -> int:
         return len(self.id_num)

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass
 from functools import cache
 from types import MappingProxyType
+from typing import NamedTuple
 
 AXES = ("x", "y", "z")
 PERCENTILE_COLUMNS = (5.0, 50.0, 95.0)
@@ -31,8 +31,9 @@ GROUP_TITLES = {
 }
 
 
-@dataclass(frozen=True)
-class Row:
+# A NamedTuple, not a dataclass: dataclasses imports inspect, which `sass query`
+# would pay for at every start (docs/performance.md).
+class Row(NamedTuple):
     name: str
     label: str
     aliases: tuple[str, ...] = ()

@@ -299,9 +299,8 @@ def _check_cross_gender(data: PopulationData, name: str) -> None:
     male, female = data.stats("male")[..., 1], data.stats("female")[..., 1]
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = np.where(male > 0, female / male, np.nan)
-    # Per axis over the finite ratios; not np.nanmedian, which imports numpy.ma
-    # (25 ms of every `sass fig`).
-    median = np.array([np.median(column[np.isfinite(column)]) for column in ratio.T])
+    # Per axis over the finite ratios.
+    median = np.array([_median(column[np.isfinite(column)]) for column in ratio.T])
     for i, row in enumerate(ROWS[GIRTH]):
         for a, axis in enumerate(AXES):
             relative = ratio[i, a] / median[a]
@@ -314,6 +313,19 @@ def _check_cross_gender(data: PopulationData, name: str) -> None:
                 f"rows are {median[a]:.2f} times; a misprint? (docs/model.md, "
                 "suspected misprints)"
             )
+
+
+def _median(values: np.ndarray) -> float:
+    """np.median of a 1-d array without NaN (nan if empty), which np.median
+    and np.nanmedian cannot give without importing numpy.ma (their NaN check
+    asks np.ma.isMaskedArray): 25 ms of every `sass fig`."""
+    ordered = np.sort(values)
+    middle = len(ordered) // 2
+    if not len(ordered):
+        return float("nan")
+    if len(ordered) % 2:
+        return float(ordered[middle])
+    return float((ordered[middle - 1] + ordered[middle]) / 2)
 
 
 def _three(values: np.ndarray) -> str:
@@ -371,7 +383,7 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
             if np.isnan(q).any():
                 continue
             for k in range(3):
-                if abs(q[k] - 1) > RULE_TOLERANCE and abs(q[k] - np.median(q)) > RULE_TOLERANCE:
+                if abs(q[k] - 1) > RULE_TOLERANCE and abs(q[k] - _median(q)) > RULE_TOLERANCE:
                     out.append(
                         f"{where(cmass, 'female', i, CENTER_OF_MASS, 'z')}: the {percentiles[k]} "
                         f"value {actual[k]:g} is not what appendix L.1's scaling rule gives "

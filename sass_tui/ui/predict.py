@@ -8,12 +8,15 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from textual.message import Message
 from textual.suggester import Suggester
 
-from sass_tui.model.prediction import Prediction, Predictor
 from sass_tui.model.units import DISPLAY
+
+if TYPE_CHECKING:  # the model is imported by the worker that opens it, not at start
+    from sass_tui.model.prediction import Prediction, Predictor
 
 KNOWN_PROMPT = "Known values for a {gender} (e.g. stature=180 cm, mass=85 kg):"
 

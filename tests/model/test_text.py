@@ -62,3 +62,61 @@ def test_error_messages_show_no_control_characters(tmp_path, capsys):
     assert main(["strength", "--file", str(bad), "shoulder_abduction"]) == 2
     err = capsys.readouterr().err
     assert "\x1b" not in err and "error:" in err
+
+
+def _line_field_by_field(row: tuple) -> str:
+    """A `sass query` table line made as before the fast path: every text
+    through printable(), every number formatted on its own."""
+    id_num, name, gender, mass, stature, hand, age, source = row
+    return (
+        f"{id_num:>7}  {printable(name):<20.20} {printable(gender):<6} "
+        f"{'' if mass is None else f'{mass:.1f}':>7} "
+        f"{'' if stature is None else f'{stature:.1f}':>10} {printable(hand):<6} "
+        f"{'' if age is None else f'{age:.0f}':>4}  {printable(source)}\n"
+    )
+
+
+_TEXT = st.text(max_size=25) | st.sampled_from(["male", "female", "right", "ansur2", HOSTILE])
+_NUMBER = st.floats(allow_nan=False, allow_infinity=False, width=32) | st.integers(-999, 9999)
+
+
+@given(
+    st.lists(
+        st.tuples(
+            st.integers(1, 10**9),
+            _TEXT | st.none() | st.integers(),
+            _TEXT,
+            _NUMBER | st.none(),
+            _NUMBER | st.none(),
+            _TEXT | st.none(),
+            _NUMBER | st.none(),
+            _TEXT,
+        ),
+        max_size=6,
+    )
+)
+def test_the_query_table_is_the_same_made_at_once(rows):
+    # Issue 16: the table is made with one format per row and checked for
+    # control characters once; it must be what printable() per field made.
+    from sass_tui.cli.query import _table_lines
+
+    assert _table_lines(rows) == "".join(_line_field_by_field(row) for row in rows)
+
+
+def test_a_chunk_is_printable_lines_only_without_controls_or_extra_newlines():
+    from sass_tui.model.text import is_printable_lines
+
+    assert is_printable_lines("a b\nZoë\n", 2)
+    assert not is_printable_lines("a\nb\nc\n", 2)  # a newline inside a value
+    assert not is_printable_lines(f"a{HOSTILE}\nb\n", 2)
+    assert not is_printable_lines("a\u202e\n", 1)
+
+
+def test_no_control_character_is_isprintable():
+    # printable() skips its regex for text that str.isprintable(): that is
+    # right only if every character it escapes is not isprintable().
+    from sass_tui.model.text import _control
+
+    escaped = [c for c in map(chr, range(0x110000)) if _control().match(c)]
+    assert len(escaped) > 2000  # C0, DEL, C1, bidi controls, surrogates
+    assert not any(c.isprintable() for c in escaped)
