@@ -193,3 +193,25 @@ def test_a_screen_that_cannot_open_from_here_says_how_to_get_there(drive, db):
             )
 
     drive(scenario())
+
+
+def test_on_the_query_builder_pop_up_the_palette_lists_its_own_commands(drive, db):
+    from sass_tui.ui.query_builder import QueryBuilderScreen
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(120, 40)) as pilot:
+            await pilot.press("d")
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            await pilot.press("d", "b")
+            await pilot.pause()
+            builder = app.screen
+            assert isinstance(builder, QueryBuilderScreen)
+            entries = ScreenCommands(builder)._commands()
+            assert entries
+            assert not [
+                help_text for _, help_text, _ in entries if "Spreadsheet screen" in help_text
+            ]
+
+    drive(scenario())
