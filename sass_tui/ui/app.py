@@ -48,6 +48,9 @@ class SassApp(App):
         sheet, self.strength_error = self._load_strength(figure, strength_path)
         self.session = Session(figure, sheet)
         self.query_lists: QueryLists | None = None  # opened by the query screen
+        # The population percentile laid over the figure view (None: none);
+        # chosen on the figure screen, drawn there and by the spreadsheet's panel.
+        self.figure_overlay: float | None = None
         self._quit_asked_at = float("-inf")
         self._restore_theme()
 

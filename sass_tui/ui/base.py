@@ -98,6 +98,11 @@ class SassScreen(Screen):
         else:
             self.say(self.why_not(action) or "That command does not apply here.")
 
+    def run_when_ready(self, action: str) -> None:
+        """Run a command chosen in the palette on another screen, which has
+        just brought this one up, once it can take it (after its mount)."""
+        self.call_later(self.run_command, action)
+
     def action_help(self) -> None:
         """List every key of this screen, what it runs and what that does."""
         from sass_tui.ui.palette import HelpScreen, screen_commands

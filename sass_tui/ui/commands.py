@@ -26,7 +26,8 @@ class CommandSpec:
     column: int = 0
     row: int = 0
     available: Callable[[object], bool] = lambda screen: True
-    # The footer holds what fits 80 columns; the menu shows every command.
+    # The footer holds what fits 80 columns (docs/user-guide.md, "The footer");
+    # the menu shows every command, and the palette and F1 list them all.
     in_footer: bool = True
 
 
@@ -70,8 +71,18 @@ COMMANDS: tuple[CommandSpec, ...] = (
     CommandSpec(
         "previous_page", "p", "previous_page", "Prev", lambda screen: "Previous Page", row=1
     ),
-    CommandSpec("convert_units", "c", "convert_units", "Units", _conversion_label, row=2),
-    CommandSpec("input_data", "i", "input_data", "Input", lambda screen: "Input Data", row=3),
+    CommandSpec(
+        "convert_units", "c", "convert_units", "Units", _conversion_label, row=2, in_footer=False
+    ),
+    CommandSpec(
+        "input_data",
+        "i",
+        "input_data",
+        "Input",
+        lambda screen: "Input Data",
+        row=3,
+        in_footer=False,
+    ),
     CommandSpec(
         "create_figure", "f", "create_figure", "Figure", lambda screen: "Create Figure", row=4
     ),
@@ -92,7 +103,7 @@ COMMANDS: tuple[CommandSpec, ...] = (
         "display_population",
         "o",
         "display_population",
-        "Disp. Pop.",
+        "Pop.",
         lambda screen: "Disp. Pop.",
         column=1,
         row=0,
@@ -107,6 +118,7 @@ COMMANDS: tuple[CommandSpec, ...] = (
         column=1,
         row=1,
         available=_showing_population,
+        in_footer=False,
     ),
     CommandSpec(
         "display_more",
@@ -117,10 +129,18 @@ COMMANDS: tuple[CommandSpec, ...] = (
         column=1,
         row=1,
         available=_showing_person,
+        in_footer=False,
     ),
     # One of figure 6's void slots.
     CommandSpec(
-        "export_hanim", "e", "export_hanim", "HAnim", lambda screen: "Export HAnim", column=1, row=2
+        "export_hanim",
+        "e",
+        "export_hanim",
+        "HAnim",
+        lambda screen: "Export HAnim",
+        column=1,
+        row=2,
+        in_footer=False,
     ),
     CommandSpec(
         "switch_side",

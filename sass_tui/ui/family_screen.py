@@ -105,10 +105,12 @@ class FamilyScreen(SassScreen):
         self.action_build()
 
     def action_back(self) -> None:
+        """Back to the spreadsheet."""
         self.app.pop_screen()
 
     # --- the questions ------------------------------------------------------------
     def action_build(self) -> None:
+        """Build a new family (coverage, number of manikins)."""
         self.ask(
             f"Gender ({' or '.join(GENDERS)}) [{self.default_gender}]:",
             self._gender_given,
@@ -207,6 +209,7 @@ class FamilyScreen(SassScreen):
 
     # --- writing ---------------------------------------------------------------------
     def action_write(self) -> None:
+        """Write each manikin's .fig and HAnim files."""
         family = self.family
         if family is None:
             self.complain("No family built yet: answer the questions first (b).")

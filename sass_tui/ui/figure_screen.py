@@ -4,7 +4,9 @@ Opened from the spreadsheet (`b`, or "See Figure" in the command palette).
 It draws `session.figure` each time it is shown and after each edit made
 here (undo), and can lay a second figure over it: the population at the
 50th, 5th or 95th percentile (`o` cycles), so a person or a tuned figure is
-seen against the population it was drawn from.
+seen against the population it was drawn from.  The overlay chosen is the
+app's (`SassApp.figure_overlay`): the spreadsheet's figure panel, drawn live
+beside the data on a wide terminal, shows the same (`session_outlines`).
 """
 
 from __future__ import annotations
@@ -50,6 +52,18 @@ def figure_label(figure: Figure) -> str:
     return f"{figure.gender} figure"
 
 
+def session_outlines(session, overlay: float | None) -> tuple[Outline, ...]:
+    """What the figure view draws of `session`: the figure shown, and the
+    population at percentile `overlay` over it (None: no overlay).
+    Raises SassError when the figure cannot be drawn."""
+    figure = session.figure
+    outlines = [figure_outline(figure, figure_label(figure))]
+    if overlay is not None:
+        overlaid = percentile_figure(session.population, overlay)
+        outlines.append(figure_outline(overlaid, f"population {ordinal(overlay)}"))
+    return tuple(outlines)
+
+
 class FigureScreen(SassScreen):
     """Front and side views of the figure shown, with an optional overlay."""
 
@@ -57,6 +71,7 @@ class FigureScreen(SassScreen):
         Binding("escape", "close", "Back"),
         Binding("b", "close", "Back", show=False),
         Binding("o", "cycle_overlay", "Overlay"),
+        Binding("g", "switch_gender", "Gender"),
         Binding("u", "undo", "Undo"),
         Binding("q", "app.quit", "Quit"),
     ]
@@ -64,7 +79,6 @@ class FigureScreen(SassScreen):
     def __init__(self, session) -> None:
         super().__init__()
         self.session = session
-        self.overlay_index = len(OVERLAYS) - 1  # no overlay until asked
 
     def compose(self):
         yield FigureView(id="figure-view")
@@ -77,7 +91,8 @@ class FigureScreen(SassScreen):
 
     @property
     def overlay(self) -> float | None:
-        return OVERLAYS[self.overlay_index]
+        """The app's overlay: kept when the screen closes, drawn by the panel too."""
+        return self.sass_app.figure_overlay
 
     def on_mount(self) -> None:
         self.redraw()
@@ -87,27 +102,25 @@ class FigureScreen(SassScreen):
 
     def redraw(self) -> None:
         """Draw the figure shown (and the overlay) as it is now."""
-        figure = self.session.figure
         try:
-            outlines = [figure_outline(figure, figure_label(figure))]
-            if self.overlay is not None:
-                outlines.append(self._overlay_outline(self.overlay))
+            outlines = session_outlines(self.session, self.overlay)
         except SassError as exc:
             self.view.outlines = ()
             self.complain(f"The figure cannot be drawn: {exc}")
             return
-        self.view.outlines = tuple(outlines)
+        self.view.outlines = outlines
         self.say(self.status())
 
-    def _overlay_outline(self, p: float) -> Outline:
-        population = self.session.population
-        return figure_outline(percentile_figure(population, p), f"population {ordinal(p)}")
+    def status_overlay(self) -> str:
+        return "no overlay" if self.overlay is None else f"over the {ordinal(self.overlay)}"
 
     def status(self) -> str:
-        overlay = "no overlay" if self.overlay is None else f"over the {ordinal(self.overlay)}"
-        return f"Front and side, to scale ({overlay}). o: overlay, Esc: back to the spreadsheet."
+        return (
+            f"Front and side, to scale ({self.status_overlay()}). o: overlay, g: gender, Esc: back."
+        )
 
     def action_close(self) -> None:
+        """Back to the spreadsheet."""
         self.app.pop_screen()
         # An undo here changed what the screen below shows.
         refresh = getattr(self.app.screen, "refresh_screen", None)
@@ -115,10 +128,24 @@ class FigureScreen(SassScreen):
             refresh()
 
     def action_cycle_overlay(self) -> None:
-        self.overlay_index = (self.overlay_index + 1) % len(OVERLAYS)
+        """Lay the population's 50th, 5th or 95th over the figure, or nothing."""
+        index = OVERLAYS.index(self.overlay) if self.overlay in OVERLAYS else len(OVERLAYS) - 1
+        self.sass_app.figure_overlay = OVERLAYS[(index + 1) % len(OVERLAYS)]
         self.redraw()
 
+    def action_switch_gender(self) -> None:
+        """Switch the figure to the other gender (every group reloaded) and draw it."""
+        other = "female" if self.session.figure.gender == "male" else "male"
+        try:
+            self.session.set_gender(other)
+        except SassError as exc:
+            self.complain(f"The gender is unchanged: {exc}")
+            return
+        self.redraw()
+        self.say(f"Now a {other} figure ({self.status_overlay()}). u: undo.")
+
     def action_undo(self) -> None:
+        """Undo the newest edit and draw the figure as it is then."""
         if self.session.undo():
             self.redraw()
         else:

@@ -39,8 +39,15 @@ class FigureView(Vertical):
 
     outlines: reactive[tuple[Outline, ...]] = reactive((), always_update=True)
 
+    def __init__(self, *, canvas_focus: bool = True, id: str | None = None) -> None:
+        super().__init__(id=id)
+        # False beside the spreadsheet: a picture there, Tab stays with the data.
+        self.canvas_focus = canvas_focus
+
     def compose(self) -> ComposeResult:
-        yield Canvas(1, 2, id="figure-canvas")
+        canvas = Canvas(1, 2, id="figure-canvas")
+        canvas.can_focus = self.canvas_focus
+        yield canvas
         yield Static("", id="figure-caption")
 
     def watch_outlines(self) -> None:
@@ -61,12 +68,18 @@ class FigureView(Vertical):
         if not self.outlines:
             return
         tallest = max(o.height for o in self.outlines) or 1.0
-        scale = (height - 2) / tallest  # pixels per cm
-        floor = height - 1
         ruler_x = 1
-        front_width = max(_view_width(o.front) for o in self.outlines) * scale
-        front_centre = ruler_x + GAP + front_width / 2
+        front_cm = max(_view_width(o.front) for o in self.outlines)
         side_left = min(o.side.extent()[0] for o in self.outlines)
+        side_cm = max(o.side.extent()[1] for o in self.outlines) - side_left
+        # Pixels per cm: the full height, unless front and side would then be
+        # wider than the view (a narrow panel beside the spreadsheet).
+        scale = (height - 2) / tallest
+        if front_cm + side_cm > 0:
+            scale = min(scale, (width - 2 - ruler_x - 2 * GAP) / (front_cm + side_cm))
+        floor = height - 1
+        front_width = front_cm * scale
+        front_centre = ruler_x + GAP + front_width / 2
         side_origin = front_centre + front_width / 2 + GAP - side_left * scale
         with canvas.batch_refresh():
             _draw_ruler(canvas, ruler_x, floor, scale, tallest)

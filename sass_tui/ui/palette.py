@@ -1,14 +1,24 @@
-"""The command palette (ctrl+p) and the help screen (F1, `?`), both built
-from the active screen's own BINDINGS and command menus, never from a list
+"""The command palette (ctrl+p) and the help screen (F1, `?`), built from
+the screens' own BINDINGS and command menus, never from a list of commands
 kept by hand: a new binding shows up in both by itself.
 
+The help screen lists the active screen's bindings.  The palette lists those
+first, then every command of every other screen in SCREENS (its class's
+BINDINGS), each with the screen it belongs to.  Choosing one of another
+screen goes there (back down the screen stack, or opened from the
+spreadsheet by the command that opens it) and runs it once that screen can
+take it (`SassScreen.run_when_ready`); a screen that only opens from
+another's answer (the fit test) says how to get there instead.
+
 A command's name is its menu label (`CommandSpec.label`) when the screen has
-a menu button for it, else the binding's description, else its action's
-name; its help text is the first line of the `action_` method's docstring.
+a menu button for it, else the binding's tooltip (the full name of a short
+footer label), else its description, else its action's name; its help text
+is the first line of the `action_` method's docstring.
 """
 
 from __future__ import annotations
 
+import importlib
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -16,16 +26,64 @@ from functools import partial
 from typing import Any
 
 from rich.text import Text
-from textual.binding import Binding
+from textual.binding import Binding, BindingsMap
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Vertical
-from textual.screen import ModalScreen
+from textual.screen import ModalScreen, Screen
 from textual.widgets import DataTable, Static
 
 from sass_tui.ui.widgets import CommandMenu
 
 # Keys Textual shows better than their names.
 KEY_NAMES = {"question_mark": "?", "escape": "Esc", "pagedown": "PgDn", "pageup": "PgUp"}
+
+
+@dataclass(frozen=True)
+class ScreenRoute:
+    """A screen whose commands the palette lists, and how to reach it."""
+
+    title: str
+    module: str
+    name: str  # the class
+    opener: str | None  # the spreadsheet's action that opens it (None: see `how`)
+    how: str  # how a user gets there, said where the palette cannot take them
+
+    def screen_class(self) -> type[Screen]:
+        screen_class: type[Screen] = getattr(importlib.import_module(self.module), self.name)
+        return screen_class
+
+
+# The screens the palette takes commands from (modal pop-ups are not listed:
+# their keys are the choices they show).
+SCREENS: tuple[ScreenRoute, ...] = (
+    ScreenRoute(
+        "Spreadsheet",
+        "sass_tui.ui.spreadsheet",
+        "SpreadsheetScreen",
+        None,
+        "Esc (or Exit Query) goes back to it",
+    ),
+    ScreenRoute(
+        "Query", "sass_tui.ui.query_screen", "QueryScreen", "query", "Query (d) on the spreadsheet"
+    ),
+    ScreenRoute(
+        "Figure", "sass_tui.ui.figure_screen", "FigureScreen", "see_figure", "b on the spreadsheet"
+    ),
+    ScreenRoute(
+        "Family",
+        "sass_tui.ui.family_screen",
+        "FamilyScreen",
+        "family",
+        "Family (y) on the spreadsheet",
+    ),
+    ScreenRoute(
+        "Fit Test",
+        "sass_tui.ui.fit_screen",
+        "FitScreen",
+        None,
+        "on the query screen, run a query, then Fit Test (f)",
+    ),
+)
 
 
 @dataclass(frozen=True)
@@ -49,8 +107,9 @@ def _humanize(action: str) -> str:
     return f"{text}: {argument.replace('_', ' ')}" if argument else text
 
 
-def _help_text(screen, action: str) -> str:
-    target = screen.app if action.startswith("app.") else screen
+def _help_text(screen, action: str, app=None) -> str:
+    """`screen` is a screen or a screen class (then `app` is given)."""
+    target = (app or screen.app) if action.startswith("app.") else screen
     name = action.removeprefix("app.").partition("(")[0]
     method = getattr(target, f"action_{name}", None)
     if not getattr(method, "__module__", "").startswith("sass_tui"):
@@ -66,9 +125,25 @@ def screen_commands(screen) -> list[ScreenCommand]:
     for menu in screen.query(CommandMenu):
         for spec in menu.commands:
             labels[spec.action] = spec.label(menu.context)
+    return _commands(screen, screen._bindings, labels)
+
+
+def class_commands(screen_class: type[Screen], app) -> list[ScreenCommand]:
+    """Every binding of a screen that is not shown: as `screen_commands`,
+    its menu labels those that do not depend on what the screen shows."""
+    labels = {}
+    for spec in getattr(screen_class, "COMMAND_SPECS", ()):
+        try:
+            labels[spec.action] = spec.label(None)
+        except AttributeError:  # a label that reads the screen ("void" or not)
+            labels[spec.action] = _humanize(spec.name)
+    return _commands(screen_class, screen_class._merge_bindings(), labels, app)
+
+
+def _commands(screen, bindings: BindingsMap, labels: dict[str, str], app=None):
     commands: dict[str, ScreenCommand] = {}
-    for key, bindings in screen._bindings.key_to_bindings.items():
-        for binding in bindings:
+    for key, bindings_of_key in bindings.key_to_bindings.items():
+        for binding in bindings_of_key:
             known = commands.get(binding.action)
             if known is not None:
                 commands[binding.action] = ScreenCommand(
@@ -79,26 +154,106 @@ def screen_commands(screen) -> list[ScreenCommand]:
                     known.shown or binding.show,
                 )
                 continue
-            name = labels.get(binding.action) or binding.description or _humanize(binding.action)
+            name = (
+                labels.get(binding.action)
+                or binding.tooltip
+                or binding.description
+                or _humanize(binding.action)
+            )
             commands[binding.action] = ScreenCommand(
-                binding.action, name, (key,), _help_text(screen, binding.action), binding.show
+                binding.action, name, (key,), _help_text(screen, binding.action, app), binding.show
             )
     return list(commands.values())
 
 
+def _title_of(screen) -> str:
+    route = next((r for r in SCREENS if r.name == type(screen).__name__), None)
+    return route.title if route else type(screen).__name__.removesuffix("Screen")
+
+
+def _elsewhere(command: ScreenCommand) -> bool:
+    """Listed for another screen: not its way back (Esc), help, or what
+    every screen has (quit, focus, copy), which the screen shown runs itself."""
+    return (
+        "escape" not in command.keys
+        and command.action not in ("help", "quit")
+        and not command.action.startswith(("app.", "screen."))
+    )
+
+
+async def run_elsewhere(app, route: ScreenRoute, action: str, name: str) -> None:
+    """Go to `route`'s screen and run `action` there, or say how to get there."""
+    screen_class = route.screen_class()
+    shown = app.screen
+    stack = list(app.screen_stack)
+    target = next((s for s in reversed(stack) if isinstance(s, screen_class)), None)
+    say = getattr(shown, "say", None) or app.notify
+    if target is None and route.opener is None:
+        say(f"{name} is a command of the {route.title} screen: {route.how}.")
+        return
+    base = target or stack[0]  # the spreadsheet opens the others
+    above = stack[stack.index(base) + 1 :]
+    busy = [
+        s
+        for s in above
+        if getattr(s, "running", False) or any(w.node is s and w.is_running for w in app.workers)
+    ]
+    if busy:
+        say(f"{_title_of(busy[-1])} is busy: {name} runs once it is done (or Esc back first).")
+        return
+    for _ in above:
+        app.pop_screen()
+    if above:
+        refresh = getattr(base, "refresh_screen", None)
+        if refresh is not None:
+            refresh()  # what the screens above changed
+    run_on_base = getattr(base, "run_command", None)
+    if run_on_base is None:
+        return
+    if target is not None:
+        await run_on_base(action)
+        return
+    await run_on_base(route.opener)
+    opened = app.screen
+    when_ready = getattr(opened, "run_when_ready", None)
+    if isinstance(opened, screen_class) and when_ready is not None:
+        when_ready(action)
+    # else the spreadsheet said why it did not open (e.g. Query while a person is shown)
+
+
+def _help_line(command: ScreenCommand, title: str) -> str:
+    keys = ", ".join(key_name(k) for k in command.keys)
+    where = f"{title} screen, {keys}"
+    return f"{command.help} ({where})" if command.help else where
+
+
 class ScreenCommands(Provider):
-    """The palette's commands: those of the screen it was opened on."""
+    """The palette's commands: the screen's it was opened on, then every
+    other screen's, each saying which screen it belongs to."""
 
     def _commands(self) -> list[tuple[str, str, Callable[[], Any]]]:
         screen = self.screen
         runner = getattr(screen, "run_command", None)
+        if runner is None:
+            return []  # a pop-up (help, the More menu): its own keys only
         found: list[tuple[str, str, Callable[[], Any]]] = []
+        title = _title_of(screen)
         for command in screen_commands(screen):
-            if runner is None or not screen.check_action(command.action, ()):
+            if not screen.check_action(command.action, ()):
                 continue
-            keys = ", ".join(key_name(k) for k in command.keys)
-            help_text = f"{command.help} ({keys})" if command.help else f"Key: {keys}"
-            found.append((command.name, help_text, partial(runner, command.action)))
+            found.append(
+                (command.name, _help_line(command, title), partial(runner, command.action))
+            )
+        if isinstance(screen, ModalScreen):
+            return found  # a pop-up (the query builder): its own choices only
+        for route in SCREENS:
+            screen_class = route.screen_class()
+            if isinstance(screen, screen_class):
+                continue
+            for command in class_commands(screen_class, self.app):
+                if _elsewhere(command):
+                    run = partial(run_elsewhere, self.app, route, command.action, command.name)
+                    found.append((command.name, _help_line(command, route.title), run))
         return found
 
     async def discover(self) -> Hits:

@@ -70,16 +70,24 @@ def _void_unless_query_list(label: str):
 # Figure 11: the first label is the one shown with the query list.  The list
 # button names the list it will display.
 QUERY_COMMANDS: tuple[CommandSpec, ...] = (
-    CommandSpec("q_next_page", "n", "next_page", "Next", lambda screen: "Next Page", row=0),
     CommandSpec(
-        "q_previous_page", "p", "previous_page", "Prev", lambda screen: "Previous Page", row=1
+        "q_next_page", "n", "next_page", "Next", lambda screen: "Next Page", row=0, in_footer=False
     ),
-    CommandSpec("query_db", "d", "query_db", "Query DB", lambda screen: "Query DB", row=2),
+    CommandSpec(
+        "q_previous_page",
+        "p",
+        "previous_page",
+        "Prev",
+        lambda screen: "Previous Page",
+        row=1,
+        in_footer=False,
+    ),
+    CommandSpec("query_db", "d", "query_db", "Query", lambda screen: "Query DB", row=2),
     CommandSpec(
         "select_all",
         "a",
         "select_all",
-        "Sel. All",
+        "All",
         _void_unless_query_list("Select All"),
         row=3,
         available=_on_query_list,
@@ -88,12 +96,20 @@ QUERY_COMMANDS: tuple[CommandSpec, ...] = (
         "select_one",
         "s",
         "select_one",
-        "Sel. One",
+        "One",
         _void_unless_query_list("Select One"),
         row=4,
         available=_on_query_list,
     ),
-    CommandSpec("delete_one", "x", "delete_one", "Delete", lambda screen: "Delete One", row=5),
+    CommandSpec(
+        "delete_one",
+        "x",
+        "delete_one",
+        "Delete",
+        lambda screen: "Delete One",
+        row=5,
+        in_footer=False,
+    ),
     CommandSpec(
         "display_list",
         "l",
@@ -104,7 +120,14 @@ QUERY_COMMANDS: tuple[CommandSpec, ...] = (
         row=0,
     ),
     CommandSpec(
-        "input_db", "i", "input_db", "Input DB", lambda screen: "Input DB", column=1, row=1
+        "input_db",
+        "i",
+        "input_db",
+        "Input DB",
+        lambda screen: "Input DB",
+        column=1,
+        row=1,
+        in_footer=False,
     ),
     CommandSpec(
         "exit_query",
@@ -184,6 +207,13 @@ class ListSheet(Widget, can_focus=True):
     HEADER_LINES = 2
     PAGE_ROWS = 25
 
+    class PageTurned(Message):
+        """The wheel asks for the next (1) or the previous (-1) page."""
+
+        def __init__(self, pages: int) -> None:
+            super().__init__()
+            self.pages = pages
+
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
         self.rows: list[dict] = []
@@ -253,6 +283,14 @@ class ListSheet(Widget, can_focus=True):
                 self.focus()
                 self.refresh()
 
+    def on_mouse_scroll_down(self, event: events.MouseScrollDown) -> None:
+        event.stop()
+        self.post_message(self.PageTurned(1))
+
+    def on_mouse_scroll_up(self, event: events.MouseScrollUp) -> None:
+        event.stop()
+        self.post_message(self.PageTurned(-1))
+
     def on_focus(self) -> None:
         self.refresh()
 
@@ -308,17 +346,24 @@ LIST_FIXED_LINES = 6 + 1 + ListSheet.HEADER_LINES + 1 + 1
 class QueryScreen(SassScreen):
     CSS_PATH = Path(__file__).with_name("query.tcss")
     BINDINGS = [
-        *(Binding(spec.key, spec.action, spec.footer) for spec in QUERY_COMMANDS),
-        Binding("b", "build", "Build query"),
-        Binding("m", "make_population", "Make Pop."),
-        Binding("f", "fit_test", "Fit Test"),
+        # The footer at 80 columns: d a s l e b m f q; the menu shows the rest.
+        *(
+            Binding(spec.key, spec.action, spec.footer, show=spec.in_footer)
+            for spec in QUERY_COMMANDS
+        ),
+        Binding("b", "build", "Build", tooltip="Build query"),
+        Binding("m", "make_population", "Make", tooltip="Make Population"),
+        Binding("f", "fit_test", "Fit", tooltip="Fit Test"),
         Binding("q", "app.quit", "Quit"),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
     ]
 
+    COMMAND_SPECS = QUERY_COMMANDS  # the menu's: the palette names these commands by them
+
     def __init__(self, lists: QueryLists | None, db_path: Path | None = None) -> None:
         super().__init__(id="query-screen")
+        self._when_open: list[str] = []  # palette commands waiting for the database
         self.lists = lists
         self.db_path = db_path
         self.which = QUERY_LIST
@@ -376,8 +421,16 @@ class QueryScreen(SassScreen):
             return
         self.post_message(DatabaseOpened(lists, path))
 
+    def run_when_ready(self, action: str) -> None:
+        if self.lists is None:
+            self._when_open.append(action)  # run by on_database_opened
+        else:
+            super().run_when_ready(action)
+
     def on_database_failed(self, event: DatabaseFailed) -> None:
         event.stop()
+        if not event.text.endswith("..."):
+            self._when_open.clear()
         (self.say if event.text.endswith("...") else self.complain)(event.text)
 
     def on_database_opened(self, event: DatabaseOpened) -> None:
@@ -387,6 +440,9 @@ class QueryScreen(SassScreen):
         self.refresh_screen()
         self.show_page(0)
         self.say(f"Database {path} open. Query DB (d) to query it; Exit Query (e) returns.")
+        for action in self._when_open:
+            super().run_when_ready(action)
+        self._when_open.clear()
 
     @contextmanager
     def _database(self):
@@ -446,12 +502,19 @@ class QueryScreen(SassScreen):
         )
 
     def action_next_page(self) -> None:
+        """Show the next page of the list."""
         self._list_command(lambda: self._turn(1))
 
+    def on_list_sheet_page_turned(self, event: ListSheet.PageTurned) -> None:
+        event.stop()
+        self._list_command(lambda: self._turn(event.pages))
+
     def action_previous_page(self) -> None:
+        """Show the previous page of the list."""
         self._list_command(lambda: self._turn(-1))
 
     def action_select_all(self) -> None:
+        """Move everyone in the query list to the selected list."""
         if self.which != QUERY_LIST:
             self.say("Select All is void while the selected list is shown.")
             return
@@ -465,6 +528,7 @@ class QueryScreen(SassScreen):
         self._list_command(select_all)
 
     def action_select_one(self) -> None:
+        """Move the highlighted person to the selected list."""
         if self.which != QUERY_LIST:
             self.say("Select One is void while the selected list is shown.")
             return
@@ -482,6 +546,7 @@ class QueryScreen(SassScreen):
         self._list_command(select_one)
 
     def action_delete_one(self) -> None:
+        """Delete the highlighted person from the list shown."""
         person = self.sheet.highlighted
         if person is None:
             self.say(f"The {LIST_TITLES[self.which].lower()} is empty.")
@@ -496,6 +561,8 @@ class QueryScreen(SassScreen):
         self._list_command(delete_one)
 
     def action_display_list(self) -> None:
+        """Switch between the query list and the selected list."""
+
         def switch():
             self.which = SELECTED_LIST if self.which == QUERY_LIST else QUERY_LIST
             self.sheet.cursor = 0
@@ -505,6 +572,7 @@ class QueryScreen(SassScreen):
         self._list_command(switch)
 
     def action_exit_query(self) -> None:
+        """Back to the anthropometric spreadsheet."""
         if self.which != QUERY_LIST:
             self.say("Exit Query is void while the selected list is shown; display the query list.")
             return
@@ -515,6 +583,7 @@ class QueryScreen(SassScreen):
 
     # --- Query DB: the pop-up builder -------------------------------------------------
     def action_query_db(self) -> None:
+        """Start a query of the database."""
         if self.running:
             self.say(WAIT)
             return
@@ -526,6 +595,7 @@ class QueryScreen(SassScreen):
         self.say(f"{BUILD_PROMPT} (or press b)")
 
     def action_build(self, x: int | None = None, y: int | None = None) -> None:
+        """Open the pop-up query builder (after Query DB)."""
         builder = self.builder
         if not self.awaiting_build or builder is None:
             self.say("Query DB (d) first, then the right mouse button builds the query.")
@@ -594,6 +664,7 @@ class QueryScreen(SassScreen):
 
     # --- Make Population (issue 12) ----------------------------------------------------
     def action_make_population(self) -> None:
+        """Write and load population files made of the last query's people."""
         if self.running:
             self.say(WAIT)
             return
@@ -661,6 +732,7 @@ class QueryScreen(SassScreen):
 
     # --- Fit Test (issue 14) ------------------------------------------------------------
     def action_fit_test(self) -> None:
+        """Test a population against the last query as design limits."""
         from sass_tui.db.fit import DEFAULT_POPULATION
         from sass_tui.ui.fit_screen import FitScreen
 
@@ -684,6 +756,7 @@ class QueryScreen(SassScreen):
 
     # --- Input DB ----------------------------------------------------------------------
     def action_input_db(self) -> None:
+        """Import person, group and strength files into the database."""
         if self.running:
             self.say(WAIT)
             return

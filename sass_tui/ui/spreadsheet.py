@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING
 from textual import events, work
 from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Horizontal
+from textual.containers import Horizontal, Vertical
 from textual.message import Message
 from textual.widgets import Button, Footer
 
@@ -83,6 +83,9 @@ STRENGTH_NOT_LOADED = (
 # command menu 6, the data section's border 1 and header 2, message line 1,
 # footer 1 (sass.tcss).  The page size follows from the terminal's height.
 FIXED_LINES = 1 + 6 + 1 + DataSheet.HEADER_LINES + 1 + 1
+# From this many columns the figure is drawn live beside the data, in a panel
+# FIGURE_PANEL_WIDTH wide (sass.tcss): the data keep their 80 columns.
+FIGURE_PANEL_MIN_WIDTH = 120
 GLOBAL_HINTS = {
     "figure_type": "skinny or polybody",
     "gender": "male or female",
@@ -144,17 +147,31 @@ class WorkerSaid(Message):
 class SpreadsheetScreen(SassScreen):
     """Figure 4: group bar, global data | command menu, data section, message line."""
 
+    # The footer at 80 columns (beside ctrl+p): n p f d|o u w b q, and r on
+    # the strength page; the menu buttons show the rest.  A short footer label
+    # has its full name as the tooltip, which the palette and F1 show.
     BINDINGS = [
-        *(Binding(spec.key, spec.action, spec.footer, show=spec.in_footer) for spec in COMMANDS),
+        *(
+            Binding(spec.key, spec.action, spec.footer, show=spec.in_footer)
+            for spec in COMMANDS
+            if spec.action != "quit"
+        ),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
         Binding("u", "undo", "Undo"),
         Binding("ctrl+z", "undo", show=False),
-        Binding("w", "next_warning", "Warnings"),
+        Binding("w", "next_warning", "Warn", tooltip="Warnings"),
         Binding("l", "message_log", show=False),
-        Binding("b", "see_figure", "See figure", show=False),
+        Binding("b", "see_figure", "Draw", tooltip="See figure"),
+        *(
+            Binding(spec.key, spec.action, spec.footer)
+            for spec in COMMANDS
+            if spec.action == "quit"
+        ),
         *(Binding(key, f"select_group('{group}')", show=False) for group, key in GROUP_KEYS),
     ]
+
+    COMMAND_SPECS = COMMANDS  # the menu's: the palette names these commands by them
 
     def __init__(self, session: Session, strength_error: str = STRENGTH_NOT_LOADED) -> None:
         super().__init__(id="spreadsheet")
@@ -168,24 +185,67 @@ class SpreadsheetScreen(SassScreen):
 
     # --- layout ---------------------------------------------------------------
     def compose(self) -> ComposeResult:
-        yield GroupBar(GROUP_KEYS, id="groups")
-        with Horizontal(id="top"):
-            yield GlobalPanel(id="global")
-            yield CommandMenu(COMMANDS, self, id="commands")
-        yield DataSheet(id="sheet")
-        yield StrengthPage(id="strength-sheet")
+        with Horizontal(id="body"):
+            with Vertical(id="data"):
+                yield GroupBar(GROUP_KEYS, id="groups")
+                with Horizontal(id="top"):
+                    yield GlobalPanel(id="global")
+                    yield CommandMenu(COMMANDS, self, id="commands")
+                yield DataSheet(id="sheet")
+                yield StrengthPage(id="strength-sheet")
+            # The figure panel (a FigureView) is mounted here on a wide terminal.
         yield MessageLine(id="message-line")
         yield Footer(compact=True)
 
     def on_mount(self) -> None:
         self.strength_page.display = False
         self._set_page_rows(self.app.size.height)
+        self._place_figure_panel(self.app.size.width)
         self.refresh_screen()
         self.sheet.focus()
         self.say(FIRST_MESSAGE)
 
     def on_resize(self, event: events.Resize) -> None:
         self._set_page_rows(event.size.height)
+        self._place_figure_panel(event.size.width)
+
+    def on_screen_resume(self) -> None:
+        self.redraw_figure_panel()  # the overlay may have changed on the figure screen
+
+    # --- the live figure panel (issue 15) -----------------------------------------
+    @property
+    def figure_panel(self):
+        """The FigureView beside the data, or None (never mounted: narrow terminal)."""
+        panels = self.query("#figure-panel")
+        return panels.first() if panels else None
+
+    def _place_figure_panel(self, width: int) -> None:
+        panel = self.figure_panel
+        wide = width >= FIGURE_PANEL_MIN_WIDTH
+        if panel is None and wide:
+            # Imported when first shown: canvas and outline cost ~20 ms of start-up.
+            from sass_tui.ui.figure_view import FigureView
+
+            panel = FigureView(canvas_focus=False, id="figure-panel")
+            self.query_one("#body", Horizontal).mount(panel)
+        if panel is not None:
+            panel.display = wide
+            self.redraw_figure_panel()
+
+    def redraw_figure_panel(self) -> None:
+        """Draw the figure shown, with the figure screen's overlay, if the
+        panel is on the screen and what it draws has changed."""
+        panel = self.figure_panel
+        if panel is None or not panel.display:
+            return
+        from sass_tui.ui.figure_screen import session_outlines
+
+        try:
+            outlines = session_outlines(self.session, self.sass_app.figure_overlay)
+        except SassError:
+            outlines = ()  # the caption says there is nothing to draw
+        if outlines != panel.outlines:
+            panel.outlines = outlines
 
     def _set_page_rows(self, height: int) -> None:
         self.sheet.page_rows = height - FIXED_LINES
@@ -222,6 +282,7 @@ class SpreadsheetScreen(SassScreen):
         if self.data_group != STRENGTH:
             self.sheet.show_group(self.figure, self.data_group)
         self.strength_page.show_sheet(self.session.strength_sheet, self.session.strength_missing)
+        self.redraw_figure_panel()
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         spec = next((c for c in COMMANDS if c.action == action), None)
@@ -265,6 +326,7 @@ class SpreadsheetScreen(SassScreen):
         self.action_select_group(event.group)
 
     def action_select_group(self, group: str) -> None:
+        """Show a group: Girth (g), Joint Limits (j), Center of Mass (m), Strength (s)."""
         if self.message_line.prompting:
             return
         session = self.session
@@ -302,12 +364,15 @@ class SpreadsheetScreen(SassScreen):
             await self.run_action(spec.action)
 
     async def action_quit(self) -> None:
+        """Quit SASS (asks again while there are edits that would be lost)."""
         await self.app.action_quit()
 
     def action_next_page(self) -> None:
+        """Show the next page of the data section."""
         self._turn_page(1)
 
     def action_previous_page(self) -> None:
+        """Show the previous page of the data section."""
         self._turn_page(-1)
 
     def _turn_page(self, pages: int) -> None:
@@ -318,6 +383,7 @@ class SpreadsheetScreen(SassScreen):
             self.say(f"Page {sheet.page + 1} of {sheet.pages}.")
 
     def action_convert_units(self) -> None:
+        """Switch the group's display units (cm/in, deg/rad, ft-lb/N-m)."""
         strength = self.session.strength_sheet
         if self.data_group == STRENGTH and strength is not None:
             unit = strength.toggle_unit()
@@ -338,11 +404,13 @@ class SpreadsheetScreen(SassScreen):
             self.say("Nothing to undo.")
 
     def action_message_log(self) -> None:
+        """List the messages shown so far."""
         from sass_tui.ui.message_log import MessageLog
 
         self.app.push_screen(MessageLog(self.message_line.history))
 
     def action_next_warning(self) -> None:
+        """Show the next warning of the last file read."""
         if not self.session.warnings:
             self.say("No warnings from the last file loaded.")
             return
@@ -359,6 +427,7 @@ class SpreadsheetScreen(SassScreen):
 
     # --- Input Data -----------------------------------------------------------------
     def action_input_data(self) -> None:
+        """Read a population (or strength) file into the group shown."""
         if self.data_group == STRENGTH:
             self.ask("Strength data file:", self._input_data_from)
             return
@@ -420,6 +489,7 @@ class SpreadsheetScreen(SassScreen):
 
     # --- Right -> Left -------------------------------------------------------------------
     def action_switch_side(self) -> None:
+        """Show the other side's strength (right or left limb)."""
         strength = self.session.strength_sheet
         if not (self.data_group == STRENGTH and strength is not None):
             self.say("Right → Left applies to the Strength group (press s).")
@@ -436,6 +506,7 @@ class SpreadsheetScreen(SassScreen):
         return default_fig_name(figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
 
     def action_create_figure(self) -> None:
+        """Write the figure shown as a .fig file."""
         missing = self.figure.missing_groups()
         if missing:
             self.complain(
@@ -510,6 +581,7 @@ class SpreadsheetScreen(SassScreen):
 
     # --- Export HAnim -----------------------------------------------------------------
     def action_export_hanim(self) -> None:
+        """Write the figure shown as an HAnim X3D humanoid."""
         default = Path(self._default_name()).with_suffix(".x3d").name
         self.ask(
             f"HAnim file name [{default}]:",
@@ -701,15 +773,19 @@ class SpreadsheetScreen(SassScreen):
 
     # --- Query, Disp. Indv., Disp. More, Disp. Pop. (§12.2.4, §12.4) ----------------------
     def action_query(self) -> None:
+        """Open the database query spreadsheet."""
         self.sass_app.open_query_screen()
 
     def action_see_figure(self) -> None:
+        """Open the figure view: the figure drawn front and side, to scale."""
         self.sass_app.open_figure_screen()
 
     def action_display_individual(self) -> None:
+        """Show the first person of the selected list."""
         self.show_person(0)
 
     def action_display_more(self) -> None:
+        """Show another person of the selected list (first, next, Nth ...)."""
         if self.session.person is None:
             self.complain("Disp. Indv. first: Disp. More shows more of the selected list.")
             return
@@ -782,6 +858,7 @@ class SpreadsheetScreen(SassScreen):
         return person_strength_data(name, person.gender, measurements, conditions)
 
     def action_display_population(self) -> None:
+        """Go back to the population figure."""
         self.prediction = None
         if self.session.person is None:
             self.say("The population is already shown.")
@@ -792,12 +869,14 @@ class SpreadsheetScreen(SassScreen):
 
     # --- Family (issue 14) ----------------------------------------------------------------
     def action_family(self) -> None:
+        """Build a manikin family covering the population."""
         from sass_tui.ui.family_screen import FamilyScreen
 
         self.app.push_screen(FamilyScreen(self.sass_app.db_path, self.session.population.gender))
 
     # --- Predict (issue 13) ---------------------------------------------------------------
     def action_predict(self) -> None:
+        """Predict a whole figure from a few known measurements."""
         if self._predictor is not None:
             self._ask_known()
             return
@@ -867,6 +946,7 @@ class SpreadsheetScreen(SassScreen):
         )
 
     def action_interval(self) -> None:
+        """Show the 90 % interval of the predicted cell under the cursor."""
         if self.prediction is None or self.session.person is not self.prediction[1]:
             self.complain(self.why_not("interval") or "Predict (k) first.")
             return

@@ -103,3 +103,117 @@ def test_o_cycles_the_population_overlay(drive):
             assert app.session.figure.stature_percentile == 95
 
     drive(scenario())
+
+
+# --- the live figure panel beside the spreadsheet (from 120 columns) -------------------
+
+
+def panel_rows(app, colour) -> list[int]:
+    canvas = app.screen.query_one("#figure-panel").query_one(Canvas)
+    return [
+        y
+        for y in range(canvas.height)
+        if any(canvas.get_pixel(x, y) == colour for x in range(canvas.width))
+    ]
+
+
+def test_the_spreadsheet_with_the_figure_panel_snapshot(snap_compare):
+    assert snap_compare(SassApp(percentile_figure("male", 95)), terminal_size=(120, 40))
+
+
+def test_no_figure_panel_below_120_columns(drive):
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(119, 40)) as pilot:
+            await pilot.pause()
+            assert app.spreadsheet.figure_panel is None
+            await pilot.resize_terminal(120, 40)
+            await pilot.pause()
+            assert app.spreadsheet.figure_panel.display
+            await pilot.resize_terminal(100, 40)
+            await pilot.pause()
+            assert not app.spreadsheet.figure_panel.display
+
+    drive(scenario())
+
+
+def test_every_edit_redraws_the_figure_panel(drive):
+    """Typed on the spreadsheet: the panel draws each edit as it is made."""
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(120, 40)) as pilot:
+            await pilot.pause()
+            panel = app.spreadsheet.figure_panel
+            assert panel is not None and panel.display
+            start = panel.outlines[0]
+            top = panel_rows(app, FILL)[0]
+            # The stature percentile, on the global panel: the figure stands taller.
+            await pilot.press("tab", "down", "down", "down", "right", "enter")
+            await pilot.press(*"99", "enter")
+            await pilot.pause()
+            assert app.figure.stature_percentile == 99
+            assert panel.outlines[0].stature > start.stature + 10
+            assert panel_rows(app, FILL)[0] < top
+            # A cell: the right upper leg's width (x) on the data sheet.
+            leg = panel.outlines[0]
+            await pilot.press("shift+tab")
+            assert app.spreadsheet.sheet.has_focus
+            await pilot.press(*["down"] * 8, *"30", "enter")
+            await pilot.pause()
+            assert app.figure.value(GIRTH, "right_upper_leg", 0) == 30
+            assert panel.outlines[0] != leg
+            # Undo, and the gender: each is drawn at once.
+            await pilot.press("u")
+            await pilot.pause()
+            assert panel.outlines[0] == leg
+            await pilot.press("tab", "left", "up", "up", "enter", *"female", "enter")
+            await pilot.pause()
+            assert app.figure.gender == "female"
+            assert panel.outlines[0].stature < leg.stature - 5
+
+    drive(scenario())
+
+
+def test_the_panel_keeps_the_overlay_chosen_on_the_figure_screen(drive):
+    async def scenario():
+        app = SassApp(percentile_figure("male", 95))
+        async with app.run_test(size=(120, 40)) as pilot:
+            await pilot.pause()
+            panel = app.spreadsheet.figure_panel
+            assert len(panel.outlines) == 1
+            await pilot.press("b", "o", "escape")
+            await pilot.pause()
+            assert [o.label for o in panel.outlines] == ["male figure", "population 50th"]
+            assert panel_rows(app, OVERLAY)
+            # Kept when the figure screen opens again, and still drawn after an edit.
+            await pilot.press("b")
+            await pilot.pause()
+            assert len(app.screen.query_one(FigureView).outlines) == 2
+            await pilot.press("escape")
+            app.session.set_stature_percentile(50)
+            app.spreadsheet.refresh_screen()
+            await pilot.pause()
+            assert len(panel.outlines) == 2
+
+    drive(scenario())
+
+
+def test_g_switches_the_gender_on_the_figure_screen_and_redraws(drive):
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(100, 30)) as pilot:
+            await pilot.press("b")
+            await pilot.pause()
+            view = app.screen.query_one(FigureView)
+            male = view.outlines[0]
+            await pilot.press("g")
+            await pilot.pause()
+            assert app.figure.gender == "female"
+            assert view.outlines[0].label == "female figure"
+            assert view.outlines[0].stature < male.stature - 5
+            await pilot.press("u")  # one undo entry: back to the male figure
+            await pilot.pause()
+            assert app.figure.gender == "male" and view.outlines[0] == male
+
+    drive(scenario())

@@ -1,5 +1,5 @@
 """The mouse: a click chooses a cell, a second click (or a double click) edits
-it; the wheel pages the data section."""
+it; the wheel pages the data section and the query list."""
 
 from __future__ import annotations
 
@@ -84,5 +84,37 @@ def test_the_wheel_pages_the_data_section(drive):
             await pilot.pause()
             assert sheet.page == 0
             assert not app.spreadsheet.message_line.prompting
+
+    drive(scenario())
+
+
+async def wheel(pilot, selector: str, event_class) -> None:
+    """A wheel turn where the mouse is, routed by the screen as the driver's are."""
+    await pilot._post_mouse_events([event_class], selector, offset=(4, 4))
+
+
+def test_the_wheel_pages_the_query_list(drive, db):
+    from sass_tui.ui.query_screen import ListSheet, QueryScreen
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(120, 40)) as pilot:
+            await pilot.press("d")
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            screen = app.screen
+            assert isinstance(screen, QueryScreen)
+            screen.start_query("stature > 0")
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            sheet = screen.query_one(ListSheet)
+            assert sheet.total > sheet.page_size and sheet.first == 0
+            await wheel(pilot, "#list", events.MouseScrollDown)
+            assert sheet.first == sheet.page_size
+            await wheel(pilot, "#list", events.MouseScrollUp)
+            assert sheet.first == 0
+            await wheel(pilot, "#list", events.MouseScrollUp)
+            assert sheet.first == 0
+            assert "first page" in str(screen.query_one("#message").render())
 
     drive(scenario())

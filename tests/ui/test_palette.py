@@ -1,18 +1,36 @@
-"""ctrl+p finds and runs the screen's commands; F1 and ? list every binding."""
+"""ctrl+p finds and runs every screen's commands; F1 and ? list every binding
+of the screen shown."""
 
 from __future__ import annotations
 
 from textual.command import CommandPalette
 from textual.widgets import DataTable
 
+from sass_tui.model.figure import Figure
 from sass_tui.ui.app import SassApp
 from sass_tui.ui.figure_screen import FigureScreen
-from sass_tui.ui.palette import HelpScreen, key_name
+from sass_tui.ui.figure_view import FigureView
+from sass_tui.ui.palette import SCREENS, HelpScreen, ScreenCommands, class_commands, key_name
+from sass_tui.ui.query_screen import QueryScreen
 
 
 def help_rows(app) -> list[tuple[str, str, str]]:
     table = app.screen.query_one(DataTable)
     return [tuple(str(cell) for cell in table.get_row_at(i)) for i in range(table.row_count)]
+
+
+def asks_for_the_figure_file(app) -> bool:
+    """Create Figure ran on the spreadsheet: it asks for the file name, as `f` does."""
+    line = app.spreadsheet.message_line
+    return line.prompting and "Figure file name" in str(line.query_one("#message").render())
+
+
+async def choose_in_palette(pilot, text: str) -> None:
+    """ctrl+p, type `text`, Enter on the best hit."""
+    await pilot.press("ctrl+p", *text)
+    await pilot.pause(0.3)
+    await pilot.press("enter")
+    await pilot.pause(0.2)
 
 
 def test_the_palette_finds_create_figure_and_runs_it(drive):
@@ -26,11 +44,7 @@ def test_the_palette_finds_create_figure_and_runs_it(drive):
             await pilot.pause(0.3)
             await pilot.press("enter")
             await pilot.pause(0.2)
-            # Create Figure asks for the file name, as `f` does.
-            assert app.spreadsheet.message_line.prompting
-            assert "Figure file name" in str(
-                app.spreadsheet.message_line.query_one("#message").render()
-            )
+            assert asks_for_the_figure_file(app)
 
     drive(scenario())
 
@@ -39,10 +53,7 @@ def test_the_palette_runs_see_figure_a_command_not_in_the_menu(drive):
     async def scenario():
         app = SassApp()
         async with app.run_test(size=(100, 30)) as pilot:
-            await pilot.press("ctrl+p", *"see figure")
-            await pilot.pause(0.3)
-            await pilot.press("enter")
-            await pilot.pause(0.2)
+            await choose_in_palette(pilot, "see figure")
             assert isinstance(app.screen, FigureScreen)
 
     drive(scenario())
@@ -93,3 +104,114 @@ def test_palette_snapshot(snap_compare):
 
 def test_help_screen_snapshot(snap_compare):
     assert snap_compare(SassApp(), press=["f1"], terminal_size=(80, 24))
+
+
+def palette_entries(app) -> list[tuple[str, str]]:
+    """(name, help) of every command the palette offers on the screen shown."""
+    palette = app.screen
+    assert isinstance(palette, CommandPalette)
+    provider = ScreenCommands(app.screen_stack[-2])
+    return [(name, help_text) for name, help_text, _ in provider._commands()]
+
+
+def test_the_palette_lists_every_screens_commands_with_their_screen(drive):
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(100, 30)) as pilot:
+            await pilot.press("ctrl+p")
+            await pilot.pause()
+            entries = palette_entries(app)
+            names = {name for name, _ in entries}
+            # The spreadsheet's own, the query screen's, the figure screen's, the family's.
+            assert {"Create Figure", "Undo", "See figure"} <= names
+            assert {"Input DB", "Query DB", "Build query", "Make Population", "Fit Test"} <= names
+            assert {"Overlay", "Write files", "New family"} <= names
+            helps = dict((name, help_text) for name, help_text in entries)
+            assert "(Query screen, i)" in helps["Input DB"]
+            assert "(Figure screen, o)" in helps["Overlay"]
+            assert "(Spreadsheet screen, f)" in helps["Create Figure"]
+            # Every binding of every other screen is there, but its way back (Esc).
+            for route in SCREENS[1:]:
+                screen_class = route.screen_class()
+                for command in class_commands(screen_class, app):
+                    if "escape" in command.keys or command.action in ("help", "quit"):
+                        continue
+                    if command.action.startswith(("app.", "screen.")):
+                        continue  # the screen shown has them too (quit, focus, copy)
+                    assert command.help, f"{route.title}: {command.name} has no help text"
+                    assert (command.name, helps.get(command.name)) in entries, command
+
+    drive(scenario())
+
+
+def test_the_palette_runs_a_query_screen_command_from_the_spreadsheet(drive, db):
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(100, 30)) as pilot:
+            await pilot.press("ctrl+p", *"input db")
+            await pilot.pause(0.3)
+            await pilot.press("enter")
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            # The query screen opened, its database opened, then Input DB asked.
+            assert isinstance(app.screen, QueryScreen)
+            assert app.screen.message_line.prompting
+            assert "Person" in str(app.screen.query_one("#message").render())
+            await pilot.press("escape")
+            await pilot.pause()
+            # And back: a spreadsheet command from the query screen goes back to it.
+            await choose_in_palette(pilot, "create figure")
+            assert app.screen is app.spreadsheet
+            assert asks_for_the_figure_file(app)
+
+    drive(scenario())
+
+
+def test_the_palette_opens_the_figure_screen_for_its_overlay(drive):
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(100, 30)) as pilot:
+            await choose_in_palette(pilot, "overlay")
+            assert isinstance(app.screen, FigureScreen)
+            assert app.figure_overlay == 50
+            assert len(app.screen.query_one(FigureView).outlines) == 2
+
+    drive(scenario())
+
+
+def test_a_screen_that_cannot_open_from_here_says_how_to_get_there(drive, db):
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(100, 30)) as pilot:
+            # A person is shown: Query opens from the population only.
+            app.session.show_person(Figure.default("female"), -1)
+            app.spreadsheet.refresh_screen()
+            await choose_in_palette(pilot, "input db")
+            assert app.screen is app.spreadsheet
+            assert "Disp. Pop. (o) first" in str(
+                app.spreadsheet.message_line.query_one("#message").render()
+            )
+
+    drive(scenario())
+
+
+def test_on_the_query_builder_pop_up_the_palette_lists_its_own_commands(drive, db):
+    from sass_tui.ui.query_builder import QueryBuilderScreen
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(120, 40)) as pilot:
+            await pilot.press("d")
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            await pilot.press("d", "b")
+            await pilot.pause()
+            builder = app.screen
+            assert isinstance(builder, QueryBuilderScreen)
+            entries = ScreenCommands(builder)._commands()
+            assert entries
+            assert not [
+                help_text for _, help_text, _ in entries if "Spreadsheet screen" in help_text
+            ]
+
+    drive(scenario())

@@ -1,0 +1,46 @@
+"""At 80 columns the footer keeps the most used keys visible beside ctrl+p."""
+
+from __future__ import annotations
+
+from sass_tui.ui.app import SassApp
+from sass_tui.ui.query_screen import QueryScreen
+
+
+def footer_text(app) -> str:
+    """The footer as the terminal shows it: the screen's last line."""
+    return app.screen._compositor.render_strips()[-1].text
+
+
+def test_the_spreadsheet_footer_at_80_columns(drive):
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(80, 24)) as pilot:
+            await pilot.pause()
+            text = footer_text(app)
+            for item in ("n Next", "p Prev", "f Figure", "d Query", "u Undo", "w Warn"):
+                assert item in text
+            for item in ("b Draw", "q Quit", "^p palette"):
+                assert item in text
+            await pilot.press("s")  # the strength page: Right -> Left joins them
+            await pilot.pause()
+            text = footer_text(app)
+            assert "r Side" in text and "q Quit" in text and "^p palette" in text
+
+    drive(scenario())
+
+
+def test_the_query_screen_footer_at_80_columns(drive, db):
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(80, 24)) as pilot:
+            await pilot.press("d")
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            assert isinstance(app.screen, QueryScreen)
+            text = footer_text(app)
+            for item in ("d Query", "a All", "s One", "l List", "e Exit"):
+                assert item in text
+            for item in ("b Build", "m Make", "f Fit", "q Quit", "^p palette"):
+                assert item in text
+
+    drive(scenario())
