@@ -138,3 +138,9 @@ class QueryLists:
     def import_files(self, files: FlatFiles) -> int:
         """Load flat files (one transaction: a failure stores nothing)."""
         return import_flat_files(self.conn, files)
+
+    def selected_ids(self) -> list[int]:
+        """The ids of the selected list, in the order they were selected."""
+        return [
+            r[0] for r in self.conn.execute("SELECT id_num FROM temp.selected_list ORDER BY seq")
+        ]

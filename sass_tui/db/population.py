@@ -53,28 +53,42 @@ def group_fields(word: str, rows: Sequence[str]) -> list[str]:
 
 
 def population_of(
-    conn: sqlite3.Connection, query: str, *, title: str | None = None, date: str | None = None
+    conn: sqlite3.Connection,
+    query: str | None = None,
+    *,
+    ids: Sequence[int] | None = None,
+    title: str | None = None,
+    date: str | None = None,
 ) -> SelectionPopulation:
-    """The population of the people `query` selects (see the module's docstring).
-    Raises PopulationError when nobody matches or a gender has fewer than
-    MIN_PEOPLE people; QueryError for a bad query."""
+    """The population of the people `query` selects, or of the people `ids`
+    names (the query screen's selected list; with both, the people of `ids`
+    the query selects).  See the module's docstring.  Raises PopulationError
+    when nobody is selected or a gender has fewer than MIN_PEOPLE people;
+    QueryError for a bad query."""
+    if query is None and ids is None:
+        raise PopulationError("a population needs a query or a list of people")
     when = date or _dt.date.today().isoformat()
     fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)]
-    values = load_values(conn, fields, query)
+    values = load_values(conn, fields, query, ids=ids)
+    what = _selection_words(query, ids)
     genders = np.array(values.genders, dtype=object)
     counts: dict[str, int] = {g: int(np.sum(genders == g)) for g in GENDERS if np.any(genders == g)}
     if not counts:
-        raise PopulationError(f"the query selects nobody: {query}")
+        raise PopulationError(f"{what} selects nobody")
     small = {g: n for g, n in counts.items() if n < MIN_PEOPLE}
     if small:
         said = people_words(small)
+        widen = (
+            "widen the query, or leave that gender out with `AND gender = ...`"
+            if ids is None
+            else "select more people, or delete that gender's people from the list"
+        )
         raise PopulationError(
-            f"the query selects only {said}; a population needs at least {MIN_PEOPLE} "
-            "people of each gender it holds (widen the query, or leave that gender out "
-            "with `AND gender = ...`)"
+            f"{what} selects only {said}; a population needs at least {MIN_PEOPLE} "
+            f"people of each gender it holds ({widen})"
         )
     described = people_words(counts)
-    heading = title or f"Population of {query}"
+    heading = title or f"Population of {what.removeprefix('the query ')}"
     groups: dict[str, PopulationData] = {}
     empty: list[str] = []
     start = 0
@@ -95,7 +109,14 @@ def population_of(
             data.sections[gender] = _percentiles(people).reshape(len(rows), 3, 3)
             data.lines[gender] = [0] * len(rows)
         groups[group] = data
-    return SelectionPopulation(query, counts, groups, tuple(empty))
+    return SelectionPopulation(what.removeprefix("the query "), counts, groups, tuple(empty))
+
+
+def _selection_words(query: str | None, ids: Sequence[int] | None) -> str:
+    if ids is None:
+        return f"the query {query}"
+    listed = f"the selected list of {len(ids):,} {'person' if len(ids) == 1 else 'people'}"
+    return listed if query is None else f"{listed} AND {query}"
 
 
 def _percentiles(people: np.ndarray) -> np.ndarray:

@@ -328,6 +328,9 @@ class QueryScreen(SassScreen):
         self.builder: QueryBuilder | None = None
         self.awaiting_build = False
         self.running = False
+        # The queries whose people were moved to the selected list (the
+        # population's title says them).
+        self.selected_from: list[str] = []
 
     def compose(self):
         with Horizontal(id="query-top"):
@@ -479,10 +482,15 @@ class QueryScreen(SassScreen):
         def select_all():
             with self._database() as lists:
                 moved = lists.select_all()
+                self._selected_from(lists.last_query if moved else None)
             self.show_page(0)
             self.say(f"{moved:,} people moved to the selected list.")
 
         self._list_command(select_all)
+
+    def _selected_from(self, query: str | None) -> None:
+        if query and query not in self.selected_from:
+            self.selected_from.append(query)
 
     def action_select_one(self) -> None:
         if self.which != QUERY_LIST:
@@ -495,7 +503,8 @@ class QueryScreen(SassScreen):
 
         def select_one():
             with self._database() as lists:
-                lists.select_one(person["id"])
+                if lists.select_one(person["id"]):
+                    self._selected_from(lists.last_query)
             self.show_page(self.sheet.first)
             self.say(f"{person['name']} moved to the selected list.")
 
@@ -679,12 +688,21 @@ class QueryScreen(SassScreen):
 
     # --- Make Population (issue 12) ----------------------------------------------------
     def action_make_population(self) -> None:
+        """From the selected list (Select One / Select All), not the last query."""
         if self.running:
             self.say(WAIT)
             return
-        query = self.lists.last_query if self.lists else None
-        if not query:
-            self.say("Make Population uses the people of the last query: run a query first.")
+        try:
+            with self._database() as lists:
+                ids = lists.selected_ids()
+        except Busy as exc:
+            self.say(str(exc))
+            return
+        if not ids:
+            self.say(
+                "Make Population uses the selected list, which is empty: "
+                "Select One (s) or Select All (a) people of a query first."
+            )
             return
 
         def answer(text: str) -> None:
@@ -693,23 +711,28 @@ class QueryScreen(SassScreen):
                 self.say("Make Population cancelled: no file name given.")
                 return
             self.running = True
-            self.say(f"Making the population of {query}, please wait...")
-            self.make_population(self.lists, query, Path(name).expanduser())
+            self.say(f"Making the population of {len(ids):,} selected people, please wait...")
+            sources = " OR ".join(f"({q})" for q in self.selected_from) or "selection"
+            title = f"Population of {len(ids):,} selected from {sources}"
+            self.make_population(self.lists, tuple(ids), Path(name).expanduser(), title)
 
         self.ask(
-            "Population file name (girth; the center-of-mass file goes beside it):",
+            f"Population of the {len(ids):,} selected people: file name "
+            "(girth; the center-of-mass file goes beside it):",
             answer,
             on_cancel=lambda: self.say("Make Population cancelled."),
         )
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
-    def make_population(self, lists: QueryLists, query: str, target: Path) -> None:
+    def make_population(
+        self, lists: QueryLists, ids: tuple[int, ...], target: Path, title: str
+    ) -> None:
         from sass_tui.db.population import population_of
         from sass_tui.db.population_files import write_population_files
 
         try:
             with lists.lock:
-                result = population_of(lists.conn, query)
+                result = population_of(lists.conn, ids=ids, title=title)
             paths = write_population_files(result, target)
         except DB_ERRORS as exc:
             self.post_message(PopulationMade(error=str(exc)))
