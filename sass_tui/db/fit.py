@@ -320,3 +320,94 @@ def load_family(
     return build_family(
         gender, fields, values.ids, values.names, values.matrix, target, model, kind
     )
+
+
+# --- the limits drawn on the population (the Fit Test screen's histogram) --------
+
+
+@dataclass(frozen=True)
+class LimitLine:
+    """One numeric comparison of the design limits: `field op value` (canonical unit)."""
+
+    field: str  # query-language name, e.g. "measure.sittingheight"
+    op: str
+    value: float
+
+
+@dataclass(frozen=True)
+class LimitHistogram:
+    """The population's values of one limited field, binned per gender.
+    Bin k holds edges[k] <= v < edges[k+1] (the last bin also holds its right
+    edge); people lacking the value are counted in `missing`."""
+
+    field: str
+    unit: str
+    edges: npt.NDArray[np.float64]
+    counts: dict[str, npt.NDArray[np.int64]]  # gender -> people per bin
+    lines: tuple[LimitLine, ...]  # the limits on this field
+    missing: int
+
+
+def limit_lines(limits: str) -> tuple[LimitLine, ...]:
+    """The comparisons of `limits` on numeric fields, in the order written
+    (word and text fields, e.g. gender or branch, have no place on an axis)."""
+    from sass_tui.db.query import QueryError, parser
+    from sass_tui.db.values import numeric_field
+
+    compile_query(limits)
+    out: list[LimitLine] = []
+    for node in parser().parse(limits).iter_subtrees_topdown():
+        if node.data != "comparison":
+            continue
+        names, op = node.children[0], node.children[1]
+        field = ".".join(str(n) for n in names.children)
+        try:
+            numeric_field(field)
+        except QueryError:
+            continue
+        # The compiler's own reading of the value: its unit converted to the field's.
+        term = compile_query(limits[node.meta.start_pos : node.meta.end_pos])
+        out.append(LimitLine(field, str(op), float(term.params[0])))  # type: ignore[arg-type]
+    return tuple(out)
+
+
+def limit_histograms(
+    conn: sqlite3.Connection,
+    limits: str,
+    population: str = DEFAULT_POPULATION,
+    bins: int = 20,
+) -> tuple[LimitHistogram, ...]:
+    """One histogram per limited numeric field (in the order the limits name
+    them) of the people `population` selects, with each limit's value inside
+    the binned range so that it can be drawn on it."""
+    from sass_tui.db.values import load_values
+
+    lines = limit_lines(limits)
+    fields = list(dict.fromkeys(line.field for line in lines))
+    if not fields:
+        return ()
+    values = load_values(conn, fields, population)
+    genders = np.array(values.genders, dtype=object)
+    out = []
+    for k, field in enumerate(fields):
+        column = values.matrix[:, k]
+        present = ~np.isnan(column)
+        mine = tuple(line for line in lines if line.field == field)
+        span = np.concatenate([column[present], [line.value for line in mine]])
+        edges = np.histogram_bin_edges(span, bins=bins)
+        counts: dict[str, npt.NDArray[np.int64]] = {
+            g: np.histogram(column[present & (genders == g)], bins=edges)[0].astype(np.int64)
+            for g in GENDERS
+            if np.any(genders == g)
+        }
+        out.append(
+            LimitHistogram(
+                field=field,
+                unit=values.units[k],
+                edges=edges,
+                counts=counts,
+                lines=mine,
+                missing=int((~present).sum()),
+            )
+        )
+    return tuple(out)
