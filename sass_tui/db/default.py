@@ -21,6 +21,7 @@ import sqlite3
 from collections.abc import Callable
 from pathlib import Path
 
+from sass_tui.db.progress import Cancel, Steps
 from sass_tui.db.schema import (
     DatabaseError,
     check_writable,
@@ -75,7 +76,11 @@ def people_count(conn: sqlite3.Connection) -> int:
 
 
 def create_default_database(
-    path: str | Path, progress: Progress | None = None, *, replace: bool = False
+    path: str | Path,
+    progress: Progress | None = None,
+    *,
+    replace: bool = False,
+    cancel: Cancel | None = None,
 ) -> dict[str, int]:
     """Build the default database at `path` in place (see the module's docstring).
 
@@ -99,7 +104,8 @@ def create_default_database(
                 conn.execute("ROLLBACK")
                 return {}
             recreate_schema(conn)
-            counts = fill_default(conn, progress)
+            # A cancel (Cancelled at the next chunk of the survey) rolls it all back.
+            counts = fill_default(conn, Steps(progress, cancel, "building the default database"))
             conn.execute("COMMIT")
         except BaseException:
             if conn.in_transaction:

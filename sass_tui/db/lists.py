@@ -24,9 +24,12 @@ from pathlib import Path
 from typing import Any
 
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
+from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import LIST_FIELDS, compile_query
 from sass_tui.db.schema import connect, transaction
 
+# People searched between two progress reports of a query (QueryLists.run).
+RUN_CHUNK = 5000
 QUERY_LIST = "query"
 SELECTED_LIST = "selected"
 _TABLES = {QUERY_LIST: "temp.query_list", SELECTED_LIST: "temp.selected_list"}
@@ -63,9 +66,13 @@ class QueryLists:
         return self._counts[which]
 
     # --- running a query -----------------------------------------------------
-    def run(self, text: str) -> int:
+    def run(self, text: str, progress: Progress | None = None, cancel: Cancel | None = None) -> int:
         """Replace the query list with the people `text` finds; returns how many.
-        A bad query raises QueryError and leaves both lists as they were."""
+        A bad query raises QueryError and leaves both lists as they were.
+
+        With `progress` or `cancel` the people are searched in id ranges of
+        RUN_CHUNK: `progress(people searched, people in the database)` after
+        each, and `cancel` stops it with Cancelled, the lists as they were."""
         compiled = compile_query(text)
         sql = (
             f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
@@ -73,9 +80,37 @@ class QueryLists:
         )
         with transaction(self.conn, "DEFERRED"):
             self.conn.execute("DELETE FROM temp.query_list")
-            count = self.conn.execute(sql, compiled.params).rowcount
+            if progress is None and cancel is None:
+                count = self.conn.execute(sql, compiled.params).rowcount
+            else:
+                count = self._run_in_ranges(
+                    sql, compiled.params, Steps(progress, cancel, "the query"), cancel
+                )
         self._counts[QUERY_LIST] = count
         self.last_query = text
+        return count
+
+    def _run_in_ranges(
+        self, sql: str, params: tuple[object, ...], steps: Steps, cancel: Cancel | None
+    ) -> int:
+        starts = [
+            r[0]
+            for r in self.conn.execute(
+                "SELECT id_num FROM (SELECT id_num, row_number() OVER (ORDER BY id_num) - 1 AS k "
+                "FROM person) WHERE k % ? = 0",
+                (RUN_CHUNK,),
+            )
+        ]
+        (total,) = self.conn.execute("SELECT count(*) FROM person").fetchone()
+        ranged = f"{sql} AND p.id_num >= ? AND p.id_num < ?"
+        bounds = [*starts, None]
+        count = 0
+        steps(0, total)
+        with interruptible(self.conn, cancel, "the query"):
+            for k, (low, high) in enumerate(zip(bounds, bounds[1:])):
+                top = high if high is not None else 1 << 62
+                count += self.conn.execute(ranged, (*params, low, top)).rowcount
+                steps(min((k + 1) * RUN_CHUNK, total), total)
         return count
 
     # --- reading -----------------------------------------------------------------
@@ -135,9 +170,11 @@ class QueryLists:
         return bool(gone)
 
     # --- Input DB ------------------------------------------------------------------------
-    def import_files(self, files: FlatFiles) -> int:
-        """Load flat files (one transaction: a failure stores nothing)."""
-        return import_flat_files(self.conn, files)
+    def import_files(
+        self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
+    ) -> int:
+        """Load flat files (one transaction: a failure or a cancel stores nothing)."""
+        return import_flat_files(self.conn, files, progress, cancel)
 
     def selected_ids(self) -> list[int]:
         """The ids of the selected list, in the order they were selected."""

@@ -12,11 +12,12 @@ from __future__ import annotations
 
 import datetime as _dt
 import sqlite3
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
+from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.schema import CENTER_OF_MASS_NAMES, GIRTH_NAMES
 from sass_tui.db.values import load_values
 from sass_tui.model.errors import SassError
@@ -59,17 +60,25 @@ def population_of(
     ids: Sequence[int] | None = None,
     title: str | None = None,
     date: str | None = None,
+    progress: Progress | None = None,
+    cancel: Cancel | None = None,
 ) -> SelectionPopulation:
     """The population of the people `query` selects, or of the people `ids`
     names (the query screen's selected list; with both, the people of `ids`
     the query selects).  See the module's docstring.  Raises PopulationError
     when nobody is selected or a gender has fewer than MIN_PEOPLE people;
-    QueryError for a bad query."""
+    QueryError for a bad query.  `progress(columns done, columns)`; `cancel`
+    stops it with Cancelled (it writes nothing anyway: the caller writes)."""
     if query is None and ids is None:
         raise PopulationError("a population needs a query or a list of people")
     when = date or _dt.date.today().isoformat()
     fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)]
-    values = load_values(conn, fields, query, ids=ids)
+    steps = Steps(progress, cancel, "making the population")
+    total = len(fields) * len(GENDERS) + 1
+    steps(0, total)
+    with interruptible(conn, cancel, "making the population"):
+        values = load_values(conn, fields, query, ids=ids)
+    steps(1, total)
     what = _selection_words(query, ids)
     genders = np.array(values.genders, dtype=object)
     counts: dict[str, int] = {g: int(np.sum(genders == g)) for g in GENDERS if np.any(genders == g)}
@@ -92,6 +101,12 @@ def population_of(
     groups: dict[str, PopulationData] = {}
     empty: list[str] = []
     start = 0
+    done = [1]
+
+    def column_done() -> None:
+        done[0] += 1
+        steps(done[0], total)
+
     for group, _word, rows in _GROUPS:
         width = len(rows) * 3
         block = values.matrix[:, start : start + width]
@@ -106,9 +121,10 @@ def population_of(
         )
         for gender in counts:
             people = block[genders == gender]
-            data.sections[gender] = _percentiles(people).reshape(len(rows), 3, 3)
+            data.sections[gender] = _percentiles(people, column_done).reshape(len(rows), 3, 3)
             data.lines[gender] = [0] * len(rows)
         groups[group] = data
+    steps(total, total)
     return SelectionPopulation(what.removeprefix("the query "), counts, groups, tuple(empty))
 
 
@@ -119,10 +135,11 @@ def _selection_words(query: str | None, ids: Sequence[int] | None) -> str:
     return listed if query is None else f"{listed} AND {query}"
 
 
-def _percentiles(people: np.ndarray) -> np.ndarray:
+def _percentiles(people: np.ndarray, column_done: Callable[[], None]) -> np.ndarray:
     """Per column, 5th/50th/95th of the values present (NaN below MIN_PEOPLE)."""
     out = np.full((people.shape[1], len(PERCENTILES)), np.nan)
     for k in range(people.shape[1]):
+        column_done()
         column = people[:, k]
         column = column[~np.isnan(column)]
         if len(column) >= MIN_PEOPLE:
