@@ -12,7 +12,8 @@ FIRST_ID = 900_000
 
 
 def write_big_flat_files(directory: Path, people: int = 3000) -> FlatFiles:
-    """person.db and girth.db for `people` people (ids from FIRST_ID)."""
+    """person.db and girth.db for `people` people (ids from FIRST_ID); the
+    joint-limit and center-of-mass files Input DB asks for are empty."""
     directory.mkdir(parents=True, exist_ok=True)
     person = directory / "person.db"
     girth = directory / "girth.db"
@@ -29,4 +30,10 @@ def write_big_flat_files(directory: Path, people: int = 3000) -> FlatFiles:
                 out.write(
                     f"{FIRST_ID + k},{name.upper()},{10 + r % 7}.5,{11 + k % 5}.25,20.0,1.0\n"
                 )
-    return FlatFiles(person=person, girth=girth)
+    joint_limits = directory / "jntlmt.db"
+    center_of_mass = directory / "cmass.db"
+    joint_limits.write_text("")
+    center_of_mass.write_text("")
+    return FlatFiles(
+        person=person, girth=girth, joint_limits=joint_limits, center_of_mass=center_of_mass
+    )
