@@ -3,8 +3,8 @@ over a population (default `source = ansur2`), shown as `sass fit` prints it:
 the shares per gender and weighted, the naive estimate, the per-limit table;
 below it a histogram (textual-plotext) of one limited measurement for the
 population, per gender, with its limit(s) drawn as vertical lines; `l` shows
-the next limited measurement.  The test runs in a worker; Escape returns to
-the query screen."""
+the next limited measurement.  The test runs in a worker, with a progress
+bar; Escape returns to the query screen (cancelling the test if it runs)."""
 
 from __future__ import annotations
 
@@ -20,6 +20,7 @@ from textual_plotext import PlotextPlot
 from sass_tui.db.fit import LimitHistogram
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.lists import QueryLists
+from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
 
 GENDER_COLORS = {"male": "blue", "female": "magenta"}
 
@@ -47,7 +48,7 @@ class FitScreen(Screen):
     FitScreen #fit-plot { height: 1fr; min-height: 6; }
     """
     BINDINGS = [
-        Binding("escape", "app.pop_screen", "Back to the query"),
+        Binding("escape", "back", "Back to the query"),
         Binding("l", "next_limit", "Next limit"),
     ]
 
@@ -60,6 +61,7 @@ class FitScreen(Screen):
         self.shown = 0  # which histogram is drawn
         # What was last handed to plotext: bin centers and, per gender, the counts.
         self.plotted: tuple[list[float], dict[str, list[int]]] = ([], {})
+        self.work: Work | None = None
 
     def compose(self):
         yield Static(f"Fit Test of {self.limits}", id="fit-title")
@@ -67,20 +69,34 @@ class FitScreen(Screen):
             yield Static(f"Testing over {self.population}, please wait...", id="fit-table")
         yield Static("", id="fit-plot-title")
         yield PlotextPlot(id="fit-plot")
+        yield WorkBar(id="work")
         yield Footer(compact=True)
 
     def on_mount(self) -> None:
-        self.run_fit(self.lists, self.limits, self.population)
+        self.work = Work(self, "Fit Test")
+        self.query_one(WorkBar).start(self.work)
+        self.run_fit(self.lists, self.limits, self.population, self.work)
+
+    def on_work_progressed(self, event: WorkProgressed) -> None:
+        event.stop()
+        self.query_one(WorkBar).show(event)
+
+    def action_back(self) -> None:
+        if self.work is not None:
+            self.work.cancel.set()  # the test stops at its next step; nothing to undo
+        self.app.pop_screen()
 
     @work(thread=True, exclusive=True, group="fit", exit_on_error=False)
-    def run_fit(self, lists: QueryLists, limits: str, population: str) -> None:
+    def run_fit(self, lists: QueryLists, limits: str, population: str, work: Work) -> None:
         from sass_tui.db.fit import fit_test, limit_histograms
         from sass_tui.ui.query_screen import DB_ERRORS
 
         try:
             with lists.lock:
-                result = fit_test(lists.conn, limits, population)
-                histograms = limit_histograms(lists.conn, limits, population)
+                result = fit_test(
+                    lists.conn, limits, population, progress=work.report, cancel=work.cancel
+                )
+                histograms = limit_histograms(lists.conn, limits, population, cancel=work.cancel)
         except DB_ERRORS as exc:
             self.post_message(FitDone(error=str(exc)))
             return
@@ -88,6 +104,8 @@ class FitScreen(Screen):
 
     def on_fit_done(self, event: FitDone) -> None:
         event.stop()
+        self.work = None
+        self.query_one(WorkBar).stop()
         table = self.query_one("#fit-table", Static)
         text = f"The fit test was not run: {event.error}" if event.error else event.text
         table.update(Text(text, no_wrap=True))  # a wide table scrolls sideways

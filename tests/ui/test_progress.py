@@ -192,3 +192,63 @@ def test_reports_are_thinned_to_the_screen_but_the_last_always_comes():
         work.report(done, 10_000)  # far faster than 20 a second
     assert target.posted[0] == (1, 10_000) and target.posted[-1] == (10_000, 10_000)
     assert len(target.posted) < 100
+
+
+def test_a_family_shows_its_steps_and_escape_cancels_it(drive, db, monkeypatch):
+    from textual.widgets import DataTable
+
+    from sass_tui.ui.family_screen import FamilyScreen
+
+    monkeypatch.setattr("sass_tui.ui.progress.MAX_UPDATES", 10**9)
+    held = HeldWork(monkeypatch, "Family")
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(100, 37)) as pilot:
+            await pilot.press("y", "enter", *"stature,mass", "enter", *"90", "enter")
+            screen = app.screen
+            assert isinstance(screen, FamilyScreen)
+            bar = screen.query_one(WorkBar)
+            await held.until_shown(pilot, bar)
+            assert bar.text == "Family 1/3"
+            await pilot.press("escape")  # cancels, stays on the screen
+            held.gate.set()
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            assert app.screen is screen
+            assert str(screen.query_one("#message").render()) == (
+                "Family cancelled: nothing built or written."
+            )
+            assert screen.family is None and screen.query_one(DataTable).row_count == 0
+            await pilot.press("escape")  # nothing running: back
+            assert app.screen is not screen
+
+    drive(scenario())
+
+
+def test_the_fit_test_shows_its_steps_and_escape_cancels_it(drive, db, monkeypatch):
+    from sass_tui.ui.fit_screen import FitScreen
+    from sass_tui.ui.query_screen import QueryScreen
+
+    monkeypatch.setattr("sass_tui.ui.progress.MAX_UPDATES", 10**9)
+    held = HeldWork(monkeypatch, "Fit Test")
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            screen = await open_query_screen(pilot)
+            screen.start_query("stature < 190 cm")
+            await settle(pilot)
+            await pilot.press("f", "enter")
+            fit = app.screen
+            assert isinstance(fit, FitScreen)
+            await held.until_shown(pilot, fit.query_one(WorkBar))
+            assert fit.query_one(WorkBar).text == "Fit Test 1/3"
+            work = fit.work
+            await pilot.press("escape")
+            assert work is not None and work.cancel.is_set()
+            held.gate.set()
+            await settle(pilot)
+            assert isinstance(app.screen, QueryScreen)
+
+    drive(scenario())
