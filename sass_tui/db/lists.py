@@ -71,8 +71,9 @@ class QueryLists:
         A bad query raises QueryError and leaves both lists as they were.
 
         With `progress` or `cancel` the people are searched in id ranges of
-        RUN_CHUNK: `progress(people searched, people in the database)` after
-        each, and `cancel` stops it with Cancelled, the lists as they were."""
+        about RUN_CHUNK people: `progress(people searched, people in the
+        database)` after each, and `cancel` stops it with Cancelled (between
+        ranges or inside one), the lists as they were."""
         compiled = compile_query(text)
         sql = (
             f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
@@ -93,24 +94,23 @@ class QueryLists:
     def _run_in_ranges(
         self, sql: str, params: tuple[object, ...], steps: Steps, cancel: Cancel | None
     ) -> int:
-        starts = [
-            r[0]
-            for r in self.conn.execute(
-                "SELECT id_num FROM (SELECT id_num, row_number() OVER (ORDER BY id_num) - 1 AS k "
-                "FROM person) WHERE k % ? = 0",
-                (RUN_CHUNK,),
-            )
-        ]
-        (total,) = self.conn.execute("SELECT count(*) FROM person").fetchone()
-        ranged = f"{sql} AND p.id_num >= ? AND p.id_num < ?"
-        bounds = [*starts, None]
-        count = 0
+        """The query over id ranges, each about RUN_CHUNK people wide; the people
+        searched are estimated from the ids passed (exact at the end)."""
+        low, high, total = self.conn.execute(
+            "SELECT min(id_num), max(id_num), count(*) FROM person"
+        ).fetchone()
         steps(0, total)
+        if not total:
+            return 0
+        ranges = max(1, -(-total // RUN_CHUNK))
+        span = high - low + 1
+        cuts = [low + span * k // ranges for k in range(ranges)] + [high + 1]
+        ranged = f"{sql} AND p.id_num >= ? AND p.id_num < ?"
+        count = 0
         with interruptible(self.conn, cancel, "the query"):
-            for k, (low, high) in enumerate(zip(bounds, bounds[1:])):
-                top = high if high is not None else 1 << 62
-                count += self.conn.execute(ranged, (*params, low, top)).rowcount
-                steps(min((k + 1) * RUN_CHUNK, total), total)
+            for start, stop in zip(cuts, cuts[1:]):
+                count += self.conn.execute(ranged, (*params, start, stop)).rowcount
+                steps(total * (stop - low) // span, total)
         return count
 
     # --- reading -----------------------------------------------------------------
