@@ -2,7 +2,7 @@
 function run with a progress callback and a cancel (a threading.Event that is
 never set, as in the TUI) against the same call without, in the same run.
 
-    python benchmarks/progress_overhead.py [--db PATH] [--runs N] [--people N]
+    python benchmarks/progress_overhead.py [--db PATH] [--runs N] [--people N] [--scale N]
 
 Without --db it builds the default database in a temporary directory.
 Measured, median of N runs each, interleaved:
@@ -13,6 +13,9 @@ Measured, median of N runs each, interleaved:
   of the database each time;
 - Make Population of the ANSUR II women (population_of);
 - the seat's fit test (docs/accommodation.md).
+With --scale N it also builds a database of N generated people
+(benchmarks/db_million.py's generator) and times the report's sample query
+on it, where the query takes long enough to need a bar.
 Prints the ratio with/without (1.00 = free).
 """
 
@@ -29,6 +32,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from big_flat_files import write_big_flat_files
 
@@ -65,6 +69,7 @@ def main() -> None:
     parser.add_argument("--db")
     parser.add_argument("--runs", type=int, default=7)
     parser.add_argument("--people", type=int, default=3000)
+    parser.add_argument("--scale", type=int, default=0, help="also a query on N generated people")
     args = parser.parse_args()
     reports = []
 
@@ -123,6 +128,26 @@ def main() -> None:
             args.runs * 3,
         )
         conn.close()
+        if args.scale:
+            import numpy as np
+            from db_million import build
+
+            big = Path(tmp) / "scale.db"
+            conn = connect(big, create=True)
+            build(conn, args.scale, np.random.default_rng(1988))
+            conn.close()
+            lists = QueryLists.open(big)
+            sample = (
+                "gender = male AND girth.right_upper_arm.z > 28 cm "
+                "AND strength.elbow_flexion.max > 20 ft-lb"
+            )
+            compare(
+                f"the report's sample query on {args.scale:,} generated people",
+                lambda: lists.run(sample),
+                lambda: lists.run(sample, progress, cancel),
+                args.runs,
+            )
+            lists.close()
 
 
 if __name__ == "__main__":

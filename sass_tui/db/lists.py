@@ -29,7 +29,7 @@ from sass_tui.db.query import LIST_FIELDS, compile_query
 from sass_tui.db.schema import connect, transaction
 
 # People searched between two progress reports of a query (QueryLists.run).
-RUN_CHUNK = 5000
+RUN_CHUNK = 20_000
 QUERY_LIST = "query"
 SELECTED_LIST = "selected"
 _TABLES = {QUERY_LIST: "temp.query_list", SELECTED_LIST: "temp.selected_list"}

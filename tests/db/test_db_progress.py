@@ -85,7 +85,10 @@ def test_default_database_build_cancelled_leaves_no_people(tmp_path):
         assert conn.execute("SELECT count(*) FROM person").fetchone()[0] == 0
 
 
-def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(default_db_file, tmp_path):
+def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(
+    default_db_file, tmp_path, monkeypatch
+):
+    monkeypatch.setattr("sass_tui.db.lists.RUN_CHUNK", 2000)  # several ranges of the people
     lists = QueryLists.open(default_db_file)
     try:
         assert lists.run("gender = female") > 0
