@@ -65,16 +65,18 @@ def test_fit_test_of_the_query_over_ansur2(drive, db):
     drive(scenario())
 
 
-def test_fit_screen_snapshot(snap_compare, db):
-    async def run_before(pilot):
-        await pilot.press("d")
-        await settle(pilot)
-        pilot.app.screen.start_query(LIMITS)
-        await settle(pilot)
-        await pilot.press("f", "enter")
-        await settle(pilot)
+async def open_fit_screen(pilot) -> None:
+    """The query screen, LIMITS run as the query, then Fit Test over ANSUR II."""
+    await pilot.press("d")
+    await settle(pilot)
+    pilot.app.screen.start_query(LIMITS)
+    await settle(pilot)
+    await pilot.press("f", "enter")
+    await settle(pilot)
 
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=(80, 24))
+
+def test_fit_screen_snapshot(snap_compare, db):
+    assert snap_compare(SassApp(db_path=db), run_before=open_fit_screen, terminal_size=(80, 24))
 
 
 def _direct_counts(edges, values) -> list[int]:
@@ -101,12 +103,7 @@ def test_fit_screen_histogram_counts_the_population_and_draws_the_limits(drive, 
     async def scenario():
         app = SassApp(db_path=db)
         async with app.run_test(size=SIZE) as pilot:
-            await pilot.press("d")
-            await settle(pilot)
-            app.screen.start_query(LIMITS)
-            await settle(pilot)
-            await pilot.press("f", "enter")
-            await settle(pilot)
+            await open_fit_screen(pilot)
             screen = app.screen
             assert isinstance(screen, FitScreen)
             for name, limit in (("sittingheight", 95.0), ("stature", 160.0)):
@@ -130,12 +127,4 @@ def test_fit_screen_histogram_counts_the_population_and_draws_the_limits(drive, 
 
 
 def test_fit_screen_histogram_snapshot(snap_compare, db):
-    async def run_before(pilot):
-        await pilot.press("d")
-        await settle(pilot)
-        pilot.app.screen.start_query(LIMITS)
-        await settle(pilot)
-        await pilot.press("f", "enter")
-        await settle(pilot)
-
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=(100, 30))
+    assert snap_compare(SassApp(db_path=db), run_before=open_fit_screen, terminal_size=(100, 30))

@@ -32,19 +32,30 @@ async def query_young_women(pilot) -> None:
     await settle(pilot)
 
 
-def test_make_population_writes_files_of_the_medians_and_loads_them(drive, db, tmp_path):
+def young_women(db) -> list[int]:
     with connect(db) as conn:
-        ids = [
+        return [
             r[0]
             for r in conn.execute(
                 "SELECT id_num FROM person WHERE gender = 'female' AND age < 25 ORDER BY id_num"
             )
         ]
+
+
+def medians_of(db, ids: list[int]) -> dict[str, np.ndarray]:
+    """Each girth and center-of-mass cell's median over exactly these people,
+    from their own values (fetch_individual), not from the population code."""
+    with connect(db) as conn:
         people = [fetch_individual(conn, i) for i in ids]
-    medians = {
+    return {
         group: np.nanmedian(np.stack([p.groups[group] for p in people]), axis=0)
         for group in (GIRTH, CENTER_OF_MASS)
     }
+
+
+def test_make_population_writes_files_of_the_medians_and_loads_them(drive, db, tmp_path):
+    ids = young_women(db)
+    medians = medians_of(db, ids)
     target = tmp_path / "young.dat"
 
     async def scenario():
@@ -114,20 +125,10 @@ def test_make_population_refuses_a_gender_with_fewer_than_20(drive, db, tmp_path
 def test_make_population_uses_the_selected_list_not_the_last_query(drive, db, tmp_path):
     """25 young women picked one by one, then another query run: the population
     is those 25 women's, whose medians the test computes from the database."""
-    with connect(db) as conn:
-        young = [
-            r[0]
-            for r in conn.execute(
-                "SELECT id_num FROM person WHERE gender = 'female' AND age < 25 ORDER BY id_num"
-            )
-        ]
-        chosen = young[:25]
-        people = [fetch_individual(conn, i) for i in chosen]
+    young = young_women(db)
+    chosen = young[:25]
     assert len(young) > len(chosen)
-    medians = {
-        group: np.nanmedian(np.stack([p.groups[group] for p in people]), axis=0)
-        for group in (GIRTH, CENTER_OF_MASS)
-    }
+    medians = medians_of(db, chosen)
     target = tmp_path / "picked.dat"
 
     async def scenario():
