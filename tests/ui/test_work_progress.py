@@ -255,3 +255,31 @@ def test_the_fit_test_shows_its_steps_and_escape_cancels_it(drive, db, monkeypat
             assert isinstance(app.screen, QueryScreen)
 
     drive(scenario())
+
+
+def test_escape_during_the_first_build_of_the_default_database_leaves_no_file(
+    drive, tmp_path, monkeypatch
+):
+    """Cancelled at its first report: rolled back and the file removed, so the
+    next start builds it again instead of opening an empty database."""
+    path = tmp_path / "data" / "sass.db"
+    monkeypatch.setenv("SASS_DB", str(path))
+    held = HeldWork(monkeypatch, "Building the database")
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("d")
+            screen = app.screen
+            bar = screen.query_one(WorkBar)
+            await held.until_shown(pilot, bar)
+            done, total = held.reports[-1]
+            assert bar.text == f"Building the database {done:,}/{total:,}"
+            await pilot.press("escape")
+            held.gate.set()
+            await settle(pilot)
+            assert "cancelled" in message(app)
+            assert screen.lists is None
+
+    drive(scenario())
+    assert not path.exists()
