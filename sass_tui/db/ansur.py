@@ -26,6 +26,7 @@ from typing import Any, BinaryIO, NoReturn, cast
 
 import numpy as np
 
+from sass_tui.db.progress import Cancel, Steps
 from sass_tui.db.schema import (
     GIRTH_NAMES,
     PERSON_ATTRIBUTES,
@@ -525,11 +526,13 @@ def import_ansur(
     progress: Callable[[int, int], None] | None = None,
     *,
     label: str = DEFAULT_LABEL,
+    cancel: Cancel | None = None,
 ) -> dict[str, int]:
     """Import the files in one transaction (a bad line stores nothing).
-    Returns people per gender."""
+    Returns people per gender.  `progress(bytes read, bytes in all files)`;
+    `cancel` stops it at the next chunk with Cancelled, everything rolled back."""
     if not label.strip():
         raise AnsurImportError("the source label is empty; expected e.g. ansur2")
     check_writable(conn)
     with transaction(conn):
-        return store_ansur(conn, paths, label=label, progress=progress)
+        return store_ansur(conn, paths, label=label, progress=Steps(progress, cancel, "the import"))

@@ -21,6 +21,7 @@ import sqlite3
 from collections.abc import Callable
 from pathlib import Path
 
+from sass_tui.db.progress import Cancel, Steps
 from sass_tui.db.schema import (
     DatabaseError,
     check_writable,
@@ -97,7 +98,11 @@ def people_count(conn: sqlite3.Connection) -> int:
 
 
 def create_default_database(
-    path: str | Path, progress: Progress | None = None, *, replace: bool = False
+    path: str | Path,
+    progress: Progress | None = None,
+    *,
+    replace: bool = False,
+    cancel: Cancel | None = None,
 ) -> dict[str, int]:
     """Build the default database at `path` in place (see the module's docstring).
 
@@ -108,7 +113,8 @@ def create_default_database(
     path = Path(path)
     conn = connect(path, create=True, rebuild=True)
     try:
-        return _build(conn, path, progress, replace)
+        # A cancel (Cancelled at the next chunk of the survey) rolls it all back.
+        return _build(conn, path, Steps(progress, cancel, "building the default database"), replace)
     except sqlite3.Error as exc:
         refused = write_refused(exc, path)  # a full disk: rolled back, say so
         if refused is None:

@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
+from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import compile_conjuncts, compile_query
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
@@ -159,8 +160,13 @@ def fit_test(
     population: str = DEFAULT_POPULATION,
     mix: dict[str, float] | None = None,
     failing: bool = False,
+    progress: Progress | None = None,
+    cancel: Cancel | None = None,
 ) -> FitResult:
-    """Run the design limits `limits` over the people `population` selects."""
+    """Run the design limits `limits` over the people `population` selects.
+    `progress(steps done, 3)`; `cancel` stops it (also mid-statement) with Cancelled."""
+    steps = Steps(progress, cancel, "the fit test")
+    steps(0, 3)
     weights = check_mix(mix)
     compile_conjuncts(limits)  # errors point into the limits' own text
     compile_query(population)
@@ -173,16 +179,21 @@ def fit_test(
         f"WHERE {people.where} ORDER BY p.id_num"
     )
     params = tuple(v for t in terms for v in t.params) + people.params
-    rows = conn.execute(sql, params).fetchall()
+    with interruptible(conn, cancel, "the fit test"):
+        rows = conn.execute(sql, params).fetchall()
+    steps(1, 3)
     if not rows:
         raise FitError(f"the population {population!r} selects nobody")
     ids = np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows))
     gender = np.array([r[1] for r in rows], dtype=object)
     # (people, limits): 1.0 passes, 0.0 fails, NaN not measured.
     passes = np.array([r[2:] for r in rows], dtype=float).reshape(len(rows), len(terms))
-    return _summarise(
+    steps(2, 3)
+    result = _summarise(
         conn, tuple(t.text for t in terms), population, weights, ids, gender, passes, failing
     )
+    steps(3, 3)
+    return result
 
 
 def _summarise(
@@ -301,11 +312,15 @@ def load_family(
     kind: str = "boundary",
     population: str = DEFAULT_POPULATION,
     predictor: Predictor | None = None,
+    progress: Progress | None = None,
+    cancel: Cancel | None = None,
 ) -> Family:
     """The manikin family of `gender` over `measures` (see
     `sass_tui.model.accommodation`): the population's people of that gender,
     their values, and the database's prediction model to complete each manikin.
-    `measures` are `--measures` names (`stature`, `mass`, `sittingheight`, ...)."""
+    `measures` are `--measures` names (`stature`, `mass`, `sittingheight`, ...).
+    `progress(steps done, 3)`: the people read, the model, the family built;
+    `cancel` stops it with Cancelled between them (it writes nothing)."""
     from sass_tui.db.predict import open_predictor
     from sass_tui.db.values import load_values
 
@@ -313,10 +328,111 @@ def load_family(
         raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
     fields = [measure_field(m) for m in measures]
     compile_query(population)  # its own error, before the combined query's
-    values = load_values(conn, fields, f"({population}) AND gender = {gender}")
+    steps = Steps(progress, cancel, "the family")
+    steps(0, 3)
+    with interruptible(conn, cancel, "the family"):
+        values = load_values(conn, fields, f"({population}) AND gender = {gender}")
+    steps(1, 3)
     if len(values) == 0:
         raise FitError(f"the population {population!r} has no {gender} people")
-    model = predictor if predictor is not None else open_predictor(conn)
-    return build_family(
+    with interruptible(conn, cancel, "the family"):
+        model = predictor if predictor is not None else open_predictor(conn)
+    steps(2, 3)
+    family = build_family(
         gender, fields, values.ids, values.names, values.matrix, target, model, kind
     )
+    steps(3, 3)
+    return family
+
+
+# --- the limits drawn on the population (the Fit Test screen's histogram) --------
+
+
+@dataclass(frozen=True)
+class LimitLine:
+    """One numeric comparison of the design limits: `field op value` (canonical unit)."""
+
+    field: str  # query-language name, e.g. "measure.sittingheight"
+    op: str
+    value: float
+
+
+@dataclass(frozen=True)
+class LimitHistogram:
+    """The population's values of one limited field, binned per gender.
+    Bin k holds edges[k] <= v < edges[k+1] (the last bin also holds its right
+    edge); people lacking the value are counted in `missing`."""
+
+    field: str
+    unit: str
+    edges: npt.NDArray[np.float64]
+    counts: dict[str, npt.NDArray[np.int64]]  # gender -> people per bin
+    lines: tuple[LimitLine, ...]  # the limits on this field
+    missing: int
+
+
+def limit_lines(limits: str) -> tuple[LimitLine, ...]:
+    """The comparisons of `limits` on numeric fields, in the order written
+    (word and text fields, e.g. gender or branch, have no place on an axis)."""
+    from sass_tui.db.query import QueryError, parser
+    from sass_tui.db.values import numeric_field
+
+    compile_query(limits)
+    out: list[LimitLine] = []
+    for node in parser().parse(limits).iter_subtrees_topdown():
+        if node.data != "comparison":
+            continue
+        names, op = node.children[0], node.children[1]
+        field = ".".join(str(n) for n in names.children)
+        try:
+            numeric_field(field)
+        except QueryError:
+            continue
+        # The compiler's own reading of the value: its unit converted to the field's.
+        term = compile_query(limits[node.meta.start_pos : node.meta.end_pos])
+        out.append(LimitLine(field, str(op), float(term.params[0])))  # type: ignore[arg-type]
+    return tuple(out)
+
+
+def limit_histograms(
+    conn: sqlite3.Connection,
+    limits: str,
+    population: str = DEFAULT_POPULATION,
+    bins: int = 20,
+    cancel: Cancel | None = None,
+) -> tuple[LimitHistogram, ...]:
+    """One histogram per limited numeric field (in the order the limits name
+    them) of the people `population` selects, with each limit's value inside
+    the binned range so that it can be drawn on it."""
+    from sass_tui.db.values import load_values
+
+    lines = limit_lines(limits)
+    fields = list(dict.fromkeys(line.field for line in lines))
+    if not fields:
+        return ()
+    with interruptible(conn, cancel, "the fit test"):
+        values = load_values(conn, fields, population)
+    genders = np.array(values.genders, dtype=object)
+    out = []
+    for k, field in enumerate(fields):
+        column = values.matrix[:, k]
+        present = ~np.isnan(column)
+        mine = tuple(line for line in lines if line.field == field)
+        span = np.concatenate([column[present], [line.value for line in mine]])
+        edges = np.histogram_bin_edges(span, bins=bins)
+        counts: dict[str, npt.NDArray[np.int64]] = {
+            g: np.histogram(column[present & (genders == g)], bins=edges)[0].astype(np.int64)
+            for g in GENDERS
+            if np.any(genders == g)
+        }
+        out.append(
+            LimitHistogram(
+                field=field,
+                unit=values.units[k],
+                edges=edges,
+                counts=counts,
+                lines=mine,
+                missing=int((~present).sum()),
+            )
+        )
+    return tuple(out)

@@ -28,12 +28,14 @@ from __future__ import annotations
 import math
 import sqlite3
 from collections.abc import Iterator, Sequence
+from contextvars import ContextVar
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, NoReturn
 
 import numpy as np
 
+from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
@@ -94,6 +96,28 @@ class FlatFiles:
         return cls(**found)
 
 
+# Lines between two progress reports of an import.
+REPORT_LINES = 500
+
+
+class _LineCount:
+    """Lines read so far of an import's files, reported to its Steps."""
+
+    def __init__(self, steps: Steps, total: int) -> None:
+        self.steps = steps
+        self.total = total
+        self.done = 0
+
+    def tick(self) -> None:
+        self.done += 1
+        if self.done % REPORT_LINES == 0:
+            self.steps(min(self.done, self.total), self.total)
+
+
+# The import being read in this thread (None: nobody is told).
+_LINES: ContextVar[_LineCount | None] = ContextVar("flatfile_lines", default=None)
+
+
 class _Reader:
     def __init__(self, path: Path):
         self.path = path
@@ -106,8 +130,11 @@ class _Reader:
         self.line = 0
 
     def records(self, width: int, what: str, rest: bool = False) -> Iterator[list[str]]:
+        lines = _LINES.get()
         for line_number, text in enumerate(self.text.splitlines(), start=1):
             self.line = line_number  # fail() names it
+            if lines is not None:
+                lines.tick()
             if not text.strip():
                 continue
             fields = [f.strip() for f in (text.split(",", width - 1) if rest else text.split(","))]
@@ -366,12 +393,43 @@ def _none(value: float) -> float | None:
     return None if value != value else value
 
 
-def import_flat_files(conn: sqlite3.Connection, files: FlatFiles) -> int:
+def _count_lines(files: FlatFiles) -> int:
+    total = 0
+    for name in FILE_NAMES:
+        path = getattr(files, name)
+        if path is not None:
+            try:
+                with open(path, "rb") as handle:
+                    total += sum(
+                        chunk.count(b"\n") for chunk in iter(lambda: handle.read(1 << 20), b"")
+                    )
+            except OSError:
+                pass  # the reader says what is wrong with it, with its name
+    return max(total, 1)
+
+
+def import_flat_files(
+    conn: sqlite3.Connection,
+    files: FlatFiles,
+    progress: Progress | None = None,
+    cancel: Cancel | None = None,
+) -> int:
     """Read every file, then store them in one transaction.  Returns the number of people.
-    People whose id_num is already stored are replaced."""
-    batch = read_flat_files(files)
+    People whose id_num is already stored are replaced.
+
+    `progress(lines read, lines in all files)`; the storing comes after the
+    last line.  `cancel` stops the import where it is, reading or storing,
+    with Cancelled: the transaction is rolled back and nothing is stored."""
+    steps = Steps(progress, cancel, "the import")
+    counter = _LineCount(steps, _count_lines(files))
+    token = _LINES.set(counter)
+    try:
+        batch = read_flat_files(files)
+    finally:
+        _LINES.reset(token)
+    steps(counter.total, counter.total)
     check_writable(conn)
-    with transaction(conn):
+    with transaction(conn), interruptible(conn, cancel, "the import"):
         store_people(conn, batch)
     return len(batch)
 

@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
+from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import LIST_FIELDS, compile_query
 from sass_tui.db.schema import connect, transaction
 from sass_tui.model.errors import SassError
@@ -33,6 +34,8 @@ from sass_tui.model.errors import SassError
 # a bug and shows as one.
 DB_ERRORS = (SassError, sqlite3.Error, OSError)
 
+# People searched between two progress reports of a query (QueryLists.run).
+RUN_CHUNK = 20_000
 QUERY_LIST = "query"
 SELECTED_LIST = "selected"
 _TABLES = {QUERY_LIST: "temp.query_list", SELECTED_LIST: "temp.selected_list"}
@@ -69,9 +72,14 @@ class QueryLists:
         return self._counts[which]
 
     # --- running a query -----------------------------------------------------
-    def run(self, text: str) -> int:
+    def run(self, text: str, progress: Progress | None = None, cancel: Cancel | None = None) -> int:
         """Replace the query list with the people `text` finds; returns how many.
-        A bad query raises QueryError and leaves both lists as they were."""
+        A bad query raises QueryError and leaves both lists as they were.
+
+        With `progress` or `cancel` the people are searched in id ranges of
+        about RUN_CHUNK people: `progress(people searched, people in the
+        database)` after each, and `cancel` stops it with Cancelled (between
+        ranges or inside one), the lists as they were."""
         compiled = compile_query(text)
         sql = (
             f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
@@ -79,9 +87,36 @@ class QueryLists:
         )
         with transaction(self.conn, "DEFERRED"):
             self.conn.execute("DELETE FROM temp.query_list")
-            count = self.conn.execute(sql, compiled.params).rowcount
+            if progress is None and cancel is None:
+                count = self.conn.execute(sql, compiled.params).rowcount
+            else:
+                count = self._run_in_ranges(
+                    sql, compiled.params, Steps(progress, cancel, "the query"), cancel
+                )
         self._counts[QUERY_LIST] = count
         self.last_query = text
+        return count
+
+    def _run_in_ranges(
+        self, sql: str, params: tuple[object, ...], steps: Steps, cancel: Cancel | None
+    ) -> int:
+        """The query over id ranges, each about RUN_CHUNK people wide; the people
+        searched are estimated from the ids passed (exact at the end)."""
+        low, high, total = self.conn.execute(
+            "SELECT min(id_num), max(id_num), count(*) FROM person"
+        ).fetchone()
+        steps(0, total)
+        if not total:
+            return 0
+        ranges = max(1, -(-total // RUN_CHUNK))
+        span = high - low + 1
+        cuts = [low + span * k // ranges for k in range(ranges)] + [high + 1]
+        ranged = f"{sql} AND p.id_num >= ? AND p.id_num < ?"
+        count = 0
+        with interruptible(self.conn, cancel, "the query"):
+            for start, stop in zip(cuts, cuts[1:]):
+                count += self.conn.execute(ranged, (*params, start, stop)).rowcount
+                steps(total * (stop - low) // span, total)
         return count
 
     # --- reading -----------------------------------------------------------------
@@ -141,6 +176,14 @@ class QueryLists:
         return bool(gone)
 
     # --- Input DB ------------------------------------------------------------------------
-    def import_files(self, files: FlatFiles) -> int:
-        """Load flat files (one transaction: a failure stores nothing)."""
-        return import_flat_files(self.conn, files)
+    def import_files(
+        self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
+    ) -> int:
+        """Load flat files (one transaction: a failure or a cancel stores nothing)."""
+        return import_flat_files(self.conn, files, progress, cancel)
+
+    def selected_ids(self) -> list[int]:
+        """The ids of the selected list, in the order they were selected."""
+        return [
+            r[0] for r in self.conn.execute("SELECT id_num FROM temp.selected_list ORDER BY seq")
+        ]

@@ -12,11 +12,12 @@ from __future__ import annotations
 
 import datetime as _dt
 import sqlite3
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
+from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.schema import CENTER_OF_MASS_NAMES, GIRTH_NAMES
 from sass_tui.db.values import load_values
 from sass_tui.model.errors import SassError
@@ -53,31 +54,59 @@ def group_fields(word: str, rows: Sequence[str]) -> list[str]:
 
 
 def population_of(
-    conn: sqlite3.Connection, query: str, *, title: str | None = None, date: str | None = None
+    conn: sqlite3.Connection,
+    query: str | None = None,
+    *,
+    ids: Sequence[int] | None = None,
+    title: str | None = None,
+    date: str | None = None,
+    progress: Progress | None = None,
+    cancel: Cancel | None = None,
 ) -> SelectionPopulation:
-    """The population of the people `query` selects (see the module's docstring).
-    Raises PopulationError when nobody matches or a gender has fewer than
-    MIN_PEOPLE people; QueryError for a bad query."""
+    """The population of the people `query` selects, or of the people `ids`
+    names (the query screen's selected list; with both, the people of `ids`
+    the query selects).  See the module's docstring.  Raises PopulationError
+    when nobody is selected or a gender has fewer than MIN_PEOPLE people;
+    QueryError for a bad query.  `progress(columns done, columns)`; `cancel`
+    stops it with Cancelled (it writes nothing anyway: the caller writes)."""
+    if query is None and ids is None:
+        raise PopulationError("a population needs a query or a list of people")
     when = date or _dt.date.today().isoformat()
     fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)]
-    values = load_values(conn, fields, query)
+    steps = Steps(progress, cancel, "making the population")
+    total = len(fields) * len(GENDERS) + 1
+    steps(0, total)
+    with interruptible(conn, cancel, "making the population"):
+        values = load_values(conn, fields, query, ids=ids)
+    steps(1, total)
+    what = _selection_words(query, ids)
     genders = np.array(values.genders, dtype=object)
     counts: dict[str, int] = {g: int(np.sum(genders == g)) for g in GENDERS if np.any(genders == g)}
     if not counts:
-        raise PopulationError(f"the query selects nobody: {query}")
+        raise PopulationError(f"{what} selects nobody")
     small = {g: n for g, n in counts.items() if n < MIN_PEOPLE}
     if small:
         said = people_words(small)
+        widen = (
+            "widen the query, or leave that gender out with `AND gender = ...`"
+            if ids is None
+            else "select more people, or delete that gender's people from the list"
+        )
         raise PopulationError(
-            f"the query selects only {said}; a population needs at least {MIN_PEOPLE} "
-            "people of each gender it holds (widen the query, or leave that gender out "
-            "with `AND gender = ...`)"
+            f"{what} selects only {said}; a population needs at least {MIN_PEOPLE} "
+            f"people of each gender it holds ({widen})"
         )
     described = people_words(counts)
-    heading = title or f"Population of {query}"
+    heading = title or f"Population of {what.removeprefix('the query ')}"
     groups: dict[str, PopulationData] = {}
     empty: list[str] = []
     start = 0
+    done = [1]
+
+    def column_done() -> None:
+        done[0] += 1
+        steps(done[0], total)
+
     for group, _word, rows in _GROUPS:
         width = len(rows) * 3
         block = values.matrix[:, start : start + width]
@@ -92,16 +121,25 @@ def population_of(
         )
         for gender in counts:
             people = block[genders == gender]
-            data.sections[gender] = _percentiles(people).reshape(len(rows), 3, 3)
+            data.sections[gender] = _percentiles(people, column_done).reshape(len(rows), 3, 3)
             data.lines[gender] = [0] * len(rows)
         groups[group] = data
-    return SelectionPopulation(query, counts, groups, tuple(empty))
+    steps(total, total)
+    return SelectionPopulation(what.removeprefix("the query "), counts, groups, tuple(empty))
 
 
-def _percentiles(people: np.ndarray) -> np.ndarray:
+def _selection_words(query: str | None, ids: Sequence[int] | None) -> str:
+    if ids is None:
+        return f"the query {query}"
+    listed = f"the selected list of {len(ids):,} {'person' if len(ids) == 1 else 'people'}"
+    return listed if query is None else f"{listed} AND {query}"
+
+
+def _percentiles(people: np.ndarray, column_done: Callable[[], None]) -> np.ndarray:
     """Per column, 5th/50th/95th of the values present (NaN below MIN_PEOPLE)."""
     out = np.full((people.shape[1], len(PERCENTILES)), np.nan)
     for k in range(people.shape[1]):
+        column_done()
         column = people[:, k]
         column = column[~np.isnan(column)]
         if len(column) >= MIN_PEOPLE:

@@ -7,12 +7,14 @@ manikin families and populations compute with.
 Fields are query-language names (`stature`, `mass`, `age`,
 `measure.sittingheight`, `girth.right_upper_arm.z`, `center_of_mass.head.x`,
 `strength.elbow_flexion.max`, ...); values are in canonical units (cm, kg,
-deg, N-m, years).  `where` is a query in the query language.  People come in
+deg, N-m, years).  `where` is a query in the query language; `ids` (a
+selected list) keeps only those people (both may be given).  People come in
 id order.  No Textual import here.
 """
 
 from __future__ import annotations
 
+import json
 import sqlite3
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -60,7 +62,11 @@ def numeric_field(field: str) -> tuple[str, str, str]:
 
 
 def load_values(
-    conn: sqlite3.Connection, fields: Sequence[str], where: str | None = None
+    conn: sqlite3.Connection,
+    fields: Sequence[str],
+    where: str | None = None,
+    *,
+    ids: Sequence[int] | None = None,
 ) -> Values:
     """Every selected person's values of `fields` (see the module's docstring)."""
     resolved = [numeric_field(f) for f in fields]
@@ -87,13 +93,20 @@ def load_values(
     if measure_slots:
         joins.append(" LEFT JOIN measure_packed vp ON vp.id_num = p.id_num")
         select += ["vp.id_num IS NOT NULL", "vp.data"]
+    conditions: list[str] = []
+    params: tuple[object, ...] = ()
     if compiled is not None:
         from_clause = compiled.from_clause() + "".join(joins)
-        sql = f"SELECT {', '.join(select)} FROM {from_clause} WHERE {compiled.where} ORDER BY p.id_num"
-        params: tuple[object, ...] = compiled.params
+        conditions.append(compiled.where)
+        params = compiled.params
     else:
-        sql = f"SELECT {', '.join(select)} FROM person p{''.join(joins)} ORDER BY p.id_num"
-        params = ()
+        from_clause = "person p" + "".join(joins)
+    if ids is not None:
+        # One parameter whatever the number of people (no SQLITE_MAX_VARIABLE_NUMBER).
+        conditions.append("p.id_num IN (SELECT value FROM json_each(?))")
+        params = (*params, json.dumps([int(i) for i in ids]))
+    where_sql = f" WHERE {' AND '.join(f'({c})' for c in conditions)}" if conditions else ""
+    sql = f"SELECT {', '.join(select)} FROM {from_clause}{where_sql} ORDER BY p.id_num"
     rows = conn.execute(sql, params).fetchall()
     n = len(rows)
     matrix = np.full((n, len(fields)), np.nan)

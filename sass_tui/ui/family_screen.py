@@ -22,6 +22,7 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.paths import user_path
 from sass_tui.model.vocabulary import GENDERS
 from sass_tui.ui.base import SassScreen
+from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
 from sass_tui.ui.widgets import MessageLine
 
 if TYPE_CHECKING:  # numpy: imported when a family is written
@@ -92,12 +93,14 @@ class FamilyScreen(SassScreen):
         self.db_path = db_path
         self.default_gender = gender
         self.family: Family | None = None
+        self.work: Work | None = None
 
     def compose(self) -> ComposeResult:
         yield Label("Manikin family", id="family-title")
         with Horizontal(id="family-body"):
             yield DataTable(id="family-table", cursor_type="row")
             yield PlotextPlot(id="family-plot")
+        yield WorkBar(id="work")
         yield MessageLine(id="message-line")
         yield Footer(compact=True)
 
@@ -105,8 +108,23 @@ class FamilyScreen(SassScreen):
         self.action_build()
 
     def action_back(self) -> None:
-        """Back to the spreadsheet."""
+        """Escape: cancel the family being built, else back to the spreadsheet."""
+        if self.work is not None:
+            if not self.work.cancel.is_set():
+                self.work.cancel.set()
+                self.query_one(WorkBar).cancelling()
+                self.say("Cancelling the family ...")
+            return
         self.app.pop_screen()
+
+    def on_work_progressed(self, event: WorkProgressed) -> None:
+        event.stop()
+        self.query_one(WorkBar).show(event)
+
+    def _end_work(self) -> bool:
+        work, self.work = self.work, None
+        self.query_one(WorkBar).stop()
+        return work is not None and work.cancel.is_set()
 
     # --- the questions ------------------------------------------------------------
     def action_build(self) -> None:
@@ -138,12 +156,19 @@ class FamilyScreen(SassScreen):
             f"Building the {gender} family over {', '.join(measures)} at {coverage:g} % "
             "(the prediction model completes each manikin) ..."
         )
-        self.build_family(self.db_path, gender, tuple(measures), coverage)
+        self.work = Work(self, "Family")
+        self.query_one(WorkBar).start(self.work)
+        self.build_family(self.db_path, gender, tuple(measures), coverage, self.work)
 
     # --- the worker -------------------------------------------------------------------
     @work(thread=True, exclusive=True, group="family", exit_on_error=False)
     def build_family(
-        self, db_path: Path | None, gender: str, measures: tuple[str, ...], coverage: float
+        self,
+        db_path: Path | None,
+        gender: str,
+        measures: tuple[str, ...],
+        coverage: float,
+        work: Work,
     ) -> None:
         import sqlite3
 
@@ -155,7 +180,14 @@ class FamilyScreen(SassScreen):
             conn = open_database(db_path)
             try:
                 family = load_family(
-                    conn, gender, measures, coverage / 100.0, "boundary", DEFAULT_POPULATION
+                    conn,
+                    gender,
+                    measures,
+                    coverage / 100.0,
+                    "boundary",
+                    DEFAULT_POPULATION,
+                    progress=work.report,
+                    cancel=work.cancel,
                 )
                 people = load_values(
                     conn,
@@ -171,9 +203,13 @@ class FamilyScreen(SassScreen):
         self.post_message(FamilyBuilt(family, list(matrix[:, 0]), list(matrix[:, 1])))
 
     def on_family_failed(self, event: FamilyFailed) -> None:
+        if self._end_work():
+            self.say("Family cancelled: nothing built or written.")
+            return
         self.complain(event.text)
 
     def on_family_built(self, event: FamilyBuilt) -> None:
+        self._end_work()  # built: a cancel that came too late changes nothing
         family = self.family = event.family
         table = self.query_one(DataTable)
         table.clear(columns=True)

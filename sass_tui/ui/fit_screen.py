@@ -1,7 +1,10 @@
 """Fit Test (issue 14) on the query screen: the current query as design limits
 over a population (default `source = ansur2`), shown as `sass fit` prints it:
-the shares per gender and weighted, the naive estimate, the per-limit table.
-The test runs in a worker; Escape returns to the query screen."""
+the shares per gender and weighted, the naive estimate, the per-limit table;
+below it a histogram (textual-plotext) of one limited measurement for the
+population, per gender, with its limit(s) drawn as vertical lines; `l` shows
+the next limited measurement.  The test runs in a worker, with a progress
+bar; Escape returns to the query screen (cancelling the test if it runs)."""
 
 from __future__ import annotations
 
@@ -12,54 +15,154 @@ from textual.containers import ScrollableContainer
 from textual.message import Message
 from textual.screen import Screen
 from textual.widgets import Footer, Static
+from textual_plotext import PlotextPlot
 
+from sass_tui.db.fit import LimitHistogram
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.lists import DB_ERRORS, QueryLists
+from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
+
+GENDER_COLORS = {"male": "blue", "female": "magenta"}
 
 
 class FitDone(Message):
-    def __init__(self, text: str = "", error: str = "") -> None:
+    def __init__(
+        self, text: str = "", histograms: tuple[LimitHistogram, ...] = (), error: str = ""
+    ) -> None:
         super().__init__()
         self.text = text
+        self.histograms = histograms
         self.error = error
+
+
+def _short(field: str) -> str:
+    return field.removeprefix("measure.")
 
 
 class FitScreen(Screen):
     DEFAULT_CSS = """
+    FitScreen #fit-scroll { height: auto; max-height: 50%; }
     FitScreen #fit-table { padding: 0 1; width: auto; }
     FitScreen #fit-title { padding: 0 1; text-style: bold; color: $text-accent; }
+    FitScreen #fit-plot-title { padding: 0 1; color: $text-muted; }
+    FitScreen #fit-plot { height: 1fr; min-height: 6; }
     """
-    BINDINGS = [Binding("escape", "app.pop_screen", "Back to the query")]
+    BINDINGS = [
+        Binding("escape", "back", "Back to the query"),
+        Binding("l", "next_limit", "Next limit"),
+    ]
 
     def __init__(self, lists: QueryLists, limits: str, population: str) -> None:
         super().__init__(id="fit-screen")
         self.lists = lists
         self.limits = limits
         self.population = population
+        self.histograms: tuple[LimitHistogram, ...] = ()
+        self.shown = 0  # which histogram is drawn
+        # What was last handed to plotext: bin centers and, per gender, the counts.
+        self.plotted: tuple[list[float], dict[str, list[int]]] = ([], {})
+        self.work: Work | None = None
 
     def compose(self):
         yield Static(f"Fit Test of {self.limits}", id="fit-title")
-        with ScrollableContainer():
+        with ScrollableContainer(id="fit-scroll"):
             yield Static(f"Testing over {self.population}, please wait...", id="fit-table")
+        yield Static("", id="fit-plot-title")
+        yield PlotextPlot(id="fit-plot")
+        yield WorkBar(id="work")
         yield Footer(compact=True)
 
     def on_mount(self) -> None:
-        self.run_fit(self.lists, self.limits, self.population)
+        self.work = Work(self, "Fit Test")
+        self.query_one(WorkBar).start(self.work)
+        self.run_fit(self.lists, self.limits, self.population, self.work)
+
+    def on_work_progressed(self, event: WorkProgressed) -> None:
+        event.stop()
+        self.query_one(WorkBar).show(event)
+
+    def action_back(self) -> None:
+        """Back to the query screen (cancels a fit test still running)."""
+        if self.work is not None:
+            self.work.cancel.set()  # the test stops at its next step; nothing to undo
+        self.app.pop_screen()
 
     @work(thread=True, exclusive=True, group="fit", exit_on_error=False)
-    def run_fit(self, lists: QueryLists, limits: str, population: str) -> None:
-        from sass_tui.db.fit import fit_test
+    def run_fit(self, lists: QueryLists, limits: str, population: str, work: Work) -> None:
+        from sass_tui.db.fit import fit_test, limit_histograms
 
         try:
             with lists.lock:
-                result = fit_test(lists.conn, limits, population)
+                result = fit_test(
+                    lists.conn, limits, population, progress=work.report, cancel=work.cancel
+                )
+                histograms = limit_histograms(lists.conn, limits, population, cancel=work.cancel)
         except DB_ERRORS as exc:
             self.post_message(FitDone(error=str(exc)))
             return
-        self.post_message(FitDone(format_table(result)))
+        self.post_message(FitDone(format_table(result), histograms))
 
     def on_fit_done(self, event: FitDone) -> None:
         event.stop()
+        self.work = None
+        self.query_one(WorkBar).stop()
         table = self.query_one("#fit-table", Static)
         text = f"The fit test was not run: {event.error}" if event.error else event.text
         table.update(Text(text, no_wrap=True))  # a wide table scrolls sideways
+        self.histograms = event.histograms
+        self.shown = 0
+        self.draw_histogram()
+
+    def action_next_limit(self) -> None:
+        """Show the histogram of the next limited measurement."""
+        if len(self.histograms) > 1:
+            self.shown = (self.shown + 1) % len(self.histograms)
+            self.draw_histogram()
+
+    def draw_histogram(self) -> None:
+        title = self.query_one("#fit-plot-title", Static)
+        widget = self.query_one("#fit-plot", PlotextPlot)
+        plot = widget.plt
+        plot.clear_data()
+        plot.clear_figure()
+        if not self.histograms:
+            title.update("No limit on a number to draw." if self.limits else "")
+            self.plotted = ([], {})
+            widget.refresh()
+            return
+        hist = self.histograms[self.shown]
+        edges = [float(e) for e in hist.edges]
+        centers = [(a + b) / 2 for a, b in zip(edges, edges[1:])]
+        counts = {g: [int(c) for c in hist.counts[g]] for g in hist.counts}
+        self.plotted = (centers, counts)
+        genders = list(counts)
+        # plotext's stacked_bar takes `labels` and a colour per series; textual-plotext's
+        # signature copy says `label` and one colour.
+        plot.stacked_bar(  # type: ignore[call-arg]
+            centers,
+            [counts[g] for g in genders],
+            labels=genders,
+            color=[GENDER_COLORS.get(g, "green") for g in genders],  # type: ignore[arg-type]
+            width=1.0,
+        )
+        top = max((sum(column) for column in zip(*counts.values())), default=0)
+        for line in hist.lines:
+            # A line series, not plotext's vline: it is drawn over the bars.
+            plot.plot([line.value, line.value], [0, top], color="red", marker="braille")
+        plot.xlim(edges[0], edges[-1])
+        ticks = [edges[0] + (edges[-1] - edges[0]) * k / 4 for k in range(5)]
+        plot.xticks(ticks, [f"{t:.4g}" for t in ticks])
+        unit = f" ({hist.unit})" if hist.unit else ""
+        plot.xlabel(f"{_short(hist.field)}{unit}")
+        plot.ylabel("people")
+        limits = ", ".join(f"{_short(x.field)} {x.op} {x.value:g}" for x in hist.lines)
+        more = f"  (l: {self.shown + 1}/{len(self.histograms)})" if len(self.histograms) > 1 else ""
+        missing = f"; {hist.missing} not measured" if hist.missing else ""
+        title.update(
+            Text(
+                f"{_short(hist.field)}{unit} of {self.population}, red: {limits}{missing}{more}",
+                no_wrap=True,
+                overflow="ellipsis",
+            )
+        )
+        widget.refresh()

@@ -33,6 +33,7 @@ from sass_tui.model.paths import regular_file
 from sass_tui.model.text import printable
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.commands import CommandSpec
+from sass_tui.ui.progress import QUERY_BAR_AFTER, Work, WorkBar, WorkProgressed
 from sass_tui.ui.query_builder import QueryBuilder, QueryBuilderScreen
 from sass_tui.ui.widgets import CommandMenu, MessageLine
 
@@ -355,6 +356,7 @@ class QueryScreen(SassScreen):
         Binding("m", "make_population", "Make", tooltip="Make Population"),
         Binding("f", "fit_test", "Fit", tooltip="Fit Test"),
         Binding("q", "app.quit", "Quit"),
+        Binding("escape", "cancel_work", "Cancel work", show=False),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
     ]
@@ -370,12 +372,17 @@ class QueryScreen(SassScreen):
         self.builder: QueryBuilder | None = None
         self.awaiting_build = False
         self.running = False
+        # The queries whose people were moved to the selected list (the
+        # population's title says them).
+        self.selected_from: list[str] = []
+        self.work: Work | None = None  # the long work under way (issue 15)
 
     def compose(self):
         with Horizontal(id="query-top"):
             yield SummaryPanel(id="summary")
             yield QueryCommandMenu(QUERY_COMMANDS, self, id="query-commands")
         yield ListSheet(id="list")
+        yield WorkBar(id="work")
         yield MessageLine(id="message-line")
         yield Footer(compact=True)
 
@@ -404,18 +411,58 @@ class QueryScreen(SassScreen):
             self.set_focus(self.sheet)
         self.refresh_screen()
 
+    # --- long work: progress bar and Escape (issue 15) -----------------------------
+    def begin_work(self, what: str, show_after: float = 0.0, busy: bool = True) -> Work:
+        """Start long work: the bar (at once, or after `show_after` s) and its
+        cancel; `busy`: list commands wait for it (not while the database opens)."""
+        self.running = busy
+        work = self.work = Work(self, what, show_after)
+        self.query_one(WorkBar).start(work)
+        return work
+
+    def end_work(self) -> bool:
+        """The work is over (its result message arrived); True if a cancel was
+        asked for (whether it came in time is the result's to say)."""
+        work, self.work = self.work, None
+        self.running = False
+        self.query_one(WorkBar).stop()
+        return work is not None and work.cancel.is_set()
+
+    def on_work_progressed(self, event: WorkProgressed) -> None:
+        event.stop()
+        self.query_one(WorkBar).show(event)
+
+    def action_cancel_work(self) -> None:
+        work = self.work
+        if work is None or work.cancel.is_set():
+            return
+        work.cancel.set()  # the db function stops at its next step, nothing written
+        self.query_one(WorkBar).cancelling()
+        self.say(f"Cancelling {work.what} ...")
+
     # --- database ------------------------------------------------------------------
-    @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def open_database(self, db_path: Path | None) -> None:
+        self._open_database(db_path, self.begin_work("Building the database", busy=False))
+
+    @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
+    def _open_database(self, db_path: Path | None, work: Work) -> None:
         from sass_tui.db.default import create_default_database, default_needs_building
+        from sass_tui.db.progress import Cancelled
         from sass_tui.db.schema import default_db_path
 
         path = db_path or default_db_path()
+        building = db_path is None and default_needs_building(path)
         try:
-            if db_path is None and default_needs_building(path):
+            if building:
                 self.post_message(DatabaseFailed(f"Creating the default database {path} ..."))
-                create_default_database(path)
+                create_default_database(path, work.report, cancel=work.cancel)
             lists = QueryLists.open(path)
+        except Cancelled as exc:
+            if building:  # rolled back: the empty file must not pass for the database
+                for leftover in (path, Path(f"{path}-journal"), Path(f"{path}-wal")):
+                    leftover.unlink(missing_ok=True)
+            self.post_message(DatabaseFailed(f"Cannot open the database: {exc}"))
+            return
         except DB_ERRORS as exc:
             self.post_message(DatabaseFailed(f"Cannot open the database: {exc}"))
             return
@@ -431,11 +478,13 @@ class QueryScreen(SassScreen):
         event.stop()
         if not event.text.endswith("..."):
             self._when_open.clear()
+            self.end_work()
         (self.say if event.text.endswith("...") else self.complain)(event.text)
 
     def on_database_opened(self, event: DatabaseOpened) -> None:
         # Not stopped: the app keeps the lists for Disp. Indv.
         lists, path = event.lists, event.path
+        self.end_work()
         self.lists = lists
         self.refresh_screen()
         self.show_page(0)
@@ -522,10 +571,15 @@ class QueryScreen(SassScreen):
         def select_all():
             with self._database() as lists:
                 moved = lists.select_all()
+                self._selected_from(lists.last_query if moved else None)
             self.show_page(0)
             self.say(f"{moved:,} people moved to the selected list.")
 
         self._list_command(select_all)
+
+    def _selected_from(self, query: str | None) -> None:
+        if query and query not in self.selected_from:
+            self.selected_from.append(query)
 
     def action_select_one(self) -> None:
         """Move the highlighted person to the selected list."""
@@ -539,7 +593,8 @@ class QueryScreen(SassScreen):
 
         def select_one():
             with self._database() as lists:
-                lists.select_one(person["id"])
+                if lists.select_one(person["id"]):
+                    self._selected_from(lists.last_query)
             self.show_page(self.sheet.first)
             self.say(f"{person['name']} moved to the selected list.")
 
@@ -630,15 +685,15 @@ class QueryScreen(SassScreen):
 
     # --- running a query --------------------------------------------------------------
     def start_query(self, text: str) -> None:
-        self.running = True
+        work = self.begin_work("Query", show_after=QUERY_BAR_AFTER)
         self.say(WAIT)
-        self.run_query(self.lists, text, self.sheet.page_size)
+        self.run_query(self.lists, text, self.sheet.page_size, work)
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
-    def run_query(self, lists: QueryLists, text: str, page_size: int) -> None:
+    def run_query(self, lists: QueryLists, text: str, page_size: int, work: Work) -> None:
         try:
             with lists.lock:
-                count = lists.run(text)
+                count = lists.run(text, work.report, work.cancel)
                 rows = lists.page(QUERY_LIST, 0, page_size)
         except DB_ERRORS as exc:
             self.post_message(QueryFinished(error=str(exc)))
@@ -647,7 +702,10 @@ class QueryScreen(SassScreen):
 
     def on_query_finished(self, event: QueryFinished) -> None:
         event.stop()
-        self.running = False
+        if self.end_work() and event.error:
+            self.say("Query cancelled; the lists are as they were.")
+            self.refresh_screen()
+            return
         if event.error:
             self.complain(f"The query was not run: {event.error}")
             self.refresh_screen()
@@ -664,13 +722,22 @@ class QueryScreen(SassScreen):
 
     # --- Make Population (issue 12) ----------------------------------------------------
     def action_make_population(self) -> None:
-        """Write and load population files made of the last query's people."""
+        """Write and load population files made of the selected list's people
+        (Select One / Select All), not the last query's."""
         if self.running:
             self.say(WAIT)
             return
-        query = self.lists.last_query if self.lists else None
-        if not query:
-            self.say("Make Population uses the people of the last query: run a query first.")
+        try:
+            with self._database() as lists:
+                ids = lists.selected_ids()
+        except Busy as exc:
+            self.say(str(exc))
+            return
+        if not ids:
+            self.say(
+                "Make Population uses the selected list, which is empty: "
+                "Select One (s) or Select All (a) people of a query first."
+            )
             return
 
         def answer(text: str) -> None:
@@ -678,24 +745,33 @@ class QueryScreen(SassScreen):
             if not name:
                 self.say("Make Population cancelled: no file name given.")
                 return
-            self.running = True
-            self.say(f"Making the population of {query}, please wait...")
-            self.make_population(self.lists, query, Path(name).expanduser())
+            work = self.begin_work("Make Population")
+            self.say(f"Making the population of {len(ids):,} selected people (Esc cancels)...")
+            sources = " OR ".join(f"({q})" for q in self.selected_from) or "selection"
+            title = f"Population of {len(ids):,} selected from {sources}"
+            self.make_population(self.lists, tuple(ids), Path(name).expanduser(), title, work)
 
         self.ask(
-            "Population file name (girth; the center-of-mass file goes beside it):",
+            f"Population of the {len(ids):,} selected people: file name "
+            "(girth; the center-of-mass file goes beside it):",
             answer,
             on_cancel=lambda: self.say("Make Population cancelled."),
         )
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
-    def make_population(self, lists: QueryLists, query: str, target: Path) -> None:
+    def make_population(
+        self, lists: QueryLists, ids: tuple[int, ...], target: Path, title: str, work: Work
+    ) -> None:
         from sass_tui.db.population import population_of
         from sass_tui.db.population_files import write_population_files
+        from sass_tui.db.progress import Steps
 
         try:
             with lists.lock:
-                result = population_of(lists.conn, query)
+                result = population_of(
+                    lists.conn, ids=ids, title=title, progress=work.report, cancel=work.cancel
+                )
+            Steps(cancel=work.cancel, what="making the population").check()  # last chance
             paths = write_population_files(result, target)
         except DB_ERRORS as exc:
             self.post_message(PopulationMade(error=str(exc)))
@@ -709,7 +785,9 @@ class QueryScreen(SassScreen):
         from sass_tui.model.names import GROUP_TITLES
 
         event.stop()
-        self.running = False
+        if self.end_work() and event.error:
+            self.say("Make Population cancelled: nothing written or loaded.")
+            return
         if event.error:
             self.complain(f"Make Population: nothing written or loaded: {event.error}")
             return
@@ -811,15 +889,15 @@ class QueryScreen(SassScreen):
         )
 
     def _import(self, chosen: dict) -> None:
-        self.running = True
-        self.say("Loading the files into the database, please wait...")
-        self.import_files(self.lists, FlatFiles(**chosen))
+        work = self.begin_work("Input DB")
+        self.say("Loading the files into the database (Esc cancels)...")
+        self.import_files(self.lists, FlatFiles(**chosen), work)
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
-    def import_files(self, lists: QueryLists, files: FlatFiles) -> None:
+    def import_files(self, lists: QueryLists, files: FlatFiles, work: Work) -> None:
         try:
             with lists.lock:
-                count = lists.import_files(files)
+                count = lists.import_files(files, work.report, work.cancel)
         except DB_ERRORS as exc:
             self.post_message(ImportFinished(None, str(exc)))
             return
@@ -828,8 +906,9 @@ class QueryScreen(SassScreen):
     def on_import_finished(self, event: ImportFinished) -> None:
         event.stop()
         count, error = event.count, event.error
-        self.running = False
-        if count is None:
+        if self.end_work() and count is None:
+            self.say("Input DB cancelled; the database is unchanged.")
+        elif count is None:
             self.complain(f"Input DB failed, the database is unchanged: {error}")
         else:
             self.say(f"Loaded {count:,} people into the database.")

@@ -355,3 +355,50 @@ def test_family_arguments_refuse_or_read_any_text(text):
             assert str(exc)
         else:
             assert value is not None
+
+
+def test_limit_lines_read_numeric_comparisons_in_canonical_units():
+    from sass_tui.db.fit import LimitLine, limit_lines
+
+    lines = limit_lines(
+        "gender = male AND stature > 63 in AND (mass > 50 kg AND mass < 200 lb) "
+        "AND branch = 'Combat Arms' AND measure.sittingheight <= 95 cm"
+    )
+    assert [(x.field, x.op) for x in lines] == [
+        ("stature", ">"),
+        ("mass", ">"),
+        ("mass", "<"),
+        ("measure.sittingheight", "<="),
+    ]
+    assert lines[0].value == pytest.approx(160.02)
+    assert lines[2].value == pytest.approx(90.718474)
+    assert lines[3] == LimitLine("measure.sittingheight", "<=", 95.0)
+    assert limit_lines("gender = female") == ()
+
+
+def test_limit_histograms_count_every_person_of_the_population(default_db):
+    from sass_tui.db.fit import limit_histograms
+
+    (mass, stature) = limit_histograms(
+        default_db, "mass < 200 lb AND mass > 50 AND stature < 190 cm", "source = ansur2", bins=7
+    )
+    assert mass.field == "mass" and [x.op for x in mass.lines] == ["<", ">"]
+    assert [x.value for x in mass.lines] == pytest.approx([90.718474, 50.0])
+    for hist, column in ((mass, "mass"), (stature, "stature")):
+        assert len(hist.edges) == 8
+        for line in hist.lines:
+            assert hist.edges[0] <= line.value <= hist.edges[-1]
+        for gender in ("male", "female"):
+            values = [
+                v
+                for (v,) in default_db.execute(
+                    f"SELECT {column} FROM person WHERE source = 'ansur2' AND gender = ?",
+                    (gender,),
+                )
+            ]
+            expected = [
+                sum(1 for v in values if lo <= v < hi or (k == 6 and v == hi))
+                for k, (lo, hi) in enumerate(zip(hist.edges, hist.edges[1:]))
+            ]
+            assert hist.counts[gender].tolist() == expected
+            assert sum(expected) == len(values)

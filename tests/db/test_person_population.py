@@ -179,3 +179,39 @@ def test_a_gender_with_too_few_people_is_refused(default_db, default_db_file, tm
     with pytest.raises(PopulationError, match="selects nobody"):
         population_of(default_db, "stature > 500 cm")
     assert not target.exists()
+
+
+def test_population_of_a_list_of_ids_is_exactly_those_people(default_db):
+    """The selected list's path: every third young woman's id (not what any
+    query selects); the 50th are the medians of exactly those people."""
+    ids = [
+        r[0]
+        for r in default_db.execute(
+            "SELECT id_num FROM person WHERE gender = 'female' AND age < 25 ORDER BY id_num"
+        )
+    ][::3]
+    assert len(ids) >= MIN_PEOPLE
+    result = population_of(default_db, ids=list(reversed(ids)), date="2026-01-01")
+    assert result.counts == {"female": len(ids)}
+    stats = result.groups[GIRTH].stats("female")
+    marks = ", ".join("?" * len(ids))
+    r = [row.name for row in ROWS[GIRTH]].index("right_upper_arm")
+    arm = [
+        v
+        for (v,) in default_db.execute(
+            f"SELECT z FROM q_girth_right_upper_arm WHERE id_num IN ({marks})", ids
+        )
+    ]
+    assert len(arm) == len(ids)
+    assert stats[r, 2, 1] == pytest.approx(statistics.median(arm))
+    assert f"selected list of {len(ids):,} people" in result.groups[GIRTH].title
+    # a query narrows the list: only the people of the list it selects
+    both = population_of(default_db, "age < 22", ids=ids)
+    (n,) = default_db.execute(
+        f"SELECT count(*) FROM person WHERE age < 22 AND id_num IN ({marks})", ids
+    ).fetchone()
+    assert both.counts == {"female": n}
+    with pytest.raises(PopulationError, match=r"selected list of 5 people selects only 5 women"):
+        population_of(default_db, ids=ids[:5])
+    with pytest.raises(PopulationError, match="selects nobody"):
+        population_of(default_db, ids=[])

@@ -65,13 +65,66 @@ def test_fit_test_of_the_query_over_ansur2(drive, db):
     drive(scenario())
 
 
-def test_fit_screen_snapshot(snap_compare, db):
-    async def run_before(pilot):
-        await pilot.press("d")
-        await settle(pilot)
-        pilot.app.screen.start_query(LIMITS)
-        await settle(pilot)
-        await pilot.press("f", "enter")
-        await settle(pilot)
+async def open_fit_screen(pilot) -> None:
+    """The query screen, LIMITS run as the query, then Fit Test over ANSUR II."""
+    await pilot.press("d")
+    await settle(pilot)
+    pilot.app.screen.start_query(LIMITS)
+    await settle(pilot)
+    await pilot.press("f", "enter")
+    await settle(pilot)
 
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=(80, 24))
+
+def test_fit_screen_snapshot(snap_compare, db):
+    assert snap_compare(SassApp(db_path=db), run_before=open_fit_screen, terminal_size=(80, 24))
+
+
+def _direct_counts(edges, values) -> list[int]:
+    """People per bin by plain comparison: edges[k] <= v < edges[k+1], the last
+    bin also holding its right edge."""
+    last = len(edges) - 2
+    return [
+        sum(1 for v in values if lo <= v < hi or (k == last and v == hi))
+        for k, (lo, hi) in enumerate(zip(edges, edges[1:]))
+    ]
+
+
+def test_fit_screen_histogram_counts_the_population_and_draws_the_limits(drive, db):
+    """The bars plotted are a direct count over the survey's CSV (mm -> cm);
+    `l` moves to the next limited measurement."""
+    survey = {
+        "male": {"sittingheight": [], "stature": []},
+        "female": {"sittingheight": [], "stature": []},
+    }
+    for row in csv_rows():
+        for name in ("sittingheight", "stature"):
+            survey[row["gender"].lower()][name].append(float(row[name]) / 10)
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            await open_fit_screen(pilot)
+            screen = app.screen
+            assert isinstance(screen, FitScreen)
+            for name, limit in (("sittingheight", 95.0), ("stature", 160.0)):
+                hist = screen.histograms[screen.shown]
+                assert hist.field.removeprefix("measure.") == name
+                assert [line.value for line in hist.lines] == [limit]
+                assert hist.edges[0] <= limit <= hist.edges[-1]  # the line is on the plot
+                centers, counts = screen.plotted
+                edges = [float(e) for e in hist.edges]
+                assert centers == [(a + b) / 2 for a, b in zip(edges, edges[1:])]
+                for gender in ("male", "female"):
+                    assert counts[gender] == _direct_counts(edges, survey[gender][name])
+                    assert sum(counts[gender]) == len(survey[gender][name])
+                title = str(screen.query_one("#fit-plot-title").render())
+                assert f"{name} (cm) of source = ansur2, red: {name} " in title
+                await pilot.press("l")
+                await pilot.pause()
+            assert screen.shown == 0  # two limited measurements: back to the first
+
+    drive(scenario())
+
+
+def test_fit_screen_histogram_snapshot(snap_compare, db):
+    assert snap_compare(SassApp(db_path=db), run_before=open_fit_screen, terminal_size=(100, 30))

@@ -1,6 +1,7 @@
-"""Make Population on the query screen (issue 12): the people of the query,
-driven by key presses, written as population files and loaded for the next
-Create Figure; a gender with too few people refused with the count."""
+"""Make Population on the query screen (issue 12): the people of the selected
+list (Select One / Select All), driven by key presses, written as population
+files and loaded for the next Create Figure; a gender with too few people
+refused with the count."""
 
 from __future__ import annotations
 
@@ -31,19 +32,30 @@ async def query_young_women(pilot) -> None:
     await settle(pilot)
 
 
-def test_make_population_writes_files_of_the_medians_and_loads_them(drive, db, tmp_path):
+def young_women(db) -> list[int]:
     with connect(db) as conn:
-        ids = [
+        return [
             r[0]
             for r in conn.execute(
                 "SELECT id_num FROM person WHERE gender = 'female' AND age < 25 ORDER BY id_num"
             )
         ]
+
+
+def medians_of(db, ids: list[int]) -> dict[str, np.ndarray]:
+    """Each girth and center-of-mass cell's median over exactly these people,
+    from their own values (fetch_individual), not from the population code."""
+    with connect(db) as conn:
         people = [fetch_individual(conn, i) for i in ids]
-    medians = {
+    return {
         group: np.nanmedian(np.stack([p.groups[group] for p in people]), axis=0)
         for group in (GIRTH, CENTER_OF_MASS)
     }
+
+
+def test_make_population_writes_files_of_the_medians_and_loads_them(drive, db, tmp_path):
+    ids = young_women(db)
+    medians = medians_of(db, ids)
     target = tmp_path / "young.dat"
 
     async def scenario():
@@ -51,6 +63,7 @@ def test_make_population_writes_files_of_the_medians_and_loads_them(drive, db, t
         async with app.run_test(size=SIZE) as pilot:
             await query_young_women(pilot)
             assert f"{len(ids):,} people found" in message(app)
+            await pilot.press("a")  # Select All: the selected list is what Make Population uses
             await pilot.press("m")
             await pilot.press(*str(target), "enter")
             await settle(pilot)
@@ -100,10 +113,59 @@ def test_make_population_refuses_a_gender_with_fewer_than_20(drive, db, tmp_path
             await pilot.press(*"180", "enter")
             await choose(pilot, "Done")
             await settle(pilot)
-            await pilot.press("m", *str(target), "enter")
+            await pilot.press("a", "m", *str(target), "enter")
             await settle(pilot)
             word = "woman" if count == 1 else "women"
             assert f"only {count} {word}" in message(app)
             assert not target.exists()
+
+    drive(scenario())
+
+
+def test_make_population_uses_the_selected_list_not_the_last_query(drive, db, tmp_path):
+    """25 young women picked one by one, then another query run: the population
+    is those 25 women's, whose medians the test computes from the database."""
+    young = young_women(db)
+    chosen = young[:25]
+    assert len(young) > len(chosen)
+    medians = medians_of(db, chosen)
+    target = tmp_path / "picked.dat"
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            await query_young_women(pilot)
+            await pilot.press(*["s"] * len(chosen))  # Select One, 25 times
+            screen = app.screen
+            assert screen.lists.selected_ids() == chosen
+            screen.start_query("gender = male")  # the last query is now other people
+            await settle(pilot)
+            await pilot.press("m")
+            assert "25 selected people" in message(app)
+            await pilot.press(*str(target), "enter")
+            await settle(pilot)
+            said = message(app)
+            assert "25 women" in said, said
+            assert app.session.population.gender == "female"
+
+    drive(scenario())
+    data = read_population_file(target, GIRTH)
+    assert "25 selected from (gender = female AND age < 25)" in data.title
+    fiftieth = data.sections["female"][:, :, 1]
+    expected = medians[GIRTH]
+    measured = ~np.isnan(expected)
+    assert measured.sum() > 20
+    np.testing.assert_allclose(fiftieth[measured], expected[measured], atol=0.006)
+    assert "male" not in data.sections
+
+
+def test_make_population_with_nobody_selected_says_so(drive, db, tmp_path):
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            await query_young_women(pilot)
+            await pilot.press("m")
+            assert "selected list, which is empty" in message(app)
+            assert not app.screen.message_line.prompting
 
     drive(scenario())

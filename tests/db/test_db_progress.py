@@ -1,0 +1,138 @@
+"""Progress and cancel of the long database work (issue 15): every function
+reports (done, total) and stops on a cancel with nothing written."""
+
+from __future__ import annotations
+
+import threading
+
+import pytest
+from big_flat_files import write_big_flat_files
+
+from sass_tui.db.ansur import import_ansur
+from sass_tui.db.default import create_default_database, shipped_ansur_files
+from sass_tui.db.fit import fit_test, load_family
+from sass_tui.db.flatfile import import_flat_files
+from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.population import population_of
+from sass_tui.db.progress import Cancelled, interruptible
+from sass_tui.db.schema import connect, row_counts
+
+
+class CancelAfter:
+    """A cancel that is set once it has been asked `n` times (deterministic:
+    no timing), like a threading.Event the user sets mid-way."""
+
+    def __init__(self, n: int) -> None:
+        self.n = n
+        self.asked = 0
+
+    def is_set(self) -> bool:
+        self.asked += 1
+        return self.asked > self.n
+
+
+def _state(conn):
+    return row_counts(conn), conn.execute("PRAGMA integrity_check").fetchone()[0]
+
+
+def _checked(reports: list[tuple[int, int]]) -> None:
+    """Reports rise to their total, which does not change."""
+    assert reports, "no progress reported"
+    totals = {t for _d, t in reports}
+    assert len(totals) == 1
+    done = [d for d, _t in reports]
+    assert done == sorted(done) and 0 <= done[0] and done[-1] == reports[-1][1]
+
+
+def test_flat_import_reports_lines_and_a_cancel_stores_nothing(default_db, tmp_path):
+    files = write_big_flat_files(tmp_path / "big", people=1500)
+    before = _state(default_db)
+    reports: list[tuple[int, int]] = []
+    cancel = threading.Event()
+
+    def progress(done: int, total: int) -> None:
+        reports.append((done, total))
+        if len(reports) == 3:
+            cancel.set()  # the user presses Escape while it reads
+
+    with pytest.raises(Cancelled, match="the import was cancelled; nothing was written"):
+        import_flat_files(default_db, files, progress, cancel)
+    assert len(reports) == 3
+    assert _state(default_db) == before
+    # cancelled while storing (the SQLite statement is interrupted): rolled back
+    with pytest.raises(Cancelled):
+        import_flat_files(default_db, files, None, CancelAfter(1500 * 26 // 500 + 3))
+    assert _state(default_db) == before
+    reports.clear()
+    assert import_flat_files(default_db, files, lambda d, t: reports.append((d, t))) == 1500
+    _checked(reports)
+    assert reports[-1][1] == 1500 + 1500 * 25  # every line of both files
+    assert _state(default_db)[0]["person"] == before[0]["person"] + 1500
+
+
+def test_ansur_import_cancelled_is_rolled_back(default_db):
+    before = _state(default_db)
+    with pytest.raises(Cancelled):
+        import_ansur(default_db, shipped_ansur_files(), label="again", cancel=CancelAfter(2))
+    assert _state(default_db) == before
+
+
+def test_default_database_build_cancelled_leaves_no_people(tmp_path):
+    path = tmp_path / "new.db"
+    with pytest.raises(Cancelled):
+        create_default_database(path, cancel=CancelAfter(1))
+    with connect(path) as conn:
+        assert conn.execute("SELECT count(*) FROM person").fetchone()[0] == 0
+
+
+def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(
+    default_db_file, tmp_path, monkeypatch
+):
+    monkeypatch.setattr("sass_tui.db.lists.RUN_CHUNK", 2000)  # several ranges of the people
+    lists = QueryLists.open(default_db_file)
+    try:
+        assert lists.run("gender = female") > 0
+        lists.select_one(lists.page(QUERY_LIST, 0, 1)[0]["id"])
+        page = lists.page(QUERY_LIST, 0, 50)
+        counts = (lists.count(QUERY_LIST), lists.count(SELECTED_LIST))
+        with pytest.raises(Cancelled, match="the query was cancelled"):
+            lists.run("gender = male", cancel=CancelAfter(1))
+        assert lists.last_query == "gender = female"
+        assert (lists.count(QUERY_LIST), lists.count(SELECTED_LIST)) == counts
+        assert lists.page(QUERY_LIST, 0, 50) == page
+        reports: list[tuple[int, int]] = []
+        found = lists.run("gender = male", progress=lambda d, t: reports.append((d, t)))
+        _checked(reports)
+        (people,) = lists.conn.execute("SELECT count(*) FROM person").fetchone()
+        assert reports[-1] == (people, people) and len(reports) > 2
+        (male,) = lists.conn.execute("SELECT count(*) FROM person WHERE gender = 'male'").fetchone()
+        assert found == male == lists.count(QUERY_LIST)
+    finally:
+        lists.close()
+
+
+def test_population_fit_and_family_report_and_cancel(default_db):
+    reports: list[tuple[int, int]] = []
+    population_of(default_db, "gender = female AND age < 25", progress=lambda *r: reports.append(r))
+    _checked(reports)
+    with pytest.raises(Cancelled, match="making the population was cancelled"):
+        population_of(default_db, "gender = female AND age < 25", cancel=CancelAfter(10))
+    reports.clear()
+    fit_test(default_db, "stature < 190 cm", progress=lambda *r: reports.append(r))
+    assert reports == [(0, 3), (1, 3), (2, 3), (3, 3)]
+    with pytest.raises(Cancelled, match="the fit test was cancelled"):
+        fit_test(default_db, "stature < 190 cm", cancel=CancelAfter(1))
+    with pytest.raises(Cancelled, match="the family was cancelled"):
+        load_family(default_db, "male", ["stature", "mass"], 0.9, cancel=CancelAfter(2))
+
+
+def test_interruptible_stops_a_long_statement(default_db):
+    long = (
+        "WITH RECURSIVE n(i) AS (SELECT 1 UNION ALL SELECT i + 1 FROM n WHERE i < 100000000) "
+        "SELECT count(*) FROM n"
+    )
+    cancel = CancelAfter(3)
+    with pytest.raises(Cancelled), interruptible(default_db, cancel):
+        default_db.execute(long).fetchone()
+    assert cancel.asked <= 5  # stopped at once, not after the 10^8 rows
+    assert default_db.execute("SELECT 1").fetchone() == (1,)  # the handler is gone
