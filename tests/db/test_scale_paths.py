@@ -103,6 +103,7 @@ def generated_db_file(tmp_path_factory) -> Path:
 def accelerated(monkeypatch, tmp_path):
     """The accelerator answering on any size, its disk copies in tmp_path."""
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(accelerator, "BACKGROUND", False)
     monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
     accelerator._STORES.clear()
     yield tmp_path / "columns"
@@ -219,6 +220,7 @@ def queries(draw, conn: sqlite3.Connection, depth: int = 0) -> str:
 
 def test_random_queries_agree(generated_db_file, tmp_path_factory, monkeypatch):
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(accelerator, "BACKGROUND", False)
     monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path_factory.mktemp("columns"))
     accelerator._STORES.clear()
     conn = connect(generated_db_file)
@@ -307,6 +309,7 @@ def test_damaged_disk_copy_is_rebuilt(db, accelerated):
     words.write_text("not json")
     accelerator._STORES.clear()
     assert accelerator.count(db, compiled) == expected == sqlite_count(db, compiled)
+    (column,) = accelerated.rglob("q_girth_right_upper_arm.z.npy")
     assert len(np.load(column)) == PEOPLE  # written again, whole
 
 
