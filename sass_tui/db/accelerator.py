@@ -415,6 +415,7 @@ BACKGROUND = True
 _LOCK = threading.RLock()
 _STORES: dict[Path, ColumnStore] = {}
 _BUILDS: dict[Path, threading.Thread] = {}
+_PENDING: dict[Path, set[tuple[str, str]]] = {}
 
 
 def wait() -> None:
@@ -429,36 +430,47 @@ def wait() -> None:
 
 
 def _start_build(path: Path, wanted: set[tuple[str, str]]) -> None:
+    """Have the background thread of this file build (and save) the store and
+    these columns; one thread per file, asked again while it runs it goes on."""
     with _LOCK:
+        _PENDING.setdefault(path, set()).update(wanted)
         if path in _BUILDS:
             return
         thread = threading.Thread(
-            target=_build_in_background, args=(path, wanted), name="column copy", daemon=True
+            target=_build_in_background, args=(path,), name="column copy", daemon=True
         )
         _BUILDS[path] = thread
     thread.start()
 
 
-def _build_in_background(path: Path, wanted: set[tuple[str, str]]) -> None:
+def _build_in_background(path: Path) -> None:
     """The missing store and columns, each read in a short transaction of its
     own (no long lock against writers), then joined to the store under _LOCK
     after the store is brought up to date in one more transaction."""
+    conn = None
     try:
         conn = sqlite3.connect(
             f"{path.resolve().as_uri()}?mode=ro", uri=True, isolation_level=None, timeout=10.0
         )
+        while True:
+            with _LOCK:
+                wanted = _PENDING.pop(path, None)
+                if wanted is None:
+                    _BUILDS.pop(path, None)
+                    return
+            try:
+                _build(conn, path, wanted)
+            except (Unsupported, OSError, sqlite3.Error, ValueError):
+                pass  # SQLite goes on answering
     except sqlite3.Error:
-        with _LOCK:
-            _BUILDS.pop(path, None)
-        return
-    try:
-        _build(conn, path, wanted)
-    except (Unsupported, OSError, sqlite3.Error, ValueError):
-        pass  # SQLite goes on answering
+        pass
     finally:
-        conn.close()
+        if conn is not None:
+            conn.close()
         with _LOCK:
-            _BUILDS.pop(path, None)
+            if _BUILDS.get(path) is threading.current_thread():
+                _BUILDS.pop(path, None)
+                _PENDING.pop(path, None)
 
 
 def _build(conn: sqlite3.Connection, path: Path, wanted: set[tuple[str, str]]) -> None:
