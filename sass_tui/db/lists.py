@@ -66,14 +66,28 @@ class QueryLists:
     def run(self, text: str) -> int:
         """Replace the query list with the people `text` finds; returns how many.
         A bad query raises QueryError and leaves both lists as they were."""
+        from sass_tui.db import accelerator  # numpy only on a large database
+
         compiled = compile_query(text)
         sql = (
             f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
             f"WHERE {compiled.where} AND p.id_num NOT IN (SELECT id_num FROM temp.selected_list)"
         )
         with transaction(self.conn, "DEFERRED"):
+            # Read the main database first: its shared lock, held to COMMIT,
+            # keeps writers out, so the column copy (db/accelerator.py) finds
+            # the people SQLite would; None when SQLite must find them.
+            self.conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
+            found = accelerator.answer_in_transaction(self.conn, compiled, ids=True)
             self.conn.execute("DELETE FROM temp.query_list")
-            count = self.conn.execute(sql, compiled.params).rowcount
+            if found is None:
+                count = self.conn.execute(sql, compiled.params).rowcount
+            else:
+                count = self.conn.execute(
+                    "INSERT INTO temp.query_list (id_num) SELECT value FROM json_each(?) "
+                    "WHERE value NOT IN (SELECT id_num FROM temp.selected_list)",
+                    ("[" + ",".join(map(str, found)) + "]",),
+                ).rowcount
         self._counts[QUERY_LIST] = count
         self.last_query = text
         return count

@@ -624,3 +624,40 @@ def test_a_missing_trigger_means_no_following(db, monkeypatch):
     assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
     db.execute("UPDATE q_girth_neck SET x = 99 WHERE x < 20")
     assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+
+
+def test_query_lists_are_found_by_the_copy(db, monkeypatch):
+    """The query screen's list (QueryLists.run) takes its people from the
+    copy: the same people, in the same order, as SQLite, selected people left
+    out, and after a write as well."""
+    from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+
+    answered = []
+    answer = accelerator.answer_in_transaction
+    monkeypatch.setattr(
+        accelerator,
+        "answer_in_transaction",
+        lambda *a, **k: (lambda r: answered.append(r is not None) or r)(answer(*a, **k)),
+    )
+    lists = QueryLists(db)
+
+    def listed(which: str) -> list[int]:
+        return [row["id"] for row in lists.page(which, 0, 10 * PEOPLE)]
+
+    for text in QUERIES[:8]:
+        compiled = compile_query(text)
+        expected = sqlite_ids(db, compiled)
+        assert lists.run(text) == len(expected) == lists.count(QUERY_LIST), text
+        assert listed(QUERY_LIST) == expected, text
+    assert answered and all(answered)
+    lists.run(SAMPLE)
+    chosen = listed(QUERY_LIST)[:5]
+    for id_num in chosen:
+        assert lists.select_one(id_num)
+    with transaction(db):  # a write after the copy was made: followed
+        delete_people(db, listed(QUERY_LIST)[:7])
+    expected = [i for i in sqlite_ids(db, compile_query(SAMPLE)) if i not in chosen]
+    assert lists.run(SAMPLE) == len(expected)
+    assert listed(QUERY_LIST) == expected
+    assert listed(SELECTED_LIST) == chosen
+    assert answered[-1]
