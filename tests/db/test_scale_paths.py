@@ -661,3 +661,28 @@ def test_query_lists_are_found_by_the_copy(db, monkeypatch):
     assert listed(QUERY_LIST) == expected
     assert listed(SELECTED_LIST) == chosen
     assert answered[-1]
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.sets(st.integers(0, 60), max_size=30),
+    st.sets(st.integers(0, 60), max_size=20),
+    st.data(),
+)
+def test_splicing_the_ids_is_the_set_change(old, changed, data):
+    """The patch's splice: the old ids, less every changed id, plus the changed
+    ids still stored, in order; the values keep their ids."""
+    present = data.draw(st.sets(st.sampled_from(sorted(changed)))) if changed else set()
+    old_ids = np.array(sorted(old), dtype=np.int64)
+    changed_ids = np.array(sorted(changed), dtype=np.int64)
+    present_ids = np.array(sorted(present), dtype=np.int64)
+    at, was_there = accelerator._positions(old_ids, changed_ids)
+    plan = accelerator._splice_plan(
+        at[was_there], np.searchsorted(old_ids, present_ids), len(old_ids)
+    )
+    new_ids = accelerator._splice(old_ids, plan, present_ids)
+    assert new_ids.tolist() == sorted((old - changed) | present)
+    values = accelerator._splice(old_ids * 10.0, plan, np.full(len(present_ids), np.nan))
+    assert [v == i * 10.0 for i, v in zip(new_ids, values)] == [
+        i not in changed for i in new_ids.tolist()
+    ]
