@@ -65,6 +65,23 @@ def build_million(path: Path) -> None:
     print(f"built {path} in {time.perf_counter() - start:.0f} s", file=sys.stderr)
 
 
+def copied_columns(conn: sqlite3.Connection, table: str, new_id: str) -> tuple[str, str]:
+    """The columns of `table`, and what to SELECT to copy a row under the id
+    `new_id` (an SQL expression): a name of its own, no source key."""
+    columns = [r[1] for r in conn.execute(f"PRAGMA table_info({table})")]
+    select = [
+        new_id
+        if c == "id_num"
+        else f"'GEN_' || ({new_id})"
+        if (table, c) == ("person", "name")
+        else "NULL"
+        if (table, c) == ("person", "source_key")
+        else c
+        for c in columns
+    ]
+    return ", ".join(columns), ", ".join(select)
+
+
 def build_replicated(source: Path, path: Path, copies: int) -> None:
     """`copies` x the people of `source` (ids 1..1M), each copy's ids offset by k x 1M."""
     tmp = path.with_suffix(".building")
@@ -76,18 +93,10 @@ def build_replicated(source: Path, path: Path, copies: int) -> None:
     for k in range(1, copies):
         offset = k * MILLION
         for table in ("person",) + PERSON_TABLES:
-            columns = [r[1] for r in conn.execute(f"PRAGMA table_info({table})")]
-            select = [
-                f"id_num + {offset}"
-                if c == "id_num"
-                else f"'GEN_' || (id_num + {offset})"
-                if (table, c) == ("person", "name")
-                else c
-                for c in columns
-            ]
+            columns, select = copied_columns(conn, table, f"id_num + {offset}")
             conn.execute(
-                f"INSERT INTO {table} ({', '.join(columns)}) "
-                f"SELECT {', '.join(select)} FROM {table} WHERE id_num <= {MILLION}"
+                f"INSERT INTO {table} ({columns}) "
+                f"SELECT {select} FROM {table} WHERE id_num <= {MILLION}"
             )
         print(f"\rreplicated {k + 1} x 1M", end="", file=sys.stderr, flush=True)
     conn.execute("COMMIT")
@@ -237,20 +246,9 @@ def small_write(conn: sqlite3.Connection, people: int, seed: int) -> None:
     new_generation(conn)
     for k, id_num in enumerate(copied, 1):
         for table in ("person",) + PERSON_TABLES:
-            columns = [r[1] for r in conn.execute(f"PRAGMA table_info({table})")]
-            select = [
-                f"{top + k}"
-                if c == "id_num"
-                else f"'GEN_' || {top + k}"
-                if (table, c) == ("person", "name")
-                else "NULL"
-                if (table, c) == ("person", "source_key")
-                else c
-                for c in columns
-            ]
+            columns, select = copied_columns(conn, table, str(top + k))
             conn.execute(
-                f"INSERT INTO {table} ({', '.join(columns)}) "
-                f"SELECT {', '.join(select)} FROM {table} WHERE id_num = ?",
+                f"INSERT INTO {table} ({columns}) SELECT {select} FROM {table} WHERE id_num = ?",
                 (id_num,),
             )
     delete_people(conn, deleted)
