@@ -2,6 +2,7 @@
 5,000,000 generated people, several ways side by side in one run, and
 fetching one individual at 1,000,000, cold and warm.  Run:
     python benchmarks/db_scale.py [--cache DIR] [--sizes 1000000,5000000] [--fetch-only]
+    python benchmarks/db_scale.py --log-cost
 
 The count:
 - SQLite as before: `Query.count()` on a connection with the file mapped
@@ -39,8 +40,9 @@ from db_million import SAMPLE, build
 
 from sass_tui.db import accelerator
 from sass_tui.db.individual import fetch_individual
+from sass_tui.db.lists import QueryLists
 from sass_tui.db.query import run_query
-from sass_tui.db.schema import PERSON_TABLES, connect
+from sass_tui.db.schema import PERSON_TABLES, connect, delete_people, new_generation
 
 MILLION = 1_000_000
 MAPPED = 17179869184  # connect()'s memory map before this change (PRAGMA mmap_size)
@@ -63,6 +65,23 @@ def build_million(path: Path) -> None:
     print(f"built {path} in {time.perf_counter() - start:.0f} s", file=sys.stderr)
 
 
+def copied_columns(conn: sqlite3.Connection, table: str, new_id: str) -> tuple[str, str]:
+    """The columns of `table`, and what to SELECT to copy a row under the id
+    `new_id` (an SQL expression): a name of its own, no source key."""
+    columns = [r[1] for r in conn.execute(f"PRAGMA table_info({table})")]
+    select = [
+        new_id
+        if c == "id_num"
+        else f"'GEN_' || ({new_id})"
+        if (table, c) == ("person", "name")
+        else "NULL"
+        if (table, c) == ("person", "source_key")
+        else c
+        for c in columns
+    ]
+    return ", ".join(columns), ", ".join(select)
+
+
 def build_replicated(source: Path, path: Path, copies: int) -> None:
     """`copies` x the people of `source` (ids 1..1M), each copy's ids offset by k x 1M."""
     tmp = path.with_suffix(".building")
@@ -74,18 +93,10 @@ def build_replicated(source: Path, path: Path, copies: int) -> None:
     for k in range(1, copies):
         offset = k * MILLION
         for table in ("person",) + PERSON_TABLES:
-            columns = [r[1] for r in conn.execute(f"PRAGMA table_info({table})")]
-            select = [
-                f"id_num + {offset}"
-                if c == "id_num"
-                else f"'GEN_' || (id_num + {offset})"
-                if (table, c) == ("person", "name")
-                else c
-                for c in columns
-            ]
+            columns, select = copied_columns(conn, table, f"id_num + {offset}")
             conn.execute(
-                f"INSERT INTO {table} ({', '.join(columns)}) "
-                f"SELECT {', '.join(select)} FROM {table} WHERE id_num <= {MILLION}"
+                f"INSERT INTO {table} ({columns}) "
+                f"SELECT {select} FROM {table} WHERE id_num <= {MILLION}"
             )
         print(f"\rreplicated {k + 1} x 1M", end="", file=sys.stderr, flush=True)
     conn.execute("COMMIT")
@@ -136,14 +147,13 @@ def parquet_files(conn: sqlite3.Connection, cache: Path, people: int, store) -> 
         name: folder / f"{name}.parquet"
         for name in ("person", "q_girth_right_upper_arm", "q_strength_elbow_flexion", "joined")
     }
-    if all(f.exists() for f in files.values()):
-        return files
+    shutil.rmtree(folder, ignore_errors=True)  # the database changes at every run
     folder.mkdir(parents=True, exist_ok=True)
-    ids = np.asarray(store.person_ids(conn))
-    gender = store.column(conn, "person", "gender")
+    ids = np.asarray(store.ids)
+    gender = store.columns[("person", "gender")]
     gender_text = np.asarray(gender.words, dtype=object)[np.asarray(gender.codes)]
-    z = np.asarray(store.column(conn, "q_girth_right_upper_arm", "z"))
-    elbow = np.asarray(store.column(conn, "q_strength_elbow_flexion", "max"))
+    z = np.asarray(store.columns[("q_girth_right_upper_arm", "z")])
+    elbow = np.asarray(store.columns[("q_strength_elbow_flexion", "max")])
     duck = duckdb.connect()
     tables = {
         "person": {"id_num": ids, "gender": gender_text},
@@ -211,10 +221,10 @@ def fetch_before(conn: sqlite3.Connection, id_num: int) -> None:
         conn.execute(sql, (id_num,)).fetchall()
 
 
-def fetch_times(conn: sqlite3.Connection, fetch, people: int, seed: int):
+def fetch_times(conn: sqlite3.Connection, fetch, stored: np.ndarray, seed: int):
     """Wall time and this thread's CPU time of each fetch, and the blocks read from disk."""
     walls, cpus, faults = [], [], 0
-    for pid in np.random.default_rng(seed).integers(1, people + 1, 200).tolist():
+    for pid in np.random.default_rng(seed).choice(stored, 200, replace=False).tolist():
         before = resource.getrusage(resource.RUSAGE_SELF).ru_inblock
         c0, t0 = time.thread_time(), time.perf_counter()
         fetch(conn, pid)
@@ -224,12 +234,125 @@ def fetch_times(conn: sqlite3.Connection, fetch, people: int, seed: int):
     return walls, cpus, faults
 
 
+def small_write(conn: sqlite3.Connection, people: int, seed: int) -> None:
+    """Import 10 people (copies of 10 others under new ids, every table, in
+    SQL as an import writes them) and delete 10 others through sass, in one
+    transaction."""
+    rng = np.random.default_rng(seed)
+    picked = rng.choice(np.arange(1, people + 1), 20, replace=False).tolist()
+    copied, deleted = picked[:10], picked[10:]
+    top = conn.execute("SELECT max(id_num) FROM person").fetchone()[0]
+    conn.execute("BEGIN IMMEDIATE")
+    new_generation(conn)
+    for k, id_num in enumerate(copied, 1):
+        for table in ("person",) + PERSON_TABLES:
+            columns, select = copied_columns(conn, table, str(top + k))
+            conn.execute(
+                f"INSERT INTO {table} ({columns}) SELECT {select} FROM {table} WHERE id_num = ?",
+                (id_num,),
+            )
+    delete_people(conn, deleted)
+    conn.execute("COMMIT")
+
+
+def after_write_times(conn: sqlite3.Connection, people: int) -> dict:
+    """The first count after a small write: followed through the change log
+    (now), in this process and in a new one (the disk copy older than the
+    write), against building the copy anew (before: every write did that)."""
+    out = {}
+    accelerator.BACKGROUND = True
+    small_write(conn, people, seed=1)
+    t0 = time.perf_counter()
+    out["now"] = run_query(conn, SAMPLE).count()
+    out["now_s"] = time.perf_counter() - t0
+    assert out["now"] == sqlite_count(conn), out
+    accelerator.wait()  # the background save of the patched copy, outside the timing
+    small_write(conn, people, seed=2)
+    accelerator._STORES.clear()  # a new process: the copy on disk is one write old
+    t0 = time.perf_counter()
+    out["new_process"] = run_query(conn, SAMPLE).count()
+    out["new_process_s"] = time.perf_counter() - t0
+    assert out["new_process"] == sqlite_count(conn), out
+    accelerator.wait()
+    small_write(conn, people, seed=3)
+    accelerator.BACKGROUND = False
+    accelerator._STORES.clear()
+    shutil.rmtree(accelerator.CACHE_DIR, ignore_errors=True)  # as before: build it all
+    t0 = time.perf_counter()
+    out["rebuild"] = run_query(conn, SAMPLE).count()
+    out["rebuild_s"] = time.perf_counter() - t0
+    assert out["rebuild"] == sqlite_count(conn), out
+    return out
+
+
+def list_times(path: Path) -> tuple[float, float, int]:
+    """Query DB's list (QueryLists.run) of the sample query: SQLite's INSERT ...
+    SELECT against the copy's ids inserted through json_each (copy warm)."""
+    lists = QueryLists.open(path)
+    saved = accelerator.MIN_PEOPLE
+    try:
+        accelerator.MIN_PEOPLE = 1 << 62
+        sql_time, sql_n = median_time(lambda: lists.run(SAMPLE), runs=3)
+        accelerator.MIN_PEOPLE = saved
+        lists.run(SAMPLE)
+        copy_time, copy_n = median_time(lambda: lists.run(SAMPLE), runs=3)
+    finally:
+        accelerator.MIN_PEOPLE = saved
+        lists.close()
+    assert sql_n == copy_n, (sql_n, copy_n)
+    return sql_time, copy_time, int(copy_n)  # type: ignore[call-overload]
+
+
+def log_cost(people: int = 50_000, runs: int = 3) -> None:
+    """What the change log's triggers cost: storing `people` generated people
+    (db_million's generator, every query row logged) and opening a
+    connection, with the triggers against the same file without them,
+    interleaved."""
+    import tempfile
+
+    from sass_tui.db.schema import change_log_triggers
+
+    builds: dict[str, list[float]] = {"with the change log": [], "without": []}
+    opens: dict[str, list[float]] = {"with the change log": [], "without": []}
+    with tempfile.TemporaryDirectory() as tmp:
+        for run in range(runs):
+            for label in builds:
+                path = Path(tmp) / f"{run}-{label[:4]}.db"
+                conn = connect(path, create=True)
+                _fast_writes(conn)
+                if label == "without":
+                    for name in change_log_triggers():
+                        conn.execute(f"DROP TRIGGER {name}")
+                t0 = time.perf_counter()
+                build(conn, people, np.random.default_rng(run))
+                builds[label].append(time.perf_counter() - t0)
+                conn.close()
+                t0 = time.perf_counter()
+                for _ in range(20):
+                    c = sqlite3.connect(path)
+                    c.execute("SELECT count(*) FROM meta").fetchone()
+                    c.close()
+                opens[label].append((time.perf_counter() - t0) / 20)
+                path.unlink()
+    print(f"| {people:,} people stored, median of {runs} | opening a connection, median |")
+    print("|---|---|---|")
+    for label in builds:
+        print(
+            f"| {label} | {statistics.median(builds[label]):.1f} s | "
+            f"{statistics.median(opens[label]) * 1000:.2f} ms |"
+        )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--cache", type=Path, default=Path("/tmp/sass_scale"))
     parser.add_argument("--sizes", default="1000000,5000000")
     parser.add_argument("--fetch-only", action="store_true", help="only the fetch table")
+    parser.add_argument("--log-cost", action="store_true", help="only the change log's cost")
     args = parser.parse_args()
+    if args.log_cost:
+        log_cost()
+        return
     if args.fetch_only:
         fetch_table(database(args.cache, MILLION))
         return
@@ -267,6 +390,7 @@ def main() -> None:
         accelerator.CACHE_DIR = args.cache / "columns"
         shutil.rmtree(accelerator.CACHE_DIR, ignore_errors=True)
         accelerator._STORES.clear()
+        accelerator.BACKGROUND = False  # built in this thread, to time it
         t0 = time.perf_counter()
         first = run_query(conn, SAMPLE).count()
         build_time = time.perf_counter() - t0
@@ -300,6 +424,25 @@ def main() -> None:
                 "DuckDB over Parquet, the three columns pre-joined, median of 5",
                 f"{duck['joined'][0] * 1000:.1f} ms",
             )
+        sql_list, copy_list, listed = list_times(path)
+        note("Query DB's list (QueryLists.run), SQLite, median of 3", f"{sql_list * 1000:.0f} ms")
+        note(
+            "**Query DB's list from the column copy, median of 3**",
+            f"**{copy_list * 1000:.0f} ms**",
+        )
+        after = after_write_times(conn, people)
+        note(
+            "**first count after importing 10 people and deleting 10 (now: patched)**",
+            f"**{after['now_s'] * 1000:.0f} ms**",
+        )
+        note(
+            "the same, a new process, the disk copy one write old (patched)",
+            f"{after['new_process_s'] * 1000:.0f} ms",
+        )
+        note(
+            "the same, the copy built anew (before: every write)",
+            f"{after['rebuild_s']:.1f} s",
+        )
         conn.close()
         mapped.close()
     header = results.pop("people")
@@ -340,13 +483,18 @@ def fetch_table(path: Path) -> None:
             ("now: 8 queries, read()", fetch_individual, None),
         )
     ]
+    # The people stored now (each run of the count table imports and deletes a
+    # few), read before any page cache is dropped.
+    conn = connect(path)
+    stored = np.asarray([r[0] for r in conn.execute("SELECT id_num FROM person")])
+    conn.close()
     for seed, (state, label, fetch, mmap) in enumerate(cases):
         page_cache(path, warm=state == "warm")
         conn = connect(path)
         if mmap is not None:
             conn.execute(f"PRAGMA mmap_size = {mmap}")
         gc.collect()
-        walls, cpus, faults = fetch_times(conn, fetch, MILLION, seed)
+        walls, cpus, faults = fetch_times(conn, fetch, stored, seed)
         conn.close()
         print(
             f"| {state} | {label} | {statistics.median(walls) * 1000:.2f} ms | "

@@ -10,13 +10,24 @@ over those arrays: tens of milliseconds at 5,000,000 people
 
 The SQLite file stays the store of record; the copy may never disagree with it:
 
-- The copy is keyed on the data version the SQLite file carries in its
-  header, the change counter that SQLite bumps on every committed write in
-  rollback-journal mode, together with the file's size, modification time
-  and inode.  The key is read, the copy checked (or built) and the query
-  evaluated while one read transaction holds SQLite's shared lock, so no
-  writer can commit in between.  Any other key means the copy is dropped and
-  rebuilt from SQLite.
+- The copy carries the data version the SQLite file had when the copy was
+  last brought up to date: the header's change counter (SQLite bumps it on
+  every committed write in rollback-journal mode), page count and schema
+  cookie, with the file's size, mtime and inode.  The version is read, the
+  copy brought up to date and the query evaluated while one read
+  transaction holds SQLite's shared lock, so no writer commits in between.
+- A file of schema 3 logs every write to every table a query reads
+  (db/schema.py, change_log_triggers): the changed person's id and the
+  generation it changed in.  Another data version then means: re-read, in
+  that same transaction, the people logged at the copy's generation or
+  later (`_sync`), a few milliseconds for a few people.  The log cannot say
+  when the schema changed (`db init`, a dropped trigger), when the file holds
+  another history (its generation token differs: another database, or an
+  older copy of this one) or when more than PATCH_PEOPLE people changed; the
+  copy is then built anew, in a background thread (BACKGROUND) while SQLite
+  answers, each column read in a short transaction of its own and joined to
+  the copy only when its generation is no older than the copy's (what
+  changed meanwhile is logged, and re-read at the next count).
 - Whatever this module cannot prove equal, SQLite answers: a database in WAL
   mode (its header counter does not move on every write), a connection with
   its own transaction open, a query whose SQL is not a plain AND / OR of
@@ -31,7 +42,8 @@ The SQLite file stays the store of record; the copy may never disagree with it:
 Only databases with at least MIN_PEOPLE people use the copy (below that
 SQLite is fast, and numpy need not be imported).  The copy lives in memory
 for the process and on disk under $XDG_CACHE_HOME/sass/columns/ (one folder
-per database file) for the next process.
+per database file, saved after a build or a patch by the background thread)
+for the next process, which brings it up to date through the log as well.
 """
 
 from __future__ import annotations
@@ -39,7 +51,8 @@ from __future__ import annotations
 import os
 import re
 import sqlite3
-from dataclasses import dataclass
+import threading
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -185,143 +198,485 @@ class TextColumn:
     words: list[str]
 
 
+Column = Any  # a float64 array (NaN for NULL) or a TextColumn, aligned on the store's ids
+
+
+@dataclass
 class ColumnStore:
-    """The copy of one database file at one data version."""
+    """The copy of one database file.
 
-    def __init__(self, folder: Path, key: tuple[int, ...]):
-        import hashlib
+    Invariant (the change log's promise): for every person not logged in
+    change_log at generation `gen` or later, `ids` holds the person exactly
+    when the person table does, and every column holds the person's value.
+    Whatever changed since is re-read from SQLite by `_sync` inside the
+    reading transaction before any answer (`key` unchanged: nothing changed).
+    A store of a file without the log (`logged` False) is valid only while
+    `key` is the file's data version.
+    """
+
+    key: tuple[int, ...]
+    gen: int
+    token: int | None
+    logged: bool
+    ids: npt.NDArray[np.int64]
+    columns: dict[tuple[str, str], Column] = field(default_factory=dict)
+    refused: set[tuple[str, str]] = field(default_factory=set)
+    saved_key: tuple[int, ...] | None = None  # the key of the copy on disk
+
+    @property
+    def cookie(self) -> int:
+        return self.key[2]
+
+
+def _generation(conn: sqlite3.Connection, gen: int | None = None) -> tuple[int, int | None]:
+    """The current generation and its token (or generation `gen`'s token; None if absent)."""
+    if gen is None:
+        row = conn.execute(
+            "SELECT gen, token FROM change_gens ORDER BY gen DESC LIMIT 1"
+        ).fetchone()
+    else:
+        row = conn.execute("SELECT gen, token FROM change_gens WHERE gen = ?", (gen,)).fetchone()
+    return (int(row[0]), int(row[1])) if row else (0 if gen is None else gen, None)
+
+
+def _has_change_log(conn: sqlite3.Connection) -> bool:
+    """Whether the file's triggers log every write to every table a query reads,
+    exactly as this sass writes them (anything else: no incremental copy)."""
+    from sass_tui.db.schema import change_log_triggers
+
+    found = {
+        name: sql
+        for name, sql in conn.execute(
+            "SELECT name, sql FROM sqlite_master WHERE type = 'trigger' "
+            "AND (name LIKE 'log\\_%' ESCAPE '\\' OR name = 'change_note_insert')"
+        )
+    }
+    expected = change_log_triggers()
+    return all(
+        found.get(name, "").replace("IF NOT EXISTS ", "") == sql.replace("IF NOT EXISTS ", "")
+        for name, sql in expected.items()
+    )
+
+
+def _base(conn: sqlite3.Connection, key: tuple[int, ...]) -> ColumnStore:
+    """A store holding the person ids only (inside the caller's read transaction)."""
+    logged = _has_change_log(conn)
+    gen, token = _generation(conn) if logged else (0, None)
+    ids = _fetch_ints(conn, "SELECT id_num FROM person ORDER BY id_num")
+    return ColumnStore(key=key, gen=gen, token=token, logged=logged, ids=ids)
+
+
+def _read_column(
+    conn: sqlite3.Connection,
+    table: str,
+    column: str,
+    ids: npt.NDArray[np.int64],
+    only: npt.NDArray[np.int64] | None = None,
+    words: list[str] | None = None,
+) -> tuple[npt.NDArray[np.intp], Any, list[str] | None]:
+    """The column's values read from SQLite: (positions in ids, values there,
+    the words of a text column).  `only`: just those people (a patch).
+    Positions of people not in ids are left out."""
+    import numpy as np
+
+    kind = _column_kind(conn, table, column)
+    where = f"{column} IS NOT NULL"
+    params: list[object] = []
+    if only is not None:
         import json
-        import shutil
 
-        # One folder per data version: files of two versions never mix.
-        self.key = list(key)
-        version = hashlib.sha256(json.dumps(self.key).encode()).hexdigest()[:16]
-        self.folder = folder / version
-        self.columns: dict[tuple[str, str], Any] = {}
-        self.ids: npt.NDArray[np.int64] | None = None
-        if not self.folder.exists():
-            if folder.exists():  # copies of older versions are stale for good
-                for old in folder.iterdir():
-                    if old.name != version:
-                        shutil.rmtree(old, ignore_errors=True)
-            self.folder.mkdir(parents=True, exist_ok=True)
-            _write_atomic(self.folder / "key.json", json.dumps(self.key).encode())
-
-    def person_ids(self, conn: sqlite3.Connection) -> npt.NDArray[np.int64]:
-        import numpy as np
-
-        if self.ids is None:
-            path = self.folder / "person.id_num.npy"
-            ids = _load(path, np.int64, None)
-            if ids is None:
-                ids = _fetch_ints(conn, "SELECT id_num FROM person ORDER BY id_num")
-                self._save(path, ids)
-            self.ids = ids
-        return self.ids
-
-    def column(self, conn: sqlite3.Connection, table: str, column: str) -> Any:
-        """The column as an array aligned on person_ids (a TextColumn for text):
-        read from this version's folder if there (and whole), else built from SQLite."""
-        import json
-
-        import numpy as np
-
-        key = (table, column)
-        if key in self.columns:
-            return self.columns[key]
-        kind = _column_kind(conn, table, column)
-        path = self.folder / f"{table}.{column}.npy"
-        people = len(self.person_ids(conn))
-        loaded: Any
-        if kind == "real":
-            loaded = _load(path, np.float64, people)
-            if loaded is None:
-                loaded = self._build_real(conn, table, column)
-                self._save(path, loaded)
-        else:
-            words_path = self.folder / f"{table}.{column}.json"
-            codes = _load(path, np.int32, people)
-            try:
-                words = json.loads(words_path.read_text()) if codes is not None else None
-            except (OSError, ValueError):
-                words = None
-            if codes is not None and isinstance(words, list):
-                loaded = TextColumn(codes, words)
-            else:
-                loaded = self._build_text(conn, table, column)
-                self._save(path, loaded.codes)
-                _write_atomic(words_path, json.dumps(loaded.words).encode())
-        self.columns[key] = loaded
-        return loaded
-
-    def _positions(
-        self, conn: sqlite3.Connection, ids: npt.NDArray[np.int64]
-    ) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.bool_]]:
-        """Where each id sits in the person ids, and which ids are people at all."""
-        import numpy as np
-
-        people = self.person_ids(conn)
-        at = np.searchsorted(people, ids)
-        at_clipped = np.minimum(at, len(people) - 1) if len(people) else at
-        known = (at < len(people)) & (people[at_clipped] == ids) if len(people) else at < 0
-        return at_clipped, known
-
-    def _build_real(self, conn: sqlite3.Connection, table: str, column: str) -> Any:
-        import numpy as np
-
+        where += " AND id_num IN (SELECT value FROM json_each(?))"
+        params.append(json.dumps(only.tolist()))
+    if kind == "real":
         # Anything but a REAL value (text, a blob) becomes 'not real', which
         # float() refuses: such a column cannot be copied and SQLite answers.
         cursor = conn.execute(
             f"SELECT id_num, CASE typeof({column}) WHEN 'real' THEN {column} "
-            f"ELSE 'not real' END FROM {table} WHERE {column} IS NOT NULL"
+            f"ELSE 'not real' END FROM {table} WHERE {where}",
+            params,
         )
         try:
             rows = _fetch_pairs(cursor, np.float64)
         except ValueError:
             raise Unsupported(f"{table}.{column} holds a value that is not REAL") from None
-        out = np.full(len(self.person_ids(conn)), np.nan)
-        at, known = self._positions(conn, rows["id"])
-        out[at[known]] = rows["v"][known]
-        return out
-
-    def _build_text(self, conn: sqlite3.Connection, table: str, column: str) -> TextColumn:
-        import numpy as np
-
+        values = rows["v"]
+        new_words = None
+    else:
         # The distinct words first, then each row's word number computed by
         # SQLite (a CASE over the words, with the column's own BINARY
         # comparison): no Python work per row.  A value that is not text
         # becomes -2 and refuses the copy.
-        words = [
-            w
-            for (w,) in conn.execute(
-                f"SELECT DISTINCT {column} FROM {table} WHERE typeof({column}) = 'text'"
-            )
-        ]
-        if len(words) > MAX_WORDS:
+        new_words = list(words or [])
+        for (w,) in conn.execute(
+            f"SELECT DISTINCT {column} FROM {table} WHERE typeof({column}) = 'text'"
+            + ("" if only is None else " AND id_num IN (SELECT value FROM json_each(?))"),
+            params,
+        ):
+            if w not in new_words:
+                new_words.append(w)
+        if len(new_words) > MAX_WORDS:
             raise Unsupported(f"{table}.{column} has more than {MAX_WORDS} different values")
-        cases = "".join(f" WHEN {column} = ? THEN {k}" for k in range(len(words)))
+        cases = "".join(f" WHEN {column} = ? THEN {k}" for k in range(len(new_words)))
         cursor = conn.execute(
             f"SELECT id_num, CASE WHEN typeof({column}) <> 'text' THEN -2{cases} ELSE -3 END "
-            f"FROM {table} WHERE {column} IS NOT NULL",
-            words,
+            f"FROM {table} WHERE {where}",
+            [*new_words, *params],
         )
         rows = _fetch_pairs(cursor, np.int32)
         if len(rows) and int(rows["v"].min()) < 0:
             raise Unsupported(f"{table}.{column} holds a value that is not TEXT")
-        out = np.full(len(self.person_ids(conn)), -1, dtype=np.int32)
-        at, known = self._positions(conn, rows["id"])
-        out[at[known]] = rows["v"][known]
-        return TextColumn(out, words)
-
-    def _save(self, path: Path, array: Any) -> None:
-        import numpy as np
-
-        tmp = path.with_name(path.name + ".tmp.npy")
-        np.save(tmp, array)
-        os.replace(tmp, path)
+        values = rows["v"]
+    at, known = _positions(ids, rows["id"])
+    return at[known], values[known], new_words
 
 
-def _load(path: Path, dtype: Any, length: int | None) -> Any:
+def _new_column(
+    conn: sqlite3.Connection, table: str, column: str, ids: npt.NDArray[np.int64]
+) -> Column:
+    import numpy as np
+
+    at, values, words = _read_column(conn, table, column, ids)
+    if words is None:
+        out = np.full(len(ids), np.nan)
+        out[at] = values
+        return out
+    codes = np.full(len(ids), -1, dtype=np.int32)
+    codes[at] = values
+    return TextColumn(codes, words)
+
+
+def _positions(
+    people: npt.NDArray[np.int64], ids: npt.NDArray[np.int64]
+) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.bool_]]:
+    """Where each id sits in the sorted people, and which ids are there at all."""
+    import numpy as np
+
+    at = np.searchsorted(people, ids)
+    if not len(people):
+        return at, at < 0
+    at_clipped = np.minimum(at, len(people) - 1)
+    return at_clipped, people[at_clipped] == ids
+
+
+# --- following the writes ----------------------------------------------------
+
+# Re-read the people changed since the copy while they are at most this many
+# (or this share of everyone); more, and the copy is rebuilt.
+PATCH_PEOPLE = 20_000
+PATCH_SHARE = 0.05
+
+
+def _sync(conn: sqlite3.Connection, store: ColumnStore, key: tuple[int, ...]) -> bool:
+    """Bring the store up to the file's data (inside the caller's read
+    transaction).  False: the change log cannot say what changed (or too
+    much did), the store must be rebuilt."""
+    import numpy as np
+
+    if store.key == key:
+        return True
+    if not store.logged or store.cookie != key[2]:
+        return False  # no log, or the schema changed (db init, a dropped trigger)
+    if _generation(conn, store.gen)[1] != store.token:
+        return False  # another history: another database, or an older copy of this one
+    gen, token = _generation(conn)
+    changed = np.sort(
+        _fetch_ints(conn, f"SELECT id_num FROM change_log WHERE gen >= {int(store.gen)}")
+    )
+    if len(changed) > max(PATCH_PEOPLE, PATCH_SHARE * len(store.ids)):
+        return False
+    if len(changed):
+        import json
+
+        present = _fetch_ints(
+            conn,
+            "SELECT id_num FROM person WHERE id_num IN (SELECT value FROM json_each(?)) "
+            "ORDER BY id_num",
+            (json.dumps(changed.tolist()),),
+        )
+        at, was_there = _positions(store.ids, changed)
+        plan = _splice_plan(at[was_there], np.searchsorted(store.ids, present), len(store.ids))
+        new_ids = _splice(store.ids, plan, present)
+        columns: dict[tuple[str, str], Column] = {}
+        for (table, column), old in store.columns.items():
+            text = isinstance(old, TextColumn)
+            values = old.codes if text else old
+            base = _splice(
+                values, plan, np.full(len(present), -1 if text else np.nan, values.dtype)
+            )
+            try:
+                at_new, fresh, words = _read_column(
+                    conn, table, column, new_ids, present, old.words if text else None
+                )
+            except Unsupported:
+                continue  # this column is left out; asked again, it is rebuilt or refused
+            base[at_new] = fresh
+            columns[(table, column)] = TextColumn(base, words or []) if text else base
+        store.ids, store.columns = new_ids, columns
+        store.refused = set()
+    store.key, store.gen, store.token = key, gen, token
+    return True
+
+
+def _splice_plan(
+    gone: npt.NDArray[np.intp], inserts: npt.NDArray[np.intp], length: int
+) -> list[tuple[bool, int, int]]:
+    """How to make the new arrays from the old: (False, a, b) keeps old[a:b],
+    (True, a, b) puts new[a:b]; `gone` (sorted) are the old positions
+    dropped, `inserts` (non-decreasing) the old position each new entry goes
+    before.  One pass of copies per array (a few ms at 5,000,000 people),
+    where masks and np.insert took three."""
+    plan: list[tuple[bool, int, int]] = []
+    drops, places = gone.tolist(), inserts.tolist()
+    i = j = prev = 0
+    end = length + 1
+    while i < len(drops) or j < len(places):
+        q = min(drops[i] if i < len(drops) else end, places[j] if j < len(places) else end)
+        if prev < q:
+            plan.append((False, prev, q))
+        k = j
+        while k < len(places) and places[k] == q:
+            k += 1
+        if k > j:
+            plan.append((True, j, k))
+            j = k
+        if i < len(drops) and drops[i] == q:
+            i += 1
+            prev = q + 1
+        else:
+            prev = q
+    if prev < length:
+        plan.append((False, prev, length))
+    return plan
+
+
+def _splice(old: Any, plan: list[tuple[bool, int, int]], new: Any) -> Any:
+    import numpy as np
+
+    pieces = [new[a:b] if fresh else old[a:b] for fresh, a, b in plan]
+    return np.concatenate(pieces) if pieces else np.zeros(0, dtype=old.dtype)
+
+
+# --- building in the background -----------------------------------------------
+
+# Build a missing copy in a background thread while SQLite answers (True), or
+# in the caller (False: tests and benchmarks, and `wait()` after the fact).
+BACKGROUND = True
+_LOCK = threading.RLock()
+_STORES: dict[Path, ColumnStore] = {}
+_BUILDS: dict[Path, threading.Thread] = {}
+_PENDING: dict[Path, set[tuple[str, str]]] = {}
+
+
+def wait() -> None:
+    """Wait for every background build to finish."""
+    while True:
+        with _LOCK:
+            threads = list(_BUILDS.values())
+        if not threads:
+            return
+        for thread in threads:
+            thread.join()
+
+
+def _start_build(path: Path, wanted: set[tuple[str, str]]) -> None:
+    """Have the background thread of this file build (and save) the store and
+    these columns; one thread per file, asked again while it runs it goes on."""
+    with _LOCK:
+        _PENDING.setdefault(path, set()).update(wanted)
+        if path in _BUILDS:
+            return
+        thread = threading.Thread(
+            target=_build_in_background, args=(path,), name="column copy", daemon=True
+        )
+        _BUILDS[path] = thread
+    thread.start()
+
+
+def _build_in_background(path: Path) -> None:
+    """The missing store and columns, each read in a short transaction of its
+    own (no long lock against writers), then joined to the store under _LOCK
+    after the store is brought up to date in one more transaction."""
+    conn = None
+    try:
+        conn = sqlite3.connect(
+            f"{path.resolve().as_uri()}?mode=ro", uri=True, isolation_level=None, timeout=10.0
+        )
+        while True:
+            with _LOCK:
+                wanted = _PENDING.pop(path, None)
+                if wanted is None:
+                    _BUILDS.pop(path, None)
+                    return
+            try:
+                _build(conn, path, wanted)
+            except (Unsupported, OSError, sqlite3.Error, ValueError):
+                pass  # SQLite goes on answering
+    except sqlite3.Error:
+        pass
+    finally:
+        if conn is not None:
+            conn.close()
+        with _LOCK:
+            if _BUILDS.get(path) is threading.current_thread():
+                _BUILDS.pop(path, None)
+                _PENDING.pop(path, None)
+
+
+def _build(conn: sqlite3.Connection, path: Path, wanted: set[tuple[str, str]]) -> None:
+    with _LOCK:
+        found = _STORES.get(path)
+        if found is not None and not _read(conn, lambda: _sync(conn, found, data_version(conn))):
+            found = None
+    if found is None:
+        found = _read(conn, lambda: _base(conn, data_version(conn)))
+        with _LOCK:
+            _STORES[path] = found
+    store: ColumnStore = found
+    for table, column in sorted(wanted):
+        with _LOCK:
+            if (table, column) in store.columns or _STORES.get(path) is not store:
+                continue
+            ids, gen = store.ids, store.gen
+
+        def read(table: str = table, column: str = column) -> tuple[Column, int, bool]:
+            key = data_version(conn)
+            now = _generation(conn)[0] if store.logged else gen
+            return _new_column(conn, table, column, ids), now, key == store.key
+
+        try:
+            values, read_gen, same_key = _read(conn, read)
+        except Unsupported:
+            with _LOCK:
+                store.refused.add((table, column))
+            continue
+        with _LOCK:
+            # The column is right for every person not logged since read_gen;
+            # the store for every person not logged since store.gen.  Joined
+            # when the column is no older than the store's generation.
+            if (
+                _STORES.get(path) is store
+                and store.ids is ids
+                and (read_gen >= store.gen if store.logged else same_key)
+            ):
+                store.columns[(table, column)] = values
+                store.saved_key = None
+    _save(path, store)
+
+
+def _read(conn: sqlite3.Connection, fn: Any) -> Any:
+    """fn() inside one read transaction (the shared lock held throughout)."""
+    conn.execute("BEGIN")
+    try:
+        conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
+        return fn()
+    finally:
+        conn.execute("COMMIT")
+
+
+# --- on disk -----------------------------------------------------------------
+
+
+def _cache_folder(path: Path) -> Path:
+    import hashlib
+
+    base = CACHE_DIR
+    if base is None:
+        xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+        base = Path(xdg) / "sass" / "columns"
+    digest = hashlib.sha256(str(path.resolve()).encode()).hexdigest()[:16]
+    return base / digest
+
+
+def _save(path: Path, store: ColumnStore) -> None:
+    """Write the store to a new folder and drop the older ones (errors ignored:
+    the disk copy only saves the next process a build)."""
+    import json
+    import shutil
+    import uuid
+
+    import numpy as np
+
+    with _LOCK:  # the arrays are never changed in place: a snapshot is enough
+        if _STORES.get(path) is not store or store.saved_key == store.key:
+            return
+        key, gen, token, logged, ids = store.key, store.gen, store.token, store.logged, store.ids
+        saved = dict(store.columns)
+    folder = _cache_folder(path)
+    name = f"{gen:012d}-{uuid.uuid4().hex[:8]}"
+    tmp = folder / f"tmp-{name}"
+    try:
+        tmp.mkdir(parents=True)
+        np.save(tmp / "person.id_num.npy", ids)
+        columns = []
+        for (table, column), values in saved.items():
+            text = isinstance(values, TextColumn)
+            np.save(tmp / f"{table}.{column}.npy", values.codes if text else values)
+            if text:
+                (tmp / f"{table}.{column}.json").write_text(json.dumps(values.words))
+            columns.append([table, column, "text" if text else "real"])
+        meta = {"key": list(key), "gen": gen, "token": token, "logged": logged, "columns": columns}
+        (tmp / "meta.json").write_text(json.dumps(meta))
+        os.replace(tmp, folder / name)
+    except OSError:
+        shutil.rmtree(tmp, ignore_errors=True)
+        return
+    with _LOCK:
+        if store.key == key:
+            store.saved_key = key
+    for old in folder.iterdir():
+        if old.name != name:
+            shutil.rmtree(old, ignore_errors=True)
+
+
+def _load(path: Path) -> ColumnStore | None:
+    """The newest whole copy on disk, or None (absent, damaged or another format)."""
+    import json
+
+    import numpy as np
+
+    folder = _cache_folder(path)
+    try:
+        names = sorted((p for p in folder.iterdir() if not p.name.startswith("tmp-")), reverse=True)
+    except OSError:
+        return None
+    for copy in names[:1]:
+        try:
+            meta = json.loads((copy / "meta.json").read_text())
+            ids = _load_array(copy / "person.id_num.npy", np.int64, None)
+            if ids is None:
+                return None
+            store = ColumnStore(
+                key=tuple(int(k) for k in meta["key"]),
+                gen=int(meta["gen"]),
+                token=None if meta["token"] is None else int(meta["token"]),
+                logged=bool(meta["logged"]),
+                ids=ids,
+            )
+            store.saved_key = store.key
+            for table, column, kind in meta["columns"]:
+                values = _load_array(
+                    copy / f"{table}.{column}.npy",
+                    np.float64 if kind == "real" else np.int32,
+                    len(ids),
+                )
+                if values is None:
+                    continue  # that column is read again
+                if kind == "text":
+                    words = json.loads((copy / f"{table}.{column}.json").read_text())
+                    if not isinstance(words, list) or not all(isinstance(w, str) for w in words):
+                        continue
+                    if len(values) and int(values.max(initial=-1)) >= len(words):
+                        continue
+                    values = TextColumn(values, words)
+                store.columns[(table, column)] = values
+                store.saved_key = None
+            return store
+        except (OSError, ValueError, KeyError, TypeError):
+            return None
+    return None
+
+
+def _load_array(path: Path, dtype: Any, length: int | None) -> Any:
     """A saved array of that type and length, or None (absent, damaged or other)."""
     import numpy as np
 
@@ -334,16 +689,13 @@ def _load(path: Path, dtype: Any, length: int | None) -> Any:
     return array
 
 
-def _write_atomic(path: Path, data: bytes) -> None:
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_bytes(data)
-    os.replace(tmp, path)
+# --- reading SQLite into arrays ---------------------------------------------------
 
 
-def _fetch_ints(conn: sqlite3.Connection, sql: str) -> Any:
+def _fetch_ints(conn: sqlite3.Connection, sql: str, params: tuple[object, ...] = ()) -> Any:
     import numpy as np
 
-    cursor = conn.execute(sql)
+    cursor = conn.execute(sql, params)
     chunks = []
     while rows := cursor.fetchmany(65536):
         chunks.append(np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows)))
@@ -387,17 +739,23 @@ def _one_row_per_person(conn: sqlite3.Connection, table: str) -> bool:
 # --- evaluating --------------------------------------------------------------
 
 
-def _evaluate(node: Node, store: ColumnStore, conn: sqlite3.Connection) -> Any:
+def _wanted(node: Node) -> set[tuple[str, str]]:
+    if isinstance(node, Comparison):
+        return {(node.table, node.column)}
+    return set().union(*(_wanted(item) for item in node[1]))
+
+
+def _evaluate(node: Node, store: ColumnStore) -> Any:
     import numpy as np
 
     if not isinstance(node, Comparison):
         word, items = node
-        result = _evaluate(items[0], store, conn)
+        result = _evaluate(items[0], store)
         for item in items[1:]:
-            other = _evaluate(item, store, conn)
+            other = _evaluate(item, store)
             result = (result & other) if word == "AND" else (result | other)
         return result
-    column = store.column(conn, node.table, node.column)
+    column = store.columns[(node.table, node.column)]
     op, value = node.op, node.value
     if isinstance(column, TextColumn):
         if not isinstance(value, str):
@@ -439,19 +797,6 @@ def _compare(a: str, op: str, b: str) -> bool:
 
 # --- the entry point ---------------------------------------------------------
 
-_STORES: dict[Path, ColumnStore] = {}
-
-
-def _cache_folder(path: Path) -> Path:
-    import hashlib
-
-    base = CACHE_DIR
-    if base is None:
-        xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-        base = Path(xdg) / "sass" / "columns"
-    digest = hashlib.sha256(str(path.resolve()).encode()).hexdigest()[:16]
-    return base / digest
-
 
 def _large_enough(conn: sqlite3.Connection) -> bool:
     # Two subqueries: SQLite reads a lone min() or max() off the B-tree's edge,
@@ -462,9 +807,12 @@ def _large_enough(conn: sqlite3.Connection) -> bool:
     return low is not None and high - low + 1 >= MIN_PEOPLE
 
 
-def _matches(conn: sqlite3.Connection, compiled: CompiledQuery) -> tuple[Any, ColumnStore]:
-    """The match mask over the sorted person ids (Unsupported: SQLite must
-    answer).  Call inside a read transaction."""
+def _matches(conn: sqlite3.Connection, compiled: CompiledQuery) -> tuple[Any, ColumnStore] | None:
+    """The match mask over the store's ids, None while the copy is being built
+    (Unsupported: SQLite must answer).  Call inside a read transaction that
+    has written nothing to the main database."""
+    from sass_tui.db.schema import logged_tables
+
     aliases = {"p": "person"} | {alias: table for alias, table in compiled.tables}
     expected = "person p" + "".join(
         f" LEFT JOIN {table} {alias} ON {alias}.id_num = p.id_num"
@@ -476,13 +824,40 @@ def _matches(conn: sqlite3.Connection, compiled: CompiledQuery) -> tuple[Any, Co
         if table != "person" and not _one_row_per_person(conn, table):
             raise Unsupported(f"{table} is not one row per person")
     tree = parse_where(compiled.where, compiled.params, aliases)
+    wanted = _wanted(tree)
     path = database_path(conn)
     key = data_version(conn)
-    store = _STORES.get(path)
-    if store is None or store.key != list(key):
-        store = _STORES[path] = ColumnStore(_cache_folder(path), key)
-    mask = _evaluate(tree, store, conn)
-    return mask, store
+    with _LOCK:
+        store = _STORES.get(path)
+        if store is None:
+            store = _load(path)
+        if store is None or not _sync(conn, store, key):
+            store = None
+            _STORES.pop(path, None)
+            if not BACKGROUND:
+                store = _base(conn, key)
+        if store is not None:
+            _STORES[path] = store
+            if store.logged and not set(aliases.values()) <= set(logged_tables()):
+                raise Unsupported("a table the change log does not follow")
+            if wanted & store.refused:
+                raise Unsupported("a column the copy cannot hold")
+            missing = wanted - set(store.columns)
+            if missing and not BACKGROUND:
+                for table, column in sorted(missing):
+                    store.columns[(table, column)] = _new_column(conn, table, column, store.ids)
+                store.saved_key = None
+                missing = set()
+            if not missing:
+                mask = _evaluate(tree, store)
+                if store.key != store.saved_key:
+                    if BACKGROUND:
+                        _start_build(path, set())  # saves the copy for the next process
+                    else:
+                        _save(path, store)
+                return mask, store
+    _start_build(path, wanted)
+    return None
 
 
 def _answer(conn: sqlite3.Connection, compiled: CompiledQuery, ids: bool) -> Any:
@@ -492,14 +867,27 @@ def _answer(conn: sqlite3.Connection, compiled: CompiledQuery, ids: bool) -> Any
     try:
         # The shared lock from this read holds off every writer until COMMIT.
         conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
-        mask, store = _matches(conn, compiled)
+        return answer_in_transaction(conn, compiled, ids)
+    finally:
+        conn.execute("COMMIT")
+
+
+def answer_in_transaction(conn: sqlite3.Connection, compiled: CompiledQuery, ids: bool) -> Any:
+    """count() or ids() inside the caller's read transaction, which must hold
+    the shared lock (have read the main database) and have written nothing
+    to it; None when SQLite must answer."""
+    if not _large_enough(conn):
+        return None
+    try:
+        found = _matches(conn, compiled)
+        if found is None:
+            return None
+        mask, store = found
         if ids:
-            return store.person_ids(conn)[mask].tolist()
+            return store.ids[mask].tolist()
         return int(mask.sum())
     except (Unsupported, OSError, sqlite3.Error, ValueError):
         return None
-    finally:
-        conn.execute("COMMIT")
 
 
 def count(conn: sqlite3.Connection, compiled: CompiledQuery) -> int | None:

@@ -80,14 +80,27 @@ class QueryLists:
         about RUN_CHUNK people: `progress(people searched, people in the
         database)` after each, and `cancel` stops it with Cancelled (between
         ranges or inside one), the lists as they were."""
+        from sass_tui.db import accelerator  # numpy only on a large database
+
         compiled = compile_query(text)
         sql = (
             f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
             f"WHERE {compiled.where} AND p.id_num NOT IN (SELECT id_num FROM temp.selected_list)"
         )
         with transaction(self.conn, "DEFERRED"):
+            # Read the main database first: its shared lock, held to COMMIT,
+            # keeps writers out, so the column copy (db/accelerator.py) finds
+            # the people SQLite would; None when SQLite must find them.
+            self.conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
+            found = accelerator.answer_in_transaction(self.conn, compiled, ids=True)
             self.conn.execute("DELETE FROM temp.query_list")
-            if progress is None and cancel is None:
+            if found is not None:  # the column copy found them: no search, no progress
+                count = self.conn.execute(
+                    "INSERT INTO temp.query_list (id_num) SELECT value FROM json_each(?) "
+                    "WHERE value NOT IN (SELECT id_num FROM temp.selected_list)",
+                    ("[" + ",".join(map(str, found)) + "]",),
+                ).rowcount
+            elif progress is None and cancel is None:
                 count = self.conn.execute(sql, compiled.params).rowcount
             else:
                 count = self._run_in_ranges(

@@ -28,6 +28,7 @@ from sass_tui.db.schema import (
     PeopleBatch,
     connect,
     delete_people,
+    recreate_schema,
     store_people,
     transaction,
 )
@@ -103,6 +104,7 @@ def generated_db_file(tmp_path_factory) -> Path:
 def accelerated(monkeypatch, tmp_path):
     """The accelerator answering on any size, its disk copies in tmp_path."""
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(accelerator, "BACKGROUND", False)
     monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
     accelerator._STORES.clear()
     yield tmp_path / "columns"
@@ -219,6 +221,7 @@ def queries(draw, conn: sqlite3.Connection, depth: int = 0) -> str:
 
 def test_random_queries_agree(generated_db_file, tmp_path_factory, monkeypatch):
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(accelerator, "BACKGROUND", False)
     monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path_factory.mktemp("columns"))
     accelerator._STORES.clear()
     conn = connect(generated_db_file)
@@ -307,6 +310,7 @@ def test_damaged_disk_copy_is_rebuilt(db, accelerated):
     words.write_text("not json")
     accelerator._STORES.clear()
     assert accelerator.count(db, compiled) == expected == sqlite_count(db, compiled)
+    (column,) = accelerated.rglob("q_girth_right_upper_arm.z.npy")
     assert len(np.load(column)) == PEOPLE  # written again, whole
 
 
@@ -415,3 +419,271 @@ def test_fetched_strength_summary_is_the_query_tables(generated_db_file):
         assert 0 < with_strength < len(ids)
     finally:
         conn.close()
+
+
+# --- following writes: the change log ----------------------------------------------
+
+# Queries over every kind of table the log follows (person, text and numbers, the
+# query tables, strength_q); each step of a write sequence checks all of them.
+WRITE_QUERIES = [
+    SAMPLE,
+    "gender = female OR stature > 180 cm",
+    "girth.neck.x > 20 cm",
+    "strength_type = isokinetic OR handedness = left",
+    "center_of_mass.bottom_head.y > 5 cm AND age < 40",
+]
+SMALL = 300
+
+
+@pytest.fixture(scope="session")
+def small_db_file(tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("small") / "small.db"
+    conn = connect(path, create=True)
+    with transaction(conn):
+        store_people(conn, generated_batch(np.random.default_rng(3), np.arange(1, SMALL + 1) * 3))
+    conn.close()
+    return path
+
+
+def assert_copy_is_sqlite(conn: sqlite3.Connection) -> None:
+    if not _people(conn):  # nobody: SQLite answers (and finds nobody)
+        assert accelerator.count(conn, compile_query(SAMPLE)) is None
+        return
+    for text in WRITE_QUERIES:
+        compiled = compile_query(text)
+        assert accelerator.count(conn, compiled) == sqlite_count(conn, compiled), text
+        assert accelerator.ids(conn, compiled) == sqlite_ids(conn, compiled), text
+
+
+def _people(conn: sqlite3.Connection) -> list[int]:
+    return [r[0] for r in conn.execute("SELECT id_num FROM person ORDER BY id_num")]
+
+
+def _write(conn: sqlite3.Connection, path: Path, step: tuple, rng: np.random.Generator) -> None:
+    """One write: through sass (delete, add, replace as a flat-file import
+    does, db init) or by another connection in plain SQL."""
+    kind, size = step
+    people = _people(conn)
+    some = [int(i) for i in rng.choice(people, min(size, len(people)), replace=False)]
+    fresh = np.arange(size) + max(people + [0]) + 1
+    if kind == "delete":
+        with transaction(conn):
+            delete_people(conn, some)
+    elif kind == "add":
+        with transaction(conn):
+            store_people(conn, generated_batch(rng, fresh))
+    elif kind == "replace":  # the same ids, other data (a flat-file import replaces)
+        with transaction(conn):
+            store_people(conn, generated_batch(rng, np.array(sorted(some), dtype=np.int64)))
+    elif kind == "init":  # `sass db init --force`, then a few people
+        with transaction(conn, "EXCLUSIVE"):
+            recreate_schema(conn)
+            store_people(conn, generated_batch(rng, np.arange(1, 5 * size) * 7))
+    else:
+        other = sqlite3.connect(path, isolation_level=None)
+        marks = ", ".join("?" * len(some))
+        if kind == "sql update":
+            other.execute(f"UPDATE person SET gender = 'female' WHERE id_num IN ({marks})", some)
+            other.execute(f"UPDATE q_girth_neck SET x = x + 3 WHERE id_num IN ({marks})", some)
+            other.execute(
+                f"UPDATE strength_q SET strength_type = 'isokinetic' WHERE id_num IN ({marks})",
+                some,
+            )
+        elif kind == "sql insert":  # query rows for people who had none, or new values
+            other.executemany(
+                "INSERT OR REPLACE INTO q_center_of_mass_bottom_head VALUES (?, 1, 9, 1)",
+                [(i,) for i in some],
+            )
+        elif kind == "sql delete":
+            other.execute(f"DELETE FROM q_girth_neck WHERE id_num IN ({marks})", some)
+            other.execute("DELETE FROM person WHERE id_num = ?", some[:1])
+        elif kind == "sql renumber":  # an UPDATE of the key itself: both ids change
+            for i, new in zip(some, fresh.tolist()):
+                other.execute("UPDATE q_girth_neck SET id_num = ? WHERE id_num = ?", (new, i))
+                other.execute("UPDATE person SET id_num = ? WHERE id_num = ?", (new, i))
+        other.close()
+
+
+WRITES = st.tuples(
+    st.sampled_from(
+        ["delete", "add", "replace", "sql update", "sql insert", "sql delete", "sql renumber"]
+        + ["init", "new process"]
+    ),
+    st.integers(1, 12),
+)
+
+
+def test_random_writes_keep_the_copy_equal_to_sqlite(small_db_file, tmp_path_factory, monkeypatch):
+    """After any sequence of writes, every count and id list from the copy is
+    SQLite's; and the copy is rebuilt only after `db init` (every other write
+    is followed through the change log)."""
+    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(accelerator, "BACKGROUND", False)
+    builds = []
+    base = accelerator._base
+    monkeypatch.setattr(accelerator, "_base", lambda *a: builds.append(1) or base(*a))
+
+    @settings(max_examples=30, deadline=None, suppress_health_check=list(HealthCheck))
+    @given(st.lists(WRITES, min_size=1, max_size=6), st.integers(0, 2**32 - 1))
+    def writes_agree(steps, seed):
+        folder = tmp_path_factory.mktemp("writes")
+        monkeypatch.setattr(accelerator, "CACHE_DIR", folder / "columns")
+        accelerator._STORES.clear()
+        path = folder / "small.db"
+        shutil.copyfile(small_db_file, path)
+        conn = connect(path)
+        rng = np.random.default_rng(seed)
+        try:
+            assert_copy_is_sqlite(conn)
+            for step in steps:
+                builds.clear()
+                if step[0] == "new process":  # a write, then a new process: the disk copy is older
+                    _write(conn, path, ("sql update", step[1]), rng)
+                    accelerator._STORES.clear()
+                else:
+                    _write(conn, path, step, rng)
+                assert_copy_is_sqlite(conn)
+                assert len(builds) == (step[0] == "init"), step
+        finally:
+            conn.close()
+            accelerator._STORES.clear()
+
+    writes_agree()
+
+
+def test_a_small_write_is_followed_without_reading_everything(db, monkeypatch):
+    """After deleting and importing a few people, the copy re-reads those
+    people only: no column is read whole again."""
+    compiled = compile_query(SAMPLE)
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+    whole_reads = []
+    new_column = accelerator._new_column
+    monkeypatch.setattr(
+        accelerator, "_new_column", lambda *a: whole_reads.append(a[1:3]) or new_column(*a)
+    )
+    matching = accelerator.ids(db, compiled)
+    with transaction(db):
+        delete_people(db, matching[:3])
+        store_people(db, generated_batch(np.random.default_rng(5), np.arange(200_001, 200_004)))
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+    assert accelerator.ids(db, compiled) == sqlite_ids(db, compiled)
+    assert whole_reads == []
+
+
+def test_a_rebuild_runs_in_the_background_while_sqlite_answers(db, monkeypatch):
+    monkeypatch.setattr(accelerator, "BACKGROUND", True)
+    compiled = compile_query(SAMPLE)
+    assert accelerator.count(db, compiled) is None  # no copy yet: one is being built
+    assert Query(db, compiled).count() == sqlite_count(db, compiled)
+    accelerator.wait()
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+    # a write during a build: whichever comes first, the answer is SQLite's
+    other = compile_query("girth.neck.y > 20 cm")
+    assert accelerator.count(db, other) is None  # this column is being read
+    with transaction(db):
+        delete_people(db, sqlite_ids(db, other)[:5])
+    accelerator.wait()
+    assert accelerator.count(db, other) == sqlite_count(db, other)
+    # `db init`: the log cannot say what changed; SQLite answers until the copy is rebuilt
+    with transaction(db, "EXCLUSIVE"):
+        recreate_schema(db)
+        store_people(db, generated_batch(np.random.default_rng(9), np.arange(1, 101)))
+    assert accelerator.count(db, compiled) is None
+    assert Query(db, compiled).count() == sqlite_count(db, compiled)
+    accelerator.wait()
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+
+
+def test_a_schema_2_database_gets_the_change_log(db):
+    path = accelerator.database_path(db)
+    raw = sqlite3.connect(path, isolation_level=None)
+    for (name,) in raw.execute(
+        "SELECT name FROM sqlite_master WHERE type = 'trigger' AND name LIKE 'log%'"
+    ).fetchall():
+        raw.execute(f"DROP TRIGGER {name}")
+    raw.executescript(
+        "DROP TRIGGER change_note_insert; DROP VIEW change_note; DROP TABLE change_log;"
+        "DROP TABLE change_gens; UPDATE meta SET value = '2' WHERE key = 'schema_version';"
+    )
+    raw.close()
+    conn = connect(path)
+    try:
+        assert conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone() == (
+            "3",
+        )
+        assert accelerator._has_change_log(conn)
+        assert_copy_is_sqlite(conn)
+    finally:
+        conn.close()
+
+
+def test_a_missing_trigger_means_no_following(db, monkeypatch):
+    """A file whose log is not whole is copied again after every write."""
+    db.execute("DROP TRIGGER log_q_girth_neck_update")
+    assert not accelerator._has_change_log(db)
+    compiled = compile_query("girth.neck.x > 20 cm")
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+    db.execute("UPDATE q_girth_neck SET x = 99 WHERE x < 20")
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+
+
+def test_query_lists_are_found_by_the_copy(db, monkeypatch):
+    """The query screen's list (QueryLists.run) takes its people from the
+    copy: the same people, in the same order, as SQLite, selected people left
+    out, and after a write as well."""
+    from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+
+    answered = []
+    answer = accelerator.answer_in_transaction
+    monkeypatch.setattr(
+        accelerator,
+        "answer_in_transaction",
+        lambda *a, **k: (lambda r: answered.append(r is not None) or r)(answer(*a, **k)),
+    )
+    lists = QueryLists(db)
+
+    def listed(which: str) -> list[int]:
+        return [row["id"] for row in lists.page(which, 0, 10 * PEOPLE)]
+
+    for text in QUERIES[:8]:
+        compiled = compile_query(text)
+        expected = sqlite_ids(db, compiled)
+        assert lists.run(text) == len(expected) == lists.count(QUERY_LIST), text
+        assert listed(QUERY_LIST) == expected, text
+    assert answered and all(answered)
+    lists.run(SAMPLE)
+    chosen = listed(QUERY_LIST)[:5]
+    for id_num in chosen:
+        assert lists.select_one(id_num)
+    with transaction(db):  # a write after the copy was made: followed
+        delete_people(db, listed(QUERY_LIST)[:7])
+    expected = [i for i in sqlite_ids(db, compile_query(SAMPLE)) if i not in chosen]
+    assert lists.run(SAMPLE) == len(expected)
+    assert listed(QUERY_LIST) == expected
+    assert listed(SELECTED_LIST) == chosen
+    assert answered[-1]
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    st.sets(st.integers(0, 60), max_size=30),
+    st.sets(st.integers(0, 60), max_size=20),
+    st.data(),
+)
+def test_splicing_the_ids_is_the_set_change(old, changed, data):
+    """The patch's splice: the old ids, less every changed id, plus the changed
+    ids still stored, in order; the values keep their ids."""
+    present = data.draw(st.sets(st.sampled_from(sorted(changed)))) if changed else set()
+    old_ids = np.array(sorted(old), dtype=np.int64)
+    changed_ids = np.array(sorted(changed), dtype=np.int64)
+    present_ids = np.array(sorted(present), dtype=np.int64)
+    at, was_there = accelerator._positions(old_ids, changed_ids)
+    plan = accelerator._splice_plan(
+        at[was_there], np.searchsorted(old_ids, present_ids), len(old_ids)
+    )
+    new_ids = accelerator._splice(old_ids, plan, present_ids)
+    assert new_ids.tolist() == sorted((old - changed) | present)
+    values = accelerator._splice(old_ids * 10.0, plan, np.full(len(present_ids), np.nan))
+    assert [v == i * 10.0 for i, v in zip(new_ids, values)] == [
+        i not in changed for i in new_ids.tolist()
+    ]
