@@ -175,6 +175,24 @@ def _open_bytes(path: Path) -> tuple[BinaryIO, BinaryIO]:
     return raw, raw
 
 
+def looks_like_ansur(path: str | Path) -> bool:
+    """The file's first line is an ANSUR II header (it names the `subjectid`
+    column, in any case): Input DB imports it as a survey file, not a person
+    file.  A file that cannot be read is not one (its import says why)."""
+    try:
+        raw, stream = _open_bytes(Path(path))
+    except OSError:
+        return False
+    try:
+        with raw:
+            first = stream.readline(1 << 16)
+    except (OSError, EOFError, gzip.BadGzipFile):
+        return False
+    first = first.removeprefix(b"\xef\xbb\xbf")
+    fields = first.decode("cp1252", errors="replace").strip().lower().split(",")
+    return ID_COLUMN in (field.strip().strip('"') for field in fields)
+
+
 def _decoded_lines(stream: BinaryIO) -> Iterator[str]:
     """Each line as text: UTF-8 (a byte-order mark dropped), else cp1252 (the
     published male file is cp1252)."""

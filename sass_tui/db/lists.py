@@ -195,6 +195,19 @@ class QueryLists:
         """Load flat files (one transaction: a failure or a cancel stores nothing)."""
         return import_flat_files(self.conn, files, progress, cancel)
 
+    def import_ansur(
+        self,
+        path: Path,
+        label: str,
+        progress: Progress | None = None,
+        cancel: Cancel | None = None,
+    ) -> int:
+        """Load an ANSUR II format file under the source `label` (one
+        transaction: a failure or a cancel stores nothing); returns how many."""
+        from sass_tui.db.ansur import import_ansur
+
+        return sum(import_ansur(self.conn, [path], progress, label=label, cancel=cancel).values())
+
     def selected_ids(self) -> list[int]:
         """The ids of the selected list, in the order they were selected."""
         return [

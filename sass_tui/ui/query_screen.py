@@ -871,6 +871,12 @@ class QueryScreen(SassScreen):
             except SassError as exc:
                 again(f"{exc}.")
                 return
+            if index == 0:
+                from sass_tui.db.ansur import looks_like_ansur
+
+                if looks_like_ansur(path):  # a survey file holds everything: no group files
+                    self.call_later(self._ask_ansur_label, path)
+                    return
             self._ask_file({**chosen, key: path}, index + 1)
 
         def cancel() -> None:
@@ -887,6 +893,33 @@ class QueryScreen(SassScreen):
             answer,
             on_cancel=cancel,
         )
+
+    def _ask_ansur_label(self, path: Path) -> None:
+        from sass_tui.db.ansur import DEFAULT_LABEL
+
+        default = path.name.split(".")[0] or DEFAULT_LABEL
+
+        def answer(text: str) -> None:
+            label = text.strip() or default
+            work = self.begin_work("ANSUR import")
+            self.say(f"Importing {path.name} as source '{label}' (Esc cancels)...")
+            self.import_ansur(self.lists, path, label, work)
+
+        self.ask(
+            f"{path.name} is an ANSUR II format file. Source label [{default}]:",
+            answer,
+            on_cancel=lambda: self.say("Input DB cancelled; the database is unchanged."),
+        )
+
+    @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
+    def import_ansur(self, lists: QueryLists, path: Path, label: str, work: Work) -> None:
+        try:
+            with lists.lock:
+                count = lists.import_ansur(path, label, work.report, work.cancel)
+        except DB_ERRORS as exc:
+            self.post_message(ImportFinished(None, str(exc)))
+            return
+        self.post_message(ImportFinished(count))
 
     def _import(self, chosen: dict) -> None:
         work = self.begin_work("Input DB")
