@@ -595,6 +595,14 @@ class transaction:
             self.conn.execute(f"BEGIN {self.mode}")
         except sqlite3.Error as exc:
             self._raise_refused(exc)
+            if getattr(exc, "sqlite_errorcode", 0) & 0xFF == sqlite3.SQLITE_BUSY:
+                # Another process held the write lock past the busy timeout
+                # (a long `db init` or import): nothing was begun, so nothing changed.
+                raise DatabaseError(
+                    f"{_db_file(self.conn)} is busy: another process is writing to it "
+                    f"(waited {self.conn.execute('PRAGMA busy_timeout').fetchone()[0] / 1000:g} s); "
+                    "nothing changed, try again when it has finished"
+                ) from None
             raise
         return self.conn
 
