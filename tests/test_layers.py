@@ -139,3 +139,23 @@ def test_the_spreadsheet_starts_without_what_other_screens_use():
         "print(','.join(sorted(m for m in later if m in sys.modules)))\n"
     )
     assert _run(code) == ""
+
+
+def test_the_first_screen_is_drawn_without_what_it_does_not_show():
+    # Issue 16 (TUI first screen): the spreadsheet with its figure panel at 120
+    # columns, up and drawn, has not imported what only exports, other screens
+    # or the first edit use.
+    code = (
+        "import asyncio, sys\n"
+        "from sass_tui.ui.app import SassApp\n"
+        "async def first_screen():\n"
+        "    app = SassApp()\n"
+        "    async with app.run_test(size=(120, 40)) as pilot:\n"
+        "        await pilot.pause()\n"
+        "        assert app.spreadsheet.figure_panel.outlines\n"
+        "asyncio.run(first_screen())\n"
+        "later = ('xml.etree.ElementTree', 'sqlite3', 'lark', 'pint',\n"
+        "         'sass_tui.model.prediction', 'sass_tui.ui.query_screen')\n"
+        "print(','.join(sorted(m for m in later if m in sys.modules)))\n"
+    )
+    assert _run(code) == ""
