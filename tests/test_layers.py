@@ -159,3 +159,16 @@ def test_the_first_screen_is_drawn_without_what_it_does_not_show():
         "print(','.join(sorted(m for m in later if m in sys.modules)))\n"
     )
     assert _run(code) == ""
+
+
+def test_plain_sass_opens_the_tui_without_building_the_parser():
+    # Issue 16 (TUI first screen): with no arguments `sass` is the TUI, so no
+    # verb's module is imported nor its parser built.
+    code = (
+        "import sys\nimport sass_tui.ui.app as app\n"
+        "app.run_app = lambda db: print('tui', db) or 0\n"
+        "from sass_tui.cli import VERBS, main\n"
+        "status = main([])\n"
+        "print(status, ','.join(v for v in VERBS if 'sass_tui.cli.' + v in sys.modules))\n"
+    )
+    assert _run(code) == "tui None\n0"
