@@ -139,3 +139,36 @@ def test_the_spreadsheet_starts_without_what_other_screens_use():
         "print(','.join(sorted(m for m in later if m in sys.modules)))\n"
     )
     assert _run(code) == ""
+
+
+def test_the_first_screen_is_drawn_without_what_it_does_not_show():
+    # Issue 16 (TUI first screen): the spreadsheet with its figure panel at 120
+    # columns, up and drawn, has not imported what only exports, other screens
+    # or the first edit use.
+    code = (
+        "import asyncio, sys\n"
+        "from sass_tui.ui.app import SassApp\n"
+        "async def first_screen():\n"
+        "    app = SassApp()\n"
+        "    async with app.run_test(size=(120, 40)) as pilot:\n"
+        "        await pilot.pause()\n"
+        "        assert app.spreadsheet.figure_panel.outlines\n"
+        "asyncio.run(first_screen())\n"
+        "later = ('xml.etree.ElementTree', 'textual_canvas', 'importlib.metadata', 'sqlite3',\n"
+        "         'lark', 'pint', 'sass_tui.model.prediction', 'sass_tui.ui.query_screen')\n"
+        "print(','.join(sorted(m for m in later if m in sys.modules)))\n"
+    )
+    assert _run(code) == ""
+
+
+def test_plain_sass_opens_the_tui_without_building_the_parser():
+    # Issue 16 (TUI first screen): with no arguments `sass` is the TUI, so no
+    # verb's module is imported nor its parser built.
+    code = (
+        "import sys\nimport sass_tui.ui.app as app\n"
+        "app.run_app = lambda db: print('tui', db) or 0\n"
+        "from sass_tui.cli import VERBS, main\n"
+        "status = main([])\n"
+        "print(status, ','.join(v for v in VERBS if 'sass_tui.cli.' + v in sys.modules))\n"
+    )
+    assert _run(code) == "tui None\n0"

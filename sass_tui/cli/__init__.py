@@ -156,18 +156,24 @@ class _VersionAction(argparse.Action):
 
 def main(argv: list[str] | None = None) -> int:
     words = sys.argv[1:] if argv is None else argv
+    if not words:  # plain `sass`: the TUI, with no parser to build (issue 16: its first screen)
+        return run_tui(None)
     parser = build_parser(words)
     args = parser.parse_args(words)
     if args.command is None:
-        from sass_tui.model.errors import SassError
-        from sass_tui.ui.app import run_app
-
-        try:
-            return run_app(args.db)
-        except SassError as exc:  # e.g. --db '~nosuchuser/x.db'
-            print(f"sass: error: {exc}", file=sys.stderr)
-            return 2
+        return run_tui(args.db)
     return run_verb(args)
+
+
+def run_tui(db: str | None) -> int:
+    from sass_tui.model.errors import SassError
+    from sass_tui.ui.app import run_app
+
+    try:
+        return run_app(db)
+    except SassError as exc:  # e.g. --db '~nosuchuser/x.db'
+        print(f"sass: error: {exc}", file=sys.stderr)
+        return 2
 
 
 def run_verb(args: argparse.Namespace) -> int:

@@ -9,7 +9,6 @@ No Textual import: the CLI and the TUI both call export_hanim().
 from __future__ import annotations
 
 import math
-import xml.etree.ElementTree as ET
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -30,6 +29,8 @@ from sass_tui.model.names import (
 )
 
 if TYPE_CHECKING:
+    import xml.etree.ElementTree as ET
+
     from sass_tui.model.figure import Figure
 
 HANIM_VERSION = "2.0"
@@ -723,6 +724,8 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
     """The HAnimHumanoid node.  DEF names follow the HAnim convention the x3d
     package checks: the humanoid's name, '_', the node's name ('male_50_l_hip');
     humanoids with different names can share a scene."""
+    import xml.etree.ElementTree as ET  # the X3D document only: not the TUI's drawing
+
     prefix = f"{humanoid.name}_"
     # skeletalConfiguration is "BASIC" (clause 4.8.2) through the field's X3D 4.0
     # default: X3D's canonical XML form leaves defaults out, and Debian's
@@ -809,6 +812,8 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
 
 def scene_document(humanoids: list[tuple[ET.Element, float]], title: str, height: float) -> str:
     """An X3D 4.0 document holding humanoids side by side (x offsets in metres)."""
+    import xml.etree.ElementTree as ET
+
     x3d = ET.Element(
         "X3D",
         {

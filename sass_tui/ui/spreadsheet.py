@@ -179,6 +179,7 @@ class SpreadsheetScreen(SassScreen):
         self.strength_error = strength_error
         self.data_group = GIRTH
         self._warning_index = 0
+        self._covered = False  # another screen has been pushed over this one
         self._predictor: Predictor | None = None  # opened on the first Predict
         # The prediction shown and its figure (shown while it is session.person).
         self.prediction: tuple[Prediction, Figure] | None = None
@@ -200,8 +201,8 @@ class SpreadsheetScreen(SassScreen):
     def on_mount(self) -> None:
         self.strength_page.display = False
         self._set_page_rows(self.app.size.height)
-        self._place_figure_panel(self.app.size.width)
         self.refresh_screen()
+        self._place_figure_panel(self.app.size.width)  # draws the figure once, when shown
         self.sheet.focus()
         self.say(FIRST_MESSAGE)
 
@@ -209,8 +210,14 @@ class SpreadsheetScreen(SassScreen):
         self._set_page_rows(event.size.height)
         self._place_figure_panel(event.size.width)
 
+    def on_screen_suspend(self) -> None:
+        self._covered = True
+
     def on_screen_resume(self) -> None:
-        self.redraw_figure_panel()  # the overlay may have changed on the figure screen
+        # The overlay may have changed on the screen that covered this one; the
+        # first resume (the app's start) follows the drawing made at mount.
+        if self._covered:
+            self.redraw_figure_panel()
 
     # --- the live figure panel (issue 15) -----------------------------------------
     @property
@@ -222,15 +229,17 @@ class SpreadsheetScreen(SassScreen):
     def _place_figure_panel(self, width: int) -> None:
         panel = self.figure_panel
         wide = width >= FIGURE_PANEL_MIN_WIDTH
+        new, shown = False, panel is not None and panel.display
         if panel is None and wide:
             # Imported when first shown: canvas and outline cost ~20 ms of start-up.
             from sass_tui.ui.figure_view import FigureView
 
-            panel = FigureView(canvas_focus=False, id="figure-panel")
+            panel, new = FigureView(canvas_focus=False, id="figure-panel"), True
             self.query_one("#body", Horizontal).mount(panel)
         if panel is not None:
             panel.display = wide
-            self.redraw_figure_panel()
+            if wide and (new or not shown):  # coming on the screen; edits redraw it
+                self.redraw_figure_panel()
 
     def redraw_figure_panel(self) -> None:
         """Draw the figure shown, with the figure screen's overlay, if the

@@ -3,13 +3,12 @@
 from __future__ import annotations
 
 import pytest
-from textual_canvas import Canvas
 
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 from sass_tui.ui.app import SassApp
 from sass_tui.ui.figure_screen import FigureScreen
-from sass_tui.ui.figure_view import FILL, OVERLAY, FigureView
+from sass_tui.ui.figure_view import FILL, OVERLAY, Canvas, FigureView
 
 
 def percentile_figure(gender: str, p: float) -> Figure:
@@ -133,6 +132,42 @@ def test_no_figure_panel_below_120_columns(drive):
             await pilot.resize_terminal(100, 40)
             await pilot.pause()
             assert not app.spreadsheet.figure_panel.display
+
+    drive(scenario())
+
+
+def test_the_panel_is_outlined_once_at_start_and_when_it_comes_back(drive, monkeypatch):
+    """Issue 16 (first screen): the figure is outlined once when the app starts,
+    not again for each resize or the first screen resume; a panel hidden by a
+    narrow terminal draws the edits made meanwhile when it shows again."""
+    import sass_tui.ui.figure_screen as figure_screen
+
+    outlined = []
+
+    def counted(figure, label):
+        outlined.append(label)
+        return figure_outline(figure, label)
+
+    figure_outline = figure_screen.figure_outline
+    monkeypatch.setattr(figure_screen, "figure_outline", counted)
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(120, 40)) as pilot:
+            await pilot.pause()
+            assert outlined == ["male figure"]
+            await pilot.resize_terminal(130, 40)
+            await pilot.pause()
+            assert len(outlined) == 1
+            await pilot.resize_terminal(100, 40)
+            await pilot.pause()
+            app.session.set_stature_percentile(99)
+            app.spreadsheet.refresh_screen()
+            await pilot.resize_terminal(120, 40)
+            await pilot.pause()
+            panel = app.spreadsheet.figure_panel
+            assert panel.display and len(outlined) == 2
+            assert panel.outlines == figure_screen.session_outlines(app.session, None)
 
     drive(scenario())
 
