@@ -6,30 +6,18 @@ population's 50th against the person shown, or another percentile) as an
 outline over it.  Pixels are half character cells (textual-canvas), about
 square on a terminal, so one scale serves both axes.  A ruler stands on the
 left with a tick every 10 cm and a long one every 50 cm.
-
-The canvas is the part of textual-canvas's Canvas (MIT) this view uses, drawn
-the same way (a lower half block per cell, the top pixel as its background):
-importing textual_canvas looks up its own version in the installed
-distributions, ~20 ms of the spreadsheet's first screen (issue 16).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
-from contextlib import contextmanager
-from functools import lru_cache
 
-from rich.segment import Segment
-from rich.style import Style
 from textual.app import ComposeResult
 from textual.color import Color
 from textual.containers import Vertical
-from textual.geometry import Size
 from textual.reactive import reactive
-from textual.scroll_view import ScrollView
-from textual.strip import Strip
 from textual.widgets import Static
+from textual_canvas import Canvas
 
 from sass_tui.model.outline import Outline, Shape, View
 
@@ -38,88 +26,6 @@ OVERLAY = Color.parse("#ffaf00")
 JOINT = Color.parse("#ff5f5f")
 RULER = Color.parse("#a8a8a8")
 GAP = 4  # pixels between the ruler, the front view and the side view
-
-
-class Canvas(ScrollView, can_focus=True):
-    """A grid of pixels, two to a character cell (top and bottom half); the
-    origin is the top left corner.  An unset pixel shows the background."""
-
-    def __init__(self, width: int, height: int, *, id: str | None = None) -> None:
-        super().__init__(id=id)
-        self._refreshing = True
-        self.clear(width=width, height=height)
-
-    @property
-    def width(self) -> int:
-        """The width in pixels."""
-        return self._width
-
-    @property
-    def height(self) -> int:
-        """The height in pixels (twice the lines)."""
-        return self._height
-
-    def notify_style_update(self) -> None:
-        self.refresh()
-        return super().notify_style_update()
-
-    @contextmanager
-    def batch_refresh(self) -> Iterator[None]:
-        """Draw with one refresh at the end."""
-        refreshing, self._refreshing = self._refreshing, False
-        try:
-            yield
-        finally:
-            self._refreshing = refreshing
-            self.refresh()
-
-    def clear(self, width: int, height: int) -> None:
-        """Every pixel unset, at this size."""
-        self._width, self._height = width, height
-        self.virtual_size = Size(width, math.ceil(height / 2))
-        self._pixels: list[list[Color | None]] = [[None] * width for _ in range(height)]
-        self.refresh()
-
-    def set_pixels(
-        self, locations: list[tuple[int, int]], color: Color, refresh: bool | None = None
-    ) -> None:
-        """Colour pixels that are all on the canvas."""
-        pixels = self._pixels
-        for x, y in locations:
-            if not (0 <= x < self._width and 0 <= y < self._height):
-                raise ValueError(f"x={x}, y={y} is not within 0, 0, {self._width}, {self._height}")
-            pixels[y][x] = color
-        if self._refreshing if refresh is None else refresh:
-            self.refresh()
-
-    def get_pixel(self, x: int, y: int) -> Color:
-        colour = self._pixels[y][x]
-        return colour or self.styles.background
-
-    def render_line(self, y: int) -> Strip:
-        scroll_x, scroll_y = self.scroll_offset
-        top_line = (scroll_y + y) * 2
-        if top_line >= self._height:
-            return Strip([])
-        background = self.styles.background
-        top = self._pixels[top_line]
-        bottom = (
-            self._pixels[top_line + 1]
-            if top_line + 1 < self._height
-            else [background] * self._width
-        )
-        return (
-            Strip(
-                [_cell(top[x] or background, bottom[x] or background) for x in range(self._width)]
-            )
-            .crop(scroll_x, scroll_x + self.scrollable_content_region.width)
-            .simplify()
-        )
-
-
-@lru_cache
-def _cell(top: Color, bottom: Color) -> Segment:
-    return Segment("\u2584", style=Style.from_color(bottom.rich_color, top.rich_color))
 
 
 class FigureView(Vertical):

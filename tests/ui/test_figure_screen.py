@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import pytest
+from textual_canvas import Canvas
 
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 from sass_tui.ui.app import SassApp
 from sass_tui.ui.figure_screen import FigureScreen
-from sass_tui.ui.figure_view import FILL, OVERLAY, Canvas, FigureView
+from sass_tui.ui.figure_view import FILL, OVERLAY, FigureView
 
 
 def percentile_figure(gender: str, p: float) -> Figure:
