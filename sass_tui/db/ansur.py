@@ -20,13 +20,13 @@ import csv
 import gzip
 import math
 import sqlite3
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
 from typing import Any, BinaryIO, NoReturn, cast
 
 import numpy as np
 
-from sass_tui.db.progress import Cancel, Steps
+from sass_tui.db.progress import Cancel, Progress, Steps
 from sass_tui.db.schema import (
     GIRTH_NAMES,
     PERSON_ATTRIBUTES,
@@ -178,22 +178,19 @@ def _open_bytes(path: Path) -> tuple[BinaryIO, BinaryIO]:
 def looks_like_ansur(path: str | Path) -> bool:
     """The file's first line is an ANSUR II header (it names the `subjectid`
     column, in any case): Input DB imports it as a survey file, not a person
-    file.  A file that cannot be read is not one (its import says why)."""
+    file.  A file that cannot be read is not one (its import says why).  At
+    most 64 KiB are read: it runs on the UI thread."""
     try:
         raw, stream = _open_bytes(Path(path))
-    except OSError:
-        return False
-    try:
         with raw:
             first = stream.readline(1 << 16)
     except (OSError, EOFError, gzip.BadGzipFile):
         return False
-    first = first.removeprefix(b"\xef\xbb\xbf")
-    fields = first.decode("cp1252", errors="replace").strip().lower().split(",")
+    fields = next(_decoded_lines(iter([first])), "").strip().lower().split(",")
     return ID_COLUMN in (field.strip().strip('"') for field in fields)
 
 
-def _decoded_lines(stream: BinaryIO) -> Iterator[str]:
+def _decoded_lines(stream: Iterable[bytes]) -> Iterator[str]:
     """Each line as text: UTF-8 (a byte-order mark dropped), else cp1252 (the
     published male file is cp1252)."""
     first = True
@@ -515,7 +512,7 @@ def store_ansur(
     paths: Sequence[str | Path],
     *,
     label: str = DEFAULT_LABEL,
-    progress: Callable[[int, int], None] | None = None,
+    progress: Progress | None = None,
 ) -> dict[str, int]:
     """Stream the files into the database inside the caller's transaction.
     Returns people per gender; progress(bytes done, bytes in all files)."""
@@ -541,7 +538,7 @@ def store_ansur(
 def import_ansur(
     conn: sqlite3.Connection,
     paths: Sequence[str | Path],
-    progress: Callable[[int, int], None] | None = None,
+    progress: Progress | None = None,
     *,
     label: str = DEFAULT_LABEL,
     cancel: Cancel | None = None,

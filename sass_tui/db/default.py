@@ -18,10 +18,9 @@ Nothing here parses arguments or prints; the CLI and the TUI call these.
 from __future__ import annotations
 
 import sqlite3
-from collections.abc import Callable
 from pathlib import Path
 
-from sass_tui.db.progress import Cancel, Steps
+from sass_tui.db.progress import Cancel, Progress, Steps
 from sass_tui.db.schema import (
     DatabaseError,
     check_writable,
@@ -31,7 +30,6 @@ from sass_tui.db.schema import (
     write_refused,
 )
 
-Progress = Callable[[int, int], None]
 ANSUR_FILES = ("ANSUR_II_MALE_Public.csv.gz", "ANSUR_II_FEMALE_Public.csv.gz")
 SYNTHETIC_LABEL = "synthetic"
 
@@ -57,20 +55,31 @@ def _expandable(path: str | Path) -> bool:
 def default_database(progress: Progress | None = None) -> sqlite3.Connection:
     """Open the default database, creating it from the shipped data sets on first use."""
     path = default_db_path()
-    if not needs_building(path):
-        # One connection for the check and the answer (a second open costs a
-        # `sass query` ~3 ms of its start-up): kept unless a build was cut short.
-        try:
-            conn = connect(path)
-        except DatabaseError:
-            conn = None  # opened again below, which says what is wrong with it
-        if conn is not None:
-            if holds_people(conn):
-                return conn
-            conn.close()
-    if default_needs_building(path):
+    conn = _open_built(path)
+    if conn is None:
         create_default_database(path, progress)
-    return connect(path)
+        conn = connect(path)
+    return conn
+
+
+def _open_built(path: Path) -> sqlite3.Connection | None:
+    """`path` opened if it holds a built default database; None if it is
+    missing or empty, or a first build was cut short (a full disk): its
+    schema with nobody in it.  Only such a build leaves a sass database
+    without people (`sass db init` and every import store some), and it would
+    answer every query with "0 people".  A file that is no usable database
+    raises DatabaseError, saying what is wrong with it."""
+    if needs_building(path):
+        return None
+    conn = connect(path)
+    try:
+        if holds_people(conn):
+            return conn
+    except BaseException:
+        conn.close()
+        raise
+    conn.close()
+    return None
 
 
 def needs_building(path: Path) -> bool:
@@ -78,20 +87,15 @@ def needs_building(path: Path) -> bool:
 
 
 def default_needs_building(path: Path) -> bool:
-    """The default database at `path` is missing or empty, or a first build
-    was cut short (a full disk): its schema with nobody in it.  Only such a
-    build leaves a sass database without people (`sass db init` and every
-    import store some), and it would answer every query with "0 people"."""
-    if needs_building(path):
-        return True
+    """The default database at `path` must be built (see _open_built)."""
     try:
-        conn = connect(path)
+        conn = _open_built(path)
     except DatabaseError:
         return False  # opening it again says what is wrong with it
-    try:
-        return not holds_people(conn)
-    finally:
-        conn.close()
+    if conn is None:
+        return True
+    conn.close()
+    return False
 
 
 def holds_people(conn: sqlite3.Connection) -> bool:
