@@ -9,6 +9,7 @@ when run; numpy, sqlite3, lark and pint wait until a verb needs them.
 from __future__ import annotations
 
 import argparse
+import gc
 import os
 import sys
 from types import ModuleType
@@ -154,7 +155,16 @@ class _VersionAction(argparse.Action):
         parser.exit(message=f"sass {number}\n")
 
 
+# A one-shot command makes ~50,000 objects starting (modules, classes, the
+# parser); at Python's default threshold (700) the cyclic collector walks the
+# young ones some 50 times, 5-8 ms of `sass fig` (docs/performance.md).  At
+# this threshold it runs only when a command keeps allocating, so memory held
+# by unreachable cycles stays bounded by about this many objects.
+COLLECT_AFTER_OBJECTS = 50_000
+
+
 def main(argv: list[str] | None = None) -> int:
+    gc.set_threshold(COLLECT_AFTER_OBJECTS, *gc.get_threshold()[1:])
     words = sys.argv[1:] if argv is None else argv
     if not words:  # plain `sass`: the TUI, with no parser to build (issue 16: its first screen)
         return run_tui(None)
@@ -166,6 +176,11 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def run_tui(db: str | None) -> int:
+    # Starting creates ~77,000 objects that live as long as the app (modules,
+    # classes, CSS rules, widgets); the cyclic collector would walk them some
+    # 200 times before the first screen (50-85 ms, docs/performance.md).  It
+    # is off until the app has drawn that screen (SassApp.first_screen_drawn).
+    gc.disable()
     from sass_tui.model.errors import SassError
     from sass_tui.ui.app import run_app
 

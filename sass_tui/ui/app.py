@@ -8,6 +8,7 @@ See docs/architecture.md.
 
 from __future__ import annotations
 
+import gc
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -106,6 +107,14 @@ class SassApp(App):
 
     def get_default_screen(self) -> SpreadsheetScreen:
         return SpreadsheetScreen(self.session, self.strength_error)
+
+    def first_screen_drawn(self) -> None:
+        """The spreadsheet is on the terminal: the collector, held off while
+        starting (cli.run_tui), runs again; what the start made is frozen out
+        of its walks, since it lives as long as the app."""
+        if not gc.isenabled():
+            gc.freeze()
+            gc.enable()
 
     # --- what tests and screens read ------------------------------------------------
     @property

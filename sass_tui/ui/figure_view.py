@@ -11,15 +11,18 @@ left with a tick every 10 cm and a long one every 50 cm.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from textual.app import ComposeResult
 from textual.color import Color
 from textual.containers import Vertical
 from textual.reactive import reactive
 from textual.widgets import Static
-from textual_canvas import Canvas
 
 from sass_tui.model.outline import Outline, Shape, View
+
+if TYPE_CHECKING:  # imported with the first canvas: ~17 ms (it reads its version)
+    from textual_canvas import Canvas
 
 FILL = Color.parse("#5f87af")
 OVERLAY = Color.parse("#ffaf00")
@@ -39,16 +42,36 @@ class FigureView(Vertical):
 
     outlines: reactive[tuple[Outline, ...]] = reactive((), always_update=True)
 
-    def __init__(self, *, canvas_focus: bool = True, id: str | None = None) -> None:
+    def __init__(
+        self, *, canvas_focus: bool = True, canvas_later: bool = False, id: str | None = None
+    ) -> None:
         super().__init__(id=id)
         # False beside the spreadsheet: a picture there, Tab stays with the data.
         self.canvas_focus = canvas_focus
+        # True beside the spreadsheet: the view takes its place at once and
+        # draws one frame after it is first shown, so that the spreadsheet's
+        # first screen does not wait for the canvas (issue 16).
+        self.canvas_later = canvas_later
 
     def compose(self) -> ComposeResult:
+        if not self.canvas_later:
+            yield self._new_canvas()
+        yield Static("", id="figure-caption")
+
+    def on_mount(self) -> None:
+        if self.canvas_later:
+            self.call_after_refresh(self._add_canvas)
+
+    def _new_canvas(self) -> Canvas:
+        from textual_canvas import Canvas
+
         canvas = Canvas(1, 2, id="figure-canvas")
         canvas.can_focus = self.canvas_focus
-        yield canvas
-        yield Static("", id="figure-caption")
+        return canvas
+
+    async def _add_canvas(self) -> None:
+        await self.mount(self._new_canvas(), before="#figure-caption")
+        self.call_after_refresh(self.redraw)  # once the canvas has its size
 
     def watch_outlines(self) -> None:
         self.redraw()
@@ -56,10 +79,16 @@ class FigureView(Vertical):
     def on_resize(self) -> None:
         self.redraw()
 
+    @property
+    def canvas(self) -> Canvas | None:
+        """The canvas drawn on; None until a view composed without it has added it."""
+        canvases = self.query("#figure-canvas")
+        return canvases.first() if canvases else None  # type: ignore[return-value]
+
     def redraw(self) -> None:
-        if not self.is_mounted:
+        canvas = self.canvas if self.is_mounted else None
+        if canvas is None:
             return
-        canvas = self.query_one(Canvas)
         width, height = canvas.size.width, canvas.size.height * 2
         if width < 8 or height < 8:
             return

@@ -23,7 +23,7 @@ from textual.message import Message
 from textual.reactive import reactive
 from textual.screen import ModalScreen
 from textual.widget import Widget
-from textual.widgets import Button, Footer, OptionList, Static
+from textual.widgets import Footer, OptionList, Static
 from textual.widgets.option_list import Option
 
 from sass_tui.db.flatfile import FlatFiles
@@ -35,7 +35,7 @@ from sass_tui.ui.base import SassScreen
 from sass_tui.ui.commands import CommandSpec
 from sass_tui.ui.progress import QUERY_BAR_AFTER, Work, WorkBar, WorkProgressed
 from sass_tui.ui.query_builder import QueryBuilder, QueryBuilderScreen
-from sass_tui.ui.widgets import CommandMenu, MessageLine
+from sass_tui.ui.widgets import CommandMenu, MenuItem, MessageLine
 
 BUILD_PROMPT = "Press rightmouse to build query."
 WAIT = "Query on database, please wait..."
@@ -148,9 +148,9 @@ class QueryCommandMenu(CommandMenu):
 
     def refresh_labels(self) -> None:
         for spec in self.commands:
-            button = self.query_one(f"#command-{spec.name}", Button)
-            button.label = spec.label(self.context)
-            button.disabled = not spec.available(self.context)
+            item = self.item(spec)
+            item.label = spec.label(self.context)
+            item.disabled = not spec.available(self.context)
 
 
 class SummaryPanel(Static):
@@ -533,8 +533,8 @@ class QueryScreen(SassScreen):
         self.query_one(QueryCommandMenu).refresh_labels()
 
     # --- command menu ------------------------------------------------------------------
-    async def on_button_pressed(self, event: Button.Pressed) -> None:
-        spec = next((c for c in QUERY_COMMANDS if event.button.id == f"command-{c.name}"), None)
+    async def on_menu_item_pressed(self, event: MenuItem.Pressed) -> None:
+        spec = next((c for c in QUERY_COMMANDS if event.item.id == f"command-{c.name}"), None)
         if spec is not None:
             event.stop()
             await self.run_action(spec.action)

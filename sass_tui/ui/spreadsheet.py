@@ -21,7 +21,7 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
 from textual.message import Message
-from textual.widgets import Button, Footer
+from textual.widgets import Footer
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.figfile import default_fig_name, render_fig
@@ -65,6 +65,7 @@ from sass_tui.ui.widgets import (
     GlobalPanel,
     GroupBar,
     GroupTab,
+    MenuItem,
     MessageLine,
     format_percentile,
     format_value,
@@ -180,6 +181,7 @@ class SpreadsheetScreen(SassScreen):
         self.data_group = GIRTH
         self._warning_index = 0
         self._covered = False  # another screen has been pushed over this one
+        self._first_screen_shown = False  # the figure panel is drawn from then on
         self._predictor: Predictor | None = None  # opened on the first Predict
         # The prediction shown and its figure (shown while it is session.person).
         self.prediction: tuple[Prediction, Figure] | None = None
@@ -202,9 +204,18 @@ class SpreadsheetScreen(SassScreen):
         self.strength_page.display = False
         self._set_page_rows(self.app.size.height)
         self.refresh_screen()
-        self._place_figure_panel(self.app.size.width)  # draws the figure once, when shown
+        self._place_figure_panel(self.app.size.width)
         self.sheet.focus()
         self.say(FIRST_MESSAGE)
+        self.call_after_refresh(self._first_screen_drawn)
+
+    def _first_screen_drawn(self) -> None:
+        # The figure panel takes its place on the first screen and is drawn
+        # one frame after it (issue 16: the outline and the canvas cost ~25 ms);
+        # once, when it is shown.
+        self._first_screen_shown = True
+        self.redraw_figure_panel()
+        self.sass_app.first_screen_drawn()
 
     def on_resize(self, event: events.Resize) -> None:
         self._set_page_rows(event.size.height)
@@ -231,10 +242,10 @@ class SpreadsheetScreen(SassScreen):
         wide = width >= FIGURE_PANEL_MIN_WIDTH
         new, shown = False, panel is not None and panel.display
         if panel is None and wide:
-            # Imported when first shown: canvas and outline cost ~20 ms of start-up.
             from sass_tui.ui.figure_view import FigureView
 
-            panel, new = FigureView(canvas_focus=False, id="figure-panel"), True
+            panel = FigureView(canvas_focus=False, canvas_later=True, id="figure-panel")
+            new = True
             self.query_one("#body", Horizontal).mount(panel)
         if panel is not None:
             panel.display = wide
@@ -245,7 +256,7 @@ class SpreadsheetScreen(SassScreen):
         """Draw the figure shown, with the figure screen's overlay, if the
         panel is on the screen and what it draws has changed."""
         panel = self.figure_panel
-        if panel is None or not panel.display:
+        if panel is None or not panel.display or not self._first_screen_shown:
             return
         from sass_tui.ui.figure_screen import session_outlines
 
@@ -366,8 +377,8 @@ class SpreadsheetScreen(SassScreen):
         self.say(message)
 
     # --- commands ---------------------------------------------------------------
-    async def on_button_pressed(self, event: Button.Pressed) -> None:
-        spec = next((c for c in COMMANDS if event.button.id == f"command-{c.name}"), None)
+    async def on_menu_item_pressed(self, event: MenuItem.Pressed) -> None:
+        spec = next((c for c in COMMANDS if event.item.id == f"command-{c.name}"), None)
         if spec is not None:
             event.stop()
             await self.run_action(spec.action)

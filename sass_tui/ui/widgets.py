@@ -12,15 +12,18 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from rich.cells import cell_len
 from rich.style import Style
 from rich.text import Text
 from textual import events
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
+from textual.content import Content
+from textual.geometry import Size
 from textual.message import Message
 from textual.reactive import reactive
 from textual.widget import Widget
-from textual.widgets import Button, Input, Label, Static
+from textual.widgets import Input, Label, Static
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
@@ -368,8 +371,52 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
 # --- command menu --------------------------------------------------------------
 
 
+class MenuItem(Widget, can_focus=False):
+    """One command of a CommandMenu: its label, clicked like a button.
+
+    Not Textual's Button: the spreadsheet's 15 Buttons cost ~15 ms of the
+    first screen (issue 16), mostly their large default CSS matched against
+    every widget; the menu uses only the label, the click and the look
+    (sass.tcss, query.tcss)."""
+
+    ALLOW_SELECT = False
+    ACTIVE_SECONDS = 0.2  # the flash after a click, as Button's
+
+    label: reactive[str] = reactive("", layout=True)
+
+    class Pressed(Message):
+        def __init__(self, item: MenuItem) -> None:
+            super().__init__()
+            self.item = item
+
+        @property
+        def control(self) -> MenuItem:
+            return self.item
+
+    def __init__(self, label: str, *, id: str | None = None, classes: str | None = None) -> None:
+        super().__init__(id=id, classes=classes)
+        self.set_reactive(MenuItem.label, label)
+
+    def render(self) -> Content:
+        return Content(self.label)
+
+    def get_content_width(self, container: Size, viewport: Size) -> int:
+        return cell_len(self.label)
+
+    async def _on_click(self, event: events.Click) -> None:
+        event.stop()
+        self.press()
+
+    def press(self) -> None:
+        if self.disabled or not self.display or self.has_class("-active"):
+            return
+        self.add_class("-active")
+        self.set_timer(self.ACTIVE_SECONDS, lambda: self.remove_class("-active"))
+        self.post_message(self.Pressed(self))
+
+
 class CommandMenu(Horizontal):
-    """Figure 6: buttons in two columns, built from the command specs; the
+    """Figure 6: commands in two columns, built from the command specs; the
     labels and availability come from `context` (the screen the menu is on)."""
 
     def __init__(self, commands: tuple[CommandSpec, ...], context: object, **kwargs) -> None:
@@ -383,23 +430,18 @@ class CommandMenu(Horizontal):
                 for spec in sorted(
                     (c for c in self.commands if c.column == column), key=lambda c: c.row
                 ):
-                    button = Button(
-                        spec.label(self.context),
-                        id=f"command-{spec.name}",
-                        classes="command",
-                        compact=True,
+                    yield MenuItem(
+                        spec.label(self.context), id=f"command-{spec.name}", classes="command"
                     )
-                    button.can_focus = False
-                    # Button pads its label by one cell each side; "Previous Page" needs
-                    # the room at 80 columns.  (Textual's CSS refuses `line-pad: 0`.)
-                    button.styles.line_pad = 0
-                    yield button
+
+    def item(self, spec: CommandSpec) -> MenuItem:
+        return self.query_one(f"#command-{spec.name}", MenuItem)
 
     def refresh_labels(self) -> None:
         for spec in self.commands:
-            button = self.query_one(f"#command-{spec.name}", Button)
-            button.label = spec.label(self.context)
-            button.display = spec.available(self.context)
+            item = self.item(spec)
+            item.label = spec.label(self.context)
+            item.display = spec.available(self.context)
 
 
 # --- data section ----------------------------------------------------------------

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from textual import events
-from textual.widgets import Button, OptionList
+from textual.widgets import OptionList
 
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.query import run_query
@@ -24,7 +24,7 @@ from sass_tui.ui.query_screen import (
     QueryScreen,
     SummaryPanel,
 )
-from sass_tui.ui.widgets import GlobalPanel
+from sass_tui.ui.widgets import GlobalPanel, MenuItem
 
 SIZE = (120, 40)
 SAMPLE = (
@@ -48,7 +48,7 @@ def popup_labels(app) -> list[str]:
 def command_slots(app) -> list[str]:
     """Labels of the first two visible buttons of figure 6's second column."""
     column = app.query(".command-column").last()
-    return [str(b.label) for b in column.query(Button) if b.display][:2]
+    return [str(b.label) for b in column.query(MenuItem) if b.display][:2]
 
 
 async def settle(pilot) -> None:

@@ -7,7 +7,6 @@ import xml.etree.ElementTree as ET
 
 import pytest
 from textual import events
-from textual.widgets import Button
 
 from sass_tui.model.figfile import read_fig
 from sass_tui.model.figure import Figure
@@ -22,7 +21,7 @@ from sass_tui.model.strength import (
 )
 from sass_tui.ui.app import SassApp
 from sass_tui.ui.strength_page import StrengthPage
-from sass_tui.ui.widgets import GlobalPanel
+from sass_tui.ui.widgets import GlobalPanel, MenuItem
 
 SIZE = (100, 37)
 REPORT_VALUE = 17.98  # figure 5: right shoulder abduction at x 30, y 45, elbow 90
@@ -46,7 +45,7 @@ def row_value(app, label: str) -> float:
 
 
 def button_label(app, name: str) -> str:
-    return str(app.query_one(f"#command-{name}", Button).label)
+    return str(app.query_one(f"#command-{name}", MenuItem).label)
 
 
 async def paste(pilot, text: str) -> None:
