@@ -70,6 +70,8 @@ class FigureView(Vertical):
         return canvas
 
     async def _add_canvas(self) -> None:
+        if not self.is_attached or self.canvas is not None:
+            return  # the app is closing (q pressed at once), or the canvas is there
         await self.mount(self._new_canvas(), before="#figure-caption")
         self.call_after_refresh(self.redraw)  # once the canvas has its size
 

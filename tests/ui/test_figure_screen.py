@@ -137,6 +137,21 @@ def test_no_figure_panel_below_120_columns(drive):
     drive(scenario())
 
 
+def test_quitting_on_the_first_screen_before_the_panel_is_drawn(drive, monkeypatch):
+    """The panel adds its canvas one frame after the first screen (issue 16):
+    an app closing by then (q pressed at once) ends cleanly, not with a
+    MountError."""
+    monkeypatch.setattr(SassApp, "first_screen_drawn", lambda app: app.exit())
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(120, 40)) as pilot:
+            await pilot.pause()
+        assert app.return_code == 0
+
+    drive(scenario())
+
+
 def test_the_panel_is_outlined_once_at_start_and_when_it_comes_back(drive, monkeypatch):
     """Issue 16 (first screen): the figure is outlined once when the app starts,
     not again for each resize or the first screen resume; a panel hidden by a
