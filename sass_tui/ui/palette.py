@@ -26,6 +26,7 @@ from functools import partial
 from typing import Any
 
 from rich.text import Text
+from textual import events
 from textual.binding import Binding, BindingsMap
 from textual.command import DiscoveryHit, Hit, Hits, Provider
 from textual.containers import Vertical
@@ -268,6 +269,10 @@ class ScreenCommands(Provider):
                 yield Hit(score, matcher.highlight(name), callback, help=help_text)
 
 
+HELP_SCROLLBAR = 2
+HELP_NAME_WIDTH = 20  # longer command names wrap
+
+
 class HelpScreen(ModalScreen[None]):
     """Every binding of the screen it was opened on: key, command, help."""
 
@@ -298,12 +303,28 @@ class HelpScreen(ModalScreen[None]):
             yield Static("ctrl+p: search and run these commands.  Esc: close.", id="help-hint")
 
     def on_mount(self) -> None:
+        self._fill(self.size.width)
+        self.query_one(DataTable).focus()
+
+    def on_resize(self, event: events.Resize) -> None:
+        self._fill(event.size.width)
+
+    def _fill(self, screen_width: int) -> None:
+        """One row a command; "What it does" wraps within the box (at 80
+        columns it would otherwise be cut off at the right)."""
         table = self.query_one(DataTable)
-        table.add_columns("Key", "Command", "What it does")
-        for command in self.commands:
-            table.add_row(
-                Text(", ".join(key_name(k) for k in command.keys)),
-                Text(command.name),
-                Text(command.help),
-            )
-        table.focus()
+        keys = [", ".join(key_name(k) for k in command.keys) for command in self.commands]
+        key_width = max(map(len, keys), default=3)
+        name_width = min(
+            HELP_NAME_WIDTH, max((len(command.name) for command in self.commands), default=7)
+        )
+        # The box is 90% wide with a border; each column pads one cell each
+        # side; the vertical scrollbar takes HELP_SCROLLBAR cells.
+        box = int(screen_width * 0.9) - 2
+        help_width = max(12, box - key_width - name_width - 3 * 2 - HELP_SCROLLBAR)
+        table.clear(columns=True)
+        table.add_column("Key", width=key_width)
+        table.add_column("Command", width=name_width)
+        table.add_column("What it does", width=help_width)
+        for key, command in zip(keys, self.commands, strict=True):
+            table.add_row(Text(key), Text(command.name), Text(command.help), height=None)

@@ -94,6 +94,26 @@ def test_help_on_the_figure_screen_lists_its_own_keys(drive):
     drive(scenario())
 
 
+def test_help_wraps_what_each_key_does_at_80_columns(drive):
+    """F1 at 80x24: every column fits the box (no sideways scrolling) and a
+    long "What it does" wraps onto more lines instead of being cut off."""
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=(80, 24)) as pilot:
+            await pilot.press("f1")
+            await pilot.pause()
+            table = app.screen.query_one(DataTable)
+            assert table.virtual_size.width <= table.scrollable_content_region.width
+            assert not table.show_horizontal_scrollbar
+            help_width = list(table.columns.values())[2].width
+            for row_key, command in zip(table.rows, app.screen.commands, strict=True):
+                lines = -(-len(command.help) // help_width)  # at least
+                assert table.rows[row_key].height >= max(1, lines), command.name
+
+    drive(scenario())
+
+
 def test_palette_snapshot(snap_compare):
     async def type_query(pilot):
         await pilot.press("ctrl+p", *"create fig")
