@@ -121,11 +121,7 @@ class FigureScreen(SassScreen):
 
     def action_close(self) -> None:
         """Back to the spreadsheet."""
-        self.app.pop_screen()
-        # An undo here changed what the screen below shows.
-        refresh = getattr(self.app.screen, "refresh_screen", None)
-        if refresh is not None:
-            refresh()
+        self.app.pop_screen()  # the spreadsheet shows what an undo here changed as it resumes
 
     def action_cycle_overlay(self) -> None:
         """Lay the population's 50th, 5th or 95th over the figure, or nothing."""

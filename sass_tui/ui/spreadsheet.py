@@ -225,10 +225,11 @@ class SpreadsheetScreen(SassScreen):
         self._covered = True
 
     def on_screen_resume(self) -> None:
-        # The overlay may have changed on the screen that covered this one; the
-        # first resume (the app's start) follows the drawing made at mount.
+        # The screen that covered this one may have changed the Session (an
+        # undo on the figure screen) or the overlay; the first resume (the
+        # app's start) follows the drawing made at mount.
         if self._covered:
-            self.redraw_figure_panel()
+            self.refresh_screen()
 
     # --- the live figure panel (issue 15) -----------------------------------------
     @property
