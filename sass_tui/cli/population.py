@@ -1,6 +1,10 @@
 """`sass population --query QUERY -o FILE.dat`: population files (report
 figure 7) made from the people a query selects: the empirical 5th/50th/95th
-percentile, per gender, of every girth and center-of-mass row.
+percentile, per gender, of every girth and center-of-mass row.  `--ids FILE`
+makes them from a list of people instead (person ids one a line, or `sass
+query --format csv` output; `-` reads standard input), as Make Population
+does with the query screen's selected list; with --query too, from the
+people of the list that the query selects.
 
 `-o young.dat` writes the girth file to young.dat and the center-of-mass
 file beside it as young-cmass.dat (`sass fig --girth young.dat --cmass
@@ -20,7 +24,12 @@ def register(commands: SubParsers) -> None:
         "population", help="make population files from the people a query selects"
     )
     add_db_option(population)
-    population.add_argument("--query", required=True, metavar="QUERY")
+    population.add_argument("--query", metavar="QUERY")
+    population.add_argument(
+        "--ids",
+        metavar="FILE",
+        help="person ids, one a line, or `sass query --format csv` output ('-': stdin)",
+    )
     population.add_argument(
         "-o",
         "--output",
@@ -33,17 +42,39 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from sass_tui.db.population import people_words, population_of
+    from sass_tui.db.population import (
+        missing_ids,
+        people_words,
+        population_of,
+    )
     from sass_tui.db.population_files import write_population_files
     from sass_tui.db.query import compile_query
     from sass_tui.model.names import GROUP_TITLES
 
-    compile_query(args.query)  # a bad query touches nothing
+    if args.query is None and args.ids is None:
+        print("sass population: error: give --query QUERY, --ids FILE or both", file=sys.stderr)
+        return 2
+    if args.query is not None:
+        compile_query(args.query)  # a bad query touches nothing
+    ids = _read_ids(args.ids) if args.ids is not None else None
     conn = open_db(args)
     try:
-        result = population_of(conn, args.query, title=args.title)
+        absent = missing_ids(conn, ids) if ids is not None else []
+        result = population_of(
+            conn,
+            args.query,
+            ids=ids,
+            title=args.title,
+            ids_from="the list on standard input" if args.ids == "-" else f"the list {args.ids}",
+        )
     finally:
         conn.close()
+    if absent:
+        shown = ", ".join(map(str, absent[:10])) + (", ..." if len(absent) > 10 else "")
+        print(
+            f"{len(absent)} of the {len(ids or ())} listed ids are not in the database: {shown}",
+            file=sys.stderr,
+        )
     for group, path in write_population_files(result, Path(args.output)).items():
         print(f"wrote {path} ({GROUP_TITLES[group].lower()})")
     for group in result.empty_groups:
@@ -53,3 +84,20 @@ def run(args: argparse.Namespace) -> int:
         )
     print(f"from {people_words(result.counts)} selected by: {result.query}")
     return 0
+
+
+def _read_ids(name: str) -> list[int]:
+    from sass_tui.db.population import parse_id_list
+
+    if name == "-":
+        return parse_id_list(sys.stdin.read(), "standard input")
+    from sass_tui.model.paths import user_path
+
+    path = user_path(name)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise OSError(f"{name}: not a text file of person ids ({exc.reason})") from None
+    except OSError as exc:
+        raise OSError(f"{name}: {exc.strerror or exc}") from None
+    return parse_id_list(text, name)

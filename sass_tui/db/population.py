@@ -60,12 +60,14 @@ def population_of(
     ids: Sequence[int] | None = None,
     title: str | None = None,
     date: str | None = None,
+    ids_from: str = "the selected list",
     progress: Progress | None = None,
     cancel: Cancel | None = None,
 ) -> SelectionPopulation:
     """The population of the people `query` selects, or of the people `ids`
     names (the query screen's selected list; with both, the people of `ids`
-    the query selects).  See the module's docstring.  Raises PopulationError
+    the query selects; `ids_from` names the list in the title).  See the
+    module's docstring.  Raises PopulationError
     when nobody is selected or a gender has fewer than MIN_PEOPLE people;
     QueryError for a bad query.  `progress(columns done, columns)`; `cancel`
     stops it with Cancelled (it writes nothing anyway: the caller writes)."""
@@ -79,7 +81,7 @@ def population_of(
     with interruptible(conn, cancel, "making the population"):
         values = load_values(conn, fields, query, ids=ids)
     steps(1, total)
-    what = _selection_words(query, ids)
+    what = _selection_words(query, ids, ids_from)
     genders = np.array(values.genders, dtype=object)
     counts: dict[str, int] = {g: int(np.sum(genders == g)) for g in GENDERS if np.any(genders == g)}
     if not counts:
@@ -128,10 +130,10 @@ def population_of(
     return SelectionPopulation(what.removeprefix("the query "), counts, groups, tuple(empty))
 
 
-def _selection_words(query: str | None, ids: Sequence[int] | None) -> str:
+def _selection_words(query: str | None, ids: Sequence[int] | None, ids_from: str) -> str:
     if ids is None:
         return f"the query {query}"
-    listed = f"the selected list of {len(ids):,} {'person' if len(ids) == 1 else 'people'}"
+    listed = f"{ids_from} of {len(ids):,} {'person' if len(ids) == 1 else 'people'}"
     return listed if query is None else f"{listed} AND {query}"
 
 
@@ -145,3 +147,44 @@ def _percentiles(people: np.ndarray, column_done: Callable[[], None]) -> np.ndar
         if len(column) >= MIN_PEOPLE:
             out[k] = np.percentile(column, PERCENTILES)
     return out
+
+
+class IdListError(ValueError, SassError):
+    """A list of person ids that cannot be read (nothing was made)."""
+
+
+def parse_id_list(text: str, where: str) -> list[int]:
+    """Person ids, one a line: a plain list, or `sass query --format csv`'s
+    output (its first column; the header line is skipped).  Blank lines and
+    lines starting with # are skipped; an id listed twice counts once.
+    IdListError says which line (`where`:N) holds what is not an id."""
+    ids: dict[int, None] = {}
+    for number, line in enumerate(text.splitlines(), 1):
+        field = line.split(",", 1)[0].strip()
+        if not field or field.startswith("#") or (not ids and field.lower() == "id"):
+            continue
+        # SQLite's integers are 64-bit: a longer number names nobody.
+        digits = field.lstrip("0") or "0"
+        if not (field.isascii() and field.isdigit() and len(digits) < 20 and int(digits) < 2**63):
+            from sass_tui.model.text import printable
+
+            raise IdListError(
+                f"{where}:{number}: {printable(field)!r} is not a person id "
+                "(expected a whole number, one a line, or `sass query --format csv` output)"
+            )
+        ids[int(digits)] = None
+    if not ids:
+        raise IdListError(f"{where}: no person ids in it")
+    return list(ids)
+
+
+def missing_ids(conn: sqlite3.Connection, ids: Sequence[int]) -> list[int]:
+    """The ids of `ids` no person in the database has, in their order."""
+    import json
+
+    rows = conn.execute(
+        "SELECT value FROM json_each(?) WHERE value NOT IN (SELECT id_num FROM person) "
+        "ORDER BY key",
+        (json.dumps([int(i) for i in ids]),),
+    )
+    return [value for (value,) in rows]

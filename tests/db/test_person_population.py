@@ -8,10 +8,13 @@ import csv
 import json
 import statistics
 
+import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from sass_tui.cli import main
-from sass_tui.db.population import MIN_PEOPLE, PopulationError, population_of
+from sass_tui.db.population import MIN_PEOPLE, PopulationError, parse_id_list, population_of
 from sass_tui.db.schema import QUERY_TABLES
 from sass_tui.model.measures import MEASURES
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, ROWS
@@ -215,3 +218,97 @@ def test_population_of_a_list_of_ids_is_exactly_those_people(default_db):
         population_of(default_db, ids=ids[:5])
     with pytest.raises(PopulationError, match="selects nobody"):
         population_of(default_db, ids=[])
+
+
+# --- `sass population --ids`: the selected list's population, from the shell -----
+
+
+def _young_women_ids(conn) -> list[int]:
+    return [
+        r[0]
+        for r in conn.execute(
+            "SELECT id_num FROM person WHERE gender = 'female' AND age < 25 ORDER BY id_num"
+        )
+    ][::3]
+
+
+def test_population_from_a_file_of_ids(default_db, default_db_file, tmp_path, capsys):
+    """Every third young woman, listed one id a line with a comment, a blank
+    line, a repeat and two ids nobody has: the file's 50th are those people's
+    medians, the title names the list, and the absent ids are reported."""
+    ids = _young_women_ids(default_db)
+    listing = tmp_path / "chosen.txt"
+    listing.write_text(
+        "# chosen by hand\n" + "\n".join(map(str, ids)) + f"\n\n{ids[0]}\n999999991\n999999992\n"
+    )
+    target = tmp_path / "chosen.dat"
+    argv = ["population", "--db", str(default_db_file), "--ids", str(listing)]
+    assert main([*argv, "-o", str(target)]) == 0
+    said = capsys.readouterr()
+    assert f"2 of the {len(ids) + 2} listed ids are not in the database: 999999991, 999999992" in (
+        said.err
+    )
+    assert f"{len(ids)} women" in said.out
+    data = read_population_file(target, GIRTH)
+    assert f"the list {listing} of {len(ids) + 2:,} people" in data.title
+    r = [row.name for row in ROWS[GIRTH]].index("right_upper_arm")
+    marks = ", ".join("?" * len(ids))
+    arm = [
+        v
+        for (v,) in default_db.execute(
+            f"SELECT z FROM q_girth_right_upper_arm WHERE id_num IN ({marks})", ids
+        )
+    ]
+    assert data.stats("female")[r, 2, 1] == pytest.approx(statistics.median(arm), abs=1e-4)
+
+
+def test_population_from_sass_query_csv_on_standard_input(
+    default_db_file, tmp_path, capsys, monkeypatch
+):
+    """`sass query --format csv ... | sass population --ids - --query ...`: the
+    listing's first column is read (its header skipped), the query narrows it."""
+    assert main(["query", "--db", str(default_db_file), "--format", "csv", "gender = female"]) == 0
+    listing = capsys.readouterr().out
+    monkeypatch.setattr("sys.stdin", __import__("io").StringIO(listing))
+    target = tmp_path / "young.dat"
+    argv = ["population", "--db", str(default_db_file), "--ids", "-", "--query", "age < 25"]
+    assert main([*argv, "-o", str(target)]) == 0
+    by_query = tmp_path / "by_query.dat"
+    argv = ["population", "--db", str(default_db_file), "--query", "gender = female AND age < 25"]
+    assert main([*argv, "-o", str(by_query)]) == 0
+    capsys.readouterr()
+    listed = read_population_file(target, GIRTH).stats("female")
+    queried = read_population_file(by_query, GIRTH).stats("female")
+    np.testing.assert_allclose(listed, queried, equal_nan=True)
+    assert "on standard input" in read_population_file(target, GIRTH).title
+
+
+def test_population_ids_errors_say_where(default_db_file, tmp_path, capsys):
+    base = ["population", "--db", str(default_db_file), "-o", str(tmp_path / "x.dat")]
+    assert main(base) == 2
+    assert "give --query QUERY, --ids FILE or both" in capsys.readouterr().err
+    bad = tmp_path / "bad.txt"
+    bad.write_text("id,name\n10027,A\n1.5,B\n")
+    assert main([*base, "--ids", str(bad)]) == 2
+    assert f"{bad}:3: '1.5' is not a person id" in capsys.readouterr().err
+    for content, expected in (
+        ("# nobody\n\n", "no person ids in it"),
+        (b"\xff\xfe\x00", "not a text file"),
+    ):
+        bad.write_bytes(content.encode() if isinstance(content, str) else content)
+        assert main([*base, "--ids", str(bad)]) == 2
+        assert expected in capsys.readouterr().err
+    assert main([*base, "--ids", str(tmp_path / "missing.txt")]) == 2
+    assert "missing.txt" in capsys.readouterr().err
+    assert not (tmp_path / "x.dat").exists()
+
+
+@given(
+    ids=st.lists(st.integers(min_value=0, max_value=2**63 - 1), min_size=1, max_size=30),
+    header=st.booleans(),
+    extra=st.lists(st.sampled_from(["", "# note", "   "]), max_size=3),
+    columns=st.sampled_from(["", ",ANSUR II F 1,female", ", x"]),
+)
+def test_an_id_list_reads_back_the_ids_written(ids, header, extra, columns):
+    lines = (["id,name"] if header else []) + [f"{i}{columns}" for i in ids] + extra
+    assert parse_id_list("\n".join(lines), "ids.txt") == list(dict.fromkeys(ids))

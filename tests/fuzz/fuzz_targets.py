@@ -357,6 +357,16 @@ def _ansur() -> Target:
     return Target("ansur", [ansur_seed()], run)
 
 
+def _ids() -> Target:
+    from sass_tui.db.population import parse_id_list
+
+    seeds = [
+        "10027\n10032\n# a comment\n\n29421\n",
+        "id,name,gender\n10027,ANSUR II M 10027,male\n",
+    ]
+    return Target("ids", seeds, lambda text: parse_id_list(str(text), "ids.txt"))
+
+
 TARGET_MAKERS: dict[str, Callable[[], Target]] = {
     "population": _population,
     "strength": _strength,
@@ -365,6 +375,7 @@ TARGET_MAKERS: dict[str, Callable[[], Target]] = {
     "flat": _flat,
     "ansur": _ansur,
     "units": _units,
+    "ids": _ids,
 }
 _BUILT: dict[str, Target] = {}
 
