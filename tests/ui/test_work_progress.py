@@ -43,6 +43,10 @@ class HeldWork:
                 self.gate.wait(60)  # a guard against a hung test, not a timing
 
         monkeypatch.setattr(Work, "report", report)
+        # Every report reaches the bar: at MAX_UPDATES a second, a report made
+        # within 1/20 s of the one before is left out, and the one the worker
+        # is held at could be that one (the bar never showing it).
+        monkeypatch.setattr("sass_tui.ui.progress.MAX_UPDATES", 10**9)
 
     async def until_shown(self, pilot, bar: WorkBar) -> None:
         for _ in range(500):  # a bound on turns of the event loop, not a time
