@@ -16,9 +16,10 @@ The SQLite file stays the store of record; the copy may never disagree with it:
   cookie, with the file's size, mtime and inode.  The version is read, the
   copy brought up to date and the query evaluated while one read
   transaction holds SQLite's shared lock, so no writer commits in between.
-- A file of schema 3 logs every write to every table a query reads
+- A file of schema 4 logs every write to every table a query reads
   (db/schema.py, change_log_triggers): the changed person's id and the
-  generation it changed in.  Another data version then means: re-read, in
+  generation it changed in (sass's bulk writes log each person once, in
+  the same transaction, with the triggers quiet: schema.logged_once).  Another data version then means: re-read, in
   that same transaction, the people logged at the copy's generation or
   later (`_sync`), a few milliseconds for a few people.  The log cannot say
   when the schema changed (`db init`, a dropped trigger), when the file holds
@@ -254,10 +255,20 @@ def _has_change_log(conn: sqlite3.Connection) -> bool:
         )
     }
     expected = change_log_triggers()
-    return all(
+    return not _log_quiet(conn) and all(
         found.get(name, "").replace("IF NOT EXISTS ", "") == sql.replace("IF NOT EXISTS ", "")
         for name, sql in expected.items()
     )
+
+
+def _log_quiet(conn: sqlite3.Connection) -> bool:
+    """Whether a committed row in change_bulk keeps the triggers quiet (sass's
+    bulk writer never commits one: another program did, and writes may go
+    unlogged)."""
+    try:
+        return conn.execute("SELECT 1 FROM change_bulk LIMIT 1").fetchone() is not None
+    except sqlite3.OperationalError:  # no such table: not a file of this schema
+        return True
 
 
 def _base(conn: sqlite3.Connection, key: tuple[int, ...]) -> ColumnStore:
@@ -378,6 +389,8 @@ def _sync(conn: sqlite3.Connection, store: ColumnStore, key: tuple[int, ...]) ->
         return True
     if not store.logged or store.cookie != key[2]:
         return False  # no log, or the schema changed (db init, a dropped trigger)
+    if _log_quiet(conn):
+        return False  # the triggers are kept quiet: the log may miss writes
     if _generation(conn, store.gen)[1] != store.token:
         return False  # another history: another database, or an older copy of this one
     gen, token = _generation(conn)

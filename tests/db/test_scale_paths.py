@@ -16,7 +16,7 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-from sass_tui.db import accelerator
+from sass_tui.db import accelerator, schema
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.query import CompiledQuery, Query, compile_query, run_query
 from sass_tui.db.schema import (
@@ -24,8 +24,10 @@ from sass_tui.db.schema import (
     GIRTH_NAMES,
     JOINT_LIMIT_NAMES,
     QUERY_TABLES,
+    SCHEMA_VERSION,
     STRENGTH_PARAMETERS,
     PeopleBatch,
+    change_log_triggers,
     connect,
     delete_people,
     recreate_schema,
@@ -605,15 +607,43 @@ def test_a_schema_2_database_gets_the_change_log(db):
         raw.execute(f"DROP TRIGGER {name}")
     raw.executescript(
         "DROP TRIGGER change_note_insert; DROP VIEW change_note; DROP TABLE change_log;"
-        "DROP TABLE change_gens; UPDATE meta SET value = '2' WHERE key = 'schema_version';"
+        "DROP TABLE change_gens; DROP TABLE change_bulk;"
+        "UPDATE meta SET value = '2' WHERE key = 'schema_version';"
     )
     raw.close()
     conn = connect(path)
     try:
         assert conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone() == (
-            "3",
+            SCHEMA_VERSION,
         )
         assert accelerator._has_change_log(conn)
+        assert_copy_is_sqlite(conn)
+    finally:
+        conn.close()
+
+
+def test_a_schema_3_database_gets_the_quiet_triggers(db):
+    """Schema 3's triggers logged every row, with no way to keep them quiet:
+    opened, the file gets schema 4's, and a bulk import is then logged once."""
+    path = accelerator.database_path(db)
+    raw = sqlite3.connect(path, isolation_level=None)
+    raw.execute("BEGIN")
+    for name, sql in change_log_triggers().items():
+        raw.execute(f"DROP TRIGGER {name}")
+        raw.execute(sql.replace("WHEN NOT EXISTS (SELECT 1 FROM change_bulk) ", ""))
+    raw.execute("DROP TABLE change_bulk")
+    raw.execute("UPDATE meta SET value = '3' WHERE key = 'schema_version'")
+    raw.execute("COMMIT")
+    raw.close()
+    conn = connect(path)
+    try:
+        assert conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone() == (
+            SCHEMA_VERSION,
+        )
+        assert accelerator._has_change_log(conn)
+        assert_copy_is_sqlite(conn)
+        with transaction(conn):
+            store_people(conn, generated_batch(np.random.default_rng(3), np.arange(1, 40)))
         assert_copy_is_sqlite(conn)
     finally:
         conn.close()
@@ -689,3 +719,163 @@ def test_splicing_the_ids_is_the_set_change(old, changed, data):
     assert [v == i * 10.0 for i, v in zip(new_ids, values)] == [
         i not in changed for i in new_ids.tolist()
     ]
+
+
+# --- bulk writes: the triggers quiet, each person logged once (schema 4) ------
+
+
+def _instructions(conn: sqlite3.Connection, write) -> int:
+    """SQLite VM instructions (in hundreds) a write runs: its work without a clock."""
+    count = [0]
+
+    def tick() -> int:
+        count[0] += 1
+        return 0
+
+    conn.set_progress_handler(tick, 100)
+    try:
+        write()
+    finally:
+        conn.set_progress_handler(None, 100)
+    return count[0]
+
+
+def test_a_bulk_write_skips_the_per_row_log_and_the_copy_follows(db, monkeypatch):
+    """store_people keeps the triggers quiet and logs each person once: about
+    two thirds of the SQLite work of logging every row (the triggers' share
+    of an import), and the copy follows it by the log (no rebuild)."""
+    compiled = compile_query(SAMPLE)
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+    builds = []
+    base = accelerator._base
+    monkeypatch.setattr(accelerator, "_base", lambda *a: builds.append(1) or base(*a))
+
+    def store(first: int) -> None:
+        with transaction(db):
+            batch = generated_batch(np.random.default_rng(first), np.arange(first, first + 200))
+            store_people(db, batch)
+
+    quiet = _instructions(db, lambda: store(300_001))
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert_copy_is_sqlite(db)
+    with monkeypatch.context() as m:  # every row logged by its trigger, as schema 3 did
+        m.setattr(schema.logged_once, "__enter__", lambda self: None)
+        per_row = _instructions(db, lambda: store(400_001))
+    assert_copy_is_sqlite(db)
+    assert quiet < 0.75 * per_row, (quiet, per_row)
+    assert builds == []
+    logged = db.execute("SELECT count(*) FROM change_log WHERE id_num >= 300001").fetchone()
+    assert logged == (400,)
+
+
+def test_a_flat_file_import_then_an_accelerated_count_equals_sql(db, tmp_path):
+    from big_flat_files import write_big_flat_files
+
+    from sass_tui.db.flatfile import import_flat_files
+
+    assert_copy_is_sqlite(db)
+    import_flat_files(db, write_big_flat_files(tmp_path / "flat", people=300))
+    assert_copy_is_sqlite(db)
+    import_flat_files(db, write_big_flat_files(tmp_path / "flat2", people=150))  # replaces
+    assert_copy_is_sqlite(db)
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+
+
+def test_an_ansur_import_then_an_accelerated_count_equals_sql(db, ansur_dir):
+    from sass_tui.db.ansur import import_ansur
+
+    assert_copy_is_sqlite(db)
+    import_ansur(db, [ansur_dir / "ANSUR_II_FEMALE_Public.csv"], label="test")
+    for text in [*WRITE_QUERIES, "measure.stature > 160 cm AND gender = female"]:
+        compiled = compile_query(text)
+        assert accelerator.count(db, compiled) == sqlite_count(db, compiled), text
+
+
+def test_an_import_cancelled_mid_write_leaves_copy_and_file_alike(db, tmp_path):
+    from big_flat_files import write_big_flat_files
+
+    from sass_tui.db.flatfile import import_flat_files
+    from sass_tui.db.progress import Cancelled
+
+    class Later:
+        """Set at its fifth look while storing: mid-statement, inside store_people."""
+
+        looks = 0
+
+        def is_set(self) -> bool:
+            if db.in_transaction:
+                self.looks += 1
+            return self.looks >= 5
+
+    assert_copy_is_sqlite(db)
+    files = write_big_flat_files(tmp_path / "flat", people=400)
+    people = _people(db)
+    with pytest.raises(Cancelled):
+        import_flat_files(db, files, cancel=Later())
+    assert _people(db) == people
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert_copy_is_sqlite(db)
+
+
+def test_a_failed_bulk_write_that_the_caller_commits_is_still_logged(db):
+    """An error mid-write that the caller catches, then commits: what was
+    written is in the file, and its people are in the log."""
+    assert_copy_is_sqlite(db)
+    fresh = np.arange(500_001, 500_051)
+    batch = generated_batch(np.random.default_rng(8), fresh)
+    batch.extra_girth = [(0, GIRTH_NAMES[0], 1.0, 2.0, 3.0, 4.0)]  # its girth row again
+    with transaction(db):
+        with pytest.raises(sqlite3.IntegrityError):
+            store_people(db, batch)
+    assert set(_people(db)) >= set(fresh.tolist())  # person rows committed
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert_copy_is_sqlite(db)
+
+
+def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path):
+    """A process killed inside store_people, its pages already in the file:
+    the next reader rolls the hot journal back, and the copy agrees."""
+    import subprocess
+    import sys
+
+    assert_copy_is_sqlite(db)
+    path = accelerator.database_path(db)
+    people = _people(db)
+    child = (
+        "import os, sys\n"
+        "import numpy as np\n"
+        f"sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
+        "from test_scale_paths import generated_batch\n"
+        "from sass_tui.db.schema import connect, store_people, transaction\n"
+        "conn = connect(sys.argv[1])\n"
+        "conn.execute('PRAGMA cache_size = 5')\n"  # pages spill to the file before COMMIT
+        "batch = generated_batch(np.random.default_rng(4), np.arange(600_001, 600_301))\n"
+        "ticks = [0]\n"
+        "def crash():\n"
+        "    ticks[0] += 1\n"
+        "    if ticks[0] > 400:\n"
+        "        os._exit(7)\n"
+        "    return 0\n"
+        "with transaction(conn):\n"
+        "    conn.set_progress_handler(crash, 100)\n"
+        "    store_people(conn, batch)\n"
+        "sys.exit(0)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", child, str(path)], capture_output=True, text=True)
+    assert done.returncode == 7, done.stderr
+    assert Path(f"{path}-journal").exists()  # a hot journal: the crash was mid-write
+    assert_copy_is_sqlite(db)
+    assert _people(db) == people
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+
+
+def test_a_committed_quiet_flag_stops_the_following(db):
+    """Another program that commits a row in change_bulk keeps the triggers
+    quiet for every writer: the copy no longer trusts the log."""
+    assert_copy_is_sqlite(db)
+    other = sqlite3.connect(accelerator.database_path(db), isolation_level=None)
+    other.execute("INSERT INTO change_bulk VALUES (1)")
+    other.execute("UPDATE person SET gender = 'female' WHERE gender = 'male' AND id_num % 3 = 0")
+    other.close()
+    assert not accelerator._has_change_log(db)
+    assert_copy_is_sqlite(db)
