@@ -303,44 +303,90 @@ def list_times(path: Path) -> tuple[float, float, int]:
     return sql_time, copy_time, int(copy_n)  # type: ignore[call-overload]
 
 
+LOG_VARIANTS = (
+    "schema 3: every row logged by its trigger",
+    "now: triggers quiet, each person logged once",
+    "no change log (triggers dropped)",
+)
+
+
+def _log_variant(conn: sqlite3.Connection, label: str) -> None:
+    """Make a new file's triggers those of the variant (schema 4's are there)."""
+    from sass_tui.db.schema import QUIET_WHEN, change_log_triggers
+
+    for name, sql in change_log_triggers().items():
+        conn.execute(f"DROP TRIGGER {name}")
+        if label.startswith("schema 3"):  # as schema 3 wrote it: never quiet
+            conn.execute(sql.replace(f"{QUIET_WHEN}AND ", ""))
+        elif label.startswith("now"):
+            conn.execute(sql)
+
+
 def log_cost(people: int = 50_000, runs: int = 3) -> None:
-    """What the change log's triggers cost: storing `people` generated people
-    (db_million's generator, every query row logged) and opening a
-    connection, with the triggers against the same file without them,
-    interleaved."""
+    """What the change log costs an import: storing `people` generated people
+    (db_million's generator, ~45 logged rows each) and importing both ANSUR II
+    files (6,068 people, every measurement), with schema 3's triggers (every
+    row logged), with schema 4's bulk path (triggers quiet, each person
+    logged once) and with no triggers; plus opening a connection.  The
+    variants interleaved in each run, median of `runs`."""
     import tempfile
 
-    from sass_tui.db.schema import change_log_triggers
+    from db_ansur import FILES
 
-    builds: dict[str, list[float]] = {"with the change log": [], "without": []}
-    opens: dict[str, list[float]] = {"with the change log": [], "without": []}
+    from sass_tui.db import schema
+    from sass_tui.db.ansur import import_ansur
+
+    ansur = all(f.is_file() for f in FILES)
+    builds: dict[str, list[float]] = {label: [] for label in LOG_VARIANTS}
+    imports: dict[str, list[float]] = {label: [] for label in LOG_VARIANTS}
+    opens: dict[str, list[float]] = {label: [] for label in LOG_VARIANTS}
+    quiet = schema.logged_once.__enter__
     with tempfile.TemporaryDirectory() as tmp:
         for run in range(runs):
-            for label in builds:
-                path = Path(tmp) / f"{run}-{label[:4]}.db"
-                conn = connect(path, create=True)
-                _fast_writes(conn)
-                if label == "without":
-                    for name in change_log_triggers():
-                        conn.execute(f"DROP TRIGGER {name}")
-                t0 = time.perf_counter()
-                build(conn, people, np.random.default_rng(run))
-                builds[label].append(time.perf_counter() - t0)
-                conn.close()
-                t0 = time.perf_counter()
-                for _ in range(20):
-                    c = sqlite3.connect(path)
-                    c.execute("SELECT count(*) FROM meta").fetchone()
-                    c.close()
-                opens[label].append((time.perf_counter() - t0) / 20)
-                path.unlink()
-    print(f"| {people:,} people stored, median of {runs} | opening a connection, median |")
-    print("|---|---|---|")
-    for label in builds:
-        print(
-            f"| {label} | {statistics.median(builds[label]):.1f} s | "
-            f"{statistics.median(opens[label]) * 1000:.2f} ms |"
-        )
+            for label in LOG_VARIANTS:
+                # schema 3's path had no bulk flag: its store_people let the triggers log
+                schema.logged_once.__enter__ = (  # type: ignore[method-assign]
+                    quiet if label.startswith("now") else lambda self: None
+                )
+                for kind, times in (("generated", builds), ("ansur", imports)):
+                    if kind == "ansur" and not ansur:
+                        continue
+                    path = Path(tmp) / f"{run}-{label[:4]}-{kind}.db"
+                    conn = connect(path, create=True)
+                    if kind == "generated":
+                        _fast_writes(conn)
+                    _log_variant(conn, label)
+                    t0 = time.perf_counter()
+                    if kind == "generated":
+                        build(conn, people, np.random.default_rng(run))
+                    else:
+                        import_ansur(conn, FILES)
+                    times[label].append(time.perf_counter() - t0)
+                    conn.close()
+                    if kind == "generated":
+                        t0 = time.perf_counter()
+                        for _ in range(20):
+                            c = sqlite3.connect(path)
+                            c.execute("SELECT count(*) FROM meta").fetchone()
+                            c.close()
+                        opens[label].append((time.perf_counter() - t0) / 20)
+                    path.unlink()
+    schema.logged_once.__enter__ = quiet  # type: ignore[method-assign]
+    base = LOG_VARIANTS[0]
+    print(
+        f"| median of {runs}, interleaved | {people:,} generated people stored | ratio to "
+        "schema 3 | ANSUR II imported (both files) | ratio | opening a connection |"
+    )
+    print("|---|---|---|---|---|---|")
+    for label in LOG_VARIANTS:
+        gen = statistics.median(builds[label])
+        row = f"| {label} | {gen:.2f} s | {gen / statistics.median(builds[base]):.2f} |"
+        if ansur:
+            imp = statistics.median(imports[label])
+            row += f" {imp:.2f} s | {imp / statistics.median(imports[base]):.2f} |"
+        else:
+            row += " - | - |"
+        print(row + f" {statistics.median(opens[label]) * 1000:.2f} ms |")
 
 
 def main() -> None:
