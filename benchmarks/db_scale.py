@@ -39,7 +39,7 @@ import numpy as np
 from db_million import SAMPLE, build
 
 from sass_tui.db import accelerator
-from sass_tui.db.individual import fetch_individual
+from sass_tui.db.individual import _fetch_individual, fetch_individual
 from sass_tui.db.lists import QueryLists
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import PERSON_TABLES, connect, delete_people, new_generation
@@ -221,17 +221,29 @@ def fetch_before(conn: sqlite3.Connection, id_num: int) -> None:
         conn.execute(sql, (id_num,)).fetchall()
 
 
+def _queue_wait() -> float:
+    """Seconds this thread has waited for a core, runnable (Linux schedstat; 0 elsewhere)."""
+    try:
+        with open("/proc/thread-self/schedstat") as f:
+            return int(f.read().split()[1]) / 1e9
+    except (OSError, IndexError, ValueError):
+        return 0.0
+
+
 def fetch_times(conn: sqlite3.Connection, fetch, stored: np.ndarray, seed: int):
-    """Wall time and this thread's CPU time of each fetch, and the blocks read from disk."""
-    walls, cpus, faults = [], [], 0
+    """Wall time, this thread's CPU time and its time waiting for a core of
+    each fetch, and the blocks read from disk (the rest of the wall time is
+    blocked on the disk)."""
+    walls, cpus, queued, faults = [], [], [], 0
     for pid in np.random.default_rng(seed).choice(stored, 200, replace=False).tolist():
         before = resource.getrusage(resource.RUSAGE_SELF).ru_inblock
-        c0, t0 = time.thread_time(), time.perf_counter()
+        q0, c0, t0 = _queue_wait(), time.thread_time(), time.perf_counter()
         fetch(conn, pid)
         walls.append(time.perf_counter() - t0)
         cpus.append(time.thread_time() - c0)
+        queued.append(_queue_wait() - q0)
         faults += resource.getrusage(resource.RUSAGE_SELF).ru_inblock - before
-    return walls, cpus, faults
+    return walls, cpus, queued, faults
 
 
 def small_write(conn: sqlite3.Connection, people: int, seed: int) -> None:
@@ -518,15 +530,19 @@ def fetch_table(path: Path) -> None:
         "cache first, warm: the whole file read into it first.  CPU is this thread's "
         "CPU time; the rest of the wall time is waiting for a core or the disk.\n"
     )
-    print("| pages | how | median | max | CPU median | CPU max | read from disk |")
-    print("|---|---|---|---|---|---|---|")
+    print(
+        "| pages | how | median | max | CPU median | CPU max | read from disk | "
+        "slowest: CPU / waiting for a core / blocked on disk | over 5 ms |"
+    )
+    print("|---|---|---|---|---|---|---|---|---|")
     cases = [
         (state, label, fetch, mmap)
         for state in ("cold", "warm")
+        for _ in range(2)  # each case twice, interleaved: the wall maxima swing with load
         for label, fetch, mmap in (
-            ("before: 22 queries, file mapped", fetch_before, MAPPED),
-            ("8 queries, file mapped", fetch_individual, MAPPED),
-            ("now: 8 queries, read()", fetch_individual, None),
+            ("22 queries, file mapped (two rounds ago)", fetch_before, MAPPED),
+            ("before: 8 queries, each its own read transaction", _fetch_individual, None),
+            ("now: 8 queries in one read transaction", fetch_individual, None),
         )
     ]
     # The people stored now (each run of the count table imports and deletes a
@@ -540,13 +556,35 @@ def fetch_table(path: Path) -> None:
         if mmap is not None:
             conn.execute(f"PRAGMA mmap_size = {mmap}")
         gc.collect()
-        walls, cpus, faults = fetch_times(conn, fetch, stored, seed)
+        walls, cpus, queued, faults = fetch_times(conn, fetch, stored, seed)
         conn.close()
+        k = int(np.argmax(walls))
         print(
             f"| {state} | {label} | {statistics.median(walls) * 1000:.2f} ms | "
             f"{max(walls) * 1000:.2f} ms | {statistics.median(cpus) * 1000:.2f} ms | "
-            f"{max(cpus) * 1000:.2f} ms | {faults * 512 // 1024:,} KB |"
+            f"{max(cpus) * 1000:.2f} ms | {faults * 512 // 1024:,} KB | "
+            f"{cpus[k] * 1000:.2f} / {queued[k] * 1000:.2f} / "
+            f"{max(walls[k] - cpus[k] - queued[k], 0) * 1000:.2f} ms | "
+            f"{sum(w > 0.005 for w in walls)} |"
         )
+    # The CPU of a warm fetch, before and now, alternating on one connection.
+    conn = connect(path)
+    picked = np.random.default_rng(99).choice(stored, 2000, replace=False).tolist()
+    for pid in picked:
+        fetch_individual(conn, pid)
+    per_fetch: dict[str, list[float]] = {"before": [], "now": []}
+    for _ in range(5):
+        for label, fetch in (("before", _fetch_individual), ("now", fetch_individual)):
+            c0 = time.thread_time()
+            for pid in picked:
+                fetch(conn, pid)
+            per_fetch[label].append((time.thread_time() - c0) / len(picked))
+    conn.close()
+    before, now = (statistics.median(per_fetch[k]) * 1e6 for k in ("before", "now"))
+    print(
+        f"\nwarm, 2,000 people on one connection, CPU per fetch, median of 5 alternating: "
+        f"before {before:.0f} us, now {now:.0f} us ({now / before:.2f}x)"
+    )
     print(
         "\nthe sample query counted by SQLite on a cold file (dropped from the page "
         "cache first), file mapped as before against read() as now, alternating:\n"

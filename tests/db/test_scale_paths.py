@@ -879,3 +879,43 @@ def test_a_committed_quiet_flag_stops_the_following(db):
     other.close()
     assert not accelerator._has_change_log(db)
     assert_copy_is_sqlite(db)
+
+
+def test_an_individual_is_fetched_as_one_snapshot(db):
+    """A write that another process tries to commit between two of
+    fetch_individual's reads waits until the fetch is done: the person and
+    their girth rows come from the same state of the file."""
+    path = accelerator.database_path(db)
+    pid = int(db.execute("SELECT id_num FROM girth GROUP BY id_num LIMIT 1").fetchone()[0])
+    other = sqlite3.connect(path, isolation_level=None, timeout=0)
+    refused = []
+
+    def write_between(sql: str) -> None:
+        if "FROM girth" in sql and not refused:
+            try:
+                other.execute("BEGIN IMMEDIATE")
+                other.execute("DELETE FROM girth WHERE id_num = ?", (pid,))
+                other.execute("COMMIT")
+                refused.append(False)
+            except sqlite3.OperationalError:
+                other.execute("ROLLBACK")
+                refused.append(True)
+
+    db.set_trace_callback(write_between)
+    try:
+        person = fetch_individual(db, pid)
+    finally:
+        db.set_trace_callback(None)
+        other.close()
+    assert refused == [True]
+    assert not np.isnan(person.groups["girth"]).all()  # the rows as the person was read
+    assert not db.in_transaction
+
+
+def test_an_individual_fetched_inside_a_transaction_leaves_it_open(db):
+    pid = int(db.execute("SELECT min(id_num) FROM person").fetchone()[0])
+    with transaction(db):
+        db.execute("UPDATE person SET name = 'renamed' WHERE id_num = ?", (pid,))
+        assert fetch_individual(db, pid).name == "renamed"  # its own write, seen
+        assert db.in_transaction
+    assert fetch_individual(db, pid).name == "renamed"
