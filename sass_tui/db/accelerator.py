@@ -261,6 +261,26 @@ def _has_change_log(conn: sqlite3.Connection) -> bool:
     )
 
 
+def _moved_by_bulk_writes(conn: sqlite3.Connection, old: int, new: int) -> bool:
+    """Whether the schema cookie went from `old` to `new` only by sass's bulk
+    writes, each of which dropped the per-row triggers, logged every person
+    it wrote and created the triggers again in one transaction, recording
+    its move in change_schema (schema.logged_once); and the log is whole
+    now.  Any other schema change (a trigger dropped by another program, db
+    init) breaks the chain."""
+    try:
+        while old != new:
+            row = conn.execute(
+                "SELECT to_cookie FROM change_schema WHERE from_cookie = ?", (old,)
+            ).fetchone()
+            if row is None or not old < int(row[0]) <= new:
+                return False
+            old = int(row[0])
+    except sqlite3.OperationalError:  # no change_schema: not a file of this schema
+        return False
+    return _has_change_log(conn)
+
+
 def _log_quiet(conn: sqlite3.Connection) -> bool:
     """Whether a committed row in change_bulk keeps the triggers quiet (sass's
     bulk writer never commits one: another program did, and writes may go
@@ -387,8 +407,10 @@ def _sync(conn: sqlite3.Connection, store: ColumnStore, key: tuple[int, ...]) ->
 
     if store.key == key:
         return True
-    if not store.logged or store.cookie != key[2]:
-        return False  # no log, or the schema changed (db init, a dropped trigger)
+    if not store.logged:
+        return False
+    if store.cookie != key[2] and not _moved_by_bulk_writes(conn, store.cookie, key[2]):
+        return False  # the schema changed (db init, a dropped trigger)
     if _log_quiet(conn):
         return False  # the triggers are kept quiet: the log may miss writes
     if _generation(conn, store.gen)[1] != store.token:

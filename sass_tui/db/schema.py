@@ -242,7 +242,9 @@ CREATE TABLE strength_q (
 # generation (the WHEN clause), so an import costs one key lookup per query
 # row.  The triggers fire for every writer of the file, sass or not.
 #
-# Schema 4: the logging is quiet while change_bulk holds a row.  sass's own
+# Schema 4: the logging is quiet while change_bulk holds a row (or, for a
+# large write, the per-row triggers are dropped and created again: see
+# logged_once and change_schema).  sass's own
 # bulk writer (store_people, delete_people: `logged_once`) puts one there
 # inside its write transaction, writes, logs the ids it wrote in one
 # statement and empties change_bulk before COMMIT, so no other connection
@@ -299,6 +301,7 @@ CREATE TABLE IF NOT EXISTS change_gens (gen INTEGER PRIMARY KEY, token INTEGER N
 CREATE TABLE IF NOT EXISTS change_log (id_num INTEGER PRIMARY KEY, gen INTEGER NOT NULL);
 CREATE INDEX IF NOT EXISTS change_log_gen ON change_log (gen);
 CREATE TABLE IF NOT EXISTS change_bulk (one INTEGER PRIMARY KEY);
+CREATE TABLE IF NOT EXISTS change_schema (from_cookie INTEGER PRIMARY KEY, to_cookie INTEGER NOT NULL);
 CREATE VIEW IF NOT EXISTS change_note AS SELECT 0 AS id_num;
 {triggers}"""
 
@@ -309,24 +312,51 @@ def new_generation(conn: sqlite3.Connection) -> None:
     conn.execute(f"INSERT INTO change_gens VALUES ({_CURRENT_GEN} + 1, random())")
 
 
+# A bulk write of at least this many people drops the per-row triggers for
+# its transaction and creates them again before COMMIT (14 ms for the 310;
+# below this the triggers firing cost less than that): its rows fire nothing.
+DROP_TRIGGERS_FROM = 2_000
+
+
+def schema_cookie(conn: sqlite3.Connection) -> int:
+    """The file's schema cookie (the header's, as the caller's transaction sees it)."""
+    cookie: int = conn.execute("PRAGMA schema_version").fetchone()[0]
+    return cookie
+
+
 class logged_once:
-    """Inside the caller's write transaction: the change log's triggers quiet
+    """Inside the caller's write transaction: the change log's logging quiet
     while people `ids` are written, and those ids logged in one statement on
-    the way out instead (~45 trigger programs per person before).  The ids
-    are logged whatever happened, so a caller that catches an error and
-    commits still logs every person that may have changed; a rollback takes
-    the quiet flag away with the rest.  Outside a transaction (where the
-    flag would be committed alone) the triggers log as usual."""
+    the way out instead (~45 trigger programs per person before).
+
+    Quiet means a row in change_bulk (the one logging trigger stops at its
+    WHEN) or, from DROP_TRIGGERS_FROM people, the per-row triggers dropped
+    and created again on the way out, the schema cookie's move from before
+    to after recorded in change_schema: the column copy accepts a move so
+    recorded, and rebuilds after any other.  The ids are logged whatever
+    happened, so a caller that catches an error and commits still logs
+    every person that may have changed; a rollback takes the flag, the
+    dropped triggers and the record away with the rest.  Outside a
+    transaction (where each step would be committed alone) the triggers log
+    as usual."""
 
     def __init__(self, conn: sqlite3.Connection, ids: Sequence[int]) -> None:
         self.conn = conn
         self.ids = ids
         self.quiet = False
+        self.cookie: int | None = None  # before the triggers were dropped
 
     def __enter__(self) -> None:
-        if self.conn.in_transaction:
+        if not self.conn.in_transaction:
+            return
+        if len(self.ids) >= DROP_TRIGGERS_FROM:
+            self.cookie = schema_cookie(self.conn)
+            for name in change_log_triggers():
+                if name != "change_note_insert":
+                    self.conn.execute(f"DROP TRIGGER IF EXISTS {name}")
+        else:
             self.conn.execute("INSERT OR IGNORE INTO change_bulk VALUES (1)")
-            self.quiet = True
+        self.quiet = True
 
     def __exit__(self, exc_type: object, exc: BaseException | None, tb: object) -> None:
         if not self.quiet or not self.conn.in_transaction:
@@ -337,7 +367,16 @@ class logged_once:
             f"INSERT OR REPLACE INTO change_log SELECT value, {_CURRENT_GEN} FROM json_each(?)",
             (json.dumps([int(i) for i in self.ids]),),
         )
-        self.conn.execute("DELETE FROM change_bulk")
+        if self.cookie is None:
+            self.conn.execute("DELETE FROM change_bulk")
+            return
+        for name, sql in change_log_triggers().items():
+            if name != "change_note_insert":
+                self.conn.execute(sql)
+        self.conn.execute(
+            "INSERT OR REPLACE INTO change_schema VALUES (?, ?)",
+            (self.cookie, schema_cookie(self.conn)),
+        )
 
 
 RELATIONS = (
@@ -372,7 +411,9 @@ def default_db_path() -> Path:
 PERSON_ATTRIBUTES = ("component", "branch", "subjectnumericrace", "dodrace", "ethnicity")
 # Tables every sass database of this version holds.
 EXPECTED_TABLES = frozenset(
-    ("meta", "change_gens", "change_log", "change_bulk") + RELATIONS + PERSON_TABLES
+    ("meta", "change_gens", "change_log", "change_bulk", "change_schema")
+    + RELATIONS
+    + PERSON_TABLES
 )
 BUSY_TIMEOUT_S = 10.0
 
@@ -557,7 +598,7 @@ def migrate_3_to_4(conn: sqlite3.Connection) -> None:
             return
         conn.execute("DROP TRIGGER IF EXISTS change_note_insert")
         for statement in _schema_statements():
-            if "IF NOT EXISTS" in statement:  # change_bulk and the triggers
+            if "IF NOT EXISTS" in statement:  # change_bulk, change_schema, the trigger
                 conn.execute(statement)
         conn.execute("UPDATE meta SET value = '4' WHERE key = 'schema_version'")
 

@@ -478,6 +478,15 @@ def _write(conn: sqlite3.Connection, path: Path, step: tuple, rng: np.random.Gen
     elif kind == "replace":  # the same ids, other data (a flat-file import replaces)
         with transaction(conn):
             store_people(conn, generated_batch(rng, np.array(sorted(some), dtype=np.int64)))
+    elif kind == "bulk replace":  # the same, by the large-write path: triggers dropped
+        threshold = schema.DROP_TRIGGERS_FROM
+        schema.DROP_TRIGGERS_FROM = 1
+        try:
+            with transaction(conn):
+                store_people(conn, generated_batch(rng, np.array(sorted(some), dtype=np.int64)))
+                delete_people(conn, some[: len(some) // 2])
+        finally:
+            schema.DROP_TRIGGERS_FROM = threshold
     elif kind == "init":  # `sass db init --force`, then a few people
         with transaction(conn, "EXCLUSIVE"):
             recreate_schema(conn)
@@ -509,7 +518,8 @@ def _write(conn: sqlite3.Connection, path: Path, step: tuple, rng: np.random.Gen
 
 WRITES = st.tuples(
     st.sampled_from(
-        ["delete", "add", "replace", "sql update", "sql insert", "sql delete", "sql renumber"]
+        ["delete", "add", "replace", "bulk replace", "sql update", "sql insert", "sql delete"]
+        + ["sql renumber"]
         + ["init", "new process"]
     ),
     st.integers(1, 12),
@@ -608,7 +618,7 @@ def test_a_schema_2_database_gets_the_change_log(db):
         raw.execute(f"DROP TRIGGER {name}")
     raw.executescript(
         "DROP TRIGGER change_note_insert; DROP VIEW change_note; DROP TABLE change_log;"
-        "DROP TABLE change_gens; DROP TABLE change_bulk;"
+        "DROP TABLE change_gens; DROP TABLE change_bulk; DROP TABLE change_schema;"
         "UPDATE meta SET value = '2' WHERE key = 'schema_version';"
     )
     raw.close()
@@ -724,6 +734,19 @@ def test_splicing_the_ids_is_the_set_change(old, changed, data):
 # --- bulk writes: the triggers quiet, each person logged once (schema 4) ------
 
 
+@pytest.fixture(params=["flag", "dropped triggers"])
+def bulk(request, monkeypatch):
+    """Each bulk path: the quiet flag (small writes), or the per-row triggers
+    dropped and created again (from DROP_TRIGGERS_FROM people, here 1); the
+    copy must follow either by the log, never rebuild (`builds`)."""
+    threshold = 10**9 if request.param == "flag" else 1
+    monkeypatch.setattr(schema, "DROP_TRIGGERS_FROM", threshold)
+    builds: list[int] = []
+    base = accelerator._base
+    monkeypatch.setattr(accelerator, "_base", lambda *a: builds.append(1) or base(*a))
+    return threshold, builds
+
+
 def _instructions(conn: sqlite3.Connection, write) -> int:
     """SQLite VM instructions (in hundreds) a write runs: its work without a clock."""
     count = [0]
@@ -768,30 +791,35 @@ def test_a_bulk_write_skips_the_per_row_log_and_the_copy_follows(db, monkeypatch
     assert logged == (400,)
 
 
-def test_a_flat_file_import_then_an_accelerated_count_equals_sql(db, tmp_path):
+def test_a_flat_file_import_then_an_accelerated_count_equals_sql(db, tmp_path, bulk):
     from big_flat_files import write_big_flat_files
 
     from sass_tui.db.flatfile import import_flat_files
 
     assert_copy_is_sqlite(db)
+    bulk[1].clear()
     import_flat_files(db, write_big_flat_files(tmp_path / "flat", people=300))
     assert_copy_is_sqlite(db)
     import_flat_files(db, write_big_flat_files(tmp_path / "flat2", people=150))  # replaces
     assert_copy_is_sqlite(db)
     assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert accelerator._has_change_log(db)
+    assert bulk[1] == []  # followed by the log, not rebuilt
 
 
-def test_an_ansur_import_then_an_accelerated_count_equals_sql(db, ansur_dir):
+def test_an_ansur_import_then_an_accelerated_count_equals_sql(db, ansur_dir, bulk):
     from sass_tui.db.ansur import import_ansur
 
     assert_copy_is_sqlite(db)
+    bulk[1].clear()
     import_ansur(db, [ansur_dir / "ANSUR_II_FEMALE_Public.csv"], label="test")
     for text in [*WRITE_QUERIES, "measure.stature > 160 cm AND gender = female"]:
         compiled = compile_query(text)
         assert accelerator.count(db, compiled) == sqlite_count(db, compiled), text
+    assert bulk[1] == []
 
 
-def test_an_import_cancelled_mid_write_leaves_copy_and_file_alike(db, tmp_path):
+def test_an_import_cancelled_mid_write_leaves_copy_and_file_alike(db, tmp_path, bulk):
     from big_flat_files import write_big_flat_files
 
     from sass_tui.db.flatfile import import_flat_files
@@ -814,10 +842,11 @@ def test_an_import_cancelled_mid_write_leaves_copy_and_file_alike(db, tmp_path):
         import_flat_files(db, files, cancel=Later())
     assert _people(db) == people
     assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert accelerator._has_change_log(db)
     assert_copy_is_sqlite(db)
 
 
-def test_a_failed_bulk_write_that_the_caller_commits_is_still_logged(db):
+def test_a_failed_bulk_write_that_the_caller_commits_is_still_logged(db, bulk):
     """An error mid-write that the caller catches, then commits: what was
     written is in the file, and its people are in the log."""
     assert_copy_is_sqlite(db)
@@ -829,10 +858,11 @@ def test_a_failed_bulk_write_that_the_caller_commits_is_still_logged(db):
             store_people(db, batch)
     assert set(_people(db)) >= set(fresh.tolist())  # person rows committed
     assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert accelerator._has_change_log(db)  # the dropped triggers are back
     assert_copy_is_sqlite(db)
 
 
-def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path):
+def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path, bulk):
     """A process killed inside store_people, its pages already in the file:
     the next reader rolls the hot journal back, and the copy agrees."""
     import subprocess
@@ -846,7 +876,9 @@ def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path):
         "import numpy as np\n"
         f"sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
         "from test_scale_paths import generated_batch\n"
+        "from sass_tui.db import schema\n"
         "from sass_tui.db.schema import connect, store_people, transaction\n"
+        f"schema.DROP_TRIGGERS_FROM = {bulk[0]}\n"
         "conn = connect(sys.argv[1])\n"
         "conn.execute('PRAGMA cache_size = 5')\n"  # pages spill to the file before COMMIT
         "batch = generated_batch(np.random.default_rng(4), np.arange(600_001, 600_301))\n"
@@ -867,6 +899,56 @@ def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path):
     assert_copy_is_sqlite(db)
     assert _people(db) == people
     assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert accelerator._has_change_log(db)
+
+
+def test_a_bulk_write_of_many_people_fires_no_trigger_and_is_followed(db, monkeypatch):
+    """From DROP_TRIGGERS_FROM people the per-row triggers are dropped for
+    the write: under half the SQLite work of the quiet flag's path, and the
+    copy accepts the schema cookie's recorded move (no rebuild)."""
+    compiled = compile_query(SAMPLE)
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+    builds = []
+    base = accelerator._base
+    monkeypatch.setattr(accelerator, "_base", lambda *a: builds.append(1) or base(*a))
+    batch = generated_batch(np.random.default_rng(12), np.arange(700_001, 702_001))
+
+    def store(first: int) -> None:
+        batch.id_num = np.arange(first, first + len(batch))
+        with transaction(db):
+            store_people(db, batch)
+
+    monkeypatch.setattr(schema, "DROP_TRIGGERS_FROM", 10**9)
+    flagged = _instructions(db, lambda: store(700_001))
+    monkeypatch.setattr(schema, "DROP_TRIGGERS_FROM", 2000)
+    cookie = schema.schema_cookie(db)
+    dropped = _instructions(db, lambda: store(710_001))
+    assert schema.schema_cookie(db) > cookie
+    assert db.execute("SELECT to_cookie FROM change_schema WHERE from_cookie = ?", (cookie,))
+    assert accelerator._has_change_log(db)
+    assert_copy_is_sqlite(db)
+    assert builds == []
+    assert dropped < 0.8 * flagged, (dropped, flagged)
+
+
+def test_a_trigger_dropped_and_created_again_by_another_program_means_a_rebuild(db, monkeypatch):
+    """A schema change that no bulk write recorded (another program dropped a
+    trigger, wrote, and created it again): the log may miss that write."""
+    assert_copy_is_sqlite(db)
+    builds = []
+    base = accelerator._base
+    monkeypatch.setattr(accelerator, "_base", lambda *a: builds.append(1) or base(*a))
+    other = sqlite3.connect(accelerator.database_path(db), isolation_level=None)
+    sql = other.execute(
+        "SELECT sql FROM sqlite_master WHERE name = 'log_person_update'"
+    ).fetchone()[0]
+    other.execute("DROP TRIGGER log_person_update")
+    other.execute("UPDATE person SET gender = 'female' WHERE gender = 'male' AND id_num % 4 = 1")
+    other.execute(sql)
+    other.close()
+    assert accelerator._has_change_log(db)
+    assert_copy_is_sqlite(db)
+    assert builds == [1]
 
 
 def test_a_committed_quiet_flag_stops_the_following(db):
