@@ -386,6 +386,21 @@ def log_cost(people: int = 50_000, runs: int = 3) -> None:
                             c.close()
                         opens[label].append((time.perf_counter() - t0) / 20)
                     path.unlink()
+    # The default build (`sass db init`): the bulk path against every row
+    # logged by the triggers (its file is made with schema 4's triggers, whose
+    # logging stops at the WHEN only when a bulk write asks it to).
+    from sass_tui.db.default import create_default_database
+
+    default: dict[str, list[float]] = {"every row logged": [], "now": []}
+    with tempfile.TemporaryDirectory() as tmp:
+        for run in range(2 * runs - 1):
+            for label in default:
+                schema.logged_once.__enter__ = (  # type: ignore[method-assign]
+                    quiet if label == "now" else lambda self: None
+                )
+                t0 = time.perf_counter()
+                create_default_database(Path(tmp) / f"{run}-{label[:3]}.db")
+                default[label].append(time.perf_counter() - t0)
     schema.logged_once.__enter__ = quiet  # type: ignore[method-assign]
     schema.DROP_TRIGGERS_FROM = threshold
     base = LOG_VARIANTS[0]
@@ -403,6 +418,11 @@ def log_cost(people: int = 50_000, runs: int = 3) -> None:
         else:
             row += " - | - |"
         print(row + f" {statistics.median(opens[label]) * 1000:.2f} ms |")
+    every, now = (statistics.median(default[k]) for k in ("every row logged", "now"))
+    print(
+        f"\nthe default database build (sass db init), median of {2 * runs - 1} interleaved: "
+        f"every row logged {every:.3f} s, now {now:.3f} s ({now / every:.2f}x)"
+    )
 
 
 def main() -> None:
