@@ -39,7 +39,7 @@ import numpy as np
 from db_million import SAMPLE, build
 
 from sass_tui.db import accelerator
-from sass_tui.db.individual import fetch_individual
+from sass_tui.db.individual import _fetch_individual, fetch_individual
 from sass_tui.db.lists import QueryLists
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import PERSON_TABLES, connect, delete_people, new_generation
@@ -221,17 +221,29 @@ def fetch_before(conn: sqlite3.Connection, id_num: int) -> None:
         conn.execute(sql, (id_num,)).fetchall()
 
 
+def _queue_wait() -> float:
+    """Seconds this thread has waited for a core, runnable (Linux schedstat; 0 elsewhere)."""
+    try:
+        with open("/proc/thread-self/schedstat") as f:
+            return int(f.read().split()[1]) / 1e9
+    except (OSError, IndexError, ValueError):
+        return 0.0
+
+
 def fetch_times(conn: sqlite3.Connection, fetch, stored: np.ndarray, seed: int):
-    """Wall time and this thread's CPU time of each fetch, and the blocks read from disk."""
-    walls, cpus, faults = [], [], 0
+    """Wall time, this thread's CPU time and its time waiting for a core of
+    each fetch, and the blocks read from disk (the rest of the wall time is
+    blocked on the disk)."""
+    walls, cpus, queued, faults = [], [], [], 0
     for pid in np.random.default_rng(seed).choice(stored, 200, replace=False).tolist():
         before = resource.getrusage(resource.RUSAGE_SELF).ru_inblock
-        c0, t0 = time.thread_time(), time.perf_counter()
+        q0, c0, t0 = _queue_wait(), time.thread_time(), time.perf_counter()
         fetch(conn, pid)
         walls.append(time.perf_counter() - t0)
         cpus.append(time.thread_time() - c0)
+        queued.append(_queue_wait() - q0)
         faults += resource.getrusage(resource.RUSAGE_SELF).ru_inblock - before
-    return walls, cpus, faults
+    return walls, cpus, queued, faults
 
 
 def small_write(conn: sqlite3.Connection, people: int, seed: int) -> None:
@@ -303,44 +315,114 @@ def list_times(path: Path) -> tuple[float, float, int]:
     return sql_time, copy_time, int(copy_n)  # type: ignore[call-overload]
 
 
+LOG_VARIANTS = (
+    "schema 3: every row logged by its trigger",
+    "the quiet flag only (triggers fire, stop at the WHEN)",
+    "now: the flag, triggers dropped from 2,000 people",
+    "no change log (triggers dropped)",
+)
+
+
+def _log_variant(conn: sqlite3.Connection, label: str) -> None:
+    """Make a new file's triggers those of the variant (schema 4's are there)."""
+    from sass_tui.db.schema import QUIET_WHEN, change_log_triggers
+
+    for name, sql in change_log_triggers().items():
+        conn.execute(f"DROP TRIGGER {name}")
+        if label.startswith("schema 3"):  # as schema 3 wrote it: never quiet
+            conn.execute(sql.replace(f"{QUIET_WHEN}AND ", ""))
+        elif label.startswith(("now", "the quiet")):
+            conn.execute(sql)
+
+
 def log_cost(people: int = 50_000, runs: int = 3) -> None:
-    """What the change log's triggers cost: storing `people` generated people
-    (db_million's generator, every query row logged) and opening a
-    connection, with the triggers against the same file without them,
-    interleaved."""
+    """What the change log costs an import: storing `people` generated people
+    (db_million's generator, ~45 logged rows each) and importing both ANSUR II
+    files (6,068 people, every measurement), with schema 3's triggers (every
+    row logged), with schema 4's bulk path (triggers quiet, each person
+    logged once) and with no triggers; plus opening a connection.  The
+    variants interleaved in each run, median of `runs`."""
     import tempfile
 
-    from sass_tui.db.schema import change_log_triggers
+    from db_ansur import FILES
 
-    builds: dict[str, list[float]] = {"with the change log": [], "without": []}
-    opens: dict[str, list[float]] = {"with the change log": [], "without": []}
+    from sass_tui.db import schema
+    from sass_tui.db.ansur import import_ansur
+
+    ansur = all(f.is_file() for f in FILES)
+    builds: dict[str, list[float]] = {label: [] for label in LOG_VARIANTS}
+    imports: dict[str, list[float]] = {label: [] for label in LOG_VARIANTS}
+    opens: dict[str, list[float]] = {label: [] for label in LOG_VARIANTS}
+    quiet = schema.logged_once.__enter__
+    threshold = schema.DROP_TRIGGERS_FROM
     with tempfile.TemporaryDirectory() as tmp:
         for run in range(runs):
-            for label in builds:
-                path = Path(tmp) / f"{run}-{label[:4]}.db"
-                conn = connect(path, create=True)
-                _fast_writes(conn)
-                if label == "without":
-                    for name in change_log_triggers():
-                        conn.execute(f"DROP TRIGGER {name}")
+            for label in LOG_VARIANTS:
+                # schema 3's path had no bulk flag: its store_people let the triggers log
+                schema.logged_once.__enter__ = (  # type: ignore[method-assign]
+                    quiet if label.startswith(("now", "the quiet")) else lambda self: None
+                )
+                schema.DROP_TRIGGERS_FROM = 10**9 if label.startswith("the quiet") else threshold
+                for kind, times in (("generated", builds), ("ansur", imports)):
+                    if kind == "ansur" and not ansur:
+                        continue
+                    path = Path(tmp) / f"{run}-{label[:4]}-{kind}.db"
+                    conn = connect(path, create=True)
+                    if kind == "generated":
+                        _fast_writes(conn)
+                    _log_variant(conn, label)
+                    t0 = time.perf_counter()
+                    if kind == "generated":
+                        build(conn, people, np.random.default_rng(run))
+                    else:
+                        import_ansur(conn, FILES)
+                    times[label].append(time.perf_counter() - t0)
+                    conn.close()
+                    if kind == "generated":
+                        t0 = time.perf_counter()
+                        for _ in range(20):
+                            c = sqlite3.connect(path)
+                            c.execute("SELECT count(*) FROM meta").fetchone()
+                            c.close()
+                        opens[label].append((time.perf_counter() - t0) / 20)
+                    path.unlink()
+    # The default build (`sass db init`): the bulk path against every row
+    # logged by the triggers (its file is made with schema 4's triggers, whose
+    # logging stops at the WHEN only when a bulk write asks it to).
+    from sass_tui.db.default import create_default_database
+
+    default: dict[str, list[float]] = {"every row logged": [], "now": []}
+    with tempfile.TemporaryDirectory() as tmp:
+        for run in range(2 * runs - 1):
+            for label in default:
+                schema.logged_once.__enter__ = (  # type: ignore[method-assign]
+                    quiet if label == "now" else lambda self: None
+                )
                 t0 = time.perf_counter()
-                build(conn, people, np.random.default_rng(run))
-                builds[label].append(time.perf_counter() - t0)
-                conn.close()
-                t0 = time.perf_counter()
-                for _ in range(20):
-                    c = sqlite3.connect(path)
-                    c.execute("SELECT count(*) FROM meta").fetchone()
-                    c.close()
-                opens[label].append((time.perf_counter() - t0) / 20)
-                path.unlink()
-    print(f"| {people:,} people stored, median of {runs} | opening a connection, median |")
-    print("|---|---|---|")
-    for label in builds:
-        print(
-            f"| {label} | {statistics.median(builds[label]):.1f} s | "
-            f"{statistics.median(opens[label]) * 1000:.2f} ms |"
-        )
+                create_default_database(Path(tmp) / f"{run}-{label[:3]}.db")
+                default[label].append(time.perf_counter() - t0)
+    schema.logged_once.__enter__ = quiet  # type: ignore[method-assign]
+    schema.DROP_TRIGGERS_FROM = threshold
+    base = LOG_VARIANTS[0]
+    print(
+        f"| median of {runs}, interleaved | {people:,} generated people stored | ratio to "
+        "schema 3 | ANSUR II imported (both files) | ratio | opening a connection |"
+    )
+    print("|---|---|---|---|---|---|")
+    for label in LOG_VARIANTS:
+        gen = statistics.median(builds[label])
+        row = f"| {label} | {gen:.2f} s | {gen / statistics.median(builds[base]):.2f} |"
+        if ansur:
+            imp = statistics.median(imports[label])
+            row += f" {imp:.2f} s | {imp / statistics.median(imports[base]):.2f} |"
+        else:
+            row += " - | - |"
+        print(row + f" {statistics.median(opens[label]) * 1000:.2f} ms |")
+    every, now = (statistics.median(default[k]) for k in ("every row logged", "now"))
+    print(
+        f"\nthe default database build (sass db init), median of {2 * runs - 1} interleaved: "
+        f"every row logged {every:.3f} s, now {now:.3f} s ({now / every:.2f}x)"
+    )
 
 
 def main() -> None:
@@ -472,15 +554,19 @@ def fetch_table(path: Path) -> None:
         "cache first, warm: the whole file read into it first.  CPU is this thread's "
         "CPU time; the rest of the wall time is waiting for a core or the disk.\n"
     )
-    print("| pages | how | median | max | CPU median | CPU max | read from disk |")
-    print("|---|---|---|---|---|---|---|")
+    print(
+        "| pages | how | median | max | CPU median | CPU max | read from disk | "
+        "slowest: CPU / waiting for a core / blocked on disk | over 5 ms |"
+    )
+    print("|---|---|---|---|---|---|---|---|---|")
     cases = [
         (state, label, fetch, mmap)
         for state in ("cold", "warm")
+        for _ in range(2)  # each case twice, interleaved: the wall maxima swing with load
         for label, fetch, mmap in (
-            ("before: 22 queries, file mapped", fetch_before, MAPPED),
-            ("8 queries, file mapped", fetch_individual, MAPPED),
-            ("now: 8 queries, read()", fetch_individual, None),
+            ("22 queries, file mapped (two rounds ago)", fetch_before, MAPPED),
+            ("before: 8 queries, each its own read transaction", _fetch_individual, None),
+            ("now: 8 queries in one read transaction", fetch_individual, None),
         )
     ]
     # The people stored now (each run of the count table imports and deletes a
@@ -494,13 +580,35 @@ def fetch_table(path: Path) -> None:
         if mmap is not None:
             conn.execute(f"PRAGMA mmap_size = {mmap}")
         gc.collect()
-        walls, cpus, faults = fetch_times(conn, fetch, stored, seed)
+        walls, cpus, queued, faults = fetch_times(conn, fetch, stored, seed)
         conn.close()
+        k = int(np.argmax(walls))
         print(
             f"| {state} | {label} | {statistics.median(walls) * 1000:.2f} ms | "
             f"{max(walls) * 1000:.2f} ms | {statistics.median(cpus) * 1000:.2f} ms | "
-            f"{max(cpus) * 1000:.2f} ms | {faults * 512 // 1024:,} KB |"
+            f"{max(cpus) * 1000:.2f} ms | {faults * 512 // 1024:,} KB | "
+            f"{cpus[k] * 1000:.2f} / {queued[k] * 1000:.2f} / "
+            f"{max(walls[k] - cpus[k] - queued[k], 0) * 1000:.2f} ms | "
+            f"{sum(w > 0.005 for w in walls)} |"
         )
+    # The CPU of a warm fetch, before and now, alternating on one connection.
+    conn = connect(path)
+    picked = np.random.default_rng(99).choice(stored, 2000, replace=False).tolist()
+    for pid in picked:
+        fetch_individual(conn, pid)
+    per_fetch: dict[str, list[float]] = {"before": [], "now": []}
+    for _ in range(5):
+        for label, fetch in (("before", _fetch_individual), ("now", fetch_individual)):
+            c0 = time.thread_time()
+            for pid in picked:
+                fetch(conn, pid)
+            per_fetch[label].append((time.thread_time() - c0) / len(picked))
+    conn.close()
+    before, now = (statistics.median(per_fetch[k]) * 1e6 for k in ("before", "now"))
+    print(
+        f"\nwarm, 2,000 people on one connection, CPU per fetch, median of 5 alternating: "
+        f"before {before:.0f} us, now {now:.0f} us ({now / before:.2f}x)"
+    )
     print(
         "\nthe sample query counted by SQLite on a cold file (dropped from the page "
         "cache first), file mapped as before against read() as now, alternating:\n"

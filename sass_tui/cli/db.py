@@ -1,4 +1,4 @@
-"""`sass db init | import-flat | import-ansur` (spec §5)."""
+"""`sass db init | import-flat | import-ansur | copy` (spec §5; copy: issue 16)."""
 
 from __future__ import annotations
 
@@ -49,6 +49,26 @@ def register(commands: SubParsers) -> None:
         help="label of these people's source (default ansur2, the published survey)",
     )
     ansur.set_defaults(func=run_import_ansur)
+    copy = actions.add_parser(
+        "copy",
+        help="build or bring up to date the column copy that counts queries on "
+        "200,000 people and more",
+        description="Build or bring up to date now the column copy of the database "
+        "(numpy arrays under $XDG_CACHE_HOME/sass/columns) that counts a query on "
+        "200,000 people and more in milliseconds.  A count builds a missing copy in "
+        "the background, which a one-shot `sass query` does not live to finish; "
+        "after this, every process finds it (and follows later writes).  It holds "
+        "the columns it held, the person's gender, stature, mass, age and "
+        "handedness, and every column the QUERYs name.",
+    )
+    add_db_option(copy)
+    copy.add_argument(
+        "queries",
+        nargs="*",
+        metavar="QUERY",
+        help='queries whose columns to copy too, e.g. "girth.right_upper_arm.z > 28 cm"',
+    )
+    copy.set_defaults(func=run_copy)
 
 
 def run_init(args: argparse.Namespace) -> int:
@@ -81,6 +101,12 @@ def run_init(args: argparse.Namespace) -> int:
     counts = create_default_database(path, progress=bar, replace=True)
     if bar:
         bar.finish()
+    # The old column copy follows another history: never read again, only
+    # taking disk space.  None is built: the default people are fewer than
+    # the copy's threshold (accelerator.MIN_PEOPLE), counted by SQLite.
+    from sass_tui.db import accelerator
+
+    accelerator.forget(path.resolve())
     print(
         f"created {path}: {counts.get('ansur2', 0)} ANSUR II people and "
         f"{counts.get('synthetic', 0)} synthetic people"
@@ -124,4 +150,49 @@ def run_import_ansur(args: argparse.Namespace) -> int:
     if bar:
         bar.finish()
     print(f"imported {counts['male']} men and {counts['female']} women")
+    return 0
+
+
+def run_copy(args: argparse.Namespace) -> int:
+    from sass_tui.db import accelerator
+    from sass_tui.db.query import QueryError, compile_query
+    from sass_tui.model.text import printable
+
+    wanted: set[tuple[str, str]] = set()
+    for text in args.queries:  # before opening: a bad query touches nothing
+        compiled = compile_query(text)
+        try:
+            wanted |= accelerator.columns_named(compiled)
+        except accelerator.Unsupported as exc:
+            raise QueryError(
+                f"the column copy cannot answer this query ({exc}); SQLite counts it", text
+            ) from None
+    conn = open_db(args)
+    try:
+        path = accelerator.database_path(conn)
+        bar = progress_for(sys.stderr, "copying columns")
+        done = accelerator.refresh(conn, wanted, progress=bar)
+        if bar:
+            bar.finish()
+    finally:
+        conn.close()
+    names = ", ".join(
+        column if table == "person" else f"{table}.{column}" for table, column in done.columns
+    )
+    print(
+        f"column copy of {printable(str(path))} {done.how}: {done.people} people, "
+        f"{len(done.columns)} columns ({names}), in {printable(str(done.folder))}"
+    )
+    for table, column in done.refused:
+        print(
+            f"warning: {table}.{column} holds values of another type than declared: "
+            "SQLite counts queries that name it",
+            file=sys.stderr,
+        )
+    if done.people < accelerator.MIN_PEOPLE:
+        print(
+            f"note: counts use the copy from {accelerator.MIN_PEOPLE:,} people; "
+            f"SQLite counts these {done.people:,} directly",
+            file=sys.stderr,
+        )
     return 0

@@ -16,6 +16,12 @@ def register(commands: SubParsers) -> None:
     add_db_option(query)
     query.add_argument("--format", choices=("table", "csv", "json"), default="table")
     query.add_argument(
+        "--count",
+        action="store_true",
+        help="print only how many people match (on 200,000 people and more counted "
+        "from the column copy, see `sass db copy`)",
+    )
+    query.add_argument(
         "query", metavar="QUERY", help='e.g. "gender = male AND girth.right_upper_arm.z > 28 cm"'
     )
     query.set_defaults(func=run)
@@ -27,6 +33,9 @@ def run(args: argparse.Namespace) -> int:
     compiled = compile_query(args.query)  # before opening: a bad query touches nothing
     conn = open_db(args)
     query = Query(conn, compiled)
+    if args.count:
+        print(query.count())
+        return 0
     rows = query.person_rows()  # tuples in PERSON_FIELDS order
     out = sys.stdout
     if args.format == "csv":

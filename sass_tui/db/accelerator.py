@@ -16,9 +16,10 @@ The SQLite file stays the store of record; the copy may never disagree with it:
   cookie, with the file's size, mtime and inode.  The version is read, the
   copy brought up to date and the query evaluated while one read
   transaction holds SQLite's shared lock, so no writer commits in between.
-- A file of schema 3 logs every write to every table a query reads
+- A file of schema 4 logs every write to every table a query reads
   (db/schema.py, change_log_triggers): the changed person's id and the
-  generation it changed in.  Another data version then means: re-read, in
+  generation it changed in (sass's bulk writes log each person once, in
+  the same transaction, with the triggers quiet: schema.logged_once).  Another data version then means: re-read, in
   that same transaction, the people logged at the copy's generation or
   later (`_sync`), a few milliseconds for a few people.  The log cannot say
   when the schema changed (`db init`, a dropped trigger), when the file holds
@@ -57,6 +58,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
+    from collections.abc import Callable, Iterable
+
     import numpy as np
     import numpy.typing as npt
 
@@ -252,10 +255,40 @@ def _has_change_log(conn: sqlite3.Connection) -> bool:
         )
     }
     expected = change_log_triggers()
-    return all(
+    return not _log_quiet(conn) and all(
         found.get(name, "").replace("IF NOT EXISTS ", "") == sql.replace("IF NOT EXISTS ", "")
         for name, sql in expected.items()
     )
+
+
+def _moved_by_bulk_writes(conn: sqlite3.Connection, old: int, new: int) -> bool:
+    """Whether the schema cookie went from `old` to `new` only by sass's bulk
+    writes, each of which dropped the per-row triggers, logged every person
+    it wrote and created the triggers again in one transaction, recording
+    its move in change_schema (schema.logged_once); and the log is whole
+    now.  Any other schema change (a trigger dropped by another program, db
+    init) breaks the chain."""
+    try:
+        while old != new:
+            row = conn.execute(
+                "SELECT to_cookie FROM change_schema WHERE from_cookie = ?", (old,)
+            ).fetchone()
+            if row is None or not old < int(row[0]) <= new:
+                return False
+            old = int(row[0])
+    except sqlite3.OperationalError:  # no change_schema: not a file of this schema
+        return False
+    return _has_change_log(conn)
+
+
+def _log_quiet(conn: sqlite3.Connection) -> bool:
+    """Whether a committed row in change_bulk keeps the triggers quiet (sass's
+    bulk writer never commits one: another program did, and writes may go
+    unlogged)."""
+    try:
+        return conn.execute("SELECT 1 FROM change_bulk LIMIT 1").fetchone() is not None
+    except sqlite3.OperationalError:  # no such table: not a file of this schema
+        return True
 
 
 def _base(conn: sqlite3.Connection, key: tuple[int, ...]) -> ColumnStore:
@@ -374,8 +407,12 @@ def _sync(conn: sqlite3.Connection, store: ColumnStore, key: tuple[int, ...]) ->
 
     if store.key == key:
         return True
-    if not store.logged or store.cookie != key[2]:
-        return False  # no log, or the schema changed (db init, a dropped trigger)
+    if not store.logged:
+        return False
+    if store.cookie != key[2] and not _moved_by_bulk_writes(conn, store.cookie, key[2]):
+        return False  # the schema changed (db init, a dropped trigger)
+    if _log_quiet(conn):
+        return False  # the triggers are kept quiet: the log may miss writes
     if _generation(conn, store.gen)[1] != store.token:
         return False  # another history: another database, or an older copy of this one
     gen, token = _generation(conn)
@@ -522,17 +559,29 @@ def _build_in_background(path: Path) -> None:
                 _PENDING.pop(path, None)
 
 
-def _build(conn: sqlite3.Connection, path: Path, wanted: set[tuple[str, str]]) -> None:
+def _build(
+    conn: sqlite3.Connection,
+    path: Path,
+    wanted: set[tuple[str, str]],
+    progress: Callable[[int, int], None] | None = None,
+) -> tuple[ColumnStore, bool]:
+    """The store of this file brought up to date (or built anew: the bool)
+    with these columns, then saved; `progress(done, total)` after each step."""
+    rebuilt = False
     with _LOCK:
         found = _STORES.get(path)
         if found is not None and not _read(conn, lambda: _sync(conn, found, data_version(conn))):
             found = None
     if found is None:
+        rebuilt = True
         found = _read(conn, lambda: _base(conn, data_version(conn)))
         with _LOCK:
             _STORES[path] = found
     store: ColumnStore = found
-    for table, column in sorted(wanted):
+    steps = sorted(wanted)
+    for done, (table, column) in enumerate(steps):
+        if progress is not None:
+            progress(done, len(steps))
         with _LOCK:
             if (table, column) in store.columns or _STORES.get(path) is not store:
                 continue
@@ -560,7 +609,10 @@ def _build(conn: sqlite3.Connection, path: Path, wanted: set[tuple[str, str]]) -
             ):
                 store.columns[(table, column)] = values
                 store.saved_key = None
+    if progress is not None:
+        progress(len(steps), len(steps))
     _save(path, store)
+    return store, rebuilt
 
 
 def _read(conn: sqlite3.Connection, fn: Any) -> Any:
@@ -669,7 +721,6 @@ def _load(path: Path) -> ColumnStore | None:
                         continue
                     values = TextColumn(values, words)
                 store.columns[(table, column)] = values
-                store.saved_key = None
             return store
         except (OSError, ValueError, KeyError, TypeError):
             return None
@@ -860,8 +911,18 @@ def _matches(conn: sqlite3.Connection, compiled: CompiledQuery) -> tuple[Any, Co
     return None
 
 
+# How this process's last count or id list was answered: "copy", or
+# "sqlite: " and why (tests and `sass db copy` show it; no timing needed).
+last_answer = ""
+
+
 def _answer(conn: sqlite3.Connection, compiled: CompiledQuery, ids: bool) -> Any:
-    if conn.in_transaction or not _large_enough(conn):
+    global last_answer
+    if conn.in_transaction:
+        last_answer = "sqlite: a transaction of the caller's is open"
+        return None
+    if not _large_enough(conn):
+        last_answer = f"sqlite: fewer than {MIN_PEOPLE} people"
         return None
     conn.execute("BEGIN")
     try:
@@ -876,17 +937,22 @@ def answer_in_transaction(conn: sqlite3.Connection, compiled: CompiledQuery, ids
     """count() or ids() inside the caller's read transaction, which must hold
     the shared lock (have read the main database) and have written nothing
     to it; None when SQLite must answer."""
+    global last_answer
     if not _large_enough(conn):
+        last_answer = f"sqlite: fewer than {MIN_PEOPLE} people"
         return None
     try:
         found = _matches(conn, compiled)
         if found is None:
+            last_answer = "sqlite: the copy is being built"
             return None
         mask, store = found
+        last_answer = "copy"
         if ids:
             return store.ids[mask].tolist()
         return int(mask.sum())
-    except (Unsupported, OSError, sqlite3.Error, ValueError):
+    except (Unsupported, OSError, sqlite3.Error, ValueError) as exc:
+        last_answer = f"sqlite: {exc}"
         return None
 
 
@@ -900,3 +966,93 @@ def ids(conn: sqlite3.Connection, compiled: CompiledQuery) -> list[int] | None:
     """The matching ids in ascending order, from the column copy; None when SQLite must answer."""
     result: list[int] | None = _answer(conn, compiled, ids=True)
     return result
+
+
+# --- building it now (`sass db copy`) -------------------------------------------
+
+# The columns `sass db copy` copies besides those the copy holds and those its
+# queries name: the person's own numbers and words (source compares without
+# case, a collation the copy leaves to SQLite).
+DEFAULT_COLUMNS = (
+    ("person", "gender"),
+    ("person", "stature"),
+    ("person", "mass"),
+    ("person", "age"),
+    ("person", "handedness"),
+)
+
+
+@dataclass(frozen=True)
+class Refreshed:
+    """What `refresh` did: the copy's people and columns, and how it got there."""
+
+    people: int
+    columns: tuple[tuple[str, str], ...]
+    refused: tuple[tuple[str, str], ...]  # left to SQLite (a value of another type, ...)
+    how: str  # "built", "brought up to date" or "already up to date"
+    folder: Path
+
+
+def columns_named(compiled: CompiledQuery) -> set[tuple[str, str]]:
+    """The (table, column) pairs a compiled query reads; Unsupported if the
+    copy cannot answer it (SQLite will)."""
+    aliases = {"p": "person"} | {alias: table for alias, table in compiled.tables}
+    return _wanted(parse_where(compiled.where, compiled.params, aliases))
+
+
+def refresh(
+    conn: sqlite3.Connection,
+    wanted: Iterable[tuple[str, str]] = (),
+    progress: Callable[[int, int], None] | None = None,
+) -> Refreshed:
+    """Build or bring up to date the column copy of conn's database now, in
+    the caller (a one-shot process's background build would die with it), and
+    save it for the next process: the columns it held, DEFAULT_COLUMNS and
+    `wanted`.  Whatever the size of the database (counts use the copy from
+    MIN_PEOPLE people).  DatabaseError when no copy can follow this file."""
+    from sass_tui.db.schema import DatabaseError
+
+    if conn.in_transaction:
+        raise DatabaseError("the column copy is made outside a transaction")
+    try:
+        path = database_path(conn)
+        key = _read(conn, lambda: data_version(conn))
+    except Unsupported as exc:
+        raise DatabaseError(f"no column copy can follow this database: {exc}") from None
+    with _LOCK:
+        store = _STORES.get(path)
+        if store is None:
+            store = _load(path)
+            if store is not None:
+                _STORES[path] = store
+        held = set() if store is None else set(store.columns)
+        current = store is not None and store.key == key and store.saved_key == key
+    want = held | set(DEFAULT_COLUMNS) | set(wanted)
+    try:
+        store, rebuilt = _build(conn, path, want, progress)
+    except Unsupported as exc:
+        raise DatabaseError(f"no column copy can follow this database: {exc}") from None
+    folder = _cache_folder(path)
+    with _LOCK:
+        columns = tuple(sorted(store.columns))
+        if store.saved_key != store.key:
+            raise DatabaseError(f"cannot write the column copy in {folder}")
+        refused = tuple(sorted(want & store.refused))
+        people = len(store.ids)
+    if rebuilt:
+        how = "built"
+    elif current and held >= want:
+        how = "already up to date"
+    else:
+        how = "brought up to date"
+    return Refreshed(people, columns, refused, how, folder)
+
+
+def forget(path: Path) -> None:
+    """Drop the copy of the database at `path`, in memory and on disk (after
+    `db init`: no later history can use it; errors ignored)."""
+    import shutil
+
+    with _LOCK:
+        _STORES.pop(path, None)
+    shutil.rmtree(_cache_folder(path), ignore_errors=True)

@@ -43,7 +43,7 @@ from sass_tui.model.names import (
 )
 from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS, MOTION_NAMES
 
-SCHEMA_VERSION = "3"
+SCHEMA_VERSION = "4"
 AXES = ("x", "y", "z")
 
 GIRTH_NAMES = tuple(r.name for r in GIRTH_ROWS)
@@ -231,7 +231,7 @@ CREATE TABLE strength_q (
 {axis_tables}{strength_tables}{_change_log_ddl()}"""
 
 
-# --- the change log (schema 3) ----------------------------------------------
+# --- the change log (schema 3; quiet bulk writes, schema 4) -----------------
 #
 # Which people changed, for the column copy (db/accelerator.py): every table a
 # query reads (one row per person) has triggers that note the id_num of each
@@ -241,6 +241,17 @@ CREATE TABLE strength_q (
 # by re-reading the people logged at G or later.  A person is logged once per
 # generation (the WHEN clause), so an import costs one key lookup per query
 # row.  The triggers fire for every writer of the file, sass or not.
+#
+# Schema 4: the logging is quiet while change_bulk holds a row (or, for a
+# large write, the per-row triggers are dropped and created again: see
+# logged_once and change_schema).  sass's own
+# bulk writer (store_people, delete_people: `logged_once`) puts one there
+# inside its write transaction, writes, logs the ids it wrote in one
+# statement and empties change_bulk before COMMIT, so no other connection
+# ever sees the row (a crash rolls it back with the rest): an import pays
+# one log row per person instead of a logging program per query row (the
+# triggers still fire, and stop at the WHEN; docs/performance.md, "Database
+# at scale").
 
 
 def logged_tables() -> tuple[str, ...]:
@@ -251,6 +262,10 @@ def logged_tables() -> tuple[str, ...]:
 
 
 _CURRENT_GEN = "(SELECT coalesce(max(gen), 0) FROM change_gens)"
+# Schema 4: the logging trigger's condition that keeps it quiet during a bulk
+# write (on that one trigger, not the 310 that call it: a WHEN on each cost
+# every connection 0.4 ms more to parse the schema, and saved no more).
+QUIET_WHEN = "NOT EXISTS (SELECT 1 FROM change_bulk) "
 
 
 def change_log_triggers() -> dict[str, str]:
@@ -262,7 +277,7 @@ def change_log_triggers() -> dict[str, str]:
     out = {
         "change_note_insert": (
             "CREATE TRIGGER IF NOT EXISTS change_note_insert INSTEAD OF INSERT ON change_note\n"
-            "WHEN NOT EXISTS (SELECT 1 FROM change_log WHERE id_num = NEW.id_num "
+            f"WHEN {QUIET_WHEN}AND NOT EXISTS (SELECT 1 FROM change_log WHERE id_num = NEW.id_num "
             f"AND gen = {_CURRENT_GEN})\nBEGIN\n"
             "  INSERT OR REPLACE INTO change_log SELECT NEW.id_num, coalesce(max(gen), 0) "
             "FROM change_gens;\nEND"
@@ -285,6 +300,8 @@ def _change_log_ddl() -> str:
 CREATE TABLE IF NOT EXISTS change_gens (gen INTEGER PRIMARY KEY, token INTEGER NOT NULL);
 CREATE TABLE IF NOT EXISTS change_log (id_num INTEGER PRIMARY KEY, gen INTEGER NOT NULL);
 CREATE INDEX IF NOT EXISTS change_log_gen ON change_log (gen);
+CREATE TABLE IF NOT EXISTS change_bulk (one INTEGER PRIMARY KEY);
+CREATE TABLE IF NOT EXISTS change_schema (from_cookie INTEGER PRIMARY KEY, to_cookie INTEGER NOT NULL);
 CREATE VIEW IF NOT EXISTS change_note AS SELECT 0 AS id_num;
 {triggers}"""
 
@@ -293,6 +310,73 @@ def new_generation(conn: sqlite3.Connection) -> None:
     """Start a generation of the change log (inside the caller's write
     transaction): what this write changes is told apart from earlier writes."""
     conn.execute(f"INSERT INTO change_gens VALUES ({_CURRENT_GEN} + 1, random())")
+
+
+# A bulk write of at least this many people drops the per-row triggers for
+# its transaction and creates them again before COMMIT (14 ms for the 310;
+# below this the triggers firing cost less than that): its rows fire nothing.
+DROP_TRIGGERS_FROM = 2_000
+
+
+def schema_cookie(conn: sqlite3.Connection) -> int:
+    """The file's schema cookie (the header's, as the caller's transaction sees it)."""
+    cookie: int = conn.execute("PRAGMA schema_version").fetchone()[0]
+    return cookie
+
+
+class logged_once:
+    """Inside the caller's write transaction: the change log's logging quiet
+    while people `ids` are written, and those ids logged in one statement on
+    the way out instead (~45 trigger programs per person before).
+
+    Quiet means a row in change_bulk (the one logging trigger stops at its
+    WHEN) or, from DROP_TRIGGERS_FROM people, the per-row triggers dropped
+    and created again on the way out, the schema cookie's move from before
+    to after recorded in change_schema: the column copy accepts a move so
+    recorded, and rebuilds after any other.  The ids are logged whatever
+    happened, so a caller that catches an error and commits still logs
+    every person that may have changed; a rollback takes the flag, the
+    dropped triggers and the record away with the rest.  Outside a
+    transaction (where each step would be committed alone) the triggers log
+    as usual."""
+
+    def __init__(self, conn: sqlite3.Connection, ids: Sequence[int]) -> None:
+        self.conn = conn
+        self.ids = ids
+        self.quiet = False
+        self.cookie: int | None = None  # before the triggers were dropped
+
+    def __enter__(self) -> None:
+        if not self.conn.in_transaction:
+            return
+        if len(self.ids) >= DROP_TRIGGERS_FROM:
+            self.cookie = schema_cookie(self.conn)
+            for name in change_log_triggers():
+                if name != "change_note_insert":
+                    self.conn.execute(f"DROP TRIGGER IF EXISTS {name}")
+        else:
+            self.conn.execute("INSERT OR IGNORE INTO change_bulk VALUES (1)")
+        self.quiet = True
+
+    def __exit__(self, exc_type: object, exc: BaseException | None, tb: object) -> None:
+        if not self.quiet or not self.conn.in_transaction:
+            return  # the triggers logged, or SQLite rolled everything back
+        import json
+
+        self.conn.execute(
+            f"INSERT OR REPLACE INTO change_log SELECT value, {_CURRENT_GEN} FROM json_each(?)",
+            (json.dumps([int(i) for i in self.ids]),),
+        )
+        if self.cookie is None:
+            self.conn.execute("DELETE FROM change_bulk")
+            return
+        for name, sql in change_log_triggers().items():
+            if name != "change_note_insert":
+                self.conn.execute(sql)
+        self.conn.execute(
+            "INSERT OR REPLACE INTO change_schema VALUES (?, ?)",
+            (self.cookie, schema_cookie(self.conn)),
+        )
 
 
 RELATIONS = (
@@ -326,7 +410,11 @@ def default_db_path() -> Path:
 # Attributes of a person besides the model's (ANSUR II's survey fields).
 PERSON_ATTRIBUTES = ("component", "branch", "subjectnumericrace", "dodrace", "ethnicity")
 # Tables every sass database of this version holds.
-EXPECTED_TABLES = frozenset(("meta", "change_gens", "change_log") + RELATIONS + PERSON_TABLES)
+EXPECTED_TABLES = frozenset(
+    ("meta", "change_gens", "change_log", "change_bulk", "change_schema")
+    + RELATIONS
+    + PERSON_TABLES
+)
 BUSY_TIMEOUT_S = 10.0
 
 
@@ -455,6 +543,9 @@ def _check_schema(conn: sqlite3.Connection, path: Path, create: bool, rebuild: b
         version = "2"
     if version == "2":
         migrate_2_to_3(conn)
+        version = "3"
+    if version == "3":
+        migrate_3_to_4(conn)
         names = _tables(conn)
     elif version != SCHEMA_VERSION:
         raise DatabaseError(
@@ -496,6 +587,20 @@ def migrate_2_to_3(conn: sqlite3.Connection) -> None:
                 conn.execute(statement)
         new_generation(conn)
         conn.execute("UPDATE meta SET value = '3' WHERE key = 'schema_version'")
+
+
+def migrate_3_to_4(conn: sqlite3.Connection) -> None:
+    """Schema 3 -> 4: the change log's triggers quiet while change_bulk holds
+    a row (bulk writes log their ids once); no data changed."""
+    with transaction(conn):
+        row = conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
+        if row is None or row[0] != "3":  # another process migrated it meanwhile
+            return
+        conn.execute("DROP TRIGGER IF EXISTS change_note_insert")
+        for statement in _schema_statements():
+            if "IF NOT EXISTS" in statement:  # change_bulk, change_schema, the trigger
+                conn.execute(statement)
+        conn.execute("UPDATE meta SET value = '4' WHERE key = 'schema_version'")
 
 
 def _schema_statements() -> list[str]:
@@ -725,7 +830,13 @@ def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iter
 
 
 def delete_people(conn: sqlite3.Connection, ids: Sequence[int]) -> None:
+    """Delete these people with all their data (inside the caller's transaction)."""
     new_generation(conn)
+    with logged_once(conn, ids):
+        _delete_people(conn, ids)
+
+
+def _delete_people(conn: sqlite3.Connection, ids: Sequence[int]) -> None:
     conn.execute("CREATE TEMP TABLE IF NOT EXISTS _gone (id_num INTEGER PRIMARY KEY)")
     conn.execute("DELETE FROM _gone")
     conn.executemany("INSERT OR IGNORE INTO _gone VALUES (?)", ((int(i),) for i in ids))
@@ -736,13 +847,17 @@ def delete_people(conn: sqlite3.Connection, ids: Sequence[int]) -> None:
 def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool = True) -> None:
     """Insert a batch (inside the caller's transaction).  With replace, people
     whose id_num is already stored are deleted first, with all their data."""
+    ids = [int(i) for i in batch.id_num]
+    new_generation(conn)
+    with logged_once(conn, ids):
+        if replace:
+            _delete_people(conn, ids)
+        _store_people(conn, ids, batch)
+
+
+def _store_people(conn: sqlite3.Connection, ids: list[int], batch: PeopleBatch) -> None:
     import numpy as np
 
-    ids = [int(i) for i in batch.id_num]
-    if replace:
-        delete_people(conn, ids)
-    else:
-        new_generation(conn)
     no_value = [None] * len(ids)
     conn.executemany(
         f"INSERT INTO person VALUES ({', '.join(['?'] * (9 + len(PERSON_ATTRIBUTES)))})",

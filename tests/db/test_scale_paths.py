@@ -16,7 +16,7 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-from sass_tui.db import accelerator
+from sass_tui.db import accelerator, schema
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.query import CompiledQuery, Query, compile_query, run_query
 from sass_tui.db.schema import (
@@ -24,8 +24,11 @@ from sass_tui.db.schema import (
     GIRTH_NAMES,
     JOINT_LIMIT_NAMES,
     QUERY_TABLES,
+    QUIET_WHEN,
+    SCHEMA_VERSION,
     STRENGTH_PARAMETERS,
     PeopleBatch,
+    change_log_triggers,
     connect,
     delete_people,
     recreate_schema,
@@ -475,6 +478,15 @@ def _write(conn: sqlite3.Connection, path: Path, step: tuple, rng: np.random.Gen
     elif kind == "replace":  # the same ids, other data (a flat-file import replaces)
         with transaction(conn):
             store_people(conn, generated_batch(rng, np.array(sorted(some), dtype=np.int64)))
+    elif kind == "bulk replace":  # the same, by the large-write path: triggers dropped
+        threshold = schema.DROP_TRIGGERS_FROM
+        schema.DROP_TRIGGERS_FROM = 1
+        try:
+            with transaction(conn):
+                store_people(conn, generated_batch(rng, np.array(sorted(some), dtype=np.int64)))
+                delete_people(conn, some[: len(some) // 2])
+        finally:
+            schema.DROP_TRIGGERS_FROM = threshold
     elif kind == "init":  # `sass db init --force`, then a few people
         with transaction(conn, "EXCLUSIVE"):
             recreate_schema(conn)
@@ -506,7 +518,8 @@ def _write(conn: sqlite3.Connection, path: Path, step: tuple, rng: np.random.Gen
 
 WRITES = st.tuples(
     st.sampled_from(
-        ["delete", "add", "replace", "sql update", "sql insert", "sql delete", "sql renumber"]
+        ["delete", "add", "replace", "bulk replace", "sql update", "sql insert", "sql delete"]
+        + ["sql renumber"]
         + ["init", "new process"]
     ),
     st.integers(1, 12),
@@ -605,15 +618,42 @@ def test_a_schema_2_database_gets_the_change_log(db):
         raw.execute(f"DROP TRIGGER {name}")
     raw.executescript(
         "DROP TRIGGER change_note_insert; DROP VIEW change_note; DROP TABLE change_log;"
-        "DROP TABLE change_gens; UPDATE meta SET value = '2' WHERE key = 'schema_version';"
+        "DROP TABLE change_gens; DROP TABLE change_bulk; DROP TABLE change_schema;"
+        "UPDATE meta SET value = '2' WHERE key = 'schema_version';"
     )
     raw.close()
     conn = connect(path)
     try:
         assert conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone() == (
-            "3",
+            SCHEMA_VERSION,
         )
         assert accelerator._has_change_log(conn)
+        assert_copy_is_sqlite(conn)
+    finally:
+        conn.close()
+
+
+def test_a_schema_3_database_gets_the_quiet_triggers(db):
+    """Schema 3's triggers logged every row, with no way to keep them quiet:
+    opened, the file gets schema 4's, and a bulk import is then logged once."""
+    path = accelerator.database_path(db)
+    raw = sqlite3.connect(path, isolation_level=None)
+    raw.execute("BEGIN")
+    raw.execute("DROP TRIGGER change_note_insert")
+    raw.execute(change_log_triggers()["change_note_insert"].replace(f"{QUIET_WHEN}AND ", ""))
+    raw.execute("DROP TABLE change_bulk")
+    raw.execute("UPDATE meta SET value = '3' WHERE key = 'schema_version'")
+    raw.execute("COMMIT")
+    raw.close()
+    conn = connect(path)
+    try:
+        assert conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone() == (
+            SCHEMA_VERSION,
+        )
+        assert accelerator._has_change_log(conn)
+        assert_copy_is_sqlite(conn)
+        with transaction(conn):
+            store_people(conn, generated_batch(np.random.default_rng(3), np.arange(1, 40)))
         assert_copy_is_sqlite(conn)
     finally:
         conn.close()
@@ -689,3 +729,275 @@ def test_splicing_the_ids_is_the_set_change(old, changed, data):
     assert [v == i * 10.0 for i, v in zip(new_ids, values)] == [
         i not in changed for i in new_ids.tolist()
     ]
+
+
+# --- bulk writes: the triggers quiet, each person logged once (schema 4) ------
+
+
+@pytest.fixture(params=["flag", "dropped triggers"])
+def bulk(request, monkeypatch):
+    """Each bulk path: the quiet flag (small writes), or the per-row triggers
+    dropped and created again (from DROP_TRIGGERS_FROM people, here 1); the
+    copy must follow either by the log, never rebuild (`builds`)."""
+    threshold = 10**9 if request.param == "flag" else 1
+    monkeypatch.setattr(schema, "DROP_TRIGGERS_FROM", threshold)
+    builds: list[int] = []
+    base = accelerator._base
+    monkeypatch.setattr(accelerator, "_base", lambda *a: builds.append(1) or base(*a))
+    return threshold, builds
+
+
+def _instructions(conn: sqlite3.Connection, write) -> int:
+    """SQLite VM instructions (in hundreds) a write runs: its work without a clock."""
+    count = [0]
+
+    def tick() -> int:
+        count[0] += 1
+        return 0
+
+    conn.set_progress_handler(tick, 100)
+    try:
+        write()
+    finally:
+        conn.set_progress_handler(None, 100)
+    return count[0]
+
+
+def test_a_bulk_write_skips_the_per_row_log_and_the_copy_follows(db, monkeypatch):
+    """store_people keeps the triggers quiet and logs each person once: about
+    three quarters of the SQLite work of logging every row (the triggers still
+    of an import), and the copy follows it by the log (no rebuild)."""
+    compiled = compile_query(SAMPLE)
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+    builds = []
+    base = accelerator._base
+    monkeypatch.setattr(accelerator, "_base", lambda *a: builds.append(1) or base(*a))
+
+    def store(first: int) -> None:
+        with transaction(db):
+            batch = generated_batch(np.random.default_rng(first), np.arange(first, first + 200))
+            store_people(db, batch)
+
+    quiet = _instructions(db, lambda: store(300_001))
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert_copy_is_sqlite(db)
+    with monkeypatch.context() as m:  # every row logged by its trigger, as schema 3 did
+        m.setattr(schema.logged_once, "__enter__", lambda self: None)
+        per_row = _instructions(db, lambda: store(400_001))
+    assert_copy_is_sqlite(db)
+    assert quiet < 0.8 * per_row, (quiet, per_row)
+    assert builds == []
+    logged = db.execute("SELECT count(*) FROM change_log WHERE id_num >= 300001").fetchone()
+    assert logged == (400,)
+
+
+def test_a_flat_file_import_then_an_accelerated_count_equals_sql(db, tmp_path, bulk):
+    from big_flat_files import write_big_flat_files
+
+    from sass_tui.db.flatfile import import_flat_files
+
+    assert_copy_is_sqlite(db)
+    bulk[1].clear()
+    import_flat_files(db, write_big_flat_files(tmp_path / "flat", people=300))
+    assert_copy_is_sqlite(db)
+    import_flat_files(db, write_big_flat_files(tmp_path / "flat2", people=150))  # replaces
+    assert_copy_is_sqlite(db)
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert accelerator._has_change_log(db)
+    assert bulk[1] == []  # followed by the log, not rebuilt
+
+
+def test_an_ansur_import_then_an_accelerated_count_equals_sql(db, ansur_dir, bulk):
+    from sass_tui.db.ansur import import_ansur
+
+    assert_copy_is_sqlite(db)
+    bulk[1].clear()
+    import_ansur(db, [ansur_dir / "ANSUR_II_FEMALE_Public.csv"], label="test")
+    for text in [*WRITE_QUERIES, "measure.stature > 160 cm AND gender = female"]:
+        compiled = compile_query(text)
+        assert accelerator.count(db, compiled) == sqlite_count(db, compiled), text
+    assert bulk[1] == []
+
+
+def test_an_import_cancelled_mid_write_leaves_copy_and_file_alike(db, tmp_path, bulk):
+    from big_flat_files import write_big_flat_files
+
+    from sass_tui.db.flatfile import import_flat_files
+    from sass_tui.db.progress import Cancelled
+
+    class Later:
+        """Set at its fifth look while storing: mid-statement, inside store_people."""
+
+        looks = 0
+
+        def is_set(self) -> bool:
+            if db.in_transaction:
+                self.looks += 1
+            return self.looks >= 5
+
+    assert_copy_is_sqlite(db)
+    files = write_big_flat_files(tmp_path / "flat", people=400)
+    people = _people(db)
+    with pytest.raises(Cancelled):
+        import_flat_files(db, files, cancel=Later())
+    assert _people(db) == people
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert accelerator._has_change_log(db)
+    assert_copy_is_sqlite(db)
+
+
+def test_a_failed_bulk_write_that_the_caller_commits_is_still_logged(db, bulk):
+    """An error mid-write that the caller catches, then commits: what was
+    written is in the file, and its people are in the log."""
+    assert_copy_is_sqlite(db)
+    fresh = np.arange(500_001, 500_051)
+    batch = generated_batch(np.random.default_rng(8), fresh)
+    batch.extra_girth = [(0, GIRTH_NAMES[0], 1.0, 2.0, 3.0, 4.0)]  # its girth row again
+    with transaction(db):
+        with pytest.raises(sqlite3.IntegrityError):
+            store_people(db, batch)
+    assert set(_people(db)) >= set(fresh.tolist())  # person rows committed
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert accelerator._has_change_log(db)  # the dropped triggers are back
+    assert_copy_is_sqlite(db)
+
+
+def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path, bulk):
+    """A process killed inside store_people, its pages already in the file:
+    the next reader rolls the hot journal back, and the copy agrees."""
+    import subprocess
+    import sys
+
+    assert_copy_is_sqlite(db)
+    path = accelerator.database_path(db)
+    people = _people(db)
+    child = (
+        "import os, sys\n"
+        "import numpy as np\n"
+        f"sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
+        "from test_scale_paths import generated_batch\n"
+        "from sass_tui.db import schema\n"
+        "from sass_tui.db.schema import connect, store_people, transaction\n"
+        f"schema.DROP_TRIGGERS_FROM = {bulk[0]}\n"
+        "conn = connect(sys.argv[1])\n"
+        "conn.execute('PRAGMA cache_size = 5')\n"  # pages spill to the file before COMMIT
+        "batch = generated_batch(np.random.default_rng(4), np.arange(600_001, 600_301))\n"
+        "ticks = [0]\n"
+        "def crash():\n"
+        "    ticks[0] += 1\n"
+        "    if ticks[0] > 400:\n"
+        "        os._exit(7)\n"
+        "    return 0\n"
+        "with transaction(conn):\n"
+        "    conn.set_progress_handler(crash, 100)\n"
+        "    store_people(conn, batch)\n"
+        "sys.exit(0)\n"
+    )
+    done = subprocess.run([sys.executable, "-c", child, str(path)], capture_output=True, text=True)
+    assert done.returncode == 7, done.stderr
+    assert Path(f"{path}-journal").exists()  # a hot journal: the crash was mid-write
+    assert_copy_is_sqlite(db)
+    assert _people(db) == people
+    assert db.execute("SELECT count(*) FROM change_bulk").fetchone() == (0,)
+    assert accelerator._has_change_log(db)
+
+
+def test_a_bulk_write_of_many_people_fires_no_trigger_and_is_followed(db, monkeypatch):
+    """From DROP_TRIGGERS_FROM people the per-row triggers are dropped for
+    the write: under half the SQLite work of the quiet flag's path, and the
+    copy accepts the schema cookie's recorded move (no rebuild)."""
+    compiled = compile_query(SAMPLE)
+    assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
+    builds = []
+    base = accelerator._base
+    monkeypatch.setattr(accelerator, "_base", lambda *a: builds.append(1) or base(*a))
+    batch = generated_batch(np.random.default_rng(12), np.arange(700_001, 702_001))
+
+    def store(first: int) -> None:
+        batch.id_num = np.arange(first, first + len(batch))
+        with transaction(db):
+            store_people(db, batch)
+
+    monkeypatch.setattr(schema, "DROP_TRIGGERS_FROM", 10**9)
+    flagged = _instructions(db, lambda: store(700_001))
+    monkeypatch.setattr(schema, "DROP_TRIGGERS_FROM", 2000)
+    cookie = schema.schema_cookie(db)
+    dropped = _instructions(db, lambda: store(710_001))
+    assert schema.schema_cookie(db) > cookie
+    assert db.execute("SELECT to_cookie FROM change_schema WHERE from_cookie = ?", (cookie,))
+    assert accelerator._has_change_log(db)
+    assert_copy_is_sqlite(db)
+    assert builds == []
+    assert dropped < 0.8 * flagged, (dropped, flagged)
+
+
+def test_a_trigger_dropped_and_created_again_by_another_program_means_a_rebuild(db, monkeypatch):
+    """A schema change that no bulk write recorded (another program dropped a
+    trigger, wrote, and created it again): the log may miss that write."""
+    assert_copy_is_sqlite(db)
+    builds = []
+    base = accelerator._base
+    monkeypatch.setattr(accelerator, "_base", lambda *a: builds.append(1) or base(*a))
+    other = sqlite3.connect(accelerator.database_path(db), isolation_level=None)
+    sql = other.execute(
+        "SELECT sql FROM sqlite_master WHERE name = 'log_person_update'"
+    ).fetchone()[0]
+    other.execute("DROP TRIGGER log_person_update")
+    other.execute("UPDATE person SET gender = 'female' WHERE gender = 'male' AND id_num % 4 = 1")
+    other.execute(sql)
+    other.close()
+    assert accelerator._has_change_log(db)
+    assert_copy_is_sqlite(db)
+    assert builds == [1]
+
+
+def test_a_committed_quiet_flag_stops_the_following(db):
+    """Another program that commits a row in change_bulk keeps the triggers
+    quiet for every writer: the copy no longer trusts the log."""
+    assert_copy_is_sqlite(db)
+    other = sqlite3.connect(accelerator.database_path(db), isolation_level=None)
+    other.execute("INSERT INTO change_bulk VALUES (1)")
+    other.execute("UPDATE person SET gender = 'female' WHERE gender = 'male' AND id_num % 3 = 0")
+    other.close()
+    assert not accelerator._has_change_log(db)
+    assert_copy_is_sqlite(db)
+
+
+def test_an_individual_is_fetched_as_one_snapshot(db):
+    """A write that another process tries to commit between two of
+    fetch_individual's reads waits until the fetch is done: the person and
+    their girth rows come from the same state of the file."""
+    path = accelerator.database_path(db)
+    pid = int(db.execute("SELECT id_num FROM girth GROUP BY id_num LIMIT 1").fetchone()[0])
+    other = sqlite3.connect(path, isolation_level=None, timeout=0)
+    refused = []
+
+    def write_between(sql: str) -> None:
+        if "FROM girth" in sql and not refused:
+            try:
+                other.execute("BEGIN IMMEDIATE")
+                other.execute("DELETE FROM girth WHERE id_num = ?", (pid,))
+                other.execute("COMMIT")
+                refused.append(False)
+            except sqlite3.OperationalError:
+                other.execute("ROLLBACK")
+                refused.append(True)
+
+    db.set_trace_callback(write_between)
+    try:
+        person = fetch_individual(db, pid)
+    finally:
+        db.set_trace_callback(None)
+        other.close()
+    assert refused == [True]
+    assert not np.isnan(person.groups["girth"]).all()  # the rows as the person was read
+    assert not db.in_transaction
+
+
+def test_an_individual_fetched_inside_a_transaction_leaves_it_open(db):
+    pid = int(db.execute("SELECT min(id_num) FROM person").fetchone()[0])
+    with transaction(db):
+        db.execute("UPDATE person SET name = 'renamed' WHERE id_num = ?", (pid,))
+        assert fetch_individual(db, pid).name == "renamed"  # its own write, seen
+        assert db.in_transaction
+    assert fetch_individual(db, pid).name == "renamed"

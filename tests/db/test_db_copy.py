@@ -1,0 +1,166 @@
+"""`sass db copy`: the column copy (sass_tui/db/accelerator.py) built now, so
+that a one-shot `sass query` in a fresh process counts from it (issue 16).
+
+The copy answers counts from accelerator.MIN_PEOPLE people; the processes
+here lower it to 0 so the default database (6,268 people) uses it, and say
+how they answered (accelerator.last_answer) instead of being timed.
+"""
+
+from __future__ import annotations
+
+import os
+import sqlite3
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from sass_tui.cli import main
+from sass_tui.db import accelerator
+from sass_tui.db.query import compile_query
+from sass_tui.db.schema import connect
+
+QUERY = "gender = male AND girth.right_upper_arm.z > 28 cm AND stature > 170 cm"
+
+# `sass ARGS` in a new Python process whose copy threshold is 0; it prints
+# how its last count was answered on stderr.
+CHILD = (
+    "import sys\n"
+    "from sass_tui.db import accelerator\n"
+    "accelerator.MIN_PEOPLE = 0\n"
+    "from sass_tui.cli import main\n"
+    "status = main(sys.argv[1:])\n"
+    "print('answered by:', accelerator.last_answer, file=sys.stderr)\n"
+    "sys.exit(status)\n"
+)
+
+
+def sass(cache: Path, *argv: str) -> subprocess.CompletedProcess[str]:
+    env = dict(os.environ, XDG_CACHE_HOME=str(cache))
+    return subprocess.run(
+        [sys.executable, "-c", CHILD, *argv],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=120,
+    )
+
+
+def sqlite_count(path: Path, text: str) -> int:
+    compiled = compile_query(text)
+    conn = sqlite3.connect(path)
+    try:
+        sql = f"SELECT count(*) FROM {compiled.from_clause()} WHERE {compiled.where}"
+        return int(conn.execute(sql, compiled.params).fetchone()[0])
+    finally:
+        conn.close()
+
+
+@pytest.fixture()
+def db_path(default_db_file, tmp_path) -> Path:
+    copy = tmp_path / "people.db"
+    copy.write_bytes(default_db_file.read_bytes())
+    return copy
+
+
+def test_without_db_copy_a_fresh_query_process_counts_with_sqlite(db_path, tmp_path):
+    """The problem: the background build dies with the one-shot process."""
+    done = sass(tmp_path / "cache", "query", "--db", str(db_path), "--count", QUERY)
+    assert done.returncode == 0, done.stderr
+    assert int(done.stdout) == sqlite_count(db_path, QUERY)
+    assert "answered by: sqlite: the copy is being built" in done.stderr
+
+
+def test_after_db_copy_a_fresh_query_process_counts_from_the_copy(db_path, tmp_path):
+    cache = tmp_path / "cache"
+    built = sass(cache, "db", "copy", "--db", str(db_path), "girth.right_upper_arm.z > 28 cm")
+    assert built.returncode == 0, built.stderr
+    assert "built: 6268 people, 6 columns" in built.stdout
+    assert "q_girth_right_upper_arm.z" in built.stdout
+    assert "Traceback" not in built.stderr
+    counted = sass(cache, "query", "--db", str(db_path), "--count", QUERY)
+    assert counted.returncode == 0, counted.stderr
+    assert "answered by: copy" in counted.stderr
+    assert int(counted.stdout) == sqlite_count(db_path, QUERY)
+    again = sass(cache, "db", "copy", "--db", str(db_path))
+    assert "already up to date: 6268 people" in again.stdout
+
+
+def test_db_copy_follows_a_write_then_the_fresh_process_agrees(db_path, tmp_path):
+    cache = tmp_path / "cache"
+    assert sass(cache, "db", "copy", "--db", str(db_path), QUERY).returncode == 0
+    raw = sqlite3.connect(db_path)
+    with raw:
+        raw.execute("DELETE FROM person WHERE id_num IN (SELECT id_num FROM person LIMIT 7)")
+        raw.execute("UPDATE person SET stature = 199.0 WHERE gender = 'male' AND id_num % 5 = 0")
+    raw.close()
+    refreshed = sass(cache, "db", "copy", "--db", str(db_path))
+    assert "brought up to date: 6261 people" in refreshed.stdout, refreshed.stdout
+    counted = sass(cache, "query", "--db", str(db_path), "--count", QUERY)
+    assert "answered by: copy" in counted.stderr
+    assert int(counted.stdout) == sqlite_count(db_path, QUERY)
+
+
+def test_a_loaded_copy_is_not_written_again(db_path, tmp_path, monkeypatch):
+    """A new process that loads the disk copy and counts leaves it as it is
+    (it was rewritten whole, 140 MB at 5,000,000 people, by every process)."""
+    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(accelerator, "BACKGROUND", False)
+    monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
+    accelerator._STORES.clear()
+    conn = connect(db_path)
+    try:
+        done = accelerator.refresh(conn, accelerator.columns_named(compile_query(QUERY)))
+        before = sorted(p.name for p in done.folder.iterdir())
+        accelerator._STORES.clear()  # as a new process
+        compiled = compile_query(QUERY)
+        assert accelerator.count(conn, compiled) == sqlite_count(db_path, QUERY)
+        assert accelerator.last_answer == "copy"
+        assert sorted(p.name for p in done.folder.iterdir()) == before
+    finally:
+        conn.close()
+        accelerator._STORES.clear()
+
+
+def test_db_init_drops_the_old_copy(db_path, tmp_path, monkeypatch):
+    cache = tmp_path / "cache"
+    built = sass(cache, "db", "copy", "--db", str(db_path))
+    folder = Path(built.stdout.rsplit(" in ", 1)[1].strip())
+    assert folder.is_dir()
+    monkeypatch.setattr(accelerator, "CACHE_DIR", cache / "sass" / "columns")
+    assert main(["db", "init", "--force", "--db", str(db_path)]) == 0
+    assert not folder.exists()
+
+
+def test_db_copy_of_a_missing_database_is_a_message(tmp_path, capsys):
+    assert main(["db", "copy", "--db", str(tmp_path / "none.db")]) == 2
+    err = capsys.readouterr().err
+    assert "none.db: no database there" in err
+    assert "Traceback" not in err
+    assert not (tmp_path / "none.db").exists()
+
+
+def test_db_copy_of_a_file_that_is_not_a_database_is_a_message(tmp_path, capsys):
+    junk = tmp_path / "junk.db"
+    junk.write_text("not SQLite\n" * 50)
+    assert main(["db", "copy", "--db", str(junk)]) == 2
+    err = capsys.readouterr().err
+    assert "junk.db" in err and "Traceback" not in err
+
+
+def test_db_copy_of_a_wal_database_says_why(db_path, tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
+    raw = sqlite3.connect(db_path)
+    raw.execute("PRAGMA journal_mode = WAL")
+    raw.close()
+    assert main(["db", "copy", "--db", str(db_path)]) == 2
+    err = capsys.readouterr().err
+    assert "no column copy can follow this database" in err and "WAL" in err
+
+
+def test_db_copy_of_a_query_the_copy_cannot_answer_says_so(db_path, capsys):
+    assert main(["db", "copy", "--db", str(db_path), "source = ansur2"]) == 2
+    err = capsys.readouterr().err
+    assert "the column copy cannot answer this query" in err
+    assert "SQLite counts it" in err
