@@ -165,7 +165,9 @@ def run_copy(args: argparse.Namespace) -> int:
             wanted |= accelerator.columns_named(compiled)
         except accelerator.Unsupported as exc:
             raise QueryError(
-                f"the column copy cannot answer this query ({exc}); SQLite counts it", text
+                f"the column copy cannot answer this query ({exc}); `sass query` counts it "
+                "with SQLite",
+                text,
             ) from None
     conn = open_db(args)
     try:

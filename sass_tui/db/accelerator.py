@@ -103,6 +103,8 @@ def parse_where(where: str, params: tuple[object, ...], aliases: dict[str, str])
         if where[pos:].strip() == "":
             break
         m = _TOKEN.match(where, pos)
+        if m is None and where[pos:].lstrip().startswith("COLLATE NOCASE"):
+            raise Unsupported("it compares a word without regard to case, which SQLite does")
         if m is None:
             raise Unsupported(f"SQL not understood at {where[pos : pos + 20]!r}")
         pos = m.end()
