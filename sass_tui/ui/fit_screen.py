@@ -13,14 +13,15 @@ from textual import work
 from textual.binding import Binding
 from textual.containers import ScrollableContainer
 from textual.message import Message
-from textual.screen import Screen
 from textual.widgets import Footer, Static
 from textual_plotext import PlotextPlot
 
 from sass_tui.db.fit import LimitHistogram
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.lists import DB_ERRORS, QueryLists
+from sass_tui.ui.base import SassScreen
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
+from sass_tui.ui.widgets import MessageLine
 
 GENDER_COLORS = {"male": "blue", "female": "magenta"}
 
@@ -39,7 +40,7 @@ def _short(field: str) -> str:
     return field.removeprefix("measure.")
 
 
-class FitScreen(Screen):
+class FitScreen(SassScreen):
     DEFAULT_CSS = """
     FitScreen #fit-scroll { height: auto; max-height: 50%; }
     FitScreen #fit-table { padding: 0 1; width: auto; }
@@ -70,6 +71,7 @@ class FitScreen(Screen):
         yield Static("", id="fit-plot-title")
         yield PlotextPlot(id="fit-plot")
         yield WorkBar(id="work")
+        yield MessageLine(id="message-line")
         yield Footer(compact=True)
 
     def on_mount(self) -> None:
@@ -109,6 +111,11 @@ class FitScreen(Screen):
         table = self.query_one("#fit-table", Static)
         text = f"The fit test was not run: {event.error}" if event.error else event.text
         table.update(Text(text, no_wrap=True))  # a wide table scrolls sideways
+        if event.error:
+            self.complain(f"The fit test was not run: {event.error}")
+        else:
+            more = ", l the next limit" if len(event.histograms) > 1 else ""
+            self.say(f"Fit test done: Esc back to the query{more}, F1 lists the keys.")
         self.histograms = event.histograms
         self.shown = 0
         self.draw_histogram()

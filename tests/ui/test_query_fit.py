@@ -128,3 +128,31 @@ def test_fit_screen_histogram_counts_the_population_and_draws_the_limits(drive, 
 
 def test_fit_screen_histogram_snapshot(snap_compare, db):
     assert snap_compare(SassApp(db_path=db), run_before=open_fit_screen, terminal_size=(100, 30))
+
+
+def test_the_fit_screen_says_when_it_is_done_and_f1_lists_its_keys(drive, db):
+    """A SassScreen like the others: its message line says the test is done
+    and which keys apply; F1 lists them; Escape closes the help, then returns."""
+    from sass_tui.ui.palette import HelpScreen
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=SIZE) as pilot:
+            await open_fit_screen(pilot)
+            screen = app.screen
+            assert isinstance(screen, FitScreen)
+            said = str(screen.message_line.query_one("#message").render())
+            assert said.startswith("Fit test done:") and "l the next limit" in said
+            await pilot.press("f1")
+            await pilot.pause()
+            assert isinstance(app.screen, HelpScreen)
+            names = {command.name for command in app.screen.commands}
+            assert {"Back to the query", "Next limit", "Help"} <= names
+            await pilot.press("escape")
+            await pilot.pause()
+            assert app.screen is screen
+            await pilot.press("escape")
+            await settle(pilot)
+            assert isinstance(app.screen, QueryScreen)
+
+    drive(scenario())
