@@ -185,6 +185,8 @@ def test_the_tui_holds_the_collector_until_its_first_screen_is_drawn():
         "app.run_app = lambda db: seen.append(gc.isenabled()) or 0\n"
         "from sass_tui.cli import main\n"
         "main([])\n"
+        "seen.append(gc.isenabled())  # on again once the TUI has ended\n"
+        "gc.disable()  # as run_tui holds it while the app starts\n"
         "async def first_screen():\n"
         "    tui = app.SassApp()\n"
         "    async with tui.run_test(size=(120, 40)) as pilot:\n"
@@ -194,7 +196,19 @@ def test_the_tui_holds_the_collector_until_its_first_screen_is_drawn():
         "asyncio.run(first_screen())\n"
         "print(seen)\n"
     )
-    assert _run(code) == "[False, True, True]"
+    assert _run(code) == "[False, True, True, True]"
+
+
+def test_the_collector_runs_again_when_the_tui_ends_before_its_first_screen():
+    # `sass --db '~nosuchuser/x.db'` refuses the path before any screen: the
+    # process (or a caller of main) is left with the collector on.
+    code = (
+        "import gc\n"
+        "from sass_tui.cli import main\n"
+        "status = main(['--db', '~nosuchuser/x.db'])\n"
+        "print(status, gc.isenabled())\n"
+    )
+    assert _run(code) == "2 True"
 
 
 def test_a_command_does_not_run_the_collector_while_it_starts(tmp_path):

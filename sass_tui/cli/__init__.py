@@ -181,14 +181,17 @@ def run_tui(db: str | None) -> int:
     # 200 times before the first screen (50-85 ms, docs/performance.md).  It
     # is off until the app has drawn that screen (SassApp.first_screen_drawn).
     gc.disable()
-    from sass_tui.model.errors import SassError
-    from sass_tui.ui.app import run_app
-
     try:
-        return run_app(db)
-    except SassError as exc:  # e.g. --db '~nosuchuser/x.db'
-        print(f"sass: error: {exc}", file=sys.stderr)
-        return 2
+        from sass_tui.model.errors import SassError
+        from sass_tui.ui.app import run_app
+
+        try:
+            return run_app(db)
+        except SassError as exc:  # e.g. --db '~nosuchuser/x.db'
+            print(f"sass: error: {exc}", file=sys.stderr)
+            return 2
+    finally:
+        gc.enable()  # also when the app ended before its first screen
 
 
 def run_verb(args: argparse.Namespace) -> int:
