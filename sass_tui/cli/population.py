@@ -91,9 +91,9 @@ def _read_ids(name: str) -> list[int]:
 
     if name == "-":
         return parse_id_list(sys.stdin.read(), "standard input")
-    from sass_tui.model.paths import user_path
+    from sass_tui.model.paths import regular_file
 
-    path = user_path(name)
+    path = regular_file(name)  # not a FIFO, which would block the read
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:

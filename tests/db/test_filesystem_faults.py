@@ -15,7 +15,7 @@ import sqlite3
 from pathlib import Path
 
 import pytest
-from _tmpfs import build_small_db, fill, mounted_tmpfs, remount_read_only
+from _tmpfs import fill, mounted_tmpfs, remount_read_only
 
 from sass_tui.cli import main
 from sass_tui.db.default import shipped_ansur_files
@@ -25,25 +25,11 @@ from sass_tui.db.schema import connect
 PERSON = "99907,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
 
 
-@pytest.fixture(scope="module")
-def small_db_file(tmp_path_factory) -> Path:
-    return build_small_db(tmp_path_factory.mktemp("small") / "small.db")
-
-
 @pytest.fixture()
 def person_file(tmp_path) -> Path:
     path = tmp_path / "person.db"
     path.write_text(PERSON)
     return path
-
-
-@pytest.fixture()
-def tmpfs_with_db(tmp_path, small_db_file):
-    """A tmpfs (the database's size + 2 MB) holding a copy of the small database."""
-    with mounted_tmpfs(tmp_path / "mnt", small_db_file.stat().st_size + 2 * 1024 * 1024) as mnt:
-        db = mnt / "sass.db"
-        db.write_bytes(small_db_file.read_bytes())
-        yield mnt, db
 
 
 def _digest(path: Path) -> str:

@@ -9,26 +9,13 @@ import hashlib
 from pathlib import Path
 
 import pytest
-from _tmpfs import build_small_db, fill, mounted_tmpfs, remount_read_only
+from _tmpfs import fill, remount_read_only
 from textual import events
 
 from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_screen import ListSheet, QueryScreen
 
 SIZE = (120, 40)
-
-
-@pytest.fixture(scope="module")
-def small_db_file(tmp_path_factory) -> Path:
-    return build_small_db(tmp_path_factory.mktemp("small") / "small.db")
-
-
-@pytest.fixture()
-def tmpfs_with_db(tmp_path, small_db_file):
-    with mounted_tmpfs(tmp_path / "mnt", small_db_file.stat().st_size + 2 * 1024 * 1024) as mnt:
-        db = mnt / "sass.db"
-        db.write_bytes(small_db_file.read_bytes())
-        yield mnt, db
 
 
 @pytest.fixture()

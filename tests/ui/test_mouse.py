@@ -3,6 +3,7 @@ it; the wheel pages the data section and the query list."""
 
 from __future__ import annotations
 
+from test_query_screen import open_query_screen
 from textual import events
 
 from sass_tui.ui.app import SassApp
@@ -94,16 +95,12 @@ async def wheel(pilot, selector: str, event_class) -> None:
 
 
 def test_the_wheel_pages_the_query_list(drive, db):
-    from sass_tui.ui.query_screen import ListSheet, QueryScreen
+    from sass_tui.ui.query_screen import ListSheet
 
     async def scenario():
         app = SassApp(db_path=db)
         async with app.run_test(size=(120, 40)) as pilot:
-            await pilot.press("d")
-            await app.workers.wait_for_complete()
-            await pilot.pause()
-            screen = app.screen
-            assert isinstance(screen, QueryScreen)
+            screen = await open_query_screen(pilot)
             screen.start_query("stature > 0")
             await app.workers.wait_for_complete()
             await pilot.pause()

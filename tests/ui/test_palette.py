@@ -3,6 +3,7 @@ of the screen shown."""
 
 from __future__ import annotations
 
+from test_query_screen import open_query_screen
 from textual.command import CommandPalette
 from textual.widgets import DataTable
 
@@ -221,9 +222,7 @@ def test_on_the_query_builder_pop_up_the_palette_lists_its_own_commands(drive, d
     async def scenario():
         app = SassApp(db_path=db)
         async with app.run_test(size=(120, 40)) as pilot:
-            await pilot.press("d")
-            await app.workers.wait_for_complete()
-            await pilot.pause()
+            await open_query_screen(pilot)
             await pilot.press("d", "b")
             await pilot.pause()
             builder = app.screen
