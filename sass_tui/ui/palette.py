@@ -295,6 +295,7 @@ class HelpScreen(ModalScreen[None]):
         super().__init__()
         self.commands = commands
         self.help_title = title
+        self._filled_for = -1  # the screen width the table was laid out for
 
     def compose(self):
         with Vertical() as box:
@@ -312,6 +313,9 @@ class HelpScreen(ModalScreen[None]):
     def _fill(self, screen_width: int) -> None:
         """One row a command; "What it does" wraps within the box (at 80
         columns it would otherwise be cut off at the right)."""
+        if screen_width == self._filled_for:
+            return  # the mount and the first resize give the same width
+        self._filled_for = screen_width
         table = self.query_one(DataTable)
         keys = [", ".join(key_name(k) for k in command.keys) for command in self.commands]
         key_width = max(map(len, keys), default=3)
