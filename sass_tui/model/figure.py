@@ -2,6 +2,11 @@
 
 Values are kept in canonical units (cm, deg, kg); each group also has a
 display unit the user can switch (cm|in, deg|rad).  No Textual import here.
+
+A group's values at its percentile (the default figure, a new group
+percentile, a new gender) are computed in plain floats: the TUI's first
+screen is drawn before numpy is imported (issue 16).  They become a numpy
+array when something asks for the array (a cell edit, an export).
 """
 
 from __future__ import annotations
@@ -9,8 +14,7 @@ from __future__ import annotations
 import copy
 import math
 from dataclasses import dataclass, field
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
@@ -25,7 +29,13 @@ from sass_tui.model.names import (
     ROWS,
     Row,
 )
-from sass_tui.model.percentile import check_percentile, percentile_of, value_at
+from sass_tui.model.percentile import (
+    cell_percentile_of,
+    cell_value_at,
+    check_percentile,
+    percentile_of,
+    value_at,
+)
 from sass_tui.model.popfile import (
     PopulationData,
     check_center_of_mass_rules,
@@ -33,6 +43,12 @@ from sass_tui.model.popfile import (
 )
 from sass_tui.model.units import GROUP_UNITS
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS, HANDEDNESS, STRENGTH_TYPES
+
+if TYPE_CHECKING:
+    import numpy as np
+
+# A group's (rows, 3 axes) cells in plain floats, before numpy is wanted.
+Grid = list[list[float]]
 
 # A stature outside these is a typing error (2 for 200, metres for cm), not a person.
 MIN_STATURE_CM = 50.0
@@ -45,18 +61,48 @@ class FigureError(ValueError, SassError):
 
 @dataclass
 class GroupState:
-    """One anthropometric group at the figure's gender."""
+    """One anthropometric group at the figure's gender.
+
+    `values` (rows, 3; canonical units, NaN = no value) and `percentiles`
+    are numpy arrays to whoever reads them; they are held as a Grid of
+    plain floats until then, and `cell` reads either without numpy."""
 
     group: str
     source: PopulationData | None = None
     percentile: float = 50.0
-    values: np.ndarray | None = None  # (rows, 3) canonical units, NaN = no value
-    percentiles: np.ndarray | None = None  # (rows, 3)
     unit: str = ""
+    _values: Grid | np.ndarray | None = None
+    _percentiles: Grid | np.ndarray | None = None
+
+    @property
+    def values(self) -> np.ndarray | None:
+        if isinstance(self._values, list):
+            self._values = _array(self._values)
+        return self._values
+
+    @values.setter
+    def values(self, values: Grid | np.ndarray | None) -> None:
+        self._values = values
+
+    @property
+    def percentiles(self) -> np.ndarray | None:
+        if isinstance(self._percentiles, list):
+            self._percentiles = _array(self._percentiles)
+        return self._percentiles
+
+    @percentiles.setter
+    def percentiles(self, percentiles: Grid | np.ndarray | None) -> None:
+        self._percentiles = percentiles
+
+    def cell(self, row: int, axis: int) -> tuple[float, float]:
+        """One cell's (value, percentile); the group is loaded."""
+        values, percentiles = self._values, self._percentiles
+        assert values is not None and percentiles is not None, f"{self.group} not loaded"
+        return float(values[row][axis]), float(percentiles[row][axis])
 
     @property
     def loaded(self) -> bool:
-        return self.values is not None
+        return self._values is not None
 
     @property
     def rows(self) -> tuple[Row, ...]:
@@ -128,6 +174,8 @@ class Figure:
         is, so Disp. Pop. returns to it unchanged.  `strength_parameters` are
         strength_type, motion_speed, handedness, training_level, fatigue_level
         (None = keep this figure's)."""
+        import numpy as np
+
         gender = _check_choice(gender, GENDERS, "gender")
         person = Figure(
             gender=gender,
@@ -234,19 +282,19 @@ class Figure:
                 f"{state.rows[row].label} {'xyz'[axis]}: a segment size must be "
                 f"positive, got {value:g} cm"
             )
-        assert state.values is not None and state.percentiles is not None  # _cell: loaded
-        state.values[row, axis] = value
-        stats = self._stats(state)
-        state.percentiles[row, axis] = percentile_of(stats[row, axis], value)
+        values, percentiles = state.values, state.percentiles
+        assert values is not None and percentiles is not None  # _cell: loaded
+        values[row, axis] = value
+        percentiles[row, axis] = cell_percentile_of(*self._cell_stats(state, row, axis), value)
 
     def set_cell_percentile(self, group: str, row: int, axis: int, p: float) -> None:
         """Set one cell's percentile; its value follows."""
         check_percentile(p)
         state = self._cell(group, row, axis)
-        stats = self._stats(state)
-        assert state.values is not None and state.percentiles is not None  # _cell: loaded
-        state.values[row, axis] = value_at(stats[row, axis], p)
-        state.percentiles[row, axis] = p
+        values, percentiles = state.values, state.percentiles
+        assert values is not None and percentiles is not None  # _cell: loaded
+        values[row, axis] = cell_value_at(*self._cell_stats(state, row, axis), float(p))
+        percentiles[row, axis] = p
 
     def check_cell(self, group: str, row: int, axis: int) -> None:
         """Raise FigureError when the cell cannot be edited (no data, or 999)."""
@@ -271,6 +319,8 @@ class Figure:
         measures no joint limits, for one) but the population has one, the
         population's value at the group percentile.  A population figure has
         nothing to fill.  999 cells (no motion) stay NaN."""
+        import numpy as np
+
         state = self.groups[group]
         assert state.values is not None, f"{group} not loaded"  # callers check missing_groups()
         population = value_at(self._stats(state), state.percentile)
@@ -287,8 +337,7 @@ class Figure:
     def value(self, group: str, row_name: str, axis: int) -> float:
         state = self.groups[group]
         index = [r.name for r in state.rows].index(row_name)
-        assert state.values is not None, f"{group} not loaded"
-        return float(state.values[index, axis])
+        return state.cell(index, axis)[0]
 
     def missing_groups(self) -> list[str]:
         return [
@@ -312,22 +361,31 @@ class Figure:
 
     # --- internals -----------------------------------------------------------
     def _rescale(self, state: GroupState) -> None:
-        if state.source is None or not state.source.has(self.gender):
+        source = state.source
+        if source is None or not source.has(self.gender):
             state.values = state.percentiles = None
             return
-        stats = state.source.stats(self.gender)
-        state.values = value_at(stats, state.percentile)
-        state.percentiles = np.where(np.isnan(state.values), np.nan, state.percentile)
+        p = state.percentile
+        values = [
+            [cell_value_at(*source.cell(self.gender, row, axis), p) for axis in range(3)]
+            for row in range(len(state.rows))
+        ]
+        state.values = values
+        state.percentiles = [[math.nan if math.isnan(v) else p for v in row] for row in values]
 
     def _stats(self, state: GroupState) -> np.ndarray:
         assert state.source is not None, f"{state.group} not loaded"
         return state.source.stats(self.gender)
 
+    def _cell_stats(self, state: GroupState, row: int, axis: int) -> tuple[float, float, float]:
+        assert state.source is not None, f"{state.group} not loaded"
+        return state.source.cell(self.gender, row, axis)
+
     def _cell(self, group: str, row: int, axis: int) -> GroupState:
         state = self.groups[group]
         if not state.loaded:
             raise FigureError(f"{GROUP_TITLES[group]} has no {self.gender} data loaded")
-        if np.isnan(self._stats(state)[row, axis, 1]):
+        if math.isnan(self._cell_stats(state, row, axis)[1]):
             what = "no motion about this axis" if group == JOINT_LIMITS else "no value here"
             raise FigureError(f"{state.rows[row].label} {'xyz'[axis]}: {what}")
         return state
@@ -338,21 +396,27 @@ class Figure:
         self.mass = self._global_value("mass", self.mass_percentile)
         self.stature = self._global_value("stature", self.stature_percentile)
 
-    def _global_stats_row(self, name: str) -> np.ndarray:
+    def _global_stats_cell(self, name: str) -> tuple[float, float, float]:
         if self.global_stats is None or not self.global_stats.has(self.gender):
             raise FigureError(f"no {self.gender} {name} statistics loaded")
         index = [r.name for r in ROWS[GLOBAL]].index(name)
-        row: np.ndarray = self.global_stats.stats(self.gender)[index, 0]
-        return row
+        return self.global_stats.cell(self.gender, index, 0)
 
     def _global_value(self, name: str, p: float) -> float:
-        return float(value_at(self._global_stats_row(name), p))
+        check_percentile(p)
+        return cell_value_at(*self._global_stats_cell(name), float(p))
 
     def _global_percentile(self, name: str, value: float) -> float:
         try:
-            return float(percentile_of(self._global_stats_row(name), value))
+            return cell_percentile_of(*self._global_stats_cell(name), float(value))
         except FigureError:
             return float("nan")
+
+
+def _array(grid: Grid) -> np.ndarray:
+    import numpy as np
+
+    return np.array(grid, dtype=float)
 
 
 def _check_choice(value: str, choices: tuple[str, ...], what: str) -> str:

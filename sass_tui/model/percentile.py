@@ -3,19 +3,27 @@
 From the stored 5th/50th/95th percentile values of a measurement,
     v(p) = v50 + z(p) * s,   s = (v50 - v5)/z95 below the median, (v95 - v50)/z95 above,
 where z(p) is the standard normal quantile and z95 = z(95) = 1.64485...  The
-inverse uses the same pieces.  Everything works on numpy arrays whose last
-axis holds (v5, v50, v95); rows may run either way (a lower joint limit grows
-more negative with the percentile).
+inverse uses the same pieces.  Rows may run either way (a lower joint limit
+grows more negative with the percentile).
+
+The model is written once, for one cell in plain floats (`cell_value_at`,
+`cell_percentile_of`): the TUI's first screen is computed with them before
+numpy is imported (issue 16).  `value_at` and `percentile_of` apply them
+over numpy arrays whose last axis holds (v5, v50, v95), with broadcasting.
 """
 
 from __future__ import annotations
 
+import math
 from statistics import NormalDist
-
-import numpy as np
-import numpy.typing as npt
+from typing import TYPE_CHECKING
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.floats import divide
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
 
 MIN_PERCENTILE = 0.5
 MAX_PERCENTILE = 99.5
@@ -23,81 +31,111 @@ _STANDARD = NormalDist()
 # The spec writes 1.6449; the exact quantile keeps v(5) and v(95) equal to the
 # stored values to the last bit instead of to 1e-5.
 Z95 = _STANDARD.inv_cdf(0.95)
-_ppf = np.frompyfunc(_STANDARD.inv_cdf, 1, 1)
-_cdf = np.frompyfunc(_STANDARD.cdf, 1, 1)
 
 
 class PercentileError(ValueError, SassError):
     """A percentile outside 0.5-99.5, or not a number."""
 
 
+def _refuse(p: float) -> PercentileError:
+    return PercentileError(f"percentile {p:g} is outside {MIN_PERCENTILE:g}-{MAX_PERCENTILE:g}")
+
+
 def check_percentile(p: npt.ArrayLike) -> npt.ArrayLike:
+    if isinstance(p, (int, float)):  # the one percentile of an edit: no numpy
+        if not MIN_PERCENTILE <= p <= MAX_PERCENTILE:
+            raise _refuse(float(p))
+        return p
+    import numpy as np
+
     arr = np.asarray(p, dtype=float)
     bad = ~((arr >= MIN_PERCENTILE) & (arr <= MAX_PERCENTILE))
     if np.any(bad):
-        first = arr[bad].flat[0] if arr.ndim else float(arr)
-        raise PercentileError(
-            f"percentile {first:g} is outside {MIN_PERCENTILE:g}-{MAX_PERCENTILE:g}"
-        )
+        raise _refuse(arr[bad].flat[0] if arr.ndim else float(arr))
     return p
 
 
 def z_score(p: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Standard normal quantile of percentile(s) p (0.5-99.5)."""
+    import numpy as np
+
     arr = np.asarray(p, dtype=float)
     if arr.ndim == 0:
         return np.float64(_STANDARD.inv_cdf(float(arr) / 100.0))
-    return np.asarray(_ppf(arr / 100.0), dtype=float)
+    return np.asarray(np.frompyfunc(_STANDARD.inv_cdf, 1, 1)(arr / 100.0), dtype=float)
+
+
+def cell_value_at(v5: float, v50: float, v95: float, p: float) -> float:
+    """The value at percentile p (0.5-99.5, checked by the caller) of one
+    cell; NaN (no value) stays NaN."""
+    # Exact at the stored percentiles, whatever rounding the arithmetic does.
+    if p == 5.0:
+        return v5
+    if p == 50.0:
+        return v50
+    if p == 95.0:
+        return v95
+    z = _STANDARD.inv_cdf(p / 100.0)
+    spread = (v50 - v5 if z < 0 else v95 - v50) / Z95
+    return v50 + z * spread
+
+
+def cell_percentile_of(v5: float, v50: float, v95: float, value: float) -> float:
+    """The percentile of one value against one cell's statistics (the inverse
+    of cell_value_at).
+
+    Not clipped to 0.5-99.5: a real person can lie outside it.  NaN where it
+    is undefined: no stored value, or a degenerate row (all three equal) with
+    a value other than that one.  A degenerate row's own value is at the 50th.
+    """
+    # Exact at the stored percentiles (the 95th first, as a row whose 5th
+    # and 95th are equal has always given).
+    if value == v95 and v95 != v50:
+        return 95.0
+    if value == v5 and v5 != v50:
+        return 5.0
+    if math.isnan(v50) or math.isnan(value):
+        return math.nan
+    diff = value - v50
+    if diff == 0:
+        return 50.0
+    # The piece on which the value lies: z <= 0 on the lower, z >= 0 on the
+    # upper piece.  Either can serve a non-monotonic row; prefer the lower.
+    z_lower = divide(diff, (v50 - v5) / Z95)
+    z_upper = divide(diff, (v95 - v50) / Z95)
+    if math.isfinite(z_lower) and z_lower <= 0:
+        z = z_lower
+    elif math.isfinite(z_upper) and z_upper >= 0:
+        z = z_upper
+    else:
+        return math.nan
+    return _STANDARD.cdf(z) * 100.0
 
 
 def value_at(stats: npt.NDArray[np.float64], p: npt.ArrayLike) -> npt.NDArray[np.float64]:
-    """Values at percentile p.  stats[..., 0:3] = (v5, v50, v95); p broadcasts
-    against stats[..., 0].  NaN (no value) stays NaN."""
+    """Values at percentile p over an array.  stats[..., 0:3] = (v5, v50,
+    v95); p broadcasts against stats[..., 0]."""
+    import numpy as np
+
     check_percentile(p)
-    v5, v50, v95 = stats[..., 0], stats[..., 1], stats[..., 2]
-    p = np.asarray(p, dtype=float)
-    z = z_score(p)
-    spread = np.where(z < 0, v50 - v5, v95 - v50) / Z95
-    out = v50 + z * spread
-    # Exact at the stored percentiles, whatever rounding the arithmetic does.
-    out = np.where(p == 5.0, v5, out)
-    out = np.where(p == 50.0, v50, out)
-    return np.where(p == 95.0, v95, out)
+    stats = np.asarray(stats, dtype=float)
+    # The flags the cells' float arithmetic raises (NaN compared) are not errors.
+    with np.errstate(all="ignore"):
+        cells = np.frompyfunc(cell_value_at, 4, 1)(stats[..., 0], stats[..., 1], stats[..., 2], p)
+    return np.asarray(cells, dtype=float)
 
 
 def percentile_of(
     stats: npt.NDArray[np.float64], value: npt.ArrayLike
 ) -> npt.NDArray[np.float64] | np.float64:
-    """Percentile of value(s) against stats (the inverse of value_at).
+    """Percentiles of value(s) against stats, over an array (see
+    cell_percentile_of); a 0-d result is a numpy float."""
+    import numpy as np
 
-    The result is not clipped to 0.5-99.5: a real person can lie outside it.
-    NaN where it is undefined: no stored value, or a degenerate row (all three
-    equal) with a value other than that one.  A degenerate row's own value is
-    at the 50th percentile.
-    """
-    v5, v50, v95 = stats[..., 0], stats[..., 1], stats[..., 2]
-    value = np.asarray(value, dtype=float)
-    diff = value - v50
-    lower, upper = (v50 - v5) / Z95, (v95 - v50) / Z95
-    with np.errstate(divide="ignore", invalid="ignore"):
-        z_lower = diff / lower
-        z_upper = diff / upper
-    # Take the piece on which the value lies: z <= 0 on the lower, z >= 0 on the
-    # upper piece.  Either can serve a non-monotonic row; prefer the lower.
-    z = np.where(
-        np.isfinite(z_lower) & (z_lower <= 0),
-        z_lower,
-        np.where(np.isfinite(z_upper) & (z_upper >= 0), z_upper, np.nan),
-    )
-    z = np.where(diff == 0, 0.0, z)
-    z = np.where(np.isnan(v50) | np.isnan(value), np.nan, z)
-    flat = np.atleast_1d(z).astype(float)
-    out = np.full(flat.shape, np.nan)
-    ok = np.isfinite(flat)
-    if ok.any():
-        out[ok] = _cdf(flat[ok]).astype(float) * 100.0
-    out = out.reshape(np.shape(z))
-    # Exact at the stored percentiles.
-    out = np.where((value == v5) & (v5 != v50), 5.0, out)
-    out = np.where((value == v95) & (v95 != v50), 95.0, out)
+    stats = np.asarray(stats, dtype=float)
+    with np.errstate(all="ignore"):  # as value_at
+        cells = np.frompyfunc(cell_percentile_of, 4, 1)(
+            stats[..., 0], stats[..., 1], stats[..., 2], np.asarray(value, dtype=float)
+        )
+    out = np.asarray(cells, dtype=float)
     return out if out.ndim else np.float64(out)

@@ -14,14 +14,15 @@ warnings and loading goes on.
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.floats import divide, median
 from sass_tui.model.names import (
     AXES,
     AXES_OF,
@@ -36,6 +37,9 @@ from sass_tui.model.names import (
 )
 from sass_tui.model.units import UnitError, finite_number
 from sass_tui.model.vocabulary import GENDERS
+
+if TYPE_CHECKING:
+    import numpy as np
 
 NO_VALUE = 999.0
 
@@ -57,19 +61,39 @@ class PopulationFileError(ValueError, SassError):
     """The file breaks the format; nothing of it was loaded."""
 
 
+# One gender's statistics as a file gives them: per row, per axis, the
+# (5th, 50th, 95th) values; NaN = no value.
+Cells = list[list[tuple[float, float, float]]]
+
+
 @dataclass
 class PopulationData:
-    """One group's statistics: per gender an array (rows, 3 axes, 3 percentiles)."""
+    """One group's statistics: per gender (rows, axes, 3 percentiles).
+
+    A file's are read into plain floats (`Cells`), so that the TUI's first
+    screen is computed before numpy is imported (issue 16); `stats` turns them
+    into the array once, on first use.  A population made from the database
+    sets the array itself."""
 
     group: str
     title: str
     path: str
-    sections: dict[str, np.ndarray] = field(default_factory=dict)
+    sections: dict[str, Cells | np.ndarray] = field(default_factory=dict)
     lines: dict[str, list[int]] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
 
     def stats(self, gender: str) -> np.ndarray:
-        return self.sections[gender]
+        section = self.sections[gender]
+        if isinstance(section, list):
+            import numpy as np
+
+            section = self.sections[gender] = np.array(section, dtype=float)
+        return section
+
+    def cell(self, gender: str, row: int, axis: int) -> tuple[float, float, float]:
+        """One cell's (5th, 50th, 95th) values, without numpy."""
+        v5, v50, v95 = self.sections[gender][row][axis]
+        return float(v5), float(v50), float(v95)
 
     def has(self, gender: str) -> bool:
         return gender in self.sections
@@ -206,10 +230,10 @@ def _place_rows(
     name: str,
     section_line: int,
     warnings: list[str],
-) -> tuple[np.ndarray, list[int]]:
+) -> tuple[Cells, list[int]]:
     rows = ROWS[group]
     n = len(rows)
-    stats = np.full((n, AXES_OF[group], 3), np.nan)
+    stats: Cells = [[] for _ in range(n)]
     filled: dict[int, int] = {}
     for position, (lineno, values, label) in enumerate(entries):
         index = lookup.get(normalise_label(label)) if label else None
@@ -232,9 +256,10 @@ def _place_rows(
                 f"(first at line {filled[index]}); this later row is used"
             )
         filled[index] = lineno
-        arr = np.array(values).reshape(AXES_OF[group], 3)
-        arr[arr == NO_VALUE] = np.nan
-        stats[index] = arr
+        cells = [math.nan if v == NO_VALUE else v for v in values]
+        stats[index] = [
+            (cells[a], cells[a + 1], cells[a + 2]) for a in range(0, 3 * AXES_OF[group], 3)
+        ]
     if len(entries) != n:
         warnings.append(
             f"{name}:{section_line}: T {gender.upper()} has {len(entries)} rows; expected {n}"
@@ -253,11 +278,11 @@ def _place_rows(
 def _check_rows(data: PopulationData, name: str) -> None:
     """Warn about rows that load but look wrong (spec §2)."""
     rows = ROWS[data.group]
-    for gender, stats in data.sections.items():
+    for gender in data.sections:
         for i, row in enumerate(rows):
             for a, axis in enumerate(AXES[: AXES_OF[data.group]]):
-                v5, v50, v95 = stats[i, a]
-                if np.isnan([v5, v50, v95]).any():
+                v5, v50, v95 = data.cell(gender, i, a)
+                if math.isnan(v5) or math.isnan(v50) or math.isnan(v95):
                     continue
                 where = f"{name}:{data.lines[gender][i]}: {row.label}"
                 if AXES_OF[data.group] > 1:
@@ -267,7 +292,7 @@ def _check_rows(data: PopulationData, name: str) -> None:
                         f"{where}: 50th value {v50:g} is not between the 5th ({v5:g}) "
                         f"and the 95th ({v95:g})"
                     )
-                signs = [np.sign(v) for v in (v5, v50, v95) if v != 0]
+                signs = [math.copysign(1.0, v) for v in (v5, v50, v95) if v != 0]
                 if len(signs) == 3 and len(set(signs)) > 1:
                     odd = ("5th", "50th", "95th")[signs.index(min(set(signs), key=signs.count))]
                     data.warnings.append(
@@ -296,39 +321,30 @@ def _check_cross_gender(data: PopulationData, name: str) -> None:
     against the median ratio of its axis."""
     if data.group != GIRTH or not (data.has("male") and data.has("female")):
         return
-    male, female = data.stats("male")[..., 1], data.stats("female")[..., 1]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        ratio = np.where(male > 0, female / male, np.nan)
+    rows, axes = range(len(ROWS[GIRTH])), range(len(AXES))
+
+    def ratio(i: int, a: int) -> float:
+        male, female = data.cell("male", i, a)[1], data.cell("female", i, a)[1]
+        return female / male if male > 0 else math.nan
+
+    ratios = [[ratio(i, a) for a in axes] for i in rows]
     # Per axis over the finite ratios.
-    median = np.array([_median(column[np.isfinite(column)]) for column in ratio.T])
+    medians = [median([r[a] for r in ratios if math.isfinite(r[a])]) for a in axes]
     for i, row in enumerate(ROWS[GIRTH]):
         for a, axis in enumerate(AXES):
-            relative = ratio[i, a] / median[a]
-            if np.isnan(relative) or 1 / CROSS_GENDER_LIMIT <= relative <= CROSS_GENDER_LIMIT:
+            relative = divide(ratios[i][a], medians[a])
+            if math.isnan(relative) or 1 / CROSS_GENDER_LIMIT <= relative <= CROSS_GENDER_LIMIT:
                 continue
             data.warnings.append(
                 f"{name}:{data.lines['female'][i]}: {row.label} {axis}: the female values "
-                f"({_three(data.stats('female')[i, a])}) are {ratio[i, a]:.2f} times the male "
-                f"({_three(data.stats('male')[i, a])}) where the {axis} of the other "
-                f"rows are {median[a]:.2f} times; a misprint? (docs/model.md, "
+                f"({_three(data.cell('female', i, a))}) are {ratios[i][a]:.2f} times the male "
+                f"({_three(data.cell('male', i, a))}) where the {axis} of the other "
+                f"rows are {medians[a]:.2f} times; a misprint? (docs/model.md, "
                 "suspected misprints)"
             )
 
 
-def _median(values: np.ndarray) -> float:
-    """np.median of a 1-d array without NaN (nan if empty), which np.median
-    and np.nanmedian cannot give without importing numpy.ma (their NaN check
-    asks np.ma.isMaskedArray): 25 ms of every `sass fig`."""
-    ordered = np.sort(values)
-    middle = len(ordered) // 2
-    if not len(ordered):
-        return float("nan")
-    if len(ordered) % 2:
-        return float(ordered[middle])
-    return float((ordered[middle - 1] + ordered[middle]) / 2)
-
-
-def _three(values: np.ndarray) -> str:
+def _three(values: tuple[float, ...] | list[float]) -> str:
     return "/".join(f"{v:g}" for v in values)
 
 
@@ -369,25 +385,29 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
     def where(data: PopulationData, gender: str, index: int, group: str, axis: str) -> str:
         return f"{data.path}:{data.lines[gender][index]}: {ROWS[group][index].label} {axis}"
 
+    # Plain floats, three percentiles each (the first screen's files are
+    # checked before numpy is imported).
     if all(cmass.has(g) and girth.has(g) for g in ("male", "female")):
         for row, parts in SCALED_BY_LENGTH.items():
             i = com_rows[row]
             lengths = {
-                g: sum(girth.stats(g)[girth_rows[part], 2] for part in parts)
+                g: [sum(girth.cell(g, girth_rows[part], 2)[k] for part in parts) for k in range(3)]
                 for g in ("male", "female")
             }
-            expected = cmass.stats("male")[i, 2] * lengths["female"] / lengths["male"]
-            actual = cmass.stats("female")[i, 2]
-            with np.errstate(divide="ignore", invalid="ignore"):
-                q = actual / expected
-            if np.isnan(q).any():
+            male = cmass.cell("male", i, 2)
+            expected = [
+                divide(male[k] * lengths["female"][k], lengths["male"][k]) for k in range(3)
+            ]
+            actual = cmass.cell("female", i, 2)
+            q = [divide(actual[k], expected[k]) for k in range(3)]
+            if any(math.isnan(v) for v in q):
                 continue
             for k in range(3):
-                if abs(q[k] - 1) > RULE_TOLERANCE and abs(q[k] - _median(q)) > RULE_TOLERANCE:
+                if abs(q[k] - 1) > RULE_TOLERANCE and abs(q[k] - median(q)) > RULE_TOLERANCE:
                     out.append(
                         f"{where(cmass, 'female', i, CENTER_OF_MASS, 'z')}: the {percentiles[k]} "
                         f"value {actual[k]:g} is not what appendix L.1's scaling rule gives "
-                        f"(male {cmass.stats('male')[i, 2, k]:g} x female length "
+                        f"(male {male[k]:g} x female length "
                         f"{lengths['female'][k]:g} / male {lengths['male'][k]:g} = "
                         f"{expected[k]:.1f}), though the other percentiles follow it; "
                         "a misprint? (docs/model.md, suspected misprints)"
@@ -397,21 +417,27 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
             continue
         for side in ("right", "left"):
             i = com_rows[f"{side}_lower_leg"]
-            actual = cmass.stats(gender)[i, 2]
-            expected = LOWER_LEG_FRACTION * girth.stats(gender)[girth_rows[f"{side}_lower_leg"], 2]
+            actual = cmass.cell(gender, i, 2)
+            leg = girth.cell(gender, girth_rows[f"{side}_lower_leg"], 2)
+            expected = [LOWER_LEG_FRACTION * leg[k] for k in range(3)]
             for k in range(3):
-                if abs(actual[k] / expected[k] - 1) > RULE_TOLERANCE:
+                if abs(divide(actual[k], expected[k]) - 1) > RULE_TOLERANCE:
                     out.append(
                         f"{where(cmass, gender, i, CENTER_OF_MASS, 'z')}: the {percentiles[k]} "
                         f"value {actual[k]:g} is not appendix L.1's 0.44 x lower leg length "
                         f"({expected[k]:.1f})"
                     )
-            foot_x = girth.stats(gender)[girth_rows[f"{side}_foot"], 0]
+            foot_x = girth.cell(gender, girth_rows[f"{side}_foot"], 0)
             toes_row = girth_rows[f"{side}_ball_of_foot"]
-            toes_x = girth.stats(gender)[toes_row, 0]
-            foot_com = cmass.stats(gender)[com_rows[f"{side}_foot"], 0]
-            implied = (foot_com + HEEL_BEHIND_ANKLE * foot_x) / FOOT_FRACTION - foot_x
-            off = [k for k in range(3) if abs(toes_x[k] / implied[k] - 1) > IMPLIED_TOLERANCE]
+            toes_x = girth.cell(gender, toes_row, 0)
+            foot_com = cmass.cell(gender, com_rows[f"{side}_foot"], 0)
+            implied = [
+                (foot_com[k] + HEEL_BEHIND_ANKLE * foot_x[k]) / FOOT_FRACTION - foot_x[k]
+                for k in range(3)
+            ]
+            off = [
+                k for k in range(3) if abs(divide(toes_x[k], implied[k]) - 1) > IMPLIED_TOLERANCE
+            ]
             if off:
                 out.append(
                     f"{where(girth, gender, toes_row, GIRTH, 'x')}: {_three(toes_x)}, but "
@@ -431,7 +457,7 @@ def write_population_file(data: PopulationData, path: str | Path) -> None:
     lines = [f"C {data.title}"]
     for gender, stats in data.sections.items():
         lines += ["C", f"T {gender.upper()}"]
-        for row, values in zip(ROWS[data.group], stats):
-            flat = [NO_VALUE if np.isnan(v) else v for v in values.ravel()]
+        for row, cells in zip(ROWS[data.group], stats):
+            flat = [NO_VALUE if math.isnan(v) else v for cell in cells for v in cell]
             lines.append(" " + " ".join(f"{v:8g}" for v in flat) + f"  /* {row.label} */")
     write_text_atomic(path, "\n".join(lines) + "\n")

@@ -12,11 +12,13 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from typing import TypeVar
+from typing import TYPE_CHECKING, TypeVar
 
 from sass_tui.model.figure import Figure
 from sass_tui.model.popfile import PopulationData
-from sass_tui.model.strength import StrengthData, StrengthRow, StrengthSheet
+
+if TYPE_CHECKING:  # numpy-heavy: the TUI makes its strength sheet after the first screen
+    from sass_tui.model.strength import StrengthData, StrengthRow, StrengthSheet
 
 JOURNAL_LENGTH = 100
 T = TypeVar("T")
@@ -31,19 +33,66 @@ class JournalEntry:
 
 
 class Session:
-    def __init__(self, population: Figure, strength_sheet: StrengthSheet | None = None) -> None:
+    def __init__(
+        self,
+        population: Figure,
+        strength_sheet: StrengthSheet | None = None,
+        *,
+        strength_later: Callable[[], StrengthSheet | None] | None = None,
+    ) -> None:
+        """`strength_later` makes the population's strength sheet when it is
+        first asked for, instead of `strength_sheet` now: the TUI draws its
+        first screen before the strength data are read (issue 16)."""
         self.population = population
         self.person: Figure | None = None
         self.person_index = 0
-        self.strength_sheet = strength_sheet
+        self._strength_later = strength_later
+        self._strength_sheet = strength_sheet
         # The population's sheet, shown again after a person's own (Disp. Pop.).
-        self.population_strength = strength_sheet
+        self._population_strength = strength_sheet
         # Why a person shown has no strength (None: the sheet is shown).
         self.strength_missing: str | None = None
         if strength_sheet is not None:
             strength_sheet.figure = population
         self.warnings: list[str] = []
         self._journal: list[JournalEntry] = []
+
+    # --- the strength sheets, made on first use with strength_later ------------
+    @property
+    def strength_sheet(self) -> StrengthSheet | None:
+        """The sheet shown: the population's, or a person's own."""
+        self.make_strength_sheet()
+        return self._strength_sheet
+
+    @strength_sheet.setter
+    def strength_sheet(self, sheet: StrengthSheet | None) -> None:
+        self.make_strength_sheet()
+        self._strength_sheet = sheet
+
+    @property
+    def population_strength(self) -> StrengthSheet | None:
+        self.make_strength_sheet()
+        return self._population_strength
+
+    @population_strength.setter
+    def population_strength(self, sheet: StrengthSheet | None) -> None:
+        self.make_strength_sheet()
+        self._population_strength = sheet
+
+    def made_strength_sheet(self) -> StrengthSheet | None:
+        """The sheet shown if it has been made, without making it (what the
+        first screen shows of it is what a new sheet shows: the right side)."""
+        return self._strength_sheet
+
+    def make_strength_sheet(self) -> None:
+        """Make the population's strength sheet now, if it is still to be made."""
+        make, self._strength_later = self._strength_later, None
+        if make is None:
+            return
+        sheet = make()
+        if sheet is not None:
+            sheet.figure = self.figure
+        self._strength_sheet = self._population_strength = sheet
 
     @property
     def figure(self) -> Figure:
@@ -56,7 +105,8 @@ class Session:
         del self._journal[:-JOURNAL_LENGTH]
 
     def _live(self, entry: JournalEntry) -> bool:
-        return entry.target is self.figure or entry.target is self.strength_sheet
+        # The sheet as it stands: an entry for it exists only once it is made.
+        return entry.target is self.figure or entry.target is self._strength_sheet
 
     def can_undo(self) -> bool:
         return any(self._live(entry) for entry in self._journal)
@@ -138,6 +188,8 @@ class Session:
     def load_strength(self, data: StrengthData) -> StrengthSheet:
         """A new strength file: the view settings (side, unit, percentile,
         factor) survive; the angles are the new file's."""
+        from sass_tui.model.strength import StrengthSheet
+
         sheet = StrengthSheet(data, self.figure)
         old = self.strength_sheet
         if old is not None:
@@ -170,6 +222,8 @@ class Session:
         if isinstance(own_strength, str):
             self.strength_sheet, self.strength_missing = None, own_strength
         elif own_strength is not None:
+            from sass_tui.model.strength import StrengthSheet
+
             sheet = StrengthSheet(own_strength, person)
             shown = self.population_strength
             if shown is not None:

@@ -18,12 +18,12 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.paths import user_path
 from sass_tui.model.session import Session
-from sass_tui.model.strength import StrengthError, StrengthSheet, read_strength_file
 from sass_tui.ui.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
 
 if TYPE_CHECKING:  # the database costs start-up time: imported when first used
     from sass_tui.db.individual import Individual
     from sass_tui.db.lists import QueryLists
+    from sass_tui.model.strength import StrengthSheet
     from sass_tui.ui.query_screen import DatabaseOpened
 
 
@@ -46,8 +46,12 @@ class SassApp(App):
         # None = $SASS_DB or the user's data directory, created on first Query.
         self.db_path = user_path(db_path) if db_path else None
         figure = figure or Figure.default()
-        sheet, self.strength_error = self._load_strength(figure, strength_path)
-        self.session = Session(figure, sheet)
+        self._strength_error = STRENGTH_NOT_LOADED
+        # The strength sheet (numpy, ~10 ms) is made once the first screen is
+        # drawn (first_screen_drawn), or earlier if something asks for it.
+        self.session = Session(
+            figure, strength_later=lambda: self._make_strength_sheet(figure, strength_path)
+        )
         self.query_lists: QueryLists | None = None  # opened by the query screen
         # The population percentile laid over the figure view (None: none);
         # chosen on the figure screen, drawn there and by the spreadsheet's panel.
@@ -73,19 +77,27 @@ class SassApp(App):
         if problem:
             self.notify(f"The theme is not remembered: {problem}", severity="warning")
 
-    @staticmethod
-    def _load_strength(figure: Figure, path: str | Path | None) -> tuple[StrengthSheet | None, str]:
-        """At start-up, before the first screen: ~25 ms (docs/performance.md).
-        None = datasets/strength.dat."""
+    @property
+    def strength_error(self) -> str:
+        """What to say when the strength sheet is asked for and there is none."""
+        self.session.make_strength_sheet()
+        return self._strength_error
+
+    def _make_strength_sheet(self, figure: Figure, path: str | Path | None) -> StrengthSheet | None:
+        """The population's strength sheet from `path` (None =
+        datasets/strength.dat), or None and why in strength_error."""
+        from sass_tui.model.strength import StrengthError, StrengthSheet, read_strength_file
+
         try:
             sheet = StrengthSheet(read_strength_file(path), figure)
         except (SassError, OSError) as exc:
-            return None, f"Strength data is not loaded ({exc}); SASS runs without it."
+            self._strength_error = f"Strength data is not loaded ({exc}); SASS runs without it."
+            return None
         try:
             sheet.rows()  # fits the equations now rather than on the first 's'
         except StrengthError:
             pass  # no data for this gender: the page says so when shown
-        return sheet, STRENGTH_NOT_LOADED
+        return sheet
 
     # --- quitting -------------------------------------------------------------
     QUIT_AGAIN_S = 3.0  # a second q within this long quits
@@ -106,12 +118,14 @@ class SassApp(App):
             self.notify("There are edits that would be lost: press q again to quit.")
 
     def get_default_screen(self) -> SpreadsheetScreen:
-        return SpreadsheetScreen(self.session, self.strength_error)
+        return SpreadsheetScreen(self.session)
 
     def first_screen_drawn(self) -> None:
-        """The spreadsheet is on the terminal: the collector, held off while
-        starting (cli.run_tui), runs again; what the start made is frozen out
-        of its walks, since it lives as long as the app."""
+        """The spreadsheet is on the terminal: the strength sheet is made (if
+        nothing has asked for it yet); the collector, held off while starting
+        (cli.run_tui), runs again; what the start made is frozen out of its
+        walks, since it lives as long as the app."""
+        self.session.make_strength_sheet()
         if not gc.isenabled():
             gc.freeze()
             gc.enable()

@@ -24,7 +24,6 @@ from textual.message import Message
 from textual.widgets import Footer
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.figfile import default_fig_name, render_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import (
     AXES,
@@ -38,14 +37,6 @@ from sass_tui.model.names import (
 from sass_tui.model.paths import regular_file, user_path
 from sass_tui.model.popfile import PopulationData, read_population_file
 from sass_tui.model.session import Session
-from sass_tui.model.strength import (
-    DEFAULT_NON_DOMINANT_FACTOR,
-    JOINT_AXIS_LABELS,
-    MOTIONS,
-    StrengthData,
-    fig_section,
-    read_strength_file,
-)
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, other_unit, parse_quantity
 from sass_tui.model.vocabulary import STRENGTH_PARAMETERS
 from sass_tui.ui.base import SassScreen
@@ -72,8 +63,9 @@ from sass_tui.ui.widgets import (
     global_text,
 )
 
-if TYPE_CHECKING:  # numpy-heavy: imported on the first Predict
+if TYPE_CHECKING:  # numpy-heavy: imported when first used, after the first screen (issue 16)
     from sass_tui.model.prediction import Prediction, Predictor
+    from sass_tui.model.strength import StrengthData
 
 FIRST_MESSAGE = "Press left-mouse to select items."
 GROUP_KEYS = ((GIRTH, "g"), (JOINT_LIMITS, "j"), (CENTER_OF_MASS, "m"), (STRENGTH, "s"))
@@ -174,10 +166,9 @@ class SpreadsheetScreen(SassScreen):
 
     COMMAND_SPECS = COMMANDS  # the menu's: the palette names these commands by them
 
-    def __init__(self, session: Session, strength_error: str = STRENGTH_NOT_LOADED) -> None:
+    def __init__(self, session: Session) -> None:
         super().__init__(id="spreadsheet")
         self.session = session
-        self.strength_error = strength_error
         self.data_group = GIRTH
         self._warning_index = 0
         self._covered = False  # another screen has been pushed over this one
@@ -290,7 +281,14 @@ class SpreadsheetScreen(SassScreen):
         return self.session.figure
 
     @property
+    def strength_error(self) -> str:
+        return self.sass_app.strength_error
+
+    @property
     def strength_percentile(self) -> float | None:
+        """The strength page's percentile: the global panel shows it on that page."""
+        if self.data_group != STRENGTH:
+            return None
         sheet = self.session.strength_sheet
         return sheet.percentile if sheet is not None else None
 
@@ -302,7 +300,10 @@ class SpreadsheetScreen(SassScreen):
         self.refresh_bindings()
         if self.data_group != STRENGTH:
             self.sheet.show_group(self.figure, self.data_group)
-        self.strength_page.show_sheet(self.session.strength_sheet, self.session.strength_missing)
+        else:  # hidden on the other pages (and the sheet made after the first screen)
+            self.strength_page.show_sheet(
+                self.session.strength_sheet, self.session.strength_missing
+            )
         self.redraw_figure_panel()
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
@@ -469,6 +470,8 @@ class SpreadsheetScreen(SassScreen):
         what = "strength data" if group == STRENGTH else GROUP_TITLES[group]
         try:
             if group == STRENGTH:
+                from sass_tui.model.strength import read_strength_file
+
                 self.post_message(StrengthRead(read_strength_file(path)))
             else:
                 self.post_message(PopulationRead(group, read_population_file(path, group)))
@@ -515,6 +518,8 @@ class SpreadsheetScreen(SassScreen):
         if not (self.data_group == STRENGTH and strength is not None):
             self.say("Right → Left applies to the Strength group (press s).")
             return
+        from sass_tui.model.strength import DEFAULT_NON_DOMINANT_FACTOR
+
         self.ask(
             f"Scaling factor for the non-dominant limb "
             f"(RETURN = default {DEFAULT_NON_DOMINANT_FACTOR:.3f}):",
@@ -523,6 +528,8 @@ class SpreadsheetScreen(SassScreen):
 
     # --- Create Figure --------------------------------------------------------------
     def _default_name(self) -> str:
+        from sass_tui.model.figfile import default_fig_name
+
         figure = self.figure
         return default_fig_name(figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
 
@@ -554,6 +561,8 @@ class SpreadsheetScreen(SassScreen):
             if word in ("n", "no"):
                 sections = []
             elif word in ("", "y", "yes"):
+                from sass_tui.model.strength import fig_section
+
                 sections = [fig_section(strength)]
             else:
                 raise AnswerError(f"expected y or n, got {answer.strip()!r}; nothing written")
@@ -578,6 +587,8 @@ class SpreadsheetScreen(SassScreen):
     def _write_figure(self, path: Path, sections: list) -> None:
         """Rendered here, on the UI thread: the worker gets the text, never the
         figure the user may be editing meanwhile."""
+        from sass_tui.model.figfile import render_fig
+
         figure = self.figure
         text = render_fig(figure, sections)
         filled = sum(int(figure.output_values(g)[1].sum()) for g in GROUPS)
@@ -650,14 +661,13 @@ class SpreadsheetScreen(SassScreen):
         axis, is_percentile = column // 2, bool(column % 2)
         self.figure.check_cell(group, row, axis)
         state = self.figure.groups[group]
-        values, percentiles = state.values, state.percentiles
-        assert values is not None and percentiles is not None  # check_cell: loaded
+        value, percentile = state.cell(row, axis)
         name = f"{state.rows[row].label} {AXES[axis]}"
         if is_percentile:
-            current = format_percentile(percentiles[row, axis])
+            current = format_percentile(percentile)
             prompt = f"{name} percentile [{current}]:"
         else:
-            shown = convert(values[row, axis], GROUP_UNITS[group][0], state.unit)
+            shown = convert(value, GROUP_UNITS[group][0], state.unit)
             current = format_value(shown, state.unit)
             prompt = f"{name} value [{current} {DISPLAY[state.unit]}]:"
         self.ask(
@@ -678,14 +688,13 @@ class SpreadsheetScreen(SassScreen):
                 group, row, axis, convert(typed, state.unit, GROUP_UNITS[group][0])
             )
         state = self.figure.groups[group]
-        values, percentiles, source = state.values, state.percentiles, state.source
-        assert values is not None and percentiles is not None  # the edit was accepted
+        source = state.source
         assert source is not None  # a loaded group has its population
         canonical = GROUP_UNITS[group][0]
-        shown = convert(values[row, axis], canonical, state.unit)
-        percentile = percentiles[row, axis]
+        value, percentile = state.cell(row, axis)
+        shown = convert(value, canonical, state.unit)
         if math.isnan(percentile):
-            stats = source.stats(self.figure.gender)[row, axis]
+            stats = source.cell(self.figure.gender, row, axis)
             if stats[0] == stats[1] == stats[2]:
                 flat = convert(stats[1], canonical, state.unit)
                 where = (
@@ -704,6 +713,8 @@ class SpreadsheetScreen(SassScreen):
         if sheet is None:
             self.complain(self.strength_error)
             return
+        from sass_tui.model.strength import JOINT_AXIS_LABELS, MOTIONS
+
         name = f"{sheet.side} {MOTIONS[row].label.lower()}, {JOINT_AXIS_LABELS[column].lower()}"
         current = format_angle(sheet.angles[row, column])
         self.ask(
@@ -713,6 +724,8 @@ class SpreadsheetScreen(SassScreen):
         )
 
     def _edit_angle(self, row: int, column: int, text: str) -> None:
+        from sass_tui.model.strength import JOINT_AXIS_LABELS, MOTIONS
+
         axis = JOINT_AXIS_LABELS[column].lower()
         if not text.strip():
             self.say(f"{MOTIONS[row].label} {axis} unchanged.")

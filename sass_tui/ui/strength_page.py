@@ -9,12 +9,15 @@ for with DataSheet.EditRequested and go through the screen to the Session.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from rich.text import Text
 
-from sass_tui.model.strength import StrengthError, StrengthSheet, joint_limit_range
 from sass_tui.model.vocabulary import JOINT_AXES
 from sass_tui.ui.widgets import DataSheet
+
+if TYPE_CHECKING:  # numpy-heavy: the page is hidden on the first screen (issue 16)
+    from sass_tui.model.strength import StrengthSheet
 
 ANGLE_WIDTH = 6
 VALUE_WIDTH = 8
@@ -78,6 +81,8 @@ class StrengthPage(DataSheet):
     def _limits(self, sheet) -> list[tuple[float, float]]:
         """(lower, upper) of each angle column for the shown side; the joint
         limits change with their percentile and the gender, so ask each time."""
+        from sass_tui.model.strength import StrengthError, joint_limit_range
+
         try:
             return [joint_limit_range(sheet.figure, sheet.side, axis) for axis in JOINT_AXES]
         except StrengthError:
@@ -98,6 +103,8 @@ class StrengthPage(DataSheet):
         second = Text(no_wrap=True, overflow="crop")
         if sheet is None:
             return Text("\n").join([top, Text(self.missing or "Strength data is not loaded.")])
+        from sass_tui.model.strength import StrengthError
+
         try:
             rows = sheet.rows()
         except StrengthError as exc:  # e.g. no data for this gender in the file

@@ -586,27 +586,25 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
             second.append(f"{'%':>{pct_w - 1}} ", header_style)
         lines = [top, second]
 
-        values, percentiles = state.values, state.percentiles
-        if values is None or percentiles is None:
+        if not state.loaded:
             lines.append(Text(f"No {figure.gender} data loaded for {GROUP_TITLES[self._group]}."))
             return Text("\n").join(lines)
         first = self.page * self.page_size
-        shown = convert(values, GROUP_UNITS[self._group][0], state.unit)
+        canonical = GROUP_UNITS[self._group][0]
         for index in range(first, min(first + self.page_size, self.row_count)):
             line = Text(no_wrap=True, overflow="crop")
             line.append(f"{state.rows[index].label:<{name_w}}"[:name_w], name_style)
             for column in range(self.COLUMNS):
-                axis_index = column // 2
+                # Cell by cell in plain floats: the first screen is drawn
+                # before numpy is imported (issue 16).
+                value, percentile = state.cell(index, column // 2)
                 style: str | Style
                 if column % 2 == 0:
-                    value = format_value(shown[index, axis_index], state.unit)
-                    text = f"{value:>{value_w - 1}} "
+                    shown = format_value(convert(value, canonical, state.unit), state.unit)
+                    text = f"{shown:>{value_w - 1}} "
                     style = ""
                 else:
-                    percentile = format_cell_percentile(
-                        values[index, axis_index], percentiles[index, axis_index]
-                    )
-                    text = f"{percentile:>{pct_w - 1}} "
+                    text = f"{format_cell_percentile(value, percentile):>{pct_w - 1}} "
                     style = pct_style
                 if index == self.cursor_row and column == self.cursor_column:
                     style = cursor_style

@@ -77,15 +77,15 @@ def test_make_population_writes_files_of_the_medians_and_loads_them(drive, db, t
                 assert source.path == str(path)
                 assert "gender = female AND age < 25" in source.title
                 np.testing.assert_allclose(
-                    source.sections["female"],
-                    read_population_file(path, group).sections["female"],
+                    source.stats("female"),
+                    read_population_file(path, group).stats("female"),
                     atol=0.006,
                 )
 
     drive(scenario())
     for group, path in ((GIRTH, target), (CENTER_OF_MASS, cmass_path(target))):
         data = read_population_file(path, group)
-        fiftieth = data.sections["female"][:, :, 1]
+        fiftieth = data.stats("female")[:, :, 1]
         expected = medians[group]
         measured = ~np.isnan(expected)
         assert measured.any()
@@ -151,7 +151,7 @@ def test_make_population_uses_the_selected_list_not_the_last_query(drive, db, tm
     drive(scenario())
     data = read_population_file(target, GIRTH)
     assert "25 selected from (gender = female AND age < 25)" in data.title
-    fiftieth = data.sections["female"][:, :, 1]
+    fiftieth = data.stats("female")[:, :, 1]
     expected = medians[GIRTH]
     measured = ~np.isnan(expected)
     assert measured.sum() > 20
