@@ -187,9 +187,7 @@ def test_the_first_screen_is_drawn_before_numpy_is_imported():
         "asyncio.run(first_screen())\n"
         "print(sorted(seen.items()), 'numpy' in sys.modules)\n"
     )
-    assert _run(code) == (
-        "[('numpy', False), ('strength', False), ('strength after', True)] True"
-    )
+    assert _run(code) == "[('numpy', False), ('strength', False), ('strength after', True)] True"
 
 
 def test_plain_sass_opens_the_tui_without_building_the_parser():

@@ -72,7 +72,9 @@ def test_the_default_figure_at_every_percentile_is_numpys(gender):
             cells = np.array([[state.cell(r, a)[0] for a in range(3)] for r in range(len(stats))])
             np.testing.assert_array_equal(cells, expected, strict=True)
             np.testing.assert_array_equal(state.values, expected)  # the array, once asked
-            np.testing.assert_array_equal(state.percentiles, np.where(np.isnan(expected), np.nan, p))
+            np.testing.assert_array_equal(
+                state.percentiles, np.where(np.isnan(expected), np.nan, p)
+            )
 
 
 @pytest.mark.parametrize("gender", ["male", "female"])
