@@ -118,7 +118,12 @@ def main() -> int:
         }
         if args.other_checkout:
             other = dict(env, PYTHONPATH=str(args.other_checkout.resolve()))
-            starts[f"sass from {args.other_checkout}"] = ([SASS], other)
+            # Its own entry point: the installed `sass` script may name one
+            # that the other checkout does not have (-P: not this directory first).
+            starts[f"sass from {args.other_checkout}"] = (
+                [PY, "-P", "-c", "import sys; from sass_tui.cli import main; sys.exit(main())"],
+                other,
+            )
         times: dict[str, list[float]] = {name: [] for name in starts}
         for command, command_env in starts.values():  # warm caches, compile modules
             first_screen(command, command_env, ready)

@@ -71,9 +71,10 @@ class PopulationData:
     """One group's statistics: per gender (rows, axes, 3 percentiles).
 
     A file's are read into plain floats (`Cells`), so that the TUI's first
-    screen is computed before numpy is imported (issue 16); `stats` turns them
-    into the array once, on first use.  A population made from the database
-    sets the array itself."""
+    screen is computed before numpy is imported (issue 16); `stats` makes the
+    array from them once, on first use, and `cell` goes on reading the plain
+    floats (faster than an array's elements).  A population made from the
+    database sets the array itself."""
 
     group: str
     title: str
@@ -81,14 +82,21 @@ class PopulationData:
     sections: dict[str, Cells | np.ndarray] = field(default_factory=dict)
     lines: dict[str, list[int]] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    # Per gender: the plain floats an array was made from, and the array.
+    _arrays: dict[str, tuple[Cells, np.ndarray]] = field(
+        default_factory=dict, repr=False, compare=False
+    )
 
     def stats(self, gender: str) -> np.ndarray:
         section = self.sections[gender]
-        if isinstance(section, list):
+        if not isinstance(section, list):
+            return section
+        made = self._arrays.get(gender)
+        if made is None or made[0] is not section:
             import numpy as np
 
-            section = self.sections[gender] = np.array(section, dtype=float)
-        return section
+            made = self._arrays[gender] = (section, np.array(section, dtype=float))
+        return made[1]
 
     def cell(self, gender: str, row: int, axis: int) -> tuple[float, float, float]:
         """One cell's (5th, 50th, 95th) values, without numpy."""

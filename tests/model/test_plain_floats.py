@@ -133,6 +133,7 @@ def test_a_file_read_is_plain_floats_until_its_array_is_asked_for():
     cell = data.cell("male", 4, 2)
     array = data.stats("male")
     assert array is data.stats("male")  # made once
+    assert isinstance(data.sections["male"], list)  # cells go on reading the floats
     assert cell == tuple(array[4, 2]) == data.cell("male", 4, 2)
 
 
