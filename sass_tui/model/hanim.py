@@ -96,6 +96,24 @@ LANDMARK_FRACTIONS: dict[str, dict[str, float]] = {
         "tragion": 0.9222,
     },
 }
+# The segment dimensions (GIRTH row, axis) the humanoid does not use: its
+# joint heights follow the stature's landmarks (above), so the lengths of
+# the neck, the trunk and the legs reach only the .fig, and LOA-1 has no
+# clavicle or eye segment.  A test changes every cell: these leave the
+# export as it was, every other one changes it.
+NOT_IN_HUMANOID: tuple[tuple[str, int], ...] = (
+    ("neck", 2),
+    ("center_torso", 2),
+    ("lower_torso", 2),
+    *((f"{side}_{part}", 2) for side in ("right", "left") for part in ("upper_leg", "lower_leg")),
+    *(
+        (f"{side}_{part}", axis)
+        for side in ("right", "left")
+        for part in ("clavicle", "eye")
+        for axis in range(3)
+    ),
+)
+
 # The centre of the humeral head lies below the acromion's tip by about the
 # head's radius and the subacromial space (an assumption, docs/hanim.md).
 SHOULDER_BELOW_ACROMION = 0.04  # m
@@ -879,6 +897,34 @@ def figure_title(figure: Figure) -> str:
     return (
         f"{figure.population}, {figure.gender}, girth percentile "
         f"{figure.groups[GIRTH].percentile:g} - SASS HAnim humanoid"
+    )
+
+
+def edits_not_in_humanoid(figure: Figure) -> list[str]:
+    """The segment dimensions of a population figure set by hand (their
+    percentile is no longer the group's) that the humanoid does not use
+    (NOT_IN_HUMANOID), e.g. "Right Upper Leg z": an export says so."""
+    state = figure.groups[GIRTH]
+    if figure.person is not None or not state.loaded:
+        return []  # a person's own values: docs/hanim.md measures that case
+    edited = []
+    for name, axis in NOT_IN_HUMANOID:
+        row = row_index(GIRTH, name)
+        value, percentile = state.cell(row, axis)
+        if not math.isnan(value) and percentile != state.percentile:
+            edited.append(f"{ROWS[GIRTH][row].label} {'xyz'[axis]}")
+    return edited
+
+
+def not_in_humanoid_note(figure: Figure) -> str:
+    """A sentence for an export's message, or "" when nothing set is left out."""
+    edited = edits_not_in_humanoid(figure)
+    if not edited:
+        return ""
+    return (
+        f" The humanoid's joints stand at the stature's landmarks (docs/hanim.md): "
+        f"{', '.join(edited)} as set here {'is' if len(edited) == 1 else 'are'} "
+        "in a .fig (Create Figure), not in the humanoid."
     )
 
 

@@ -621,13 +621,11 @@ class SpreadsheetScreen(SassScreen):
         )
 
     def _export_hanim_named(self, path: Path) -> None:
-        from sass_tui.model.hanim import render_hanim
+        from sass_tui.model.hanim import not_in_humanoid_note, render_hanim
 
         text = render_hanim(self.figure)  # on the UI thread: see _write_figure
-        self._write_unless_kept(
-            path,
-            lambda: self.write_text(path, text, f"Exported the HAnim humanoid to {path}."),
-        )
+        done = f"Exported the HAnim humanoid to {path}.{not_in_humanoid_note(self.figure)}"
+        self._write_unless_kept(path, lambda: self.write_text(path, text, done))
 
     # --- editing the data section -------------------------------------------------------
     def _pass_to_prompt(self, widget: EditorKeys, initial: str) -> bool:
@@ -705,7 +703,16 @@ class SpreadsheetScreen(SassScreen):
                 where = "no percentile: the population's statistics give none for this value"
         else:
             where = f"{format_percentile(percentile)} percentile"
-        self.say(f"{name} = {format_value(shown, state.unit)} {DISPLAY[state.unit]} ({where}).")
+        said = f"{name} = {format_value(shown, state.unit)} {DISPLAY[state.unit]} ({where})."
+        from sass_tui.model.hanim import NOT_IN_HUMANOID
+
+        if group == GIRTH and (state.rows[row].name, axis) in NOT_IN_HUMANOID:
+            # The figure view does not move: say why, and where the value goes.
+            said += (
+                " It goes to a .fig; the figure view and Export HAnim stand the joints "
+                "at the stature's landmarks."
+            )
+        self.say(said)
 
     def edit_angle(self, row: int, column: int, initial: str = "") -> None:
         """Prompt for a joint angle of the strength page (column 0-6)."""

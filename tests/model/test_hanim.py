@@ -560,3 +560,42 @@ def test_every_ansur_person_has_a_real_bodys_center_of_mass(ansur_measurement):
     script, _ = ansur_measurement
     for name, share in script["percentile_figures"]().items():
         assert 0.54 <= share <= 0.58, name
+
+
+def test_the_segment_dimensions_the_humanoid_leaves_out_are_exactly_those_listed():
+    # Every girth cell changed by 10 %: the ones in NOT_IN_HUMANOID leave the
+    # export as it was (the joints stand at the stature's landmarks; LOA-1
+    # has no clavicle or eye), every other one changes it.
+    from sass_tui.model.hanim import NOT_IN_HUMANOID, render_hanim
+    from sass_tui.model.names import GIRTH, ROWS
+
+    before = render_hanim(Figure.default())
+    unchanged = set()
+    for row, spec in enumerate(ROWS[GIRTH]):
+        for axis in range(3):
+            figure = Figure.default()
+            figure.set_value(GIRTH, row, axis, figure.groups[GIRTH].cell(row, axis)[0] * 1.1)
+            if render_hanim(figure) == before:
+                unchanged.add((spec.name, axis))
+    assert unchanged == set(NOT_IN_HUMANOID)
+
+
+def test_edits_the_humanoid_leaves_out_are_named():
+    from sass_tui.model.hanim import edits_not_in_humanoid, not_in_humanoid_note
+    from sass_tui.model.names import GIRTH
+
+    figure = Figure.default()
+    assert edits_not_in_humanoid(figure) == [] and not_in_humanoid_note(figure) == ""
+    figure.set_value(GIRTH, row_index(GIRTH, "left_lower_leg"), 2, 40.0)
+    figure.set_cell_percentile(GIRTH, row_index(GIRTH, "neck"), 2, 80.0)
+    figure.set_value(GIRTH, row_index(GIRTH, "right_upper_leg"), 0, 17.0)  # used: not named
+    assert edits_not_in_humanoid(figure) == ["Neck z", "Left Lower Leg z"]
+    assert "Neck z, Left Lower Leg z as set here are in a .fig" in not_in_humanoid_note(figure)
+    # The group percentile sets every cell again: nothing is left out then.
+    figure.set_group_percentile(GIRTH, 60.0)
+    assert edits_not_in_humanoid(figure) == []
+    # A person's own lengths are theirs, not edits (docs/hanim.md measures them).
+    groups = {g: np.array(s.values) for g, s in Figure.default().groups.items() if s.loaded}
+    groups[GIRTH][row_index(GIRTH, "neck"), 2] = 9.0
+    person = figure.for_person("P", "male", groups, stature=175.0)
+    assert edits_not_in_humanoid(person) == []

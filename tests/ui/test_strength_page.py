@@ -476,3 +476,43 @@ def test_undo_takes_the_newest_edit_angle_or_figure(drive):
             assert message(app) == "Nothing to undo."
 
     drive(scenario())
+
+
+def test_lengths_the_humanoid_leaves_out_are_said_on_edit_and_on_export(
+    drive, tmp_path, monkeypatch
+):
+    # The humanoid (and the figure view drawn from it) stands its joints at the
+    # stature's landmarks: a leg length typed here reaches the .fig only, and
+    # the user is told so where it would otherwise look ignored.
+    monkeypatch.chdir(tmp_path)
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.click("#command-export_hanim")
+            await pilot.press("enter")
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            assert message(app).endswith("Exported the HAnim humanoid to MALE50.x3d.")
+            before = (tmp_path / "MALE50.x3d").read_text()
+            # Right Upper Leg z (row 9, the z value column)
+            await pilot.press(*["down"] * 8, *["right"] * 4, "enter", *"50", "enter")
+            said = message(app)
+            assert said.startswith("Right Upper Leg z = 50.00 cm (")
+            assert "It goes to a .fig; the figure view and Export HAnim stand" in said
+            await pilot.click("#command-export_hanim")
+            await pilot.press("enter", "y", "enter")
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            assert message(app) == (
+                "Exported the HAnim humanoid to MALE50.x3d. The humanoid's joints stand at "
+                "the stature's landmarks (docs/hanim.md): Right Upper Leg z as set here is "
+                "in a .fig (Create Figure), not in the humanoid."
+            )
+            assert (tmp_path / "MALE50.x3d").read_text() == before
+            # A length the humanoid uses (Right Upper Arm z) is not mentioned.
+            await pilot.press(*["up"] * 4, "enter", *"40", "enter")
+            assert message(app).startswith("Right Upper Arm z = 40.00 cm (")
+            assert "It goes to a .fig" not in message(app)
+
+    drive(scenario())
