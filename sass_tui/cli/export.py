@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
 from sass_tui.cli.options import SubParsers, add_figure_options, figure_from_args, print_warnings
 
@@ -19,10 +20,13 @@ def register(commands: SubParsers) -> None:
 
 
 def run_hanim(args: argparse.Namespace) -> int:
-    from sass_tui.model.hanim import export_hanim
+    from sass_tui.model.hanim import export_hanim, not_in_humanoid_note
 
     figure, warnings = figure_from_args(args)
     print_warnings(warnings)
     path = export_hanim(figure, args.output)
     print(f"wrote {path}")
+    note = not_in_humanoid_note(figure).strip()
+    if note:
+        print(f"note: {note.replace(' (Create Figure)', ' (sass fig)')}", file=sys.stderr)
     return 0

@@ -917,14 +917,27 @@ def edits_not_in_humanoid(figure: Figure) -> list[str]:
 
 
 def not_in_humanoid_note(figure: Figure) -> str:
-    """A sentence for an export's message, or "" when nothing set is left out."""
+    """What of a population figure's lengths the humanoid leaves out, as a
+    sentence for an export's message ("" when nothing is): those set by
+    hand, and the neck, torso and leg lengths of a girth percentile other
+    than the stature's (the joints follow the stature)."""
+    state = figure.groups[GIRTH]
+    if figure.person is not None or not state.loaded:
+        return ""
+    left_out = []
+    if abs(state.percentile - figure.stature_percentile) > 0.05:  # NaN: no stature percentile
+        left_out.append(
+            f"the neck, torso and leg lengths at the girth percentile ({state.percentile:.1f})"
+        )
     edited = edits_not_in_humanoid(figure)
-    if not edited:
+    if edited:
+        left_out.append(f"{', '.join(edited)} as set here")
+    if not left_out:
         return ""
     return (
-        f" The humanoid's joints stand at the stature's landmarks (docs/hanim.md): "
-        f"{', '.join(edited)} as set here {'is' if len(edited) == 1 else 'are'} "
-        "in a .fig (Create Figure), not in the humanoid."
+        f" The humanoid's joints stand at its stature's landmarks ({humanoid_stature(figure):.1f} cm, "
+        f"percentile {figure.stature_percentile:.1f}; docs/hanim.md). A .fig (Create Figure) has "
+        f"{' and '.join(left_out)}; the humanoid does not."
     )
 
 

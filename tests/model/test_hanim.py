@@ -562,6 +562,23 @@ def test_every_ansur_person_has_a_real_bodys_center_of_mass(ansur_measurement):
         assert 0.54 <= share <= 0.58, name
 
 
+def test_sass_export_hanim_notes_girth_lengths_of_another_percentile(tmp_path, capsys):
+    out = tmp_path / "X.x3d"
+    assert main(["export", "hanim", "--girth-percentile", "95", "-o", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert err == (
+        "note: The humanoid's joints stand at its stature's landmarks (175.5 cm, percentile "
+        "50.0; docs/hanim.md). A .fig (sass fig) has the neck, torso and leg lengths at the "
+        "girth percentile (95.0); the humanoid does not.\n"
+    )
+    for same in (
+        ["--percentile", "95"],
+        ["--girth-percentile", "95", "--stature-percentile", "95"],
+    ):
+        assert main(["export", "hanim", *same, "-o", str(out)]) == 0
+        assert capsys.readouterr().err == ""
+
+
 def test_the_segment_dimensions_the_humanoid_leaves_out_are_exactly_those_listed():
     # Every girth cell changed by 10 %: the ones in NOT_IN_HUMANOID leave the
     # export as it was (the joints stand at the stature's landmarks; LOA-1
@@ -590,10 +607,25 @@ def test_edits_the_humanoid_leaves_out_are_named():
     figure.set_cell_percentile(GIRTH, row_index(GIRTH, "neck"), 2, 80.0)
     figure.set_value(GIRTH, row_index(GIRTH, "right_upper_leg"), 0, 17.0)  # used: not named
     assert edits_not_in_humanoid(figure) == ["Neck z", "Left Lower Leg z"]
-    assert "Neck z, Left Lower Leg z as set here are in a .fig" in not_in_humanoid_note(figure)
-    # The group percentile sets every cell again: nothing is left out then.
+    assert not_in_humanoid_note(figure).endswith(
+        "A .fig (Create Figure) has Neck z, Left Lower Leg z as set here; the humanoid does not."
+    )
+    # The group percentile sets every cell again: no cell is left out then, but
+    # the girth lengths are another percentile's than the stature's.
     figure.set_group_percentile(GIRTH, 60.0)
     assert edits_not_in_humanoid(figure) == []
+    assert not_in_humanoid_note(figure) == (
+        " The humanoid's joints stand at its stature's landmarks (175.5 cm, percentile 50.0; "
+        "docs/hanim.md). A .fig (Create Figure) has the neck, torso and leg lengths at the "
+        "girth percentile (60.0); the humanoid does not."
+    )
+    figure.set_value(GIRTH, row_index(GIRTH, "right_upper_leg"), 2, 50.0)
+    assert "girth percentile (60.0) and Right Upper Leg z as set here;" in (
+        not_in_humanoid_note(figure)
+    )
+    figure.set_stature_percentile(60.0)  # the stature's percentile: only the cell
+    assert "girth percentile" not in not_in_humanoid_note(figure)
+    assert "has Right Upper Leg z as set here;" in not_in_humanoid_note(figure)
     # A person's own lengths are theirs, not edits (docs/hanim.md measures them).
     groups = {g: np.array(s.values) for g, s in Figure.default().groups.items() if s.loaded}
     groups[GIRTH][row_index(GIRTH, "neck"), 2] = 9.0

@@ -506,8 +506,8 @@ def test_lengths_the_humanoid_leaves_out_are_said_on_edit_and_on_export(
             await pilot.pause()
             assert message(app) == (
                 "Exported the HAnim humanoid to MALE50.x3d. The humanoid's joints stand at "
-                "the stature's landmarks (docs/hanim.md): Right Upper Leg z as set here is "
-                "in a .fig (Create Figure), not in the humanoid."
+                "its stature's landmarks (175.5 cm, percentile 50.0; docs/hanim.md). A .fig "
+                "(Create Figure) has Right Upper Leg z as set here; the humanoid does not."
             )
             assert (tmp_path / "MALE50.x3d").read_text() == before
             # A length the humanoid uses (Right Upper Arm z) is not mentioned.
