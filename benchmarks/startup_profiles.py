@@ -6,7 +6,7 @@ of -X importtime, so machine load counts less), grouped by top-level package,
 and a py-spy profile (sampling at 1 kHz) summarised as the functions with the
 most samples of their own and the sass functions with the most samples in
 all.  The TUI path starts `sass`'s app in a detached tmux session at 120x40
-and exits it right after the first screen's first refresh.
+and exits it once the first screen is drawn.
 
     python benchmarks/startup_profiles.py [--runs 7]
 
@@ -33,26 +33,21 @@ from cli_ratios import SASS, build_ansur_db
 
 PY = sys.executable
 PY_SPY = shutil.which("py-spy", path=str(Path(PY).parent)) or shutil.which("py-spy")
-# The TUI until its first screen is drawn, then out (run inside tmux).
+# The TUI as `sass` starts it (cli.run_tui), until its first screen is
+# drawn, then out (run inside tmux).
 FIRST_SCREEN = """
-import sass_tui.ui.app as appmod
-from sass_tui.cli import build_parser
+import sys
+
+from sass_tui.cli import run_tui
 from sass_tui.ui.spreadsheet import SpreadsheetScreen
 
-build_parser([])  # as `sass` does before it starts the app
+
+def first_screen_drawn(screen):
+    screen.app.exit()
 
 
-class FirstScreen(SpreadsheetScreen):
-    def on_mount(self):
-        self.call_after_refresh(self.app.exit)
-
-
-class App(appmod.SassApp):
-    def get_default_screen(self):
-        return FirstScreen(self.session, self.strength_error)
-
-
-App().run()
+SpreadsheetScreen._first_screen_drawn = first_screen_drawn
+sys.exit(run_tui(None))
 """
 
 

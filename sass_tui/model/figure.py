@@ -104,6 +104,13 @@ class GroupState:
     def loaded(self) -> bool:
         return self._values is not None
 
+    def __deepcopy__(self, memo: dict[int, object]) -> GroupState:
+        """The undo journal's copy: the cells copied; the population's
+        statistics shared (a new file replaces them, nothing changes them)."""
+        copied = copy.copy(self)
+        copied._values, copied._percentiles = _copy(self._values), _copy(self._percentiles)
+        return copied
+
     @property
     def rows(self) -> tuple[Row, ...]:
         return ROWS[self.group]
@@ -411,6 +418,12 @@ class Figure:
             return cell_percentile_of(*self._global_stats_cell(name), float(value))
         except FigureError:
             return float("nan")
+
+
+def _copy(cells: Grid | np.ndarray | None) -> Grid | np.ndarray | None:
+    if isinstance(cells, list):
+        return [row[:] for row in cells]
+    return None if cells is None else cells.copy()
 
 
 def _array(grid: Grid) -> np.ndarray:

@@ -176,3 +176,19 @@ def test_a_strength_sheet_set_before_it_is_made_stays():
     assert later.calls == 1
     assert session.strength_sheet is sheet and session.population_strength is sheet
     assert later.calls == 1
+
+
+def test_undo_restores_cells_held_either_way():
+    # The journal copies a group's cells (plain floats or arrays) and shares
+    # its population statistics, which no edit changes.
+    session = Session(Figure.default())
+    state = session.figure.groups[GIRTH]
+    before = [[state.cell(r, a) for a in range(3)] for r in range(len(state.rows))]
+    session.set_group_percentile(GIRTH, 80.0)  # plain floats
+    session.set_value(GIRTH, 4, 2, 30.0)  # an array
+    session.set_cell_percentile(GIRTH, 5, 1, 10.0)
+    source = session.figure.groups[GIRTH].source
+    while session.undo():
+        assert session.figure.groups[GIRTH].source is source
+    state = session.figure.groups[GIRTH]
+    assert [[state.cell(r, a) for a in range(3)] for r in range(len(state.rows))] == before
