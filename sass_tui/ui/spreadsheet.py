@@ -527,11 +527,16 @@ class SpreadsheetScreen(SassScreen):
         )
 
     # --- Create Figure --------------------------------------------------------------
-    def _default_name(self) -> str:
+    def _default_name(self, suffix: str) -> str:
+        """Create Figure's and Export HAnim's file name: the person's shown,
+        else the figure's gender and girth percentile (MALE50.FIG)."""
         from sass_tui.model.figfile import default_fig_name
 
         figure = self.figure
-        return default_fig_name(figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
+        if figure.person:
+            return f"{_slug(figure.person)}{suffix}"
+        name = default_fig_name(figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
+        return name if suffix == ".fig" else Path(name).with_suffix(suffix).name
 
     def action_create_figure(self) -> None:
         """Write the figure shown as a .fig file."""
@@ -541,9 +546,7 @@ class SpreadsheetScreen(SassScreen):
                 f"Cannot create a figure: {', '.join(missing)} not loaded for {self.figure.gender}."
             )
             return
-        default = self._default_name()
-        if self.figure.person:
-            default = f"{_slug(self.figure.person)}.fig"
+        default = self._default_name(".fig")
         self.ask(
             f"Figure file name [{default}]:",
             lambda text: self._create_figure_named(text.strip() or default),
@@ -614,7 +617,7 @@ class SpreadsheetScreen(SassScreen):
     # --- Export HAnim -----------------------------------------------------------------
     def action_export_hanim(self) -> None:
         """Write the figure shown as an HAnim X3D humanoid."""
-        default = Path(self._default_name()).with_suffix(".x3d").name
+        default = self._default_name(".x3d")
         self.ask(
             f"HAnim file name [{default}]:",
             lambda text: self._export_hanim_named(user_path(text.strip() or default)),

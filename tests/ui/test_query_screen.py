@@ -195,6 +195,10 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
             assert fig.variables["ruparmz"][0] == pytest.approx(
                 person.groups[GIRTH][arm, 2], abs=0.01
             )
+            # Export HAnim offers the person's name too, not a percentile figure's.
+            await pilot.press("e")
+            assert f"HAnim file name [{first_two[0]}.x3d]:" in message(app)
+            await pilot.press("escape")
 
             await pilot.press("x")  # Disp. More -> More Menu -> Next
             await pilot.press("down", "down", "down", "enter")
