@@ -1,5 +1,7 @@
+"""`python -m sass_tui`: the `sass` command."""
+
 import sys
 
-from sass_tui.cli import main
+from sass_tui.cli import command_line
 
-sys.exit(main())
+sys.exit(command_line())

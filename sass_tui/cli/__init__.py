@@ -233,7 +233,3 @@ def run_verb(args: argparse.Namespace) -> int:
             print(f"sass {args.command}: database error: {exc}", file=sys.stderr)
             return 2
         raise
-
-
-if __name__ == "__main__":
-    sys.exit(command_line())
