@@ -93,6 +93,17 @@ def build_ansur_db(path: Path, env: dict[str, str]) -> None:
     )
 
 
+def ansur_env(tmp: str) -> dict[str, str]:
+    """The environment the benchmarks run `sass` in: SASS_DB an ANSUR II
+    database built in `tmp`, and compiled modules kept as on a user's machine
+    (some shells set PYTHONDONTWRITEBYTECODE, which makes every start compile
+    sass anew)."""
+    env = dict(os.environ, SASS_DB=str(Path(tmp) / "ansur.db"))
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
+    build_ansur_db(Path(env["SASS_DB"]), env)
+    return env
+
+
 def grow(source: Path, target: Path, people: int) -> None:
     """Copy `source` and repeat its people (person rows only: the listing reads
     person and strength_q) until there are `people`."""
@@ -146,11 +157,7 @@ def main() -> int:
         raise SystemExit("the `sass` console script is not installed (pip install -e .)")
     rows: list[tuple[str, float, float, str]] = []
     with tempfile.TemporaryDirectory() as tmp:
-        env = dict(os.environ, SASS_DB=str(Path(tmp) / "ansur.db"))
-        # As on a user's machine: Python keeps compiled modules (some shells set
-        # PYTHONDONTWRITEBYTECODE, which makes every start compile sass anew).
-        env.pop("PYTHONDONTWRITEBYTECODE", None)
-        build_ansur_db(Path(env["SASS_DB"]), env)
+        env = ansur_env(tmp)
 
         def run(*command: str) -> Callable[[], float]:
             return lambda: timed(list(command), env)

@@ -19,7 +19,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from cli_ratios import PY, SASS, build_ansur_db, timed
+from cli_ratios import PY, SASS, ansur_env, timed
 
 QUERY = "gender = male"
 # main() as the `sass` command runs it, without command_line's freeze.
@@ -33,9 +33,7 @@ def main() -> int:
     if SASS is None:
         raise SystemExit("the `sass` console script is not installed (pip install -e .)")
     with tempfile.TemporaryDirectory() as tmp:
-        env = dict(os.environ, SASS_DB=str(Path(tmp) / "ansur.db"))
-        env.pop("PYTHONDONTWRITEBYTECODE", None)  # compiled modules kept, as for a user
-        build_ansur_db(Path(env["SASS_DB"]), env)
+        env = ansur_env(tmp)
         commands = {
             "`sass query` (the sass command: frozen before exit)": [SASS, "query", QUERY],
             "the same main() without the freeze": [PY, "-P", "-c", WITHOUT_FREEZE, "query", QUERY],

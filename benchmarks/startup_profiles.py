@@ -29,7 +29,7 @@ from collections import Counter
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from cli_ratios import SASS, build_ansur_db
+from cli_ratios import SASS, ansur_env
 
 PY = sys.executable
 PY_SPY = shutil.which("py-spy", path=str(Path(PY).parent)) or shutil.which("py-spy")
@@ -150,9 +150,7 @@ def main() -> int:
     if SASS is None:
         raise SystemExit("the `sass` console script is not installed (pip install -e .)")
     with tempfile.TemporaryDirectory() as tmp:
-        env = dict(os.environ, SASS_DB=str(Path(tmp) / "ansur.db"))
-        env.pop("PYTHONDONTWRITEBYTECODE", None)
-        build_ansur_db(Path(env["SASS_DB"]), env)
+        env = ansur_env(tmp)
         first_screen = Path(tmp) / "first_screen.py"
         first_screen.write_text(FIRST_SCREEN)
         # (what, its imports measured by, its profile's command, in tmux)

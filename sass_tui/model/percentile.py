@@ -15,7 +15,6 @@ over numpy arrays whose last axis holds (v5, v50, v95), with broadcasting.
 from __future__ import annotations
 
 import math
-from functools import lru_cache
 from statistics import NormalDist
 from typing import TYPE_CHECKING
 
@@ -76,15 +75,9 @@ def cell_value_at(v5: float, v50: float, v95: float, p: float) -> float:
         return v50
     if p == 95.0:
         return v95
-    z = _z(p)
+    z = _STANDARD.inv_cdf(p / 100.0)
     spread = (v50 - v5 if z < 0 else v95 - v50) / Z95
     return v50 + z * spread
-
-
-@lru_cache(maxsize=1024)
-def _z(p: float) -> float:
-    """z(p), kept: a group's cells share their percentile."""
-    return _STANDARD.inv_cdf(p / 100.0)
 
 
 def cell_percentile_of(v5: float, v50: float, v95: float, value: float) -> float:

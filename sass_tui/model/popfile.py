@@ -82,21 +82,18 @@ class PopulationData:
     sections: dict[str, Cells | np.ndarray] = field(default_factory=dict)
     lines: dict[str, list[int]] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
-    # Per gender: the plain floats an array was made from, and the array.
-    _arrays: dict[str, tuple[Cells, np.ndarray]] = field(
-        default_factory=dict, repr=False, compare=False
-    )
+    # Per gender: the array made from a file's plain floats (read once).
+    _arrays: dict[str, np.ndarray] = field(default_factory=dict, repr=False, compare=False)
 
     def stats(self, gender: str) -> np.ndarray:
         section = self.sections[gender]
         if not isinstance(section, list):
             return section
-        made = self._arrays.get(gender)
-        if made is None or made[0] is not section:
+        if gender not in self._arrays:
             import numpy as np
 
-            made = self._arrays[gender] = (section, np.array(section, dtype=float))
-        return made[1]
+            self._arrays[gender] = np.array(section, dtype=float)
+        return self._arrays[gender]
 
     def cell(self, gender: str, row: int, axis: int) -> tuple[float, float, float]:
         """One cell's (5th, 50th, 95th) values, without numpy."""
