@@ -98,7 +98,7 @@ def export_list_person(
     import sqlite3
 
     from sass_tui.db.individual import fetch_individual, person_figure
-    from sass_tui.ui.spreadsheet import _slug  # Export HAnim's file names
+    from sass_tui.model.hanim import build_humanoid
 
     if row is None:
         screen.say("The list is empty: no person to export.")
@@ -110,4 +110,5 @@ def export_list_person(
             screen.complain(f"Cannot read {row['name']} from the database: {exc}")
             return
     figure = person_figure(person, screen.sass_app.session.population)
-    ask_gltf_export(screen, figure, f"{_slug(figure.person or str(row['name']))}.glb")
+    # the humanoid's name is the person's, as a file name ('ANSUR_II_M_10037')
+    ask_gltf_export(screen, figure, f"{build_humanoid(figure).name}.glb")
