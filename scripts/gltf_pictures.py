@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[1]
 THREE = ROOT / "node" / "node_modules" / "three"
 ROW = (("female", 5.0), ("male", 95.0))
 SPACING = 0.8  # metres between the figures' origins
-SIZE = (900, 900)
+SIZE = (800, 900)
 # The flags the project runs Chromium with: no GPU, nothing fetched but the page.
 CHROMIUM_FLAGS = (
     "--headless",
@@ -55,7 +55,7 @@ scene.add(new THREE.HemisphereLight(0xffffff, 0x8d8d8d, 1.6));
 const sun = new THREE.DirectionalLight(0xffffff, 2.2);
 sun.position.set(2, 4, 5);
 scene.add(sun);
-const floor = new THREE.Mesh(new THREE.CircleGeometry(1.6, 64),
+const floor = new THREE.Mesh(new THREE.CircleGeometry(1.2, 64),
   new THREE.MeshStandardMaterial({ color: 0xdddddd }));
 floor.rotation.x = -Math.PI / 2;
 scene.add(floor);
@@ -69,8 +69,8 @@ for (const [i, [url, x]] of files.entries()) {
 }
 // three quarters from the front, a little above the waist
 const camera = new THREE.PerspectiveCamera(30, WIDTH / HEIGHT, 0.1, 50);
-camera.position.set(1.6, tallest * 0.75, 4.4);
-camera.lookAt(0, tallest * 0.5, 0);
+camera.position.set(1.3, tallest * 0.62, 4.3);
+camera.lookAt(0, tallest * 0.49, 0);
 renderer.render(scene, camera);
 document.title = "rendered";
 </script></body></html>
