@@ -14,31 +14,16 @@ import tempfile
 import time
 from pathlib import Path
 
-from sass_tui.model.figure import Figure
 from sass_tui.model.gltf import export_gltf, render_gltf
 from sass_tui.model.hanim import build_humanoid
 
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "benchmarks"))
+sys.path.insert(0, str(ROOT / "scripts"))
+from hanim_pictures import figure_at  # noqa: E402 - the scripts' percentile figure
+from model_bench import best_of  # noqa: E402
+
 GOAL = 0.3  # s a figure
-
-
-def figure_at(gender: str, percentile: float) -> Figure:
-    figure = Figure.default(gender)
-    for group in figure.groups:
-        figure.set_group_percentile(group, percentile)
-    figure.set_mass_percentile(percentile)
-    figure.set_stature_percentile(percentile)
-    return figure
-
-
-def best_of(func, repeat: int = 5, number: int = 5) -> float:
-    """Best mean time of one call over `repeat` batches, in seconds."""
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        for _ in range(number):
-            func()
-        times.append((time.perf_counter() - start) / number)
-    return min(times)
 
 
 def main() -> int:
@@ -47,10 +32,10 @@ def main() -> int:
     export_gltf(figure, out)  # first call: imports and caches out of the timing
     size = out.stat().st_size
     rows = [
-        ("build_humanoid (the HAnim geometry)", best_of(lambda: build_humanoid(figure))),
-        ("render_gltf (humanoid, mesh, document)", best_of(lambda: render_gltf(figure))),
-        ("render_gltf, seated", best_of(lambda: render_gltf(figure, "seated"))),
-        ("export_gltf to .glb (write + fsync)", best_of(lambda: export_gltf(figure, out))),
+        ("build_humanoid (the HAnim geometry)", best_of(lambda: build_humanoid(figure), 5, 5)),
+        ("render_gltf (humanoid, mesh, document)", best_of(lambda: render_gltf(figure), 5, 5)),
+        ("render_gltf, seated", best_of(lambda: render_gltf(figure, "seated"), 5, 5)),
+        ("export_gltf to .glb (write + fsync)", best_of(lambda: export_gltf(figure, out), 5, 5)),
     ]
     starts = []
     for _ in range(3):

@@ -19,7 +19,8 @@ import tempfile
 import threading
 from pathlib import Path
 
-from sass_tui.model.figure import Figure
+from hanim_pictures import figure_at  # the scripts' percentile figure (scripts/ is on the path)
+
 from sass_tui.model.gltf import export_gltf
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -75,15 +76,6 @@ renderer.render(scene, camera);
 document.title = "rendered";
 </script></body></html>
 """
-
-
-def figure_at(gender: str, percentile: float) -> Figure:
-    figure = Figure.default(gender)
-    for group in figure.groups:
-        figure.set_group_percentile(group, percentile)
-    figure.set_mass_percentile(percentile)
-    figure.set_stature_percentile(percentile)
-    return figure
 
 
 def main(out: Path = ROOT / "docs" / "gltf-figures.png") -> int:

@@ -113,6 +113,18 @@ def check_path(path: str | Path) -> Path:
     return path
 
 
+def pose_of(answer: str) -> str:
+    """The pose a typed answer names: empty is standing; any start of a
+    pose's name (`s` is ambiguous and means standing, the default's)."""
+    word = answer.strip().lower()
+    if not word:
+        return POSES[0]
+    pose = next((p for p in POSES if p.startswith(word)), None)
+    if pose is None:
+        raise GltfError(f"expected standing or seated, got {answer.strip()!r}; nothing written")
+    return pose
+
+
 def bin_path(path: Path) -> Path:
     """Where a .gltf's buffer goes: NAME.bin beside NAME.gltf."""
     return path.with_suffix(".bin")
@@ -310,6 +322,7 @@ def figure_extras(figure: Figure, humanoid: Humanoid, pose: str) -> dict[str, An
     def number(value: float) -> float | None:
         return None if math.isnan(value) else _round(value)
 
+    vertex = next(site for site in humanoid.sites if site.name == "skull_vertex_pt")
     filled = 0
     if figure.person is not None:
         filled = sum(int(figure.output_values(group)[1].sum()) for group in GROUPS)
@@ -322,7 +335,7 @@ def figure_extras(figure: Figure, humanoid: Humanoid, pose: str) -> dict[str, An
         "centerOfMassPercentile": number(groups[CENTER_OF_MASS].percentile),
         "mass": {"kg": number(figure.output_mass()), "percentile": number(figure.mass_percentile)},
         "stature": {
-            "m": _round(float(humanoid.sites[0].translation[1])),
+            "m": _round(float(vertex.translation[1])),
             "percentile": number(figure.stature_percentile),
         },
         "figureType": figure.figure_type,

@@ -35,18 +35,12 @@ def ask_gltf_export(screen: SassScreen, figure: Figure, default: str) -> None:
 
 
 def _ask_pose(screen: SassScreen, figure: Figure, name: str) -> None:
-    from sass_tui.model.gltf import POSES, check_path
+    from sass_tui.model.gltf import POSES, check_path, pose_of
 
     path = check_path(user_path(name))  # refused before the next prompt
 
     def posed(answer: str) -> None:
-        word = answer.strip().lower() or POSES[0]
-        pose = next((p for p in POSES if p.startswith(word)), None)
-        if pose is None:
-            from sass_tui.model.gltf import GltfError
-
-            raise GltfError(f"expected standing or seated, got {answer.strip()!r}; nothing written")
-        _export(screen, figure, path, pose)
+        _export(screen, figure, path, pose_of(answer))
 
     screen.ask(f"Pose: {' or '.join(POSES)} [{POSES[0]}]:", posed)
 

@@ -426,3 +426,56 @@ def test_any_percentile_figure_is_its_stature_tall_with_normal_weights(gender, p
     assert np.allclose(np.linalg.norm(mesh.normals, axis=1), 1.0, atol=1e-5)
     glb = render_gltf(figure).glb()
     assert glb[:4] == b"glTF" and len(glb) % 4 == 0
+
+
+@given(st.text(max_size=12))
+def test_a_pose_answer_is_a_pose_or_a_clear_refusal(text):
+    from sass_tui.model.gltf import POSES, GltfError, pose_of
+
+    try:
+        pose = pose_of(text)
+    except GltfError as exc:
+        assert "expected standing or seated" in str(exc)
+        assert text.strip() and not any(p.startswith(text.strip().lower()) for p in POSES)
+    else:
+        assert pose in POSES
+        assert pose.startswith(text.strip().lower())
+
+
+@given(st.text(min_size=1, max_size=30).filter(lambda t: "\0" not in t))
+def test_a_file_name_is_glb_or_gltf_or_refused_by_name(text):
+    from pathlib import PurePath
+
+    from sass_tui.model.gltf import GltfError, check_path
+
+    try:
+        path = check_path(text)
+    except GltfError as exc:
+        assert "a glTF file name ends in .glb (binary) or .gltf (+ .bin)" in str(exc)
+        assert PurePath(text).suffix.lower() not in (".glb", ".gltf")
+    else:
+        assert path.suffix.lower() in (".glb", ".gltf")
+
+
+@pytest.mark.skipif(shutil.which("chromium") is None, reason="Debian's chromium is not installed")
+def test_the_picture_script_renders_both_figures(tmp_path):
+    """scripts/gltf_pictures.py (docs/gltf-figures.png): three.js loads both
+    exported .glb files and Chromium's screenshot is the page's size and not
+    blank (a white 800 x 900 PNG is about 3 KiB; two lit bodies far more)."""
+    import struct
+    import sys
+
+    if not (ROOT / "node" / "node_modules" / "three").is_dir():
+        pytest.skip("three.js is not installed: npm ci --prefix node")
+    out = tmp_path / "figures.png"
+    done = subprocess.run(
+        [sys.executable, str(ROOT / "scripts" / "gltf_pictures.py"), str(out)],
+        capture_output=True,
+        text=True,
+        timeout=180,
+    )
+    assert done.returncode == 0, done.stderr
+    data = out.read_bytes()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    assert struct.unpack(">II", data[16:24]) == (800, 900)
+    assert len(data) > 40_000
