@@ -479,3 +479,21 @@ def test_the_picture_script_renders_both_figures(tmp_path):
     assert data[:8] == b"\x89PNG\r\n\x1a\n"
     assert struct.unpack(">II", data[16:24]) == (800, 900)
     assert len(data) > 40_000
+
+
+def test_figure_options_reach_the_body(tmp_path, capsys):
+    """The options of sass fig: a mass and stature of one's own, another
+    girth percentile (the note export hanim prints), the figure type."""
+    out = _export(
+        tmp_path,
+        "tall.glb",
+        *("--mass", "210 lb", "--stature", "190", "--girth-percentile", "95"),
+        *("--figure-type", "polybody"),
+    )
+    err = capsys.readouterr().err
+    assert err.startswith("note: The humanoid's joints stand at its stature's landmarks")
+    read = Read(out)
+    p = read.positions()
+    assert p[:, 1].max() - p[:, 1].min() == pytest.approx(1.90, abs=0.005)
+    assert sum(read.segment_masses().values()) == pytest.approx(210 * 0.45359237, abs=0.01)
+    assert read.figure["girthPercentile"] == 95 and read.figure["figureType"] == "polybody"
