@@ -455,17 +455,20 @@ def _faces() -> np.ndarray:
     rings = _RINGS - 1
     faces: list[list[int]] = []
     south, north = 0, 1 + rings * _AROUND
+    # A ring runs from +X towards +Z: clockwise seen from above (+Y), so a
+    # face outward counter-clockwise (glTF 3.7.2.1, front faces) goes k+1 -> k
+    # on the ring below and k -> k+1 on the ring above.
     for k in range(_AROUND):
         k1 = (k + 1) % _AROUND
-        faces.append([south, 1 + k1, 1 + k])
+        faces.append([south, 1 + k, 1 + k1])
         last = 1 + (rings - 1) * _AROUND
-        faces.append([north, last + k, last + k1])
+        faces.append([north, last + k1, last + k])
     for r in range(rings - 1):
         a, b = 1 + r * _AROUND, 1 + (r + 1) * _AROUND
         for k in range(_AROUND):
             k1 = (k + 1) % _AROUND
-            faces.append([a + k, a + k1, b + k1])
-            faces.append([a + k, b + k1, b + k])
+            faces.append([a + k, b + k1, a + k1])
+            faces.append([a + k, b + k, b + k1])
     return np.array(faces, dtype=np.int64)
 
 

@@ -424,6 +424,13 @@ def test_any_percentile_figure_is_its_stature_tall_with_normal_weights(gender, p
     assert np.allclose(mesh.weights.sum(axis=1, dtype=np.float32), 1.0, atol=1e-6)
     assert (mesh.joints < LOA1_JOINTS).all() and (mesh.weights >= 0).all()
     assert np.allclose(np.linalg.norm(mesh.normals, axis=1), 1.0, atol=1e-5)
+    # front faces counter-clockwise seen from outside (glTF 3.7.2.1): every
+    # closed solid encloses a positive volume, its normals point the same way
+    a, b, c = (mesh.positions[mesh.triangles[:, i]].astype(float) for i in range(3))
+    assert np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6 > 0.02  # m^3
+    face = np.cross(b - a, c - a)
+    vertex = mesh.normals[mesh.triangles].sum(axis=1)
+    assert (np.einsum("ij,ij->i", face, vertex) >= 0).all()
     glb = render_gltf(figure).glb()
     assert glb[:4] == b"glTF" and len(glb) % 4 == 0
 
