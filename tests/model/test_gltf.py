@@ -504,3 +504,27 @@ def test_figure_options_reach_the_body(tmp_path, capsys):
     assert p[:, 1].max() - p[:, 1].min() == pytest.approx(1.90, abs=0.005)
     assert sum(read.segment_masses().values()) == pytest.approx(210 * 0.45359237, abs=0.01)
     assert read.figure["girthPercentile"] == 95 and read.figure["figureType"] == "polybody"
+
+
+def test_only_the_export_imports_the_gltf_writer(tmp_path):
+    """sass fig and export hanim never load model/gltf.py; export gltf loads
+    neither Textual nor the query parser (lark) nor pint (no unit typed)."""
+    import sys
+
+    def imported(argv: list[str]) -> set[str]:
+        code = (
+            "import sys\nfrom sass_tui.cli import main\n"
+            f"assert main({argv!r}) == 0\n"
+            "names = ('sass_tui.model.gltf', 'textual', 'lark', 'pint')\n"
+            "print('imported:' + ','.join(m for m in names if m in sys.modules))\n"
+        )
+        done = subprocess.run(
+            [sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path, timeout=120
+        )
+        assert done.returncode == 0, done.stderr
+        last = done.stdout.strip().splitlines()[-1].removeprefix("imported:")
+        return set(filter(None, last.split(",")))
+
+    assert imported(["fig", "-o", "X.fig"]) == set()
+    assert imported(["export", "hanim", "-o", "X.x3d"]) == set()
+    assert imported(["export", "gltf", "-o", "X.glb"]) == {"sass_tui.model.gltf"}
