@@ -528,3 +528,12 @@ def test_only_the_export_imports_the_gltf_writer(tmp_path):
     assert imported(["fig", "-o", "X.fig"]) == set()
     assert imported(["export", "hanim", "-o", "X.x3d"]) == set()
     assert imported(["export", "gltf", "-o", "X.glb"]) == {"sass_tui.model.gltf"}
+
+
+def test_a_file_that_cannot_be_written_is_named_and_nothing_is_left(tmp_path, capsys):
+    missing = tmp_path / "no such folder" / "body.gltf"
+    assert main(["export", "gltf", "-o", str(missing)]) != 0
+    err = capsys.readouterr().err
+    assert f"cannot write {missing.with_suffix('.bin')}: no such directory" in err
+    assert "Traceback" not in err
+    assert list(tmp_path.iterdir()) == []
