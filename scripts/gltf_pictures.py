@@ -1,7 +1,7 @@
 """Render docs/gltf-figures.png: a 5th percentile woman and a 95th percentile
 man (NASA crew data sets), exported by `sass export gltf`, side by side.
 
-The page is three.js (node/package.json: `npm install --prefix node`) loading
+The page is three.js (node/package.json: `npm ci --prefix node`) loading
 the two .glb files with its GLTFLoader, served on 127.0.0.1 only, and Debian's
 headless Chromium takes the screenshot.  Run it to re-render the picture:
 
@@ -81,7 +81,7 @@ document.title = "rendered";
 def main(out: Path = ROOT / "docs" / "gltf-figures.png") -> int:
     chromium = shutil.which("chromium")
     if chromium is None or not (THREE / "build" / "three.module.js").exists():
-        print("needs Debian's chromium and three.js (npm install --prefix node)", file=sys.stderr)
+        print("needs Debian's chromium and three.js (npm ci --prefix node)", file=sys.stderr)
         return 1
     with tempfile.TemporaryDirectory() as tmp:
         site = Path(tmp)

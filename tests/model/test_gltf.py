@@ -33,7 +33,7 @@ PERCENTILES = [(g, p) for g in ("male", "female") for p in (1, 50, 99)]
 def validator():
     node = shutil.which("node")
     if node is None or not VALIDATOR.is_dir():
-        pytest.skip("the glTF-Validator needs Debian's nodejs and `npm install --prefix node`")
+        pytest.skip("the glTF-Validator needs Debian's nodejs and `npm ci --prefix node`")
 
     def validate(files: list[Path]) -> list[dict]:
         done = subprocess.run(
