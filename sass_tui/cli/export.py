@@ -1,11 +1,17 @@
-"""`sass export hanim`: the figure of `sass fig` as an HAnim humanoid (X3D)."""
+"""`sass export hanim|gltf`: the figure of `sass fig` as an HAnim humanoid (X3D)
+or as a skinned glTF 2.0 body built from the same humanoid."""
 
 from __future__ import annotations
 
 import argparse
 import sys
+from typing import TYPE_CHECKING
 
 from sass_tui.cli.options import SubParsers, add_figure_options, figure_from_args, print_warnings
+from sass_tui.model.paths import user_path
+
+if TYPE_CHECKING:
+    from sass_tui.model.figure import Figure
 
 
 def register(commands: SubParsers) -> None:
@@ -17,16 +23,54 @@ def register(commands: SubParsers) -> None:
     hanim.add_argument("-o", "--output", metavar="NAME.x3d", required=True, help="output file")
     add_figure_options(hanim)
     hanim.set_defaults(func=run_hanim)
+    gltf = formats.add_parser(
+        "gltf",
+        help="glTF 2.0 skinned body (.glb; .gltf + .bin), the HAnim joints and sites",
+    )
+    gltf.add_argument(
+        "-o",
+        "--output",
+        metavar="NAME.glb",
+        required=True,
+        help="output file: NAME.glb (binary) or NAME.gltf (writes NAME.bin beside it)",
+    )
+    gltf.add_argument(
+        "--pose",
+        choices=("standing", "seated"),
+        default="standing",
+        help="standing (the HAnim I pose, default) or seated (hips and knees at 90 degrees)",
+    )
+    add_figure_options(gltf)
+    gltf.set_defaults(func=run_gltf)
 
 
 def run_hanim(args: argparse.Namespace) -> int:
-    from sass_tui.model.hanim import export_hanim, not_in_humanoid_note
+    from sass_tui.model.hanim import export_hanim
 
     figure, warnings = figure_from_args(args)
     print_warnings(warnings)
-    path = export_hanim(figure, args.output)
+    path = export_hanim(figure, user_path(args.output))
     print(f"wrote {path}")
+    _note(figure)
+    return 0
+
+
+def run_gltf(args: argparse.Namespace) -> int:
+    from sass_tui.model.gltf import check_path, export_gltf
+
+    path = check_path(user_path(args.output))  # refused before the database is opened
+    figure, warnings = figure_from_args(args)
+    print_warnings(warnings)
+    for written in export_gltf(figure, path, args.pose):
+        print(f"wrote {written}")
+    _note(figure)
+    return 0
+
+
+def _note(figure: Figure) -> None:
+    """What of the figure the humanoid (HAnim and glTF alike) leaves out."""
+    from sass_tui.model.hanim import not_in_humanoid_note
+
     note = not_in_humanoid_note(figure).strip()
     if note:
         print(f"note: {note.replace(' (Create Figure)', ' (sass fig)')}", file=sys.stderr)
-    return 0

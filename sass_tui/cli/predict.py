@@ -51,8 +51,9 @@ def register(commands: SubParsers) -> None:
     predict.add_argument(
         "-o",
         dest="figure",
-        metavar="OUT.fig|OUT.x3d",
-        help="also write the predicted figure: a PEABODY .fig file or an HAnim .x3d humanoid",
+        metavar="OUT.fig|OUT.x3d|OUT.glb",
+        help="also write the predicted figure: a PEABODY .fig file, an HAnim .x3d humanoid "
+        "or a glTF 2.0 body (.glb, or .gltf + .bin)",
     )
     predict.add_argument(
         "--nearest",
@@ -96,8 +97,10 @@ def run(args: argparse.Namespace) -> int:
         raise PredictArgumentError("--output is for a batch: give --input KNOWN.csv too")
     elif not args.known:
         raise PredictArgumentError("give at least one --known NAME=VALUE, or --input KNOWN.csv")
-    if args.figure and not args.figure.lower().endswith((".fig", ".x3d")):
-        raise PredictArgumentError(f"-o {args.figure}: the file must end in .fig or .x3d")
+    if args.figure and not args.figure.lower().endswith((".fig", ".x3d", ".glb", ".gltf")):
+        raise PredictArgumentError(
+            f"-o {args.figure}: the file must end in .fig, .x3d, .glb or .gltf"
+        )
     from sass_tui.model.prediction import split_known
 
     pairs = [pair for item in args.known for pair in split_known(item)]
@@ -174,11 +177,16 @@ def _write_table(prediction: Prediction, out: TextIO) -> None:
 
 
 def write_prediction_figure(prediction: Prediction, path: str) -> str:
-    """The predicted person as a .fig file or an HAnim .x3d humanoid; cells the
-    model has no value for come from the default population (the file says which)."""
+    """The predicted person as a .fig file, an HAnim .x3d humanoid or a glTF
+    body; cells the model has no value for come from the default population
+    (the file says which)."""
     from sass_tui.model.figure import Figure
 
     figure = prediction.figure(Figure.default(prediction.gender))
+    if path.lower().endswith((".glb", ".gltf")):
+        from sass_tui.model.gltf import export_gltf
+
+        return ", ".join(str(p) for p in export_gltf(figure, path))
     if path.lower().endswith(".x3d"):
         from sass_tui.model.hanim import export_hanim
 

@@ -52,10 +52,15 @@ def temporary_name(path: Path, pid: int | None = None) -> Path:
 
 def write_text_atomic(path: str | Path, text: str, encoding: str = "utf-8") -> None:
     """Write `text` to `path` atomically, or raise OutputFileError naming `path`."""
+    write_bytes_atomic(path, text.encode(encoding))
+
+
+def write_bytes_atomic(path: str | Path, data: bytes) -> None:
+    """Write `data` to `path` atomically, or raise OutputFileError naming `path`
+    (binary files: a glTF's .glb and .bin)."""
     path = Path(os.fspath(path))
     mode = _mode_for(path)
     _remove_stale_temporaries(path)
-    data = text.encode(encoding)
     tmp = temporary_name(path)
     try:
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o600)

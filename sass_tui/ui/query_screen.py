@@ -355,6 +355,7 @@ class QueryScreen(SassScreen):
         Binding("b", "build", "Build", tooltip="Build query"),
         Binding("m", "make_population", "Make", tooltip="Make Population"),
         Binding("f", "fit_test", "Fit", tooltip="Fit Test"),
+        Binding("t", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         Binding("q", "app.quit", "Quit"),
         Binding("escape", "cancel_work", "Cancel work", show=False),
         Binding("pagedown", "next_page", show=False),
@@ -831,6 +832,12 @@ class QueryScreen(SassScreen):
             answer,
             on_cancel=lambda: self.say("Fit Test cancelled."),
         )
+
+    def action_export_gltf(self) -> None:
+        """Write the highlighted person as a glTF 2.0 body (.glb)."""
+        from sass_tui.ui.gltf_export import export_list_person
+
+        self._list_command(lambda: export_list_person(self, self._database, self.sheet.highlighted))
 
     # --- Input DB ----------------------------------------------------------------------
     def action_input_db(self) -> None:

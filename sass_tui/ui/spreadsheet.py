@@ -156,6 +156,7 @@ class SpreadsheetScreen(SassScreen):
         Binding("w", "next_warning", "Warn", tooltip="Warnings"),
         Binding("l", "message_log", show=False),
         Binding("b", "see_figure", "Draw", tooltip="See figure"),
+        Binding("t", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         *(
             Binding(spec.key, spec.action, spec.footer)
             for spec in COMMANDS
@@ -629,6 +630,12 @@ class SpreadsheetScreen(SassScreen):
         text = render_hanim(self.figure)  # on the UI thread: see _write_figure
         done = f"Exported the HAnim humanoid to {path}.{not_in_humanoid_note(self.figure)}"
         self._write_unless_kept(path, lambda: self.write_text(path, text, done))
+
+    def action_export_gltf(self) -> None:
+        """Write the figure shown as a glTF 2.0 body (.glb)."""
+        from sass_tui.ui.gltf_export import ask_gltf_export
+
+        ask_gltf_export(self, self.figure, self._default_name(".glb"))
 
     # --- editing the data section -------------------------------------------------------
     def _pass_to_prompt(self, widget: EditorKeys, initial: str) -> bool:

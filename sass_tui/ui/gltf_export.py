@@ -1,0 +1,108 @@
+"""Export glTF (t): a figure as a skinned glTF 2.0 body (model/gltf.py).
+
+One path for both screens that offer it: the spreadsheet exports the figure
+shown (the population's, or the person displayed), the query screen the
+person under the list's cursor, measured against the spreadsheet's
+population as Disp. Indv. does (report §12.4).  The prompts are Export
+HAnim's: the file name (the person's, else MALE50.glb), the pose, and y/N
+before a file is replaced.  The asset is made here, on the UI thread, from
+the figure as it is when the name is given; the worker only writes the
+bytes (architecture.md, Workers).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from contextlib import AbstractContextManager
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from sass_tui.model.errors import SassError
+from sass_tui.model.paths import user_path
+
+if TYPE_CHECKING:
+    from sass_tui.model.figure import Figure
+    from sass_tui.model.gltf import GltfDocument
+    from sass_tui.ui.base import SassScreen
+
+
+def ask_gltf_export(screen: SassScreen, figure: Figure, default: str) -> None:
+    """Ask for the file name and the pose, then write `figure` as glTF."""
+    screen.ask(
+        f"glTF file name (.glb, or .gltf + .bin) [{default}]:",
+        lambda text: _ask_pose(screen, figure, text.strip() or default),
+    )
+
+
+def _ask_pose(screen: SassScreen, figure: Figure, name: str) -> None:
+    from sass_tui.model.gltf import POSES, check_path, pose_of
+
+    path = check_path(user_path(name))  # refused before the next prompt
+
+    def posed(answer: str) -> None:
+        _export(screen, figure, path, pose_of(answer))
+
+    screen.ask(f"Pose: {' or '.join(POSES)} [{POSES[0]}]:", posed)
+
+
+def _export(screen: SassScreen, figure: Figure, path: Path, pose: str) -> None:
+    from sass_tui.model.gltf import bin_path, render_gltf
+    from sass_tui.model.hanim import not_in_humanoid_note
+
+    asset = render_gltf(figure, pose)
+    files = [path] if path.suffix.lower() == ".glb" else [path, bin_path(path)]
+    done = (
+        f"Exported the {pose} glTF body to {' and '.join(map(str, files))}."
+        f"{not_in_humanoid_note(figure)}"
+    )
+    existing = [f for f in files if f.exists()]
+    if not existing:
+        _write(screen, asset, path, done)
+        return
+
+    def overwrite(answer: str) -> None:
+        if answer.strip().lower() in ("y", "yes"):
+            _write(screen, asset, path, done)
+        else:
+            screen.say(f"Not written; {' and '.join(map(str, existing))} kept as it was.")
+
+    screen.ask(f"{' and '.join(map(str, existing))} exists. Overwrite? (y/N)", overwrite)
+
+
+def _write(screen: SassScreen, asset: GltfDocument, path: Path, done: str) -> None:
+    def write() -> None:
+        from sass_tui.model.gltf import write_gltf
+
+        try:
+            write_gltf(asset, path)
+        except (SassError, OSError) as exc:
+            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else exc
+            screen.app.call_from_thread(screen.complain, f"{path}: cannot write: {reason}")
+            return
+        screen.app.call_from_thread(screen.say, done)
+
+    screen.run_worker(write, thread=True, group="write", exit_on_error=False)
+
+
+def export_list_person(
+    screen: SassScreen, database: Callable[[], AbstractContextManager], row: dict | None
+) -> None:
+    """The query screen's Export glTF: the person of the list row `row`, read
+    through the screen's `database()` (which refuses while a query runs)."""
+    import sqlite3
+
+    from sass_tui.db.individual import fetch_individual, person_figure
+    from sass_tui.model.hanim import build_humanoid
+
+    if row is None:
+        screen.say("The list is empty: no person to export.")
+        return
+    with database() as lists:
+        try:
+            person = fetch_individual(lists.conn, row["id"])
+        except sqlite3.Error as exc:
+            screen.complain(f"Cannot read {row['name']} from the database: {exc}")
+            return
+    figure = person_figure(person, screen.sass_app.session.population)
+    # the humanoid's name is the person's, as a file name ('ANSUR_II_M_10037')
+    ask_gltf_export(screen, figure, f"{build_humanoid(figure).name}.glb")
