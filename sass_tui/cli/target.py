@@ -29,6 +29,9 @@ DEFAULT_BY = "stature,mass"
 class TargetArgumentError(ValueError, SassError):
     """Options of `sass target` that do not go together."""
 
+    def __init__(self, message: str = "", *, where: str | None = None) -> None:
+        SassError.__init__(self, message, where=where)
+
 
 def register(commands: SubParsers) -> None:
     target = commands.add_parser(

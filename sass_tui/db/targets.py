@@ -26,7 +26,6 @@ import numpy.typing as npt
 
 from sass_tui.db.query import compile_query
 from sass_tui.db.schema import check_writable, transaction
-from sass_tui.model.errors import SassError
 from sass_tui.model.target_sample import Sample
 from sass_tui.model.targets import TargetError, Weighting, calibrate
 from sass_tui.model.vocabulary import GENDERS
@@ -35,11 +34,11 @@ DEFAULT_POPULATION = "source = ansur2"  # the real people (= db.fit.DEFAULT_POPU
 MAX_NAME = 64
 
 
-class TargetExistsError(ValueError, SassError):
+class TargetExistsError(TargetError):
     """A target of that name is stored already (replace it with --force)."""
 
 
-class UnknownTargetError(ValueError, SassError):
+class UnknownTargetError(TargetError):
     """No target of that name is stored."""
 
 
@@ -266,6 +265,7 @@ def load_target(conn: sqlite3.Connection, name: str) -> TargetWeights:
 
 @dataclass(frozen=True)
 class WeightedCount:
+    target: Target
     count: int  # people the query selects
     in_target: int  # of them, people of the target
     weighted: float  # their weight (people the target's weights stand for)
@@ -276,15 +276,15 @@ class WeightedCount:
         return 100.0 * self.weighted / self.total if self.total else 0.0
 
 
-def weighted_count(conn: sqlite3.Connection, query: str, name: str) -> WeightedCount:
+def weighted_count(conn: sqlite3.Connection, query: str, weights: TargetWeights) -> WeightedCount:
     """How many people `query` selects, and the share of the target's weight they hold."""
     from sass_tui.db.query import run_query
 
-    weights = load_target(conn, name)
     result = run_query(conn, query)
     ids = np.array(sorted(result.ids()), dtype=np.int64)
     mine = weights.of(ids)
     return WeightedCount(
+        target=weights.target,
         count=len(ids),
         in_target=int((mine > 0).sum()),
         weighted=float(mine.sum()),

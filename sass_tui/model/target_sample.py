@@ -30,6 +30,9 @@ _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[([^\[\]]*)\])?\s*$")
 class SampleError(ValueError, SassError):
     """A sample file sass cannot read (nothing was stored)."""
 
+    def __init__(self, message: str = "", *, where: str | None = None) -> None:
+        SassError.__init__(self, message, where=where)
+
 
 @dataclass(frozen=True)
 class Sample:

@@ -58,6 +58,9 @@ MAX_ITERATIONS: Final = 100
 class TargetError(ValueError, SassError):
     """A target that cannot be made as asked; nothing was stored."""
 
+    def __init__(self, message: str = "", *, where: str | None = None) -> None:
+        SassError.__init__(self, message, where=where)
+
 
 def weighted_percentile(
     values: npt.ArrayLike, weights: npt.ArrayLike | None, percentiles: npt.ArrayLike
