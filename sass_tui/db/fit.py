@@ -361,13 +361,15 @@ def load_family(
     predictor: Predictor | None = None,
     progress: Progress | None = None,
     cancel: Cancel | None = None,
+    weighted_to: TargetWeights | None = None,
 ) -> Family:
     """The manikin family of `gender` over `measures` (see
     `sass_tui.model.accommodation`): the population's people of that gender,
     their values, and the database's prediction model to complete each manikin.
     `measures` are `--measures` names (`stature`, `mass`, `sittingheight`, ...).
     `progress(steps done, 3)`: the people read, the model, the family built;
-    `cancel` stops it with Cancelled between them (it writes nothing)."""
+    `cancel` stops it with Cancelled between them (it writes nothing).
+    `weighted_to` (a target population of `gender`): the target's people, weighted."""
     from sass_tui.db.predict import open_predictor
     from sass_tui.db.values import load_values
 
@@ -375,6 +377,12 @@ def load_family(
         raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
     fields = [measure_field(m) for m in measures]
     compile_query(population)  # its own error, before the combined query's
+    if weighted_to is not None:
+        made = weighted_to.target
+        if made.gender != gender:
+            raise FitError(f"the target {made.name} is of {made.gender} people, not {gender}")
+        if population != made.population:
+            population = f"({population}) AND ({made.population})"
     steps = Steps(progress, cancel, "the family")
     steps(0, 3)
     with interruptible(conn, cancel, "the family"):
@@ -385,9 +393,19 @@ def load_family(
     with interruptible(conn, cancel, "the family"):
         model = predictor if predictor is not None else open_predictor(conn)
     steps(2, 3)
+    weights = None if weighted_to is None else weighted_to.of(values.ids)
     family = build_family(
-        gender, fields, values.ids, values.names, values.matrix, target, model, kind
+        gender, fields, values.ids, values.names, values.matrix, target, model, kind, weights
     )
+    if weighted_to is not None and weights is not None:
+        from sass_tui.model.targets import kish_effective_n
+
+        used = ~np.isnan(values.matrix).any(axis=1)
+        family = replace(
+            family,
+            target=weighted_to.target.to_json()
+            | {"effective_n": round(kish_effective_n(weights[used]), 2)},
+        )
     steps(3, 3)
     return family
 
