@@ -246,7 +246,7 @@ def _reachable(
         low, high = float(x[:, i].min()), float(x[:, i].max())
         if cuts[i][0] < low or cuts[i][-1] >= high:
             raise TargetError(
-                f"{field}: the target lies outside the people: its 10th-90th percentiles "
+                f"{where}: {field}: the target lies outside the people: its 10th-90th percentiles "
                 f"run {cuts[i][0]:.1f}-{cuts[i][-1]:.1f}, the people's values "
                 f"{low:.1f}-{high:.1f}; nothing stored",
                 where=where,
@@ -289,7 +289,7 @@ def _solve(d: FloatArray, fields: tuple[str, ...], where: str) -> tuple[FloatArr
     if float(np.abs(gradient).max()) < 1e3 * TOLERANCE:
         return lam, MAX_ITERATIONS
     raise TargetError(
-        f"the target lies outside the people: no weighting of them reproduces the "
+        f"{where}: the target lies outside the people: no weighting of them reproduces the "
         f"distribution of {', '.join(fields)} in {where}; nothing stored",
         where=where,
     )
