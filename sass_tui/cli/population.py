@@ -59,7 +59,7 @@ def run(args: argparse.Namespace) -> int:
 
     if args.query is None and args.ids is None and args.target is None:
         print(
-            "sass population: error: give --query QUERY, --ids FILE, --target NAME or more",
+            "sass population: error: give --query QUERY, --ids FILE or both (or --target NAME)",
             file=sys.stderr,
         )
         return 2
