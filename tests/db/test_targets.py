@@ -80,9 +80,11 @@ def stored_targets(db: Path) -> list[tuple]:
         conn.close()
 
 
-@pytest.mark.parametrize("q", [50, 90])
-def test_the_weighted_share_is_the_samples(made, sample, capsys, q):
-    stature, mass = np.percentile(sample[:, 0], q), np.percentile(sample[:, 1], q)
+@pytest.mark.parametrize(("q", "r"), [(50, 50), (90, 90), (70, 35), (30, 80)])
+def test_the_weighted_share_is_the_samples(made, sample, capsys, q, r):
+    """S, M at the sample's q-th and r-th percentiles (50/50 and 90/90 as asked;
+    two pairs off the quartiles the weights are calibrated to)."""
+    stature, mass = np.percentile(sample[:, 0], q), np.percentile(sample[:, 1], r)
     own = 100 * np.mean((sample[:, 0] <= stature) & (sample[:, 1] <= mass))
     limits = f"stature <= {stature:.4f} cm AND mass <= {mass:.4f} kg"
     result = run_json(

@@ -70,6 +70,10 @@ def test_the_weighted_people_have_the_samples_moments_and_shares():
         for cut in np.percentile(sample[:, i], CUT_PERCENTILES):
             share = w[base[:, i] <= cut].sum() / w.sum()
             assert share == pytest.approx(np.mean(sample[:, i] <= cut), abs=1e-5)
+    for q in (25, 50, 75):
+        a, b = np.percentile(sample, q, axis=0)
+        share = w[(base[:, 0] <= a) & (base[:, 1] <= b)].sum() / w.sum()
+        assert share == pytest.approx(np.mean((sample[:, 0] <= a) & (sample[:, 1] <= b)), abs=1e-5)
 
 
 def test_people_lacking_a_value_weigh_nothing():
