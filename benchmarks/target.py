@@ -16,18 +16,22 @@ from __future__ import annotations
 
 import argparse
 import statistics
+import sys
 import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
-
-import numpy as np
 
 from sass_tui.db.default import create_default_database
 from sass_tui.db.fit import fit_test
 from sass_tui.db.schema import connect
 from sass_tui.db.targets import load_target, make_target, store_target
 from sass_tui.model.target_sample import read_sample
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from scripts.target_accuracy import civilian_women  # noqa: E402
 
 SEAT = (
     "stature <= 190 cm AND measure.sittingheight <= 100 cm "
@@ -37,13 +41,10 @@ ROWS = 10_000
 
 
 def sample_text(rows: int) -> str:
-    """Heavier, shorter women than ANSUR II's (as tests/db/test_targets.py's)."""
-    rng = np.random.default_rng(1)
-    z1, z2 = rng.standard_normal((2, rows))
-    stature = 160.5 + 6.8 * z1
-    mass = np.exp(np.log(74.0) + 0.19 * (0.3 * z1 + np.sqrt(1 - 0.09) * z2))
+    """Heavier, shorter women than ANSUR II's (scripts/target_accuracy.py's)."""
+    values = civilian_women(rows, seed=1)
     lines = ["id,stature[in],mass[kg]"]
-    lines += [f"{i},{s / 2.54:.3f},{m:.2f}" for i, (s, m) in enumerate(zip(stature, mass))]
+    lines += [f"{i},{s / 2.54:.3f},{m:.2f}" for i, (s, m) in enumerate(values)]
     return "\n".join(lines) + "\n"
 
 
