@@ -94,3 +94,39 @@ def test_no_targets_says_how_to_make_one(drive, db):
             assert "sass target NAME" in app.screen.message_line.history[-1][1]
 
     drive(scenario())
+
+
+def test_make_population_weighted_to_a_target(drive, targeted_db, tmp_path):
+    """Make Population with a target: the spreadsheet's stature percentiles are the
+    weighted empirical percentiles of the target's people (computed here from the
+    stored weights and the people's statures)."""
+    from sass_tui.model.names import GIRTH
+    from sass_tui.model.targets import weighted_percentile
+
+    with connect(targeted_db) as conn:
+        weights = load_target(conn, "civ")
+        stature = dict(conn.execute("SELECT id_num, stature FROM person"))
+    expected = weighted_percentile(
+        [stature[int(i)] for i in weights.ids], weights.weights, [5, 50, 95]
+    )
+    out = tmp_path / "civ.dat"
+
+    async def scenario():
+        app = SassApp(db_path=targeted_db)
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.press("d")
+            await settle(pilot)
+            app.screen.start_query("gender = female")
+            await settle(pilot)
+            await pilot.press("t", "down", "enter")
+            await pilot.press("a", "m")
+            await pilot.press(*str(out), "enter")
+            await settle(pilot)
+            figure = app.session.population
+            assert figure.gender == "female"
+            stats = figure.global_stats.stats("female")[0, 0]
+            np.testing.assert_allclose(stats, expected, atol=1e-9)
+            assert "weighted to target civ" in figure.groups[GIRTH].source.title
+            assert figure.stature == pytest.approx(expected[1])
+
+    drive(scenario())
