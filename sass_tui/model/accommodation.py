@@ -456,6 +456,8 @@ def write_family(family: Family, directory: str | Path, population: Figure) -> F
     manikins = []
     for manikin in family.manikins:
         figure = manikin.figure(population)
+        if family.target is not None:  # every file of a weighted family says so
+            figure.person = f"{figure.person}, weighted to target {family.target['name']}"
         stem = f"{family.gender}_{manikin.name}"
         write_fig(figure, out / f"{stem}.fig")
         export_hanim(figure, out / f"{stem}.x3d")

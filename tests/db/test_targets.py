@@ -152,6 +152,9 @@ def test_the_weighted_family(made, sample, tmp_path, capsys):
     assert main([*argv, "-o", str(tmp_path / "u")]) == 0
     plain = json.loads((tmp_path / "u" / "family.json").read_text(encoding="utf-8"))
     assert "target" not in plain and weighted["target"]["name"] == "civ"
+    assert "weighted to target civ" in (tmp_path / "w" / "female_center.fig").read_text(
+        encoding="utf-8"
+    )
     center = next(m for m in weighted["manikins"] if m["name"] == "center")["values"]
     assert center["stature"] == pytest.approx(sample[:, 0].mean(), abs=0.05)
     assert center["mass"] == pytest.approx(sample[:, 1].mean(), abs=0.05)
