@@ -19,6 +19,8 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
+    import sqlite3
+
     from sass_tui.db.targets import Target
     from sass_tui.model.targets import Weighting
 
@@ -192,10 +194,10 @@ def _report(target: Target, weighting: Weighting, incomplete: int, out: TextIO) 
         print(f"warning: {warning}", file=sys.stderr)
 
 
-def _list(conn: object, out: TextIO) -> None:
+def _list(conn: sqlite3.Connection, out: TextIO) -> None:
     from sass_tui.db.targets import list_targets
 
-    targets = list_targets(conn)  # type: ignore[arg-type]
+    targets = list_targets(conn)
     if not targets:
         out.write("no targets (make one with `sass target NAME --gender G --sample FILE.csv`)\n")
         return

@@ -91,10 +91,10 @@ class TargetWeights:
 
     def of(self, ids: npt.NDArray[np.int64]) -> npt.NDArray[np.float64]:
         """The weight of each of `ids` (0 for people not in the target)."""
-        where = np.searchsorted(self.ids, ids)
-        where = np.clip(where, 0, max(len(self.ids) - 1, 0))
-        found = (self.ids[where] == ids) if len(self.ids) else np.zeros(len(ids), dtype=bool)
-        out: npt.NDArray[np.float64] = np.where(found, self.weights[where], 0.0)
+        if len(self.ids) == 0:  # every one of its people deleted since
+            return np.zeros(len(ids))
+        where = np.clip(np.searchsorted(self.ids, ids), 0, len(self.ids) - 1)
+        out: npt.NDArray[np.float64] = np.where(self.ids[where] == ids, self.weights[where], 0.0)
         return out
 
 

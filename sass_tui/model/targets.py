@@ -25,7 +25,9 @@ w_i proportional to exp(lambda . g(x_i)).  lambda minimises the convex dual
 log sum_i exp(lambda . (g(x_i) - t)) (t the sample's moments), found by Newton's
 method with a backtracking line search.  When no weights reproduce the
 target (it lies outside the people: a share the people cannot reach) the
-dual has no minimum and the solve is refused.
+dual has no minimum and the solve is refused; so are weights whose Kish
+effective sample size is under MIN_EFFECTIVE (a handful of people standing
+for everybody).
 
 Weighted percentiles (`weighted_percentile`) interpolate linearly between
 the sorted values at positions made from the cumulative weights; with equal
@@ -53,6 +55,8 @@ CUT_PERCENTILES: Final = (10.0, 25.0, 50.0, 75.0, 90.0)
 JOINT_CUTS: Final = [1, 2, 3]  # of CUT_PERCENTILES: the quartiles, for each pair's joint shares
 SUMMARY_PERCENTILES: Final = (5.0, 50.0, 95.0)
 LOW_EFFECTIVE_SHARE: Final = 0.10  # warn below this Kish size / people
+# Refuse below this Kish size: a handful of people standing for everybody.
+MIN_EFFECTIVE: Final = 30
 # The calibration is met when every weighted moment is within this of the
 # target (moments of standardised values; shares as fractions).
 TOLERANCE: Final = 1e-7
@@ -230,6 +234,14 @@ def calibrate(
     exponent = (g - goal) @ lam
     w = np.exp(exponent - exponent.max())
     w *= len(w) / w.sum()
+    effective = kish_effective_n(w)
+    if effective < MIN_EFFECTIVE:
+        raise TargetError(
+            f"{where}: the target lies outside the people: the weights that match it leave "
+            f"an effective sample size of {effective:.0f} of {len(w)} people (at least "
+            f"{MIN_EFFECTIVE} needed); nothing stored",
+            where=where,
+        )
     weights = np.zeros(len(people))
     weights[used] = w
     checks = tuple(

@@ -229,3 +229,26 @@ def test_bad_samples_store_nothing(default_db_file, tmp_path, capsys, lines, say
     assert str(csv_path) in err or "--by" in err
     assert stored_targets(db) == []
     assert db.read_bytes() == before
+
+
+def test_people_deleted_since_drop_out_of_the_sums(made, tmp_path):
+    from sass_tui.db.schema import connect, delete_people, transaction
+    from sass_tui.db.targets import load_target, weighted_count
+
+    db = tmp_path / "sass.db"
+    shutil.copyfile(made, db)
+    conn = connect(db)
+    try:
+        before = load_target(conn, "civ")
+        gone = [int(i) for i in before.ids[:100]]
+        with transaction(conn):
+            delete_people(conn, gone)
+        after = load_target(conn, "civ")
+        assert len(after.ids) == len(before.ids) - 100
+        assert not set(gone) & set(after.ids.tolist())
+        assert after.of(np.array(gone, dtype=np.int64)).sum() == 0
+        counted = weighted_count(conn, "gender = female", after)
+        assert counted.weighted == pytest.approx(counted.total)
+        assert counted.total == pytest.approx(before.weights[100:].sum())
+    finally:
+        conn.close()

@@ -106,10 +106,19 @@ def test_a_target_is_matched_or_refused(shift):
     assert np.allclose(w @ base / w.sum(), sample.mean(axis=0), atol=1e-4)
 
 
-def test_a_target_far_outside_is_refused():
-    base, sample = _base_and_sample(shift=30)
+@pytest.mark.parametrize("shift", [8, 30])
+def test_a_target_far_outside_is_refused(shift):
+    """8: weights exist, but ~16 people would stand for everybody; 30: none exist."""
+    base, sample = _base_and_sample(shift=shift)
     with pytest.raises(TargetError, match="outside the people"):
         calibrate(["stature", "mass"], base, sample)
+
+
+def test_a_target_largely_outside_is_made_with_a_warning():
+    base, sample = _base_and_sample(shift=6)
+    weighting = calibrate(["stature", "mass"], base, sample)
+    assert weighting.effective_n < 0.1 * weighting.people
+    assert any("effective sample size" in w for w in weighting.warnings())
 
 
 def test_too_few_rows_are_refused():
