@@ -29,6 +29,7 @@ VERBS = (
     "predict",
     "fit",
     "family",
+    "target",
     "db",
     "serve",
 )

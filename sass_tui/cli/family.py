@@ -62,6 +62,12 @@ def register(commands: SubParsers) -> None:
         default=DEFAULT_POPULATION,
         help=f"the people (default: {DEFAULT_POPULATION!r})",
     )
+    family.add_argument(
+        "--target",
+        metavar="NAME",
+        help="the people of a target population (sass target), weighted: the ellipsoid "
+        "and the coverage of the weighted people",
+    )
     family.add_argument("-o", "--output", metavar="DIR", required=True, help="output directory")
     family.set_defaults(func=run)
 
@@ -81,6 +87,11 @@ def run(args: argparse.Namespace) -> int:
         error.column = exc.column
         raise error from None
     conn = open_db(args)
+    weighted_to = None
+    if args.target is not None:
+        from sass_tui.db.targets import load_target
+
+        weighted_to = load_target(conn, args.target)
     family = load_family(
         conn,
         args.gender,
@@ -88,21 +99,25 @@ def run(args: argparse.Namespace) -> int:
         args.coverage / 100.0,
         args.kind,
         args.population,
+        weighted_to=weighted_to,
     )
     written = write_family(family, args.output, Figure.default(args.gender))
     out = sys.stdout
     coverage = written.coverage
+    people = "people" if weighted_to is None else "people unweighted"
     out.write(
         f"{args.gender} {args.kind} family over {', '.join(written.measures)}: "
         f"{len(written.manikins)} manikins in {args.output}\n"
-        f"coverage of the {coverage.n} {args.gender} people"
+        + (f"weighted: {weighted_to.target.words()}\n" if weighted_to is not None else "")
+        + f"coverage of the {coverage.n} {args.gender} people"
+        + (" (weighted shares)" if weighted_to is not None else "")
         + (f" ({coverage.missing} not measured, left out)" if coverage.missing else "")
         + ":\n"
         f"  inside the ellipsoid  {coverage.inside_percent:5.1f} % "
-        f"({coverage.inside_ellipsoid} people; the chi-square promise is "
+        f"({coverage.inside_ellipsoid} {people}; the chi-square promise is "
         f"{coverage.promised_percent:g} %)\n"
         f"  within every range    {coverage.within_ranges_percent:5.1f} % "
-        f"({coverage.within_ranges} people)\n"
+        f"({coverage.within_ranges} {people})\n"
     )
     width = max(len(m.name) for m in written.manikins)
     header = "".join(f" {f.removeprefix('measure.'):>17.17}" for f in written.measures)

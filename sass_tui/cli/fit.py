@@ -55,6 +55,12 @@ def register(commands: SubParsers) -> None:
         metavar="male=W,female=W",
         help="weights of the genders in the weighted share (default: equal)",
     )
+    fit.add_argument(
+        "--target",
+        metavar="NAME",
+        help="test the people of a target population (sass target), weighted; "
+        "the unweighted figures beside",
+    )
     fit.add_argument("--format", choices=("table", "json"), default="table")
     fit.add_argument("--failing", action="store_true", help="list who fails which limits")
     fit.add_argument(
@@ -81,7 +87,14 @@ def run(args: argparse.Namespace) -> int:
         raise error from None
     check_mix(args.mix)
     conn = open_db(args)
-    result = fit_test(conn, args.limits, args.population, args.mix, failing=args.failing)
+    target = None
+    if args.target is not None:
+        from sass_tui.db.targets import load_target
+
+        target = load_target(conn, args.target)
+    result = fit_test(
+        conn, args.limits, args.population, args.mix, failing=args.failing, target=target
+    )
     if args.format == "json":
         json.dump(result.to_json(), sys.stdout, indent=1, allow_nan=False)
         sys.stdout.write("\n")

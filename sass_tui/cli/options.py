@@ -81,13 +81,19 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--girth", metavar="F", help="girth population file")
     parser.add_argument("--jntlmt", metavar="F", help="joint-limit population file")
     parser.add_argument("--cmass", metavar="F", help="center-of-mass population file")
+    parser.add_argument(
+        "--global",
+        dest="global_file",
+        metavar="F",
+        help="stature and mass statistics file (e.g. sass population --target's FILE-global.dat)",
+    )
 
 
 def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     """Build the figure the options describe, through a Session as the TUI
     does (each edit checked the same way); returns it and the load warnings."""
     from sass_tui.model.figure import Figure, FigureError
-    from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
+    from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
     from sass_tui.model.popfile import read_population_file
     from sass_tui.model.session import Session
     from sass_tui.model.units import parse_quantity
@@ -108,6 +114,10 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
             data = read_population_file(option, group)
             session.load_group(group, data)
             warnings += [w for w in data.warnings if w not in warnings]
+    if args.global_file:
+        data = read_population_file(args.global_file, GLOBAL)
+        session.load_global(data)
+        warnings += [w for w in data.warnings if w not in warnings]
     for group, option in (
         (GIRTH, args.girth_percentile),
         (JOINT_LIMITS, args.joint_limit_percentile),

@@ -38,6 +38,12 @@ def register(commands: SubParsers) -> None:
         help="girth file; the center-of-mass file is FILE-cmass.dat beside it",
     )
     population.add_argument("--title", metavar="T", help="title (default: the query)")
+    population.add_argument(
+        "--target",
+        metavar="NAME",
+        help="the people of a target population (sass target), weighted percentiles; "
+        "also writes FILE-global.dat (stature and mass, for sass fig --global)",
+    )
     population.set_defaults(func=run)
 
 
@@ -51,8 +57,11 @@ def run(args: argparse.Namespace) -> int:
     from sass_tui.db.query import compile_query
     from sass_tui.model.names import GROUP_TITLES
 
-    if args.query is None and args.ids is None:
-        print("sass population: error: give --query QUERY, --ids FILE or both", file=sys.stderr)
+    if args.query is None and args.ids is None and args.target is None:
+        print(
+            "sass population: error: give --query QUERY, --ids FILE or both (or --target NAME)",
+            file=sys.stderr,
+        )
         return 2
     if args.query is not None:
         compile_query(args.query)  # a bad query touches nothing
@@ -60,12 +69,18 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     try:
         absent = missing_ids(conn, ids) if ids is not None else []
+        target = None
+        if args.target is not None:
+            from sass_tui.db.targets import load_target
+
+            target = load_target(conn, args.target)
         result = population_of(
             conn,
             args.query,
             ids=ids,
             title=args.title,
             ids_from="the list on standard input" if args.ids == "-" else f"the list {args.ids}",
+            target=target,
         )
     finally:
         conn.close()

@@ -22,6 +22,11 @@ def register(commands: SubParsers) -> None:
         "from the column copy, see `sass db copy`)",
     )
     query.add_argument(
+        "--target",
+        metavar="NAME",
+        help="with --count: also the weighted count and share of a target population (sass target)",
+    )
+    query.add_argument(
         "query", metavar="QUERY", help='e.g. "gender = male AND girth.right_upper_arm.z > 28 cm"'
     )
     query.set_defaults(func=run)
@@ -34,8 +39,14 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     query = Query(conn, compiled)
     if args.count:
+        if args.target is not None:
+            return _weighted_count(conn, args.query, args.target)
         print(query.count())
         return 0
+    if args.target is not None:
+        from sass_tui.model.targets import TargetError
+
+        raise TargetError("--target weights a count: give --count too")
     rows = query.person_rows()  # tuples in PERSON_FIELDS order
     out = sys.stdout
     if args.format == "csv":
@@ -53,6 +64,21 @@ def run(args: argparse.Namespace) -> int:
         out.write("\n")
     else:
         _write_table(out, rows)
+    return 0
+
+
+def _weighted_count(conn, query: str, name: str) -> int:
+    """The raw count, and beside it the target's weighted count and share."""
+    from sass_tui.db.targets import load_target, weighted_count
+
+    counted = weighted_count(conn, query, load_target(conn, name))
+    target = counted.target
+    print(
+        f"{counted.count}\nweighted: {counted.weighted:.1f} of {counted.total:.0f} "
+        f"({counted.percent:.1f} %) of target {target.name} ({target.gender}, weighted by "
+        f"{', '.join(target.fields)} to {target.sample}; {counted.in_target} of the "
+        f"{counted.count} people are the target's)"
+    )
     return 0
 
 

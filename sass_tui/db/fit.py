@@ -29,7 +29,7 @@ from __future__ import annotations
 import math
 import sqlite3
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -42,6 +42,7 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
+    from sass_tui.db.targets import TargetWeights
     from sass_tui.model.prediction import Predictor
 
 DEFAULT_POPULATION = "source = ansur2"
@@ -81,6 +82,24 @@ class FailingPerson:
 
 
 @dataclass(frozen=True)
+class TargetShare:
+    """The share of a target population (sass_tui/db/targets.py) accommodated:
+    the fitting people's weight over the measured people's weight."""
+
+    name: str
+    words: str  # how the answer names its target (Target.words)
+    percent: float | None
+    effective_n: float  # Kish, over the measured people of the target
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "name": self.name,
+            "percent": _round(self.percent),
+            "effective_n": round(self.effective_n, 2),
+        }
+
+
+@dataclass(frozen=True)
 class FitResult:
     limits: tuple[str, ...]
     population: str
@@ -90,6 +109,7 @@ class FitResult:
     naive_percent: float | None  # weighted like the accommodated share
     by_limit: tuple[LimitShare, ...]
     failing: tuple[FailingPerson, ...] | None  # None unless asked for
+    target: TargetShare | None = None  # weighted to a target population, when asked
 
     @property
     def population_size(self) -> int:
@@ -132,7 +152,7 @@ class FitResult:
             "failing": None
             if self.failing is None
             else [{"id": f.id, "name": f.name, "limits": list(f.limits)} for f in self.failing],
-        }
+        } | ({} if self.target is None else {"target": self.target.to_json()})
 
 
 def _round(value: float | None) -> float | None:
@@ -162,9 +182,17 @@ def fit_test(
     failing: bool = False,
     progress: Progress | None = None,
     cancel: Cancel | None = None,
+    target: TargetWeights | None = None,
 ) -> FitResult:
     """Run the design limits `limits` over the people `population` selects.
-    `progress(steps done, 3)`; `cancel` stops it (also mid-statement) with Cancelled."""
+    `progress(steps done, 3)`; `cancel` stops it (also mid-statement) with Cancelled.
+    With a `target`, its people (of `population`) are tested and their weighted
+    share is given too (`FitResult.target`)."""
+    if target is not None:
+        base = target.target.base_query
+        population = (
+            base if population == target.target.population else f"({population}) AND {base}"
+        )
     steps = Steps(progress, cancel, "the fit test")
     steps(0, 3)
     weights = check_mix(mix)
@@ -192,8 +220,27 @@ def fit_test(
     result = _summarise(
         conn, tuple(t.text for t in terms), population, weights, ids, gender, passes, failing
     )
+    if target is not None:
+        result = replace(result, target=_target_share(target, ids, passes))
     steps(3, 3)
     return result
+
+
+def _target_share(
+    target: TargetWeights, ids: npt.NDArray[np.int64], passes: npt.NDArray[np.float64]
+) -> TargetShare:
+    from sass_tui.model.targets import kish_effective_n
+
+    w = target.of(ids)
+    measured = ~np.isnan(passes).any(axis=1)
+    fits = measured & (passes == 1.0).all(axis=1)
+    total = float(w[measured].sum())
+    return TargetShare(
+        name=target.target.name,
+        words=target.target.words(),
+        percent=100.0 * float(w[fits].sum()) / total if total > 0 else None,
+        effective_n=kish_effective_n(w[measured]),
+    )
 
 
 def _summarise(
@@ -314,13 +361,15 @@ def load_family(
     predictor: Predictor | None = None,
     progress: Progress | None = None,
     cancel: Cancel | None = None,
+    weighted_to: TargetWeights | None = None,
 ) -> Family:
     """The manikin family of `gender` over `measures` (see
     `sass_tui.model.accommodation`): the population's people of that gender,
     their values, and the database's prediction model to complete each manikin.
     `measures` are `--measures` names (`stature`, `mass`, `sittingheight`, ...).
     `progress(steps done, 3)`: the people read, the model, the family built;
-    `cancel` stops it with Cancelled between them (it writes nothing)."""
+    `cancel` stops it with Cancelled between them (it writes nothing).
+    `weighted_to` (a target population of `gender`): the target's people, weighted."""
     from sass_tui.db.predict import open_predictor
     from sass_tui.db.values import load_values
 
@@ -328,6 +377,12 @@ def load_family(
         raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
     fields = [measure_field(m) for m in measures]
     compile_query(population)  # its own error, before the combined query's
+    if weighted_to is not None:
+        made = weighted_to.target
+        if made.gender != gender:
+            raise FitError(f"the target {made.name} is of {made.gender} people, not {gender}")
+        if population != made.population:
+            population = f"({population}) AND ({made.population})"
     steps = Steps(progress, cancel, "the family")
     steps(0, 3)
     with interruptible(conn, cancel, "the family"):
@@ -338,9 +393,19 @@ def load_family(
     with interruptible(conn, cancel, "the family"):
         model = predictor if predictor is not None else open_predictor(conn)
     steps(2, 3)
+    weights = None if weighted_to is None else weighted_to.of(values.ids)
     family = build_family(
-        gender, fields, values.ids, values.names, values.matrix, target, model, kind
+        gender, fields, values.ids, values.names, values.matrix, target, model, kind, weights
     )
+    if weighted_to is not None and weights is not None:
+        from sass_tui.model.targets import kish_effective_n
+
+        used = ~np.isnan(values.matrix).any(axis=1)
+        family = replace(
+            family,
+            target=weighted_to.target.to_json()
+            | {"effective_n": round(kish_effective_n(weights[used]), 2)},
+        )
     steps(3, 3)
     return family
 

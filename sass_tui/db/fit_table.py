@@ -31,6 +31,11 @@ def format_table(result: FitResult) -> str:
         f"{'weighted':<10} {'':>7} {'':>7} {_percent(result.weighted_percent):>13} "
         f"{_percent(result.naive_percent):>9}   ({mix})"
     )
+    if result.target is not None:
+        lines.append(
+            f"{'target':<10} {'':>7} {'':>7} {_percent(result.target.percent):>13} "
+            f"{'':>9}   (weighted: {result.target.words})"
+        )
     lines += [
         "",
         "naive = the product of each limit's own share (what univariate percentiles suggest)",

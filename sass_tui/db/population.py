@@ -14,6 +14,7 @@ import datetime as _dt
 import sqlite3
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -21,9 +22,12 @@ from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.schema import CENTER_OF_MASS_NAMES, GIRTH_NAMES
 from sass_tui.db.values import load_values
 from sass_tui.model.errors import SassError
-from sass_tui.model.names import CENTER_OF_MASS, GIRTH
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, GLOBAL_ROWS
 from sass_tui.model.popfile import PopulationData
 from sass_tui.model.vocabulary import GENDERS
+
+if TYPE_CHECKING:
+    from sass_tui.db.targets import TargetWeights
 
 MIN_PEOPLE = 20
 PERCENTILES = (5.0, 50.0, 95.0)
@@ -63,6 +67,7 @@ def population_of(
     ids_from: str = "the selected list",
     progress: Progress | None = None,
     cancel: Cancel | None = None,
+    target: TargetWeights | None = None,
 ) -> SelectionPopulation:
     """The population of the people `query` selects, or of the people `ids`
     names (the query screen's selected list; with both, the people of `ids`
@@ -70,7 +75,13 @@ def population_of(
     module's docstring.  Raises PopulationError
     when nobody is selected or a gender has fewer than MIN_PEOPLE people;
     QueryError for a bad query.  `progress(columns done, columns)`; `cancel`
-    stops it with Cancelled (it writes nothing anyway: the caller writes)."""
+    stops it with Cancelled (it writes nothing anyway: the caller writes).
+    With a `target` (sass_tui/db/targets.py) the people are the target's (of
+    `query`/`ids` if given), and the percentiles are weighted empirical
+    percentiles (`model.targets.weighted_percentile`); the title says so."""
+    if target is not None:
+        base = target.target.base_query
+        query = base if query is None else f"({query}) AND {base}"
     if query is None and ids is None:
         raise PopulationError("a population needs a query or a list of people")
     when = date or _dt.date.today().isoformat()
@@ -99,6 +110,9 @@ def population_of(
             f"people of each gender it holds ({widen})"
         )
     described = people_words(counts)
+    if target is not None:
+        what = f"{target.target.words()}, {what}"
+        described += f", weighted: effective n {target.target.effective_n:.0f}"
     heading = title or f"Population of {what.removeprefix('the query ')}"
     groups: dict[str, PopulationData] = {}
     empty: list[str] = []
@@ -123,9 +137,27 @@ def population_of(
         )
         for gender in counts:
             people = block[genders == gender]
-            data.sections[gender] = _percentiles(people, column_done).reshape(len(rows), 3, 3)
+            weights = None if target is None else target.of(values.ids[genders == gender])
+            data.sections[gender] = _percentiles(people, column_done, weights).reshape(
+                len(rows), 3, 3
+            )
             data.lines[gender] = [0] * len(rows)
         groups[group] = data
+    if target is not None:
+        # Weighting moves stature and mass most: a weighted population carries its own
+        # global statistics (the file `sass fig --global` reads).
+        whole = load_values(conn, [r.name for r in GLOBAL_ROWS], query, ids=ids)
+        data = PopulationData(
+            group=GLOBAL, title=f"{heading} ({described}; sass query, {when})", path=""
+        )
+        for gender in counts:
+            mine = np.array(whole.genders, dtype=object) == gender
+            weights = target.of(whole.ids[mine])
+            data.sections[gender] = _percentiles(whole.matrix[mine], lambda: None, weights).reshape(
+                len(GLOBAL_ROWS), 1, 3
+            )
+            data.lines[gender] = [0] * len(GLOBAL_ROWS)
+        groups[GLOBAL] = data
     steps(total, total)
     return SelectionPopulation(what.removeprefix("the query "), counts, groups, tuple(empty))
 
@@ -137,15 +169,24 @@ def _selection_words(query: str | None, ids: Sequence[int] | None, ids_from: str
     return listed if query is None else f"{listed} AND {query}"
 
 
-def _percentiles(people: np.ndarray, column_done: Callable[[], None]) -> np.ndarray:
-    """Per column, 5th/50th/95th of the values present (NaN below MIN_PEOPLE)."""
+def _percentiles(
+    people: np.ndarray, column_done: Callable[[], None], weights: np.ndarray | None = None
+) -> np.ndarray:
+    """Per column, 5th/50th/95th of the values present (NaN below MIN_PEOPLE);
+    weighted empirical percentiles when `weights` are given."""
     out = np.full((people.shape[1], len(PERCENTILES)), np.nan)
     for k in range(people.shape[1]):
         column_done()
         column = people[:, k]
-        column = column[~np.isnan(column)]
-        if len(column) >= MIN_PEOPLE:
-            out[k] = np.percentile(column, PERCENTILES)
+        present = ~np.isnan(column)
+        if present.sum() < MIN_PEOPLE:
+            continue
+        if weights is None:
+            out[k] = np.percentile(column[present], PERCENTILES)
+        else:
+            from sass_tui.model.targets import weighted_percentile
+
+            out[k] = weighted_percentile(column, weights, PERCENTILES)
     return out
 
 

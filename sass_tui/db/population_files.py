@@ -8,7 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from sass_tui.db.population import SelectionPopulation
-from sass_tui.model.names import CENTER_OF_MASS, GIRTH
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL
 from sass_tui.model.popfile import write_population_file
 
 
@@ -16,9 +16,14 @@ def cmass_path(girth_path: Path) -> Path:
     return girth_path.with_name(f"{girth_path.stem}-cmass{girth_path.suffix or '.dat'}")
 
 
+def global_path(girth_path: Path) -> Path:
+    """A weighted population's stature and mass (`sass fig --global`)."""
+    return girth_path.with_name(f"{girth_path.stem}-global{girth_path.suffix or '.dat'}")
+
+
 def write_population_files(result: SelectionPopulation, target: Path) -> dict[str, Path]:
     """Write each group the population has; returns group -> the file written."""
-    paths = {GIRTH: target, CENTER_OF_MASS: cmass_path(target)}
+    paths = {GIRTH: target, CENTER_OF_MASS: cmass_path(target), GLOBAL: global_path(target)}
     written: dict[str, Path] = {}
     for group, data in result.groups.items():
         write_population_file(data, paths[group])

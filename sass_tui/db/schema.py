@@ -43,7 +43,7 @@ from sass_tui.model.names import (
 )
 from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS, MOTION_NAMES
 
-SCHEMA_VERSION = "4"
+SCHEMA_VERSION = "5"
 AXES = ("x", "y", "z")
 
 GIRTH_NAMES = tuple(r.name for r in GIRTH_ROWS)
@@ -228,7 +228,32 @@ CREATE TABLE strength_q (
   id_num INTEGER PRIMARY KEY,
   strength_type TEXT, motion_speed REAL, training_level REAL, fatigue_level REAL
 );
-{axis_tables}{strength_tables}{_change_log_ddl()}"""
+{axis_tables}{strength_tables}{_change_log_ddl()}{TARGET_DDL}"""
+
+
+# --- target populations (schema 5; sass_tui/db/targets.py) -------------------
+# A target is a name, what it was made from and how well it matches
+# (`summary`, JSON), and one weight per person of its base population.
+TARGET_TABLES = ("target", "target_weight")
+TARGET_DDL = """CREATE TABLE IF NOT EXISTS target (
+  name TEXT PRIMARY KEY,
+  gender TEXT NOT NULL,
+  population TEXT NOT NULL,
+  fields TEXT NOT NULL,
+  sample TEXT NOT NULL,
+  sample_rows INTEGER NOT NULL,
+  people INTEGER NOT NULL,
+  effective_n REAL NOT NULL,
+  summary TEXT NOT NULL,
+  created TEXT NOT NULL
+);
+CREATE TABLE IF NOT EXISTS target_weight (
+  target TEXT NOT NULL,
+  id_num INTEGER NOT NULL,
+  weight REAL NOT NULL,
+  PRIMARY KEY (target, id_num)
+) WITHOUT ROWID;
+"""
 
 
 # --- the change log (schema 3; quiet bulk writes, schema 4) -----------------
@@ -412,6 +437,7 @@ PERSON_ATTRIBUTES = ("component", "branch", "subjectnumericrace", "dodrace", "et
 # Tables every sass database of this version holds.
 EXPECTED_TABLES = frozenset(
     ("meta", "change_gens", "change_log", "change_bulk", "change_schema")
+    + TARGET_TABLES
     + RELATIONS
     + PERSON_TABLES
 )
@@ -546,6 +572,9 @@ def _check_schema(conn: sqlite3.Connection, path: Path, create: bool, rebuild: b
         version = "3"
     if version == "3":
         migrate_3_to_4(conn)
+        version = "4"
+    if version == "4":
+        migrate_4_to_5(conn)
         names = _tables(conn)
     elif version != SCHEMA_VERSION:
         raise DatabaseError(
@@ -601,6 +630,18 @@ def migrate_3_to_4(conn: sqlite3.Connection) -> None:
             if "IF NOT EXISTS" in statement:  # change_bulk, change_schema, the trigger
                 conn.execute(statement)
         conn.execute("UPDATE meta SET value = '4' WHERE key = 'schema_version'")
+
+
+def migrate_4_to_5(conn: sqlite3.Connection) -> None:
+    """Schema 4 -> 5: the target populations' tables (no data changed)."""
+    with transaction(conn):
+        row = conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
+        if row is None or row[0] != "4":  # another process migrated it meanwhile
+            return
+        for statement in _schema_statements():
+            if "CREATE TABLE IF NOT EXISTS target" in statement:
+                conn.execute(statement)
+        conn.execute("UPDATE meta SET value = '5' WHERE key = 'schema_version'")
 
 
 def _schema_statements() -> list[str]:

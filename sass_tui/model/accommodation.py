@@ -126,9 +126,16 @@ class CoverageEllipsoid:
 
     @classmethod
     def fit(
-        cls, measures: tuple[str, ...] | list[str], matrix: FloatArray, target: float
+        cls,
+        measures: tuple[str, ...] | list[str],
+        matrix: FloatArray,
+        target: float,
+        weights: FloatArray | None = None,
     ) -> CoverageEllipsoid:
-        """The ellipsoid of `matrix` (people x measures, complete rows only)."""
+        """The ellipsoid of `matrix` (people x measures, complete rows only);
+        with `weights` (a target population's, per row) the weighted mean, SD
+        and correlation (weights as frequencies; the SD's n - 1 is the Kish
+        effective size's)."""
         measures = tuple(measures)
         k = len(measures)
         if not MIN_MEASURES <= k <= MAX_MEASURES:
@@ -141,18 +148,32 @@ class CoverageEllipsoid:
             raise AccommodationError(
                 f"the coverage target must lie between 0 and 100 %, not {100 * target:g} %"
             )
+        complete = ~np.isnan(np.asarray(matrix, dtype=float)).any(axis=1)
         values = complete_rows(matrix)
         if len(values) <= k:
             raise AccommodationError(
                 f"{len(values)} people have every one of {', '.join(measures)}; "
                 f"a family over {k} measurements needs more than {k}"
             )
-        mean = values.mean(axis=0)
-        std = values.std(axis=0, ddof=1)
+        if weights is None:
+            mean = values.mean(axis=0)
+            std = values.std(axis=0, ddof=1)
+        else:
+            w = np.asarray(weights, dtype=float)[complete]
+            mean = w @ values / w.sum()
+            effective = w.sum() ** 2 / float(w @ w)
+            variance = w @ (values - mean) ** 2 / w.sum() * effective / (effective - 1)
+            std = np.sqrt(variance)
         if np.any(std <= 0):
             flat = [m for m, s in zip(measures, std) if s <= 0]
             raise AccommodationError(f"{', '.join(flat)}: every person has the same value")
-        correlation: FloatArray = np.asarray(np.corrcoef(values, rowvar=False), dtype=float)
+        if weights is None:
+            correlation: FloatArray = np.asarray(np.corrcoef(values, rowvar=False), dtype=float)
+        else:
+            centred = values - mean
+            covariance = (centred * w[:, None]).T @ centred
+            scale = np.sqrt(np.diag(covariance))
+            correlation = covariance / np.outer(scale, scale)
         eigenvalues, eigenvectors = np.linalg.eigh(correlation)
         order = np.argsort(eigenvalues)[::-1]
         eigenvalues, eigenvectors = eigenvalues[order], eigenvectors[:, order]
@@ -245,13 +266,20 @@ class FamilyCoverage:
     inside_ellipsoid: int
     within_ranges: int
     promised_percent: float  # the chi-square promise (= the target)
+    # A target population's shares (weighted people), when the family is weighted.
+    weighted_inside_percent: float | None = None
+    weighted_within_percent: float | None = None
 
     @property
     def inside_percent(self) -> float:
+        if self.weighted_inside_percent is not None:
+            return self.weighted_inside_percent
         return 100.0 * self.inside_ellipsoid / self.n
 
     @property
     def within_ranges_percent(self) -> float:
+        if self.weighted_within_percent is not None:
+            return self.weighted_within_percent
         return 100.0 * self.within_ranges / self.n
 
 
@@ -262,18 +290,30 @@ def family_ranges(points: list[ManikinPoint]) -> tuple[FloatArray, FloatArray]:
 
 
 def family_coverage(
-    ellipsoid: CoverageEllipsoid, points: list[ManikinPoint], matrix: FloatArray
+    ellipsoid: CoverageEllipsoid,
+    points: list[ManikinPoint],
+    matrix: FloatArray,
+    weights: FloatArray | None = None,
 ) -> FamilyCoverage:
-    """Count the people of `matrix` (people x the ellipsoid's measures) the family covers."""
+    """Count the people of `matrix` (people x the ellipsoid's measures) the family
+    covers; with `weights`, also the weighted shares."""
     values = complete_rows(matrix)
     low, high = family_ranges(points)
     within = np.all((values >= low) & (values <= high), axis=1)
+    weighted: dict[str, float] = {}
+    if weights is not None:
+        w = np.asarray(weights, dtype=float)[~np.isnan(np.asarray(matrix, dtype=float)).any(axis=1)]
+        weighted = {
+            "weighted_inside_percent": 100.0 * float(w[ellipsoid.contains(values)].sum()) / w.sum(),
+            "weighted_within_percent": 100.0 * float(w[within].sum()) / w.sum(),
+        }
     return FamilyCoverage(
         n=len(values),
         missing=len(matrix) - len(values),
         inside_ellipsoid=int(ellipsoid.contains(values).sum()),
         within_ranges=int(within.sum()),
         promised_percent=100.0 * ellipsoid.target,
+        **weighted,
     )
 
 
@@ -325,6 +365,7 @@ class Family:
     ellipsoid: CoverageEllipsoid
     coverage: FamilyCoverage
     manikins: tuple[Manikin, ...]
+    target: dict[str, Any] | None = None  # the target population it is weighted to (JSON)
 
     @property
     def measures(self) -> tuple[str, ...]:
@@ -365,7 +406,7 @@ class Family:
                 }
                 for m in self.manikins
             ],
-        }
+        } | ({} if self.target is None else {"target": self.target})
 
     def points(self) -> list[ManikinPoint]:
         return [
@@ -383,12 +424,15 @@ def build_family(
     target: float,
     predictor: Predictor,
     kind: str = "boundary",
+    weights: FloatArray | None = None,
 ) -> Family:
     """The family of one gender's people (`matrix`: people x `measures`, query-language
-    field names as the predictor knows them), each point completed by `predictor`."""
-    ellipsoid = CoverageEllipsoid.fit(measures, matrix, target)
+    field names as the predictor knows them), each point completed by `predictor`;
+    with `weights` (a target population's), the ellipsoid and coverage of the weighted
+    people."""
+    ellipsoid = CoverageEllipsoid.fit(measures, matrix, target, weights)
     points = family_points(ellipsoid, kind)
-    coverage = family_coverage(ellipsoid, points, matrix)
+    coverage = family_coverage(ellipsoid, points, matrix, weights)
     manikins = []
     for point in points:
         known = {m: float(v) for m, v in zip(ellipsoid.measures, point.values)}
@@ -412,6 +456,8 @@ def write_family(family: Family, directory: str | Path, population: Figure) -> F
     manikins = []
     for manikin in family.manikins:
         figure = manikin.figure(population)
+        if family.target is not None:  # every file of a weighted family says so
+            figure.person = f"{figure.person}, weighted to target {family.target['name']}"
         stem = f"{family.gender}_{manikin.name}"
         write_fig(figure, out / f"{stem}.fig")
         export_hanim(figure, out / f"{stem}.x3d")

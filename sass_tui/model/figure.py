@@ -165,6 +165,14 @@ class Figure:
                 w for w in check_center_of_mass_rules(cmass, girth) if w not in data.warnings
             ]
 
+    def load_global(self, data: PopulationData) -> None:
+        """Replace the stature and mass statistics (a global file, e.g. a weighted
+        population's), keeping their percentiles."""
+        if not data.has(self.gender):
+            raise FigureError(f"{data.path or data.title}: no {self.gender} global statistics")
+        self.global_stats = data
+        self._reset_globals()
+
     def for_person(
         self,
         name: str,

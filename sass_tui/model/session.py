@@ -169,6 +169,11 @@ class Session:
         self._edit_figure(lambda f: f.load_group(group, data))
         self.warnings = list(data.warnings)
 
+    def load_global(self, data: PopulationData) -> None:
+        """Stature and mass statistics from a global file: undoable like any edit."""
+        self._edit_figure(lambda f: f.load_global(data))
+        self.warnings = list(data.warnings)
+
     def set_unit(self, group: str, unit: str) -> None:
         """A view setting, not an edit: not journalled."""
         self.figure.set_unit(group, unit)

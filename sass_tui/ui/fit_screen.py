@@ -4,7 +4,9 @@ the shares per gender and weighted, the naive estimate, the per-limit table;
 below it a histogram (textual-plotext) of one limited measurement for the
 population, per gender, with its limit(s) drawn as vertical lines; `l` shows
 the next limited measurement.  The test runs in a worker, with a progress
-bar; Escape returns to the query screen (cancelling the test if it runs)."""
+bar; Escape returns to the query screen (cancelling the test if it runs).
+`t` picks a target population (ui/target_picker.py): the test is run again
+on its people, weighted, and the title says so."""
 
 from __future__ import annotations
 
@@ -21,6 +23,7 @@ from sass_tui.db.fit_table import format_table
 from sass_tui.db.lists import DB_ERRORS, QueryLists
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
+from sass_tui.ui.target_picker import pick_target, weighted_words
 from sass_tui.ui.widgets import MessageLine
 
 GENDER_COLORS = {"male": "blue", "female": "magenta"}
@@ -51,13 +54,17 @@ class FitScreen(SassScreen):
     BINDINGS = [
         Binding("escape", "back", "Back to the query"),
         Binding("l", "next_limit", "Next limit"),
+        Binding("t", "choose_target", "Target", show=False),  # F1 lists it; the footer as it was
     ]
 
-    def __init__(self, lists: QueryLists, limits: str, population: str) -> None:
+    def __init__(
+        self, lists: QueryLists, limits: str, population: str, target: str | None = None
+    ) -> None:
         super().__init__(id="fit-screen")
         self.lists = lists
         self.limits = limits
         self.population = population
+        self.target = target or None  # a target population's name: the test is weighted
         self.histograms: tuple[LimitHistogram, ...] = ()
         self.shown = 0  # which histogram is drawn
         # What was last handed to plotext: bin centers and, per gender, the counts.
@@ -65,7 +72,7 @@ class FitScreen(SassScreen):
         self.work: Work | None = None
 
     def compose(self):
-        yield Static(f"Fit Test of {self.limits}", id="fit-title")
+        yield Static(self.title_text(), id="fit-title")
         with ScrollableContainer(id="fit-scroll"):
             yield Static(f"Testing over {self.population}, please wait...", id="fit-table")
         yield Static("", id="fit-plot-title")
@@ -74,10 +81,30 @@ class FitScreen(SassScreen):
         yield MessageLine(id="message-line")
         yield Footer(compact=True)
 
+    def title_text(self) -> str:
+        return f"Fit Test of {self.limits}{weighted_words(self.target)}"
+
     def on_mount(self) -> None:
+        self.start_fit()
+
+    def start_fit(self) -> None:
         self.work = Work(self, "Fit Test")
         self.query_one(WorkBar).start(self.work)
-        self.run_fit(self.lists, self.limits, self.population, self.work)
+        self.run_fit(self.lists, self.limits, self.population, self.work, self.target)
+
+    def action_choose_target(self) -> None:
+        """Pick a target population: the test again on its people, weighted."""
+        if self.work is not None:
+            self.say("The fit test is running: wait for it, or Esc.")
+            return
+
+        def chosen(name: str) -> None:
+            self.target = name or None
+            self.query_one("#fit-title", Static).update(self.title_text())
+            self.query_one("#fit-table", Static).update("Testing, please wait...")
+            self.start_fit()
+
+        pick_target(self, self.lists, self.target, chosen)
 
     def on_work_progressed(self, event: WorkProgressed) -> None:
         event.stop()
@@ -90,13 +117,25 @@ class FitScreen(SassScreen):
         self.app.pop_screen()
 
     @work(thread=True, exclusive=True, group="fit", exit_on_error=False)
-    def run_fit(self, lists: QueryLists, limits: str, population: str, work: Work) -> None:
+    def run_fit(
+        self, lists: QueryLists, limits: str, population: str, work: Work, target: str | None
+    ) -> None:
         from sass_tui.db.fit import fit_test, limit_histograms
 
         try:
             with lists.lock:
+                weights = None
+                if target:
+                    from sass_tui.db.targets import load_target
+
+                    weights = load_target(lists.conn, target)
                 result = fit_test(
-                    lists.conn, limits, population, progress=work.report, cancel=work.cancel
+                    lists.conn,
+                    limits,
+                    population,
+                    progress=work.report,
+                    cancel=work.cancel,
+                    target=weights,
                 )
                 histograms = limit_histograms(lists.conn, limits, population, cancel=work.cancel)
         except DB_ERRORS as exc:

@@ -315,11 +315,14 @@ class DatabaseFailed(Message):
 class QueryFinished(Message):
     """A query's outcome: the count and first page, or what went wrong."""
 
-    def __init__(self, count: int = 0, rows: list[dict] | None = None, error: str = "") -> None:
+    def __init__(
+        self, count: int = 0, rows: list[dict] | None = None, error: str = "", weighted: str = ""
+    ) -> None:
         super().__init__()
         self.count = count
         self.rows = rows or []
         self.error = error
+        self.weighted = weighted  # the target's weighted share (ui/target_picker.py)
 
 
 class PopulationMade(Message):
@@ -355,7 +358,8 @@ class QueryScreen(SassScreen):
         Binding("b", "build", "Build", tooltip="Build query"),
         Binding("m", "make_population", "Make", tooltip="Make Population"),
         Binding("f", "fit_test", "Fit", tooltip="Fit Test"),
-        Binding("t", "export_gltf", "glTF", tooltip="Export glTF", show=False),
+        Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
+        Binding("t", "choose_target", "Target", show=False, tooltip="Target population"),
         Binding("q", "app.quit", "Quit"),
         Binding("escape", "cancel_work", "Cancel work", show=False),
         Binding("pagedown", "next_page", show=False),
@@ -377,6 +381,7 @@ class QueryScreen(SassScreen):
         # population's title says them).
         self.selected_from: list[str] = []
         self.work: Work | None = None  # the long work under way (issue 15)
+        self.target: str | None = None  # the target population answers are weighted to
 
     def compose(self):
         with Horizontal(id="query-top"):
@@ -688,18 +693,43 @@ class QueryScreen(SassScreen):
     def start_query(self, text: str) -> None:
         work = self.begin_work("Query", show_after=QUERY_BAR_AFTER)
         self.say(WAIT)
-        self.run_query(self.lists, text, self.sheet.page_size, work)
+        self.run_query(self.lists, text, self.sheet.page_size, work, self.target)
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
-    def run_query(self, lists: QueryLists, text: str, page_size: int, work: Work) -> None:
+    def run_query(
+        self, lists: QueryLists, text: str, page_size: int, work: Work, target: str | None = None
+    ) -> None:
         try:
             with lists.lock:
                 count = lists.run(text, work.report, work.cancel)
                 rows = lists.page(QUERY_LIST, 0, page_size)
+                weighted = ""
+                if target:
+                    from sass_tui.ui.target_picker import weighted_count_words
+
+                    weighted = weighted_count_words(lists, text, target)
         except DB_ERRORS as exc:
             self.post_message(QueryFinished(error=str(exc)))
             return
-        self.post_message(QueryFinished(count, rows))
+        self.post_message(QueryFinished(count, rows, weighted=weighted))
+
+    def action_choose_target(self) -> None:
+        """Pick a target population: counts, Fit Test and Make Population weighted to it."""
+        from sass_tui.ui.target_picker import pick_target
+
+        if self.running or self.lists is None:
+            self.say(WAIT if self.running else "The database is not open yet.")
+            return
+
+        def chosen(name: str) -> None:
+            self.target = name or None
+            self.say(
+                f"Target {name}: query counts, Fit Test and Make Population are weighted to it."
+                if name
+                else "No target: the people unweighted."
+            )
+
+        pick_target(self, self.lists, self.target, chosen)
 
     def on_query_finished(self, event: QueryFinished) -> None:
         event.stop()
@@ -717,7 +747,7 @@ class QueryScreen(SassScreen):
         self.sheet.show_rows(rows, 0, count)
         self.refresh_screen()
         if count:
-            self.say(f"{COMPLETE} {count:,} people found.")
+            self.say(f"{COMPLETE} {count:,} people found.{event.weighted}")
         else:
             self.say(NO_DATA)
 
@@ -750,7 +780,9 @@ class QueryScreen(SassScreen):
             self.say(f"Making the population of {len(ids):,} selected people (Esc cancels)...")
             sources = " OR ".join(f"({q})" for q in self.selected_from) or "selection"
             title = f"Population of {len(ids):,} selected from {sources}"
-            self.make_population(self.lists, tuple(ids), Path(name).expanduser(), title, work)
+            self.make_population(
+                self.lists, tuple(ids), Path(name).expanduser(), title, work, self.target
+            )
 
         self.ask(
             f"Population of the {len(ids):,} selected people: file name "
@@ -761,7 +793,13 @@ class QueryScreen(SassScreen):
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def make_population(
-        self, lists: QueryLists, ids: tuple[int, ...], target: Path, title: str, work: Work
+        self,
+        lists: QueryLists,
+        ids: tuple[int, ...],
+        target: Path,
+        title: str,
+        work: Work,
+        weighted_to: str | None = None,
     ) -> None:
         from sass_tui.db.population import population_of
         from sass_tui.db.population_files import write_population_files
@@ -769,8 +807,20 @@ class QueryScreen(SassScreen):
 
         try:
             with lists.lock:
+                weights = None
+                if weighted_to:
+                    from sass_tui.db.targets import load_target
+                    from sass_tui.ui.target_picker import weighted_words
+
+                    weights = load_target(lists.conn, weighted_to)
+                    title += weighted_words(weighted_to)
                 result = population_of(
-                    lists.conn, ids=ids, title=title, progress=work.report, cancel=work.cancel
+                    lists.conn,
+                    ids=ids,
+                    title=title,
+                    progress=work.report,
+                    cancel=work.cancel,
+                    target=weights,
                 )
             Steps(cancel=work.cancel, what="making the population").check()  # last chance
             paths = write_population_files(result, target)
@@ -783,7 +833,7 @@ class QueryScreen(SassScreen):
         from dataclasses import replace
 
         from sass_tui.db.population import people_words
-        from sass_tui.model.names import GROUP_TITLES
+        from sass_tui.model.names import GLOBAL, GROUP_TITLES
 
         event.stop()
         if self.end_work() and event.error:
@@ -799,7 +849,10 @@ class QueryScreen(SassScreen):
         if len(genders) == 1 and session.population.gender != genders[0]:
             session.set_gender(genders[0])  # the only gender the population has
         for group, data in event.result.groups.items():
-            session.load_group(group, replace(data, path=str(event.paths[group])))
+            if group == GLOBAL:  # a weighted population's own stature and mass
+                session.load_global(replace(data, path=str(event.paths[group])))
+            else:
+                session.load_group(group, replace(data, path=str(event.paths[group])))
         files = ", ".join(
             f"{GROUP_TITLES[group].lower()} {path}" for group, path in event.paths.items()
         )
@@ -825,7 +878,8 @@ class QueryScreen(SassScreen):
             return
 
         def answer(text: str) -> None:
-            self.app.push_screen(FitScreen(lists, limits, text.strip() or DEFAULT_POPULATION))
+            population = text.strip() or DEFAULT_POPULATION
+            self.app.push_screen(FitScreen(lists, limits, population, self.target))
 
         self.ask(
             f"Population to test (Enter: {DEFAULT_POPULATION}):",

@@ -156,7 +156,7 @@ class SpreadsheetScreen(SassScreen):
         Binding("w", "next_warning", "Warn", tooltip="Warnings"),
         Binding("l", "message_log", show=False),
         Binding("b", "see_figure", "Draw", tooltip="See figure"),
-        Binding("t", "export_gltf", "glTF", tooltip="Export glTF", show=False),
+        Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         *(
             Binding(spec.key, spec.action, spec.footer)
             for spec in COMMANDS

@@ -44,7 +44,7 @@ def test_spreadsheet_exports_the_figure_shown(drive, db, tmp_path):
     async def scenario():
         app = SassApp(db_path=db)
         async with app.run_test(size=SIZE) as pilot:
-            await pilot.press("t")
+            await pilot.press("G")
             assert "glTF file name (.glb, or .gltf + .bin) [MALE50.glb]:" in message(app)
             await answer(pilot, str(out))
             assert "Pose: standing or seated [standing]:" in message(app)
@@ -57,7 +57,7 @@ def test_spreadsheet_exports_the_figure_shown(drive, db, tmp_path):
             assert len(joints) == 18 and joints[0] == "humanoid_root"
             # an existing file is kept unless the user says y
             before = out.read_bytes()
-            await pilot.press("t")
+            await pilot.press("G")
             await answer(pilot, str(out))
             await pilot.press("enter")  # standing
             assert f"{out} exists. Overwrite? (y/N)" in message(app)
@@ -65,7 +65,7 @@ def test_spreadsheet_exports_the_figure_shown(drive, db, tmp_path):
             assert message(app) == f"Not written; {out} kept as it was."
             assert out.read_bytes() == before
             # a name that is not glTF's is refused at once, nothing written
-            await pilot.press("t")
+            await pilot.press("G")
             await answer(pilot, str(tmp_path / "body.obj"))
             assert "ends in .glb (binary) or .gltf" in message(app)
             assert sorted(p.name for p in tmp_path.iterdir()) == ["body.glb", "sass.db"]
@@ -83,7 +83,7 @@ def test_query_screen_exports_the_highlighted_person(drive, db, tmp_path):
             await settle(pilot)
             screen = app.screen
             assert isinstance(screen, QueryScreen)
-            await pilot.press("t")
+            await pilot.press("G")
             assert message(app) == "The list is empty: no person to export."
             await pilot.press("d", "b")
             for label in ("Global Information", "Gender", "Female", "Done"):
@@ -97,7 +97,7 @@ def test_query_screen_exports_the_highlighted_person(drive, db, tmp_path):
             assert message(app).startswith(COMPLETE)
             await pilot.press("down")  # the second person of the list
             row = screen.sheet.highlighted
-            await pilot.press("t")
+            await pilot.press("G")
             name = row["name"].replace(" ", "_")
             assert f"[{name}.glb]:" in message(app)
             await answer(pilot, str(out))

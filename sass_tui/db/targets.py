@@ -1,0 +1,292 @@
+"""Target populations in the database: make, store, list, drop, and read
+the weights (the method: sass_tui/model/targets.py, docs/target-populations.md).
+
+A target's base population is `(<population>) AND gender = <gender>`, by
+default the ANSUR II people (`source = ansur2`) of that gender.  Its weights
+have mean 1 over the base people that have every `--by` value; the others
+weigh 0.  A weighted count is therefore in people: the base people a
+target's weights stand for.  Tables: `target` and `target_weight` (schema 5,
+db/schema.py).  People deleted since a target was made simply drop out of
+its sums; people added since carry no weight in it.
+
+No Textual, no printing.
+"""
+
+from __future__ import annotations
+
+import datetime as _dt
+import json
+import sqlite3
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from sass_tui.db.query import compile_query
+from sass_tui.db.schema import check_writable, transaction
+from sass_tui.model.target_sample import Sample
+from sass_tui.model.targets import TargetError, Weighting, calibrate
+from sass_tui.model.vocabulary import GENDERS
+
+DEFAULT_POPULATION = "source = ansur2"  # the real people (= db.fit.DEFAULT_POPULATION)
+MAX_NAME = 64
+
+
+class TargetExistsError(TargetError):
+    """A target of that name is stored already (replace it with --force)."""
+
+
+class UnknownTargetError(TargetError):
+    """No target of that name is stored."""
+
+
+@dataclass(frozen=True)
+class Target:
+    name: str
+    gender: str
+    population: str  # the query the base people come from (without the gender)
+    fields: tuple[str, ...]
+    sample: str  # the sample file's name
+    sample_rows: int
+    people: int  # base people with every --by value (they carry the weight)
+    effective_n: float  # Kish
+    summary: dict[str, Any]  # field -> {"target"|"weighted"|"unweighted": [mean, sd, p5, p50, p95]}
+    created: str
+
+    @property
+    def base_query(self) -> str:
+        return base_query(self.population, self.gender)
+
+    @property
+    def percent_effective(self) -> float:
+        return 100.0 * self.effective_n / self.people if self.people else 0.0
+
+    def words(self) -> str:
+        """How a weighted answer names its target, on screen and in files."""
+        return (
+            f"target {self.name} ({self.gender}, weighted by {', '.join(self.fields)} "
+            f"to {self.sample}; effective n {self.effective_n:.0f} of {self.people})"
+        )
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "name": self.name,
+            "gender": self.gender,
+            "population": self.population,
+            "by": list(self.fields),
+            "sample": self.sample,
+            "sample_rows": self.sample_rows,
+            "people": self.people,
+            "effective_n": round(self.effective_n, 2),
+        }
+
+
+@dataclass(frozen=True)
+class TargetWeights:
+    target: Target
+    ids: npt.NDArray[np.int64]  # id order
+    weights: npt.NDArray[np.float64]
+
+    def of(self, ids: npt.NDArray[np.int64]) -> npt.NDArray[np.float64]:
+        """The weight of each of `ids` (0 for people not in the target)."""
+        if len(self.ids) == 0:  # every one of its people deleted since
+            return np.zeros(len(ids))
+        where = np.clip(np.searchsorted(self.ids, ids), 0, len(self.ids) - 1)
+        out: npt.NDArray[np.float64] = np.where(self.ids[where] == ids, self.weights[where], 0.0)
+        return out
+
+
+def base_query(population: str, gender: str) -> str:
+    return f"({population}) AND gender = {gender}"
+
+
+def check_name(name: str) -> str:
+    """A target's name: 1-64 printable characters, no space at either end."""
+    from sass_tui.model.text import printable
+
+    if not name or name != name.strip() or len(name) > MAX_NAME or printable(name) != name:
+        raise TargetError(
+            f"target name {printable(name)!r}: expected 1 to {MAX_NAME} printable characters "
+            "without spaces at either end",
+            where=printable(name),
+        )
+    return name
+
+
+def make_target(
+    conn: sqlite3.Connection,
+    name: str,
+    gender: str,
+    sample: Sample,
+    sample_name: str,
+    population: str = DEFAULT_POPULATION,
+) -> tuple[Target, TargetWeights, Weighting]:
+    """Compute a target (nothing stored: `store_target` stores it)."""
+    from sass_tui.db.values import load_values
+
+    check_name(name)
+    if gender not in GENDERS:
+        raise TargetError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
+    compile_query(population)
+    values = load_values(conn, sample.fields, base_query(population, gender))
+    if len(values) == 0:
+        raise TargetError(f"the population {population!r} has no {gender} people")
+    weighting = calibrate(sample.fields, values.matrix, sample.matrix, where=sample_name)
+    summary = {
+        c.field: {
+            "target": c.target.as_list(),
+            "weighted": c.weighted.as_list(),
+            "unweighted": c.unweighted.as_list(),
+        }
+        for c in weighting.checks
+    }
+    target = Target(
+        name=name,
+        gender=gender,
+        population=population,
+        fields=tuple(sample.fields),
+        sample=sample_name,
+        sample_rows=weighting.sample_rows,
+        people=weighting.people,
+        effective_n=weighting.effective_n,
+        summary=summary,
+        created=_dt.datetime.now(_dt.UTC).isoformat(timespec="seconds"),
+    )
+    used = weighting.used
+    weights = TargetWeights(target, values.ids[used], weighting.weights[used])
+    return target, weights, weighting
+
+
+def store_target(conn: sqlite3.Connection, weights: TargetWeights, *, replace: bool) -> None:
+    """Store a made target; TargetExistsError unless `replace` when its name is taken."""
+    target = weights.target
+    check_writable(conn)
+    with transaction(conn):
+        if conn.execute("SELECT 1 FROM target WHERE name = ?", (target.name,)).fetchone():
+            if not replace:
+                raise TargetExistsError(
+                    f"a target named {target.name!r} exists; give --force to replace it"
+                )
+            _delete(conn, target.name)
+        conn.execute(
+            "INSERT INTO target VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+            (
+                target.name,
+                target.gender,
+                target.population,
+                json.dumps(list(target.fields)),
+                target.sample,
+                target.sample_rows,
+                target.people,
+                target.effective_n,
+                json.dumps(target.summary),
+                target.created,
+            ),
+        )
+        conn.executemany(
+            "INSERT INTO target_weight VALUES (?, ?, ?)",
+            zip(
+                [target.name] * len(weights.ids),
+                weights.ids.tolist(),
+                weights.weights.tolist(),
+            ),
+        )
+
+
+def target_exists(conn: sqlite3.Connection, name: str) -> bool:
+    return conn.execute("SELECT 1 FROM target WHERE name = ?", (name,)).fetchone() is not None
+
+
+def _delete(conn: sqlite3.Connection, name: str) -> None:
+    conn.execute("DELETE FROM target_weight WHERE target = ?", (name,))
+    conn.execute("DELETE FROM target WHERE name = ?", (name,))
+
+
+def drop_target(conn: sqlite3.Connection, name: str) -> None:
+    check_writable(conn)
+    with transaction(conn):
+        if not target_exists(conn, name):
+            raise _unknown(conn, name)
+        _delete(conn, name)
+
+
+def list_targets(conn: sqlite3.Connection) -> list[Target]:
+    return [_target(row) for row in conn.execute(f"SELECT {_COLUMNS} FROM target ORDER BY name")]
+
+
+_COLUMNS = (
+    "name, gender, population, fields, sample, sample_rows, people, effective_n, summary, created"
+)
+
+
+def _target(row: Sequence[Any]) -> Target:
+    name, gender, population, fields, sample, rows, people, effective_n, summary, created = row
+    return Target(
+        name=name,
+        gender=gender,
+        population=population,
+        fields=tuple(json.loads(fields)),
+        sample=sample,
+        sample_rows=int(rows),
+        people=int(people),
+        effective_n=float(effective_n),
+        summary=json.loads(summary),
+        created=created,
+    )
+
+
+def _unknown(conn: sqlite3.Connection, name: str) -> UnknownTargetError:
+    from sass_tui.model.text import printable
+
+    names = [t.name for t in list_targets(conn)]
+    known = f"; the targets are {', '.join(names)}" if names else "; none is stored yet"
+    return UnknownTargetError(
+        f"no target named {printable(name)!r}{known} (make one with `sass target`)",
+        where=printable(name),
+    )
+
+
+def load_target(conn: sqlite3.Connection, name: str) -> TargetWeights:
+    """A stored target and the weights of its people still in the database (id order)."""
+    row = conn.execute(f"SELECT {_COLUMNS} FROM target WHERE name = ?", (name,)).fetchone()
+    if row is None:
+        raise _unknown(conn, name)
+    rows = conn.execute(
+        "SELECT w.id_num, w.weight FROM target_weight w JOIN person p ON p.id_num = w.id_num "
+        "WHERE w.target = ? ORDER BY w.id_num",
+        (name,),
+    ).fetchall()
+    ids = np.array([r[0] for r in rows], dtype=np.int64)
+    weights = np.array([r[1] for r in rows], dtype=float)
+    return TargetWeights(_target(row), ids, weights)
+
+
+@dataclass(frozen=True)
+class WeightedCount:
+    target: Target
+    count: int  # people the query selects
+    in_target: int  # of them, people of the target
+    weighted: float  # their weight (people the target's weights stand for)
+    total: float  # every target person's weight
+
+    @property
+    def percent(self) -> float:
+        return 100.0 * self.weighted / self.total if self.total else 0.0
+
+
+def weighted_count(conn: sqlite3.Connection, query: str, weights: TargetWeights) -> WeightedCount:
+    """How many people `query` selects, and the share of the target's weight they hold."""
+    from sass_tui.db.query import run_query
+
+    result = run_query(conn, query)
+    ids = np.array(sorted(result.ids()), dtype=np.int64)
+    mine = weights.of(ids)
+    return WeightedCount(
+        target=weights.target,
+        count=len(ids),
+        in_target=int((mine > 0).sum()),
+        weighted=float(mine.sum()),
+        total=float(weights.weights.sum()),
+    )

@@ -1,0 +1,98 @@
+"""The target picker: a pop-up menu (`.pop-up-menu`, as the More Menu) of the
+target populations stored in the database (`sass target`), for the query
+screen and the Fit Test screen.  Its first choice is no target (the people
+unweighted).  Dismissed with the chosen name, "" for no target, None when
+cancelled."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from textual.app import ComposeResult
+from textual.binding import Binding
+from textual.containers import Vertical
+from textual.screen import ModalScreen
+from textual.widgets import OptionList
+from textual.widgets.option_list import Option
+
+from sass_tui.db.lists import DB_ERRORS, QueryLists
+
+NO_TARGET = "No target (unweighted)"
+
+
+def target_names(lists: QueryLists) -> list[str]:
+    """The stored targets' names (a short read, under the lists' lock)."""
+    from sass_tui.db.targets import list_targets
+
+    with lists.lock:
+        return [t.name for t in list_targets(lists.conn)]
+
+
+def weighted_words(name: str | None) -> str:
+    """What a screen shows of its target: nothing, or that its answers are weighted."""
+    return f", weighted to target {name}" if name else ""
+
+
+class TargetPicker(ModalScreen[str | None]):
+    DEFAULT_CSS = """
+    TargetPicker { align: center middle; background: transparent; }
+    TargetPicker > #target-popup { width: 40; max-height: 80%; }
+    """
+    BINDINGS = [Binding("escape", "dismiss(None)", "Cancel")]
+
+    def __init__(self, names: list[str], current: str | None) -> None:
+        super().__init__()
+        self.names = names
+        self.current = current
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="target-popup", classes="pop-up-menu") as popup:
+            popup.border_title = "Target population"
+            menu = OptionList(
+                Option(NO_TARGET, id="target-none"),
+                *(Option(name, id=f"target-{i}") for i, name in enumerate(self.names)),
+                id="target-menu",
+            )
+            if self.current in self.names:
+                menu.highlighted = self.names.index(self.current) + 1
+            yield menu
+
+    def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
+        event.stop()
+        if self.app.screen is self:  # not again for an Enter typed twice at once
+            index = event.option_index
+            self.dismiss("" if index == 0 else self.names[index - 1])
+
+
+def pick_target(screen, lists: QueryLists, current: str | None, chosen: Callable[[str], None]):
+    """Open the picker over `screen` (a SassScreen); `chosen(name or "")` when one is taken."""
+    try:
+        names = target_names(lists)
+    except DB_ERRORS as exc:
+        screen.complain(f"Cannot read the targets: {exc}")
+        return
+    if not names:
+        screen.say(
+            "No target populations in the database: make one with "
+            "`sass target NAME --gender G --sample FILE.csv`."
+        )
+        return
+
+    def done(name: str | None) -> None:
+        if name is None:
+            screen.say("Target unchanged.")
+        else:
+            chosen(name)
+
+    screen.app.push_screen(TargetPicker(names, current), done)
+
+
+def weighted_count_words(lists: QueryLists, query: str, name: str) -> str:
+    """The query's weighted share of a target (in a worker, under the lists' lock)."""
+    from sass_tui.db.targets import load_target, weighted_count
+
+    counted = weighted_count(lists.conn, query, load_target(lists.conn, name))
+    return (
+        f" Weighted to target {name}: {counted.weighted:,.1f} of {counted.total:,.0f} "
+        f"({counted.percent:.1f} %)."
+    )

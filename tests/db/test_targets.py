@@ -1,0 +1,254 @@
+"""Target populations end to end: `sass target` weights the ANSUR II women to
+a generated sample of heavier, shorter civilian-like women, and `fit`,
+`population`, `query --count` and `family` answer for the weighted people.
+Each weighted answer is checked against the sample's own figures, computed
+here with numpy; the answers without --target are checked to stay as they were."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import sqlite3
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sass_tui.cli import main
+from sass_tui.model.names import GLOBAL, row_index
+from sass_tui.model.popfile import read_population_file
+
+# U.S. civilian-like adult women: shorter and heavier than the soldiers of
+# ANSUR II (women 162.8 cm, 67.8 kg); mass log-normal as adult masses are.
+STATURE_MEAN, STATURE_SD = 160.5, 6.8
+MASS_MEDIAN, LOG_MASS_SD, CORRELATION = 74.0, 0.19, 0.3
+
+
+def civilian_women(rows: int, seed: int = 11) -> np.ndarray:
+    rng = np.random.default_rng(seed)
+    z1, z2 = rng.standard_normal((2, rows))
+    stature = STATURE_MEAN + STATURE_SD * z1
+    log_mass = np.log(MASS_MEDIAN) + LOG_MASS_SD * (
+        CORRELATION * z1 + np.sqrt(1 - CORRELATION**2) * z2
+    )
+    return np.column_stack([stature, np.exp(log_mass)])
+
+
+def write_sample(path: Path, values: np.ndarray) -> Path:
+    """Stature in inches (the header's unit), mass in kg, a row in pounds on the values."""
+    lines = ["id,stature[in],mass[kg],age"]
+    for i, (stature, mass) in enumerate(values):
+        cell = f"{mass / 0.45359237:.4f} lb" if i % 7 == 0 else f"{mass:.4f}"
+        lines.append(f"{i},{stature / 2.54:.5f},{cell},40")
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return path
+
+
+@pytest.fixture(scope="module")
+def sample() -> np.ndarray:
+    return civilian_women(3000)
+
+
+@pytest.fixture(scope="module")
+def made(default_db_file, sample, tmp_path_factory):
+    """A copy of the default database holding the target `civ`."""
+    folder = tmp_path_factory.mktemp("target")
+    db = folder / "sass.db"
+    shutil.copyfile(default_db_file, db)
+    csv_path = write_sample(folder / "civilian.csv", sample)
+    assert (
+        main(["target", "civ", "--db", str(db), "--gender", "female", "--sample", str(csv_path)])
+        == 0
+    )
+    return db
+
+
+def run_json(capsys, *argv: str) -> dict:
+    capsys.readouterr()
+    assert main([*argv]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def stored_targets(db: Path) -> list[tuple]:
+    conn = sqlite3.connect(db)
+    try:
+        return (
+            conn.execute("SELECT name FROM target").fetchall()
+            + conn.execute("SELECT DISTINCT target FROM target_weight").fetchall()
+        )
+    finally:
+        conn.close()
+
+
+@pytest.mark.parametrize(("q", "r"), [(50, 50), (90, 90), (70, 35), (30, 80)])
+def test_the_weighted_share_is_the_samples(made, sample, capsys, q, r):
+    """S, M at the sample's q-th and r-th percentiles (50/50 and 90/90 as asked;
+    two pairs off the quartiles the weights are calibrated to)."""
+    stature, mass = np.percentile(sample[:, 0], q), np.percentile(sample[:, 1], r)
+    own = 100 * np.mean((sample[:, 0] <= stature) & (sample[:, 1] <= mass))
+    limits = f"stature <= {stature:.4f} cm AND mass <= {mass:.4f} kg"
+    result = run_json(
+        capsys, "fit", "--db", str(made), "--target", "civ", "--format", "json", limits
+    )
+    assert result["target"]["name"] == "civ"
+    assert abs(result["target"]["percent"] - own) <= 3.0
+    assert 0 < result["target"]["effective_n"] < result["accommodated"]["female"]["n"]
+    # The unweighted soldiers beside it fail the same check: the weighting did it.
+    if q == 50:
+        assert abs(result["accommodated"]["female"]["percent"] - own) > 3.0
+
+
+def test_the_weighted_population_has_the_samples_median(made, sample, tmp_path, capsys):
+    out = tmp_path / "civ.dat"
+    assert main(["population", "--db", str(made), "--target", "civ", "-o", str(out)]) == 0
+    assert "target civ" in capsys.readouterr().out
+    stats = read_population_file(tmp_path / "civ-global.dat", GLOBAL)
+    assert "target civ" in stats.title
+    p5, p50, p95 = stats.stats("female")[row_index(GLOBAL, "stature"), 0]
+    assert abs(p50 - np.median(sample[:, 0])) <= 1.0
+    assert abs(p5 - np.percentile(sample[:, 0], 5)) <= 1.5
+    assert "target civ" in (tmp_path / "civ.dat").read_text(encoding="utf-8").splitlines()[0]
+    # sass fig reads the file: the figure's 50th stature is the weighted one
+    fig = tmp_path / "civ.fig"
+    assert (
+        main(
+            [
+                "fig",
+                "--gender",
+                "female",
+                "--global",
+                str(tmp_path / "civ-global.dat"),
+                "-o",
+                str(fig),
+            ]
+        )
+        == 0
+    )
+    assert f"stature {p50:.1f} cm" in fig.read_text(encoding="utf-8")
+
+
+def test_the_weighted_count(made, sample, capsys):
+    stature = float(np.percentile(sample[:, 0], 25))
+    capsys.readouterr()
+    assert (
+        main(["query", "--db", str(made), "--count", "--target", "civ", f"stature <= {stature} cm"])
+        == 0
+    )
+    raw, weighted = capsys.readouterr().out.splitlines()
+    capsys.readouterr()
+    assert main(["query", "--db", str(made), "--count", f"stature <= {stature} cm"]) == 0
+    assert capsys.readouterr().out.strip() == raw
+    share = float(weighted.split("(")[1].split(" %")[0])
+    assert abs(share - 25.0) <= 1.5
+    assert "target civ" in weighted
+
+
+def test_the_weighted_family(made, sample, tmp_path, capsys):
+    capsys.readouterr()
+    argv = ["family", "--db", str(made), "--gender", "female", "--measures", "stature,mass"]
+    assert main([*argv, "--target", "civ", "-o", str(tmp_path / "w")]) == 0
+    assert "weighted: target civ" in capsys.readouterr().out
+    weighted = json.loads((tmp_path / "w" / "family.json").read_text(encoding="utf-8"))
+    assert main([*argv, "-o", str(tmp_path / "u")]) == 0
+    plain = json.loads((tmp_path / "u" / "family.json").read_text(encoding="utf-8"))
+    assert "target" not in plain and weighted["target"]["name"] == "civ"
+    assert "weighted to target civ" in (tmp_path / "w" / "female_center.fig").read_text(
+        encoding="utf-8"
+    )
+    center = next(m for m in weighted["manikins"] if m["name"] == "center")["values"]
+    assert center["stature"] == pytest.approx(sample[:, 0].mean(), abs=0.05)
+    assert center["mass"] == pytest.approx(sample[:, 1].mean(), abs=0.05)
+
+
+def test_answers_without_target_are_unchanged(default_db_file, made, tmp_path, capsys):
+    """fit, population and query --count give the same answer on a database
+    holding a target as on one without, and no weighted word."""
+    limits = "stature <= 165 cm AND mass <= 80 kg"
+    outputs = []
+    for db in (default_db_file, made):
+        capsys.readouterr()
+        out = tmp_path / f"{db.stem}-{len(outputs)}.dat"
+        assert main(["fit", "--db", str(db), "--format", "json", limits]) == 0
+        assert main(["query", "--db", str(db), "--count", "gender = female AND mass > 70 kg"]) == 0
+        assert (
+            main(["population", "--db", str(db), "--query", "gender = female", "-o", str(out)]) == 0
+        )
+        text = capsys.readouterr().out.replace(out.stem, "X")
+        files = sorted(p.name.replace(out.stem, "X") for p in tmp_path.glob(f"{out.stem}*"))
+        outputs.append((text, files, out.read_text(encoding="utf-8")))
+    for before, after in zip(outputs[0], outputs[1]):
+        assert before == after
+    assert '"target"' not in outputs[0][0] and "weighted:" not in outputs[0][0]
+    assert "X-global.dat" not in outputs[0][1]
+
+
+def test_list_replace_and_drop(made, sample, tmp_path, capsys):
+    db = tmp_path / "sass.db"
+    shutil.copyfile(made, db)
+    csv_path = write_sample(tmp_path / "other.csv", civilian_women(200, seed=3))
+    argv = ["target", "civ", "--db", str(db), "--gender", "female", "--sample", str(csv_path)]
+    capsys.readouterr()
+    assert main(argv) == 2  # not a terminal: no question, a refusal
+    assert "give --force" in capsys.readouterr().err
+    assert main(["target", "--db", str(db), "--list"]) == 0
+    assert "3000 rows" in capsys.readouterr().out
+    assert main([*argv, "--force"]) == 0
+    assert main(["target", "--db", str(db), "--list"]) == 0
+    assert "200 rows of" in capsys.readouterr().out
+    assert main(["target", "--db", str(db), "--drop", "civ"]) == 0
+    assert stored_targets(db) == []
+    assert main(["fit", "--db", str(db), "--target", "civ", "stature < 170 cm"]) == 2
+    assert "no target named 'civ'" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(
+    ("lines", "says"),
+    [
+        (["height,weight", "160,70"] * 20, "no column for stature, mass"),
+        (["stature[cubits],mass", "160,70"], "unknown unit"),
+        (["stature,mass", "160,70", "150 parsec,70"], ":3: column 1 'stature'"),
+        (["stature,mass"] + [f"{160 + i % 7},{70 + i % 5}" for i in range(29)], "at least 30"),
+        (
+            ["stature,mass"] + [f"{195 + i % 9},{70 + i % 13}" for i in range(300)],
+            "outside the people",
+        ),
+    ],
+)
+def test_bad_samples_store_nothing(default_db_file, tmp_path, capsys, lines, says):
+    db = tmp_path / "sass.db"
+    shutil.copyfile(default_db_file, db)
+    csv_path = tmp_path / "bad.csv"
+    csv_path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    before = db.read_bytes()
+    capsys.readouterr()
+    assert (
+        main(["target", "t", "--db", str(db), "--gender", "female", "--sample", str(csv_path)]) == 2
+    )
+    err = capsys.readouterr().err
+    assert says in err and "Traceback" not in err
+    assert str(csv_path) in err or "--by" in err
+    assert stored_targets(db) == []
+    assert db.read_bytes() == before
+
+
+def test_people_deleted_since_drop_out_of_the_sums(made, tmp_path):
+    from sass_tui.db.schema import connect, delete_people, transaction
+    from sass_tui.db.targets import load_target, weighted_count
+
+    db = tmp_path / "sass.db"
+    shutil.copyfile(made, db)
+    conn = connect(db)
+    try:
+        before = load_target(conn, "civ")
+        gone = [int(i) for i in before.ids[:100]]
+        with transaction(conn):
+            delete_people(conn, gone)
+        after = load_target(conn, "civ")
+        assert len(after.ids) == len(before.ids) - 100
+        assert not set(gone) & set(after.ids.tolist())
+        assert after.of(np.array(gone, dtype=np.int64)).sum() == 0
+        counted = weighted_count(conn, "gender = female", after)
+        assert counted.weighted == pytest.approx(counted.total)
+        assert counted.total == pytest.approx(before.weights[100:].sum())
+    finally:
+        conn.close()
