@@ -42,6 +42,7 @@ from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
+from sass_tui.model.published_strength import EXAMPLE_SOURCE
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity
 from sass_tui.model.vocabulary import GENDERS, JOINT_AXES, MOTION_NAMES, SIDES
 
@@ -154,6 +155,11 @@ class StrengthData:
         if self.measured_at is not None:
             return self.title
         return f"{self.title} ({Path(self.path).name})"
+
+    @property
+    def source(self) -> str:
+        """Where the numbers come from, in the words every answer carries."""
+        return EXAMPLE_SOURCE if self.test_data else self.label
 
     def section(self, gender: str, side: str) -> tuple[StrengthSection, bool]:
         """The section for gender and side, or the other side's (measured=False)."""
