@@ -349,3 +349,30 @@ def text_plot(
     lines.append(f"{'':>{label}}  {left}{right:>{width - len(left)}}")
     lines.insert(0, f"{'':>{label}}  torque ({unit})")
     return lines
+
+
+def fig_section(
+    subject: Subject,
+    limits: dict[str, tuple[float, float]],
+    percentile: float = 50.0,
+    age_given: bool = True,
+) -> tuple[str, list[tuple[str, float, str]]]:
+    """The hip, knee and ankle strength section of a .fig file: each motion's
+    isometric torque (N-m) at its peak angle within the joint's limits (lower,
+    upper deg per axis), the same for both sides (the paper has no side)."""
+    variables = []
+    source = ""
+    for motion, axis in MOTION_AXIS.items():
+        lower, upper = limits[axis]
+        peak = lower_limb_strength(motion, subject, None, 0.0, percentile)
+        angle = min(max(peak.peak_angle, lower), upper)
+        answer = lower_limb_strength(motion, subject, angle, 0.0, percentile)
+        source = answer.source
+        for side in ("right", "left"):
+            variables.append((f"{side}_{motion}_strength", answer.torque, "Nm"))
+    note = "" if age_given else f" (age not given: the {AGE_GROUPS[0][0]} group)"
+    return (
+        f"hip, knee and ankle strength variables: {source}{note}; isometric, at each "
+        "motion's peak angle within the joint limits",
+        variables,
+    )

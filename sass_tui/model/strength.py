@@ -872,8 +872,12 @@ class StrengthSheet:
 
     @property
     def title(self) -> str:
-        """What the page shows, for its title: the data's label."""
-        return f"Strength: {self.data.label}"
+        """What the page shows, for its title: the data's label and source."""
+        data = self.data
+        if data.source == data.label:
+            return f"Strength: {data.label}"
+        # The source first: a narrow page crops the end of its title.
+        return f"Strength: {data.source}; {data.label}"
 
     def row(self, index: int) -> StrengthRow:
         return self.rows()[index]
@@ -941,10 +945,33 @@ class StrengthSheet:
         return out
 
 
+def _label_and_source(data: StrengthData) -> str:
+    """'TEST DATA, ... (strength.dat); source: example data (invented, ...)'."""
+    if data.source == data.label:
+        return data.label
+    return f"{data.label}; source: {data.source}"
+
+
 def fig_section(sheet: StrengthSheet) -> tuple[str, list[tuple[str, float, str]]]:
     """The strength section for figfile.render_fig(extra_sections=[...]); its
-    title says what the values are (test data, or the file's title)."""
-    return (f"strength variables: {sheet.data.label}", sheet.fig_variables())
+    title says what the values are and where they come from (test data, or
+    the file's title)."""
+    return (f"strength variables: {_label_and_source(sheet.data)}", sheet.fig_variables())
+
+
+def lower_limb_fig_section(
+    figure: Figure, side: str = "right", percentile: float = 50.0
+) -> tuple[str, list[tuple[str, float, str]]]:
+    """The figure's hip, knee and ankle strength (Anderson et al. 2007) for a
+    .fig file, from its gender, mass and stature (a figure has no age: the
+    18-25 group) within its joint limits."""
+    from sass_tui.model import published_strength as published
+
+    subject = published.Subject(
+        figure.gender, published.AGE_GROUPS[0][1], figure.output_mass(), figure.stature / 100.0
+    )
+    limits = {axis: joint_limit_range(figure, side, axis) for axis in published.LOWER_LIMB_AXES}
+    return published.fig_section(subject, limits, percentile, age_given=False)
 
 
 def fit_summary(data: StrengthData) -> list[tuple[str, str, MotionFit]]:

@@ -564,9 +564,9 @@ class SpreadsheetScreen(SassScreen):
             if word in ("n", "no"):
                 sections = []
             elif word in ("", "y", "yes"):
-                from sass_tui.model.strength import fig_section
+                from sass_tui.model.strength import fig_section, lower_limb_fig_section
 
-                sections = [fig_section(strength)]
+                sections = [fig_section(strength), lower_limb_fig_section(self.figure)]
             else:
                 raise AnswerError(f"expected y or n, got {answer.strip()!r}; nothing written")
             self._write_unless_kept(path, lambda: self._write_figure(path, sections))

@@ -156,3 +156,20 @@ def test_a_damaged_coefficient_file_is_refused_not_crashed(tmp_path_factory, lin
         read_anderson2007(str(path))
     except PublishedStrengthError as exc:
         assert str(path) in str(exc)
+
+
+def test_fig_names_the_source_of_every_strength_section(tmp_path):
+    from sass_tui.model.figfile import read_fig
+
+    out = tmp_path / "m.fig"
+    assert main(["fig", "-o", str(out), "--mass", "75", "--stature", "175"]) == 0
+    text = out.read_text()
+    assert "source: example data (invented, for the report's worked examples) */" in text
+    assert (
+        "/* hip, knee and ankle strength variables: Anderson et al. 2007, young men, mean" in text
+    )
+    variables = read_fig(out).variables
+    # knee extension peaks at C3 = 64.9 deg, inside the knee's limits: C1 m g h
+    expected = 0.163 * 75 * 9.81 * 1.75
+    assert variables["right_knee_extension_strength"] == (round(expected, 2), "Nm")
+    assert variables["left_knee_extension_strength"] == (round(expected, 2), "Nm")
