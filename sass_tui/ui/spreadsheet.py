@@ -156,6 +156,7 @@ class SpreadsheetScreen(SassScreen):
         Binding("w", "next_warning", "Warn", tooltip="Warnings"),
         Binding("l", "message_log", show=False),
         Binding("b", "see_figure", "Draw", tooltip="See figure"),
+        Binding("t", "strength_curve", show=False),
         *(
             Binding(spec.key, spec.action, spec.footer)
             for spec in COMMANDS
@@ -823,6 +824,15 @@ class SpreadsheetScreen(SassScreen):
     def action_see_figure(self) -> None:
         """Open the figure view: the figure drawn front and side, to scale."""
         self.sass_app.open_figure_screen()
+
+    def action_strength_curve(self) -> None:
+        """Strength curves: hip, knee and ankle torque over the joint's range."""
+        from sass_tui.ui.strength_curve_screen import StrengthCurveScreen
+
+        sheet = self.session.made_strength_sheet()
+        side = sheet.side if sheet is not None else "right"
+        percentile = sheet.percentile if sheet is not None else 50.0
+        self.app.push_screen(StrengthCurveScreen(self.session, side, percentile))
 
     def action_display_individual(self) -> None:
         """Show the first person of the selected list."""
