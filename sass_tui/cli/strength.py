@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import argparse
 
-from sass_tui.cli.options import SubParsers
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.published_strength import (
     DATA_SET,
     EXAMPLE_DATA_SET,
@@ -73,7 +73,14 @@ def register(commands: SubParsers) -> None:
         help="also draw the torque-angle curve over the joint's range (hip, knee, ankle)",
     )
     parser.add_argument("--format", choices=("text", "json"), default="text")
-    parser.add_argument("--gender", choices=GENDERS, default="male")
+    parser.add_argument(
+        "--person",
+        metavar="ID",
+        help="a person of the database (id or name): hip, knee and ankle strength "
+        "predicted from their own gender, age, mass and stature",
+    )
+    add_db_option(parser)
+    parser.add_argument("--gender", choices=GENDERS, help="default male")
     parser.add_argument("--side", choices=SIDES, default="right")
     parser.add_argument("--unit", choices=("ft-lb", "N-m"), default="ft-lb")
     parser.add_argument(
@@ -106,6 +113,9 @@ def run(args: argparse.Namespace) -> int:
     from sass_tui.model.published_strength import lower_limb_motion
 
     motion = lower_limb_motion(args.motion)
+    if args.person is not None:
+        _take_person(args)
+    args.gender = args.gender or "male"
     data_set = args.strength_data or (
         DATA_SET if motion is not None and args.file is None else EXAMPLE_DATA_SET
     )
@@ -118,7 +128,50 @@ def run(args: argparse.Namespace) -> int:
             f"{motion}: the example strength data have no hip, knee or ankle motions; "
             f"--strength-data {DATA_SET} (Anderson et al. 2007) has them"
         )
+    if args.person is not None:
+        from sass_tui.model.strength import StrengthError
+
+        raise StrengthError(
+            "--person predicts hip, knee and ankle strength (Anderson et al. 2007); "
+            "the example arm data have no model of a person"
+        )
     return _example(args)
+
+
+def _take_person(args: argparse.Namespace) -> None:
+    """A database person's own gender, age, mass and stature into `args`."""
+    from sass_tui.db.individual import find_person, person_record
+    from sass_tui.model.published_strength import PublishedStrengthError
+
+    given = [
+        option
+        for option, value in (
+            ("--gender", args.gender),
+            ("--age", args.age),
+            ("--mass", args.mass),
+            ("--stature", args.stature),
+        )
+        if value is not None
+    ]
+    if given:
+        raise PublishedStrengthError(
+            f"--person takes the person's own gender, age, mass and stature; "
+            f"{', '.join(given)} cannot be given with it"
+        )
+    conn = open_db(args)
+    try:
+        record = person_record(conn, find_person(conn, args.person))
+    finally:
+        conn.close()
+    missing = [k for k in ("gender", "age", "mass", "stature") if record[k] is None]
+    if missing:
+        raise PublishedStrengthError(
+            f"{record['name']} (id {record['id']}) has no {', '.join(missing)} in the "
+            "database; strength cannot be predicted"
+        )
+    args.gender, args.age = record["gender"], float(record["age"])  # type: ignore[arg-type]
+    args.mass, args.stature = f"{record['mass']} kg", f"{record['stature']} cm"
+    args.person = f"{record['name']} (id {record['id']})"
 
 
 def _figure(args: argparse.Namespace):  # -> Figure
@@ -203,6 +256,9 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
     value = float(convert(answer.torque, "N_m", unit))
     how = "isometric" if speed == 0 else f"{args.strength_type} at {speed:g} deg/s"
     age_note = f"age {args.age:g}" if args.age is not None else "age not given"
+    source = answer.source
+    if args.person is not None:
+        source += f"; predicted for {args.person} from their own gender, age, mass and stature"
     if args.format == "json":
         import json
 
@@ -222,7 +278,9 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
                     "stature_m": figure.stature / 100.0,
                     "percentile": args.percentile,
                     "peak_angle": answer.peak_angle,
-                    "source": answer.source,
+                    "source": source,
+                    "person": args.person,
+                    "predicted": args.person is not None,
                 }
             )
         )
@@ -233,7 +291,7 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
         f"{figure.mass:g} kg, {figure.stature / 100.0:g} m, "
         f"{args.percentile:g}th percentile) at {axis}={answer.angle:.4g}"
     )
-    print(f"source: {answer.source}")
+    print(f"source: {source}")
     if args.plot:
         lower, upper = joint_limit_range(figure, args.side, axis)
         curve = lower_limb_curve(motion, subject, lower, upper, speed, args.percentile)
