@@ -452,7 +452,9 @@ class SpreadsheetScreen(SassScreen):
     def action_input_data(self) -> None:
         """Read a population (or strength) file into the group shown."""
         if self.data_group == STRENGTH:
-            self.ask("Strength data file:", self._input_data_from)
+            self.ask(
+                "Strength data file: (or a data set: example, anderson2007)", self._input_data_from
+            )
             return
         self.ask(f"{GROUP_TITLES[self.data_group]} population file:", self._input_data_from)
 
@@ -460,10 +462,28 @@ class SpreadsheetScreen(SassScreen):
         if not text.strip():
             self.say("No file given; nothing loaded.")
             return
+        if self.data_group == STRENGTH and self._strength_data_set(text.strip().lower()):
+            return
         # Refused here, before any worker opens it: a FIFO would block it forever.
         path = regular_file(text.strip())
         self.say(f"Reading {text.strip()} ...")
         self.read_data_file(path, self.data_group)
+
+    def _strength_data_set(self, name: str) -> bool:
+        """A strength data set named instead of a file (docs/strength.md): the
+        example data read again, or Anderson et al. 2007's curves shown."""
+        from sass_tui.model.published_strength import DATA_SET, EXAMPLE_DATA_SET
+
+        if name == EXAMPLE_DATA_SET:
+            from sass_tui.model.strength import default_path
+
+            self.say(f"Reading the example data ({default_path().name}) ...")
+            self.read_data_file(default_path(), STRENGTH)
+            return True
+        if name == DATA_SET:
+            self.action_strength_curve()
+            return True
+        return False
 
     @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
     def read_data_file(self, path: Path, group: str) -> None:

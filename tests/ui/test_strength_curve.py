@@ -77,3 +77,18 @@ def test_age_percentile_and_speed_change_the_curve(drive):
             assert "older men" in screen.source  # nothing changed
 
     drive(scenario())
+
+
+def test_the_strength_group_selects_a_data_set_by_name(drive):
+    async def scenario():
+        app = SassApp(young_man())
+        async with app.run_test(size=(100, 30)) as pilot:
+            await pilot.press("s")
+            await pilot.pause()
+            await pilot.press("i")
+            await pilot.pause()
+            await type_answer(pilot, "anderson2007")
+            assert isinstance(app.screen, StrengthCurveScreen)
+            assert "Anderson et al. 2007" in app.screen.source
+
+    drive(scenario())
