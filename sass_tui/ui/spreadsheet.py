@@ -852,7 +852,16 @@ class SpreadsheetScreen(SassScreen):
         sheet = self.session.made_strength_sheet()
         side = sheet.side if sheet is not None else "right"
         percentile = sheet.percentile if sheet is not None else 50.0
-        self.app.push_screen(StrengthCurveScreen(self.session, side, percentile))
+        screen = StrengthCurveScreen(self.session, side, percentile)
+        person = self.session.person
+        if person is not None and person.person:
+            try:  # a real person's own age; a predicted figure has none
+                age = self.sass_app.selected_individual(self.session.person_index).age
+            except (SassError, OSError):
+                age = math.nan
+            if 18 <= age <= 100:
+                screen.age, screen.person = age, person.person
+        self.app.push_screen(screen)
 
     def action_display_individual(self) -> None:
         """Show the first person of the selected list."""

@@ -55,6 +55,9 @@ class StrengthCurveScreen(SassScreen):
         self.age: float | None = None  # None: the youngest group, said so
         self.percentile = percentile
         self.speed = 0.0  # deg/s, concentric; 0 = isometric
+        # A database person shown: their own age is taken, and the curve is
+        # marked as predicted for them.
+        self.person: str | None = None
         # What was last handed to plotext: (angles, torques), for the tests.
         self.plotted: tuple[list[float], list[float]] = ([], [])
         self.source = ""
@@ -104,6 +107,10 @@ class StrengthCurveScreen(SassScreen):
         torques = [t for _, t in curve]
         self.plotted = (angles, torques)
         self.source = peak.source
+        if self.person is not None:
+            self.source += (
+                f"; predicted for {self.person} from their own gender, age, mass and stature"
+            )
         plot.plot(angles, torques, marker="braille")
         plot.xlim(lower, upper)
         plot.ylim(0, max(torques + [1.0]) * 1.05)

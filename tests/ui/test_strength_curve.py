@@ -92,3 +92,30 @@ def test_the_strength_group_selects_a_data_set_by_name(drive):
             assert "Anderson et al. 2007" in app.screen.source
 
     drive(scenario())
+
+
+def test_a_real_persons_curve_uses_their_own_age_and_is_marked_predicted(db, drive):
+    from sass_tui.db.individual import fetch_individual
+    from sass_tui.db.schema import connect
+    from tests.ui.test_person_strength_page import show_first_person_of
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(100, 37)) as pilot:
+            await show_first_person_of(pilot, "source = ansur2 AND gender = female AND age > 55")
+            with connect(db) as conn:
+                person = fetch_individual(conn, app.query_lists.selected_id(0))
+            await pilot.press("t")
+            await pilot.pause()
+            screen = app.screen
+            assert isinstance(screen, StrengthCurveScreen)
+            assert screen.age == person.age
+            assert screen.source == (
+                "Anderson et al. 2007, middle-aged women, mean; predicted for "
+                f"{person.name} from their own gender, age, mass and stature"
+            )
+            # Table 3, knee extension, women 55-65: C1 0.128 (peak C3 = 65.4 deg)
+            expected = 0.128 * person.mass * 9.81 * person.stature / 100
+            assert max(screen.plotted[1]) == pytest.approx(expected, rel=0.005)
+
+    drive(scenario())
