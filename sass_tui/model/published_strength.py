@@ -376,3 +376,91 @@ def fig_section(
         "motion's peak angle within the joint limits",
         variables,
     )
+
+
+# --- strength limits of a fit test ---------------------------------------------
+
+_LIMIT_OPERATORS = (">=", "<=", ">", "<", "≥", "≤")
+_OPERATOR_WORDS = {"≥": ">=", "≤": "<="}
+
+
+@dataclass(frozen=True)
+class StrengthLimit:
+    """`knee_extension >= 150 N-m at knee_y=60`: a design limit on a person's
+    predicted torque (Anderson et al. 2007, isometric, the mean of the
+    person's group scaled by their own mass and stature)."""
+
+    text: str
+    motion: str
+    operator: str  # ">=" | "<=" | ">" | "<"
+    torque: float  # N-m
+    angle: float | None  # deg; None: the motion's peak angle
+
+    def passes(self, gender: str, age: float, mass: float, stature_cm: float) -> float:
+        """1.0 passes, 0.0 fails, NaN: the person cannot be predicted (a value
+        missing, or an age outside the paper's 18-100)."""
+        values = (age, mass, stature_cm)
+        if gender not in GENDER_WORDS or not all(math.isfinite(v) and v > 0 for v in values):
+            return math.nan
+        if not MIN_AGE <= age <= MAX_AGE:
+            return math.nan
+        subject = Subject(gender, age, mass, stature_cm / 100.0)
+        have = lower_limb_strength(self.motion, subject, self.angle).torque
+        ok = {
+            ">=": have >= self.torque,
+            "<=": have <= self.torque,
+            ">": have > self.torque,
+            "<": have < self.torque,
+        }[self.operator]
+        return 1.0 if ok else 0.0
+
+
+def parse_strength_limit(text: str) -> StrengthLimit:
+    """'strength.knee_extension >= 150 N-m at knee_y=60' (the `strength.`
+    prefix, the unit and the `at AXIS=ANGLE` part are optional; N-m without
+    a unit)."""
+    from sass_tui.model.units import parse_quantity
+
+    shape = "MOTION >= TORQUE [at AXIS=ANGLE], e.g. knee_extension >= 150 N-m at knee_y=60"
+    body, _, where = text.strip().partition(" at ")
+    operator = next((op for op in _LIMIT_OPERATORS if op in body), None)
+    if operator is None:
+        raise PublishedStrengthError(f"strength limit {text.strip()!r}: expected {shape}")
+    name, _, value = body.partition(operator)
+    key = name.strip().lower()
+    key = key.removeprefix("strength.")
+    motion = lower_limb_motion(key)
+    if motion is None:
+        raise PublishedStrengthError(
+            f"strength limit {text.strip()!r}: {CITATION} covers "
+            f"{', '.join(LOWER_LIMB_MOTIONS)}; expected {shape}"
+        )
+    if not value.strip():
+        raise PublishedStrengthError(
+            f"strength limit {text.strip()!r}: no torque; expected {shape}"
+        )
+    try:
+        torque = parse_quantity(value, "N_m")
+    except SassError as exc:
+        raise PublishedStrengthError(f"strength limit {text.strip()!r}: {exc}") from None
+    angle = None
+    if where.strip():
+        axis, sep, degrees = where.strip().partition("=")
+        if not sep or axis.strip().lower() != MOTION_AXIS[motion]:
+            raise PublishedStrengthError(
+                f"strength limit {text.strip()!r}: expected 'at {MOTION_AXIS[motion]}=ANGLE' "
+                f"after the torque ({motion} is about {MOTION_AXIS[motion]})"
+            )
+        try:
+            angle = parse_quantity(degrees, "deg")
+        except SassError as exc:
+            raise PublishedStrengthError(f"strength limit {text.strip()!r}: {exc}") from None
+    if not (math.isfinite(torque) and (angle is None or math.isfinite(angle))):
+        raise PublishedStrengthError(f"strength limit {text.strip()!r}: not a finite number")
+    return StrengthLimit(
+        text=" ".join(text.split()),
+        motion=motion,
+        operator=_OPERATOR_WORDS.get(operator, operator),
+        torque=torque,
+        angle=angle,
+    )

@@ -26,6 +26,7 @@ from sass_tui.model.published_strength import (
     Subject,
     age_group,
     lower_limb_strength,
+    parse_strength_limit,
     read_anderson2007,
 )
 
@@ -173,3 +174,37 @@ def test_fig_names_the_source_of_every_strength_section(tmp_path):
     expected = 0.163 * 75 * 9.81 * 1.75
     assert variables["right_knee_extension_strength"] == (round(expected, 2), "Nm")
     assert variables["left_knee_extension_strength"] == (round(expected, 2), "Nm")
+
+
+@pytest.mark.parametrize(
+    ("text", "torque", "angle"),
+    [
+        ("strength.knee_extension >= 150 N-m at knee_y=60", 150.0, 60.0),
+        ("knee_extension>=100 ft-lb", 100 * 1.3558179483314004, None),
+        ("ankle_dorsiflexion < 40 at ankle_y=0.1 rad", 40.0, math.degrees(0.1)),
+    ],
+)
+def test_strength_limits_parse(text, torque, angle):
+    limit = parse_strength_limit(text)
+    assert limit.torque == pytest.approx(torque)
+    assert limit.angle == (None if angle is None else pytest.approx(angle))
+
+
+def test_a_strength_limit_passes_fails_or_cannot_say():
+    limit = parse_strength_limit("knee_extension >= 200 N-m")  # at the peak: C1 m g h
+    assert limit.passes("male", 21, 75, 175) == 1.0  # 209.87 N-m
+    assert limit.passes("male", 21, 70, 175) == 0.0  # 195.88 N-m
+    assert math.isnan(limit.passes("male", 17, 75, 175))  # the paper starts at 18
+    assert math.isnan(limit.passes("male", 21, math.nan, 175))
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text(max_size=60))
+def test_any_strength_limit_text_parses_or_is_refused(text):
+    try:
+        limit = parse_strength_limit(text)
+    except PublishedStrengthError as exc:
+        assert "strength limit" in str(exc)
+    else:
+        squeezed = "".join(text.lower().replace("_", " ").split())
+        assert limit.motion.replace("_", "") in squeezed and math.isfinite(limit.torque)
