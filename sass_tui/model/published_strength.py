@@ -109,13 +109,27 @@ def default_path() -> Path:
 def read_anderson2007(path: str | None = None) -> Anderson2007:
     """The shipped coefficients (or a file of the same layout)."""
     where = str(path or default_path())
-    tables: dict[str, dict[_Key, Coefficients]] = {"mean": {}, "sd": {}}
     try:
-        with open(where, encoding="utf-8", newline="") as handle:
-            lines = [(n, ln) for n, ln in enumerate(handle, start=1) if not ln.startswith("#")]
-    except OSError as exc:
-        raise PublishedStrengthError(f"{where}: cannot read: {exc.strerror or exc}") from None
-    reader = csv.reader(ln for _, ln in lines)
+        text = Path(where).read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        reason = exc.strerror if isinstance(exc, OSError) else "not UTF-8 text"
+        raise PublishedStrengthError(f"{where}: cannot read: {reason or exc}") from None
+    return parse_anderson2007_text(text, where)
+
+
+def parse_anderson2007_text(text: str, where: str = "<text>") -> Anderson2007:
+    """The coefficient file's text (its layout: datasets/anderson2007.csv)."""
+    tables: dict[str, dict[_Key, Coefficients]] = {"mean": {}, "sd": {}}
+    lines = [
+        (n, ln)
+        for n, ln in enumerate(text.split("\n"), start=1)
+        if ln.strip() and not ln.startswith("#")
+    ]
+    try:
+        rows = list(csv.reader(ln for _, ln in lines))
+    except csv.Error as exc:
+        raise PublishedStrengthError(f"{where}: not comma-separated values: {exc}") from None
+    reader = iter(rows)
     header = next(reader, None)
     expected = ["motion", "gender", "age_group", "statistic", *_COLUMNS]
     if header != expected:
@@ -140,9 +154,9 @@ def read_anderson2007(path: str | None = None) -> Anderson2007:
         try:
             numbers = [float(x) for x in row[4:]]
         except ValueError:
-            raise PublishedStrengthError(
-                f"{where}:{lineno}: a coefficient is not a number"
-            ) from None
+            numbers = []
+        if len(numbers) != len(_COLUMNS) or not all(math.isfinite(x) for x in numbers):
+            raise PublishedStrengthError(f"{where}:{lineno}: a coefficient is not a finite number")
         tables[statistic][(motion, gender, group)] = Coefficients(*numbers)
     missing = [
         f"{m} {g} {a[0]}"
