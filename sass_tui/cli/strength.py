@@ -111,30 +111,28 @@ def register(commands: SubParsers) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from sass_tui.model.published_strength import lower_limb_motion
+    from sass_tui.model.strength import StrengthError
 
     motion = lower_limb_motion(args.motion)
-    if args.person is not None:
-        _take_person(args)
-    args.gender = args.gender or "male"
     data_set = args.strength_data or (
         DATA_SET if motion is not None and args.file is None else EXAMPLE_DATA_SET
     )
-    if data_set == DATA_SET:
-        return _published(args, motion)
-    if motion is not None:
-        from sass_tui.model.strength import StrengthError
-
+    if data_set == EXAMPLE_DATA_SET and motion is not None:
         raise StrengthError(
             f"{motion}: the example strength data have no hip, knee or ankle motions; "
             f"--strength-data {DATA_SET} (Anderson et al. 2007) has them"
         )
-    if args.person is not None:
-        from sass_tui.model.strength import StrengthError
-
+    if data_set == EXAMPLE_DATA_SET and args.person is not None:
+        # Refused before the database is opened (or built).
         raise StrengthError(
             "--person predicts hip, knee and ankle strength (Anderson et al. 2007); "
             "the example arm data have no model of a person"
         )
+    if args.person is not None:
+        _take_person(args)
+    args.gender = args.gender or "male"
+    if data_set == DATA_SET:
+        return _published(args, motion)
     return _example(args)
 
 

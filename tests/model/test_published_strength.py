@@ -138,6 +138,7 @@ def test_cli_isokinetic_and_age_and_plot(capsys):
         (["knee_extension", "--strength-data", "example"], "no hip, knee or ankle"),
         (["elbow_flexion", "--strength-data", "anderson2007"], "covers hip_flexion"),
         (["knee_extension", "--fatigue-level", "10"], "no training or fatigue"),
+        (["elbow_flexion", "--person", "17"], "no model of a person"),
     ],
 )
 def test_cli_refusals_say_why(capsys, argv, message):
