@@ -36,8 +36,11 @@ def register(commands: SubParsers) -> None:
     parser = commands.add_parser(
         "strength",
         help="print a strength at a joint configuration (stored or predicted)",
-        description="Print the strength of MOTION at the given joint angles: the stored "
-        "value when the configuration is in the data, else the prediction equation.",
+        description="Print the strength of MOTION at the given joint angles and its source. "
+        "Arm motions: the example data (invented), the stored value when the configuration "
+        "is in the data, else the prediction equation.  Hip, knee and ankle: Anderson et "
+        "al. 2007's published model for the figure's (or --person's) body "
+        "(docs/strength.md).",
     )
     parser.add_argument(
         "motion", metavar="MOTION", help=", ".join((*MOTION_NAMES, *LOWER_LIMB_MOTIONS))
