@@ -260,6 +260,11 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
     source = answer.source
     if args.person is not None:
         source += f"; predicted for {args.person} from their own gender, age, mass and stature"
+    shown: list[tuple[float, float]] = []
+    if args.plot:
+        lower, upper = joint_limit_range(figure, args.side, axis)
+        curve = lower_limb_curve(motion, subject, lower, upper, speed, args.percentile)
+        shown = [(x, float(convert(y, "N_m", unit))) for x, y in curve]
     if args.format == "json":
         import json
 
@@ -282,6 +287,7 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
                     "source": source,
                     "person": args.person,
                     "predicted": args.person is not None,
+                    "curve": [[round(x, 4), round(y, 4)] for x, y in shown] if args.plot else None,
                 }
             )
         )
@@ -294,9 +300,7 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
     )
     print(f"source: {source}")
     if args.plot:
-        lower, upper = joint_limit_range(figure, args.side, axis)
-        curve = lower_limb_curve(motion, subject, lower, upper, speed, args.percentile)
-        shown = [(x, float(convert(y, "N_m", unit))) for x, y in curve]
+        lower, upper = shown[0][0], shown[-1][0]
         print(f"{motion.replace('_', ' ')} over {axis} {lower:g} to {upper:g} deg (joint limits):")
         for line in text_plot(shown, DISPLAY[unit], (answer.angle, value)):
             print(line)

@@ -209,3 +209,14 @@ def test_any_strength_limit_text_parses_or_is_refused(text):
     else:
         squeezed = "".join(text.lower().replace("_", " ").split())
         assert limit.motion.replace("_", "") in squeezed and math.isfinite(limit.torque)
+
+
+def test_cli_plot_as_json_gives_the_curve_over_the_joint_limits(capsys):
+    argv = ["strength", "knee_flexion", "--plot", "--format", "json", "--unit", "N-m"]
+    assert main([*argv, "--mass", "70", "--stature", "170", "--gender", "female"]) == 0
+    curve = json.loads(capsys.readouterr().out)["curve"]
+    assert (curve[0][0], curve[-1][0]) == (0.0, 135.2)  # female knee y limits, 50th percentile
+    c1, c2, c3 = 0.080, 0.873, 0.635  # Table 3, knee flexion, women 18-25
+    for angle, torque in curve[::10]:
+        expected = c1 * 70 * 9.81 * 1.7 * max(0.0, math.cos(c2 * (math.radians(angle) - c3)))
+        assert torque == pytest.approx(expected, rel=0.005, abs=1e-3)
