@@ -39,11 +39,17 @@ def run(args: argparse.Namespace) -> int:
     figure, warnings = figure_from_args(args)
     extra_sections = []
     if not args.no_strength:
-        from sass_tui.model.strength import StrengthSheet, fig_section, read_strength_file
+        from sass_tui.model.strength import (
+            StrengthSheet,
+            fig_section,
+            lower_limb_fig_section,
+            read_strength_file,
+        )
 
         strength = read_strength_file(args.strength)
         warnings += strength.warnings
         extra_sections.append(fig_section(StrengthSheet(strength, figure)))
+        extra_sections.append(lower_limb_fig_section(figure))
     print_warnings(warnings)
     if args.output:
         out = args.output

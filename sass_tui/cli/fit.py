@@ -62,6 +62,15 @@ def register(commands: SubParsers) -> None:
         "the unweighted figures beside",
     )
     fit.add_argument("--format", choices=("table", "json"), default="table")
+    fit.add_argument(
+        "--strength",
+        action="append",
+        default=[],
+        metavar="LIMIT",
+        help="a limit on each person's hip, knee or ankle strength predicted from their "
+        "own gender, age, mass and stature (Anderson et al. 2007), e.g. "
+        "'knee_extension >= 150 N-m at knee_y=60'; repeatable (docs/strength.md)",
+    )
     fit.add_argument("--failing", action="store_true", help="list who fails which limits")
     fit.add_argument(
         "limits",
@@ -86,6 +95,9 @@ def run(args: argparse.Namespace) -> int:
         error.column = exc.column
         raise error from None
     check_mix(args.mix)
+    from sass_tui.model.published_strength import parse_strength_limit
+
+    strength = [parse_strength_limit(text) for text in args.strength]
     conn = open_db(args)
     target = None
     if args.target is not None:
@@ -93,7 +105,13 @@ def run(args: argparse.Namespace) -> int:
 
         target = load_target(conn, args.target)
     result = fit_test(
-        conn, args.limits, args.population, args.mix, failing=args.failing, target=target
+        conn,
+        args.limits,
+        args.population,
+        args.mix,
+        failing=args.failing,
+        target=target,
+        strength_limits=strength,
     )
     if args.format == "json":
         json.dump(result.to_json(), sys.stdout, indent=1, allow_nan=False)

@@ -1,15 +1,26 @@
-"""`sass strength` (spec §5): one strength value, stored or predicted.
+"""`sass strength` (spec §5): one strength value, stored or predicted, and
+the source it comes from.
 
     sass strength shoulder_abduction shoulder_x=30 shoulder_y=45 elbow_y=90
+    sass strength knee_extension knee_y=60 --age 30 --mass 80 --stature 180cm --plot
 
-Angles not given keep the motion's first stored configuration.
+Upper-limb motions come from the example strength file (invented values,
+said so on every answer; angles not given keep the motion's first stored
+configuration).  Hip, knee and ankle motions come from Anderson et al. 2007
+(docs/strength.md; an angle not given is the motion's peak angle).
 """
 
 from __future__ import annotations
 
 import argparse
 
-from sass_tui.cli.options import SubParsers
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.model.published_strength import (
+    DATA_SET,
+    EXAMPLE_DATA_SET,
+    LOWER_LIMB_AXES,
+    LOWER_LIMB_MOTIONS,
+)
 from sass_tui.model.vocabulary import (
     GENDERS,
     HANDEDNESS,
@@ -25,18 +36,54 @@ def register(commands: SubParsers) -> None:
     parser = commands.add_parser(
         "strength",
         help="print a strength at a joint configuration (stored or predicted)",
-        description="Print the strength of MOTION at the given joint angles: the stored "
-        "value when the configuration is in the data, else the prediction equation.",
+        description="Print the strength of MOTION at the given joint angles and its source. "
+        "Arm motions: the example data (invented), the stored value when the configuration "
+        "is in the data, else the prediction equation.  Hip, knee and ankle: Anderson et "
+        "al. 2007's published model for the figure's (or --person's) body "
+        "(docs/strength.md).",
     )
-    parser.add_argument("motion", metavar="MOTION", help=", ".join(MOTION_NAMES))
+    parser.add_argument(
+        "motion", metavar="MOTION", help=", ".join((*MOTION_NAMES, *LOWER_LIMB_MOTIONS))
+    )
     parser.add_argument(
         "angles",
         nargs="*",
         metavar="JOINT_AXIS=ANGLE",
-        help=f"{', '.join(JOINT_AXES)}; e.g. shoulder_x=30 or "
-        "'elbow_y=1.5 rad' (deg without a unit)",
+        help=f"{', '.join((*JOINT_AXES, *LOWER_LIMB_AXES))}; e.g. shoulder_x=30 or "
+        "'elbow_y=1.5 rad' (deg without a unit); hip_y, knee_y and ankle_y are degrees "
+        "of flexion from standing (hip and knee flexion, ankle dorsiflexion positive)",
     )
-    parser.add_argument("--gender", choices=GENDERS, default="male")
+    parser.add_argument(
+        "--strength-data",
+        choices=(DATA_SET, EXAMPLE_DATA_SET),
+        help=f"{DATA_SET}: Anderson et al. 2007 (the default for hip, knee and ankle); "
+        f"{EXAMPLE_DATA_SET}: the invented example file (the default for the arm)",
+    )
+    parser.add_argument(
+        "--age",
+        type=float,
+        help="years, 18-100: picks Anderson et al. 2007's age group (default 18-25)",
+    )
+    parser.add_argument(
+        "--mass", help="body mass, e.g. 80 or '176 lb' (kg if no unit; default the figure's)"
+    )
+    parser.add_argument(
+        "--stature", help="stature, e.g. 175 or '70 in' (cm if no unit; default the figure's)"
+    )
+    parser.add_argument(
+        "--plot",
+        action="store_true",
+        help="also draw the torque-angle curve over the joint's range (hip, knee, ankle)",
+    )
+    parser.add_argument("--format", choices=("text", "json"), default="text")
+    parser.add_argument(
+        "--person",
+        metavar="ID",
+        help="a person of the database (id or name): hip, knee and ankle strength "
+        "predicted from their own gender, age, mass and stature",
+    )
+    add_db_option(parser)
+    parser.add_argument("--gender", choices=GENDERS, help="default male")
     parser.add_argument("--side", choices=SIDES, default="right")
     parser.add_argument("--unit", choices=("ft-lb", "N-m"), default="ft-lb")
     parser.add_argument(
@@ -66,8 +113,202 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from sass_tui.model.published_strength import lower_limb_motion
+    from sass_tui.model.strength import StrengthError
+
+    motion = lower_limb_motion(args.motion)
+    data_set = args.strength_data or (
+        DATA_SET if motion is not None and args.file is None else EXAMPLE_DATA_SET
+    )
+    if data_set == EXAMPLE_DATA_SET and motion is not None:
+        raise StrengthError(
+            f"{motion}: the example strength data have no hip, knee or ankle motions; "
+            f"--strength-data {DATA_SET} (Anderson et al. 2007) has them"
+        )
+    if data_set == EXAMPLE_DATA_SET and args.person is not None:
+        # Refused before the database is opened (or built).
+        raise StrengthError(
+            "--person predicts hip, knee and ankle strength (Anderson et al. 2007); "
+            "the example arm data have no model of a person"
+        )
+    if args.person is not None:
+        _take_person(args)
+    args.gender = args.gender or "male"
+    if data_set == DATA_SET:
+        return _published(args, motion)
+    return _example(args)
+
+
+def _take_person(args: argparse.Namespace) -> None:
+    """A database person's own gender, age, mass and stature into `args`."""
+    from sass_tui.db.individual import find_person, person_record
+    from sass_tui.model.published_strength import PublishedStrengthError
+
+    given = [
+        option
+        for option, value in (
+            ("--gender", args.gender),
+            ("--age", args.age),
+            ("--mass", args.mass),
+            ("--stature", args.stature),
+        )
+        if value is not None
+    ]
+    if given:
+        raise PublishedStrengthError(
+            f"--person takes the person's own gender, age, mass and stature; "
+            f"{', '.join(given)} cannot be given with it"
+        )
+    conn = open_db(args)
+    try:
+        record = person_record(conn, find_person(conn, args.person))
+    finally:
+        conn.close()
+    missing = [k for k in ("gender", "age", "mass", "stature") if record[k] is None]
+    if missing:
+        raise PublishedStrengthError(
+            f"{record['name']} (id {record['id']}) has no {', '.join(missing)} in the "
+            "database; strength cannot be predicted"
+        )
+    args.gender, args.age = record["gender"], float(record["age"])  # type: ignore[arg-type]
+    args.mass, args.stature = f"{record['mass']} kg", f"{record['stature']} cm"
+    args.person = f"{record['name']} (id {record['id']})"
+
+
+def _figure(args: argparse.Namespace):  # -> Figure
+    """The figure whose mass, stature and joint limits the answer uses."""
     from sass_tui.model.figure import Figure
     from sass_tui.model.names import JOINT_LIMITS
+    from sass_tui.model.units import parse_quantity
+
+    figure = Figure.default(args.gender)
+    figure.set_group_percentile(JOINT_LIMITS, args.joint_limit_percentile)
+    if args.mass is not None:
+        figure.set_mass(parse_quantity(args.mass, "kg"))
+    if args.stature is not None:
+        figure.set_stature(parse_quantity(args.stature, "cm"))
+    return figure
+
+
+def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
+    from sass_tui.model.strength import StrengthError
+
+    out = []
+    for item in args.angles:
+        axis, sep, value = item.partition("=")
+        if not sep or not value.strip():
+            raise StrengthError(f"{item!r}: expected JOINT_AXIS=ANGLE, e.g. shoulder_x=30")
+        out.append((axis, value))
+    return out
+
+
+def _published(args: argparse.Namespace, motion: str | None) -> int:
+    """A hip, knee or ankle motion from Anderson et al. 2007."""
+    from sass_tui.model.published_strength import (
+        AGE_GROUPS,
+        CITATION,
+        LOWER_LIMB_MOTIONS,
+        MOTION_AXIS,
+        PublishedStrengthError,
+        Subject,
+        lower_limb_curve,
+        lower_limb_strength,
+        text_plot,
+    )
+    from sass_tui.model.strength import check_angle, joint_limit_range
+    from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
+
+    if motion is None:
+        raise PublishedStrengthError(
+            f"{args.motion.strip()!r}: {CITATION} covers {', '.join(LOWER_LIMB_MOTIONS)}"
+        )
+    for option, value in (
+        ("--training-level", args.training_level),
+        ("--fatigue-level", args.fatigue_level),
+    ):
+        if value:
+            raise PublishedStrengthError(
+                f"{option}: {CITATION} measured rested, untrained-for-the-test people; "
+                "sass applies no training or fatigue to its torques"
+            )
+    axis = MOTION_AXIS[motion]
+    angle: float | None = None
+    for given, value in _angles(args):
+        key = given.strip().lower().replace(".", "_")
+        if key != axis:
+            raise PublishedStrengthError(
+                f"{given.strip()!r}: {motion} is about {axis} only (degrees of flexion "
+                "from standing)"
+            )
+        angle = parse_quantity(value, "deg")
+    figure = _figure(args)
+    age = args.age if args.age is not None else AGE_GROUPS[0][1]
+    subject = Subject(args.gender, age, figure.mass, figure.stature / 100.0)
+    speed = 0.0 if args.strength_type == "isometric" else args.motion_speed
+    if angle is None:
+        # The motion's peak angle (the paper's C3), within the joint's limits:
+        # hip flexion peaks at -11 deg, which the limits' 0 deg stops.
+        lower, upper = joint_limit_range(figure, args.side, axis)
+        peak = lower_limb_strength(motion, subject, None, 0.0, args.percentile).peak_angle
+        angle = min(max(peak, lower), upper)
+    answer = lower_limb_strength(motion, subject, angle, speed, args.percentile)
+    check_angle(figure, args.side, axis, answer.angle)
+    unit = unit_name(args.unit)
+    value = float(convert(answer.torque, "N_m", unit))
+    how = "isometric" if speed == 0 else f"{args.strength_type} at {speed:g} deg/s"
+    age_note = f"age {args.age:g}" if args.age is not None else "age not given"
+    source = answer.source
+    if args.person is not None:
+        source += f"; predicted for {args.person} from their own gender, age, mass and stature"
+    shown: list[tuple[float, float]] = []
+    if args.plot:
+        lower, upper = joint_limit_range(figure, args.side, axis)
+        curve = lower_limb_curve(motion, subject, lower, upper, speed, args.percentile)
+        shown = [(x, float(convert(y, "N_m", unit))) for x, y in curve]
+    if args.format == "json":
+        import json
+
+        print(
+            json.dumps(
+                {
+                    "motion": motion,
+                    "side": args.side,
+                    "value": round(value, 4),
+                    "unit": DISPLAY[unit],
+                    "angles": {axis: answer.angle},
+                    "strength_type": args.strength_type,
+                    "motion_speed": speed,
+                    "gender": args.gender,
+                    "age_group": answer.group,
+                    "mass_kg": figure.mass,
+                    "stature_m": figure.stature / 100.0,
+                    "percentile": args.percentile,
+                    "peak_angle": answer.peak_angle,
+                    "source": source,
+                    "person": args.person,
+                    "predicted": args.person is not None,
+                    "curve": [[round(x, 4), round(y, 4)] for x, y in shown] if args.plot else None,
+                }
+            )
+        )
+        return 0
+    print(
+        f"{args.side} {motion.replace('_', ' ')}: {value:.2f} {DISPLAY[unit]} "
+        f"({CITATION} model, {how}; {args.gender}, {age_note}: age group {answer.group}, "
+        f"{figure.mass:g} kg, {figure.stature / 100.0:g} m, "
+        f"{args.percentile:g}th percentile) at {axis}={answer.angle:.4g}"
+    )
+    print(f"source: {source}")
+    if args.plot:
+        lower, upper = shown[0][0], shown[-1][0]
+        print(f"{motion.replace('_', ' ')} over {axis} {lower:g} to {upper:g} deg (joint limits):")
+        for line in text_plot(shown, DISPLAY[unit], (answer.angle, value)):
+            print(line)
+    return 0
+
+
+def _example(args: argparse.Namespace) -> int:
+    """An arm motion from the example strength file (or --file)."""
     from sass_tui.model.strength import (
         EXTRAPOLATION_MARGIN_DEG,
         StrengthError,
@@ -79,8 +320,7 @@ def run(args: argparse.Namespace) -> int:
     )
 
     data = read_strength_file(args.file)
-    figure = Figure.default(args.gender)
-    figure.set_group_percentile(JOINT_LIMITS, args.joint_limit_percentile)
+    figure = _figure(args)
     for name in STRENGTH_PARAMETERS:
         figure.set_strength_parameter(name, getattr(args, name))
     sheet = StrengthSheet(data, figure)
@@ -89,10 +329,7 @@ def run(args: argparse.Namespace) -> int:
     sheet.set_percentile(args.percentile)
     sheet.set_unit(args.unit)
     index = motion_index(args.motion)
-    for item in args.angles:
-        axis, sep, value = item.partition("=")
-        if not sep or not value.strip():
-            raise StrengthError(f"{item!r}: expected JOINT_AXIS=ANGLE, e.g. shoulder_x=30")
+    for axis, value in _angles(args):
         sheet.set_angle(index, parse_joint_axis(axis), value)
     row = sheet.row(index)
     if row.source == "predicted":
@@ -104,6 +341,31 @@ def run(args: argparse.Namespace) -> int:
             )
     if row.source == "no data":
         raise StrengthError(f"{data.path}: no {args.gender} data for {row.label.lower()}")
+    if args.plot:
+        raise StrengthError(
+            "--plot draws the published hip, knee and ankle curves; the example data "
+            "have no curve of one angle"
+        )
+    if args.format == "json":
+        import json
+
+        print(
+            json.dumps(
+                {
+                    "motion": MOTION_NAMES[index],
+                    "side": row.side,
+                    "value": round(row.value, 4),
+                    "unit": row.unit,
+                    "angles": dict(zip(JOINT_AXES, row.angles)),
+                    "how": row.source,
+                    "extrapolated": row.extrapolated,
+                    "gender": figure.gender,
+                    "percentile": sheet.percentile,
+                    "source": data.source,
+                }
+            )
+        )
+        return 0
     where = " ".join(f"{axis}={angle:g}" for axis, angle in zip(JOINT_AXES, row.angles))
     how = row.source
     if row.source == "predicted":
@@ -116,6 +378,7 @@ def run(args: argparse.Namespace) -> int:
         f"{row.side} {row.label.lower()}: {row.value:.2f} {row.unit} ({how}; "
         f"{figure.gender}, {sheet.percentile:g}th percentile) at {where}"
     )
+    print(f"source: {data.source}")
     if data.test_data:
         print(f"note: {data.label}: values made for testing (docs/data-sources.md, Strength)")
     return 0

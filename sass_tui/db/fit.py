@@ -44,6 +44,7 @@ from sass_tui.model.vocabulary import GENDERS
 if TYPE_CHECKING:
     from sass_tui.db.targets import TargetWeights
     from sass_tui.model.prediction import Predictor
+    from sass_tui.model.published_strength import StrengthLimit
 
 DEFAULT_POPULATION = "source = ansur2"
 
@@ -183,11 +184,14 @@ def fit_test(
     progress: Progress | None = None,
     cancel: Cancel | None = None,
     target: TargetWeights | None = None,
+    strength_limits: Sequence[StrengthLimit] = (),
 ) -> FitResult:
     """Run the design limits `limits` over the people `population` selects.
     `progress(steps done, 3)`; `cancel` stops it (also mid-statement) with Cancelled.
     With a `target`, its people (of `population`) are tested and their weighted
-    share is given too (`FitResult.target`)."""
+    share is given too (`FitResult.target`). `strength_limits` are limits on each
+    person's strength predicted from their own gender, age, mass and stature
+    (docs/strength.md), after the query's."""
     if target is not None:
         base = target.target.base_query
         population = (
@@ -201,7 +205,9 @@ def fit_test(
     # One compilation of both, so the population's terms share the limits' joins
     # and its WHERE runs inline (a subquery for it costs half as much again).
     people, *terms = compile_conjuncts(f"({population}) AND {limits}")
-    columns = ", ".join(f"({t.where})" for t in terms)
+    # The body a strength limit predicts from, only when there is one.
+    body = "p.age, p.mass, p.stature, " if strength_limits else ""
+    columns = body + ", ".join(f"({t.where})" for t in terms)
     sql = (
         f"SELECT p.id_num, p.gender, {columns} FROM {people.from_clause()} "
         f"WHERE {people.where} ORDER BY p.id_num"
@@ -215,11 +221,21 @@ def fit_test(
     ids = np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows))
     gender = np.array([r[1] for r in rows], dtype=object)
     # (people, limits): 1.0 passes, 0.0 fails, NaN not measured.
-    passes = np.array([r[2:] for r in rows], dtype=float).reshape(len(rows), len(terms))
+    first = 5 if strength_limits else 2
+    passes = np.array([r[first:] for r in rows], dtype=float).reshape(len(rows), len(terms))
+    texts = tuple(t.text for t in terms)
+    if strength_limits:
+        predicted = [
+            [
+                limit.passes(r[1], *(math.nan if v is None else float(v) for v in r[2:5]))
+                for limit in strength_limits
+            ]
+            for r in rows
+        ]
+        passes = np.hstack([passes, np.array(predicted, dtype=float)])
+        texts += tuple(f"{limit.text} (predicted)" for limit in strength_limits)
     steps(2, 3)
-    result = _summarise(
-        conn, tuple(t.text for t in terms), population, weights, ids, gender, passes, failing
-    )
+    result = _summarise(conn, texts, population, weights, ids, gender, passes, failing)
     if target is not None:
         result = replace(result, target=_target_share(target, ids, passes))
     steps(3, 3)

@@ -42,6 +42,7 @@ from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
+from sass_tui.model.published_strength import EXAMPLE_SOURCE
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity
 from sass_tui.model.vocabulary import GENDERS, JOINT_AXES, MOTION_NAMES, SIDES
 
@@ -154,6 +155,11 @@ class StrengthData:
         if self.measured_at is not None:
             return self.title
         return f"{self.title} ({Path(self.path).name})"
+
+    @property
+    def source(self) -> str:
+        """Where the numbers come from, in the words every answer carries."""
+        return EXAMPLE_SOURCE if self.test_data else self.label
 
     def section(self, gender: str, side: str) -> tuple[StrengthSection, bool]:
         """The section for gender and side, or the other side's (measured=False)."""
@@ -866,8 +872,12 @@ class StrengthSheet:
 
     @property
     def title(self) -> str:
-        """What the page shows, for its title: the data's label."""
-        return f"Strength: {self.data.label}"
+        """What the page shows, for its title: the data's label and source."""
+        data = self.data
+        if data.source == data.label:
+            return f"Strength: {data.label}"
+        # The source first: a narrow page crops the end of its title.
+        return f"Strength: {data.source}; {data.label}"
 
     def row(self, index: int) -> StrengthRow:
         return self.rows()[index]
@@ -935,10 +945,33 @@ class StrengthSheet:
         return out
 
 
+def _label_and_source(data: StrengthData) -> str:
+    """'TEST DATA, ... (strength.dat); source: example data (invented, ...)'."""
+    if data.source == data.label:
+        return data.label
+    return f"{data.label}; source: {data.source}"
+
+
 def fig_section(sheet: StrengthSheet) -> tuple[str, list[tuple[str, float, str]]]:
     """The strength section for figfile.render_fig(extra_sections=[...]); its
-    title says what the values are (test data, or the file's title)."""
-    return (f"strength variables: {sheet.data.label}", sheet.fig_variables())
+    title says what the values are and where they come from (test data, or
+    the file's title)."""
+    return (f"strength variables: {_label_and_source(sheet.data)}", sheet.fig_variables())
+
+
+def lower_limb_fig_section(
+    figure: Figure, side: str = "right", percentile: float = 50.0
+) -> tuple[str, list[tuple[str, float, str]]]:
+    """The figure's hip, knee and ankle strength (Anderson et al. 2007) for a
+    .fig file, from its gender, mass and stature (a figure has no age: the
+    18-25 group) within its joint limits."""
+    from sass_tui.model import published_strength as published
+
+    subject = published.Subject(
+        figure.gender, published.AGE_GROUPS[0][1], figure.output_mass(), figure.stature / 100.0
+    )
+    limits = {axis: joint_limit_range(figure, side, axis) for axis in published.LOWER_LIMB_AXES}
+    return published.fig_section(subject, limits, percentile, age_given=False)
 
 
 def fit_summary(data: StrengthData) -> list[tuple[str, str, MotionFit]]:

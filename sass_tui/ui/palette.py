@@ -78,6 +78,13 @@ SCREENS: tuple[ScreenRoute, ...] = (
         "Family (y) on the spreadsheet",
     ),
     ScreenRoute(
+        "Strength curves",
+        "sass_tui.ui.strength_curve_screen",
+        "StrengthCurveScreen",
+        "strength_curve",
+        "t on the spreadsheet",
+    ),
+    ScreenRoute(
         "Fit Test",
         "sass_tui.ui.fit_screen",
         "FitScreen",

@@ -157,6 +157,7 @@ class SpreadsheetScreen(SassScreen):
         Binding("l", "message_log", show=False),
         Binding("b", "see_figure", "Draw", tooltip="See figure"),
         Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
+        Binding("t", "strength_curve", show=False),
         *(
             Binding(spec.key, spec.action, spec.footer)
             for spec in COMMANDS
@@ -452,7 +453,9 @@ class SpreadsheetScreen(SassScreen):
     def action_input_data(self) -> None:
         """Read a population (or strength) file into the group shown."""
         if self.data_group == STRENGTH:
-            self.ask("Strength data file:", self._input_data_from)
+            self.ask(
+                "Strength data file: (or a data set: example, anderson2007)", self._input_data_from
+            )
             return
         self.ask(f"{GROUP_TITLES[self.data_group]} population file:", self._input_data_from)
 
@@ -460,10 +463,28 @@ class SpreadsheetScreen(SassScreen):
         if not text.strip():
             self.say("No file given; nothing loaded.")
             return
+        if self.data_group == STRENGTH and self._strength_data_set(text.strip().lower()):
+            return
         # Refused here, before any worker opens it: a FIFO would block it forever.
         path = regular_file(text.strip())
         self.say(f"Reading {text.strip()} ...")
         self.read_data_file(path, self.data_group)
+
+    def _strength_data_set(self, name: str) -> bool:
+        """A strength data set named instead of a file (docs/strength.md): the
+        example data read again, or Anderson et al. 2007's curves shown."""
+        from sass_tui.model.published_strength import DATA_SET, EXAMPLE_DATA_SET
+
+        if name == EXAMPLE_DATA_SET:
+            from sass_tui.model.strength import default_path
+
+            self.say(f"Reading the example data ({default_path().name}) ...")
+            self.read_data_file(default_path(), STRENGTH)
+            return True
+        if name == DATA_SET:
+            self.action_strength_curve()
+            return True
+        return False
 
     @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
     def read_data_file(self, path: Path, group: str) -> None:
@@ -565,9 +586,9 @@ class SpreadsheetScreen(SassScreen):
             if word in ("n", "no"):
                 sections = []
             elif word in ("", "y", "yes"):
-                from sass_tui.model.strength import fig_section
+                from sass_tui.model.strength import fig_section, lower_limb_fig_section
 
-                sections = [fig_section(strength)]
+                sections = [fig_section(strength), lower_limb_fig_section(self.figure)]
             else:
                 raise AnswerError(f"expected y or n, got {answer.strip()!r}; nothing written")
             self._write_unless_kept(path, lambda: self._write_figure(path, sections))
@@ -830,6 +851,24 @@ class SpreadsheetScreen(SassScreen):
     def action_see_figure(self) -> None:
         """Open the figure view: the figure drawn front and side, to scale."""
         self.sass_app.open_figure_screen()
+
+    def action_strength_curve(self) -> None:
+        """Strength curves: hip, knee and ankle torque over the joint's range."""
+        from sass_tui.ui.strength_curve_screen import StrengthCurveScreen
+
+        sheet = self.session.made_strength_sheet()
+        side = sheet.side if sheet is not None else "right"
+        percentile = sheet.percentile if sheet is not None else 50.0
+        screen = StrengthCurveScreen(self.session, side, percentile)
+        person = self.session.person
+        if person is not None and person.person:
+            try:  # a real person's own age; a predicted figure has none
+                age = self.sass_app.selected_individual(self.session.person_index).age
+            except (SassError, OSError):
+                age = math.nan
+            if 18 <= age <= 100:
+                screen.age, screen.person = age, person.person
+        self.app.push_screen(screen)
 
     def action_display_individual(self) -> None:
         """Show the first person of the selected list."""

@@ -367,6 +367,35 @@ def _ids() -> Target:
     return Target("ids", seeds, lambda text: parse_id_list(str(text), "ids.txt"))
 
 
+def _anderson2007() -> Target:
+    from sass_tui.model.published_strength import (
+        LOWER_LIMB_MOTIONS,
+        Subject,
+        lower_limb_strength,
+        parse_anderson2007_text,
+    )
+
+    seed = (DATASETS / "anderson2007.csv").read_text(encoding="utf-8")
+
+    def run(text: object) -> object:
+        data = parse_anderson2007_text(str(text), "a.csv")
+        subject = Subject("female", 60, 70, 1.7)
+        return [lower_limb_strength(m, subject, 30, 90, 5, data) for m in LOWER_LIMB_MOTIONS]
+
+    return Target("anderson2007", [seed], run)
+
+
+def _strength_limit() -> Target:
+    from sass_tui.model.published_strength import parse_strength_limit
+
+    seeds = ["strength.knee_extension >= 150 N-m at knee_y=60", "hip_flexion < 80 ft-lb"]
+
+    def run(text: object) -> object:
+        return parse_strength_limit(str(text)).passes("male", 30, 80, 180)
+
+    return Target("strength_limit", seeds, run)
+
+
 TARGET_MAKERS: dict[str, Callable[[], Target]] = {
     "population": _population,
     "strength": _strength,
@@ -376,6 +405,8 @@ TARGET_MAKERS: dict[str, Callable[[], Target]] = {
     "ansur": _ansur,
     "units": _units,
     "ids": _ids,
+    "anderson2007": _anderson2007,
+    "strength_limit": _strength_limit,
 }
 _BUILT: dict[str, Target] = {}
 

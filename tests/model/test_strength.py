@@ -253,7 +253,8 @@ def test_fig_includes_strength_unless_told_not_to(tmp_path, capsys):
     assert variables["left_shoulder_abduction_strength"][0] == pytest.approx(
         24.38 / 1.116, abs=0.01
     )
-    assert sum(name.endswith("_strength") for name in variables) == 28
+    # 28 arm (example data) + 12 hip, knee and ankle (Anderson et al. 2007)
+    assert sum(name.endswith("_strength") for name in variables) == 28 + 12
     bare = tmp_path / "without.fig"
     assert main(["fig", "--no-strength", "-o", str(bare)]) == 0
     assert not any(name.endswith("_strength") for name in read_fig(bare).variables)
@@ -273,9 +274,10 @@ def test_every_output_of_the_shipped_test_data_says_so(tmp_path, capsys, data, m
     assert "test data" in capsys.readouterr().out.lower()
     out = tmp_path / "m.fig"
     assert main(["fig", "-o", str(out)]) == 0
-    assert "/* strength variables: TEST DATA, not measured strength (strength.dat) */" in (
-        out.read_text()
-    )
+    assert (
+        "/* strength variables: TEST DATA, not measured strength (strength.dat); "
+        "source: example data (invented, for the report's worked examples) */"
+    ) in out.read_text()
     # a file that does not call itself test data is not labelled so
     mine = parse_strength_text(GOOD, "mine.dat")
     assert not mine.test_data and "TEST DATA" not in mine.label
