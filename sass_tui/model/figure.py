@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import copy
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -133,6 +134,10 @@ class Figure:
     fatigue_level: float = 0.0
     global_stats: PopulationData | None = None
     groups: dict[str, GroupState] = field(default_factory=dict)
+    # A person's own ANSUR II measurements that place their body landmarks
+    # (model/landmarks.py: survey names, cm); empty for a population figure,
+    # which is placed from its stature.
+    landmarks: dict[str, float] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         for group in GROUPS:
@@ -173,6 +178,7 @@ class Figure:
         *,
         mass: float = float("nan"),
         stature: float = float("nan"),
+        landmarks: Mapping[str, float] | None = None,
         **strength_parameters: str | float | None,
     ) -> Figure:
         """A real person's figure (report §12.4, Disp. Indv.): the person's values
@@ -180,7 +186,9 @@ class Figure:
         against this figure's population statistics.  This figure is left as it
         is, so Disp. Pop. returns to it unchanged.  `strength_parameters` are
         strength_type, motion_speed, handedness, training_level, fatigue_level
-        (None = keep this figure's)."""
+        (None = keep this figure's); `landmarks` the person's measurements
+        that place the HAnim humanoid and the `.fig`'s joints (cm, by the
+        survey's names: model/landmarks.py)."""
         import numpy as np
 
         gender = _check_choice(gender, GENDERS, "gender")
@@ -195,6 +203,7 @@ class Figure:
             handedness=self.handedness,
             training_level=self.training_level,
             fatigue_level=self.fatigue_level,
+            landmarks={k: float(v) for k, v in (landmarks or {}).items()},
         )
         for group in GROUPS:
             mine, theirs = self.groups[group], person.groups[group]
