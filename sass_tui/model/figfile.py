@@ -65,8 +65,9 @@ class FigFile:
 def person_joint_lengths(figure: Figure) -> dict[str, float]:
     """A person's limb lengths (cm) from joint centre to joint centre as their
     own landmarks place the joints (model/landmarks.py), by girth row: the
-    `.fig`'s segment z, so that its joints are the HAnim humanoid's.  Empty
-    for a population figure and for a person without those measurements."""
+    `.fig`'s segment z, so that its joints are the HAnim humanoid's; a length
+    set by hand on the spreadsheet stays as set.  Empty for a population
+    figure and for a person without those measurements."""
     if not figure.landmarks or math.isnan(figure.stature):
         return {}
     from sass_tui.model.landmarks import joint_lengths, measured_heights
@@ -77,6 +78,7 @@ def person_joint_lengths(figure: Figure) -> dict[str, float]:
         for stem, length in lengths.items()
         if length > 0
         for side in ("right", "left")
+        if f"{side}_{stem}" not in figure.hand_set_lengths
     }
 
 

@@ -138,6 +138,11 @@ class Figure:
     # (model/landmarks.py: survey names, cm); empty for a population figure,
     # which is placed from its stature.
     landmarks: dict[str, float] = field(default_factory=dict)
+    # Girth rows whose length (z) was set here by hand: a person's .fig keeps
+    # them as set instead of the length between their joints
+    # (figfile.person_joint_lengths).  Replaced, never changed in place, so
+    # an undo snapshot keeps its own.
+    hand_set_lengths: frozenset[str] = frozenset()
 
     def __post_init__(self) -> None:
         for group in GROUPS:
@@ -288,6 +293,8 @@ class Figure:
         state = self.groups[group]
         state.percentile = float(p)
         self._rescale(state)
+        if group == GIRTH:
+            self.hand_set_lengths = frozenset(row.name for row in state.rows)
 
     def set_value(self, group: str, row: int, axis: int, value: float) -> None:
         """Set one cell's value (canonical unit); its percentile follows.  A
@@ -302,6 +309,7 @@ class Figure:
         assert values is not None and percentiles is not None  # _cell: loaded
         values[row, axis] = value
         percentiles[row, axis] = cell_percentile_of(*self._cell_stats(state, row, axis), value)
+        self._hand_set(group, row, axis)
 
     def set_cell_percentile(self, group: str, row: int, axis: int, p: float) -> None:
         """Set one cell's percentile; its value follows."""
@@ -311,6 +319,11 @@ class Figure:
         assert values is not None and percentiles is not None  # _cell: loaded
         values[row, axis] = cell_value_at(*self._cell_stats(state, row, axis), float(p))
         percentiles[row, axis] = p
+        self._hand_set(group, row, axis)
+
+    def _hand_set(self, group: str, row: int, axis: int) -> None:
+        if group == GIRTH and axis == 2:
+            self.hand_set_lengths = self.hand_set_lengths | {ROWS[GIRTH][row].name}
 
     def check_cell(self, group: str, row: int, axis: int) -> None:
         """Raise FigureError when the cell cannot be edited (no data, or 999)."""

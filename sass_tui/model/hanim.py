@@ -62,10 +62,11 @@ SEGMENT_OF = {joint: segment for joint, segment, _ in LOA1}
 
 # Where the joint centres stand (clause 4.8.2: "placed so that the joints
 # rotate in the same way that they do on a real human body"): each at the
-# height of a body landmark, the landmark heights being the figure's stature
+# height of a body landmark.  A real person's landmarks are their own
+# measurements (model/landmarks.py); a percentile figure's are its stature
 # times the mean landmark/stature ratio of the ANSUR II public data (Gordon et
 # al. 2014, 4,082 men and 1,986 women; scripts/hanim_landmarks.py computes the
-# ratios and measures the joint errors they give, docs/hanim.md).
+# ratios and measures the placements, docs/hanim.md).
 #   ankle (talocrural)  lateral malleolus height
 #   knee                lateral femoral epicondyle height (the flexion axis)
 #   hip                 trochanterion height (level with the femoral head)

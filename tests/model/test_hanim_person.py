@@ -210,3 +210,25 @@ def test_sass_export_hanim_person_writes_the_sites(people, tmp_path):
     }
     for site in SITE_COLUMNS:
         assert sites[site][1] == pytest.approx(_expected_height(site, row), abs=1e-5), site
+
+
+def test_a_length_set_by_hand_reaches_the_fig_as_set(people):
+    """A person's .fig takes the joints' limb lengths, except one typed on
+    the spreadsheet: that one is written as set (and undo brings the joints'
+    back, since the record of it is part of the figure's snapshot)."""
+    from sass_tui.model.figfile import girth_variables
+    from sass_tui.model.names import ROWS, row_index
+
+    row, figure = next(iter(_humanoids(people)))
+    written = {name: value for name, value, _ in girth_variables(figure)}
+    joints = written["ruplegz"]
+    hip = float(row["trochanterionheight"]) / 10
+    assert joints == pytest.approx(hip - float(row["lateralfemoralepicondyleheight"]) / 10)
+    snapshot = figure.snapshot()
+    figure.set_value("girth", row_index("girth", "right_upper_leg"), 2, 47.5)
+    written = {name: value for name, value, _ in girth_variables(figure)}
+    assert written["ruplegz"] == pytest.approx(47.5)
+    assert written["luplegz"] == pytest.approx(joints)  # the other leg untouched
+    assert ROWS["girth"][row_index("girth", "right_upper_leg")].name in figure.hand_set_lengths
+    figure.restore(snapshot)
+    assert {name: value for name, value, _ in girth_variables(figure)}["ruplegz"] == joints
