@@ -5,7 +5,8 @@
 Times, on the database's people:
 - the fit (load every value from SQLite, fit both genders), the cache key
   (SQL totals), loading the cached fit, and `open_predictor` with a current cache;
-- one prediction from stature + mass (male), with and without 5 nearest people;
+- one prediction from stature + mass (male), with and without 5 nearest people,
+  and the first one from those names (the residual spread model fitted);
 - a batch of 10,000 rows (stature + mass, 5 % of the masses missing) with
   `Predictor.predict_matrix`, and through `sass predict --input/--output`.
 Baselines measured in the same run: numpy least squares of every field on
@@ -96,6 +97,11 @@ def main() -> None:
     row(
         "one prediction (stature + mass, male)",
         best_of(lambda: predictor.predict("male", one), 500),
+        base_one,
+    )
+    row(
+        "first prediction from new known names (fits their spread model, kept for the next)",
+        best_of(lambda: Predictor(predictor.models).predict("male", one), 10),
         base_one,
     )
     row(

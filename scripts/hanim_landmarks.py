@@ -3,21 +3,18 @@ put them (docs/hanim.md, "Joint centres").
 
 1. The landmark/stature ratios of sass_tui.model.hanim.LANDMARK_FRACTIONS,
    recomputed from the ANSUR II public files (means over every person).
-2. ANSUR II people imported into a fresh database (`sass db import-ansur`),
-   fetched back and exported as sass exports them (Figure.for_person against
-   the shipped population, hanim.build_humanoid); for each, the exported
-   joint centres against the person's own landmark heights in the CSV:
-     skull vertex      stature
-     shoulder          acromialheight - SHOULDER_BELOW_ACROMION
-     hip               trochanterionheight
-     knee              lateralfemoralepicondyleheight (and tibialheight)
-     ankle             lateralmalleolusheight
-   and the whole-body centre of mass (segment masses and centres of the
-   export, de Leva 1996) as a share of the stature.
+2. ANSUR II people (all 6,068, or a sample) imported into a fresh database
+   (`sass db import-ansur`), fetched back and exported as `sass export hanim
+   --person` exports them (db.individual.person_figure against the shipped
+   population, hanim.build_humanoid); for each, the height of every site
+   their measurements place (model/landmarks.py) against the CSV column it
+   comes from, the acromion sites' spacing against biacromialbreadth, the
+   joints placed at a landmark against it, and the whole-body centre of
+   mass (de Leva 1996) as a share of the stature.
 3. The same centre of mass for the shipped male 50th and female 5th
    percentile figures.
 
-    python scripts/hanim_landmarks.py [--people 200]
+    python scripts/hanim_landmarks.py [--people 200]   # default: everyone
 
 Needs ../shared/data/ansur2 (the ANSUR II CSV files).
 """
@@ -48,13 +45,41 @@ COLUMNS = {
     "cervicale": "cervicaleheight",
     "omphalion": "waistheightomphalion",
 }
-# (joint, the CSV column whose height (mm) puts it, offset below that landmark in m)
-CHECKS = (
-    ("r_shoulder", "acromialheight", "shoulder"),
-    ("r_hip", "trochanterionheight", 0.0),
-    ("r_knee", "lateralfemoralepicondyleheight", 0.0),
-    ("r_talocrural", "lateralmalleolusheight", 0.0),
+# (site, the CSV column of its height (mm); None: derived, see SITE_HEIGHTS)
+SITES = (
+    ("skull_vertex_pt", "stature"),
+    ("cervicale_pt", "cervicaleheight"),
+    ("suprasternale_pt", "suprasternaleheight"),
+    ("r_acromion_pt", "acromialheight"),
+    ("l_acromion_pt", "acromialheight"),
+    ("r_radiale_pt", None),
+    ("l_radiale_pt", None),
+    ("r_iliocristale_pt", "iliocristaleheight"),
+    ("l_iliocristale_pt", "iliocristaleheight"),
+    ("r_trochanterion_pt", "trochanterionheight"),
+    ("l_trochanterion_pt", "trochanterionheight"),
+    ("r_tibiale_pt", "tibialheight"),
+    ("l_tibiale_pt", "tibialheight"),
+    ("r_lateral_malleolus_pt", "lateralmalleolusheight"),
+    ("l_lateral_malleolus_pt", "lateralmalleolusheight"),
 )
+# (joint, the CSV column of the landmark that places it)
+JOINTS = (
+    ("r_radiocarpal", "wristheight"),
+    ("r_hip", "trochanterionheight"),
+    ("r_knee", "lateralfemoralepicondyleheight"),
+    ("r_talocrural", "lateralmalleolusheight"),
+)
+
+
+def site_height(site: str, row: dict[str, str]) -> float:
+    """The height (m) the person's own measurements give `site`: its column,
+    or for the radiale (ANSUR II has no radiale height) the acromial height
+    less the acromion-radiale length, both measured standing, arm hanging."""
+    column = dict(SITES)[site]
+    if column is None:
+        return (float(row["acromialheight"]) - float(row["acromionradialelength"])) / 1000
+    return float(row[column]) / 1000
 
 
 def read_csv(gender: str, folder: Path = ANSUR) -> list[dict[str, str]]:
@@ -103,71 +128,73 @@ def percentile_figures() -> dict[str, float]:
     return out
 
 
-def measure(people: int = 200, folder: Path = ANSUR) -> dict[str, object]:
-    """Export `people` ANSUR II people (half men, half women, evenly spread
-    over each file) and measure their joints against their own landmarks."""
+def measure(people: int | None = None, folder: Path = ANSUR) -> dict[str, object]:
+    """Export ANSUR II people (every one, or `people` evenly spread over each
+    file, half men and half women) as `sass export hanim --person` does, and
+    measure their sites and joints against their own measurements."""
     from sass_tui.db.ansur import import_ansur
-    from sass_tui.db.individual import fetch_individual, find_person
+    from sass_tui.db.individual import fetch_individual, person_figure
     from sass_tui.db.schema import connect
     from sass_tui.model.figure import Figure
-    from sass_tui.model.hanim import SHOULDER_BELOW_ACROMION, build_humanoid
-    from sass_tui.model.names import GROUPS
+    from sass_tui.model.hanim import build_humanoid
 
     errors: dict[str, list[float]] = {
-        "vertex": [],
-        **{joint: [] for joint, _, _ in CHECKS},
-        "knee vs tibiale": [],
+        **{site: [] for site, _ in SITES},
+        "acromion spacing": [],
+        **{joint: [] for joint, _ in JOINTS},
     }
     com_share: list[float] = []
+    upper_arm: dict[str, list[float]] = {g: [] for g in FILES}  # shoulder - elbow centre (m)
     population = {g: Figure.default(g) for g in FILES}
     with tempfile.TemporaryDirectory() as tmp:
         conn = connect(Path(tmp) / "ansur.db", create=True)
         import_ansur(conn, [folder / FILES["male"], folder / FILES["female"]])
+        ids = {
+            str(name): int(i)
+            for i, name in conn.execute("SELECT id_num, name FROM person WHERE source = 'ansur2'")
+        }
         for gender in FILES:
             rows = read_csv(gender, folder)
-            step = len(rows) / (people // 2)
+            if people is not None:
+                step = len(rows) / (people // 2)
+                rows = [rows[int(k * step)] for k in range(people // 2)]
             letter = "M" if gender == "male" else "F"
-            for k in range(people // 2):
-                row = rows[int(k * step)]
-                person = fetch_individual(
-                    conn, find_person(conn, f"ANSUR II {letter} {row['subjectid']}")
-                )
-                figure = population[gender].for_person(
-                    person.name,
-                    person.gender,
-                    {g: person.groups[g] for g in GROUPS},
-                    mass=person.mass,
-                    stature=person.stature,
-                )
-                humanoid = build_humanoid(figure)
-                vertex = humanoid.sites[0].translation[1]
-                errors["vertex"].append(vertex - float(row["stature"]) / 1000)
-                for joint, column, offset in CHECKS:
-                    below = SHOULDER_BELOW_ACROMION if offset == "shoulder" else offset
-                    target = float(row[column]) / 1000 - below
+            for row in rows:
+                person = fetch_individual(conn, ids[f"ANSUR II {letter} {row['subjectid']}"])
+                humanoid = build_humanoid(person_figure(person, population[gender]))
+                sites = {site.name: site.translation for site in humanoid.sites}
+                for site, _ in SITES:
+                    errors[site].append(sites[site][1] - site_height(site, row))
+                spacing = sites["l_acromion_pt"][0] - sites["r_acromion_pt"][0]
+                errors["acromion spacing"].append(spacing - float(row["biacromialbreadth"]) / 1000)
+                for joint, column in JOINTS:
+                    target = float(row[column]) / 1000
                     errors[joint].append(humanoid.centers[joint][1] - target)
-                errors["knee vs tibiale"].append(
-                    humanoid.centers["r_knee"][1] - float(row["tibialheight"]) / 1000
-                )
                 com_share.append(center_of_mass_share(humanoid, float(row["stature"]) / 1000))
+                centres = humanoid.centers
+                upper_arm[gender].append(centres["r_shoulder"][1] - centres["r_elbow"][1])
         conn.close()
+    shares = np.array(com_share) * 100
     return {
-        "people": people,
-        "mae_cm": {k: float(np.mean(np.abs(v)) * 100) for k, v in errors.items()},
-        "max_cm": {k: float(np.max(np.abs(v)) * 100) for k, v in errors.items()},
-        "bias_cm": {k: float(np.mean(v) * 100) for k, v in errors.items()},
+        "people": len(com_share),
+        "mae_mm": {k: float(np.mean(np.abs(v)) * 1000) for k, v in errors.items()},
+        "max_mm": {k: float(np.max(np.abs(v)) * 1000) for k, v in errors.items()},
         "com_shares": com_share,
+        "upper_arm_mm": {g: float(np.mean(v) * 1000) for g, v in upper_arm.items()},
         "com_percent": (
-            float(np.min(com_share) * 100),
-            float(np.mean(com_share) * 100),
-            float(np.max(com_share) * 100),
+            float(shares.min()),
+            float(shares.mean()),
+            float(shares.max()),
+            float(shares.std(ddof=1)),
         ),
     }
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--people", type=int, default=200)
+    parser.add_argument(
+        "--people", type=int, default=None, help="a sample of this many (default: all 6,068)"
+    )
     args = parser.parse_args()
     sys.path.insert(0, str(ROOT))
     from sass_tui.model.hanim import LANDMARK_FRACTIONS
@@ -179,23 +206,28 @@ def main() -> int:
         print(f"  {gender}: {values}  {'= hanim.LANDMARK_FRACTIONS' if same else 'DIFFERS'}")
     result = measure(args.people)
     print(f"\n{result['people']} ANSUR II people exported from a database:")
-    print("| joint | landmark | mean abs. error | max | mean (export - landmark) |")
-    print("|---|---|---|---|---|")
-    names = {
-        "vertex": "stature",
-        "r_shoulder": "acromion height - 4 cm",
-        "r_hip": "trochanterion height",
-        "r_knee": "lateral femoral epicondyle height",
-        "knee vs tibiale": "tibiale height",
-        "r_talocrural": "lateral malleolus height",
+    print("| site or joint | against the person's | mean abs. error | max |")
+    print("|---|---|---|---|")
+    labels = {
+        **{site: (column or "acromialheight - acromionradialelength") for site, column in SITES},
+        "acromion spacing": "biacromialbreadth",
+        **{joint: column for joint, column in JOINTS},
     }
-    for key, label in names.items():
+    for key, label in labels.items():
         print(
-            f"| {key} | {label} | {result['mae_cm'][key]:.2f} cm | "
-            f"{result['max_cm'][key]:.2f} cm | {result['bias_cm'][key]:+.2f} cm |"
+            f"| `{key}` | {label} | {result['mae_mm'][key]:.2f} mm | "
+            f"{result['max_mm'][key]:.2f} mm |"
         )
-    low, mean, high = result["com_percent"]
-    print(f"\nwhole-body centre of mass: {low:.2f} - {high:.2f} % of stature (mean {mean:.2f} %)")
+    low, mean, high, sd = result["com_percent"]
+    print(
+        f"\nwhole-body centre of mass: {low:.2f} - {high:.2f} % of stature "
+        f"(mean {mean:.2f} %, SD {sd:.2f} %)"
+    )
+    arm = result["upper_arm_mm"]
+    print(
+        f"mean upper arm (shoulder - elbow centre): male {arm['male']:.1f} mm, "
+        f"female {arm['female']:.1f} mm"
+    )
     for name, share in percentile_figures().items():
         print(f"  {name} percentile figure: {share * 100:.2f} %")
     return 0

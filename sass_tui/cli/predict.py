@@ -47,6 +47,13 @@ def register(commands: SubParsers) -> None:
         default=[],
         help="a known value, e.g. stature=175.5cm or mass='181 lb' (repeat for more)",
     )
+    predict.add_argument(
+        "--population",
+        metavar="QUERY",
+        help="learn from the people this query selects (the query language of `sass query`; "
+        "those of --gender are used), e.g. \"branch = 'Combat Arms'\"; default: every "
+        "real person of the gender",
+    )
     predict.add_argument("--format", choices=("table", "json", "csv"), default="table")
     predict.add_argument(
         "-o",
@@ -101,14 +108,20 @@ def run(args: argparse.Namespace) -> int:
         raise PredictArgumentError(
             f"-o {args.figure}: the file must end in .fig, .x3d, .glb or .gltf"
         )
-    from sass_tui.model.prediction import split_known
+    from sass_tui.model.prediction import MIN_PEOPLE, split_known
 
     pairs = [pair for item in args.known for pair in split_known(item)]
     conn = open_db(args)
     try:
-        predictor = open_predictor(conn)
+        predictor = open_predictor(conn, population=args.population)
     finally:
         conn.close()
+    if args.population is not None and args.gender not in predictor.models:
+        raise PredictArgumentError(
+            f"--population {args.population!r}: fewer than {MIN_PEOPLE} {args.gender} people "
+            "with every value the prediction needs; widen the query",
+            where=args.population,
+        )
     if args.input is not None:
         rows = predict_csv(predictor, args.gender, args.input, args.output)
         print(f"wrote {args.output} ({rows} {'person' if rows == 1 else 'people'})")
@@ -119,20 +132,23 @@ def run(args: argparse.Namespace) -> int:
     if args.format == "json":
         import json
 
-        json.dump(prediction_json(predictor, prediction), out, indent=1)
+        json.dump(prediction_json(predictor, prediction, args.population), out, indent=1)
         out.write("\n")
     elif args.format == "csv":
         _write_csv(prediction, out)
     else:
-        _write_table(prediction, out)
+        _write_table(prediction, out, args.population)
     if args.figure:
         path = write_prediction_figure(prediction, args.figure)
         print(f"wrote {path}", file=sys.stderr if args.format != "table" else out)
     return 0
 
 
-def prediction_json(predictor: Predictor, prediction: Prediction) -> dict[str, Any]:
-    """The JSON document of one prediction (issue 13's shape)."""
+def prediction_json(
+    predictor: Predictor, prediction: Prediction, population: str | None = None
+) -> dict[str, Any]:
+    """The JSON document of one prediction (issue 13's shape); `population`
+    the query the model learnt from (None: the default, every real person)."""
     cv = predictor.cv_rmse(prediction.gender, prediction.known)
     return {
         "gender": prediction.gender,
@@ -145,7 +161,11 @@ def prediction_json(predictor: Predictor, prediction: Prediction) -> dict[str, A
             {"id": n.id, "name": n.name, "distance": round(n.distance, 4)}
             for n in prediction.nearest
         ],
-        "model": {"n": prediction.n, "cv_rmse": {k: round(v, 4) for k, v in cv.items()}},
+        "model": {
+            "n": prediction.n,
+            "population": population,
+            "cv_rmse": {k: round(v, 4) for k, v in cv.items()},
+        },
     }
 
 
@@ -160,10 +180,11 @@ def _write_csv(prediction: Prediction, out: TextIO) -> None:
         )
 
 
-def _write_table(prediction: Prediction, out: TextIO) -> None:
+def _write_table(prediction: Prediction, out: TextIO, population: str | None = None) -> None:
+    among = "" if population is None else f" of {population}"
     out.write(
         f"{prediction.gender}, {prediction.label()} "
-        f"(regression on {prediction.n} people; 90 % prediction intervals)\n"
+        f"(regression on {prediction.n} people{among}; 90 % prediction intervals)\n"
     )
     width = max(len(name) for name in prediction.values)
     out.write(f"{'field':<{width}}  {'value':>8} {'unit':<4}  {'90 % interval':>17}\n")

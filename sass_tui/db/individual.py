@@ -21,6 +21,7 @@ from sass_tui.db.schema import (
     DatabaseError,
     strength_summary,
 )
+from sass_tui.model.landmarks import LANDMARK_MEASURES
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 
 if TYPE_CHECKING:
@@ -45,6 +46,8 @@ class Individual:
     shoulder: list[dict[str, Any]] = field(default_factory=list)
     elbow: list[dict[str, Any]] = field(default_factory=list)
     wrist: list[dict[str, Any]] = field(default_factory=list)
+    # the measurements that place the person's landmarks (LANDMARK_MEASURES, cm)
+    landmarks: dict[str, float] = field(default_factory=dict)
 
 
 def _fill(rows: Sequence[Sequence[Any]], names: Sequence[str]) -> np.ndarray:
@@ -67,7 +70,7 @@ def _dicts(cursor: sqlite3.Cursor) -> list[dict[str, Any]]:
 
 
 def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
-    """Eight reads by key, one per relation, in one read transaction (the
+    """Nine reads by key, one per relation, in one read transaction (the
     caller's if it has one open).  The strength summary (first experiment's
     parameters, each motion's maximum) is computed from the experiments read
     here, by the function that fills the query tables at storage, instead of
@@ -121,6 +124,9 @@ def _fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
     wrist = _dicts(
         conn.execute("SELECT * FROM wrist_strgh WHERE id_num = ? ORDER BY exp_num, axis", (id_num,))
     )
+    measured = conn.execute(
+        f"SELECT {', '.join(LANDMARK_MEASURES)} FROM measure WHERE id_num = ?", (id_num,)
+    ).fetchone()
     summary = strength_summary(
         [_batch_row(r)[:7] for r in experiments],
         [_batch_row(r) for r in shoulder],
@@ -152,6 +158,11 @@ def _fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
         shoulder=shoulder,
         elbow=elbow,
         wrist=wrist,
+        landmarks={
+            name: float(value)
+            for name, value in zip(LANDMARK_MEASURES, measured or ())
+            if value is not None
+        },
     )
 
 
@@ -325,6 +336,7 @@ def person_figure(person: Individual, population: Figure) -> Figure:
         {g: person.groups[g] for g in GROUPS},
         mass=person.mass,
         stature=person.stature,
+        landmarks=person.landmarks,
         handedness=person.handedness if person.handedness in ("right", "left") else None,
         **{k: person.strength.get(k) for k in EXPERIMENT_PARAMETERS},
     )

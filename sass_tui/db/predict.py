@@ -10,6 +10,7 @@ milliseconds of SQL, against loading and fitting every value.
 What the CLI (`sass predict`) and the TUI call:
 
     predictor = open_predictor(conn)                       # cached fit
+    predictor = open_predictor(conn, population="branch = 'Combat Arms'")  # fitted on a query
     predictor.fields("male")                               # names, for completion
     known = predictor.parse_known("male", split_known("stature=180 cm, mass=85kg"))
     prediction = predictor.predict("male", known, nearest=5)
@@ -32,6 +33,10 @@ from sass_tui.db.values import load_values
 from sass_tui.model.prediction import MODEL_VERSION, Predictor, predicted_fields
 
 CACHE_SUFFIX = ".predict.npz"
+# The people a prediction learns from unless the user names others: everyone,
+# through the query language, so its default scope (real people, unless the
+# query names a source) applies; each gender's model takes its own people.
+DEFAULT_POPULATION = "gender = male OR gender = female"
 
 
 def database_file(conn: sqlite3.Connection) -> Path | None:
@@ -51,10 +56,11 @@ def _columns(conn: sqlite3.Connection, table: str) -> list[str]:
     return [row[1] for row in conn.execute(f"PRAGMA table_info({table})")]
 
 
-def data_key(conn: sqlite3.Connection) -> str:
-    """A hash that changes when people are added, removed or their values edited."""
+def data_key(conn: sqlite3.Connection, population: str = DEFAULT_POPULATION) -> str:
+    """A hash that changes when people are added, removed or their values
+    edited, or another population is asked for."""
     fields = predicted_fields()
-    parts: list[object] = [MODEL_VERSION, fields]
+    parts: list[object] = [MODEL_VERSION, fields, " ".join(population.split())]
     parts += conn.execute(
         "SELECT count(*), total(id_num), total(id_num * (gender = 'male')), "
         "total(stature), total(mass) FROM person"
@@ -73,24 +79,31 @@ def data_key(conn: sqlite3.Connection) -> str:
     return hashlib.sha256(repr(parts).encode()).hexdigest()
 
 
-def fit_predictor(conn: sqlite3.Connection, key: str = "") -> Predictor:
-    """Fit the model on every person of the database (no cache)."""
+def fit_predictor(
+    conn: sqlite3.Connection, key: str = "", population: str = DEFAULT_POPULATION
+) -> Predictor:
+    """Fit the model on the people the query `population` selects (no cache)."""
     fields = predicted_fields()
-    values = load_values(conn, fields)
+    values = load_values(conn, fields, population)
     return Predictor.fit(values, fields, key=key)
 
 
-def open_predictor(conn: sqlite3.Connection, *, cache: bool = True) -> Predictor:
-    """The database's prediction model: from the cache file when it is current,
-    else fitted now and saved there (a database in memory or in a directory
-    that cannot be written is simply not cached)."""
-    key = data_key(conn)
+def open_predictor(
+    conn: sqlite3.Connection, *, cache: bool = True, population: str | None = None
+) -> Predictor:
+    """The prediction model fitted on the people the query `population`
+    selects (DEFAULT_POPULATION when None): from the cache file when it is
+    current (the same data and population), else fitted now and saved there
+    (a database in memory or in a directory that cannot be written is simply
+    not cached; the cache holds one population, the last asked for)."""
+    population = DEFAULT_POPULATION if population is None else population
+    key = data_key(conn, population)
     path = cache_path(conn) if cache else None
     if path is not None:
         cached = Predictor.load(path, key)
         if cached is not None:
             return cached
-    predictor = fit_predictor(conn, key)
+    predictor = fit_predictor(conn, key, population)
     if path is not None:
         try:
             predictor.save(path)

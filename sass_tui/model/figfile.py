@@ -62,9 +62,33 @@ class FigFile:
 # --- writing -------------------------------------------------------------
 
 
+def person_joint_lengths(figure: Figure) -> dict[str, float]:
+    """A person's limb lengths (cm) from joint centre to joint centre as their
+    own landmarks place the joints (model/landmarks.py), by girth row: the
+    `.fig`'s segment z, so that its joints are the HAnim humanoid's; a length
+    set by hand on the spreadsheet stays as set.  Empty for a population
+    figure and for a person without those measurements."""
+    if not figure.landmarks or math.isnan(figure.stature):
+        return {}
+    from sass_tui.model.landmarks import joint_lengths, measured_heights
+
+    lengths = joint_lengths(measured_heights(figure.landmarks, figure.stature / 100.0))
+    return {
+        f"{side}_{stem}": length
+        for stem, length in lengths.items()
+        if length > 0
+        for side in ("right", "left")
+        if f"{side}_{stem}" not in figure.hand_set_lengths
+    }
+
+
 def girth_variables(figure: Figure) -> list[FigVariable]:
-    """Segment scale variables (cm) and flooroffset, in appendix F order."""
+    """Segment scale variables (cm) and flooroffset, in appendix F order; a
+    person's limb z from their joint centres (person_joint_lengths)."""
     values_by_row, _ = figure.output_values(GIRTH)
+    values_by_row = values_by_row.copy()
+    for name, length in person_joint_lengths(figure).items():
+        values_by_row[[r.name for r in ROWS[GIRTH]].index(name), 2] = length
     out: list[FigVariable] = []
     for row, values in zip(ROWS[GIRTH], values_by_row):
         scale = FIG_SCALE.get(row.name, DEFAULT_SCALE)
@@ -126,6 +150,13 @@ def render_fig(figure: Figure, extra_sections: Sequence[FigSection] = ()) -> str
         lines.append(
             f"/* not measured for {who}, so taken from the population "
             f"({figure.population}): {'; '.join(counts)} */"
+        )
+    joints = person_joint_lengths(figure)
+    if joints:
+        lines.append(
+            f"/* limb lengths from joint centre to joint centre, placed from {who}'s own "
+            f"landmarks as the HAnim humanoid's (docs/hanim.md): "
+            f"{', '.join(sorted({FIG_PREFIX[name] + 'z' for name in joints}))} */"
         )
     lines.append("")
     sections = [

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import copy
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -133,6 +134,15 @@ class Figure:
     fatigue_level: float = 0.0
     global_stats: PopulationData | None = None
     groups: dict[str, GroupState] = field(default_factory=dict)
+    # A person's own ANSUR II measurements that place their body landmarks
+    # (model/landmarks.py: survey names, cm); empty for a population figure,
+    # which is placed from its stature.
+    landmarks: dict[str, float] = field(default_factory=dict)
+    # Girth rows whose length (z) was set here by hand: a person's .fig keeps
+    # them as set instead of the length between their joints
+    # (figfile.person_joint_lengths).  Replaced, never changed in place, so
+    # an undo snapshot keeps its own.
+    hand_set_lengths: frozenset[str] = frozenset()
 
     def __post_init__(self) -> None:
         for group in GROUPS:
@@ -181,6 +191,7 @@ class Figure:
         *,
         mass: float = float("nan"),
         stature: float = float("nan"),
+        landmarks: Mapping[str, float] | None = None,
         **strength_parameters: str | float | None,
     ) -> Figure:
         """A real person's figure (report §12.4, Disp. Indv.): the person's values
@@ -188,7 +199,9 @@ class Figure:
         against this figure's population statistics.  This figure is left as it
         is, so Disp. Pop. returns to it unchanged.  `strength_parameters` are
         strength_type, motion_speed, handedness, training_level, fatigue_level
-        (None = keep this figure's)."""
+        (None = keep this figure's); `landmarks` the person's measurements
+        that place the HAnim humanoid and the `.fig`'s joints (cm, by the
+        survey's names: model/landmarks.py)."""
         import numpy as np
 
         gender = _check_choice(gender, GENDERS, "gender")
@@ -203,6 +216,7 @@ class Figure:
             handedness=self.handedness,
             training_level=self.training_level,
             fatigue_level=self.fatigue_level,
+            landmarks={k: float(v) for k, v in (landmarks or {}).items()},
         )
         for group in GROUPS:
             mine, theirs = self.groups[group], person.groups[group]
@@ -287,6 +301,8 @@ class Figure:
         state = self.groups[group]
         state.percentile = float(p)
         self._rescale(state)
+        if group == GIRTH:
+            self.hand_set_lengths = frozenset(row.name for row in state.rows)
 
     def set_value(self, group: str, row: int, axis: int, value: float) -> None:
         """Set one cell's value (canonical unit); its percentile follows.  A
@@ -301,6 +317,7 @@ class Figure:
         assert values is not None and percentiles is not None  # _cell: loaded
         values[row, axis] = value
         percentiles[row, axis] = cell_percentile_of(*self._cell_stats(state, row, axis), value)
+        self._hand_set(group, row, axis)
 
     def set_cell_percentile(self, group: str, row: int, axis: int, p: float) -> None:
         """Set one cell's percentile; its value follows."""
@@ -310,6 +327,11 @@ class Figure:
         assert values is not None and percentiles is not None  # _cell: loaded
         values[row, axis] = cell_value_at(*self._cell_stats(state, row, axis), float(p))
         percentiles[row, axis] = p
+        self._hand_set(group, row, axis)
+
+    def _hand_set(self, group: str, row: int, axis: int) -> None:
+        if group == GIRTH and axis == 2:
+            self.hand_set_lengths = self.hand_set_lengths | {ROWS[GIRTH][row].name}
 
     def check_cell(self, group: str, row: int, axis: int) -> None:
         """Raise FigureError when the cell cannot be edited (no data, or 999)."""

@@ -9,7 +9,7 @@ No Textual import: the CLI and the TUI both call export_hanim().
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -20,6 +20,7 @@ import numpy.typing as npt
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.figfile import FigureIncompleteError
+from sass_tui.model.landmarks import HUMERAL_HEAD_RADIUS, half_breadths, measured_heights
 from sass_tui.model.names import (
     CENTER_OF_MASS,
     GIRTH,
@@ -61,10 +62,11 @@ SEGMENT_OF = {joint: segment for joint, segment, _ in LOA1}
 
 # Where the joint centres stand (clause 4.8.2: "placed so that the joints
 # rotate in the same way that they do on a real human body"): each at the
-# height of a body landmark, the landmark heights being the figure's stature
+# height of a body landmark.  A real person's landmarks are their own
+# measurements (model/landmarks.py); a percentile figure's are its stature
 # times the mean landmark/stature ratio of the ANSUR II public data (Gordon et
 # al. 2014, 4,082 men and 1,986 women; scripts/hanim_landmarks.py computes the
-# ratios and measures the joint errors they give, docs/hanim.md).
+# ratios and measures the placements, docs/hanim.md).
 #   ankle (talocrural)  lateral malleolus height
 #   knee                lateral femoral epicondyle height (the flexion axis)
 #   hip                 trochanterion height (level with the femoral head)
@@ -292,11 +294,12 @@ def build_humanoid(figure: Figure) -> Humanoid:
         bad = [ROWS[GIRTH][i].label for i in np.unique(np.nonzero(np.isnan(girth))[0])]
         raise HAnimError(f"cannot export a humanoid: no segment dimensions for {', '.join(bad)}")
     dim = {row.name: girth[i] for i, row in enumerate(ROWS[GIRTH])}
-    heights = landmark_heights(figure.gender, humanoid_stature(figure) / 100.0)
-    centers = _joint_centers(dim, heights)
+    heights = landmark_heights(figure.gender, humanoid_stature(figure) / 100.0, figure.landmarks)
+    breadths = half_breadths(figure.landmarks)
+    centers = _joint_centers(dim, heights, breadths)
     segments = _segments(figure, dim, centers, heights)
     limits = _limits(figure)
-    sites = _sites(dim, centers, heights)
+    sites = _sites(dim, centers, heights, breadths)
     return Humanoid(_humanoid_name(figure), _info(figure), centers, segments, limits, sites)
 
 
@@ -314,16 +317,24 @@ def humanoid_stature(figure: Figure) -> float:
     return float(value_at(stats, 50.0))
 
 
-def landmark_heights(gender: str, stature: float) -> dict[str, float]:
-    """Landmark and joint-centre heights (m) of a figure `stature` m tall."""
+def landmark_heights(
+    gender: str, stature: float, landmarks: Mapping[str, float] | None = None
+) -> dict[str, float]:
+    """Landmark and joint-centre heights (m) of a figure `stature` m tall:
+    where `landmarks` (a person's own ANSUR II measurements, cm) place one,
+    there (model/landmarks.py); elsewhere the stature's share of it."""
     fractions = LANDMARK_FRACTIONS[gender]
     heights = {name: fraction * stature for name, fraction in fractions.items()}
+    heights["shoulder"] = heights["acromion"] - SHOULDER_BELOW_ACROMION
+    own = measured_heights(landmarks or {}, stature)
+    if "acromion" in own and "shoulder" not in own:
+        own["shoulder"] = own["acromion"] - SHOULDER_BELOW_ACROMION
+    heights.update(own)
     heights["vertex"] = stature
     heights["ankle"] = heights["lateral_malleolus"]
     heights["knee"] = heights["femoral_epicondyle"]
     heights["hip"] = heights["trochanterion"]
     heights["vl5"] = heights["iliocristale"]
-    heights["shoulder"] = heights["acromion"] - SHOULDER_BELOW_ACROMION
     heights["skullbase"] = heights["tragion"]
     return heights
 
@@ -342,9 +353,14 @@ def _rows(figure: Figure, group: str) -> np.ndarray:
     return np.asarray(figure.output_values(group)[0], dtype=float)
 
 
-def _joint_centers(dim: dict[str, np.ndarray], heights: dict[str, float]) -> dict[str, np.ndarray]:
-    """Heights from the landmarks (LANDMARK_FRACTIONS); side spacing and the
-    arm and foot lengths from the segment dimensions."""
+def _joint_centers(
+    dim: dict[str, np.ndarray], heights: dict[str, float], breadths: dict[str, float]
+) -> dict[str, np.ndarray]:
+    """Heights from the landmarks (a person's own, else LANDMARK_FRACTIONS);
+    the shoulders' spacing from the biacromial breadth where it is measured,
+    the elbow and wrist at the radiale and wrist heights where they are
+    (model/landmarks.py); other side spacing and the arm and foot lengths
+    from the segment dimensions."""
     c: dict[str, np.ndarray] = {}
     for side, name in (("l", "left"), ("r", "right")):
         sign = 1.0 if side == "l" else -1.0
@@ -364,14 +380,22 @@ def _joint_centers(dim: dict[str, np.ndarray], heights: dict[str, float]) -> dic
     c["skullbase"] = np.array([0.0, heights["skullbase"], 0.0])
     # sternum (ctorsoy - clavz, psurf half widths) + clavicle = half the torso width
     half_width = dim["center_torso"][1] / 2
+    if "acromion" in breadths:
+        # a person's own acromia, the head's radius outside the shoulder centre
+        half_width = breadths["acromion"] - HUMERAL_HEAD_RADIUS
     for side, name in (("l", "left"), ("r", "right")):
         sign = 1.0 if side == "l" else -1.0
         shoulder = np.array([sign * half_width, heights["shoulder"], 0.0])
         # ANSUR's acromion-radiale length (SASS upper arm z) runs from the acromion
         elbow = np.array([sign * half_width, heights["acromion"], 0.0])
         elbow -= _Y * dim[f"{name}_upper_arm"][2]
+        if "radiale" in heights:
+            elbow[1] = heights["radiale"]
+        wrist = elbow - _Y * dim[f"{name}_lower_arm"][2]
+        if "wrist" in heights:
+            wrist[1] = heights["wrist"]
         c[f"{side}_shoulder"], c[f"{side}_elbow"] = shoulder, elbow
-        c[f"{side}_radiocarpal"] = elbow - _Y * dim[f"{name}_lower_arm"][2]
+        c[f"{side}_radiocarpal"] = wrist
     return {joint: c[joint] for joint, _, _ in LOA1}
 
 
@@ -621,7 +645,10 @@ def _limits(figure: Figure) -> dict[str, Limits]:
 
 
 def _sites(
-    dim: dict[str, np.ndarray], centers: dict[str, np.ndarray], heights: dict[str, float]
+    dim: dict[str, np.ndarray],
+    centers: dict[str, np.ndarray],
+    heights: dict[str, float],
+    breadths: dict[str, float],
 ) -> list[Site]:
     # eye location: x head depth to the eyes, y half the eye spacing, z the
     # ectocanthus below the top of the head (report 10.1, eyelocz)
@@ -640,11 +667,11 @@ def _sites(
         sign = 1.0 if side == "l" else -1.0
         acromion = centers[f"{side}_shoulder"].copy()
         acromion[1] = heights["acromion"]
-        sites.append(
-            Site(
-                f"{side}_acromion_pt", "l5", acromion + _X * sign * dim[f"{name}_upper_arm"][1] / 2
-            )
-        )
+        if "acromion" in breadths:  # a person's own biacromial breadth
+            acromion[0] = sign * breadths["acromion"]
+        else:
+            acromion += _X * sign * dim[f"{name}_upper_arm"][1] / 2
+        sites.append(Site(f"{side}_acromion_pt", "l5", acromion))
         tip = centers[f"{side}_radiocarpal"] - _Y * (
             dim[f"{name}_hand"][2] + dim[f"{name}_knuckles"][2]
         )
@@ -652,6 +679,49 @@ def _sites(
         ankle = centers[f"{side}_talocrural"]
         heel = np.array([ankle[0], 0.0, -HEEL_BEHIND_ANKLE * dim[f"{name}_foot"][0]])
         sites.append(Site(f"{side}_calcaneus_posterior_pt", f"{side}_talus", heel))
+    return sites + _person_sites(dim, centers, heights, breadths)
+
+
+def _person_sites(
+    dim: dict[str, np.ndarray],
+    centers: dict[str, np.ndarray],
+    heights: dict[str, float],
+    breadths: dict[str, float],
+) -> list[Site]:
+    """The table 4.7 sites (segments of its LOA-1 column) that a person's own
+    measurements place (model/landmarks.py), where they place them: none
+    for a figure placed from its stature alone.  Heights are the measured
+    ones; sideways, the measured breadths, else the segment's surface."""
+    if not breadths:
+        return []
+    sites = []
+    chest_depth = float(dim["center_torso"][0])
+    for name, segment, z in (
+        ("cervicale", "l5", -chest_depth / 2),  # C7, at the back
+        ("suprasternale", "l5", chest_depth / 2),  # the jugular notch, in front
+    ):
+        if name in heights:
+            sites.append(Site(f"{name}_pt", segment, np.array([0.0, heights[name], z])))
+    for side, long in (("l", "left"), ("r", "right")):
+        sign = 1.0 if side == "l" else -1.0
+        elbow, knee = centers[f"{side}_elbow"], centers[f"{side}_knee"]
+        ankle = centers[f"{side}_talocrural"]
+        placed = (
+            # the radial head's top, on the lateral side of the elbow
+            ("radiale", f"{side}_forearm", elbow[0] + sign * dim[f"{long}_lower_arm"][0] / 2),
+            ("iliocristale", "pelvis", sign * breadths.get("iliocristale", math.nan)),
+            ("trochanterion", "pelvis", sign * breadths.get("trochanterion", math.nan)),
+            # the medial tibial condyle's top: on the calf's inner side
+            ("tibiale", f"{side}_calf", knee[0] - sign * dim[f"{long}_lower_leg"][1] / 2),
+            (
+                "lateral_malleolus",
+                f"{side}_calf",
+                ankle[0] + sign * breadths.get("malleoli", math.nan),
+            ),
+        )
+        for name, segment, x in placed:
+            if name in heights and math.isfinite(x):
+                sites.append(Site(f"{side}_{name}_pt", segment, np.array([x, heights[name], 0.0])))
     return sites
 
 

@@ -14,10 +14,17 @@ and correlation matrix; a prediction conditions it on the known values,
 which is exactly ordinary least squares of every unknown on the known values
 (with an intercept) fitted on the same people, but costs one k x k solve
 instead of a fit, so any subset of known names can be asked for without
-refitting.  The interval is mean +- z(0.95) times the regression's residual
-standard deviation, corrected for degrees of freedom and for the distance of
-the known values from the population mean (the OLS prediction variance
-s^2 (1 + 1/n + d^2/(n-1)), d the Mahalanobis distance of the known values).
+refitting.  The interval's half-width is a residual scale that depends on
+the known values (the log squared residuals of the training people
+regressed on the known values and their squares: a heavy person's interval
+is wider than a slight one's, so the intervals cover 90 % in every BMI
+decile, not only on average) times z(0.95) and the root mean square of the
+training residuals over that scale, widened for degrees of freedom and for
+the distance of the known values from the population mean as the OLS
+prediction variance s^2 (1 + 1/n + d^2/(n-1)) is (d the Mahalanobis
+distance of the known values); see _condition and _spread.  The spread
+model of a set of known names is fitted on the first prediction from them
+(one pass over the training people) and kept for the next.
 Collinear known values (a girth cell and the measurement it is derived from)
 are handled by a pseudo-inverse.  docs/accuracy.md measures what this gives
 (`scripts/accuracy.py`): error against percentile matching, and the
@@ -320,6 +327,9 @@ class Predictor:
     def __init__(self, models: Mapping[str, GenderModel], key: str = "") -> None:
         self.models = dict(models)
         self.key = key
+        # the residual spread model of each (gender, known fields) asked for
+        # (_spread): fitted on the first prediction from those names, reused after
+        self._spreads: dict[tuple[str, tuple[int, ...]], Spread] = {}
 
     @classmethod
     def fit(cls, data: TrainingValues, fields: Sequence[str], key: str = "") -> Predictor:
@@ -466,7 +476,7 @@ class Predictor:
         index = m.index()
         k_idx = [index[k] for k in known if k in index]
         z_known = self._standardize(m, known)
-        mean, half = _condition(m, k_idx, z_known[None, :])
+        mean, half = _condition(m, k_idx, z_known[None, :], self._spreads)
         values: dict[str, Estimate] = {}
         known_set = set(k_idx)
         for i, name in enumerate(m.fields):
@@ -529,7 +539,7 @@ class Predictor:
                 z,
                 None if where is None else [where[int(i)] for i in sel],
             )
-            mean, half = _condition(m, order, z)
+            mean, half = _condition(m, order, z, self._spreads)
             value[sel, : len(m.fields)] = mean
             low[sel, : len(m.fields)] = mean - half
             high[sel, : len(m.fields)] = mean + half
@@ -624,11 +634,56 @@ def _pinv(matrix: FloatArray) -> tuple[FloatArray, int]:
     return (v[:, keep] / w[keep]) @ v[:, keep].T, int(keep.sum())
 
 
+# A residual spread model: the log-scale coefficients on _variance_design's
+# terms (terms, p) and each field's calibration, the 90 % multiplier (p,).
+Spread = tuple[FloatArray, FloatArray]
+
+
+def _variance_design(z: FloatArray) -> FloatArray:
+    """The terms the residual variance is modelled on: 1, each standardized
+    known value and its square (rows, 1 + 2k)."""
+    return np.column_stack([np.ones(len(z)), z, z**2])
+
+
+def _spread(m: GenderModel, k_idx: Sequence[int], coef: FloatArray) -> Spread:
+    """How the residuals of the regression on `k_idx` scatter with the known
+    values: the log of each training person's squared residual regressed on
+    1, the known values and their squares (multiplicative heteroscedasticity,
+    Harvey 1976, "Estimating regression models with multiplicative
+    heteroscedasticity", Econometrica 44:461-465), and per field the 90 %
+    multiplier z(0.95) times the root mean square of the residuals over that
+    scale (1 for a residual exactly normal at the modelled scale)."""
+    scores = m.scores.astype(np.float64)
+    z_train = scores[:, list(k_idx)]
+    residual = scores - z_train @ coef  # (n, p); ~0 for the known fields
+    squared = residual * residual
+    design = _variance_design(z_train)
+    # 1e-8: a field the known values determine exactly (a girth cell derived
+    # from a known measurement) has residuals at float32 rounding, not 0
+    normal = design.T @ np.log(squared + 1e-8)
+    log_scale = np.asarray(np.linalg.solve(design.T @ design, normal), dtype=np.float64)
+    spread = np.mean(squared / np.exp(design @ log_scale), axis=0, dtype=np.float64)
+    calibration: FloatArray = Z * np.sqrt(spread)
+    return log_scale, calibration
+
+
 def _condition(
-    m: GenderModel, k_idx: Sequence[int], z_known: FloatArray
+    m: GenderModel,
+    k_idx: Sequence[int],
+    z_known: FloatArray,
+    spreads: dict[tuple[str, tuple[int, ...]], Spread] | None = None,
 ) -> tuple[FloatArray, FloatArray]:
     """Conditional mean and 90 % half-width (canonical units) of every field,
-    for rows of standardized known values (rows, k)."""
+    for rows of standardized known values (rows, k).
+
+    The half-width varies with the known values: a heavy person's girths
+    scatter more about the regression than a slight one's (ANSUR II: with one
+    width for everybody the 90 % intervals covered 86 % of the heaviest tenth
+    by BMI and 92 % of the lightest).  It is the residual scale _spread
+    models at these known values times the field's calibration, widened for
+    degrees of freedom and leverage as the OLS prediction variance is.
+    `spreads` keeps each spread model for the next prediction from the same
+    known names."""
     k = len(k_idx)
     if k == 0:
         mean = np.broadcast_to(m.mean, (len(z_known), len(m.fields))).copy()
@@ -637,11 +692,18 @@ def _condition(
     cross = m.corr[k_idx]  # (k, p)
     inverse, rank = _pinv(m.corr[np.ix_(k_idx, k_idx)])
     coef = inverse @ cross  # (k, p)
-    variance = np.clip(1.0 - np.einsum("kp,kp->p", cross, coef), 0.0, None)
+    key = (m.gender, tuple(int(i) for i in k_idx))
+    spread = None if spreads is None else spreads.get(key)
+    if spread is None:
+        spread = _spread(m, k_idx, coef)
+        if spreads is not None:
+            spreads[key] = spread
+    log_scale, calibration = spread
     dof = (m.n - 1) / max(m.n - rank - 1, 1)
     distance2 = np.einsum("ij,jk,ik->i", z_known, inverse, z_known)
     leverage = 1.0 + 1.0 / m.n + distance2 / (m.n - 1)
-    half = np.outer(np.sqrt(leverage), Z * m.sd * np.sqrt(variance * dof))
+    scale = np.exp(_variance_design(z_known) @ log_scale / 2)  # (rows, p)
+    half = np.sqrt(leverage * dof)[:, None] * scale * (calibration * m.sd)
     mean = z_known @ (coef * m.sd)
     mean += m.mean
     return mean, half

@@ -540,22 +540,24 @@ def test_landmark_fractions_are_the_ansur_means(ansur_measurement, ansur_dir):
 
 def test_ansur_people_from_the_database_stand_on_their_landmarks(ansur_measurement):
     """200 ANSUR II people (100 men, 100 women) imported, fetched and exported
-    (as docs/hanim.md reports): vertex within 0.5 cm of the stature, shoulder,
-    hip, knee and ankle within 3 cm of their own landmarks on average."""
+    (as docs/hanim.md reports): every site their measurements place within
+    1 mm of it on average, the acromions as far apart as their biacromial
+    breadth, wrist, hip, knee and ankle at their landmarks."""
     _, result = ansur_measurement
     assert result["people"] == 200
-    assert result["max_cm"]["vertex"] <= 0.5
-    for joint in ("r_shoulder", "r_hip", "r_knee", "r_talocrural"):
-        assert result["mae_cm"][joint] < 3.0, joint
+    assert len(result["mae_mm"]) == 20
+    for name, error in result["mae_mm"].items():
+        assert error < 1.0, name
 
 
 def test_every_ansur_person_has_a_real_bodys_center_of_mass(ansur_measurement):
-    """Issue 11: each of the 200 people's whole-body centre of mass is at 54-58 %
-    of their stature (adults: ~55-57 %); appendix K's masses put it at 57.6-58.2."""
+    """Each of the 200 people's whole-body centre of mass is at 53-59 % of
+    their stature (adults: ~55-57 % on average, each person's own proportions
+    about it); appendix K's masses put it at 57.6-58.2."""
     _, result = ansur_measurement
     shares = result["com_shares"]
     assert len(shares) == 200
-    assert all(0.54 <= share <= 0.58 for share in shares), (min(shares), max(shares))
+    assert all(0.53 <= share <= 0.59 for share in shares), (min(shares), max(shares))
     # the shipped percentile figures, as the script reports them
     script, _ = ansur_measurement
     for name, share in script["percentile_figures"]().items():
