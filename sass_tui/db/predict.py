@@ -54,7 +54,9 @@ def _columns(conn: sqlite3.Connection, table: str) -> list[str]:
 def data_key(conn: sqlite3.Connection) -> str:
     """A hash that changes when people are added, removed or their values edited."""
     fields = predicted_fields()
-    parts: list[object] = [MODEL_VERSION, fields]
+    # "real people": the fit learns from real people only (db/scope.py); a cache
+    # fitted before, on the synthetic people too, is not reused.
+    parts: list[object] = [MODEL_VERSION, fields, "real people"]
     parts += conn.execute(
         "SELECT count(*), total(id_num), total(id_num * (gender = 'male')), "
         "total(stature), total(mass) FROM person"
@@ -74,7 +76,8 @@ def data_key(conn: sqlite3.Connection) -> str:
 
 
 def fit_predictor(conn: sqlite3.Connection, key: str = "") -> Predictor:
-    """Fit the model on every person of the database (no cache)."""
+    """Fit the model on every real person of the database (no cache; the
+    synthetic demonstration people are left out, db/scope.py)."""
     fields = predicted_fields()
     values = load_values(conn, fields)
     return Predictor.fit(values, fields, key=key)
