@@ -44,10 +44,16 @@ def run(args: argparse.Namespace) -> int:
     if args.format == "csv":
         import csv
 
-        # Data as stored (no escaping): CSV is for programs, not for a terminal.
+        from sass_tui.model.text import printable
+
+        # Names and sources come from files and the CSV may go to a terminal:
+        # a control character is written escaped (printable leaves other text as is).
         writer = csv.writer(out, lineterminator="\n")
         writer.writerow(PERSON_FIELDS)
-        listed = list(rows)
+        listed = [
+            (i, printable(name), g, mass, stature, hand, age, printable(source))
+            for i, name, g, mass, stature, hand, age, source in rows
+        ]
         writer.writerows(listed)
         found = len(listed)
     elif args.format == "json":

@@ -49,6 +49,7 @@ from sass_tui.db.schema import (
 )
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
+from sass_tui.model.text import control_character
 from sass_tui.model.units import UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, SIDES, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
@@ -254,6 +255,10 @@ def _read_person(reader: _Reader) -> dict[str, list[Any]]:
             reader.fail("name: expected a name, found nothing")
         if not f[7]:
             reader.fail("source: say where the data come from")
+        for field_name, text in (("name", f[1]), ("source", f[7])):
+            found = control_character(text)
+            if found:  # an escape sequence would act on the terminal that shows it
+                reader.fail(f"{field_name}: {found}; expected printable text")
         out["id_num"].append(pid)
         out["name"].append(f[1])
         out["gender"].append(reader.choice(f[2], GENDERS, "gender"))

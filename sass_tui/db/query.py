@@ -453,10 +453,18 @@ def _expected(expected: Iterable[str]) -> str:
 # --- running --------------------------------------------------------------
 
 PERSON_FIELDS = ("id", "name", "gender", "mass", "stature", "handedness", "age", "source")
-LIST_FIELDS = PERSON_FIELDS + ("strength_type", "motion_speed", "training_level", "fatigue_level")
+# The query list's rows: a real person's survey branch, the synthetic people's strength.
+LIST_FIELDS = PERSON_FIELDS + (
+    "strength_type",
+    "motion_speed",
+    "training_level",
+    "fatigue_level",
+    "branch",
+)
 _PERSON_SELECT = "p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source"
 _SELECT = (
-    f"{_PERSON_SELECT}, sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level"
+    f"{_PERSON_SELECT}, sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level, "
+    "p.branch"
 )
 
 
