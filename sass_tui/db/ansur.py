@@ -181,6 +181,8 @@ def looks_like_ansur(path: str | Path) -> bool:
     column, in any case): Input DB imports it as a survey file, not a person
     file.  A file that cannot be read is not one (its import says why).  At
     most 64 KiB are read: it runs on the UI thread."""
+    if not Path(path).is_file():  # a FIFO would block the read; the import says why
+        return False
     try:
         raw, stream = _open_bytes(Path(path))
         with raw:
@@ -324,9 +326,13 @@ def iter_ansur(
     a time: memory stays bounded whatever the file's size.  Every row is
     checked; the first bad one raises AnsurImportError naming file:line (the
     caller's transaction then stores nothing).  `progress(bytes_read)`."""
+    from sass_tui.model.paths import PathError, regular_file
+
     path = Path(path)
     try:
-        raw, stream = _open_bytes(path)
+        raw, stream = _open_bytes(regular_file(path))  # a FIFO or a device would never end
+    except PathError as exc:
+        raise AnsurImportError(f"cannot read {exc}") from None
     except OSError as exc:
         raise AnsurImportError(f"{path}: cannot read: {exc.strerror or exc}") from None
     with raw:

@@ -121,7 +121,13 @@ _LINES: ContextVar[_LineCount | None] = ContextVar("flatfile_lines", default=Non
 
 class _Reader:
     def __init__(self, path: Path):
+        from sass_tui.model.paths import PathError, regular_file
+
         self.path = path
+        try:
+            regular_file(path)  # a FIFO or a device would never end
+        except PathError as exc:
+            raise FlatFileError(f"cannot read {exc}") from None
         try:
             self.text = path.read_text(encoding="utf-8-sig")
         except UnicodeDecodeError:
@@ -402,7 +408,7 @@ def _count_lines(files: FlatFiles) -> int:
     total = 0
     for name in FILE_NAMES:
         path = getattr(files, name)
-        if path is not None:
+        if path is not None and path.is_file():  # not a FIFO: the reader refuses it
             try:
                 with open(path, "rb") as handle:
                     total += sum(

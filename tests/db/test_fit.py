@@ -325,7 +325,10 @@ def test_mix_argument_reads_what_it_is_given(mix):
 
     text = ",".join(f"{g}={w!r}" for g, w in mix.items())
     assert mix_argument(text) == mix
-    if sum(mix.values()) > 0:
+    if len(mix) == 1 and max(mix.values()) > 1:  # one share alone is at most 1
+        with pytest.raises(FitError, match="a share from 0 to 1"):
+            check_mix(mix)
+    elif sum(mix.values()) > 0 or len(mix) == 1:
         normalised = check_mix(mix)
         assert sum(normalised.values()) == pytest.approx(1.0)
     else:
