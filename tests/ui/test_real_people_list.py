@@ -1,0 +1,77 @@
+"""The query screen over real people: at 80 columns the list shows what a
+real person has (age, survey branch), a strength query that finds no real
+person says which demonstration people it would find, and a demonstration
+person shown is titled as one."""
+
+from __future__ import annotations
+
+from test_query_screen import message, settle
+
+from sass_tui.db.query import run_query
+from sass_tui.db.schema import connect
+from sass_tui.ui.app import SassApp
+from sass_tui.ui.query_screen import ListSheet, QueryScreen
+from sass_tui.ui.widgets import GlobalPanel, MessageLine
+
+
+async def typed_query(pilot, text: str) -> None:
+    """Query DB, the builder, its query edited as text, Done."""
+    app = pilot.app
+    await pilot.press("d")
+    await settle(pilot)
+    assert isinstance(app.screen, QueryScreen)
+    await pilot.press("d", "b", "e")
+    answer = app.screen.query_one(MessageLine).answer
+    answer.value = ""
+    await pilot.press(*text, "enter")
+    options = app.screen.query_one("#popup-options").options
+    labels = [str(o.prompt) for o in options]
+    await pilot.press(*["down"] * labels.index("Done"), "enter")
+    await settle(pilot)
+
+
+def test_at_80_columns_the_list_shows_age_and_branch(drive, db):
+    with connect(db) as conn:
+        first = run_query(conn, "branch = 'Combat Arms' AND age > 40").page(0, 1)[0]
+        (branch,) = conn.execute(
+            "SELECT branch FROM person WHERE id_num = ?", (first["id"],)
+        ).fetchone()
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(80, 30)) as pilot:
+            await typed_query(pilot, "branch = 'Combat Arms' AND age > 40")
+            sheet = app.screen.query_one(ListSheet)
+            assert sheet.rows[0]["name"] == first["name"]
+            screen = app.export_screenshot()
+            assert "Age" in screen and "Branch" in screen
+            shown = str(sheet.render()).splitlines()
+            row = next(line for line in shown if first["name"] in line)
+            assert f" {first['age']:g} " in row and branch in row and "ANSUR II" in row
+
+    drive(scenario())
+
+
+def test_a_strength_query_finding_no_real_person_shows_the_query_that_would(drive, db):
+    text = "strength.elbow_flexion.max > 20 ft-lb"
+    reach = f"({text}) AND source = synthetic"
+    with connect(db) as conn:
+        assert run_query(conn, text).count() == 0
+        found = run_query(conn, reach).count()
+    assert found > 0
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(120, 40)) as pilot:
+            await typed_query(pilot, text)
+            said = message(app)
+            assert "No data satisfied the query." in said
+            assert f"{found} synthetic demonstration people match" in said and reach in said
+            await typed_query(pilot, reach)  # the query it showed reaches them
+            assert f"{found:,} people found" in message(app)
+            await pilot.press("s", "e")  # Select One, Exit Query
+            await pilot.press("v")  # Disp. Indv.
+            await pilot.pause()
+            assert "(synthetic)" in str(app.query_one(GlobalPanel).render())
+
+    drive(scenario())
