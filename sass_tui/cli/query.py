@@ -44,18 +44,30 @@ def run(args: argparse.Namespace) -> int:
     if args.format == "csv":
         import csv
 
-        from sass_tui.model.text import printable
+        from operator import itemgetter
 
-        # Names and sources come from files and the CSV may go to a terminal:
-        # a control character is written escaped (printable leaves other text as is).
+        from sass_tui.model.text import is_printable, printable
+
+        # Names and sources come from files and the CSV may go to a terminal: a
+        # control character is written escaped.  One check over a chunk's names
+        # and sources joined; only when it fails is each text made printable.
         writer = csv.writer(out, lineterminator="\n")
         writer.writerow(PERSON_FIELDS)
-        listed = [
-            (i, printable(name), g, mass, stature, hand, age, printable(source))
-            for i, name, g, mass, stature, hand, age, source in rows
-        ]
-        writer.writerows(listed)
-        found = len(listed)
+        found = 0
+        while chunk := rows.fetchmany(1000):
+            try:
+                plain = is_printable("".join(map(itemgetter(1), chunk))) and is_printable(
+                    "".join(map(itemgetter(7), chunk))
+                )
+            except TypeError:  # a name stored as a number
+                plain = False
+            if not plain:
+                chunk = [
+                    (i, printable(name), g, mass, stature, hand, age, printable(source))
+                    for i, name, g, mass, stature, hand, age, source in chunk
+                ]
+            writer.writerows(chunk)
+            found += len(chunk)
     elif args.format == "json":
         found = _write_json(out, rows.fetchall())
     else:

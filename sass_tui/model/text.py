@@ -54,14 +54,18 @@ def printable(text: object) -> str:
     return _control().sub(_escape, string)
 
 
+def is_printable(text: str) -> bool:
+    """Whether printable() would leave `text` as it is (one check for many values joined)."""
+    return text.isprintable() or _control().search(text) is None
+
+
 def is_printable_lines(text: str, lines: int) -> bool:
     """Whether `text` is `lines` lines, each ending in a newline, that
     printable() would leave as they are: one check for many values (a newline
     inside a value makes one line too many)."""
     if text.count("\n") != lines:
         return False
-    text = text.replace("\n", "")
-    return text.isprintable() or _control().search(text) is None
+    return is_printable(text.replace("\n", ""))
 
 
 def control_character(text: str) -> str | None:
