@@ -43,7 +43,6 @@ def run(args: argparse.Namespace) -> int:
     out = sys.stdout
     if args.format == "csv":
         import csv
-
         from operator import itemgetter
 
         from sass_tui.model.text import is_printable, printable
