@@ -75,3 +75,37 @@ def test_a_strength_query_finding_no_real_person_shows_the_query_that_would(driv
             assert "(synthetic)" in str(app.query_one(GlobalPanel).render())
 
     drive(scenario())
+
+
+def test_make_population_of_real_women_then_create_figure(drive, db, tmp_path):
+    """The selected real women make a population whose every cell has a value:
+    Create Figure writes it (it refused a population with 999 cells)."""
+    target = tmp_path / "young.dat"
+    figure = tmp_path / "young.fig"
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(120, 40)) as pilot:
+            await typed_query(pilot, "gender = female AND age < 25")
+            await pilot.press("a", "m", *str(target), "enter")  # Select All, Make Population
+            await settle(pilot)
+            assert "women" in message(app), message(app)
+            await pilot.press("e")  # Exit Query
+            await pilot.pause()
+            assert not isinstance(app.screen, QueryScreen)
+            assert app.session.population.gender == "female"
+            await pilot.press("f")  # Create Figure
+            await pilot.pause()
+            assert "Figure file name" in message(app), message(app)
+            app.screen.query_one(MessageLine).answer.value = ""
+            await pilot.press(*str(figure), "enter")
+            await pilot.pause()
+            if "Include strength" in message(app):
+                await pilot.press("enter")
+            await settle(pilot)
+            assert message(app) == f"Wrote {figure}.", message(app)
+
+    drive(scenario())
+    text = figure.read_text()
+    assert "nan" not in text.lower() and " 999" not in text
+    assert target.with_name("young-cmass.dat").is_file()
