@@ -332,7 +332,7 @@ def iter_ansur(
     try:
         raw, stream = _open_bytes(regular_file(path))  # a FIFO or a device would never end
     except PathError as exc:
-        raise AnsurImportError(f"cannot read {exc}") from None
+        raise AnsurImportError(f"{path}: cannot read: {exc.reason}") from None
     except OSError as exc:
         raise AnsurImportError(f"{path}: cannot read: {exc.strerror or exc}") from None
     with raw:

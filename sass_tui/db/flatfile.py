@@ -127,7 +127,7 @@ class _Reader:
         try:
             regular_file(path)  # a FIFO or a device would never end
         except PathError as exc:
-            raise FlatFileError(f"cannot read {exc}") from None
+            raise FlatFileError(f"{path}: cannot read: {exc.reason}") from None
         try:
             self.text = path.read_text(encoding="utf-8-sig")
         except UnicodeDecodeError:

@@ -14,6 +14,11 @@ case, "did you mean" on a typo), `girth.ROW.x|y|z`, `joint_limit.ROW.x|y|z`,
 `center_of_mass.ROW.x|y|z`, `strength.MOTION.max` and the strength
 parameters; `field_names()` lists them all with units.
 
+A query that names no `source` term reaches the real people only (the
+synthetic demonstration people left out: db/scope.py, added in
+`compile_query`); `source = synthetic`, or any `source` term, leaves the
+choice to the query.
+
 AND binds tighter than OR; parentheses group.  Values with a unit are
 converted to the stored unit; the SQL holds only `?` placeholders, never the
 user's text.  Errors name the offending token and its column.
@@ -537,8 +542,8 @@ class Query:
 def demonstration_hint(conn: sqlite3.Connection, text: str) -> str | None:
     """For a query that found no real person: how many demonstration people it
     would find, and the query that finds them (None: none, or it named a source)."""
-    if names_source(text):
-        return None
+    if names_source(text) or Query(conn, compile_query(text)).count():
+        return None  # it names a source, or it finds real people (e.g. all already selected)
     reach = demonstration_query(text)
     found = Query(conn, compile_query(reach)).count()
     if not found:

@@ -115,7 +115,7 @@ def read_population_file(path: str | Path, group: str) -> PopulationData:
     try:
         path = regular_file(path)  # a FIFO or a device (/dev/zero) would never end
     except PathError as exc:
-        raise PopulationFileError(f"cannot read {exc}") from None
+        raise PopulationFileError(f"{path}: cannot read: {exc.reason}") from None
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError:

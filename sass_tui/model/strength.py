@@ -188,7 +188,7 @@ def read_strength_file(path: str | Path | None = None) -> StrengthData:
     try:  # a FIFO or a device (/dev/zero) would never end
         path = regular_file(path) if path is not None else default_path()
     except PathError as exc:
-        raise StrengthFileError(f"cannot read {exc}") from None
+        raise StrengthFileError(f"{path}: cannot read: {exc.reason}") from None
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError:

@@ -109,3 +109,19 @@ def test_make_population_of_real_women_then_create_figure(drive, db, tmp_path):
     text = figure.read_text()
     assert "nan" not in text.lower() and " 999" not in text
     assert target.with_name("young-cmass.dat").is_file()
+
+
+def test_no_hint_when_the_real_people_found_are_all_selected(drive, db):
+    """Re-run a query whose real people are all in the selected list: the query
+    list is empty, but the query does reach real people, so no hint."""
+
+    async def scenario():
+        app = SassApp(db_path=db)
+        async with app.run_test(size=(120, 40)) as pilot:
+            await typed_query(pilot, "gender = female AND stature > 165 cm")
+            assert "people found" in message(app) or "person" in message(app)
+            await pilot.press("a")  # Select All
+            await typed_query(pilot, "gender = female AND stature > 165 cm")
+            assert message(app) == "No data satisfied the query."
+
+    drive(scenario())
