@@ -153,7 +153,8 @@ class _VersionAction(argparse.Action):
             number = version("sass-tui")
         except PackageNotFoundError:
             number = "unknown (not installed)"
-        parser.exit(message=f"sass {number}\n")
+        print(f"sass {number}")  # standard output, as the --version of most commands
+        parser.exit()
 
 
 # A one-shot command makes ~50,000 objects starting (modules, classes, the

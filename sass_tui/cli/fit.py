@@ -53,7 +53,8 @@ def register(commands: SubParsers) -> None:
         "--mix",
         type=mix_argument,
         metavar="male=W,female=W",
-        help="weights of the genders in the weighted share (default: equal)",
+        help="weights of the genders in the weighted share (default: equal); one alone "
+        "is its share and the other gender has the rest (male=0.8: female 0.2)",
     )
     fit.add_argument(
         "--target",

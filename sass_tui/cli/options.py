@@ -103,17 +103,25 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
         given += [o for o, v in (("--gender", args.gender),) if v]
         if given:
             raise FigureError(f"--person takes the person's own {', '.join(given)}; leave it out")
-    session = Session(Figure.default(args.gender or "male"))
+    files = {
+        group: read_population_file(option, group)
+        for group, option in (
+            (GIRTH, args.girth),
+            (JOINT_LIMITS, args.jntlmt),
+            (CENTER_OF_MASS, args.cmass),
+        )
+        if option
+    }
+    gender = args.gender
+    if gender is None and args.person is None and files:
+        # A population of one gender (e.g. `sass population` over women) sizes that gender.
+        held = set.intersection(*(set(data.sections) for data in files.values()))
+        gender = held.pop() if len(held) == 1 else None
+    session = Session(Figure.default(gender or "male"))
     warnings: list[str] = []
-    for group, option in (
-        (GIRTH, args.girth),
-        (JOINT_LIMITS, args.jntlmt),
-        (CENTER_OF_MASS, args.cmass),
-    ):
-        if option:
-            data = read_population_file(option, group)
-            session.load_group(group, data)
-            warnings += [w for w in data.warnings if w not in warnings]
+    for group, data in files.items():
+        session.load_group(group, data)
+        warnings += [w for w in data.warnings if w not in warnings]
     if args.global_file:
         data = read_population_file(args.global_file, GLOBAL)
         session.load_global(data)

@@ -51,16 +51,26 @@ def _num(value: object) -> str:
 
 
 def _table(record: dict, out) -> None:  # out: TextIO
+    from sass_tui.db.scope import DEMONSTRATION_SOURCE
     from sass_tui.model.measures import MEASURE_UNITS
+    from sass_tui.model.text import printable
 
     values: dict[str, object] = record["values"]
+    source = str(record["source"])
+    demonstration = (
+        ", a synthetic demonstration person, not a real one"
+        if source.lower() == DEMONSTRATION_SOURCE
+        else ""
+    )
+    # Names, sources and survey fields come from files: shown escaped (model/text.py).
     out.write(
-        f"{record['name']} (id {record['id']}): {record['gender']}, stature "
+        f"{printable(record['name'])} (id {record['id']}{demonstration}): "
+        f"{printable(record['gender'])}, stature "
         f"{_num(record['stature'])} cm, mass {_num(record['mass'])} kg, age "
-        f"{_num(record['age'])}; source {record['source']}\n"
+        f"{_num(record['age'])}; source {printable(source)}\n"
     )
     attributes = [
-        f"{name} {values[name]}"
+        f"{name} {printable(values[name])}"
         for name in (
             "handedness",
             "component",

@@ -91,12 +91,13 @@ def run(args: argparse.Namespace) -> int:
             file=sys.stderr,
         )
     for group, path in write_population_files(result, Path(args.output)).items():
-        print(f"wrote {path} ({GROUP_TITLES[group].lower()})")
-    for group in result.empty_groups:
-        print(
-            f"no {GROUP_TITLES[group].lower()} file: none of these people has a value of it",
-            file=sys.stderr,
+        modelled = result.modelled.get(group, 0)
+        model = (
+            f"; {modelled} cells the people lack from the report's, scaled by their stature"
+            if modelled
+            else ""
         )
+        print(f"wrote {path} ({GROUP_TITLES[group].lower()}{model})")
     print(f"from {people_words(result.counts)} selected by: {result.query}")
     return 0
 

@@ -231,11 +231,12 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
     import numpy as np
 
     from sass_tui.model.atomic import write_text_atomic
+    from sass_tui.model.paths import regular_file
     from sass_tui.model.prediction import UnknownFieldError, field_unit
     from sass_tui.model.units import UnitError, parse_quantity
 
     try:
-        with open(source, encoding="utf-8-sig", newline="") as handle:
+        with open(regular_file(source), encoding="utf-8-sig", newline="") as handle:
             rows = list(csv.reader(handle))
     except UnicodeDecodeError as exc:
         raise PredictArgumentError(f"{source}: not UTF-8 text ({exc.reason})") from None

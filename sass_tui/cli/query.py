@@ -41,7 +41,10 @@ def run(args: argparse.Namespace) -> int:
     if args.count:
         if args.target is not None:
             return _weighted_count(conn, args.query, args.target)
-        print(query.count())
+        found = query.count()
+        print(found)
+        if not found:
+            _say_who_else(conn, args.query)
         return 0
     if args.target is not None:
         from sass_tui.model.targets import TargetError
@@ -51,19 +54,36 @@ def run(args: argparse.Namespace) -> int:
     out = sys.stdout
     if args.format == "csv":
         import csv
+        from operator import itemgetter
 
-        # Data as stored (no escaping): CSV is for programs, not for a terminal.
+        from sass_tui.model.text import is_printable, printable
+
+        # Names and sources come from files and the CSV may go to a terminal: a
+        # control character is written escaped.  One check over a chunk's names
+        # and sources joined; only when it fails is each text made printable.
         writer = csv.writer(out, lineterminator="\n")
         writer.writerow(PERSON_FIELDS)
-        writer.writerows(rows)
+        found = 0
+        while chunk := rows.fetchmany(1000):
+            try:
+                plain = is_printable("".join(map(itemgetter(1), chunk))) and is_printable(
+                    "".join(map(itemgetter(7), chunk))
+                )
+            except TypeError:  # a name stored as a number
+                plain = False
+            if not plain:
+                chunk = [
+                    (i, printable(name), g, mass, stature, hand, age, printable(source))
+                    for i, name, g, mass, stature, hand, age, source in chunk
+                ]
+            writer.writerows(chunk)
+            found += len(chunk)
     elif args.format == "json":
-        import json
-
-        persons = [_finite(dict(zip(PERSON_FIELDS, row))) for row in rows]
-        json.dump({"count": len(persons), "persons": persons}, out, indent=1, allow_nan=False)
-        out.write("\n")
+        found = _write_json(out, rows.fetchall())
     else:
-        _write_table(out, rows)
+        found = _write_table(out, rows)
+    if not found:
+        _say_who_else(conn, args.query)
     return 0
 
 
@@ -82,7 +102,16 @@ def _weighted_count(conn, query: str, name: str) -> int:
     return 0
 
 
-def _write_table(out: TextIO, rows: Iterable[tuple]) -> None:
+def _say_who_else(conn, text: str) -> None:  # conn: sqlite3.Connection
+    """A query that found no real person: the demonstration people it would find."""
+    from sass_tui.db.query import demonstration_hint
+
+    hint = demonstration_hint(conn, text)
+    if hint:
+        print(hint, file=sys.stderr)
+
+
+def _write_table(out: TextIO, rows: Iterable[tuple]) -> int:
     out.write(
         f"{'id':>7}  {'name':<20} {'gender':<6} {'mass kg':>7} {'stature cm':>10} "
         f"{'hand':<6} {'age':>4}  source\n"
@@ -93,6 +122,7 @@ def _write_table(out: TextIO, rows: Iterable[tuple]) -> None:
         out.write(_table_lines(chunk))
         count += len(chunk)
     out.write(f"{count} {'person' if count == 1 else 'people'}\n")
+    return count
 
 
 # A row of the table when every value is there and of its type (the fast
@@ -125,6 +155,50 @@ def _table_lines(rows: list[tuple]) -> str:
             for id_num, name, gender, mass, stature, hand, age, source in rows
         ]
     )
+
+
+# A person of the JSON listing when every value is there and of its type (the
+# fast path of _write_json; the same text json's encoder makes of the dict).
+_JSON_PERSON = (
+    '{"id": %d, "name": %s, "gender": %s, "mass": %r, "stature": %r, '
+    '"handedness": %s, "age": %r, "source": %s}'
+)
+
+
+def _write_json(out: TextIO, rows: list[tuple]) -> int:
+    """`{"count": N, "persons": [...]}`, one person a line.  json.dump with
+    `indent` runs the pure-Python encoder (2.96 times the table's time); each
+    person is made here with one format, its texts quoted by json's own C
+    function, when the numbers are all finite numbers (their sum is finite;
+    None or a text raises TypeError); otherwise by the encoder, person by
+    person (benchmarks/query_formats.py)."""
+    import json
+    import math
+    from json.encoder import encode_basestring_ascii as quote
+    from operator import itemgetter
+
+    from sass_tui.db.query import PERSON_FIELDS
+
+    try:
+        finite = all(math.isfinite(sum(map(itemgetter(k), rows))) for k in (3, 4, 6))
+        lines = (
+            ",\n".join(
+                [
+                    _JSON_PERSON
+                    % (id_num, quote(name), quote(g), mass, stature, quote(hand), age, quote(src))
+                    for id_num, name, g, mass, stature, hand, age, src in rows
+                ]
+            )
+            if finite
+            else None
+        )
+    except TypeError:
+        lines = None
+    if lines is None:
+        encode = json.JSONEncoder(allow_nan=False).encode
+        lines = ",\n".join([encode(_finite(dict(zip(PERSON_FIELDS, row)))) for row in rows])
+    out.write(f'{{"count": {len(rows)}, "persons": [\n{lines}\n]}}\n')
+    return len(rows)
 
 
 def _finite(person: dict) -> dict:

@@ -38,6 +38,7 @@ from sass_tui.db.schema import (
 )
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES, PUBLISHED_TO_CANONICAL
+from sass_tui.model.text import control_character, printable
 
 ANSUR_HANDEDNESS = {
     "right hand": "right",
@@ -180,6 +181,8 @@ def looks_like_ansur(path: str | Path) -> bool:
     column, in any case): Input DB imports it as a survey file, not a person
     file.  A file that cannot be read is not one (its import says why).  At
     most 64 KiB are read: it runs on the UI thread."""
+    if not Path(path).is_file():  # a FIFO would block the read; the import says why
+        return False
     try:
         raw, stream = _open_bytes(Path(path))
         with raw:
@@ -285,10 +288,17 @@ class _Chunk:
             out.append(table[key])
         return out
 
-    def texts(self, column: int | None) -> list[object]:
+    def texts(self, column: int | None, name: str) -> list[object]:
+        """A text field's values; one holding a control character (an escape
+        sequence would act on the terminal that shows it) is refused."""
         if column is None:
             return [None] * len(self.rows)
-        return [row[column].strip() or None for row in self.rows]
+        out: list[object] = [row[column].strip() or None for row in self.rows]
+        for k, text in enumerate(out):
+            found = control_character(text) if isinstance(text, str) else None
+            if found:
+                self.fail(k, f"column {name}: {found}; a text field takes printable text only")
+        return out
 
     def codes(self, column: int | None, name: str) -> list[object]:
         if column is None:
@@ -316,9 +326,13 @@ def iter_ansur(
     a time: memory stays bounded whatever the file's size.  Every row is
     checked; the first bad one raises AnsurImportError naming file:line (the
     caller's transaction then stores nothing).  `progress(bytes_read)`."""
+    from sass_tui.model.paths import PathError, regular_file
+
     path = Path(path)
     try:
-        raw, stream = _open_bytes(path)
+        raw, stream = _open_bytes(regular_file(path))  # a FIFO or a device would never end
+    except PathError as exc:
+        raise AnsurImportError(f"{path}: cannot read: {exc.reason}") from None
     except OSError as exc:
         raise AnsurImportError(f"{path}: cannot read: {exc.strerror or exc}") from None
     with raw:
@@ -436,7 +450,7 @@ def _batch(
         names = [f"{label} {letter[g]} {s}" for g, s in zip(gender, subject)]
         keys = [f"{label}:{g}:{s}" for g, s in zip(gender, subject)]
     attributes: dict[str, list[object]] = {
-        name: chunk.texts(column.get(name)) for name in TEXT_ATTRIBUTES
+        name: chunk.texts(column.get(name), name) for name in TEXT_ATTRIBUTES
     }
     attributes.update({name: chunk.codes(column.get(name), name) for name in CODE_ATTRIBUTES})
     return PeopleBatch(
@@ -548,6 +562,12 @@ def import_ansur(
     `cancel` stops it at the next chunk with Cancelled, everything rolled back."""
     if not label.strip():
         raise AnsurImportError("the source label is empty; expected e.g. ansur2")
+    found = control_character(label)
+    if found:
+        raise AnsurImportError(
+            f"the source label {printable(label)!r} holds {found}; expected printable text, "
+            "e.g. mysurvey"
+        )
     check_writable(conn)
     with transaction(conn):
         return store_ansur(conn, paths, label=label, progress=Steps(progress, cancel, "the import"))

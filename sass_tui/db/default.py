@@ -29,9 +29,10 @@ from sass_tui.db.schema import (
     recreate_schema,
     write_refused,
 )
+from sass_tui.db.scope import DEMONSTRATION_SOURCE
 
 ANSUR_FILES = ("ANSUR_II_MALE_Public.csv.gz", "ANSUR_II_FEMALE_Public.csv.gz")
-SYNTHETIC_LABEL = "synthetic"
+SYNTHETIC_LABEL = DEMONSTRATION_SOURCE  # what a query reaches only when it names it
 
 
 def open_database(

@@ -36,7 +36,8 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
-from sass_tui.db.query import compile_conjuncts, compile_query
+from sass_tui.db.query import compile_conjuncts, compile_query, names_source
+from sass_tui.db.scope import real_only
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
@@ -161,7 +162,9 @@ def _round(value: float | None) -> float | None:
 
 
 def check_mix(mix: dict[str, float] | None) -> dict[str, float]:
-    """The gender weights, normalised to sum 1 (default: equal)."""
+    """The gender weights, normalised to sum 1 (default: equal).  One gender's
+    weight alone is its share, and the other gender has the rest
+    (`male=0.8` is `male=0.8,female=0.2`)."""
     if mix is None:
         return {g: 1.0 / len(GENDERS) for g in GENDERS}
     for gender, weight in mix.items():
@@ -169,6 +172,18 @@ def check_mix(mix: dict[str, float] | None) -> dict[str, float]:
             raise FitError(f"mix: unknown gender {gender!r}; expected {' or '.join(GENDERS)}")
         if not math.isfinite(weight) or weight < 0:
             raise FitError(f"mix: the weight of {gender} must be a number >= 0, not {weight}")
+    if len(mix) == 1 and len(GENDERS) == 2:
+        ((gender, share),) = mix.items()
+        if share > 1:
+            raise FitError(
+                f"mix: {gender}={share:g} alone is a share from 0 to 1 (the other gender has "
+                f"the rest); give both weights to weigh them otherwise, e.g. "
+                f"{gender}=0.8,{'female' if gender == 'male' else 'male'}=0.2"
+            )
+        other = next(g for g in GENDERS if g != gender)
+        # rounded: 1 - 0.8 is 0.19999999999999996 in binary, and male=0.8 is male=0.8,female=0.2
+        rest = round(1.0 - share, 12)
+        mix = {gender: share, other: rest} if rest > 0 else {gender: share}
     total = sum(mix.values())
     if total <= 0:
         raise FitError("mix: the weights add up to 0; give at least one gender a weight > 0")
@@ -205,6 +220,9 @@ def fit_test(
     # One compilation of both, so the population's terms share the limits' joins
     # and its WHERE runs inline (a subquery for it costs half as much again).
     people, *terms = compile_conjuncts(f"({population}) AND {limits}")
+    # The population's term is compiled as a part, unscoped: real people unless it names a source.
+    scoped, scoped_params = real_only(people.where, people.params, names_source(population))
+    people = people._replace(where=scoped, params=scoped_params)
     # The body a strength limit predicts from, only when there is one.
     body = "p.age, p.mass, p.stature, " if strength_limits else ""
     columns = body + ", ".join(f"({t.where})" for t in terms)

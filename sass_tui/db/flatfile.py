@@ -49,6 +49,7 @@ from sass_tui.db.schema import (
 )
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
+from sass_tui.model.text import control_character
 from sass_tui.model.units import UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, SIDES, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
@@ -120,7 +121,13 @@ _LINES: ContextVar[_LineCount | None] = ContextVar("flatfile_lines", default=Non
 
 class _Reader:
     def __init__(self, path: Path):
+        from sass_tui.model.paths import PathError, regular_file
+
         self.path = path
+        try:
+            regular_file(path)  # a FIFO or a device would never end
+        except PathError as exc:
+            raise FlatFileError(f"{path}: cannot read: {exc.reason}") from None
         try:
             self.text = path.read_text(encoding="utf-8-sig")
         except UnicodeDecodeError:
@@ -254,6 +261,10 @@ def _read_person(reader: _Reader) -> dict[str, list[Any]]:
             reader.fail("name: expected a name, found nothing")
         if not f[7]:
             reader.fail("source: say where the data come from")
+        for field_name, text in (("name", f[1]), ("source", f[7])):
+            found = control_character(text)
+            if found:  # an escape sequence would act on the terminal that shows it
+                reader.fail(f"{field_name}: {found}; expected printable text")
         out["id_num"].append(pid)
         out["name"].append(f[1])
         out["gender"].append(reader.choice(f[2], GENDERS, "gender"))
@@ -397,7 +408,7 @@ def _count_lines(files: FlatFiles) -> int:
     total = 0
     for name in FILE_NAMES:
         path = getattr(files, name)
-        if path is not None:
+        if path is not None and path.is_file():  # not a FIFO: the reader refuses it
             try:
                 with open(path, "rb") as handle:
                     total += sum(

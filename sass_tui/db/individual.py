@@ -327,11 +327,15 @@ def person_figure(person: Individual, population: Figure) -> Figure:
     """The person's figure (report §12.4, Disp. Indv.): their own values,
     percentiles against `population`, unmeasured cells from the population
     (the figure says which); `population` is left as it was."""
+    from sass_tui.db.scope import DEMONSTRATION_SOURCE
     from sass_tui.model.names import GROUPS
     from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS
 
+    # The figure's name is its title (and its file's name): a demonstration
+    # person is never taken for a real one (db/scope.py).
+    synthetic = person.source.lower() == DEMONSTRATION_SOURCE
     return population.for_person(
-        person.name,
+        f"{person.name} (synthetic)" if synthetic else person.name,
         person.gender,
         {g: person.groups[g] for g in GROUPS},
         mass=person.mass,

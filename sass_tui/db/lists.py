@@ -43,7 +43,7 @@ _TABLES = {QUERY_LIST: "temp.query_list", SELECTED_LIST: "temp.selected_list"}
 _ORDER = {QUERY_LIST: "l.id_num", SELECTED_LIST: "l.seq"}
 _SELECT = (
     "p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source, "
-    "sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level"
+    "sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level, p.branch"
 )
 
 

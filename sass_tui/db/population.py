@@ -3,9 +3,23 @@ the empirical 5th, 50th and 95th percentile, per gender, of every girth and
 center-of-mass row, from the selected people's own values.
 
 The result is one PopulationData per group (report figure 7's format), ready
-for `popfile.write_population_file` or for loading into the spreadsheet.  A
-cell with fewer than MIN_PEOPLE values is left empty (999 in the file).  No
-Textual import here.
+for `popfile.write_population_file` or for loading into the spreadsheet.
+
+Every cell has a value, so that any population of real people makes a
+figure.  A cell at least MIN_PEOPLE of the people have a value of is theirs
+(the girth rows derived from ANSUR II measurements, docs/data-sources.md).
+Any other cell (ANSUR II measures no head length, hand thickness, eyes,
+ball-of-foot length, knuckle thickness, and no center of mass at all) is the
+report's value (`datasets/girth.dat`, appendices B and C; `datasets/cmass.dat`,
+appendix L.2) scaled by the population's own stature against the report
+population's (`datasets/global.dat`), percentile by percentile:
+
+    cell(p) = report cell(p) × stature of the people(p) / global.dat stature(p)
+
+A segment's dimensions grow in proportion to stature to a first
+approximation (geometric similarity, the assumption behind SASS's own
+scaling by percentile).  The file says, row by row in its comments, which
+cells are the people's and which the model's.  No Textual import here.
 """
 
 from __future__ import annotations
@@ -22,7 +36,7 @@ from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.schema import CENTER_OF_MASS_NAMES, GIRTH_NAMES
 from sass_tui.db.values import load_values
 from sass_tui.model.errors import SassError
-from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, GLOBAL_ROWS
+from sass_tui.model.names import AXES, CENTER_OF_MASS, GIRTH, GLOBAL, GLOBAL_ROWS, ROWS
 from sass_tui.model.popfile import PopulationData
 from sass_tui.model.vocabulary import GENDERS
 
@@ -33,6 +47,12 @@ MIN_PEOPLE = 20
 PERCENTILES = (5.0, 50.0, 95.0)
 _GROUPS = ((GIRTH, "girth", GIRTH_NAMES), (CENTER_OF_MASS, "center_of_mass", CENTER_OF_MASS_NAMES))
 _PLURAL = {"male": "men", "female": "women"}
+_POSSESSIVE = {"male": "men's", "female": "women's"}
+# The report's tables the model scales (see the module's docstring).
+REPORT_TABLES = {
+    GIRTH: "report appendix B (men) / C (women), datasets/girth.dat",
+    CENTER_OF_MASS: "report appendix L.2, datasets/cmass.dat",
+}
 
 
 def people_words(counts: dict[str, int]) -> str:
@@ -49,8 +69,8 @@ class PopulationError(ValueError, SassError):
 class SelectionPopulation:
     query: str
     counts: dict[str, int]  # people per gender
-    groups: dict[str, PopulationData]  # GIRTH, CENTER_OF_MASS (groups with no value left out)
-    empty_groups: tuple[str, ...]  # groups none of the people has a value of
+    groups: dict[str, PopulationData]  # GIRTH, CENTER_OF_MASS, every cell filled
+    modelled: dict[str, int]  # group -> cells (both genders) from the stature model
 
 
 def group_fields(word: str, rows: Sequence[str]) -> list[str]:
@@ -85,7 +105,7 @@ def population_of(
     if query is None and ids is None:
         raise PopulationError("a population needs a query or a list of people")
     when = date or _dt.date.today().isoformat()
-    fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)]
+    fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)] + ["stature"]
     steps = Steps(progress, cancel, "making the population")
     total = len(fields) * len(GENDERS) + 1
     steps(0, total)
@@ -115,7 +135,7 @@ def population_of(
         described += f", weighted: effective n {target.target.effective_n:.0f}"
     heading = title or f"Population of {what.removeprefix('the query ')}"
     groups: dict[str, PopulationData] = {}
-    empty: list[str] = []
+    modelled: dict[str, int] = {}
     start = 0
     done = [1]
 
@@ -123,24 +143,25 @@ def population_of(
         done[0] += 1
         steps(done[0], total)
 
+    statures = values.matrix[:, -1]
+    scales = {g: _stature_scale(statures[genders == g], g) for g in counts}
     for group, _word, rows in _GROUPS:
         width = len(rows) * 3
         block = values.matrix[:, start : start + width]
         start += width
-        if np.isnan(block).all():
-            empty.append(group)
-            continue
         data = PopulationData(
             group=group,
             title=f"{heading} ({described}; sass query, {when})",
             path="",
         )
+        modelled[group] = 0
         for gender in counts:
             people = block[genders == gender]
             weights = None if target is None else target.of(values.ids[genders == gender])
-            data.sections[gender] = _percentiles(people, column_done, weights).reshape(
-                len(rows), 3, 3
-            )
+            stats = _percentiles(people, column_done, weights).reshape(len(rows), 3, 3)
+            have = np.sum(~np.isnan(people), axis=0).reshape(len(rows), 3)
+            modelled[group] += _fill_from_report(data, gender, stats, have, scales[gender])
+            data.sections[gender] = stats
             data.lines[gender] = [0] * len(rows)
         groups[group] = data
     if target is not None:
@@ -159,7 +180,74 @@ def population_of(
             data.lines[gender] = [0] * len(GLOBAL_ROWS)
         groups[GLOBAL] = data
     steps(total, total)
-    return SelectionPopulation(what.removeprefix("the query "), counts, groups, tuple(empty))
+    return SelectionPopulation(what.removeprefix("the query "), counts, groups, modelled)
+
+
+def _stature_scale(statures: np.ndarray, gender: str) -> tuple[np.ndarray, str]:
+    """Per percentile (5, 50, 95): the people's stature over global.dat's, and
+    how that reads in the file's comments."""
+    report = _report(GLOBAL).stats(gender)[0, 0]  # the stature row: 5/50/95 cm
+    measured = statures[~np.isnan(statures)]
+    if len(measured) < MIN_PEOPLE:
+        return np.ones(3), (
+            f"unscaled: only {len(measured)} of the people have a stature "
+            f"(at least {MIN_PEOPLE} are needed)"
+        )
+    own = np.percentile(measured, PERCENTILES)
+    scale = own / report
+    said = "/".join(f"{v:.1f}" for v in own)
+    return scale, (
+        f"× the people's stature {said} cm / datasets/global.dat's "
+        f"{'/'.join(f'{v:.1f}' for v in report)} cm = "
+        f"{'/'.join(f'{v:.3f}' for v in scale)} (5th/50th/95th)"
+    )
+
+
+def _report(group: str) -> PopulationData:
+    from sass_tui.model import datasets
+    from sass_tui.model.popfile import read_population_file
+
+    name = "global.dat" if group == GLOBAL else datasets.FILES[group]
+    return read_population_file(datasets.path(name), group)
+
+
+def _fill_from_report(
+    data: PopulationData,
+    gender: str,
+    stats: np.ndarray,
+    have: np.ndarray,
+    scale: tuple[np.ndarray, str],
+) -> int:
+    """Fill the cells of `stats` (rows, axes, 5/50/95) too few people have
+    (`have`: people with a value per cell) from the report's table scaled by
+    stature, writing where each cell came from into `data`'s notes; returns
+    the cells filled."""
+    factor, how = scale
+    report = _report(data.group).stats(gender)
+    data.notes[gender] = [
+        f"Where each value comes from: 'people' = the {_POSSESSIVE[gender]} own values "
+        f"(5th/50th/95th percentile of those who have it, at least {MIN_PEOPLE}); "
+        f"'model' = {REPORT_TABLES[data.group]} {how}; a cell whose three values this "
+        "would reorder (report values that barely differ, e.g. the eyes) is scaled by the "
+        "50th's ratio alone (docs/data-sources.md)."
+    ]
+    notes: list[str] = []
+    filled = 0
+    for r, row in enumerate(ROWS[data.group]):
+        said = []
+        for a, axis in enumerate(AXES):
+            if have[r, a] >= MIN_PEOPLE:
+                said.append(f"{axis} people ({int(have[r, a])})")
+                continue
+            scaled = report[r, a] * factor
+            if not np.array_equal(np.sign(np.diff(scaled)), np.sign(np.diff(report[r, a]))):
+                scaled = report[r, a] * factor[1]
+            stats[r, a] = scaled
+            filled += 1
+            said.append(f"{axis} model")
+        notes.append(f"{row.label}: {', '.join(said)}")
+    data.row_notes[gender] = notes
+    return filled
 
 
 def _selection_words(query: str | None, ids: Sequence[int] | None, ids_from: str) -> str:

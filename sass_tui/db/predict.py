@@ -60,7 +60,9 @@ def data_key(conn: sqlite3.Connection, population: str = DEFAULT_POPULATION) -> 
     """A hash that changes when people are added, removed or their values
     edited, or another population is asked for."""
     fields = predicted_fields()
-    parts: list[object] = [MODEL_VERSION, fields, " ".join(population.split())]
+    # "real people": the fit learns from real people unless the population names a
+    # source (db/scope.py); a cache fitted before, on the synthetic people too, is not reused.
+    parts: list[object] = [MODEL_VERSION, fields, "real people", " ".join(population.split())]
     parts += conn.execute(
         "SELECT count(*), total(id_num), total(id_num * (gender = 'male')), "
         "total(stature), total(mass) FROM person"
@@ -82,7 +84,8 @@ def data_key(conn: sqlite3.Connection, population: str = DEFAULT_POPULATION) -> 
 def fit_predictor(
     conn: sqlite3.Connection, key: str = "", population: str = DEFAULT_POPULATION
 ) -> Predictor:
-    """Fit the model on the people the query `population` selects (no cache)."""
+    """Fit the model on the people the query `population` selects (no cache; real
+    people unless it names a source, db/scope.py)."""
     fields = predicted_fields()
     values = load_values(conn, fields, population)
     return Predictor.fit(values, fields, key=key)

@@ -14,6 +14,11 @@ case, "did you mean" on a typo), `girth.ROW.x|y|z`, `joint_limit.ROW.x|y|z`,
 `center_of_mass.ROW.x|y|z`, `strength.MOTION.max` and the strength
 parameters; `field_names()` lists them all with units.
 
+A query that names no `source` term reaches the real people only (the
+synthetic demonstration people left out: db/scope.py, added in
+`compile_query`); `source = synthetic`, or any `source` term, leaves the
+choice to the query.
+
 AND binds tighter than OR; parentheses group.  Values with a unit are
 converted to the stored unit; the SQL holds only `?` placeholders, never the
 user's text.  Errors name the offending token and its column.
@@ -53,6 +58,7 @@ from sass_tui.db.schema import (
     JOINT_LIMIT_NAMES,
     QUERY_TABLES,
 )
+from sass_tui.db.scope import demonstration_query, real_only
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, suggest
 from sass_tui.model.units import DISPLAY, LARGEST_NUMBER, UnitError, convert, unit_name
@@ -151,6 +157,7 @@ class _Compiler(Transformer[Token, _Fragment]):
         self.text = text
         self.tables: dict[str, str] = {}  # table -> alias
         self._field_token: Token | None = None
+        self.names_source = False  # a `source` term: no real-people scope (db/scope.py)
 
     def _alias(self, table: str) -> str:
         if table not in self.tables and len(self.tables) >= MAX_JOINED_TABLES:
@@ -243,6 +250,8 @@ class _Compiler(Transformer[Token, _Fragment]):
         return (f"{alias}.{column} {sql_op} ?", [number])
 
     def _resolve(self, names: list[Token]) -> FieldInfo:
+        if len(names) == 1 and str(names[0]).lower() == "source":
+            self.names_source = True
         try:
             table, column, unit, words = resolve_field([str(n) for n in names])
         except _FieldError as exc:
@@ -407,11 +416,23 @@ def compile_query(text: str) -> CompiledQuery:
         if isinstance(exc.orig_exc, QueryError):
             raise exc.orig_exc from None
         raise
+    scoped, scoped_params = real_only(where, tuple(params), compiler.names_source)
     return CompiledQuery(
         text,
-        where,
-        tuple(params),
+        scoped,
+        scoped_params,
         tuple((alias, table) for table, alias in compiler.tables.items()),
+    )
+
+
+def names_source(text: str) -> bool:
+    """Whether the query names a `source` term (then it is not limited to real
+    people: db/scope.py).  The query must compile."""
+    return any(
+        node.data == "field"
+        and len(node.children) == 1
+        and str(node.children[0]).lower() == "source"
+        for node in parser().parse(text).iter_subtrees()
     )
 
 
@@ -437,10 +458,18 @@ def _expected(expected: Iterable[str]) -> str:
 # --- running --------------------------------------------------------------
 
 PERSON_FIELDS = ("id", "name", "gender", "mass", "stature", "handedness", "age", "source")
-LIST_FIELDS = PERSON_FIELDS + ("strength_type", "motion_speed", "training_level", "fatigue_level")
+# The query list's rows: a real person's survey branch, the synthetic people's strength.
+LIST_FIELDS = PERSON_FIELDS + (
+    "strength_type",
+    "motion_speed",
+    "training_level",
+    "fatigue_level",
+    "branch",
+)
 _PERSON_SELECT = "p.id_num, p.name, p.gender, p.mass, p.stature, p.handedness, p.age, p.source"
 _SELECT = (
-    f"{_PERSON_SELECT}, sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level"
+    f"{_PERSON_SELECT}, sq.strength_type, sq.motion_speed, sq.training_level, sq.fatigue_level, "
+    "p.branch"
 )
 
 
@@ -508,6 +537,24 @@ class Query:
                 return
             yield from rows
             last = rows[-1]["id"]
+
+
+def demonstration_hint(conn: sqlite3.Connection, text: str) -> str | None:
+    """For a query that found no real person: how many demonstration people it
+    would find, and the query that finds them (None: none, or it named a source)."""
+    if names_source(text) or Query(conn, compile_query(text)).count():
+        return None  # it names a source, or it finds real people (e.g. all already selected)
+    reach = demonstration_query(text)
+    found = Query(conn, compile_query(reach)).count()
+    if not found:
+        return None
+    carry = (
+        " (only they carry strength, joint-limit and center-of-mass values)"
+        if any(word in text.lower() for word in ("strength", "joint_limit", "center_of_mass"))
+        else ""
+    )
+    people = "person matches" if found == 1 else "people match"
+    return f"no real person matches; {found} synthetic demonstration {people}{carry}: {reach}"
 
 
 def run_query(conn: sqlite3.Connection, text: str) -> Query:

@@ -29,6 +29,7 @@ from sass_tui.db.query import (
     compile_query,
     resolve_field,
 )
+from sass_tui.db.scope import real_only
 from sass_tui.model.measures import MEASURES
 
 MEASURE_INDEX = {name: j for j, name in enumerate(MEASURES)}
@@ -101,6 +102,9 @@ def load_values(
         params = compiled.params
     else:
         from_clause = "person p" + "".join(joins)
+        if ids is None:  # everyone: every real person (db/scope.py), e.g. what predict learns from
+            scope, params = real_only("1", params, names_source=False)
+            conditions.append(scope)
     if ids is not None:
         # One parameter whatever the number of people (no SQLITE_MAX_VARIABLE_NUMBER).
         conditions.append("p.id_num IN (SELECT value FROM json_each(?))")

@@ -273,7 +273,9 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
 
 
 def read_fig(path: str | Path) -> FigFile:
-    path = Path(path)
+    from sass_tui.model.paths import regular_file
+
+    path = regular_file(path)  # a FIFO or a device would never end
     return parse_fig(path.read_text(encoding="utf-8"), str(path))
 
 

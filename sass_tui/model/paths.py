@@ -9,7 +9,11 @@ from sass_tui.model.errors import SassError
 
 
 class PathError(ValueError, SassError):
-    """A file name that names no usable file."""
+    """A file name that names no usable file; `reason` is the message without the name."""
+
+    def __init__(self, message: str, reason: str = "") -> None:
+        super().__init__(message)
+        self.reason = reason or message
 
 
 def user_path(text: str | Path) -> Path:
@@ -29,8 +33,8 @@ def regular_file(text: str | Path) -> Path:
     try:
         mode = path.stat().st_mode
     except FileNotFoundError:
-        raise PathError(f"{path}: no such file") from None
+        raise PathError(f"{path}: no such file", "no such file") from None
     if not stat.S_ISREG(mode):
         kind = "a directory" if stat.S_ISDIR(mode) else "not a regular file"
-        raise PathError(f"{path}: {kind}; give a data file")
+        raise PathError(f"{path}: {kind}; give a data file", f"{kind}; give a data file")
     return path

@@ -82,6 +82,11 @@ class PopulationData:
     sections: dict[str, Cells | np.ndarray] = field(default_factory=dict)
     lines: dict[str, list[int]] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    # Where the values came from, written as comments (a population made from
+    # the database, db/population.py): per gender, lines after its 'T' line,
+    # and one line per row, before the row.
+    notes: dict[str, list[str]] = field(default_factory=dict)
+    row_notes: dict[str, list[str]] = field(default_factory=dict)
     # Per gender: the array made from a file's plain floats (read once).
     _arrays: dict[str, np.ndarray] = field(default_factory=dict, repr=False, compare=False)
 
@@ -105,7 +110,12 @@ class PopulationData:
 
 
 def read_population_file(path: str | Path, group: str) -> PopulationData:
-    path = Path(path)
+    from sass_tui.model.paths import PathError, regular_file
+
+    try:
+        path = regular_file(path)  # a FIFO or a device (/dev/zero) would never end
+    except PathError as exc:
+        raise PopulationFileError(f"{path}: cannot read: {exc.reason}") from None
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError:
@@ -462,7 +472,11 @@ def write_population_file(data: PopulationData, path: str | Path) -> None:
     lines = [f"C {data.title}"]
     for gender, stats in data.sections.items():
         lines += ["C", f"T {gender.upper()}"]
-        for row, cells in zip(ROWS[data.group], stats):
+        lines += [f"C {note}" for note in data.notes.get(gender, ())]
+        row_notes = data.row_notes.get(gender, [])
+        for k, (row, cells) in enumerate(zip(ROWS[data.group], stats)):
+            if k < len(row_notes):
+                lines.append(f"C {row_notes[k]}")
             flat = [NO_VALUE if math.isnan(v) else v for cell in cells for v in cell]
             lines.append(" " + " ".join(f"{v:8g}" for v in flat) + f"  /* {row.label} */")
     write_text_atomic(path, "\n".join(lines) + "\n")

@@ -189,7 +189,12 @@ def default_path() -> Path:
 
 
 def read_strength_file(path: str | Path | None = None) -> StrengthData:
-    path = Path(path) if path is not None else default_path()
+    from sass_tui.model.paths import PathError, regular_file
+
+    try:  # a FIFO or a device (/dev/zero) would never end
+        path = regular_file(path) if path is not None else default_path()
+    except PathError as exc:
+        raise StrengthFileError(f"{path}: cannot read: {exc.reason}") from None
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError:

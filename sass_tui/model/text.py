@@ -4,7 +4,7 @@ A name, title or source read from a file can hold control characters: an
 escape sequence such as "\\x1b[2J\\x1b]0;pwned\\x07" clears the screen and sets
 the terminal's title when printed.  Everything that shows such text (the
 `sass query` table, the TUI's lists and titles) passes it through
-`printable` first.
+`printable` first; the imports refuse such text (`control_character`).
 """
 
 from __future__ import annotations
@@ -54,11 +54,27 @@ def printable(text: object) -> str:
     return _control().sub(_escape, string)
 
 
+def is_printable(text: str) -> bool:
+    """Whether printable() would leave `text` as it is (one check for many values joined)."""
+    return text.isprintable() or _control().search(text) is None
+
+
 def is_printable_lines(text: str, lines: int) -> bool:
     """Whether `text` is `lines` lines, each ending in a newline, that
     printable() would leave as they are: one check for many values (a newline
     inside a value makes one line too many)."""
     if text.count("\n") != lines:
         return False
-    text = text.replace("\n", "")
-    return text.isprintable() or _control().search(text) is None
+    return is_printable(text.replace("\n", ""))
+
+
+def control_character(text: str) -> str | None:
+    """Where `text`'s first control character is and what it is, e.g.
+    "a control character (^[) at character 7", for an import that refuses
+    it; None when `text` has none (the characters printable() escapes)."""
+    if text.isprintable():
+        return None
+    found = _control().search(text)
+    if found is None:
+        return None
+    return f"a control character ({_escape(found)}) at character {found.start() + 1}"

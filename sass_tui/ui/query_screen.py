@@ -28,6 +28,7 @@ from textual.widgets.option_list import Option
 
 from sass_tui.db.flatfile import FlatFiles
 from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.query import demonstration_hint
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
 from sass_tui.model.text import printable
@@ -168,17 +169,19 @@ class SummaryPanel(Static):
         self.update(text)
 
 
-# Name, source, gender, mass, stature, strength type, motion speed, handedness,
-# training, fatigue.
+# What a real person has first (age, survey branch), so that 80 columns show
+# it; the strength columns, which only the synthetic people fill, after.
 LIST_COLUMNS = (
     ("Name", "name", 14, "<"),
     ("Source", "source", 10, "<"),
     ("Gender", "gender", 7, "<"),
+    ("Age", "age", 4, ">"),
     ("Mass kg", "mass", 8, ">"),
     ("Stature cm", "stature", 11, ">"),
+    ("Branch", "branch", 15, "<"),
+    ("Handed", "handedness", 7, "<"),
     ("Strength type", "strength_type", 14, "<"),
     ("Speed °/s", "motion_speed", 10, ">"),
-    ("Handed", "handedness", 7, "<"),
     ("Training", "training_level", 9, ">"),
     ("Fatigue", "fatigue_level", 8, ">"),
 )
@@ -316,13 +319,19 @@ class QueryFinished(Message):
     """A query's outcome: the count and first page, or what went wrong."""
 
     def __init__(
-        self, count: int = 0, rows: list[dict] | None = None, error: str = "", weighted: str = ""
+        self,
+        count: int = 0,
+        rows: list[dict] | None = None,
+        error: str = "",
+        weighted: str = "",
+        hint: str = "",
     ) -> None:
         super().__init__()
         self.count = count
         self.rows = rows or []
         self.error = error
         self.weighted = weighted  # the target's weighted share (ui/target_picker.py)
+        self.hint = hint  # no real person found: the demonstration people who would be
 
 
 class PopulationMade(Message):
@@ -703,6 +712,7 @@ class QueryScreen(SassScreen):
             with lists.lock:
                 count = lists.run(text, work.report, work.cancel)
                 rows = lists.page(QUERY_LIST, 0, page_size)
+                hint = "" if count else demonstration_hint(lists.conn, text) or ""
                 weighted = ""
                 if target:
                     from sass_tui.ui.target_picker import weighted_count_words
@@ -711,7 +721,7 @@ class QueryScreen(SassScreen):
         except DB_ERRORS as exc:
             self.post_message(QueryFinished(error=str(exc)))
             return
-        self.post_message(QueryFinished(count, rows, weighted=weighted))
+        self.post_message(QueryFinished(count, rows, weighted=weighted, hint=hint))
 
     def action_choose_target(self) -> None:
         """Pick a target population: counts, Fit Test and Make Population weighted to it."""
@@ -749,7 +759,7 @@ class QueryScreen(SassScreen):
         if count:
             self.say(f"{COMPLETE} {count:,} people found.{event.weighted}")
         else:
-            self.say(NO_DATA)
+            self.say(f"{NO_DATA} {printable(event.hint)}".rstrip())
 
     # --- Make Population (issue 12) ----------------------------------------------------
     def action_make_population(self) -> None:

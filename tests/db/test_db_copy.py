@@ -76,7 +76,7 @@ def test_after_db_copy_a_fresh_query_process_counts_from_the_copy(db_path, tmp_p
     cache = tmp_path / "cache"
     built = sass(cache, "db", "copy", "--db", str(db_path), "girth.right_upper_arm.z > 28 cm")
     assert built.returncode == 0, built.stderr
-    assert "built: 6268 people, 6 columns" in built.stdout
+    assert "built: 6268 people, 7 columns" in built.stdout
     assert "q_girth_right_upper_arm.z" in built.stdout
     assert "Traceback" not in built.stderr
     counted = sass(cache, "query", "--db", str(db_path), "--count", QUERY)

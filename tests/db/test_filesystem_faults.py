@@ -44,7 +44,15 @@ def _integrity(path: Path) -> str:
         conn.close()
 
 
+def _empty_file(beside: Path) -> str:
+    """An empty group file (not /dev/null: the readers take regular files only)."""
+    empty = beside.with_name("empty.db")
+    empty.write_text("")
+    return str(empty)
+
+
 def _flat_import(db: Path, person: Path) -> list[str]:
+    empty = _empty_file(person)
     return [
         "db",
         "import-flat",
@@ -53,11 +61,11 @@ def _flat_import(db: Path, person: Path) -> list[str]:
         "--person",
         str(person),
         "--girth",
-        "/dev/null",
+        empty,
         "--jntlmt",
-        "/dev/null",
+        empty,
         "--cmass",
-        "/dev/null",
+        empty,
     ]
 
 
@@ -179,9 +187,9 @@ def test_the_library_refuses_a_read_only_database_before_writing(tmpfs_with_db, 
                 conn,
                 FlatFiles(
                     person=person_file,
-                    girth=Path("/dev/null"),
-                    joint_limits=Path("/dev/null"),
-                    center_of_mass=Path("/dev/null"),
+                    girth=Path(_empty_file(person_file)),
+                    joint_limits=Path(_empty_file(person_file)),
+                    center_of_mass=Path(_empty_file(person_file)),
                 ),
             )
         assert conn.execute("SELECT count(*) FROM person").fetchone()[0] == 200

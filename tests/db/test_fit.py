@@ -18,7 +18,9 @@ from sass_tui.db.fit import FitError, check_mix, fit_test
 from sass_tui.db.query import QueryError, compile_conjuncts, compile_query, run_query
 from sass_tui.db.schema import connect
 
-EVERYONE = "stature > 0"  # every person of the default database has a stature
+# Every person of the default database has a stature; the source term reaches the
+# synthetic people too (a query without one reaches only real people).
+EVERYONE = "stature > 0 AND source != none"
 
 
 def _read_csv(ansur_dir: Path) -> dict[str, dict[str, np.ndarray]]:
@@ -162,7 +164,9 @@ def test_naive_estimate_is_the_product_of_the_single_limit_shares(ansur_db):
 def test_people_lacking_a_limited_value_are_left_out_and_counted(mixed_db):
     limits = "stature <= 185 cm AND strength.elbow_flexion.max > 40"
     result = fit_test(mixed_db, limits, EVERYONE, failing=True)
-    strength_people = run_query(mixed_db, "strength.elbow_flexion.max > -1e9").ids()
+    strength_people = run_query(
+        mixed_db, "strength.elbow_flexion.max > -1e9 AND source != none"
+    ).ids()
     everyone = run_query(mixed_db, EVERYONE).ids()
     assert len(strength_people) > 0
     unmeasured = len(everyone) - len(strength_people)
@@ -172,17 +176,17 @@ def test_people_lacking_a_limited_value_are_left_out_and_counted(mixed_db):
     assert result.by_limit[0].not_measured == 0
     for gender in ("male", "female"):
         measured = run_query(
-            mixed_db, f"gender = {gender} AND strength.elbow_flexion.max > -1e9"
+            mixed_db, f"gender = {gender} AND strength.elbow_flexion.max > -1e9 AND source != none"
         ).count()
-        fitting = run_query(mixed_db, f"gender = {gender} AND {limits}").count()
+        fitting = run_query(mixed_db, f"gender = {gender} AND {limits} AND source != none").count()
         share = result.genders[gender]
         assert share.n == measured  # the unmeasured are not in the share
         assert share.fit == fitting
         assert share.percent == pytest.approx(100 * fitting / measured)
     # the failing list names only definite failures, with the limits they fail
     failing = {f.id: f.limits for f in result.failing}
-    tall = set(run_query(mixed_db, "stature > 185 cm").ids())
-    weak = set(run_query(mixed_db, "strength.elbow_flexion.max <= 40").ids())
+    tall = set(run_query(mixed_db, "stature > 185 cm AND source != none").ids())
+    weak = set(run_query(mixed_db, "strength.elbow_flexion.max <= 40 AND source != none").ids())
     assert set(failing) == tall | weak
     for person_id, failed in failing.items():
         assert ("stature <= 185 cm" in failed) == (person_id in tall)
@@ -276,7 +280,8 @@ def test_conjuncts_are_the_and_terms(terms):
     # a parenthesised group (AND or OR) is one term
     assert [c.text for c in compiled] == terms
     whole = compile_query(text)
-    assert sum(len(c.params) for c in compiled) == len(whole.params)
+    # the whole query also holds the real-people scope's one parameter (db/scope.py)
+    assert sum(len(c.params) for c in compiled) == len(whole.params) - 1
 
 
 def _sass(*args: str) -> subprocess.CompletedProcess:
@@ -320,7 +325,10 @@ def test_mix_argument_reads_what_it_is_given(mix):
 
     text = ",".join(f"{g}={w!r}" for g, w in mix.items())
     assert mix_argument(text) == mix
-    if sum(mix.values()) > 0:
+    if len(mix) == 1 and max(mix.values()) > 1:  # one share alone is at most 1
+        with pytest.raises(FitError, match="a share from 0 to 1"):
+            check_mix(mix)
+    elif sum(mix.values()) > 0 or len(mix) == 1:
         normalised = check_mix(mix)
         assert sum(normalised.values()) == pytest.approx(1.0)
     else:

@@ -114,7 +114,9 @@ def test_source_labels(default_db, survey):
     assert run_query(default_db, "source = 'ANSUR2'").count() == 6068
     synthetic = run_query(default_db, "source = synthetic").count()
     assert synthetic == 200
-    assert run_query(default_db, "stature > 0 cm").count() == 6068 + synthetic
+    # without a source term a query reaches the real people only; any source term, everyone
+    assert run_query(default_db, "stature > 0 cm").count() == 6068
+    assert run_query(default_db, "stature > 0 cm AND source != none").count() == 6068 + synthetic
 
 
 @pytest.mark.parametrize(
@@ -272,7 +274,7 @@ def test_any_quoted_text_is_a_parameter(default_db, value):
         compiled = compile_query(f"branch = '{value}'")
     except QueryError:
         return  # e.g. characters the grammar does not take
-    assert compiled.params == (value,)
+    assert compiled.params == (value, "synthetic")  # the value, then the real-people scope
     assert "'" not in compiled.where and '"' not in compiled.where  # no literal in the SQL
 
 

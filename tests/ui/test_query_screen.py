@@ -27,8 +27,10 @@ from sass_tui.ui.query_screen import (
 from sass_tui.ui.widgets import GlobalPanel, MenuItem
 
 SIZE = (120, 40)
+# Only the synthetic demonstration people carry strength: the query names their source.
 SAMPLE = (
     "gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb"
+    " AND source = 'synthetic'"
 )
 
 
@@ -100,6 +102,11 @@ async def build_sample_query(pilot, title_log: list[str]) -> None:
     await step("Elbow flexion")
     await step("Greater Than (>)")
     await type_answer(pilot, "20 ft-lb")
+    await step("And")
+    await step("Global Information")
+    await step("Source")
+    await step("Equal (=)")
+    await type_answer(pilot, "synthetic")
 
 
 def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, db, tmp_path):
@@ -141,6 +148,10 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
                 "Anthropometric Group",
                 "Strength Menu",
                 "Relational Operation Menu",
+                "Conjunction Menu",
+                "Query Menu",
+                "Global Information",
+                "Relational Operation Menu",
             ]
             assert app.screen.query_one(QueryPopup).border_title == "Conjunction Menu"
             assert f"Query: {SAMPLE}" in message(app)  # shown live while building
@@ -175,6 +186,7 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
             assert command_slots(app) == ["Disp. Pop.", "Disp. More"]
             panel = str(app.query_one(GlobalPanel).render())
             assert first_two[0] in panel and population.population not in panel
+            assert f"{first_two[0]} (synthetic)" in panel  # never taken for a real person
             with connect(db) as conn:
                 person = fetch_individual(conn, app.query_lists.selected_id(0))
             assert person.name == first_two[0]
@@ -183,7 +195,7 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
 
             out = tmp_path / "person.fig"
             await pilot.press("f")
-            assert f"[{first_two[0]}.fig]" in message(app)
+            assert f"[{first_two[0]}_synthetic.fig]" in message(app)
             app.query_one("#answer").post_message(events.Paste(str(out)))
             await pilot.pause()
             await pilot.press("enter")
@@ -197,7 +209,7 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
             )
             # Export HAnim offers the person's name too, not a percentile figure's.
             await pilot.press("e")
-            assert f"HAnim file name [{first_two[0]}.x3d]:" in message(app)
+            assert f"HAnim file name [{first_two[0]}_synthetic.x3d]:" in message(app)
             await pilot.press("escape")
 
             await pilot.press("x")  # Disp. More -> More Menu -> Next
