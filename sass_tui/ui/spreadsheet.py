@@ -879,7 +879,7 @@ class SpreadsheetScreen(SassScreen):
         if self.session.person is None:
             self.complain("Disp. Indv. first: Disp. More shows more of the selected list.")
             return
-        from sass_tui.ui.query_screen import MoreMenu
+        from sass_tui.ui.more_menu import MoreMenu
 
         def chosen(choice: str | None) -> None:
             if choice is None:
