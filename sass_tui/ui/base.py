@@ -11,8 +11,8 @@ screen's bindings are its own.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import TYPE_CHECKING, cast
+from collections.abc import Callable, Coroutine
+from typing import TYPE_CHECKING, Any, cast
 
 from textual import events
 from textual.binding import Binding
@@ -57,6 +57,24 @@ class SassScreen(Screen):
         kind: str = "prompt",
     ) -> None:
         self.message_line.ask(prompt, on_answer, initial, on_cancel, kind)
+
+    def converse(self, questions: Coroutine[Any, Any, None]) -> None:
+        """Run a command that asks several questions in turn: `questions` is
+        one coroutine that awaits each answer (`answer_to`) and reads top to
+        bottom.  It runs in a worker, inside the message line's
+        conversation; the keys typed from now on are its answers."""
+        line = self.message_line
+        line.hold()
+
+        async def run() -> None:
+            async with line.conversation():
+                await questions
+
+        self.run_worker(run(), group="conversation", exclusive=True)
+
+    async def answer_to(self, prompt: str, initial: str = "") -> str | None:
+        """Ask and wait, in `converse`: the answer, None when cancelled (Escape)."""
+        return await self.message_line.answer_to(prompt, initial)
 
     async def on_key(self, event: events.Key) -> None:
         if self.message_line.prompting:
