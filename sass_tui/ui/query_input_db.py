@@ -29,6 +29,9 @@ INPUT_DB_FILES = (
 )
 
 
+CANCELLED_UNCHANGED = "Input DB cancelled; the database is unchanged."
+
+
 class InputDbCommands(QueryScreenBase):
     def action_input_db(self) -> None:
         """Import person, group and strength files into the database."""
@@ -38,75 +41,68 @@ class InputDbCommands(QueryScreenBase):
         if self.lists is None:
             self.say("The database is not open yet.")
             return
-        self._ask_file({}, 0)
+        self.converse(self._input_db())
 
-    def _ask_file(self, chosen: dict, index: int, problem: str = "") -> None:
-        """Ask for the next file; `problem` (why the last answer was refused)
-        leads the prompt, so the user sees it while answering again."""
-        if index == len(INPUT_DB_FILES):
-            self._import(chosen)
-            return
-        key, title = INPUT_DB_FILES[index]
-
-        def again(problem: str) -> None:
-            # After the answer's prompt has closed, not inside its handler.
-            self.call_later(self._ask_file, chosen, index, problem)
-
-        def answer(text: str) -> None:
+    async def _input_db(self) -> None:
+        """Input DB's questions: a file for each of INPUT_DB_FILES in turn, or
+        an ANSUR II survey file and its source label.  A refused answer is
+        asked again, led by why (the user sees it while answering)."""
+        chosen: dict[str, Path] = {}
+        problem = ""
+        index = 0
+        while index < len(INPUT_DB_FILES):
+            key, title = INPUT_DB_FILES[index]
+            text = await self.answer_to(
+                (f"{problem} " if problem else "")
+                + f"Enter File Name for {title}"
+                + (" (ESC: no strength data)" if index == 4 else "")
+                + ":"
+            )
+            problem = ""
+            if text is None:
+                if key == "strength_par":
+                    break  # no strength data: the person and group files only
+                self.say(CANCELLED_UNCHANGED)
+                return
             name = text.strip()
             if not name:
-                if index < 4:  # person and the three groups must all be given
-                    again(f"A file name for {title} is needed.")
-                    return
                 if index == 4:
-                    self._import(chosen)
-                    return
-                again("A strength file is needed once Strength Parameter is given.")
-                return
+                    break
+                problem = (
+                    f"A file name for {title} is needed."
+                    if index < 4  # person and the three groups must all be given
+                    else "A strength file is needed once Strength Parameter is given."
+                )
+                continue
             try:
                 path = regular_file(name)
             except SassError as exc:
-                again(f"{exc}.")
-                return
+                problem = f"{exc}."
+                continue
             if index == 0:
                 from sass_tui.db.ansur import looks_like_ansur
 
                 if looks_like_ansur(path):  # a survey file holds everything: no group files
-                    self.call_later(self._ask_ansur_label, path)
+                    await self._input_ansur(path)
                     return
-            self._ask_file({**chosen, key: path}, index + 1)
+            chosen[key] = path
+            index += 1
+        self._import(chosen)
 
-        def cancel() -> None:
-            if key == "strength_par":
-                self._import(chosen)
-            else:
-                self.say("Input DB cancelled; the database is unchanged.")
-
-        self.ask(
-            (f"{problem} " if problem else "")
-            + f"Enter File Name for {title}"
-            + (" (ESC: no strength data)" if index == 4 else "")
-            + ":",
-            answer,
-            on_cancel=cancel,
-        )
-
-    def _ask_ansur_label(self, path: Path) -> None:
+    async def _input_ansur(self, path: Path) -> None:
         from sass_tui.db.ansur import DEFAULT_LABEL
 
         default = path.name.split(".")[0] or DEFAULT_LABEL
-
-        def answer(text: str) -> None:
-            label = text.strip() or default
-            work = self.begin_work("ANSUR import")
-            self.say(f"Importing {path.name} as source '{label}' (Esc cancels)...")
-            self.import_ansur(self.lists, path, label, work)
-
-        self.ask(
-            f"{path.name} is an ANSUR II format file. Source label [{default}]:",
-            answer,
-            on_cancel=lambda: self.say("Input DB cancelled; the database is unchanged."),
+        text = await self.answer_to(
+            f"{path.name} is an ANSUR II format file. Source label [{default}]:"
         )
+        if text is None:
+            self.say(CANCELLED_UNCHANGED)
+            return
+        label = text.strip() or default
+        work = self.begin_work("ANSUR import")
+        self.say(f"Importing {path.name} as source '{label}' (Esc cancels)...")
+        self.import_ansur(self.lists, path, label, work)
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def import_ansur(self, lists: QueryLists, path: Path, label: str, work: Work) -> None:
@@ -137,7 +133,7 @@ class InputDbCommands(QueryScreenBase):
         event.stop()
         count, error = event.count, event.error
         if self.end_work() and count is None:
-            self.say("Input DB cancelled; the database is unchanged.")
+            self.say(CANCELLED_UNCHANGED)
         elif count is None:
             self.complain(f"Input DB failed, the database is unchanged: {error}")
         else:

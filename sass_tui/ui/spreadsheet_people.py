@@ -30,6 +30,7 @@ from sass_tui.ui.spreadsheet_base import (
     SheetScreenBase,
     WorkerSaid,
 )
+from sass_tui.ui.widgets.message_line import CANCELLED
 
 if TYPE_CHECKING:  # numpy-heavy: imported when first used, after the first screen (issue 16)
     from sass_tui.model.strength import StrengthData
@@ -54,31 +55,36 @@ class PeopleCommands(SheetScreenBase):
         if self.session.person is None:
             self.complain("Disp. Indv. first: Disp. More shows more of the selected list.")
             return
+        self.converse(self._display_more())
+
+    async def _display_more(self) -> None:
+        """The More Menu's choice; for Nth Person, the number."""
         from sass_tui.ui.more_menu import MoreMenu
 
-        def chosen(choice: str | None) -> None:
-            if choice is None:
-                self.say("Disp. More cancelled.")
-            elif choice == "Nth Person":
-                self.ask("Enter the number:", self._nth_person)
-            else:
-                total = self.sass_app.selected_count()
-                index = {
-                    "First": 0,
-                    "Last": total - 1,
-                    "Previous": self.session.person_index - 1,
-                    "Next": self.session.person_index + 1,
-                }[choice]
-                self.show_person(index)
-
-        self.app.push_screen(MoreMenu(), chosen)
-
-    def _nth_person(self, text: str) -> None:
-        try:
-            number = int(text.strip())
-        except ValueError:
-            raise AnswerError(f"expected a whole number such as 3, got {text.strip()!r}") from None
-        self.show_person(number - 1)
+        choice = await self.choose(MoreMenu())
+        if choice is None:
+            self.say("Disp. More cancelled.")
+            return
+        total = self.sass_app.selected_count()
+        if choice == "Nth Person":
+            text = await self.answer_to("Enter the number:")
+            if text is None:
+                self.say(CANCELLED)
+                return
+            try:
+                index = int(text.strip()) - 1
+            except ValueError:
+                raise AnswerError(
+                    f"expected a whole number such as 3, got {text.strip()!r}"
+                ) from None
+        else:
+            index = {
+                "First": 0,
+                "Last": total - 1,
+                "Previous": self.session.person_index - 1,
+                "Next": self.session.person_index + 1,
+            }[choice]
+        self.show_person(index)
 
     def show_person(self, index: int) -> None:
         total = self.sass_app.selected_count()
@@ -173,18 +179,21 @@ class PeopleCommands(SheetScreenBase):
         except SassError as exc:  # no people of this gender in the database
             self.complain(f"Cannot predict: {exc}")
             return
+        self.converse(self._predict(gender, fields))
+
+    async def _predict(self, gender: str, fields: tuple[str, ...]) -> None:
+        """Predict's question: the known values, with the model's field names
+        suggested while typing."""
         answer = self.message_line.answer
         answer.suggester = KnownSuggester(fields)
-
-        def done(text: str) -> None:
+        try:
+            text = await self.answer_to(KNOWN_PROMPT.format(gender=gender))
+        finally:
             answer.suggester = None
-            self._predict_from(text)
-
-        def cancelled() -> None:
-            answer.suggester = None
+        if text is None:
             self.say("Predict cancelled; nothing changed.")
-
-        self.ask(KNOWN_PROMPT.format(gender=gender), done, on_cancel=cancelled)
+            return
+        self._predict_from(text)
 
     def _predict_from(self, text: str) -> None:
         from sass_tui.model.prediction import split_known

@@ -1,0 +1,122 @@
+"""A command of several questions is one coroutine (SassScreen.converse,
+MessageLine.answer_to): the keys typed are its answers, wherever they land
+before the next question shows; Escape and a refused answer end it on the
+message line; a bug in it is not swallowed."""
+
+from __future__ import annotations
+
+import pytest
+from textual.widgets import Input
+
+from sass_tui.model.figfile import read_fig
+from sass_tui.ui.app import SassApp
+from sass_tui.ui.widgets import DataSheet, MessageLine
+from sass_tui.ui.widgets.message_line import CANCELLED
+
+SIZE = (100, 34)
+
+
+def message(app) -> str:
+    return str(app.screen.query_one("#message").render())
+
+
+async def until(pilot, condition) -> None:
+    for _ in range(200):
+        if condition():
+            return
+        await pilot.pause()
+    raise AssertionError("the condition never held")
+
+
+def test_create_figure_answered_key_by_key_writes_the_figure(drive, tmp_path, monkeypatch):
+    # f (Create Figure), the name, Enter, n (no strength), Enter: no letter
+    # of the name runs a command (b: See figure, u: Undo), and the file is a
+    # figure without strength.
+    monkeypatch.chdir(tmp_path)
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            assert app.session.strength_sheet is not None  # so the strength question comes
+            await pilot.press("f", *"bu.fig", "enter", "n", "enter")
+            await until(pilot, lambda: message(app).startswith("Wrote"))
+            assert app.screen is app.spreadsheet
+            assert not app.spreadsheet.message_line.prompting
+            assert isinstance(app.focused, DataSheet)
+
+    drive(scenario())
+    assert read_fig(tmp_path / "bu.fig").archive == "skinny.a"
+    assert "strength variables" not in (tmp_path / "bu.fig").read_text()
+
+
+def test_escape_and_a_refused_answer_end_the_questions(drive, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            await pilot.press("f")
+            await until(pilot, lambda: "Figure file name" in message(app))
+            await pilot.press("escape")
+            await until(pilot, lambda: message(app) == CANCELLED)
+            assert not app.spreadsheet.message_line.prompting
+            await pilot.press("f", *"x.fig", "enter", *"maybe", "enter")
+            await until(pilot, lambda: "expected y or n" in message(app))
+            assert message(app) == "expected y or n, got 'maybe'; nothing written"
+            assert not app.spreadsheet.message_line.prompting
+            assert isinstance(app.focused, DataSheet)
+
+    drive(scenario())
+    assert not (tmp_path / "x.fig").exists()
+
+
+def test_answers_given_before_the_next_question_are_its_own(drive):
+    # Two Enters handled before the coroutine asks its second question: the
+    # second answer waits for it, in order.
+    answers = []
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+            screen = app.spreadsheet
+
+            async def two_questions():
+                answers.append(await screen.answer_to("First:"))
+                answers.append(await screen.answer_to("Second:"))
+
+            screen.converse(two_questions())
+            await until(pilot, lambda: "First:" in message(app))
+            answer = screen.query_one(MessageLine).answer
+            answer.post_message(Input.Submitted(answer, "one"))
+            answer.post_message(Input.Submitted(answer, "two"))
+            await until(pilot, lambda: len(answers) == 2)
+            await until(pilot, lambda: not screen.message_line.prompting)
+
+    drive(scenario())
+    assert answers == ["one", "two"]
+
+
+def test_a_bug_in_the_questions_is_raised_not_swallowed(drive):
+    class Bug(Exception):
+        pass
+
+    async def scenario():
+        app = SassApp()
+        async with app.run_test(size=SIZE) as pilot:
+            await pilot.pause()
+
+            async def broken():
+                await app.spreadsheet.answer_to("Anything:")
+                raise Bug("a bug, not a user's error")
+
+            app.spreadsheet.converse(broken())
+            await until(pilot, lambda: "Anything:" in message(app))
+            await pilot.press("enter")
+            await pilot.pause()
+            await pilot.pause()
+
+    with pytest.raises(Bug):
+        drive(scenario())
