@@ -424,6 +424,7 @@ def connect(
     create: bool = False,
     check_same_thread: bool = True,
     rebuild: bool = False,
+    read_only: bool = False,
 ) -> sqlite3.Connection:
     """Open a sass database (autocommit mode: writers use transaction()).
 
@@ -432,7 +433,9 @@ def connect(
     newer schema.  A database of schema 1 is migrated (columns and the
     measure table added, nothing removed).  `rebuild` (db init) accepts any
     sass database, whatever its version or state, since it is about to be
-    rebuilt."""
+    rebuilt.  `read_only` (`sass serve --read-only`) opens the file in
+    SQLite's read-only mode: any write to it fails (TEMP tables, where the
+    query lists live, still work)."""
     path = Path(path)
     new_file = not path.exists()
     if new_file and not create:
@@ -443,9 +446,11 @@ def connect(
         path.parent.mkdir(parents=True, exist_ok=True)
         if new_file:
             _check_not_read_only(path)
+    target, uri = (path.resolve().as_uri() + "?mode=ro", True) if read_only else (str(path), False)
     try:
         conn = sqlite3.connect(
-            str(path),
+            target,
+            uri=uri,
             isolation_level=None,
             check_same_thread=check_same_thread,
             timeout=BUSY_TIMEOUT_S,
