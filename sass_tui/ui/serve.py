@@ -76,6 +76,11 @@ class ServeOptions:
         return "https" if self.ssl_context is not None else "http"
 
     @property
+    def secure(self) -> bool:
+        """Browsers reach it over TLS: its own, or a reverse proxy's."""
+        return self.ssl_context is not None or (self.public_url or "").startswith("https:")
+
+    @property
     def base_url(self) -> str:
         """The URL to open (without the token)."""
         if self.public_url:
@@ -287,7 +292,7 @@ def _server_class():  # -> type[textual_serve.server.Server]
                     path="/",
                     httponly=True,
                     samesite="Strict",
-                    secure=options.ssl_context is not None,
+                    secure=options.secure,
                 )
                 return response
             return await handler(request)

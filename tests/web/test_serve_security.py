@@ -294,3 +294,25 @@ def test_a_token_file_gives_the_token(tmp_path):
         assert get(served, f"/?token={token}")[0] == 303
     finally:
         served.stop()
+
+
+def test_behind_a_reverse_proxy_its_public_url_is_this_servers(tmp_path):
+    public = "https://sass.example.org"
+    served = start_serve(
+        tmp_path, "--workdir", "w", "--db", "none.db", "--public-url", public + "/"
+    )
+    try:
+        assert served.url == f"{public}/?token={served.token}"
+        proxied = {"Host": "sass.example.org"}  # nginx: proxy_set_header Host $host
+        status, headers, _ = get(served, f"/?token={served.token}", proxied)
+        assert status == 303
+        assert "Secure" in headers["Set-Cookie"]  # the browser's side is https
+        status, _, page = get(served, "/", {**proxied, "Cookie": served.cookie})
+        assert status == 200
+        assert 'data-session-websocket-url="wss://sass.example.org/ws"' in page
+        evil = {**proxied, **UPGRADE, "Cookie": served.cookie, "Origin": "https://evil.example"}
+        assert get(served, "/ws", evil)[0] == 403
+        assert get(served, "/", {"Host": "other.example.org", "Cookie": served.cookie})[0] == 403
+        assert served.children() == []
+    finally:
+        served.stop()
