@@ -352,7 +352,9 @@ def _server_class():  # -> type[textual_serve.server.Server]
             if options.open_browser:
                 import webbrowser
 
-                webbrowser.open(options.url)
+                # In a thread: a browser that runs in this terminal would block
+                # the server, and by the time one asks, the server listens.
+                asyncio.get_running_loop().run_in_executor(None, webbrowser.open, options.url)
 
         async def on_shutdown(self, app: web.Application) -> None:
             await asyncio.gather(*(service.stop() for service in list(self.sessions)))
