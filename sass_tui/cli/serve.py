@@ -227,9 +227,9 @@ def served_workdir(name: str | None) -> Path:
         import tempfile
         import time
 
-        from platformdirs import user_data_dir
+        from sass_tui.model.paths import data_dir
 
-        base = Path(user_data_dir("sass")) / "serve"
+        base = data_dir() / "serve"
         base.mkdir(parents=True, exist_ok=True)
         stamp = time.strftime("%Y%m%d-%H%M%S-")
         return Path(tempfile.mkdtemp(prefix=stamp, dir=base)).resolve()

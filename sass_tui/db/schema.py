@@ -400,11 +400,13 @@ PERSON_TABLES = (
 
 
 def default_db_path() -> Path:
-    """$SASS_DB, else $XDG_DATA_HOME/sass/sass.db (~/.local/share/sass/sass.db)."""
+    """$SASS_DB, else sass.db in the user's data directory (model/paths.py's
+    data_dir: $XDG_DATA_HOME/sass/sass.db, ~/.local/share/sass/sass.db on Linux)."""
     if os.environ.get("SASS_DB"):
         return Path(os.environ["SASS_DB"])
-    base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
-    return Path(base) / "sass" / "sass.db"
+    from sass_tui.model.paths import data_dir
+
+    return data_dir() / "sass.db"
 
 
 # Attributes of a person besides the model's (ANSUR II's survey fields).

@@ -64,3 +64,30 @@ def regular_file(text: str | Path, workdir: Path | None = None) -> Path:
         kind = "a directory" if stat.S_ISDIR(mode) else "not a regular file"
         raise PathError(f"{path}: {kind}; give a data file")
     return path
+
+
+# --- sass's own directories ----------------------------------------------------------
+# platformdirs knows each system's place ($XDG_*_HOME or ~/.local/share,
+# ~/.cache, ~/.config on Linux; ~/Library/... on macOS; %LOCALAPPDATA% on
+# Windows).  Imported when first asked: `sass query --db F` never needs it.
+
+
+def data_dir() -> Path:
+    """Where sass keeps its database and served sessions' directories."""
+    from platformdirs import user_data_dir
+
+    return Path(user_data_dir("sass", appauthor=False))
+
+
+def cache_dir() -> Path:
+    """Where sass keeps what it can rebuild (the database's column copies)."""
+    from platformdirs import user_cache_dir
+
+    return Path(user_cache_dir("sass", appauthor=False))
+
+
+def config_dir() -> Path:
+    """Where sass keeps the user's settings."""
+    from platformdirs import user_config_dir
+
+    return Path(user_config_dir("sass", appauthor=False))
