@@ -316,3 +316,20 @@ def test_behind_a_reverse_proxy_its_public_url_is_this_servers(tmp_path):
         assert served.children() == []
     finally:
         served.stop()
+
+
+def test_without_the_serve_extra_sass_serve_says_what_to_install(monkeypatch, capsys):
+    import importlib.util
+
+    from sass_tui.cli import main
+
+    real = importlib.util.find_spec
+    monkeypatch.setattr(
+        importlib.util,
+        "find_spec",
+        lambda name, *a: None if name == "textual_serve" else real(name, *a),
+    )
+    assert main(["serve", "--port", "1"]) == 2
+    assert capsys.readouterr().err == (
+        "sass serve: error: sass serve needs textual-serve: pip install 'sass-tui[serve]'\n"
+    )
