@@ -230,6 +230,8 @@ def _server_class():  # -> type[textual_serve.server.Server]
                 await process.wait()
 
     class SassServer(Server):
+        session_class = SessionService
+
         def __init__(self, options: ServeOptions) -> None:
             super().__init__(
                 " ".join(options.command()),
@@ -322,7 +324,7 @@ def _server_class():  # -> type[textual_serve.server.Server]
             websocket = web.WebSocketResponse(heartbeat=15)
             width = _int(request.query.get("width"), 80)
             height = _int(request.query.get("height"), 24)
-            service = SessionService(
+            service = self.session_class(
                 self.options,
                 write_bytes=websocket.send_bytes,
                 write_str=websocket.send_str,
