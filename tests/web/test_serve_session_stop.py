@@ -58,4 +58,4 @@ def test_a_session_process_that_will_not_quit_is_killed(tmp_path):
     took, returncode = asyncio.run(scenario())
     print(f"a stubborn session process was killed {took:.2f} s after its session stopped")
     assert returncode == -9  # SIGKILL: it did not end by itself
-    assert took < 2 * STOP_WAIT_S + 0.5 < 5.0
+    assert 2 * STOP_WAIT_S <= took < 5.0  # it was given its time to quit, then killed
