@@ -333,3 +333,25 @@ def test_without_the_serve_extra_sass_serve_says_what_to_install(monkeypatch, ca
     assert capsys.readouterr().err == (
         "sass serve: error: sass serve needs textual-serve: pip install 'sass-tui[serve]'\n"
     )
+
+
+def test_open_opens_the_printed_url_in_the_browser(tmp_path):
+    # webbrowser runs $BROWSER with the URL for %s: here a script that keeps it.
+    opened = tmp_path / "opened.txt"
+    keep = tmp_path / "keep.py"
+    keep.write_text(f"import sys\nopen({str(opened)!r}, 'w').write(sys.argv[1])\n")
+    served = start_serve(
+        tmp_path,
+        "--workdir",
+        "w",
+        "--db",
+        "none.db",
+        "--open",
+        env={"BROWSER": f"{sys.executable} {keep} %s"},
+    )
+    try:
+        wait_until(opened.exists, 20, "the browser was never opened")
+        wait_until(lambda: opened.read_text(), 20, "the browser got no URL")
+        assert opened.read_text() == served.url
+    finally:
+        served.stop()
