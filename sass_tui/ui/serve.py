@@ -85,10 +85,8 @@ class ServeOptions:
         """The URL to open (without the token)."""
         if self.public_url:
             return self.public_url.rstrip("/") + "/"
-        host = self.host
-        if self.loopback:
-            host = "localhost"
-        elif host in ("0.0.0.0", "::", ""):  # every interface: name this machine
+        host = self.host  # the name or address given, which the server listens on
+        if host in ("0.0.0.0", "::", ""):  # every interface: name this machine
             import socket
 
             host = socket.getfqdn()

@@ -355,3 +355,12 @@ def test_open_opens_the_printed_url_in_the_browser(tmp_path):
         assert opened.read_text() == served.url
     finally:
         served.stop()
+
+
+def test_a_loopback_address_is_printed_as_given(tmp_path):
+    served = start_serve(tmp_path, "--host", "127.0.0.1", "--workdir", "w", "--db", "none.db")
+    try:
+        assert served.url.startswith(f"http://127.0.0.1:{served.port}/?token=")
+        assert get(served, f"/?token={served.token}", host="127.0.0.1")[0] == 303
+    finally:
+        served.stop()
