@@ -347,14 +347,19 @@ def _server_class():  # -> type[textual_serve.server.Server]
             return websocket
 
         async def on_startup(self, app: web.Application) -> None:
+            pass  # textual-serve prints its logo here; `listening` says what matters
+
+        def listening(self, *_: object) -> None:
+            """Called by aiohttp once the server listens (run_app's `print`):
+            the URL is printed, and opened, only when it can be opened."""
             options = self.options
             print(f"sass serve: open {options.url}", flush=True)
             if options.open_browser:
+                import threading
                 import webbrowser
 
-                # In a thread: a browser that runs in this terminal would block
-                # the server, and by the time one asks, the server listens.
-                asyncio.get_running_loop().run_in_executor(None, webbrowser.open, options.url)
+                # In a thread: a browser that runs in this terminal would block the server.
+                threading.Thread(target=webbrowser.open, args=(options.url,), daemon=True).start()
 
         async def on_shutdown(self, app: web.Application) -> None:
             await asyncio.gather(*(service.stop() for service in list(self.sessions)))
@@ -378,7 +383,7 @@ def _server_class():  # -> type[textual_serve.server.Server]
                 ssl_context=self.options.ssl_context,
                 handle_signals=False,
                 loop=loop,
-                print=lambda *args: None,
+                print=self.listening,
                 access_log=None,
                 shutdown_timeout=2 * STOP_WAIT_S,
             )

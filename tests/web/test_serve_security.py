@@ -11,6 +11,7 @@ import asyncio
 import http.client
 import re
 import shutil
+import socket
 import ssl
 import subprocess
 import sys
@@ -364,3 +365,25 @@ def test_a_loopback_address_is_printed_as_given(tmp_path):
         assert get(served, f"/?token={served.token}", host="127.0.0.1")[0] == 303
     finally:
         served.stop()
+
+
+def test_a_port_in_use_is_said_and_no_url_printed(tmp_path):
+    with socket.socket() as busy:
+        busy.bind(("127.0.0.1", 0))
+        busy.listen()
+        port = busy.getsockname()[1]
+        done = sass_serve(
+            "--host",
+            "127.0.0.1",
+            "--port",
+            str(port),
+            "--workdir",
+            "w",
+            "--db",
+            "none.db",
+            cwd=tmp_path,
+        )
+    assert done.returncode == 2
+    assert "address already in use" in done.stderr
+    assert "Traceback" not in done.stderr
+    assert "token=" not in done.stdout + done.stderr
