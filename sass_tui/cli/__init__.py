@@ -3,7 +3,7 @@
 Each verb module has `register(commands)` (its arguments; imports nothing
 heavy) and sets `func` to a function of the parsed arguments that returns
 the exit status.  Only plain `sass` (the TUI) imports Textual, and only
-when run; numpy, sqlite3, lark and pint wait until a verb needs them.
+when run; numpy, sqlite3 and lark wait until a verb needs them.
 """
 
 from __future__ import annotations

@@ -635,8 +635,9 @@ def _cache_folder(path: Path) -> Path:
 
     base = CACHE_DIR
     if base is None:
-        xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-        base = Path(xdg) / "sass" / "columns"
+        from sass_tui.model.paths import cache_dir
+
+        base = cache_dir() / "columns"
     digest = hashlib.sha256(str(path.resolve()).encode()).hexdigest()[:16]
     return base / digest
 

@@ -61,9 +61,9 @@ class QueryLists:
         self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
 
     @classmethod
-    def open(cls, path: str | Path) -> QueryLists:
+    def open(cls, path: str | Path, read_only: bool = False) -> QueryLists:
         # The query runs in a worker thread; the lock makes sharing the connection safe.
-        return cls(connect(path, check_same_thread=False))
+        return cls(connect(path, check_same_thread=False, read_only=read_only))
 
     def close(self) -> None:
         self.conn.close()

@@ -425,11 +425,13 @@ PERSON_TABLES = (
 
 
 def default_db_path() -> Path:
-    """$SASS_DB, else $XDG_DATA_HOME/sass/sass.db (~/.local/share/sass/sass.db)."""
+    """$SASS_DB, else sass.db in the user's data directory (model/paths.py's
+    data_dir: $XDG_DATA_HOME/sass/sass.db, ~/.local/share/sass/sass.db on Linux)."""
     if os.environ.get("SASS_DB"):
         return Path(os.environ["SASS_DB"])
-    base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
-    return Path(base) / "sass" / "sass.db"
+    from sass_tui.model.paths import data_dir
+
+    return data_dir() / "sass.db"
 
 
 # Attributes of a person besides the model's (ANSUR II's survey fields).
@@ -450,6 +452,7 @@ def connect(
     create: bool = False,
     check_same_thread: bool = True,
     rebuild: bool = False,
+    read_only: bool = False,
 ) -> sqlite3.Connection:
     """Open a sass database (autocommit mode: writers use transaction()).
 
@@ -458,7 +461,9 @@ def connect(
     newer schema.  A database of schema 1 is migrated (columns and the
     measure table added, nothing removed).  `rebuild` (db init) accepts any
     sass database, whatever its version or state, since it is about to be
-    rebuilt."""
+    rebuilt.  `read_only` (`sass serve --read-only`) opens the file in
+    SQLite's read-only mode: any write to it fails (TEMP tables, where the
+    query lists live, still work)."""
     path = Path(path)
     new_file = not path.exists()
     if new_file and not create:
@@ -469,9 +474,11 @@ def connect(
         path.parent.mkdir(parents=True, exist_ok=True)
         if new_file:
             _check_not_read_only(path)
+    target, uri = (path.resolve().as_uri() + "?mode=ro", True) if read_only else (str(path), False)
     try:
         conn = sqlite3.connect(
-            str(path),
+            target,
+            uri=uri,
             isolation_level=None,
             check_same_thread=check_same_thread,
             timeout=BUSY_TIMEOUT_S,

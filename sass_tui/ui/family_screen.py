@@ -19,7 +19,6 @@ from textual.widgets import DataTable, Footer, Label
 from textual_plotext import PlotextPlot
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import user_path
 from sass_tui.model.vocabulary import GENDERS
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
@@ -255,7 +254,7 @@ class FamilyScreen(SassScreen):
         # while the directory is asked.
         self.ask(
             f"Directory for the family's files [{default}]:",
-            lambda text: self._write_to(family, user_path(text.strip() or default)),
+            lambda text: self._write_to(family, self.sass_app.user_path(text.strip() or default)),
         )
 
     def _write_to(self, family: Family, directory: Path) -> None:

@@ -18,7 +18,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import user_path
 
 if TYPE_CHECKING:
     from sass_tui.model.figure import Figure
@@ -37,7 +36,8 @@ def ask_gltf_export(screen: SassScreen, figure: Figure, default: str) -> None:
 def _ask_pose(screen: SassScreen, figure: Figure, name: str) -> None:
     from sass_tui.model.gltf import POSES, check_path, pose_of
 
-    path = check_path(user_path(name))  # refused before the next prompt
+    # A served session's file stays in its working directory (SassApp.user_path).
+    path = check_path(screen.sass_app.user_path(name))  # refused before the next prompt
 
     def posed(answer: str) -> None:
         _export(screen, figure, path, pose_of(answer))

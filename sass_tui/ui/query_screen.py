@@ -30,7 +30,6 @@ from sass_tui.db.flatfile import FlatFiles
 from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.query import demonstration_hint
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import regular_file
 from sass_tui.model.text import printable
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.commands import CommandSpec
@@ -466,12 +465,13 @@ class QueryScreen(SassScreen):
         from sass_tui.db.schema import default_db_path
 
         path = db_path or default_db_path()
-        building = db_path is None and default_needs_building(path)
+        read_only = self.sass_app.read_only  # served --read-only: never built nor changed
+        building = db_path is None and not read_only and default_needs_building(path)
         try:
             if building:
                 self.post_message(DatabaseFailed(f"Creating the default database {path} ..."))
                 create_default_database(path, work.report, cancel=work.cancel)
-            lists = QueryLists.open(path)
+            lists = QueryLists.open(path, read_only=read_only)
         except Cancelled as exc:
             if building:  # rolled back: the empty file must not pass for the database
                 for leftover in (path, Path(f"{path}-journal"), Path(f"{path}-wal")):
@@ -786,13 +786,12 @@ class QueryScreen(SassScreen):
             if not name:
                 self.say("Make Population cancelled: no file name given.")
                 return
+            path = self.sass_app.user_path(name)
             work = self.begin_work("Make Population")
             self.say(f"Making the population of {len(ids):,} selected people (Esc cancels)...")
             sources = " OR ".join(f"({q})" for q in self.selected_from) or "selection"
             title = f"Population of {len(ids):,} selected from {sources}"
-            self.make_population(
-                self.lists, tuple(ids), Path(name).expanduser(), title, work, self.target
-            )
+            self.make_population(self.lists, tuple(ids), path, title, work, self.target)
 
         self.ask(
             f"Population of the {len(ids):,} selected people: file name "
@@ -912,6 +911,9 @@ class QueryScreen(SassScreen):
         if self.lists is None:
             self.say("The database is not open yet.")
             return
+        if self.sass_app.read_only:
+            self.complain("Input DB is off: this database is served read-only (sass serve).")
+            return
         self._ask_file({}, 0)
 
     def _ask_file(self, chosen: dict, index: int, problem: str = "") -> None:
@@ -938,7 +940,7 @@ class QueryScreen(SassScreen):
                 again("A strength file is needed once Strength Parameter is given.")
                 return
             try:
-                path = regular_file(name)
+                path = self.sass_app.regular_file(name)
             except SassError as exc:
                 again(f"{exc}.")
                 return

@@ -34,7 +34,6 @@ from sass_tui.model.names import (
     JOINT_LIMITS,
     STRENGTH,
 )
-from sass_tui.model.paths import regular_file, user_path
 from sass_tui.model.popfile import PopulationData, read_population_file
 from sass_tui.model.session import Session
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, other_unit, parse_quantity
@@ -466,7 +465,7 @@ class SpreadsheetScreen(SassScreen):
         if self.data_group == STRENGTH and self._strength_data_set(text.strip().lower()):
             return
         # Refused here, before any worker opens it: a FIFO would block it forever.
-        path = regular_file(text.strip())
+        path = self.sass_app.regular_file(text.strip())
         self.say(f"Reading {text.strip()} ...")
         self.read_data_file(path, self.data_group)
 
@@ -575,7 +574,7 @@ class SpreadsheetScreen(SassScreen):
         )
 
     def _create_figure_named(self, name: str) -> None:
-        path = user_path(name)
+        path = self.sass_app.user_path(name)
         strength = self.session.strength_sheet
         if strength is None:
             self._write_unless_kept(path, lambda: self._write_figure(path, []))
@@ -642,7 +641,7 @@ class SpreadsheetScreen(SassScreen):
         default = self._default_name(".x3d")
         self.ask(
             f"HAnim file name [{default}]:",
-            lambda text: self._export_hanim_named(user_path(text.strip() or default)),
+            lambda text: self._export_hanim_named(self.sass_app.user_path(text.strip() or default)),
         )
 
     def _export_hanim_named(self, path: Path) -> None:

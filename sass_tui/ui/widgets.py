@@ -31,6 +31,7 @@ from sass_tui.model.names import AXES, GIRTH, GROUP_TITLES, STRENGTH
 from sass_tui.model.text import printable
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert
 from sass_tui.ui.commands import CommandSpec
+from sass_tui.ui.textual_api import bindings_of
 
 # Characters that start typing a new number straight into the message line.
 NUMBER_START = set("0123456789.-+")
@@ -120,7 +121,7 @@ class EditorKeys:
             event.stop()
             event.prevent_default()
             self.start_typing("")
-        elif event.key not in self._bindings.key_to_bindings:  # type: ignore[attr-defined]
+        elif event.key not in bindings_of(self).key_to_bindings:  # type: ignore[arg-type]
             # Not this widget's (its arrows are): the screen's, in this order.
             event.stop()
             event.prevent_default()
