@@ -50,12 +50,13 @@ for the next process, which brings it up to date through the log as well.
 from __future__ import annotations
 
 import os
-import re
 import sqlite3
 import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
+
+from sass_tui.db.query_tree import And, Comparison
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterable
@@ -64,6 +65,7 @@ if TYPE_CHECKING:
     import numpy.typing as npt
 
     from sass_tui.db.query import CompiledQuery
+    from sass_tui.db.query_tree import Expr
 
 MIN_PEOPLE = 200_000
 # A text column with more different values than this is left to SQLite.
@@ -71,97 +73,26 @@ MAX_WORDS = 200
 # Where the copies live; None: $XDG_CACHE_HOME/sass/columns (~/.cache/sass/columns).
 CACHE_DIR: Path | None = None
 
-_COMPARISON = re.compile(r"([a-z_][a-z0-9_]*)\.([a-z_][a-z0-9_]*) (<=|>=|!=|<|>|=) \?")
-_TOKEN = re.compile(r"\s*(?:(\()|(\))|(AND)\b|(OR)\b|" + _COMPARISON.pattern + ")")
-
 
 class Unsupported(Exception):
     """The copy cannot answer this query or database provably alike: SQLite answers."""
 
 
-# --- the WHERE clause ------------------------------------------------------
+# --- the query tree ------------------------------------------------------
 
-
-@dataclass(frozen=True)
-class Comparison:
-    table: str
-    column: str
-    op: str
-    value: object
-
-
-# A parsed WHERE: a Comparison, or ("AND" | "OR", [operands]).
+# The copy evaluates the query's own tree (db/query_tree.py): a Comparison,
+# or ("AND" | "OR", [operands]).
 Node = Any
 
 
-def parse_where(where: str, params: tuple[object, ...], aliases: dict[str, str]) -> Node:
-    """The compiled WHERE as a tree, or Unsupported for any other SQL."""
-    tokens: list[tuple[str, Any]] = []
-    pos = 0
-    values = iter(params)
-    while pos < len(where):
-        if where[pos:].strip() == "":
-            break
-        m = _TOKEN.match(where, pos)
-        if m is None and where[pos:].lstrip().startswith("COLLATE NOCASE"):
+def tree_node(expr: Expr) -> Node:
+    """The query tree as the copy evaluates it, or Unsupported."""
+    if isinstance(expr, Comparison):
+        if expr.nocase:
             raise Unsupported("it compares a word without regard to case, which SQLite does")
-        if m is None:
-            raise Unsupported(f"SQL not understood at {where[pos : pos + 20]!r}")
-        pos = m.end()
-        if m.group(1):
-            tokens.append(("(", None))
-        elif m.group(2):
-            tokens.append((")", None))
-        elif m.group(3):
-            tokens.append(("AND", None))
-        elif m.group(4):
-            tokens.append(("OR", None))
-        else:
-            alias, column, op = m.group(5), m.group(6), m.group(7)
-            if alias not in aliases:
-                raise Unsupported(f"unknown alias {alias}")
-            try:
-                value = next(values)
-            except StopIteration:
-                raise Unsupported("fewer parameters than placeholders") from None
-            tokens.append(("CMP", Comparison(aliases[alias], column, op, value)))
-    if next(values, StopIteration) is not StopIteration:
-        raise Unsupported("more parameters than placeholders")
-    tree, rest = _expr(tokens, 0)
-    if rest != len(tokens):
-        raise Unsupported("trailing SQL")
-    return tree
-
-
-def _expr(tokens: list[tuple[str, Any]], i: int) -> tuple[Node, int]:
-    return _chain(tokens, i, "OR", _term)
-
-
-def _term(tokens: list[tuple[str, Any]], i: int) -> tuple[Node, int]:
-    return _chain(tokens, i, "AND", _factor)
-
-
-def _chain(tokens: list[tuple[str, Any]], i: int, word: str, operand: Any) -> tuple[Node, int]:
-    first, i = operand(tokens, i)
-    items = [first]
-    while i < len(tokens) and tokens[i][0] == word:
-        item, i = operand(tokens, i + 1)
-        items.append(item)
-    return (first if len(items) == 1 else (word, items)), i
-
-
-def _factor(tokens: list[tuple[str, Any]], i: int) -> tuple[Node, int]:
-    if i >= len(tokens):
-        raise Unsupported("SQL ends early")
-    kind, value = tokens[i]
-    if kind == "CMP":
-        return value, i + 1
-    if kind == "(":
-        node, i = _expr(tokens, i + 1)
-        if i >= len(tokens) or tokens[i][0] != ")":
-            raise Unsupported("unbalanced parentheses")
-        return node, i + 1
-    raise Unsupported(f"unexpected {kind}")
+        return expr
+    word = "AND" if isinstance(expr, And) else "OR"
+    return (word, [tree_node(term) for term in expr.terms])
 
 
 # --- the data version ------------------------------------------------------
@@ -876,7 +807,7 @@ def _matches(conn: sqlite3.Connection, compiled: CompiledQuery) -> tuple[Any, Co
     for table in aliases.values():
         if table != "person" and not _one_row_per_person(conn, table):
             raise Unsupported(f"{table} is not one row per person")
-    tree = parse_where(compiled.where, compiled.params, aliases)
+    tree = tree_node(compiled.tree)
     wanted = _wanted(tree)
     path = database_path(conn)
     key = data_version(conn)
@@ -998,8 +929,7 @@ class Refreshed:
 def columns_named(compiled: CompiledQuery) -> set[tuple[str, str]]:
     """The (table, column) pairs a compiled query reads; Unsupported if the
     copy cannot answer it (SQLite will)."""
-    aliases = {"p": "person"} | {alias: table for alias, table in compiled.tables}
-    return _wanted(parse_where(compiled.where, compiled.params, aliases))
+    return _wanted(tree_node(compiled.tree))
 
 
 def refresh(

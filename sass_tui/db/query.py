@@ -25,7 +25,6 @@ For the UI: `Query.count()` and `Query.page(offset, limit)` (or
 from __future__ import annotations
 
 import math
-import re
 import sqlite3
 from collections.abc import Iterable, Iterator
 from functools import lru_cache
@@ -46,6 +45,17 @@ from sass_tui.db._query_parser import (
     UnexpectedToken,
     VisitError,
     v_args,
+)
+from sass_tui.db.query_tree import (
+    PERSON_TABLE,
+    And,
+    Comparison,
+    Dialect,
+    Expr,
+    Or,
+    aliases,
+    names_field,
+    to_sql,
 )
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
@@ -127,10 +137,14 @@ def parser() -> Lark:
 
 
 class CompiledQuery(NamedTuple):  # not a dataclass: see model.names.Row
+    """A query checked and compiled: its tree (db/query_tree.py) and the tree's
+    SQLite condition; `sql(dialect)` gives another engine's."""
+
     text: str
     where: str
     params: tuple[object, ...]
     tables: tuple[tuple[str, str], ...]  # (alias, table) joined to person p
+    tree: Expr
 
     def from_clause(self) -> str:
         joins = "".join(
@@ -139,45 +153,51 @@ class CompiledQuery(NamedTuple):  # not a dataclass: see model.names.Row
         )
         return f"person p{joins}"
 
+    def sql(self, dialect: Dialect) -> tuple[str, tuple[object, ...]]:
+        """The WHERE condition and its parameters in `dialect`, under the same aliases."""
+        alias_of = {"person": "p"} | {table: alias for alias, table in self.tables}
+        where, params = to_sql(self.tree, dialect, alias_of)
+        return where, tuple(params)
 
-# What the compiler makes of a subtree: SQL and its parameters; of a value: (kind, token, unit).
-_Fragment = tuple[str, list[object]]
+    def names_field(self, name: str) -> bool:
+        """Whether the query compares `name` (e.g. `source`) anywhere."""
+        return names_field(self.tree, name)
+
+
+# What the builder makes of a value: (kind, token, unit).
 _Value = tuple[str, Token, "Token | None"]
 
 
-class _Compiler(Transformer[Token, _Fragment]):
+class _TreeBuilder(Transformer[Token, Expr]):
+    """The lark parse -> the typed tree, every field resolved and every value
+    checked and converted to its stored unit (errors point at the token)."""
+
     def __init__(self, text: str):
         super().__init__()
         self.text = text
-        self.tables: dict[str, str] = {}  # table -> alias
+        self.tables: dict[str, None] = {}  # tables named so far, in order
         self._field_token: Token | None = None
 
-    def _alias(self, table: str) -> str:
+    def _count_table(self, table: str) -> None:
         if table not in self.tables and len(self.tables) >= MAX_JOINED_TABLES:
             self._fail(
                 f"the query uses more than {MAX_JOINED_TABLES} different segments, joints "
                 "and motions; split it",
                 self._field_token,
             )
-        return self.tables.setdefault(table, f"t{len(self.tables)}")
+        self.tables.setdefault(table, None)
 
     def _fail(self, message: str, token: Token | None) -> NoReturn:
         raise QueryError(message, self.text, getattr(token, "column", None))
 
-    def or_expr(self, items: list[_Fragment]) -> _Fragment:
-        return (
-            "(" + " OR ".join(sql for sql, _ in items) + ")",
-            [p for _, ps in items for p in ps],
-        )
+    def or_expr(self, items: list[Expr]) -> Expr:
+        return Or(tuple(items))
 
-    def and_expr(self, items: list[_Fragment]) -> _Fragment:
-        return (
-            "(" + " AND ".join(sql for sql, _ in items) + ")",
-            [p for _, ps in items for p in ps],
-        )
+    def and_expr(self, items: list[Expr]) -> Expr:
+        return And(tuple(items))
 
     def field(self, names: list[Token]) -> list[Token]:
-        self._field_token = names[0]  # for _alias's error: the field being resolved
+        self._field_token = names[0]  # for _count_table's error: the field being resolved
         return list(names)
 
     @v_args(inline=True)
@@ -193,8 +213,9 @@ class _Compiler(Transformer[Token, _Fragment]):
         return ("text", value, None)
 
     @v_args(inline=True)
-    def comparison(self, names: list[Token], op: Token, value: _Value) -> _Fragment:
-        alias, column, unit, words = self._resolve(names)
+    def comparison(self, names: list[Token], op: Token, value: _Value) -> Comparison:
+        table, column, unit, words = self._resolve(names)
+        field = ".".join(str(n).lower() for n in names)
         sql_op = _OPERATORS[str(op)]
         kind, token, unit_token = value
         if words is TEXT:
@@ -207,13 +228,7 @@ class _Compiler(Transformer[Token, _Fragment]):
             if sql_op not in ("=", "!="):
                 self._fail(f"{'.'.join(names)} can only be compared with = or !=", op)
             value_text = _unquote(token) if kind == "text" else str(token)
-            null_test = "IS NOT NULL" if sql_op == "=" else "IS NULL OR"
-            if sql_op == "=":
-                return (f"{alias}.{column} = ? COLLATE NOCASE", [value_text])
-            return (
-                f"({alias}.{column} {null_test} {alias}.{column} != ? COLLATE NOCASE)",
-                [value_text],
-            )
+            return Comparison(field, table, column, sql_op, value_text, nocase=True)
         if words is not None:
             if kind == "text":
                 # lark's stand-alone generator defines _T three times, so mypy reads this
@@ -225,7 +240,7 @@ class _Compiler(Transformer[Token, _Fragment]):
                 )
             if sql_op not in ("=", "!="):
                 self._fail(f"{'.'.join(names)} can only be compared with = or !=", op)
-            return (f"{alias}.{column} {sql_op} ?", [token.lower()])
+            return Comparison(field, table, column, sql_op, token.lower())
         if kind != "number":
             self._fail(f"{'.'.join(names)} needs a number, not {str(token)!r}", token)
         number = float(token)
@@ -240,15 +255,16 @@ class _Compiler(Transformer[Token, _Fragment]):
                 number = convert(number, unit_name(str(unit_token)), unit)
             except UnitError as exc:
                 self._fail(f"{exc}", unit_token)
-        return (f"{alias}.{column} {sql_op} ?", [number])
+        return Comparison(field, table, column, sql_op, number)
 
     def _resolve(self, names: list[Token]) -> FieldInfo:
         try:
             table, column, unit, words = resolve_field([str(n) for n in names])
         except _FieldError as exc:
             self._fail(str(exc), names[min(exc.part, len(names) - 1)])
-        alias = "p" if table == "person" else self._alias(table)
-        return alias, column, unit, words
+        if table != "person":
+            self._count_table(table)
+        return table, column, unit, words
 
 
 class _FieldError(Exception):
@@ -330,7 +346,16 @@ MAX_NESTING = 50
 MAX_COMPARISONS = 200
 MAX_LENGTH = 20_000
 MAX_JOINED_TABLES = 63  # SQLite joins at most 64 tables: person and 63 more
-_COMPARISON_OPERATOR = re.compile(r"<=|>=|!=|<>|[<>=≤≥≠]")
+# The grammar's comparison operators, the two-character ones first (OP in db/query_grammar.py).
+_OPERATOR_SPELLINGS = ("<=", ">=", "!=", "<>", "<", ">", "=", "≤", "≥", "≠")
+
+
+def _operator_at(text: str, column: int) -> int:
+    """The length of the comparison operator starting at `column`, 0 if none."""
+    for spelling in _OPERATOR_SPELLINGS:
+        if text.startswith(spelling, column):
+            return len(spelling)
+    return 0
 
 
 def _check_size(text: str) -> None:
@@ -361,8 +386,8 @@ def _check_size(text: str) -> None:
         elif char == ")":
             depth -= 1
         else:
-            match = _COMPARISON_OPERATOR.match(text, column)
-            if match:
+            length = _operator_at(text, column)
+            if length:
                 comparisons += 1
                 if comparisons > MAX_COMPARISONS:
                     raise QueryError(
@@ -371,7 +396,7 @@ def _check_size(text: str) -> None:
                         text,
                         column + 1,
                     )
-                column = match.end()
+                column += length
                 continue
         column += 1
 
@@ -400,19 +425,21 @@ def compile_query(text: str) -> CompiledQuery:
         ) from None
     except UnexpectedInput as exc:  # pragma: no cover - other lark errors
         raise QueryError(str(exc), text, getattr(exc, "column", None)) from None
-    compiler = _Compiler(text)
+    builder = _TreeBuilder(text)
     try:
-        where, params = compiler.transform(tree)
+        expr: Expr = builder.transform(tree)
     except VisitError as exc:
         if isinstance(exc.orig_exc, QueryError):
             raise exc.orig_exc from None
         raise
-    return CompiledQuery(
-        text,
-        where,
-        tuple(params),
-        tuple((alias, table) for table, alias in compiler.tables.items()),
-    )
+    return _compiled(text, expr, aliases(expr))
+
+
+def _compiled(text: str, expr: Expr, alias_of: dict[str, str]) -> CompiledQuery:
+    """The tree with its SQLite condition, joined under `alias_of`."""
+    where, params = to_sql(expr, "sqlite", alias_of)
+    joined = tuple((alias, table) for table, alias in alias_of.items() if table != PERSON_TABLE)
+    return CompiledQuery(text, where, tuple(params), joined, expr)
 
 
 _TOKEN_WORDS = {
@@ -545,18 +572,16 @@ def compile_conjuncts(text: str) -> tuple[CompiledQuery, ...]:
         if tree.data == "and_expr" and not whole_group
         else [tree]
     )
-    compiler = _Compiler(text)
-    compiled: list[tuple[str, str, list[object]]] = []
+    builder = _TreeBuilder(text)
+    built: list[tuple[str, Expr]] = []
     for term in terms:
-        sql, params = compiler.transform(term)
         label = text[term.meta.start_pos : term.meta.end_pos]
         if term.data in ("or_expr", "and_expr"):  # only a parenthesised group is a tree here
             label = f"({label})"
-        compiled.append((" ".join(label.split()), sql, params))
-    tables = tuple((alias, table) for table, alias in compiler.tables.items())
-    return tuple(
-        CompiledQuery(label, sql, tuple(params), tables) for label, sql, params in compiled
-    )
+        built.append((" ".join(label.split()), builder.transform(term)))
+    # One alias per table over all the terms, so they can share one FROM clause.
+    alias_of = aliases(And(tuple(expr for _, expr in built)))
+    return tuple(_compiled(label, expr, alias_of) for label, expr in built)
 
 
 def _parenthesised(text: str, start: int) -> bool:

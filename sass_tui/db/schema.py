@@ -22,7 +22,6 @@ No Textual import here.
 from __future__ import annotations
 
 import os
-import re
 import sqlite3
 from collections.abc import Iterable, Sequence
 from functools import lru_cache
@@ -571,7 +570,10 @@ def migrate_1_to_2(conn: sqlite3.Connection) -> None:
         for column, kind in zip(PERSON_ATTRIBUTES, ("TEXT", "TEXT", "INTEGER", "INTEGER", "TEXT")):
             conn.execute(f"ALTER TABLE person ADD COLUMN {column} {kind}")
         for statement in _schema_statements():
-            if re.search(r"CREATE (TABLE|TRIGGER) measure", statement):
+            code = " ".join(
+                line for line in statement.splitlines() if not line.lstrip().startswith("--")
+            ).lstrip()
+            if code.startswith(("CREATE TABLE measure", "CREATE TRIGGER measure")):
                 conn.execute(statement)
         conn.execute("UPDATE meta SET value = '2' WHERE key = 'schema_version'")
 
