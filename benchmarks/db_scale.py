@@ -42,7 +42,7 @@ from sass_tui.db import accelerator
 from sass_tui.db.individual import _fetch_individual, fetch_individual
 from sass_tui.db.lists import QueryLists
 from sass_tui.db.query import run_query
-from sass_tui.db.schema import PERSON_TABLES, connect, delete_people, new_generation
+from sass_tui.db.schema import PERSON_TABLES, connect, delete_people
 
 MILLION = 1_000_000
 MAPPED = 17179869184  # connect()'s memory map before this change (PRAGMA mmap_size)
@@ -255,7 +255,6 @@ def small_write(conn: sqlite3.Connection, people: int, seed: int) -> None:
     copied, deleted = picked[:10], picked[10:]
     top = conn.execute("SELECT max(id_num) FROM person").fetchone()[0]
     conn.execute("BEGIN IMMEDIATE")
-    new_generation(conn)
     for k, id_num in enumerate(copied, 1):
         for table in ("person",) + PERSON_TABLES:
             columns, select = copied_columns(conn, table, str(top + k))

@@ -16,7 +16,7 @@ including those with none), as the SQLite compiler always did.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Literal
 
@@ -97,15 +97,22 @@ def placeholder(dialect: Dialect) -> str:
 
 
 def to_sql(
-    expr: Expr, dialect: Dialect, alias_of: dict[str, str] | None = None
+    expr: Expr,
+    dialect: Dialect,
+    alias_of: dict[str, str] | None = None,
+    column_sql: Callable[[Comparison], str] | None = None,
 ) -> tuple[str, list[object]]:
     """The WHERE condition of `expr` in `dialect` and its parameters (the
     user's values travel only as parameters).  `alias_of` maps each table
-    to the name the FROM clause gives it (default: `aliases(expr)`)."""
-    names = aliases(expr) if alias_of is None else alias_of
+    to the name the FROM clause gives it (default: `aliases(expr)`);
+    `column_sql` names a compared column otherwise (the DuckDB copy's one
+    wide table, db/accelerator.py)."""
+    names = aliases(expr) if alias_of is None and column_sql is None else alias_of or {}
     mark = placeholder(dialect)
     if isinstance(expr, Comparison):
-        column = f"{names[expr.table]}.{expr.column}"
+        column = (
+            column_sql(expr) if column_sql is not None else f"{names[expr.table]}.{expr.column}"
+        )
         if expr.nocase:
             if dialect == "sqlite":
                 equal = f"{column} = {mark} COLLATE NOCASE"
@@ -119,7 +126,7 @@ def to_sql(
             return f"({column} IS NULL OR {differ})", [expr.value]
         return f"{column} {expr.op} {mark}", [expr.value]
     joiner = " AND " if isinstance(expr, And) else " OR "
-    parts = [to_sql(term, dialect, names) for term in expr.terms]
+    parts = [to_sql(term, dialect, names, column_sql) for term in expr.terms]
     return "(" + joiner.join(sql for sql, _ in parts) + ")", [p for _, ps in parts for p in ps]
 
 
