@@ -8,7 +8,7 @@ from collections.abc import Iterable
 from itertools import islice
 from typing import TextIO
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_database
 
 
 def register(commands: SubParsers) -> None:
@@ -18,8 +18,8 @@ def register(commands: SubParsers) -> None:
     query.add_argument(
         "--count",
         action="store_true",
-        help="print only how many people match (on 200,000 people and more counted "
-        "from the column copy, see `sass db copy`)",
+        help="print only how many people match (on 200,000 people and more in a "
+        "SQLite file counted by DuckDB from a column copy, see `sass db copy`)",
     )
     query.add_argument(
         "query", metavar="QUERY", help='e.g. "gender = male AND girth.right_upper_arm.z > 28 cm"'
@@ -28,14 +28,21 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from sass_tui.db.query import PERSON_FIELDS, Query, compile_query
+    from sass_tui.db.query import compile_query
 
     compiled = compile_query(args.query)  # before opening: a bad query touches nothing
-    conn = open_db(args)
-    query = Query(conn, compiled)
+    db = open_database(args)
+    with db.connection():  # engine errors (a server gone mid-listing) as messages
+        _answer(args, db.query(compiled))
+    return 0
+
+
+def _answer(args: argparse.Namespace, query) -> None:  # query: db.query.Query
+    from sass_tui.db.query import PERSON_FIELDS
+
     if args.count:
         print(query.count())
-        return 0
+        return
     rows = query.person_rows()  # tuples in PERSON_FIELDS order
     out = sys.stdout
     if args.format == "csv":
@@ -53,7 +60,6 @@ def run(args: argparse.Namespace) -> int:
         out.write("\n")
     else:
         _write_table(out, rows)
-    return 0
 
 
 def _write_table(out: TextIO, rows: Iterable[tuple]) -> None:

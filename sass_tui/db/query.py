@@ -25,10 +25,9 @@ For the UI: `Query.count()` and `Query.page(offset, limit)` (or
 from __future__ import annotations
 
 import math
-import sqlite3
 from collections.abc import Iterable, Iterator
 from functools import lru_cache
-from typing import Any, NamedTuple, NoReturn
+from typing import Any, NamedTuple, NoReturn, Protocol
 
 # The parser is lark's stand-alone LALR module generated from GRAMMAR by
 # scripts/make_query_parser.py: importing it costs a third of importing lark
@@ -55,6 +54,7 @@ from sass_tui.db.query_tree import (
     Or,
     aliases,
     names_field,
+    placeholder,
     to_sql,
 )
 from sass_tui.db.schema import (
@@ -111,6 +111,12 @@ _GROUPS = {
     "strength": ("strength", MOTION_NAMES, "N_m", "motion"),
 }
 MEASURE_TABLE = "measure"
+
+
+class Connection(Protocol):
+    """What a query runs on: sqlite3's connection, or db/postgres.py's PostgresConnection."""
+
+    def execute(self, sql: str, parameters: Any = ..., /) -> Any: ...
 
 
 class QueryError(ValueError, SassError):
@@ -472,60 +478,73 @@ _SELECT = (
 
 
 class Query:
-    """A compiled query bound to a connection: count it, fetch it a page at a time."""
+    """A compiled query bound to a connection (SQLite's, or a PostgresConnection
+    of db/postgres.py): count it, fetch it a page at a time."""
 
-    def __init__(self, conn: sqlite3.Connection, compiled: CompiledQuery) -> None:
+    def __init__(self, conn: Connection, compiled: CompiledQuery) -> None:
         self.conn = conn
         self.compiled = compiled
+        self.dialect: Dialect = getattr(conn, "dialect", "sqlite")
+        self.where, self.params = compiled.sql(self.dialect)
+        self.mark = placeholder(self.dialect)
 
     def count(self) -> int:
-        from sass_tui.db import accelerator  # its imports cost start-up time; counts only
+        if self.dialect == "sqlite":
+            from sass_tui.db import accelerator  # its imports cost start-up time; counts only
 
-        fast = accelerator.count(self.conn, self.compiled)  # None below ~200k people
-        if fast is not None:
-            return fast
-        sql = f"SELECT count(*) FROM {self.compiled.from_clause()} WHERE {self.compiled.where}"
-        count: int = self.conn.execute(sql, self.compiled.params).fetchone()[0]
+            fast = accelerator.count(self.conn, self.compiled)  # type: ignore[arg-type]
+            if fast is not None:  # None below ~200k people, or without DuckDB
+                return fast
+        sql = f"SELECT count(*) FROM {self.compiled.from_clause()} WHERE {self.where}"
+        count: int = self.conn.execute(sql, self.params).fetchone()[0]
         return count
 
     def _rows(self, extra: str, params: tuple[object, ...]) -> list[dict[str, Any]]:
         sql = (
             f"SELECT {_SELECT} FROM {self.compiled.from_clause()} "
             f"LEFT JOIN strength_q sq ON sq.id_num = p.id_num "
-            f"WHERE {self.compiled.where}{extra}"
+            f"WHERE {self.where}{extra}"
         )
-        return [
-            dict(zip(LIST_FIELDS, row))
-            for row in self.conn.execute(sql, self.compiled.params + params)
-        ]
+        return [dict(zip(LIST_FIELDS, row)) for row in self.conn.execute(sql, self.params + params)]
 
     def page(self, offset: int = 0, limit: int = 25) -> list[dict[str, Any]]:
         """People offset .. offset+limit-1 in id order (the query list's page)."""
-        return self._rows(" ORDER BY p.id_num LIMIT ? OFFSET ?", (int(limit), int(offset)))
+        mark = self.mark
+        return self._rows(
+            f" ORDER BY p.id_num LIMIT {mark} OFFSET {mark}", (int(limit), int(offset))
+        )
 
     def page_after(self, last_id: int | None, limit: int = 25) -> list[dict[str, Any]]:
         """The next page after person `last_id` (keyset paging: cost independent of depth)."""
         if last_id is None:
             return self.page(0, limit)
-        return self._rows(" AND p.id_num > ? ORDER BY p.id_num LIMIT ?", (int(last_id), int(limit)))
+        mark = self.mark
+        return self._rows(
+            f" AND p.id_num > {mark} ORDER BY p.id_num LIMIT {mark}", (int(last_id), int(limit))
+        )
 
     def ids(self) -> list[int]:
-        from sass_tui.db import accelerator
+        if self.dialect == "sqlite":
+            from sass_tui.db import accelerator
 
-        fast = accelerator.ids(self.conn, self.compiled)
-        if fast is not None:
-            return fast
-        sql = f"SELECT p.id_num FROM {self.compiled.from_clause()} WHERE {self.compiled.where}"
-        return [r[0] for r in self.conn.execute(sql, self.compiled.params)]
+            fast = accelerator.ids(self.conn, self.compiled)  # type: ignore[arg-type]
+            if fast is not None:
+                return fast
+        sql = (
+            f"SELECT p.id_num FROM {self.compiled.from_clause()} WHERE {self.where} "
+            "ORDER BY p.id_num"
+        )
+        return [int(r[0]) for r in self.conn.execute(sql, self.params)]
 
-    def person_rows(self) -> sqlite3.Cursor:
+    def person_rows(self) -> Iterable[tuple[Any, ...]]:
         """Every selected person as a tuple in PERSON_FIELDS order, id order, one
         statement (the command line's listing: no dict per row, no paging)."""
         sql = (
             f"SELECT {_PERSON_SELECT} FROM {self.compiled.from_clause()} "
-            f"WHERE {self.compiled.where} ORDER BY p.id_num"
+            f"WHERE {self.where} ORDER BY p.id_num"
         )
-        return self.conn.execute(sql, self.compiled.params)
+        rows: Iterable[tuple[Any, ...]] = self.conn.execute(sql, self.params)
+        return rows
 
     def iter_all(self, page_size: int = 1000) -> Iterator[dict[str, Any]]:
         last = None
@@ -537,7 +556,7 @@ class Query:
             last = rows[-1]["id"]
 
 
-def run_query(conn: sqlite3.Connection, text: str) -> Query:
+def run_query(conn: Connection, text: str) -> Query:
     return Query(conn, compile_query(text))
 
 

@@ -1,4 +1,4 @@
-"""The query language's one meaning: a typed expression tree, and the SQL of
+"""The query language's one meaning: a typed expression tree (immutable nodes), and the SQL of
 each engine compiled from it.
 
 `db/query.py` parses a query once (lark) into this tree: comparisons of a
@@ -17,8 +17,7 @@ including those with none), as the SQLite compiler always did.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 Dialect = Literal["sqlite", "postgresql", "duckdb"]
 DIALECTS: tuple[Dialect, ...] = ("sqlite", "postgresql", "duckdb")
@@ -27,37 +26,77 @@ PERSON_TABLE = "person"
 OPERATORS = ("<", ">", "<=", ">=", "=", "!=")
 
 
-@dataclass(frozen=True)
-class Comparison:
+class _Node:
+    """An immutable node compared by type and fields: what a frozen dataclass
+    gives, without importing dataclasses (and inspect) on `sass query`'s path
+    (tests/test_layers.py)."""
+
+    __slots__: tuple[str, ...] = ()
+
+    def _values(self) -> tuple[Any, ...]:
+        return tuple(getattr(self, name) for name in self.__slots__)
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise AttributeError(f"{type(self).__name__} is immutable")
+
+    def __eq__(self, other: object) -> bool:
+        return (
+            isinstance(other, _Node)
+            and type(other) is type(self)
+            and self._values() == other._values()
+        )
+
+    def __hash__(self) -> int:
+        return hash((type(self).__name__, self._values()))
+
+    def __repr__(self) -> str:
+        fields = ", ".join(f"{n}={getattr(self, n)!r}" for n in self.__slots__)
+        return f"{type(self).__name__}({fields})"
+
+
+class Comparison(_Node):
     """`table.column op value`, the value in the column's stored unit.
 
     `field` is the field as the user named it, lower case and dotted
     (`source`, `measure.sittingheight`, `girth.right_upper_arm.z`); `nocase`
     marks free text compared without regard to case (only = and !=)."""
 
+    __slots__ = ("field", "table", "column", "op", "value", "nocase")
     field: str
     table: str
     column: str
     op: str
     value: float | str
-    nocase: bool = False
+    nocase: bool
+
+    def __init__(
+        self, field: str, table: str, column: str, op: str, value: float | str, nocase: bool = False
+    ) -> None:
+        for name, item in zip(self.__slots__, (field, table, column, op, value, nocase)):
+            object.__setattr__(self, name, item)
 
     def comparisons(self) -> Iterator[Comparison]:
         yield self
 
 
-@dataclass(frozen=True)
-class And:
+class And(_Node):
+    __slots__ = ("terms",)
     terms: tuple[Expr, ...]
+
+    def __init__(self, terms: tuple[Expr, ...]) -> None:
+        object.__setattr__(self, "terms", tuple(terms))
 
     def comparisons(self) -> Iterator[Comparison]:
         for term in self.terms:
             yield from term.comparisons()
 
 
-@dataclass(frozen=True)
-class Or:
+class Or(_Node):
+    __slots__ = ("terms",)
     terms: tuple[Expr, ...]
+
+    def __init__(self, terms: tuple[Expr, ...]) -> None:
+        object.__setattr__(self, "terms", tuple(terms))
 
     def comparisons(self) -> Iterator[Comparison]:
         for term in self.terms:

@@ -422,7 +422,7 @@ def migrate_1_to_2(conn: sqlite3.Connection) -> None:
             return
         for column, kind in zip(PERSON_ATTRIBUTES, ("TEXT", "TEXT", "INTEGER", "INTEGER", "TEXT")):
             conn.execute(f"ALTER TABLE person ADD COLUMN {column} {kind}")
-        for statement in _schema_statements():
+        for statement in schema_statements():
             code = " ".join(
                 line for line in statement.splitlines() if not line.lstrip().startswith("--")
             ).lstrip()
@@ -453,7 +453,7 @@ def migrate_to_5(conn: sqlite3.Connection) -> None:
         conn.execute("UPDATE meta SET value = '5' WHERE key = 'schema_version'")
 
 
-def _schema_statements() -> list[str]:
+def schema_statements() -> list[str]:
     statements: list[str] = []
     pending = ""
     for piece in _ddl().split(";\n"):
@@ -474,7 +474,7 @@ def create_schema(conn: sqlite3.Connection) -> None:
 
 
 def _create_tables(conn: sqlite3.Connection) -> None:
-    for statement in _schema_statements():
+    for statement in schema_statements():
         conn.execute(statement)
     conn.execute("INSERT INTO meta VALUES ('schema_version', ?)", (SCHEMA_VERSION,))
     conn.execute(
