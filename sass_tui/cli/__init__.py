@@ -228,8 +228,12 @@ def run_verb(args: argparse.Namespace) -> int:
             print(printable(line), file=sys.stderr)
         return 2
     except Exception as exc:
-        sqlite3 = sys.modules.get("sqlite3")
-        if sqlite3 is not None and isinstance(exc, sqlite3.Error):
-            print(f"sass {args.command}: database error: {exc}", file=sys.stderr)
-            return 2
-        raise
+        if "sass_tui.db.database" not in sys.modules:
+            raise  # no database was opened: not an engine's error
+        from sass_tui.db.database import engine_error
+
+        error = engine_error(exc)
+        if error is None:
+            raise
+        print(f"sass {args.command}: error: {printable(error)}", file=sys.stderr)
+        return 2

@@ -25,6 +25,9 @@ if TYPE_CHECKING:
     from sass_tui.db.progress import Cancel, Progress
     from sass_tui.db.query import CompiledQuery, Query
     from sass_tui.db.query_tree import Dialect
+    from sass_tui.db.values import Values
+    from sass_tui.model.accommodation import Family
+    from sass_tui.model.prediction import Predictor
 
 
 def configured_target(given: str | Path | None) -> str | Path | None:
@@ -152,6 +155,44 @@ class Database:
     def people_count(self) -> int:
         with self.connection() as conn:
             return int(conn.execute("SELECT count(*) FROM person").fetchone()[0])
+
+    def predictor(self) -> Predictor:
+        """The database's prediction model (db/predict.py)."""
+        from sass_tui.db.predict import open_predictor
+
+        with self.connection() as conn:
+            return open_predictor(conn)
+
+    def family(
+        self,
+        gender: str,
+        measures: tuple[str, ...],
+        coverage: float,
+        method: str,
+        population: str,
+        progress: Progress | None = None,
+        cancel: Cancel | None = None,
+    ) -> tuple[Family, Values]:
+        """A manikin family (db/fit.py) and the people's values of its first two
+        measures (the scatter it is drawn over)."""
+        from sass_tui.db.fit import load_family
+        from sass_tui.db.values import load_values
+
+        with self.connection() as conn:
+            family = load_family(
+                conn,
+                gender,
+                measures,
+                coverage,
+                method,
+                population,
+                progress=progress,
+                cancel=cancel,
+            )
+            people = load_values(
+                conn, list(family.measures[:2]), f"({population}) AND gender = {gender}"
+            )
+        return family, people
 
     # --- writing -------------------------------------------------------------
 

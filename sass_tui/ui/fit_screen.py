@@ -91,14 +91,8 @@ class FitScreen(SassScreen):
 
     @work(thread=True, exclusive=True, group="fit", exit_on_error=False)
     def run_fit(self, lists: QueryLists, limits: str, population: str, work: Work) -> None:
-        from sass_tui.db.fit import fit_test, limit_histograms
-
         try:
-            with lists.lock:
-                result = fit_test(
-                    lists.conn, limits, population, progress=work.report, cancel=work.cancel
-                )
-                histograms = limit_histograms(lists.conn, limits, population, cancel=work.cancel)
+            result, histograms = lists.fit_test(limits, population, work.report, work.cancel)
         except DB_ERRORS as exc:
             self.post_message(FitDone(error=str(exc)))
             return

@@ -27,7 +27,7 @@ from textual.widgets import Footer, OptionList, Static
 from textual.widgets.option_list import Option
 
 from sass_tui.db.flatfile import FlatFiles
-from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, DatabaseBusy, QueryLists
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
 from sass_tui.model.text import printable
@@ -498,12 +498,11 @@ class QueryScreen(SassScreen):
         """The lists, if no query or import is using the connection."""
         if self.lists is None:
             raise Busy("The database is not open yet.")
-        if not self.lists.lock.acquire(blocking=False):
-            raise Busy(WAIT)
         try:
-            yield self.lists
-        finally:
-            self.lists.lock.release()
+            with self.lists.exclusive(wait=False) as lists:
+                yield lists
+        except DatabaseBusy:
+            raise Busy(WAIT) from None
 
     def _list_command(self, func) -> None:
         try:
@@ -692,9 +691,7 @@ class QueryScreen(SassScreen):
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def run_query(self, lists: QueryLists, text: str, page_size: int, work: Work) -> None:
         try:
-            with lists.lock:
-                count = lists.run(text, work.report, work.cancel)
-                rows = lists.page(QUERY_LIST, 0, page_size)
+            count, rows = lists.run_first_page(text, page_size, work.report, work.cancel)
         except DB_ERRORS as exc:
             self.post_message(QueryFinished(error=str(exc)))
             return
@@ -762,15 +759,11 @@ class QueryScreen(SassScreen):
     def make_population(
         self, lists: QueryLists, ids: tuple[int, ...], target: Path, title: str, work: Work
     ) -> None:
-        from sass_tui.db.population import population_of
         from sass_tui.db.population_files import write_population_files
         from sass_tui.db.progress import Steps
 
         try:
-            with lists.lock:
-                result = population_of(
-                    lists.conn, ids=ids, title=title, progress=work.report, cancel=work.cancel
-                )
+            result = lists.population_of(ids, title, work.report, work.cancel)
             Steps(cancel=work.cancel, what="making the population").check()  # last chance
             paths = write_population_files(result, target)
         except DB_ERRORS as exc:
@@ -914,8 +907,7 @@ class QueryScreen(SassScreen):
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def import_ansur(self, lists: QueryLists, path: Path, label: str, work: Work) -> None:
         try:
-            with lists.lock:
-                count = lists.import_ansur(path, label, work.report, work.cancel)
+            count = lists.import_ansur(path, label, work.report, work.cancel)
         except DB_ERRORS as exc:
             self.post_message(ImportFinished(None, str(exc)))
             return
@@ -929,8 +921,7 @@ class QueryScreen(SassScreen):
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def import_files(self, lists: QueryLists, files: FlatFiles, work: Work) -> None:
         try:
-            with lists.lock:
-                count = lists.import_files(files, work.report, work.cancel)
+            count = lists.import_files(files, work.report, work.cancel)
         except DB_ERRORS as exc:
             self.post_message(ImportFinished(None, str(exc)))
             return
