@@ -324,3 +324,14 @@ def test_the_password_is_never_shown(capsys):
     assert main(["query", "--count", "--db", url, "stature > 1"]) == 2
     err = capsys.readouterr().err
     assert "s3cret" not in err and "lab:***@127.0.0.1:1" in err
+
+
+@pytest.mark.parametrize("form", ["csv", "json", "table"])
+def test_sass_query_prints_the_same_on_both_engines(initialised, capsys, form):
+    text = "source = synthetic AND stature > 185 cm OR measure.stature > 1950 mm"
+    printed = {}
+    for engine, target in initialised.items():
+        assert main(["query", "--format", form, "--db", target, text]) == 0
+        printed[engine] = capsys.readouterr().out
+    assert printed["postgresql"] == printed["sqlite"]
+    assert printed["sqlite"].count("\n") > 3
