@@ -59,7 +59,7 @@ def open_db(args: argparse.Namespace, create: bool = False):  # -> sqlite3.Conne
     if is_url(configured_target(getattr(args, "db", None))):
         raise DatabaseError(
             f"`sass {args.command}` reads a SQLite file only; on PostgreSQL use "
-            "`sass query` and `sass db init | import-ansur | import-flat`"
+            "`sass query`, `sass person` and `sass db init | import-ansur | import-flat`"
         )
     db = open_database(args, create=create)
     with db.connection() as conn:

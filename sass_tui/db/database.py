@@ -152,6 +152,14 @@ class Database:
         with self.connection():
             return list(self.query(query).person_rows())
 
+    def person_records(self, keys: Sequence[str]) -> list[dict[str, object]]:
+        """Everything stored about the people `keys` name (an id or a name), in
+        order (db/individual.py's person_record)."""
+        from sass_tui.db.individual import find_person, person_record
+
+        with self.connection() as conn:
+            return [person_record(conn, find_person(conn, key)) for key in keys]
+
     def people_count(self) -> int:
         with self.connection() as conn:
             return int(conn.execute("SELECT count(*) FROM person").fetchone()[0])

@@ -335,3 +335,15 @@ def test_sass_query_prints_the_same_on_both_engines(initialised, capsys, form):
         printed[engine] = capsys.readouterr().out
     assert printed["postgresql"] == printed["sqlite"]
     assert printed["sqlite"].count("\n") > 3
+
+
+def test_sass_person_prints_the_same_on_both_engines(initialised, capsys):
+    # a synthetic person with strength experiments, an ANSUR II one by name in another case
+    keys = ["17", "ansur ii m 10032"]
+    printed = {}
+    for engine, target in initialised.items():
+        for form in ("json", "table"):
+            assert main(["person", "--format", form, "--db", target, *keys]) == 0
+        printed[engine] = capsys.readouterr().out
+    assert printed["postgresql"] == printed["sqlite"]
+    assert '"measures"' in printed["sqlite"] and "strength." in printed["sqlite"]
