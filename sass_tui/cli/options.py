@@ -32,8 +32,8 @@ def open_database(args: argparse.Namespace, create: bool = False):  # -> db.data
     from sass_tui.cli.progress import progress_for
     from sass_tui.db.database import Database, configured_target
     from sass_tui.db.default import needs_building
-    from sass_tui.db.postgres import is_url
     from sass_tui.db.schema import default_db_path
+    from sass_tui.db.targets import is_url
     from sass_tui.model.paths import user_path
 
     target = configured_target(getattr(args, "db", None))
@@ -53,14 +53,11 @@ def open_db(args: argparse.Namespace, create: bool = False):  # -> sqlite3.Conne
     read a SQLite file only (a PostgreSQL address is refused, saying which
     verbs serve it)."""
     from sass_tui.db.database import configured_target
-    from sass_tui.db.postgres import is_url
     from sass_tui.db.schema import DatabaseError
+    from sass_tui.db.targets import is_url, sqlite_only
 
     if is_url(configured_target(getattr(args, "db", None))):
-        raise DatabaseError(
-            f"`sass {args.command}` reads a SQLite file only; on PostgreSQL use "
-            "`sass query`, `sass person` and `sass db init | import-ansur | import-flat`"
-        )
+        raise DatabaseError(sqlite_only(f"`sass {args.command}`"))
     db = open_database(args, create=create)
     with db.connection() as conn:
         return conn

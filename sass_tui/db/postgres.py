@@ -42,7 +42,6 @@ from sass_tui.db.schema import (
     schema_statements,
 )
 
-URL_PREFIXES = ("postgresql://", "postgres://")
 # pg_advisory_xact_lock key of sass's writers: "SASS" in ASCII.
 WRITE_LOCK = 0x53415353
 # Older PostgreSQL schema version -> the statements that bring it to the next one.
@@ -52,11 +51,6 @@ T = TypeVar("T")
 # SQLite's declared types -> PostgreSQL's.
 _TYPES = {"INTEGER": "BIGINT", "REAL": "DOUBLE PRECISION", "TEXT": "TEXT", "BLOB": "BYTEA"}
 _SQLITE_ONLY = ("measure_packed",)
-
-
-def is_url(target: str | Path | None) -> bool:
-    """Whether `--db` / SASS_DB names a PostgreSQL server rather than a file."""
-    return isinstance(target, str) and target.lower().startswith(URL_PREFIXES)
 
 
 def shown(url: str) -> str:
