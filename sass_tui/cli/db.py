@@ -72,10 +72,10 @@ def register(commands: SubParsers) -> None:
 
 
 def run_init(args: argparse.Namespace) -> int:
+    from sass_tui.db.addresses import is_url
     from sass_tui.db.database import configured_target
     from sass_tui.db.default import create_default_database, people_count
     from sass_tui.db.schema import DatabaseError, connect, default_db_path
-    from sass_tui.db.targets import is_url
 
     target = configured_target(getattr(args, "db", None))
     if is_url(target):

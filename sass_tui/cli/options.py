@@ -30,10 +30,10 @@ def open_database(args: argparse.Namespace, create: bool = False):  # -> db.data
     import sys
 
     from sass_tui.cli.progress import progress_for
+    from sass_tui.db.addresses import is_url
     from sass_tui.db.database import Database, configured_target
     from sass_tui.db.default import needs_building
     from sass_tui.db.schema import default_db_path
-    from sass_tui.db.targets import is_url
     from sass_tui.model.paths import user_path
 
     target = configured_target(getattr(args, "db", None))
@@ -52,9 +52,9 @@ def open_db(args: argparse.Namespace, create: bool = False):  # -> sqlite3.Conne
     """The SQLite database `--db` names, or the default one, for the verbs that
     read a SQLite file only (a PostgreSQL address is refused, saying which
     verbs serve it)."""
+    from sass_tui.db.addresses import is_url, sqlite_only
     from sass_tui.db.database import configured_target
     from sass_tui.db.schema import DatabaseError
-    from sass_tui.db.targets import is_url, sqlite_only
 
     if is_url(configured_target(getattr(args, "db", None))):
         raise DatabaseError(sqlite_only(f"`sass {args.command}`"))

@@ -33,7 +33,7 @@ if TYPE_CHECKING:
 def configured_target(given: str | Path | None) -> str | Path | None:
     """What `--db` names, else $SASS_DB, else None (the default file).  A
     PostgreSQL address stays text (a Path would fold its `//`)."""
-    from sass_tui.db.targets import is_url
+    from sass_tui.db.addresses import is_url
 
     if given is not None and str(given):
         return given
@@ -97,8 +97,8 @@ class Database:
         progress: Progress | None = None,
     ) -> Database:
         """The database `target` names (see configured_target)."""
+        from sass_tui.db.addresses import is_url
         from sass_tui.db.postgres import connect_postgres
-        from sass_tui.db.targets import is_url
 
         target = configured_target(target)
         if is_url(target):
@@ -111,8 +111,8 @@ class Database:
     @property
     def name(self) -> str:
         """The database as shown to a user (a PostgreSQL address without its password)."""
+        from sass_tui.db.addresses import is_url
         from sass_tui.db.postgres import shown
-        from sass_tui.db.targets import is_url
 
         if is_url(self.target):
             return shown(str(self.target))

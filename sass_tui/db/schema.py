@@ -262,7 +262,7 @@ def default_db_path() -> Path:
     """$SASS_DB, else $XDG_DATA_HOME/sass/sass.db (~/.local/share/sass/sass.db).
     DatabaseError when $SASS_DB is a PostgreSQL address (callers that take
     one look at it first: db/database.py's configured_target)."""
-    from sass_tui.db.targets import is_url, sqlite_only
+    from sass_tui.db.addresses import is_url, sqlite_only
 
     if is_url(os.environ.get("SASS_DB")):
         raise DatabaseError(sqlite_only("this command") + "; $SASS_DB names a PostgreSQL database")

@@ -8,7 +8,7 @@ import subprocess
 import sys
 
 from sass_tui.cli import main
-from sass_tui.db.targets import is_url
+from sass_tui.db.addresses import is_url
 
 URL = "postgresql://lab@dbhost.invalid/sass"
 
