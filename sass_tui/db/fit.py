@@ -36,8 +36,7 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
-from sass_tui.db.query import compile_conjuncts, compile_query, names_source
-from sass_tui.db.scope import real_only
+from sass_tui.db.query import compile_conjuncts, compile_query, real_people_only
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
@@ -221,8 +220,7 @@ def fit_test(
     # and its WHERE runs inline (a subquery for it costs half as much again).
     people, *terms = compile_conjuncts(f"({population}) AND {limits}")
     # The population's term is compiled as a part, unscoped: real people unless it names a source.
-    scoped, scoped_params = real_only(people.where, people.params, names_source(population))
-    people = people._replace(where=scoped, params=scoped_params)
+    people = real_people_only(people)
     # The body a strength limit predicts from, only when there is one.
     body = "p.age, p.mass, p.stature, " if strength_limits else ""
     columns = body + ", ".join(f"({t.where})" for t in terms)

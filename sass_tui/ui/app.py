@@ -196,22 +196,10 @@ class SassApp(App):
     def selected_individual(self, index: int) -> Individual:
         """Person `index` of the selected list, read from the database; OSError
         when it cannot be read, DatabaseError when there is no such person."""
-        import sqlite3
-
-        from sass_tui.db.individual import fetch_individual
-        from sass_tui.db.schema import DatabaseError
-
         lists = self.query_lists
         if lists is None:
             raise OSError("the database is not open")
-        try:
-            with lists.lock:
-                id_num = lists.selected_id(index)
-                if id_num is None:
-                    raise DatabaseError(f"there is no person {index + 1} in the selected list")
-                return fetch_individual(lists.conn, id_num)
-        except sqlite3.Error as exc:
-            raise OSError(f"database error: {exc}") from exc
+        return lists.fetch_selected(index)
 
     def person_figure(self, index: int, population: Figure) -> Figure:
         """The figure of person `index` of the selected list (report §12.4)."""

@@ -89,9 +89,8 @@ def export_list_person(
 ) -> None:
     """The query screen's Export glTF: the person of the list row `row`, read
     through the screen's `database()` (which refuses while a query runs)."""
-    import sqlite3
-
-    from sass_tui.db.individual import fetch_individual, person_figure
+    from sass_tui.db.individual import person_figure
+    from sass_tui.db.lists import DB_ERRORS
     from sass_tui.model.hanim import build_humanoid
 
     if row is None:
@@ -99,8 +98,8 @@ def export_list_person(
         return
     with database() as lists:
         try:
-            person = fetch_individual(lists.conn, row["id"])
-        except sqlite3.Error as exc:
+            person = lists.fetch_person(row["id"])
+        except DB_ERRORS as exc:
             screen.complain(f"Cannot read {row['name']} from the database: {exc}")
             return
     figure = person_figure(person, screen.sass_app.session.population)

@@ -27,8 +27,7 @@ from textual.widgets import Footer, OptionList, Static
 from textual.widgets.option_list import Option
 
 from sass_tui.db.flatfile import FlatFiles
-from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
-from sass_tui.db.query import demonstration_hint
+from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, DatabaseBusy, QueryLists
 from sass_tui.model.errors import SassError
 from sass_tui.model.text import printable
 from sass_tui.ui.base import SassScreen
@@ -513,12 +512,11 @@ class QueryScreen(SassScreen):
         """The lists, if no query or import is using the connection."""
         if self.lists is None:
             raise Busy("The database is not open yet.")
-        if not self.lists.lock.acquire(blocking=False):
-            raise Busy(WAIT)
         try:
-            yield self.lists
-        finally:
-            self.lists.lock.release()
+            with self.lists.exclusive(wait=False) as lists:
+                yield lists
+        except DatabaseBusy:
+            raise Busy(WAIT) from None
 
     def _list_command(self, func) -> None:
         try:
@@ -709,15 +707,13 @@ class QueryScreen(SassScreen):
         self, lists: QueryLists, text: str, page_size: int, work: Work, target: str | None = None
     ) -> None:
         try:
-            with lists.lock:
-                count = lists.run(text, work.report, work.cancel)
-                rows = lists.page(QUERY_LIST, 0, page_size)
-                hint = "" if count else demonstration_hint(lists.conn, text) or ""
-                weighted = ""
-                if target:
-                    from sass_tui.ui.target_picker import weighted_count_words
+            count, rows = lists.run_first_page(text, page_size, work.report, work.cancel)
+            hint = "" if count else lists.demonstration_hint(text) or ""
+            weighted = ""
+            if target:
+                from sass_tui.ui.target_picker import weighted_count_words
 
-                    weighted = weighted_count_words(lists, text, target)
+                weighted = weighted_count_words(lists, text, target)
         except DB_ERRORS as exc:
             self.post_message(QueryFinished(error=str(exc)))
             return
@@ -810,27 +806,15 @@ class QueryScreen(SassScreen):
         work: Work,
         weighted_to: str | None = None,
     ) -> None:
-        from sass_tui.db.population import population_of
         from sass_tui.db.population_files import write_population_files
         from sass_tui.db.progress import Steps
 
         try:
-            with lists.lock:
-                weights = None
-                if weighted_to:
-                    from sass_tui.db.targets import load_target
-                    from sass_tui.ui.target_picker import weighted_words
+            if weighted_to:
+                from sass_tui.ui.target_picker import weighted_words
 
-                    weights = load_target(lists.conn, weighted_to)
-                    title += weighted_words(weighted_to)
-                result = population_of(
-                    lists.conn,
-                    ids=ids,
-                    title=title,
-                    progress=work.report,
-                    cancel=work.cancel,
-                    target=weights,
-                )
+                title += weighted_words(weighted_to)
+            result = lists.population_of(ids, title, work.report, work.cancel, target=weighted_to)
             Steps(cancel=work.cancel, what="making the population").check()  # last chance
             paths = write_population_files(result, target)
         except DB_ERRORS as exc:
@@ -987,8 +971,7 @@ class QueryScreen(SassScreen):
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def import_ansur(self, lists: QueryLists, path: Path, label: str, work: Work) -> None:
         try:
-            with lists.lock:
-                count = lists.import_ansur(path, label, work.report, work.cancel)
+            count = lists.import_ansur(path, label, work.report, work.cancel)
         except DB_ERRORS as exc:
             self.post_message(ImportFinished(None, str(exc)))
             return
@@ -1002,8 +985,7 @@ class QueryScreen(SassScreen):
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def import_files(self, lists: QueryLists, files: FlatFiles, work: Work) -> None:
         try:
-            with lists.lock:
-                count = lists.import_files(files, work.report, work.cancel)
+            count = lists.import_files(files, work.report, work.cancel)
         except DB_ERRORS as exc:
             self.post_message(ImportFinished(None, str(exc)))
             return

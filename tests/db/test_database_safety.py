@@ -314,7 +314,7 @@ def test_db_init_while_another_process_imports(db_path):
 
 def test_lists_work_while_another_process_holds_the_write_lock(db_path):
     lists = QueryLists.open(db_path)
-    lists.conn.execute("PRAGMA busy_timeout = 300")  # a lock would fail fast, not hang
+    lists._conn.execute("PRAGMA busy_timeout = 300")  # a lock would fail fast, not hang
     writer = subprocess.Popen(
         [
             sys.executable,

@@ -103,9 +103,9 @@ def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(
         reports: list[tuple[int, int]] = []
         found = lists.run("gender = male", progress=lambda d, t: reports.append((d, t)))
         _checked(reports)
-        (people,) = lists.conn.execute("SELECT count(*) FROM person").fetchone()
+        (people,) = lists._conn.execute("SELECT count(*) FROM person").fetchone()
         assert reports[-1] == (people, people) and len(reports) > 2
-        (male,) = lists.conn.execute(
+        (male,) = lists._conn.execute(
             "SELECT count(*) FROM person WHERE gender = 'male' AND source != 'synthetic'"
         ).fetchone()
         assert found == male == lists.count(QUERY_LIST)

@@ -349,7 +349,7 @@ def test_paging_delete_and_busy_while_a_query_runs(drive, db):
             assert sheet.rows[0]["name"] == second
             assert f"Total Data in Query List: {total - 1:,}" in summary(app)
             # While the database is busy, list commands answer at once instead of waiting.
-            with screen.lists.lock:
+            with screen.lists.exclusive():
                 await pilot.press("n")
                 assert message(app) == WAIT
 
@@ -417,7 +417,7 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
             assert "Input DB failed, the database is unchanged" in message(app)
             assert "girth.db:1" in message(app)
             assert (
-                screen.lists.conn.execute(
+                screen.lists._conn.execute(
                     "SELECT count(*) FROM person WHERE id_num = 99901"
                 ).fetchone()[0]
                 == 0
