@@ -526,6 +526,7 @@ WRITES = st.tuples(
 )
 
 
+@pytest.mark.slow
 def test_random_writes_keep_the_copy_equal_to_sqlite(small_db_file, tmp_path_factory, monkeypatch):
     """After any sequence of writes, every count and id list from the copy is
     SQLite's; and the copy is rebuilt only after `db init` (every other write
@@ -609,6 +610,7 @@ def test_a_rebuild_runs_in_the_background_while_sqlite_answers(db, monkeypatch):
     assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
 
 
+@pytest.mark.slow
 def test_a_schema_2_database_gets_the_change_log(db):
     path = accelerator.database_path(db)
     raw = sqlite3.connect(path, isolation_level=None)
