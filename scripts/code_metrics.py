@@ -99,23 +99,28 @@ def textual_source() -> str:
     return "\n".join(p.read_text(encoding="utf-8") for p in folder.rglob("*.py"))
 
 
-def private_textual_uses() -> list[tuple[str, int, str]]:
+def _defined_names(folder: Path) -> set[str]:
+    """Every name the code in `folder` defines: functions, classes, assigned attributes and names."""
+    names: set[str] = set()
+    for path in python_files(folder):
+        for node in ast.walk(parse(path)):
+            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef):
+                names.add(node.name)
+            elif isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store):
+                names.add(node.attr)
+            elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
+                names.add(node.id)
+    return names
+
+
+def private_textual_uses(folder: Path = PACKAGE) -> list[tuple[str, int, str]]:
     """`textual._x` imports, and `._name` attributes the package never defines
     but Textual's source does (`def _name`, `self._name =`, `_name:`)."""
-    ours: set[str] = set()
+    ours = _defined_names(PACKAGE) | _defined_names(folder)
     accesses: list[tuple[str, int, str]] = []
     imports: list[tuple[str, int, str]] = []
-    for path in python_files(PACKAGE):
-        tree = parse(path)
-        for node in ast.walk(tree):
-            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef):
-                ours.add(node.name)
-            elif isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store):
-                ours.add(node.attr)
-            elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
-                ours.add(node.id)
-            elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
-                ours.add(node.target.id)
+    for path in python_files(folder):
+        for node in ast.walk(parse(path)):
             if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("textual._"):
                 imports.append((relative(path), node.lineno, f"from {node.module} import"))
             elif isinstance(node, ast.Import):
@@ -223,10 +228,11 @@ def main() -> int:
     for where, count in imports.most_common(8):
         print(f"  {count:4d}  {where}")
 
-    private = private_textual_uses()
-    print(f"\nPrivate Textual API uses: {len(private)}")
-    for where, line, what in private:
-        print(f"  {where}:{line}  {what}")
+    for folder in (PACKAGE, TESTS):
+        private = private_textual_uses(folder)
+        print(f"\nPrivate Textual API uses in {folder.name}/: {len(private)}")
+        for where, line, what in private:
+            print(f"  {where}:{line}  {what}")
 
     issues = issue_references()
     print(
