@@ -143,6 +143,7 @@ def test_the_spreadsheet_starts_without_what_other_screens_use():
     assert _run(code) == ""
 
 
+@pytest.mark.slow
 def test_the_first_screen_is_drawn_without_what_it_does_not_show():
     # Issue 16 (TUI first screen): the spreadsheet with its figure panel at 120
     # columns, up and drawn, has not imported what only exports, other screens

@@ -714,6 +714,7 @@ def test_query_lists_are_found_by_the_copy(db, monkeypatch):
     st.sets(st.integers(0, 60), max_size=20),
     st.data(),
 )
+@pytest.mark.slow
 def test_splicing_the_ids_is_the_set_change(old, changed, data):
     """The patch's splice: the old ids, less every changed id, plus the changed
     ids still stored, in order; the values keep their ids."""
@@ -904,6 +905,7 @@ def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path, bulk):
     assert accelerator._has_change_log(db)
 
 
+@pytest.mark.slow
 def test_a_bulk_write_of_many_people_fires_no_trigger_and_is_followed(db, monkeypatch):
     """From DROP_TRIGGERS_FROM people the per-row triggers are dropped for
     the write: under half the SQLite work of the quiet flag's path, and the

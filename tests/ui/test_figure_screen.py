@@ -190,7 +190,10 @@ def test_every_edit_redraws_the_figure_panel(drive, app_at):
 
     async def scenario():
         async with app_at((120, 40)) as (app, pilot):
-            await pilot.pause()
+            # The panel draws a frame after the first screen (two refreshes later).
+            await wait_until(
+                pilot, lambda: app.spreadsheet.figure_panel.outlines, "the panel never drew"
+            )
             panel = app.spreadsheet.figure_panel
             assert panel is not None and panel.display
             start = panel.outlines[0]

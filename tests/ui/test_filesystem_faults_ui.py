@@ -45,6 +45,7 @@ async def input_db(pilot, files: list[Path]) -> None:
     await settle(pilot)
 
 
+@pytest.mark.slow
 def test_on_a_read_only_file_system_the_tui_opens_lists_and_refuses_input_db(
     drive, app_at, tmpfs_with_db, one_person
 ):
@@ -76,6 +77,7 @@ def test_on_a_read_only_file_system_the_tui_opens_lists_and_refuses_input_db(
     assert sorted(p.name for p in mnt.iterdir()) == ["sass.db"]
 
 
+@pytest.mark.slow
 def test_on_a_full_file_system_input_db_and_create_figure_name_the_file(
     drive, app_at, tmpfs_with_db, one_person
 ):
@@ -107,6 +109,7 @@ def test_on_a_full_file_system_input_db_and_create_figure_name_the_file(
     assert sorted(p.name for p in mnt.iterdir()) == before
 
 
+@pytest.mark.slow
 def test_the_query_screen_finishes_a_default_database_build_cut_short(
     drive, app_at, tmp_path, monkeypatch
 ):

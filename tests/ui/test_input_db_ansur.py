@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import gzip
 
+import pytest
 from _screen import message, settle
 from test_query_screen import open_query_screen
 from test_work_progress import HeldWork, _answer, _state
@@ -69,6 +70,7 @@ def test_input_db_imports_an_ansur_file_under_the_label_asked_for(drive, app_at,
     assert [row[0] for row in stored] == [f"fieldstudy F {i}" for i in ids]
 
 
+@pytest.mark.slow
 def test_escape_rolls_an_ansur_import_back(drive, app_at, db, tmp_path, monkeypatch):
     male = next(p for p in shipped_ansur_files() if "FEMALE" not in p.name)
     before = _state(db)

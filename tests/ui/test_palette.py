@@ -183,6 +183,7 @@ def test_the_palette_runs_a_query_screen_command_from_the_spreadsheet(drive, app
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_the_palette_opens_the_figure_screen_for_its_overlay(drive, app_at):
     async def scenario():
         async with app_at((100, 30)) as (app, pilot):
@@ -209,6 +210,7 @@ def test_a_screen_that_cannot_open_from_here_says_how_to_get_there(drive, app_at
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_on_the_query_builder_pop_up_the_palette_lists_its_own_commands(drive, app_at, db):
     from sass_tui.ui.query_builder import QueryBuilderScreen
 

@@ -139,6 +139,7 @@ def test_predicted_figure_snapshot(db, snap_compare, new_app):
     assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=(80, 24))
 
 
+@pytest.mark.slow
 def test_a_gender_without_people_is_said(db, drive, app_at):
     async def scenario():
         async with app_at((80, 40), db=True) as (app, pilot):

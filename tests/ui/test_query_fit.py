@@ -90,6 +90,7 @@ def _direct_counts(edges, values) -> list[int]:
     ]
 
 
+@pytest.mark.slow
 def test_fit_screen_histogram_counts_the_population_and_draws_the_limits(drive, app_at, db):
     """The bars plotted are a direct count over the survey's CSV (mm -> cm);
     `l` moves to the next limited measurement."""
@@ -130,6 +131,7 @@ def test_fit_screen_histogram_snapshot(snap_compare, new_app, db):
     assert snap_compare(new_app(db=True), run_before=open_fit_screen, terminal_size=(100, 30))
 
 
+@pytest.mark.slow
 def test_the_fit_screen_says_when_it_is_done_and_f1_lists_its_keys(drive, app_at, db):
     """A SassScreen like the others: its message line says the test is done
     and which keys apply; F1 lists them; Escape closes the help, then returns."""

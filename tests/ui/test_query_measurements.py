@@ -69,6 +69,7 @@ def test_measurement_menu_filters_and_builds_a_query_with_quoted_text(drive, app
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_escape_in_the_measurement_menu_is_previous_menu(drive, app_at, db):
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):

@@ -288,6 +288,7 @@ def test_query_text_edited_before_done_then_re_executed(drive, app_at, db):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_constraint_that_is_not_a_number(drive, app_at, db):
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):
@@ -335,6 +336,7 @@ def test_paging_delete_and_busy_while_a_query_runs(drive, app_at, db):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_input_db_one_file_at_a_time(drive, app_at, db, tmp_path):
     from sass_tui.model import datasets
 

@@ -68,6 +68,7 @@ def test_measurement_menu_filtered(snap_compare, new_app, db):
     assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=SIZE)
 
 
+@pytest.mark.slow
 def test_individual_displayed(snap_compare, new_app, db):
     async def run_before(pilot):
         await pilot.press("d")

@@ -74,6 +74,7 @@ def test_click_cell_type_value_with_unit(drive, app_at):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_percentile_drives_value_and_blank_return_and_escape(drive, app_at):
     async def scenario():
         stats = read_population_file(datasets.path("girth.dat"), GIRTH).stats("male")
@@ -234,6 +235,7 @@ def test_group_percentile_rescales_that_group_only(drive, new_app):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_convert_units_and_back(drive, app_at):
     async def scenario():
         async with app_at(LARGE) as (app, pilot):

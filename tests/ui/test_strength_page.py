@@ -193,6 +193,7 @@ def test_ft_lb_to_n_m_and_back(drive, app_at):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_right_to_left_with_a_typed_factor_and_with_return(drive, app_at):
     async def scenario():
         async with app_at(SIZE) as (app, pilot):
@@ -300,6 +301,7 @@ def test_input_data_on_the_strength_page(drive, app_at, tmp_path):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_create_figure_with_and_without_strength(drive, app_at, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
 
