@@ -101,6 +101,7 @@ def test_an_angle_in_radians_does_not_open_the_query_screen(drive, app_at, how):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_female_typed_into_the_gender_cell_does_not_create_a_figure(drive, app_at):
     async def scenario():
         async with app_at(LARGE) as (app, pilot):
@@ -121,6 +122,7 @@ def test_female_typed_into_the_gender_cell_does_not_create_a_figure(drive, app_a
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_a_group_letter_then_digits_switch_group_first(drive, app_at):
     async def scenario():
         async with app_at(LARGE) as (app, pilot):

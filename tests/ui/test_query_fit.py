@@ -76,6 +76,7 @@ async def open_fit_screen(pilot) -> None:
     await settle(pilot)
 
 
+@pytest.mark.slow
 def test_fit_screen_snapshot(snap_compare, new_app, db):
     assert snap_compare(new_app(db=True), run_before=open_fit_screen, terminal_size=(80, 24))
 

@@ -49,6 +49,7 @@ MENU_PATHS = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("menu", sorted(MENU_PATHS))
 def test_popup_menu(snap_compare, new_app, db, menu):
     async def run_before(pilot):
@@ -59,6 +60,7 @@ def test_popup_menu(snap_compare, new_app, db, menu):
     assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=SIZE)
 
 
+@pytest.mark.slow
 def test_measurement_menu_filtered(snap_compare, new_app, db):
     async def run_before(pilot):
         await open_builder(pilot)
