@@ -4,8 +4,11 @@ and the command line's start-up imports only what `sass fig` needs."""
 from __future__ import annotations
 
 import pkgutil
+import shutil
 import subprocess
 import sys
+
+import pytest
 
 import sass_tui.db
 import sass_tui.model
@@ -88,12 +91,11 @@ def _imported_while_running(argv: list[str], cwd, heavy: tuple[str, ...] = HEAVY
     return set(filter(None, modules.split(",")))
 
 
-def test_a_query_in_inches_does_not_import_pint(tmp_path):
+@pytest.mark.slow
+def test_a_query_in_inches_does_not_import_pint(shipped_db_file, tmp_path):
     # Issue 16: "70 in" is converted from the unit table, not by pint.
-    from sass_tui.db.default import create_default_database
-
     db = tmp_path / "sass.db"
-    create_default_database(db)
+    shutil.copy(shipped_db_file, db)
     imported = _imported_while_running(
         ["--db", str(db), "query", "--format", "csv", "stature > 70 in"], tmp_path
     )
@@ -144,6 +146,7 @@ def test_the_spreadsheet_starts_without_what_other_screens_use():
     assert _run(code) == ""
 
 
+@pytest.mark.slow
 def test_the_first_screen_is_drawn_without_what_it_does_not_show():
     # Issue 16 (TUI first screen): the spreadsheet with its figure panel at 120
     # columns, up and drawn, has not imported what only exports, other screens

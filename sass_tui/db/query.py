@@ -71,7 +71,7 @@ from sass_tui.db.schema import (
 from sass_tui.db.scope import demonstration_query, real_only
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, suggest
-from sass_tui.model.units import DISPLAY, LARGEST_NUMBER, UnitError, convert, unit_name
+from sass_tui.model.units import LARGEST_NUMBER, UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, MOTION_NAMES, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 
@@ -612,10 +612,6 @@ def demonstration_hint(conn: Connection, text: str) -> str | None:
 
 def run_query(conn: Connection, text: str) -> Query:
     return Query(conn, compile_query(text))
-
-
-def unit_display(unit: str) -> str:
-    return DISPLAY.get(unit, unit)
 
 
 def compile_conjuncts(text: str) -> tuple[CompiledQuery, ...]:

@@ -123,6 +123,7 @@ def test_a_loaded_copy_is_not_written_again(db_path, tmp_path, monkeypatch):
         accelerator._STORES.clear()
 
 
+@pytest.mark.slow
 def test_db_init_drops_the_old_copy(db_path, tmp_path, monkeypatch):
     cache = tmp_path / "cache"
     built = sass(cache, "db", "copy", "--db", str(db_path))

@@ -44,6 +44,7 @@ def _checked(reports: list[tuple[int, int]]) -> None:
     assert done == sorted(done) and 0 <= done[0] and done[-1] == reports[-1][1]
 
 
+@pytest.mark.slow
 def test_flat_import_reports_lines_and_a_cancel_stores_nothing(default_db, tmp_path):
     files = write_big_flat_files(tmp_path / "big", people=1500)
     before = _state(default_db)

@@ -197,6 +197,7 @@ def test_the_library_refuses_a_read_only_database_before_writing(tmpfs_with_db, 
         conn.close()
 
 
+@pytest.mark.slow
 def test_a_first_build_the_disk_cut_short_is_finished_by_the_next_run(
     tmp_path, monkeypatch, capsys
 ):

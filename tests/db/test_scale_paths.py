@@ -500,6 +500,7 @@ WRITES = st.tuples(
 )
 
 
+@pytest.mark.slow
 def test_random_writes_keep_the_copy_equal_to_sqlite(small_db_file, tmp_path_factory, monkeypatch):
     """After any sequence of writes, by sass or another program, every count
     and id list from the copy is SQLite's."""

@@ -35,6 +35,7 @@ def check(name: str, value: object) -> str:
         faulthandler.cancel_dump_traceback_later()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(TARGET_MAKERS))
 def test_every_parser_survives_its_fuzz_inputs(name):
     target(name)  # build the seeds (and for queries the database) outside the examples

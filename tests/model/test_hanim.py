@@ -581,6 +581,7 @@ def test_sass_export_hanim_notes_girth_lengths_of_another_percentile(tmp_path, c
         assert capsys.readouterr().err == ""
 
 
+@pytest.mark.slow
 def test_the_segment_dimensions_the_humanoid_leaves_out_are_exactly_those_listed():
     # Every girth cell changed by 10 %: the ones in NOT_IN_HUMANOID leave the
     # export as it was (the joints stand at the stature's landmarks; LOA-1

@@ -38,6 +38,7 @@ def test_every_percentile_on_a_fine_grid(gender):
         assert ok.all(), (gender, joint, grid[~ok.all(axis=0)][:3])
 
 
+@pytest.mark.slow
 @settings(max_examples=40, deadline=None)
 @given(gender=st.sampled_from(["male", "female"]), p=PERCENTILES)
 def test_model_fig_and_hanim(gender, p):

@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import shutil
+
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -35,12 +37,11 @@ def test_no_control_character_survives(text):
     shown.encode("utf-8")  # printable on any UTF-8 terminal
 
 
-def test_sass_query_table_shows_a_hostile_name_inertly(tmp_path, capsys):
-    from sass_tui.db.default import create_default_database
+def test_sass_query_table_shows_a_hostile_name_inertly(shipped_db_file, tmp_path, capsys):
     from sass_tui.db.schema import connect
 
     db = tmp_path / "s.db"
-    create_default_database(db)
+    shutil.copy(shipped_db_file, db)
     conn = connect(db)
     with conn:
         first = conn.execute("SELECT MIN(id_num) FROM person").fetchone()[0]

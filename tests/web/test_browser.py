@@ -101,6 +101,7 @@ def browser(tmp_path: Path):
         driver.quit()
 
 
+@pytest.mark.slow
 def test_the_spreadsheet_runs_in_a_browser_and_takes_keys(served: str, browser) -> None:
     browser.get(served)
     start = browser.find_elements(By.ID, "start")
