@@ -10,7 +10,6 @@ from textual.dom import DOMNode
 from textual.widgets import Input
 
 from sass_tui.ui import textual_api
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_screen import QueryScreen
 from sass_tui.ui.spreadsheet import SpreadsheetScreen
 
@@ -33,10 +32,9 @@ def test_a_class_s_bindings_are_merged_down_its_bases():
     assert "left" in textual_api.class_bindings(Input).key_to_bindings  # Textual's own widget
 
 
-def test_a_node_s_bindings_are_those_it_has_now(drive):
+def test_a_node_s_bindings_are_those_it_has_now(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 37)):
+        async with app_at((100, 37)) as (app, _pilot):
             screen = app.screen
             assert isinstance(screen, SpreadsheetScreen)
             assert hasattr(screen, "_bindings"), MOVED.format(what="DOMNode._bindings")

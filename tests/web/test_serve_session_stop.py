@@ -33,6 +33,7 @@ class StubbornOptions(ServeOptions):
         return [sys.executable, "-c", STUBBORN]
 
 
+@pytest.mark.slow
 def test_a_session_process_that_will_not_quit_is_killed(tmp_path):
     options = StubbornOptions(host="localhost", port=1, token="t" * 32, workdir=tmp_path)
     service_class = _server_class().session_class
