@@ -23,7 +23,7 @@ UI = PACKAGE / "ui"
 TESTS = ROOT / "tests"
 MAX_METHODS = 30
 MAX_MODULE_LINES = 500
-# A ticket number in prose: "issue 16", "issues 12 and 14", "(issue #3)".
+# A ticket number in prose: "issue" or "issues", then a number (a "#" allowed).
 ISSUE_REFERENCE = re.compile(r"\bissues?\s+#?\d+", re.IGNORECASE)
 # Generated code is not read or written by hand.
 GENERATED = {PACKAGE / "db" / "_query_parser.py"}

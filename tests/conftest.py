@@ -46,7 +46,7 @@ def _private_default_database(tmp_path_factory: pytest.TempPathFactory):
         os.environ["SASS_DB"] = saved
 
 
-# --- the fault tests' small file systems (tests/_tmpfs.py; issue 17) ----------
+# --- the fault tests' small file systems (tests/_tmpfs.py) --------------------
 
 
 @pytest.fixture(scope="module")

@@ -178,7 +178,7 @@ def command_line() -> int:
 def main(argv: list[str] | None = None) -> int:
     gc.set_threshold(COLLECT_AFTER_OBJECTS, *gc.get_threshold()[1:])
     words = sys.argv[1:] if argv is None else argv
-    if not words:  # plain `sass`: the TUI, with no parser to build (issue 16: its first screen)
+    if not words:  # plain `sass`: the TUI, with no parser to build (a sooner first screen)
         return run_tui(None)
     parser = build_parser(words)
     args = parser.parse_args(words)

@@ -1,4 +1,4 @@
-"""`sass db init | import-flat | import-ansur | copy` (spec §5; copy: issue 16)."""
+"""`sass db init | import-flat | import-ansur` (spec §5) and `sass db copy` (the column copy)."""
 
 from __future__ import annotations
 

@@ -147,7 +147,7 @@ def run(args: argparse.Namespace) -> int:
 def prediction_json(
     predictor: Predictor, prediction: Prediction, population: str | None = None
 ) -> dict[str, Any]:
-    """The JSON document of one prediction (issue 13's shape); `population`
+    """The JSON document of one prediction; `population`
     the query the model learnt from (None: the default, every real person)."""
     cv = predictor.cv_rmse(prediction.gender, prediction.known)
     return {

@@ -121,7 +121,7 @@ class FitResult:
         return sum(g.not_measured for g in self.genders.values())
 
     def to_json(self) -> dict[str, Any]:
-        """The issue's JSON shape; per gender it also gives `naive_percent` and
+        """The JSON of docs/accommodation.md; per gender it also gives `naive_percent` and
         `not_measured`, per limit `not_measured` and `percent` (per gender)."""
         accommodated: dict[str, Any] = {
             g.gender: {

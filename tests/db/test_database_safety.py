@@ -1,7 +1,7 @@
-"""The database survives what users and other processes do to it (issue 17,
-"Critical: the database"): `db init` rebuilds in place, a stale journal is
-harmless, the schema is checked on open, a foreign or damaged file is never
-written, and the query lists work while another process imports."""
+"""The database survives what users and other processes do to it: `db init`
+rebuilds in place, a stale journal is harmless, the schema is checked on open,
+a foreign or damaged file is never written, and the query lists work while
+another process imports."""
 
 from __future__ import annotations
 

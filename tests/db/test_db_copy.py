@@ -1,5 +1,5 @@
 """`sass db copy`: the DuckDB column copy (sass_tui/db/accelerator.py) built now, so
-that a one-shot `sass query` in a fresh process counts from it (issue 16).
+that a one-shot `sass query` in a fresh process counts from it.
 
 The copy answers counts from accelerator.MIN_PEOPLE people; the processes
 here lower it to 0 so the default database (6,268 people) uses it, and say

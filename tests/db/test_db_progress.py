@@ -1,4 +1,4 @@
-"""Progress and cancel of the long database work (issue 15): every function
+"""Progress and cancel of the long database work: every function
 reports (done, total) and stops on a cancel with nothing written."""
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
-"""A full file system and a read-only one (issue 17, "Fault tests in the
-suite"): every write is refused with a message that names the file, never a
-traceback; the database is unchanged and passes `PRAGMA integrity_check`; no
-temporary file, journal or half-made database is left behind; reading goes on.
+"""A full file system and a read-only one: every write is refused with a
+message that names the file, never a traceback; the database is unchanged and
+passes `PRAGMA integrity_check`; no temporary file, journal or half-made
+database is left behind; reading goes on.
 
 The file systems are real: a tmpfs mounted for the test, filled to the last
 byte (or to a few pages) or remounted read-only (tests/_tmpfs.py; skipped

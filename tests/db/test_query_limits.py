@@ -1,5 +1,5 @@
 """A query's depth and size are bounded with a message that points at the
-token (issue 17: 247 nested parentheses raised RecursionError, an OR of
+token (unbounded, 247 nested parentheses raised RecursionError, an OR of
 1,000 terms SQLite's "Expression tree is too large")."""
 
 from __future__ import annotations

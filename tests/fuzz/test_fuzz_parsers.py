@@ -1,4 +1,4 @@
-"""Fuzzing in the suite (issue 17): every parser, a modest budget each.
+"""Fuzzing in the suite: every parser, a modest budget each.
 
 Each input is a mutated seed file or random text (tests/fuzz/fuzz_targets.py);
 the parser must return or raise SassError/OSError, never another exception.

@@ -1,4 +1,4 @@
-"""Joint limits are never an inverted or empty range (issue 11): for every
+"""Joint limits are never an inverted or empty range: for every
 joint, axis and both genders, lower <= upper at every percentile 0.5-99.5,
 in the model, in the .fig and in the HAnim file."""
 

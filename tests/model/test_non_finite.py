@@ -1,6 +1,6 @@
-"""Non-finite and absurd numbers are refused where they enter (issue 17,
-"Values that are not numbers"): population and strength files, the figure's
-strength parameters, the .fig reader and writer, the query language, JSON."""
+"""Non-finite and absurd numbers are refused where they enter:
+population and strength files, the figure's strength parameters, the .fig
+reader and writer, the query language, JSON."""
 
 from __future__ import annotations
 

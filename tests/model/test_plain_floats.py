@@ -1,4 +1,4 @@
-"""The first screen's numbers in plain floats equal numpy's (issue 16).
+"""The first screen's numbers in plain floats equal numpy's.
 
 The TUI computes the default figure before numpy is imported: population
 files are read into plain floats and the percentile model runs cell by cell.

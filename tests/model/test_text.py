@@ -1,5 +1,5 @@
-"""Control characters never reach a terminal (issue 17: a person named
-"\\x1b[2J\\x1b]0;pwned\\x07" cleared the screen when listed)."""
+"""Control characters never reach a terminal (a person named
+"\\x1b[2J\\x1b]0;pwned\\x07" once cleared the screen when listed)."""
 
 from __future__ import annotations
 
@@ -97,7 +97,7 @@ _NUMBER = st.floats(allow_nan=False, allow_infinity=False, width=32) | st.intege
     )
 )
 def test_the_query_table_is_the_same_made_at_once(rows):
-    # Issue 16: the table is made with one format per row and checked for
+    # For speed, the table is made with one format per row and checked for
     # control characters once; it must be what printable() per field made.
     from sass_tui.cli.query import _table_lines
 
