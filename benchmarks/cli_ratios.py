@@ -1,4 +1,4 @@
-"""Issue 16's start-up targets, each a ratio of two commands timed in one run.
+"""The start-up targets, each a ratio of two commands timed in one run.
 
 Every pair is run interleaved (A, B, A, B, ...) in fresh processes so that
 both sides see the same machine load; the table gives the medians and their

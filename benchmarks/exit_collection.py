@@ -1,4 +1,4 @@
-"""What the `sass` command's freeze before exit saves (issue 16, `sass query`).
+"""What the `sass` command's freeze before exit saves (`sass query`'s start-up).
 
 As Python ends it runs one last cyclic collection over every object still
 alive; `cli.command_line` freezes them first.  This times, interleaved in

@@ -11,7 +11,7 @@ process, median of N runs:
   each completed by the prediction model, .fig + .x3d each, family.json),
   against a baseline measured in the same run: one figure written the way
   `sass fig` + `sass export hanim` write it (Figure.default, .fig, .x3d).
-The targets (issue 14): fit test <= 50 ms, family with its 15 figures <= 2 s.
+The targets: fit test <= 50 ms, family with its 15 figures <= 2 s.
 """
 
 from __future__ import annotations

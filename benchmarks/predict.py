@@ -1,4 +1,4 @@
-"""Speed of `sass predict` (issue 13: a prediction ≤ 5 ms once the fit is cached).
+"""Speed of `sass predict` (target: a prediction ≤ 5 ms once the fit is cached).
 
     python benchmarks/predict.py [--db PATH]     (default: the default database, ANSUR II)
 

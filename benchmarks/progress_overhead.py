@@ -1,4 +1,4 @@
-"""What progress reports and the cancel cost (issue 15): each long db
+"""What progress reports and the cancel cost: each long db
 function run with a progress callback and a cancel (a threading.Event that is
 never set, as in the TUI) against the same call without, in the same run.
 

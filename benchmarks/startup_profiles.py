@@ -1,5 +1,5 @@
-"""Where the start-up of each issue-16 path goes: `python -X importtime` and
-py-spy, for `sass query`, `sass fig` and the TUI's first screen.
+"""Where the start-up of `sass query`, `sass fig` and the TUI's first screen goes
+(each has a start-up target): `python -X importtime` and py-spy.
 
 For each path: the modules imported (self time, the minimum over --runs runs
 of -X importtime, so machine load counts less), grouped by top-level package,

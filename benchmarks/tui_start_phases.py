@@ -7,7 +7,7 @@ spent in a few of Textual's and sass's functions (wrapped with
 perf_counter; nested calls of the same function are counted once):
 stylesheet parsing and applying, layout, rendering, `SassApp()` and the
 default figure.  It also says whether numpy was imported by the first
-screen (issue 16: it must not be).
+screen (it must not be).
 
     python benchmarks/tui_start_phases.py [--runs 7]
 """

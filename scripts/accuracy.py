@@ -239,8 +239,8 @@ def render(
         )
     lines += [
         "",
-        "Every goal of issue 13 is met by plain least squares (the issue expected ~23 % "
-        "for (a) and ~28 % for (b) from it).  The five tailor's measurements predict better "
+        "Every goal is met by plain least squares (it was expected to reach ~23 % for (a) "
+        "and ~28 % for (b)).  The five tailor's measurements predict better "
         "than stature and mass although they do not include stature: three are "
         "circumferences, which carry most of what mass does about the body's girths, and "
         "inseam and sleeve carry the lengths.",
@@ -309,7 +309,7 @@ def render(
         "R² of the held-out predictions; such values vary between people of one stature "
         "and mass almost as much as in the whole population (head, ear and face "
         "dimensions above all; elbow-rest height and head circumference among them, as "
-        "the issue expected).  Their intervals are correspondingly wide — close to the "
+        "expected).  Their intervals are correspondingly wide — close to the "
         "population's own 90 % range — and still cover 90 %.",
         "",
     ]

@@ -1,4 +1,4 @@
-"""A fuzz campaign over every sass parser (issue 17, docs/reliability.md).
+"""A fuzz campaign over every sass parser (docs/reliability.md).
 
     python scripts/fuzz.py --budget 10000            # inputs per parser
     python scripts/fuzz.py --budget 2000 --targets query fig --timeout 5

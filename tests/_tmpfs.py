@@ -1,4 +1,4 @@
-"""Small file systems the fault tests can fill or make read-only (issue 17).
+"""Small file systems the fault tests can fill or make read-only.
 
 `mounted_tmpfs(folder, size)` mounts a tmpfs of `size` bytes on `folder` and
 always unmounts it on the way out; where this process may not mount (not

@@ -1,5 +1,5 @@
 """Flat files (report figure 12) of many generated people: an Input DB that
-takes a while, for the progress and cancel tests (issue 15)."""
+takes a while, for the progress and cancel tests."""
 
 from __future__ import annotations
 

@@ -21,6 +21,18 @@ def ansur_dir() -> Path:
     return ANSUR
 
 
+@pytest.fixture(scope="session")
+def shipped_db_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The database `sass db init` builds from the shipped data, built once per
+    test process and never written: each area copies it (`db` in tests/ui,
+    `default_db_file` in tests/db, `default_people_db` in tests/web)."""
+    from sass_tui.db.default import create_default_database
+
+    path = tmp_path_factory.mktemp("shipped") / "sass.db"
+    create_default_database(path)
+    return path
+
+
 @pytest.fixture(autouse=True, scope="session")
 def _private_default_database(tmp_path_factory: pytest.TempPathFactory):
     """A command run without --db builds its default database here, never in the
@@ -34,7 +46,7 @@ def _private_default_database(tmp_path_factory: pytest.TempPathFactory):
         os.environ["SASS_DB"] = saved
 
 
-# --- the fault tests' small file systems (tests/_tmpfs.py; issue 17) ----------
+# --- the fault tests' small file systems (tests/_tmpfs.py) --------------------
 
 
 @pytest.fixture(scope="module")
@@ -53,3 +65,23 @@ def tmpfs_with_db(tmp_path, small_db_file):
         db = mnt / "sass.db"
         db.write_bytes(small_db_file.read_bytes())
         yield mnt, db
+
+
+# --- the slow marker --------------------------------------------------------
+
+SLOW_S = 2.0
+_unmarked_slow: list[tuple[str, float]] = []
+
+
+def pytest_runtest_logreport(report: pytest.TestReport) -> None:
+    """Note every test whose call took over SLOW_S without `@pytest.mark.slow`
+    (under xdist this runs in the controller, on each worker's report)."""
+    if report.when == "call" and report.duration > SLOW_S and "slow" not in report.keywords:
+        _unmarked_slow.append((report.nodeid, report.duration))
+
+
+def pytest_terminal_summary(terminalreporter) -> None:
+    if _unmarked_slow:
+        terminalreporter.write_sep("-", f"over {SLOW_S:g} s without @pytest.mark.slow")
+        for nodeid, duration in sorted(_unmarked_slow, key=lambda item: -item[1]):
+            terminalreporter.write_line(f"{duration:6.2f}s {nodeid}")

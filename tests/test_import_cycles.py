@@ -1,4 +1,4 @@
-"""Import hygiene: no two modules of sass_tui import each other (issue 10)."""
+"""Import hygiene: no two modules of sass_tui import each other."""
 
 from __future__ import annotations
 

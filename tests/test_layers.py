@@ -4,8 +4,11 @@ and the command line's start-up imports only what `sass fig` needs."""
 from __future__ import annotations
 
 import pkgutil
+import shutil
 import subprocess
 import sys
+
+import pytest
 
 import sass_tui.db
 import sass_tui.model
@@ -65,10 +68,13 @@ def test_the_command_line_starts_without_its_heavy_imports():
 
 
 HEAVY = ("lark", "pint", "textual", "numpy")
-# What `sass query` must not import either (issue 16: <= 5x a bare interpreter):
+# What `sass query` must not import either (start-up <= 5x a bare interpreter):
 # the generated parser's logging, dataclasses/inspect and pickle, and shutil
-# (argparse's help formatter imports it for the terminal's width).
-QUERY_NEEDS_NONE_OF = (*HEAVY, "logging", "dataclasses", "inspect", "pickle", "shutil")
+# (argparse's help formatter imports it for the terminal's width); nor the
+# drivers of the other engines on a SQLite file below the column copy's size.
+QUERY_NEEDS_NONE_OF = (
+    *HEAVY, "logging", "dataclasses", "inspect", "pickle", "shutil", "duckdb", "psycopg",
+)  # fmt: skip
 
 
 def _imported_while_running(argv: list[str], cwd, heavy: tuple[str, ...] = HEAVY) -> set[str]:
@@ -85,12 +91,11 @@ def _imported_while_running(argv: list[str], cwd, heavy: tuple[str, ...] = HEAVY
     return set(filter(None, modules.split(",")))
 
 
-def test_a_query_in_inches_does_not_import_pint(tmp_path):
-    # Issue 16: "70 in" is converted from the unit table, not by pint.
-    from sass_tui.db.default import create_default_database
-
+@pytest.mark.slow
+def test_a_query_in_inches_does_not_import_pint(shipped_db_file, tmp_path):
+    # "70 in" is converted from the unit table, not by pint (slow to import).
     db = tmp_path / "sass.db"
-    create_default_database(db)
+    shutil.copy(shipped_db_file, db)
     imported = _imported_while_running(
         ["--db", str(db), "query", "--format", "csv", "stature > 70 in"], tmp_path
     )
@@ -112,8 +117,8 @@ def test_sass_fig_does_not_import_pint(tmp_path):
 
 
 def test_only_the_verb_being_run_is_built():
-    # Issue 16: each verb's parser costs start-up time; `sass query` builds only
-    # its own, while `sass --help` (and an unknown verb's error) lists them all.
+    # Each verb's parser costs start-up time: `sass query` builds only its own,
+    # while `sass --help` (and an unknown verb's error) lists them all.
     import argparse
 
     from sass_tui.cli import VERBS, build_parser
@@ -130,7 +135,7 @@ def test_only_the_verb_being_run_is_built():
 
 
 def test_the_spreadsheet_starts_without_what_other_screens_use():
-    # Issue 16 (TUI first screen): the database, the query language, pint, the
+    # For a fast first screen: the database, the query language, pint, the
     # prediction model and the other screens load when first used.
     code = (
         "import sys\nimport sass_tui.ui.app\n"
@@ -141,8 +146,9 @@ def test_the_spreadsheet_starts_without_what_other_screens_use():
     assert _run(code) == ""
 
 
+@pytest.mark.slow
 def test_the_first_screen_is_drawn_without_what_it_does_not_show():
-    # Issue 16 (TUI first screen): the spreadsheet with its figure panel at 120
+    # For a fast first screen: the spreadsheet with its figure panel at 120
     # columns, up and drawn, has not imported what only exports, other screens
     # or the first edit use.
     code = (
@@ -162,7 +168,7 @@ def test_the_first_screen_is_drawn_without_what_it_does_not_show():
 
 
 def test_the_first_screen_is_drawn_before_numpy_is_imported():
-    # Issue 16 (TUI first screen <= 1.3x a bare Textual app): the default
+    # The first screen's start-up target (<= 1.3x a bare Textual app): the default
     # figure is computed and drawn in plain floats; numpy (~31 ms) is first
     # imported by the figure panel and the strength sheet, one frame later.
     # The first screen's numbers are those the numpy code gives (snapshots,
@@ -191,7 +197,7 @@ def test_the_first_screen_is_drawn_before_numpy_is_imported():
 
 
 def test_plain_sass_opens_the_tui_without_building_the_parser():
-    # Issue 16 (TUI first screen): with no arguments `sass` is the TUI, so no
+    # For a fast first screen: with no arguments `sass` is the TUI, so no
     # verb's module is imported nor its parser built.
     code = (
         "import sys\nimport sass_tui.ui.app as app\n"
@@ -204,7 +210,7 @@ def test_plain_sass_opens_the_tui_without_building_the_parser():
 
 
 def test_the_tui_holds_the_collector_until_its_first_screen_is_drawn():
-    # Issue 16 (TUI first screen): the start's long-lived objects are not walked
+    # For a fast first screen: the start's long-lived objects are not walked
     # by the cyclic collector (~50 ms) before the first screen; once it is
     # drawn the collector runs again, with those objects frozen out of its walks.
     code = (
@@ -241,7 +247,7 @@ def test_the_collector_runs_again_when_the_tui_ends_before_its_first_screen():
 
 
 def test_a_command_does_not_run_the_collector_while_it_starts(tmp_path):
-    # Issue 16 (`sass fig`): at Python's default threshold the collector ran
+    # For a fast `sass fig`: at Python's default threshold the collector ran
     # ~50 times during `sass fig`; at sass's it does not run at all.
     code = (
         "import gc\n"
@@ -255,7 +261,7 @@ def test_a_command_does_not_run_the_collector_while_it_starts(tmp_path):
 
 
 def test_the_sass_command_leaves_what_it_made_out_of_the_last_collection(tmp_path):
-    # Issue 16 (`sass query` <= 5x a bare interpreter): the interpreter's last
+    # `sass query`'s start-up target (<= 5x a bare interpreter): the interpreter's last
     # cyclic collection, as the process ends, walked every object the command
     # made (7-9 ms of `sass query`); the `sass` command freezes them first.
     code = (

@@ -3,7 +3,7 @@
 Each verb module has `register(commands)` (its arguments; imports nothing
 heavy) and sets `func` to a function of the parsed arguments that returns
 the exit status.  Only plain `sass` (the TUI) imports Textual, and only
-when run; numpy, sqlite3, lark and pint wait until a verb needs them.
+when run; numpy, sqlite3 and lark wait until a verb needs them.
 """
 
 from __future__ import annotations
@@ -178,7 +178,7 @@ def command_line() -> int:
 def main(argv: list[str] | None = None) -> int:
     gc.set_threshold(COLLECT_AFTER_OBJECTS, *gc.get_threshold()[1:])
     words = sys.argv[1:] if argv is None else argv
-    if not words:  # plain `sass`: the TUI, with no parser to build (issue 16: its first screen)
+    if not words:  # plain `sass`: the TUI, with no parser to build (a sooner first screen)
         return run_tui(None)
     parser = build_parser(words)
     args = parser.parse_args(words)
@@ -192,6 +192,11 @@ def run_tui(db: str | None) -> int:
     # classes, CSS rules, widgets); the cyclic collector would walk them some
     # 200 times before the first screen (50-85 ms, docs/performance.md).  It
     # is off until the app has drawn that screen (SassApp.first_screen_drawn).
+    from sass_tui.db.addresses import is_url, sqlite_only
+
+    if is_url(db) or (db is None and is_url(os.environ.get("SASS_DB"))):
+        print(f"sass: error: {sqlite_only('the spreadsheet (TUI)')}", file=sys.stderr)
+        return 2
     gc.disable()
     try:
         from sass_tui.model.errors import SassError
@@ -230,8 +235,12 @@ def run_verb(args: argparse.Namespace) -> int:
             print(printable(line), file=sys.stderr)
         return 2
     except Exception as exc:
-        sqlite3 = sys.modules.get("sqlite3")
-        if sqlite3 is not None and isinstance(exc, sqlite3.Error):
-            print(f"sass {args.command}: database error: {exc}", file=sys.stderr)
-            return 2
-        raise
+        if "sass_tui.db.database" not in sys.modules:
+            raise  # no database was opened: not an engine's error
+        from sass_tui.db.database import engine_error
+
+        error = engine_error(exc)
+        if error is None:
+            raise
+        print(f"sass {args.command}: error: {printable(error)}", file=sys.stderr)
+        return 2

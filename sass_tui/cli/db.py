@@ -1,4 +1,4 @@
-"""`sass db init | import-flat | import-ansur | copy` (spec §5; copy: issue 16)."""
+"""`sass db init | import-flat | import-ansur` (spec §5) and `sass db copy` (the column copy)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_database
 from sass_tui.cli.progress import progress_for
 
 
@@ -51,15 +51,15 @@ def register(commands: SubParsers) -> None:
     ansur.set_defaults(func=run_import_ansur)
     copy = actions.add_parser(
         "copy",
-        help="build or bring up to date the column copy that counts queries on "
-        "200,000 people and more",
-        description="Build or bring up to date now the column copy of the database "
-        "(numpy arrays under $XDG_CACHE_HOME/sass/columns) that counts a query on "
-        "200,000 people and more in milliseconds.  A count builds a missing copy in "
-        "the background, which a one-shot `sass query` does not live to finish; "
-        "after this, every process finds it (and follows later writes).  It holds "
-        "the columns it held, the person's gender, stature, mass, age and "
-        "handedness, and every column the QUERYs name.",
+        help="build the DuckDB column copy that counts queries on 200,000 people and more",
+        description="Build now the column copy of a SQLite database (a DuckDB file "
+        "under $XDG_CACHE_HOME/sass/columns; pip install 'sass-tui[fast]') that "
+        "counts a query on 200,000 people and more in milliseconds.  A count builds "
+        "a missing or outdated copy in the background, which a one-shot `sass query` "
+        "does not live to finish; after this, every process finds it until the next "
+        "write to the database (the copy is then built anew).  It holds the columns "
+        "it held, the person's gender, stature, mass, age and handedness, and every "
+        "column the QUERYs name.",
     )
     add_db_option(copy)
     copy.add_argument(
@@ -72,10 +72,15 @@ def register(commands: SubParsers) -> None:
 
 
 def run_init(args: argparse.Namespace) -> int:
+    from sass_tui.db.addresses import is_url
+    from sass_tui.db.database import configured_target
     from sass_tui.db.default import create_default_database, people_count
     from sass_tui.db.schema import DatabaseError, connect, default_db_path
 
-    path = Path(args.db) if getattr(args, "db", None) else default_db_path()
+    target = configured_target(getattr(args, "db", None))
+    if is_url(target):
+        return _init_postgres(str(target), args.force)
+    path = Path(target) if target else default_db_path()
     if path.exists() and path.stat().st_size and not args.force:
         conn = connect(path, rebuild=True)
         try:
@@ -114,6 +119,44 @@ def run_init(args: argparse.Namespace) -> int:
     return 0
 
 
+def _init_postgres(url: str, force: bool) -> int:
+    """`sass db init --db postgresql://...`: the schema and the default people,
+    in one transaction; asks (or needs --force) before replacing people."""
+    from sass_tui.db.database import Database, init_postgres
+    from sass_tui.db.postgres import shown
+    from sass_tui.db.schema import DatabaseError
+
+    if not force:
+        db = Database.open(url, create=True)
+        try:
+            held = db.people_count()
+        finally:
+            db.close()
+        if held:
+            if not (sys.stdin.isatty() and sys.stderr.isatty()):
+                raise DatabaseError(
+                    f"{shown(url)} holds {held} people; `sass db init --force` replaces them "
+                    "(imports included)"
+                )
+            sys.stderr.write(
+                f"{shown(url)} holds {held} people (imports included); "
+                "replace them with the default data set? [y/N] "
+            )
+            sys.stderr.flush()
+            if sys.stdin.readline().strip().lower() not in ("y", "yes"):
+                print("nothing changed", file=sys.stderr)
+                return 1
+    bar = progress_for(sys.stderr, "building")
+    counts = init_postgres(url, bar, force=True)
+    if bar:
+        bar.finish()
+    print(
+        f"created the sass schema in {shown(url)}: {counts.get('ansur2', 0)} ANSUR II people "
+        f"and {counts.get('synthetic', 0)} synthetic people"
+    )
+    return 0
+
+
 def _has_person_table(conn) -> bool:  # sqlite3.Connection
     return bool(
         conn.execute(
@@ -123,7 +166,7 @@ def _has_person_table(conn) -> bool:  # sqlite3.Connection
 
 
 def run_import_flat(args: argparse.Namespace) -> int:
-    from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_files
+    from sass_tui.db.flatfile import FlatFileError, FlatFiles
 
     if len(args.strength) > 4:
         raise FlatFileError("at most four strength files: strgh-par, shoulder, elbow, wrist")
@@ -135,18 +178,15 @@ def run_import_flat(args: argparse.Namespace) -> int:
         center_of_mass=Path(args.cmass),
         **{k: Path(v) for k, v in strength.items()},
     )
-    conn = open_db(args, create=True)
-    count = import_flat_files(conn, files)
+    count = open_database(args, create=True).import_flat(files)
     print(f"imported {count} people")
     return 0
 
 
 def run_import_ansur(args: argparse.Namespace) -> int:
-    from sass_tui.db.ansur import import_ansur
-
-    conn = open_db(args, create=True)
+    db = open_database(args, create=True)
     bar = progress_for(sys.stderr)
-    counts = import_ansur(conn, args.files, progress=bar, label=args.source)
+    counts = db.import_ansur(args.files, progress=bar, label=args.source)
     if bar:
         bar.finish()
     print(f"imported {counts['male']} men and {counts['female']} women")
@@ -156,6 +196,7 @@ def run_import_ansur(args: argparse.Namespace) -> int:
 def run_copy(args: argparse.Namespace) -> int:
     from sass_tui.db import accelerator
     from sass_tui.db.query import QueryError, compile_query
+    from sass_tui.db.schema import DatabaseError
     from sass_tui.model.text import printable
 
     wanted: set[tuple[str, str]] = set()
@@ -169,15 +210,21 @@ def run_copy(args: argparse.Namespace) -> int:
                 "with SQLite",
                 text,
             ) from None
-    conn = open_db(args)
+    db = open_database(args)
+    if db.dialect != "sqlite":
+        raise DatabaseError(
+            f"{db.name} is a PostgreSQL database: it counts with its own parallel scans "
+            "and needs no column copy"
+        )
     try:
-        path = accelerator.database_path(conn)
-        bar = progress_for(sys.stderr, "copying columns")
-        done = accelerator.refresh(conn, wanted, progress=bar)
-        if bar:
-            bar.finish()
+        with db.connection() as conn:
+            path = accelerator.database_path(conn)
+            bar = progress_for(sys.stderr, "copying columns")
+            done = accelerator.refresh(conn, wanted, progress=bar)
+            if bar:
+                bar.finish()
     finally:
-        conn.close()
+        db.close()
     names = ", ".join(
         column if table == "person" else f"{table}.{column}" for table, column in done.columns
     )

@@ -13,32 +13,54 @@ if TYPE_CHECKING:
 # What a verb's register() adds its parser to (argparse's class is generic only to type checkers).
 SubParsers: TypeAlias = "argparse._SubParsersAction[argparse.ArgumentParser]"
 
-DB_HELP = "database file (default: $SASS_DB, else $XDG_DATA_HOME/sass/sass.db)"
+DB_HELP = (
+    "database file, or a PostgreSQL database postgresql://user@host/db "
+    "(default: $SASS_DB, else $XDG_DATA_HOME/sass/sass.db)"
+)
 
 
 def add_db_option(parser: argparse.ArgumentParser) -> None:
     """`--db` after the verb; SUPPRESS keeps a `--db` given before the verb."""
-    parser.add_argument("--db", metavar="PATH", default=argparse.SUPPRESS, help=DB_HELP)
+    parser.add_argument("--db", metavar="PATH|URL", default=argparse.SUPPRESS, help=DB_HELP)
 
 
-def open_db(args: argparse.Namespace, create: bool = False):  # -> sqlite3.Connection
-    """The database `--db` names, or the default one (built on first use, with
-    a progress bar on a terminal)."""
+def open_database(args: argparse.Namespace, create: bool = False):  # -> db.database.Database
+    """The Database `--db` (or $SASS_DB) names, or the default file (built on
+    first use, with a progress bar on a terminal)."""
     import sys
 
     from sass_tui.cli.progress import progress_for
-    from sass_tui.db.default import needs_building, open_database
+    from sass_tui.db.addresses import is_url
+    from sass_tui.db.database import Database, configured_target
+    from sass_tui.db.default import needs_building
     from sass_tui.db.schema import default_db_path
     from sass_tui.model.paths import user_path
 
-    path = getattr(args, "db", None)
+    target = configured_target(getattr(args, "db", None))
     bar = None
-    if path is None and needs_building(default_db_path()):
+    if target is None and needs_building(default_db_path()):
         bar = progress_for(sys.stderr, f"building {default_db_path()}")
-    conn = open_database(user_path(path) if path else None, create=create, progress=bar)
+    if target is not None and not is_url(target):
+        target = user_path(target)
+    db = Database.open(target, create=create, progress=bar)
     if bar:
         bar.finish()
-    return conn
+    return db
+
+
+def open_db(args: argparse.Namespace, create: bool = False):  # -> sqlite3.Connection
+    """The SQLite database `--db` names, or the default one, for the verbs that
+    read a SQLite file only (a PostgreSQL address is refused, saying which
+    verbs serve it)."""
+    from sass_tui.db.addresses import is_url, sqlite_only
+    from sass_tui.db.database import configured_target
+    from sass_tui.db.schema import DatabaseError
+
+    if is_url(configured_target(getattr(args, "db", None))):
+        raise DatabaseError(sqlite_only(f"`sass {args.command}`"))
+    db = open_database(args, create=create)
+    with db.connection() as conn:
+        return conn
 
 
 def percentile(text: str) -> float:

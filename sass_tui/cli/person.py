@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_database
 
 
 def register(commands: SubParsers) -> None:
@@ -27,13 +27,11 @@ def register(commands: SubParsers) -> None:
 def run(args: argparse.Namespace) -> int:
     import json
 
-    from sass_tui.db.individual import find_person, person_record
-
-    conn = open_db(args)
+    db = open_database(args)
     try:
-        records = [person_record(conn, find_person(conn, key)) for key in args.ids]
+        records = db.person_records(args.ids)
     finally:
-        conn.close()
+        db.close()
     out = sys.stdout
     if args.format == "json":
         json.dump({"persons": records}, out, indent=1, allow_nan=False)

@@ -147,7 +147,7 @@ def run(args: argparse.Namespace) -> int:
 def prediction_json(
     predictor: Predictor, prediction: Prediction, population: str | None = None
 ) -> dict[str, Any]:
-    """The JSON document of one prediction (issue 13's shape); `population`
+    """The JSON document of one prediction; `population`
     the query the model learnt from (None: the default, every real person)."""
     cv = predictor.cv_rmse(prediction.gender, prediction.known)
     return {
@@ -293,7 +293,9 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
     # one C-level format per row: 10,000 rows x 450 numbers in well under a second
     number_format = ",".join(["%.3f"] * len(added)) + "\n"
     buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator=",")
+    # Each row's own cells, then a comma and its numbers.  Python 3.13 refuses a
+    # line terminator that is the delimiter, so the comma is written apart.
+    writer = csv.writer(buffer, lineterminator="")
     csv.writer(buffer, lineterminator="\n").writerow(columns)
     known_index = [index[f] for f in known_fields]
     for r, row in enumerate(body):
@@ -302,6 +304,6 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
             if not cells[c].strip():
                 cells[c] = f"{value[r, i]:.3f}"
         writer.writerow(cells)
-        buffer.write(number_format % tuple(table[r].tolist()))
+        buffer.write("," + number_format % tuple(table[r].tolist()))
     write_text_atomic(target, buffer.getvalue())
     return len(body)

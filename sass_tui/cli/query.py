@@ -8,7 +8,7 @@ from collections.abc import Iterable
 from itertools import islice
 from typing import TextIO
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_database
 
 
 def register(commands: SubParsers) -> None:
@@ -18,8 +18,8 @@ def register(commands: SubParsers) -> None:
     query.add_argument(
         "--count",
         action="store_true",
-        help="print only how many people match (on 200,000 people and more counted "
-        "from the column copy, see `sass db copy`)",
+        help="print only how many people match (on 200,000 people and more in a "
+        "SQLite file counted by DuckDB from a column copy, see `sass db copy`)",
     )
     query.add_argument(
         "--target",
@@ -33,19 +33,27 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from sass_tui.db.query import PERSON_FIELDS, Query, compile_query
+    from sass_tui.db.query import compile_query
 
     compiled = compile_query(args.query)  # before opening: a bad query touches nothing
-    conn = open_db(args)
-    query = Query(conn, compiled)
+    db = open_database(args)
+    with db.connection() as conn:  # engine errors (a server gone mid-listing) as messages
+        _answer(args, db.query(compiled), conn)
+    return 0
+
+
+def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Query
+    from sass_tui.db.query import PERSON_FIELDS
+
     if args.count:
         if args.target is not None:
-            return _weighted_count(conn, args.query, args.target)
+            _weighted_count(conn, args.query, args.target)
+            return
         found = query.count()
         print(found)
         if not found:
             _say_who_else(conn, args.query)
-        return 0
+        return
     if args.target is not None:
         from sass_tui.model.targets import TargetError
 
@@ -84,10 +92,9 @@ def run(args: argparse.Namespace) -> int:
         found = _write_table(out, rows)
     if not found:
         _say_who_else(conn, args.query)
-    return 0
 
 
-def _weighted_count(conn, query: str, name: str) -> int:
+def _weighted_count(conn, query: str, name: str) -> None:
     """The raw count, and beside it the target's weighted count and share."""
     from sass_tui.db.targets import load_target, weighted_count
 
@@ -99,7 +106,6 @@ def _weighted_count(conn, query: str, name: str) -> int:
         f"{', '.join(target.fields)} to {target.sample}; {counted.in_target} of the "
         f"{counted.count} people are the target's)"
     )
-    return 0
 
 
 def _say_who_else(conn, text: str) -> None:  # conn: sqlite3.Connection

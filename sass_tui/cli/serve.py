@@ -1,10 +1,28 @@
-"""`sass serve`: the spreadsheet in a web browser (textual-serve)."""
+"""`sass serve`: the spreadsheet in a web browser (textual-serve, ui/serve.py).
+
+The options are checked here, before anything listens: a remote address only
+with --allow-remote, TLS files that can be read, a token file's token, the
+working directory; then ui/serve.py serves.
+"""
 
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from sass_tui.cli.options import SubParsers, add_db_option
+from sass_tui.model.errors import SassError
+
+# secrets.token_urlsafe(32): 256 bits.  A token file's must have at least
+# 128 bits: 22 characters of the 64 a URL carries unquoted (6 bits each).
+TOKEN_BYTES = 32
+MIN_TOKEN_CHARACTERS = 22
+TOKEN_ALPHABET = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_")
+DEFAULT_MAX_SESSIONS = 8
+
+
+class ServeError(ValueError, SassError):
+    """Options `sass serve` cannot serve with."""
 
 
 def register(commands: SubParsers) -> None:
@@ -12,24 +30,229 @@ def register(commands: SubParsers) -> None:
         "serve",
         help="serve the spreadsheet to a web browser",
         description="Serve the same app to web browsers (one session per browser tab) "
-        "until Ctrl+C.",
+        "until Ctrl+C.  Prints the one URL to open: it carries a secret token, and "
+        "every request without it is refused.  Web sessions read and write files "
+        "only inside --workdir.",
     )
     serve.add_argument(
         "--host",
         default="localhost",
-        help="address to listen on (default localhost: this machine only)",
+        help="address to listen on (default localhost: this machine only; "
+        "any other needs --allow-remote)",
     )
     serve.add_argument("--port", type=int, default=8000, help="port (default 8000)")
+    serve.add_argument(
+        "--allow-remote",
+        action="store_true",
+        help="allow a --host other machines reach (traffic is plain HTTP unless "
+        "--certfile/--keyfile or a TLS reverse proxy)",
+    )
+    serve.add_argument("--certfile", metavar="F", help="TLS certificate (PEM): serve https/wss")
+    serve.add_argument("--keyfile", metavar="F", help="TLS private key (PEM) of --certfile")
+    serve.add_argument(
+        "--public-url",
+        metavar="URL",
+        help="the URL users open when a reverse proxy serves sass "
+        "(e.g. https://sass.example.org/): its origin is this server's",
+    )
+    serve.add_argument(
+        "--token-file",
+        metavar="F",
+        help="read the token from F (at least 22 characters of A-Z a-z 0-9 - _) "
+        "instead of making a new one",
+    )
+    serve.add_argument(
+        "--workdir",
+        metavar="DIR",
+        help="the directory web sessions read and write files in (default: a new "
+        "directory under the user's data directory, printed at start)",
+    )
+    serve.add_argument(
+        "--read-only",
+        action="store_true",
+        help="web sessions query the database but cannot change it (no Input DB)",
+    )
+    serve.add_argument(
+        "--max-sessions",
+        type=_positive,
+        default=DEFAULT_MAX_SESSIONS,
+        metavar="N",
+        help=f"at most N live sessions (default {DEFAULT_MAX_SESSIONS})",
+    )
+    serve.add_argument(
+        "--open", action="store_true", help="open the URL in this machine's web browser"
+    )
     add_db_option(serve)
     serve.set_defaults(func=run)
 
 
+def _positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"{value} is not 1 or more")
+    return value
+
+
 def run(args: argparse.Namespace) -> int:
-    from sass_tui.ui.serve import serve
+    import sys
+    from importlib.util import find_spec
+
+    if find_spec("textual_serve") is None:  # the [serve] extra is not installed
+        raise ServeError("sass serve needs textual-serve: pip install 'sass-tui[serve]'")
+    from sass_tui.ui.serve import ServeOptions, serve
+
+    loopback = is_loopback(args.host)
+    if not loopback and not args.allow_remote:
+        raise ServeError(
+            f"--host {args.host} is reachable from other machines: whoever reaches it "
+            "with the token drives sass as you. Add --allow-remote if you mean it "
+            "(with --certfile/--keyfile, or behind a TLS reverse proxy: docs/user-guide.md)"
+        )
+    ssl_context = tls_context(args.certfile, args.keyfile)
+    if args.public_url is not None:
+        check_public_url(args.public_url)
+    token = read_token(args.token_file) if args.token_file else new_token()
+    workdir = served_workdir(args.workdir)
+    db = database_path(args, args.read_only)
+    options = ServeOptions(
+        host=args.host,
+        port=args.port,
+        token=token,
+        workdir=workdir,
+        db=db,
+        read_only=args.read_only,
+        max_sessions=args.max_sessions,
+        loopback=loopback,
+        public_url=args.public_url,
+        ssl_context=ssl_context,
+        open_browser=args.open,
+    )
+    err = sys.stderr
+    print(f"sass serve: web sessions read and write files in {workdir}", file=err)
+    if db is not None:
+        print(f"sass serve: database {db}{' (read-only)' if args.read_only else ''}", file=err)
+    if not loopback and ssl_context is None:
+        print(
+            f"sass serve: warning: {args.host} serves plain HTTP: anyone on the network "
+            "between the browser and this machine can read the token and every session. "
+            "Give --certfile/--keyfile, or serve it behind a TLS reverse proxy "
+            "(docs/user-guide.md).",
+            file=err,
+        )
+    print(
+        f"sass serve: at most {args.max_sessions} sessions; Ctrl+C stops the server.",
+        file=err,
+        flush=True,
+    )
+    return serve(options)
+
+
+def is_loopback(host: str) -> bool:
+    """True when every address `host` names is this machine's loopback."""
+    import socket
+    from ipaddress import ip_address
+
+    try:
+        infos = socket.getaddrinfo(host, None)
+    except (OSError, UnicodeError):
+        return False  # not resolvable here: not known to be local
+    return bool(infos) and all(
+        ip_address(str(info[4][0]).split("%")[0]).is_loopback for info in infos
+    )
+
+
+def tls_context(certfile: str | None, keyfile: str | None):  # -> ssl.SSLContext | None
+    if certfile is None and keyfile is None:
+        return None
+    if certfile is None:
+        raise ServeError("--keyfile needs --certfile (the certificate it belongs to)")
+    import ssl
+
+    from sass_tui.model.paths import regular_file
+
+    cert = regular_file(certfile)
+    key = regular_file(keyfile) if keyfile else None
+    context = ssl.create_default_context(ssl.Purpose.CLIENT_AUTH)
+    try:
+        context.load_cert_chain(cert, key)
+    except (ssl.SSLError, OSError) as exc:
+        raise ServeError(
+            f"{cert}{f' with {key}' if key else ''}: not a usable TLS certificate "
+            f"and private key (PEM): {exc}"
+        ) from None
+    return context
+
+
+def check_public_url(url: str) -> None:
+    from urllib.parse import urlsplit
+
+    parts = urlsplit(url)
+    if parts.scheme not in ("http", "https") or not parts.hostname:
+        raise ServeError(f"--public-url {url!r}: expected http(s)://HOST[:PORT]/")
+
+
+def new_token() -> str:
+    import secrets
+
+    return secrets.token_urlsafe(TOKEN_BYTES)
+
+
+def read_token(name: str) -> str:
+    """The token in file `name` (its first line, spaces around it dropped)."""
+    from sass_tui.model.paths import regular_file
+
+    path = regular_file(name)
+    try:
+        lines = path.read_text(encoding="utf-8").splitlines()
+    except UnicodeDecodeError:
+        raise ServeError(f"{path}: not UTF-8 text; expected a token") from None
+    token = lines[0].strip() if lines else ""
+    bad = sorted(set(token) - TOKEN_ALPHABET)
+    if len(token) < MIN_TOKEN_CHARACTERS or bad:
+        why = f"characters {''.join(bad)!r} are not allowed" if bad else f"{len(token)} characters"
+        raise ServeError(
+            f"{path}:1: the token must be at least {MIN_TOKEN_CHARACTERS} characters of "
+            f"A-Z a-z 0-9 - _ (128 bits); {why}"
+        )
+    return token
+
+
+def served_workdir(name: str | None) -> Path:
+    """--workdir (made if missing), or a new directory under the user's data
+    directory; its real path, so that no link in it moves later."""
+    if name is None:
+        import tempfile
+        import time
+
+        from sass_tui.model.paths import data_dir
+
+        base = data_dir() / "serve"
+        base.mkdir(parents=True, exist_ok=True)
+        stamp = time.strftime("%Y%m%d-%H%M%S-")
+        return Path(tempfile.mkdtemp(prefix=stamp, dir=base)).resolve()
+    from sass_tui.model.paths import user_path
+
+    path = user_path(name)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except FileExistsError:
+        raise ServeError(f"--workdir {path}: not a directory") from None
+    return path.resolve()
+
+
+def database_path(args: argparse.Namespace, read_only: bool) -> Path | None:
+    """The database the sessions open.  Read-only, it is opened (and the
+    default one built on first use) here, since a session cannot build it."""
+    from sass_tui.model.paths import user_path
 
     db = getattr(args, "db", None)
-    if db:
-        from pathlib import Path
+    if not read_only:
+        return user_path(db).resolve() if db else None
+    from sass_tui.cli.options import open_db
+    from sass_tui.db.schema import default_db_path
 
-        db = str(Path(db).expanduser().resolve())
-    return serve(args.host, args.port, db)
+    open_db(args).close()
+    return user_path(db).resolve() if db else default_db_path().resolve()

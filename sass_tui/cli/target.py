@@ -19,8 +19,6 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
-    import sqlite3
-
     from sass_tui.db.targets import Target
     from sass_tui.model.targets import Weighting
 
@@ -194,7 +192,7 @@ def _report(target: Target, weighting: Weighting, incomplete: int, out: TextIO) 
         print(f"warning: {warning}", file=sys.stderr)
 
 
-def _list(conn: sqlite3.Connection, out: TextIO) -> None:
+def _list(conn, out: TextIO) -> None:  # conn: the database layer's connection
     from sass_tui.db.targets import list_targets
 
     targets = list_targets(conn)

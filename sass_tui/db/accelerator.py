@@ -1,67 +1,53 @@
-"""A column copy of the queried fields, for counting queries on millions of people.
+"""Counts over millions of people from DuckDB, reading a copy of the queried columns.
 
 SQLite answers a count by visiting, for each person, one row of every query
 table the query names: on 5,000,000 people the report's sample query takes
-2-4 s that way.  Here each queried column (`person.gender`,
-`q_girth_right_upper_arm.z`, ...) is copied once into a numpy array aligned
-on the sorted person ids, and a compiled query's WHERE clause is evaluated
-over those arrays: tens of milliseconds at 5,000,000 people
-(docs/performance.md, "Database at scale").
+seconds that way.  DuckDB (an established column engine, `pip install
+'sass-tui[fast]'`) answers the same query tree (db/query_tree.py, its
+"duckdb" dialect) over one wide table of the queried columns in tens of
+milliseconds (docs/performance.md, "Database at scale").  DuckDB cannot read
+the SQLite file here (its SQLite reader is an extension it downloads at run
+time), so the columns are copied once into a DuckDB file under
+$XDG_CACHE_HOME/sass/columns/ (one folder per database file) and the copy
+carries the data version of the SQLite file it was read from.
 
 The SQLite file stays the store of record; the copy may never disagree with it:
 
-- The copy carries the data version the SQLite file had when the copy was
-  last brought up to date: the header's change counter (SQLite bumps it on
-  every committed write in rollback-journal mode), page count and schema
-  cookie, with the file's size, mtime and inode.  The version is read, the
-  copy brought up to date and the query evaluated while one read
-  transaction holds SQLite's shared lock, so no writer commits in between.
-- A file of schema 4 logs every write to every table a query reads
-  (db/schema.py, change_log_triggers): the changed person's id and the
-  generation it changed in (sass's bulk writes log each person once, in
-  the same transaction, with the triggers quiet: schema.logged_once).  Another data version then means: re-read, in
-  that same transaction, the people logged at the copy's generation or
-  later (`_sync`), a few milliseconds for a few people.  The log cannot say
-  when the schema changed (`db init`, a dropped trigger), when the file holds
-  another history (its generation token differs: another database, or an
-  older copy of this one) or when more than PATCH_PEOPLE people changed; the
-  copy is then built anew, in a background thread (BACKGROUND) while SQLite
-  answers, each column read in a short transaction of its own and joined to
-  the copy only when its generation is no older than the copy's (what
-  changed meanwhile is logged, and re-read at the next count).
-- Whatever this module cannot prove equal, SQLite answers: a database in WAL
-  mode (its header counter does not move on every write), a connection with
-  its own transaction open, a query whose SQL is not a plain AND / OR of
-  `alias.column OP ?` comparisons over tables keyed one row per person, a
-  column holding a value of another type than the one declared, a text
-  column with a collation.  `count` then returns None.
-- The WHERE clause has no NOT, so SQL's unknown (a comparison with NULL) can
-  be read as false: AND / OR of true / false / unknown is true exactly when
-  it is true with every unknown read as false.  NULL is NaN here (a REAL
-  column cannot hold NaN in SQLite) and `!=` excludes it explicitly.
+- The data version is the header's change counter (SQLite bumps it on every
+  committed write in rollback-journal mode), page count and schema cookie,
+  with the file's size, mtime and inode.  It is read, compared with the
+  copy's and the query answered while one read transaction holds SQLite's
+  shared lock, so no writer commits in between.  Any other version: the
+  copy is built anew (in a background thread while SQLite answers; in the
+  caller for `sass db copy`), whoever wrote the file.  No trigger follows
+  the writes: a copy is all or nothing.
+- Whatever cannot be proved equal, SQLite answers: a database in WAL mode
+  (the header counter does not move on every write), a connection with its
+  own transaction open, a column holding a value of another type than the
+  one declared, a text column with a collation, more than MAX_WORDS
+  different words or a word that is not ASCII (DuckDB's lower() and
+  SQLite's NOCASE agree on ASCII only), a query table that is not one row
+  per person; DuckDB not installed.  `count` then returns None.
+- SQL's unknown is the same in both engines: a missing value is NULL in the
+  copy (never NaN, which DuckDB orders above every number).
 
 Only databases with at least MIN_PEOPLE people use the copy (below that
-SQLite is fast, and numpy need not be imported).  The copy lives in memory
-for the process and on disk under $XDG_CACHE_HOME/sass/columns/ (one folder
-per database file, saved after a build or a patch by the background thread)
-for the next process, which brings it up to date through the log as well.
+SQLite is fast, and neither numpy nor duckdb need be imported).
 """
 
 from __future__ import annotations
 
 import os
-import re
 import sqlite3
 import threading
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from sass_tui.db.query_tree import Comparison, columns, to_sql
+
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterable
-
-    import numpy as np
-    import numpy.typing as npt
 
     from sass_tui.db.query import CompiledQuery
 
@@ -70,98 +56,22 @@ MIN_PEOPLE = 200_000
 MAX_WORDS = 200
 # Where the copies live; None: $XDG_CACHE_HOME/sass/columns (~/.cache/sass/columns).
 CACHE_DIR: Path | None = None
-
-_COMPARISON = re.compile(r"([a-z_][a-z0-9_]*)\.([a-z_][a-z0-9_]*) (<=|>=|!=|<|>|=) \?")
-_TOKEN = re.compile(r"\s*(?:(\()|(\))|(AND)\b|(OR)\b|" + _COMPARISON.pattern + ")")
+# Build a missing copy in a background thread while SQLite answers (True), or
+# in the caller (False: tests and benchmarks).
+BACKGROUND = True
+COPY_FILE = "copy.duckdb"
+# The columns every copy holds besides those its queries name: the person's own.
+DEFAULT_COLUMNS = (
+    ("person", "gender"),
+    ("person", "stature"),
+    ("person", "mass"),
+    ("person", "age"),
+    ("person", "handedness"),
+)
 
 
 class Unsupported(Exception):
     """The copy cannot answer this query or database provably alike: SQLite answers."""
-
-
-# --- the WHERE clause ------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class Comparison:
-    table: str
-    column: str
-    op: str
-    value: object
-
-
-# A parsed WHERE: a Comparison, or ("AND" | "OR", [operands]).
-Node = Any
-
-
-def parse_where(where: str, params: tuple[object, ...], aliases: dict[str, str]) -> Node:
-    """The compiled WHERE as a tree, or Unsupported for any other SQL."""
-    tokens: list[tuple[str, Any]] = []
-    pos = 0
-    values = iter(params)
-    while pos < len(where):
-        if where[pos:].strip() == "":
-            break
-        m = _TOKEN.match(where, pos)
-        if m is None and where[pos:].lstrip().startswith("COLLATE NOCASE"):
-            raise Unsupported("it compares a word without regard to case, which SQLite does")
-        if m is None:
-            raise Unsupported(f"SQL not understood at {where[pos : pos + 20]!r}")
-        pos = m.end()
-        if m.group(1):
-            tokens.append(("(", None))
-        elif m.group(2):
-            tokens.append((")", None))
-        elif m.group(3):
-            tokens.append(("AND", None))
-        elif m.group(4):
-            tokens.append(("OR", None))
-        else:
-            alias, column, op = m.group(5), m.group(6), m.group(7)
-            if alias not in aliases:
-                raise Unsupported(f"unknown alias {alias}")
-            try:
-                value = next(values)
-            except StopIteration:
-                raise Unsupported("fewer parameters than placeholders") from None
-            tokens.append(("CMP", Comparison(aliases[alias], column, op, value)))
-    if next(values, StopIteration) is not StopIteration:
-        raise Unsupported("more parameters than placeholders")
-    tree, rest = _expr(tokens, 0)
-    if rest != len(tokens):
-        raise Unsupported("trailing SQL")
-    return tree
-
-
-def _expr(tokens: list[tuple[str, Any]], i: int) -> tuple[Node, int]:
-    return _chain(tokens, i, "OR", _term)
-
-
-def _term(tokens: list[tuple[str, Any]], i: int) -> tuple[Node, int]:
-    return _chain(tokens, i, "AND", _factor)
-
-
-def _chain(tokens: list[tuple[str, Any]], i: int, word: str, operand: Any) -> tuple[Node, int]:
-    first, i = operand(tokens, i)
-    items = [first]
-    while i < len(tokens) and tokens[i][0] == word:
-        item, i = operand(tokens, i + 1)
-        items.append(item)
-    return (first if len(items) == 1 else (word, items)), i
-
-
-def _factor(tokens: list[tuple[str, Any]], i: int) -> tuple[Node, int]:
-    if i >= len(tokens):
-        raise Unsupported("SQL ends early")
-    kind, value = tokens[i]
-    if kind == "CMP":
-        return value, i + 1
-    if kind == "(":
-        node, i = _expr(tokens, i + 1)
-        if i >= len(tokens) or tokens[i][0] != ")":
-            raise Unsupported("unbalanced parentheses")
-        return node, i + 1
-    raise Unsupported(f"unexpected {kind}")
 
 
 # --- the data version ------------------------------------------------------
@@ -194,584 +104,16 @@ def database_path(conn: sqlite3.Connection) -> Path:
     raise Unsupported("no main database")  # pragma: no cover - SQLite always has one
 
 
-# --- the columns -----------------------------------------------------------
-
-
-@dataclass
-class TextColumn:
-    codes: npt.NDArray[np.int32]  # index into words, -1 for NULL
-    words: list[str]
-
-
-Column = Any  # a float64 array (NaN for NULL) or a TextColumn, aligned on the store's ids
-
-
-@dataclass
-class ColumnStore:
-    """The copy of one database file.
-
-    Invariant (the change log's promise): for every person not logged in
-    change_log at generation `gen` or later, `ids` holds the person exactly
-    when the person table does, and every column holds the person's value.
-    Whatever changed since is re-read from SQLite by `_sync` inside the
-    reading transaction before any answer (`key` unchanged: nothing changed).
-    A store of a file without the log (`logged` False) is valid only while
-    `key` is the file's data version.
-    """
-
-    key: tuple[int, ...]
-    gen: int
-    token: int | None
-    logged: bool
-    ids: npt.NDArray[np.int64]
-    columns: dict[tuple[str, str], Column] = field(default_factory=dict)
-    refused: set[tuple[str, str]] = field(default_factory=set)
-    saved_key: tuple[int, ...] | None = None  # the key of the copy on disk
-
-    @property
-    def cookie(self) -> int:
-        return self.key[2]
-
-
-def _generation(conn: sqlite3.Connection, gen: int | None = None) -> tuple[int, int | None]:
-    """The current generation and its token (or generation `gen`'s token; None if absent)."""
-    if gen is None:
-        row = conn.execute(
-            "SELECT gen, token FROM change_gens ORDER BY gen DESC LIMIT 1"
-        ).fetchone()
-    else:
-        row = conn.execute("SELECT gen, token FROM change_gens WHERE gen = ?", (gen,)).fetchone()
-    return (int(row[0]), int(row[1])) if row else (0 if gen is None else gen, None)
-
-
-def _has_change_log(conn: sqlite3.Connection) -> bool:
-    """Whether the file's triggers log every write to every table a query reads,
-    exactly as this sass writes them (anything else: no incremental copy)."""
-    from sass_tui.db.schema import change_log_triggers
-
-    found = {
-        name: sql
-        for name, sql in conn.execute(
-            "SELECT name, sql FROM sqlite_master WHERE type = 'trigger' "
-            "AND (name LIKE 'log\\_%' ESCAPE '\\' OR name = 'change_note_insert')"
-        )
-    }
-    expected = change_log_triggers()
-    return not _log_quiet(conn) and all(
-        found.get(name, "").replace("IF NOT EXISTS ", "") == sql.replace("IF NOT EXISTS ", "")
-        for name, sql in expected.items()
-    )
-
-
-def _moved_by_bulk_writes(conn: sqlite3.Connection, old: int, new: int) -> bool:
-    """Whether the schema cookie went from `old` to `new` only by sass's bulk
-    writes, each of which dropped the per-row triggers, logged every person
-    it wrote and created the triggers again in one transaction, recording
-    its move in change_schema (schema.logged_once); and the log is whole
-    now.  Any other schema change (a trigger dropped by another program, db
-    init) breaks the chain."""
-    try:
-        while old != new:
-            row = conn.execute(
-                "SELECT to_cookie FROM change_schema WHERE from_cookie = ?", (old,)
-            ).fetchone()
-            if row is None or not old < int(row[0]) <= new:
-                return False
-            old = int(row[0])
-    except sqlite3.OperationalError:  # no change_schema: not a file of this schema
-        return False
-    return _has_change_log(conn)
-
-
-def _log_quiet(conn: sqlite3.Connection) -> bool:
-    """Whether a committed row in change_bulk keeps the triggers quiet (sass's
-    bulk writer never commits one: another program did, and writes may go
-    unlogged)."""
-    try:
-        return conn.execute("SELECT 1 FROM change_bulk LIMIT 1").fetchone() is not None
-    except sqlite3.OperationalError:  # no such table: not a file of this schema
-        return True
-
-
-def _base(conn: sqlite3.Connection, key: tuple[int, ...]) -> ColumnStore:
-    """A store holding the person ids only (inside the caller's read transaction)."""
-    logged = _has_change_log(conn)
-    gen, token = _generation(conn) if logged else (0, None)
-    ids = _fetch_ints(conn, "SELECT id_num FROM person ORDER BY id_num")
-    return ColumnStore(key=key, gen=gen, token=token, logged=logged, ids=ids)
-
-
-def _read_column(
-    conn: sqlite3.Connection,
-    table: str,
-    column: str,
-    ids: npt.NDArray[np.int64],
-    only: npt.NDArray[np.int64] | None = None,
-    words: list[str] | None = None,
-) -> tuple[npt.NDArray[np.intp], Any, list[str] | None]:
-    """The column's values read from SQLite: (positions in ids, values there,
-    the words of a text column).  `only`: just those people (a patch).
-    Positions of people not in ids are left out."""
-    import numpy as np
-
-    kind = _column_kind(conn, table, column)
-    where = f"{column} IS NOT NULL"
-    params: list[object] = []
-    if only is not None:
-        import json
-
-        where += " AND id_num IN (SELECT value FROM json_each(?))"
-        params.append(json.dumps(only.tolist()))
-    if kind == "real":
-        # Anything but a REAL value (text, a blob) becomes 'not real', which
-        # float() refuses: such a column cannot be copied and SQLite answers.
-        cursor = conn.execute(
-            f"SELECT id_num, CASE typeof({column}) WHEN 'real' THEN {column} "
-            f"ELSE 'not real' END FROM {table} WHERE {where}",
-            params,
-        )
-        try:
-            rows = _fetch_pairs(cursor, np.float64)
-        except ValueError:
-            raise Unsupported(f"{table}.{column} holds a value that is not REAL") from None
-        values = rows["v"]
-        new_words = None
-    else:
-        # The distinct words first, then each row's word number computed by
-        # SQLite (a CASE over the words, with the column's own BINARY
-        # comparison): no Python work per row.  A value that is not text
-        # becomes -2 and refuses the copy.
-        new_words = list(words or [])
-        for (w,) in conn.execute(
-            f"SELECT DISTINCT {column} FROM {table} WHERE typeof({column}) = 'text'"
-            + ("" if only is None else " AND id_num IN (SELECT value FROM json_each(?))"),
-            params,
-        ):
-            if w not in new_words:
-                new_words.append(w)
-        if len(new_words) > MAX_WORDS:
-            raise Unsupported(f"{table}.{column} has more than {MAX_WORDS} different values")
-        cases = "".join(f" WHEN {column} = ? THEN {k}" for k in range(len(new_words)))
-        cursor = conn.execute(
-            f"SELECT id_num, CASE WHEN typeof({column}) <> 'text' THEN -2{cases} ELSE -3 END "
-            f"FROM {table} WHERE {where}",
-            [*new_words, *params],
-        )
-        rows = _fetch_pairs(cursor, np.int32)
-        if len(rows) and int(rows["v"].min()) < 0:
-            raise Unsupported(f"{table}.{column} holds a value that is not TEXT")
-        values = rows["v"]
-    at, known = _positions(ids, rows["id"])
-    return at[known], values[known], new_words
-
-
-def _new_column(
-    conn: sqlite3.Connection, table: str, column: str, ids: npt.NDArray[np.int64]
-) -> Column:
-    import numpy as np
-
-    at, values, words = _read_column(conn, table, column, ids)
-    if words is None:
-        out = np.full(len(ids), np.nan)
-        out[at] = values
-        return out
-    codes = np.full(len(ids), -1, dtype=np.int32)
-    codes[at] = values
-    return TextColumn(codes, words)
-
-
-def _positions(
-    people: npt.NDArray[np.int64], ids: npt.NDArray[np.int64]
-) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.bool_]]:
-    """Where each id sits in the sorted people, and which ids are there at all."""
-    import numpy as np
-
-    at = np.searchsorted(people, ids)
-    if not len(people):
-        return at, at < 0
-    at_clipped = np.minimum(at, len(people) - 1)
-    return at_clipped, people[at_clipped] == ids
-
-
-# --- following the writes ----------------------------------------------------
-
-# Re-read the people changed since the copy while they are at most this many
-# (or this share of everyone); more, and the copy is rebuilt.
-PATCH_PEOPLE = 20_000
-PATCH_SHARE = 0.05
-
-
-def _sync(conn: sqlite3.Connection, store: ColumnStore, key: tuple[int, ...]) -> bool:
-    """Bring the store up to the file's data (inside the caller's read
-    transaction).  False: the change log cannot say what changed (or too
-    much did), the store must be rebuilt."""
-    import numpy as np
-
-    if store.key == key:
-        return True
-    if not store.logged:
-        return False
-    if store.cookie != key[2] and not _moved_by_bulk_writes(conn, store.cookie, key[2]):
-        return False  # the schema changed (db init, a dropped trigger)
-    if _log_quiet(conn):
-        return False  # the triggers are kept quiet: the log may miss writes
-    if _generation(conn, store.gen)[1] != store.token:
-        return False  # another history: another database, or an older copy of this one
-    gen, token = _generation(conn)
-    changed = np.sort(
-        _fetch_ints(conn, f"SELECT id_num FROM change_log WHERE gen >= {int(store.gen)}")
-    )
-    if len(changed) > max(PATCH_PEOPLE, PATCH_SHARE * len(store.ids)):
-        return False
-    if len(changed):
-        import json
-
-        present = _fetch_ints(
-            conn,
-            "SELECT id_num FROM person WHERE id_num IN (SELECT value FROM json_each(?)) "
-            "ORDER BY id_num",
-            (json.dumps(changed.tolist()),),
-        )
-        at, was_there = _positions(store.ids, changed)
-        plan = _splice_plan(at[was_there], np.searchsorted(store.ids, present), len(store.ids))
-        new_ids = _splice(store.ids, plan, present)
-        columns: dict[tuple[str, str], Column] = {}
-        for (table, column), old in store.columns.items():
-            text = isinstance(old, TextColumn)
-            values = old.codes if text else old
-            base = _splice(
-                values, plan, np.full(len(present), -1 if text else np.nan, values.dtype)
-            )
-            try:
-                at_new, fresh, words = _read_column(
-                    conn, table, column, new_ids, present, old.words if text else None
-                )
-            except Unsupported:
-                continue  # this column is left out; asked again, it is rebuilt or refused
-            base[at_new] = fresh
-            columns[(table, column)] = TextColumn(base, words or []) if text else base
-        store.ids, store.columns = new_ids, columns
-        store.refused = set()
-    store.key, store.gen, store.token = key, gen, token
-    return True
-
-
-def _splice_plan(
-    gone: npt.NDArray[np.intp], inserts: npt.NDArray[np.intp], length: int
-) -> list[tuple[bool, int, int]]:
-    """How to make the new arrays from the old: (False, a, b) keeps old[a:b],
-    (True, a, b) puts new[a:b]; `gone` (sorted) are the old positions
-    dropped, `inserts` (non-decreasing) the old position each new entry goes
-    before.  One pass of copies per array (a few ms at 5,000,000 people),
-    where masks and np.insert took three."""
-    plan: list[tuple[bool, int, int]] = []
-    drops, places = gone.tolist(), inserts.tolist()
-    i = j = prev = 0
-    end = length + 1
-    while i < len(drops) or j < len(places):
-        q = min(drops[i] if i < len(drops) else end, places[j] if j < len(places) else end)
-        if prev < q:
-            plan.append((False, prev, q))
-        k = j
-        while k < len(places) and places[k] == q:
-            k += 1
-        if k > j:
-            plan.append((True, j, k))
-            j = k
-        if i < len(drops) and drops[i] == q:
-            i += 1
-            prev = q + 1
-        else:
-            prev = q
-    if prev < length:
-        plan.append((False, prev, length))
-    return plan
-
-
-def _splice(old: Any, plan: list[tuple[bool, int, int]], new: Any) -> Any:
-    import numpy as np
-
-    pieces = [new[a:b] if fresh else old[a:b] for fresh, a, b in plan]
-    return np.concatenate(pieces) if pieces else np.zeros(0, dtype=old.dtype)
-
-
-# --- building in the background -----------------------------------------------
-
-# Build a missing copy in a background thread while SQLite answers (True), or
-# in the caller (False: tests and benchmarks, and `wait()` after the fact).
-BACKGROUND = True
-_LOCK = threading.RLock()
-_STORES: dict[Path, ColumnStore] = {}
-_BUILDS: dict[Path, threading.Thread] = {}
-_PENDING: dict[Path, set[tuple[str, str]]] = {}
-
-
-def wait() -> None:
-    """Wait for every background build to finish."""
-    while True:
-        with _LOCK:
-            threads = list(_BUILDS.values())
-        if not threads:
-            return
-        for thread in threads:
-            thread.join()
-
-
-def _start_build(path: Path, wanted: set[tuple[str, str]]) -> None:
-    """Have the background thread of this file build (and save) the store and
-    these columns; one thread per file, asked again while it runs it goes on."""
-    with _LOCK:
-        _PENDING.setdefault(path, set()).update(wanted)
-        if path in _BUILDS:
-            return
-        thread = threading.Thread(
-            target=_build_in_background, args=(path,), name="column copy", daemon=True
-        )
-        _BUILDS[path] = thread
-    thread.start()
-
-
-def _build_in_background(path: Path) -> None:
-    """The missing store and columns, each read in a short transaction of its
-    own (no long lock against writers), then joined to the store under _LOCK
-    after the store is brought up to date in one more transaction."""
-    conn = None
-    try:
-        conn = sqlite3.connect(
-            f"{path.resolve().as_uri()}?mode=ro", uri=True, isolation_level=None, timeout=10.0
-        )
-        while True:
-            with _LOCK:
-                wanted = _PENDING.pop(path, None)
-                if wanted is None:
-                    _BUILDS.pop(path, None)
-                    return
-            try:
-                _build(conn, path, wanted)
-            except (Unsupported, OSError, sqlite3.Error, ValueError):
-                pass  # SQLite goes on answering
-    except sqlite3.Error:
-        pass
-    finally:
-        if conn is not None:
-            conn.close()
-        with _LOCK:
-            if _BUILDS.get(path) is threading.current_thread():
-                _BUILDS.pop(path, None)
-                _PENDING.pop(path, None)
-
-
-def _build(
-    conn: sqlite3.Connection,
-    path: Path,
-    wanted: set[tuple[str, str]],
-    progress: Callable[[int, int], None] | None = None,
-) -> tuple[ColumnStore, bool]:
-    """The store of this file brought up to date (or built anew: the bool)
-    with these columns, then saved; `progress(done, total)` after each step."""
-    rebuilt = False
-    with _LOCK:
-        found = _STORES.get(path)
-        if found is not None and not _read(conn, lambda: _sync(conn, found, data_version(conn))):
-            found = None
-    if found is None:
-        rebuilt = True
-        found = _read(conn, lambda: _base(conn, data_version(conn)))
-        with _LOCK:
-            _STORES[path] = found
-    store: ColumnStore = found
-    steps = sorted(wanted)
-    for done, (table, column) in enumerate(steps):
-        if progress is not None:
-            progress(done, len(steps))
-        with _LOCK:
-            if (table, column) in store.columns or _STORES.get(path) is not store:
-                continue
-            ids, gen = store.ids, store.gen
-
-        def read(table: str = table, column: str = column) -> tuple[Column, int, bool]:
-            key = data_version(conn)
-            now = _generation(conn)[0] if store.logged else gen
-            return _new_column(conn, table, column, ids), now, key == store.key
-
-        try:
-            values, read_gen, same_key = _read(conn, read)
-        except Unsupported:
-            with _LOCK:
-                store.refused.add((table, column))
-            continue
-        with _LOCK:
-            # The column is right for every person not logged since read_gen;
-            # the store for every person not logged since store.gen.  Joined
-            # when the column is no older than the store's generation.
-            if (
-                _STORES.get(path) is store
-                and store.ids is ids
-                and (read_gen >= store.gen if store.logged else same_key)
-            ):
-                store.columns[(table, column)] = values
-                store.saved_key = None
-    if progress is not None:
-        progress(len(steps), len(steps))
-    _save(path, store)
-    return store, rebuilt
-
-
-def _read(conn: sqlite3.Connection, fn: Any) -> Any:
-    """fn() inside one read transaction (the shared lock held throughout)."""
-    conn.execute("BEGIN")
-    try:
-        conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
-        return fn()
-    finally:
-        conn.execute("COMMIT")
-
-
-# --- on disk -----------------------------------------------------------------
-
-
-def _cache_folder(path: Path) -> Path:
-    import hashlib
-
-    base = CACHE_DIR
-    if base is None:
-        xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
-        base = Path(xdg) / "sass" / "columns"
-    digest = hashlib.sha256(str(path.resolve()).encode()).hexdigest()[:16]
-    return base / digest
-
-
-def _save(path: Path, store: ColumnStore) -> None:
-    """Write the store to a new folder and drop the older ones (errors ignored:
-    the disk copy only saves the next process a build)."""
-    import json
-    import shutil
-    import uuid
-
-    import numpy as np
-
-    with _LOCK:  # the arrays are never changed in place: a snapshot is enough
-        if _STORES.get(path) is not store or store.saved_key == store.key:
-            return
-        key, gen, token, logged, ids = store.key, store.gen, store.token, store.logged, store.ids
-        saved = dict(store.columns)
-    folder = _cache_folder(path)
-    name = f"{gen:012d}-{uuid.uuid4().hex[:8]}"
-    tmp = folder / f"tmp-{name}"
-    try:
-        tmp.mkdir(parents=True)
-        np.save(tmp / "person.id_num.npy", ids)
-        columns = []
-        for (table, column), values in saved.items():
-            text = isinstance(values, TextColumn)
-            np.save(tmp / f"{table}.{column}.npy", values.codes if text else values)
-            if text:
-                (tmp / f"{table}.{column}.json").write_text(json.dumps(values.words))
-            columns.append([table, column, "text" if text else "real"])
-        meta = {"key": list(key), "gen": gen, "token": token, "logged": logged, "columns": columns}
-        (tmp / "meta.json").write_text(json.dumps(meta))
-        os.replace(tmp, folder / name)
-    except OSError:
-        shutil.rmtree(tmp, ignore_errors=True)
-        return
-    with _LOCK:
-        if store.key == key:
-            store.saved_key = key
-    for old in folder.iterdir():
-        if old.name != name:
-            shutil.rmtree(old, ignore_errors=True)
-
-
-def _load(path: Path) -> ColumnStore | None:
-    """The newest whole copy on disk, or None (absent, damaged or another format)."""
-    import json
-
-    import numpy as np
-
-    folder = _cache_folder(path)
-    try:
-        names = sorted((p for p in folder.iterdir() if not p.name.startswith("tmp-")), reverse=True)
-    except OSError:
-        return None
-    for copy in names[:1]:
-        try:
-            meta = json.loads((copy / "meta.json").read_text())
-            ids = _load_array(copy / "person.id_num.npy", np.int64, None)
-            if ids is None:
-                return None
-            store = ColumnStore(
-                key=tuple(int(k) for k in meta["key"]),
-                gen=int(meta["gen"]),
-                token=None if meta["token"] is None else int(meta["token"]),
-                logged=bool(meta["logged"]),
-                ids=ids,
-            )
-            store.saved_key = store.key
-            for table, column, kind in meta["columns"]:
-                values = _load_array(
-                    copy / f"{table}.{column}.npy",
-                    np.float64 if kind == "real" else np.int32,
-                    len(ids),
-                )
-                if values is None:
-                    continue  # that column is read again
-                if kind == "text":
-                    words = json.loads((copy / f"{table}.{column}.json").read_text())
-                    if not isinstance(words, list) or not all(isinstance(w, str) for w in words):
-                        continue
-                    if len(values) and int(values.max(initial=-1)) >= len(words):
-                        continue
-                    values = TextColumn(values, words)
-                store.columns[(table, column)] = values
-            return store
-        except (OSError, ValueError, KeyError, TypeError):
-            return None
-    return None
-
-
-def _load_array(path: Path, dtype: Any, length: int | None) -> Any:
-    """A saved array of that type and length, or None (absent, damaged or other)."""
-    import numpy as np
-
-    try:
-        array = np.load(path, mmap_mode="r")
-    except (OSError, ValueError):
-        return None
-    if array.dtype != dtype or array.ndim != 1 or (length is not None and len(array) != length):
-        return None
-    return array
-
-
-# --- reading SQLite into arrays ---------------------------------------------------
-
-
-def _fetch_ints(conn: sqlite3.Connection, sql: str, params: tuple[object, ...] = ()) -> Any:
-    import numpy as np
-
-    cursor = conn.execute(sql, params)
-    chunks = []
-    while rows := cursor.fetchmany(65536):
-        chunks.append(np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows)))
-    return np.concatenate(chunks) if chunks else np.zeros(0, dtype=np.int64)
-
-
-def _fetch_pairs(cursor: sqlite3.Cursor, value_type: Any) -> Any:
-    import numpy as np
-
-    dtype = np.dtype([("id", np.int64), ("v", value_type)])
-    chunks = []
-    while rows := cursor.fetchmany(65536):
-        chunks.append(np.fromiter(rows, dtype=dtype, count=len(rows)))
-    return np.concatenate(chunks) if chunks else np.zeros(0, dtype=dtype)
+# --- reading SQLite's columns --------------------------------------------------
 
 
 def _column_kind(conn: sqlite3.Connection, table: str, column: str) -> str:
-    """'real' or 'text' from the declared type; Unsupported for anything else."""
+    """'number' or 'text' from the declared type; Unsupported for anything else."""
     for _cid, name, declared, *_rest in conn.execute(f"PRAGMA table_info({table})"):
         if name == column:
             declared = declared.upper()
-            if declared == "REAL":
-                return "real"
+            if declared in ("REAL", "INTEGER"):
+                return "number"
             if declared == "TEXT":
                 ddl = conn.execute(
                     "SELECT sql FROM sqlite_master WHERE type = 'table' AND name = ?", (table,)
@@ -789,66 +131,306 @@ def _one_row_per_person(conn: sqlite3.Connection, table: str) -> bool:
     return keys == ["id_num"]
 
 
-# --- evaluating --------------------------------------------------------------
-
-
-def _wanted(node: Node) -> set[tuple[str, str]]:
-    if isinstance(node, Comparison):
-        return {(node.table, node.column)}
-    return set().union(*(_wanted(item) for item in node[1]))
-
-
-def _evaluate(node: Node, store: ColumnStore) -> Any:
+def _fetch_ints(conn: sqlite3.Connection, sql: str) -> Any:
     import numpy as np
 
-    if not isinstance(node, Comparison):
-        word, items = node
-        result = _evaluate(items[0], store)
-        for item in items[1:]:
-            other = _evaluate(item, store)
-            result = (result & other) if word == "AND" else (result | other)
-        return result
-    column = store.columns[(node.table, node.column)]
-    op, value = node.op, node.value
-    if isinstance(column, TextColumn):
-        if not isinstance(value, str):
-            raise Unsupported("a text column compared with a number")
-        # SQLite's BINARY collation compares UTF-8 bytes: the order of code points.
-        matches = np.array(
-            [_compare(word, op, value) for word in column.words] + [False], dtype=bool
+    cursor = conn.execute(sql)
+    chunks = []
+    while rows := cursor.fetchmany(65536):
+        chunks.append(np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows)))
+    return np.concatenate(chunks) if chunks else np.zeros(0, dtype=np.int64)
+
+
+def _fetch_pairs(cursor: sqlite3.Cursor, value_type: Any) -> Any:
+    import numpy as np
+
+    dtype = np.dtype([("id", np.int64), ("v", value_type)])
+    chunks = []
+    while rows := cursor.fetchmany(65536):
+        chunks.append(np.fromiter(rows, dtype=dtype, count=len(rows)))
+    return np.concatenate(chunks) if chunks else np.zeros(0, dtype=dtype)
+
+
+def _read_column(conn: sqlite3.Connection, table: str, column: str, ids: Any) -> tuple[Any, Any]:
+    """One column aligned on the sorted person ids: (float64 values with NaN for
+    NULL, None) or (int32 word numbers with -1 for NULL, the words)."""
+    import numpy as np
+
+    if not _one_row_per_person(conn, table):
+        raise Unsupported(f"{table} is not one row per person")
+    kind = _column_kind(conn, table, column)
+    if kind == "number":
+        # Anything but a number (text, a blob) becomes 'not a number', which
+        # float() refuses: such a column cannot be copied and SQLite answers.
+        cursor = conn.execute(
+            f"SELECT id_num, CASE WHEN typeof({column}) IN ('real', 'integer') THEN {column} "
+            f"ELSE 'not a number' END FROM {table} WHERE {column} IS NOT NULL"
         )
-        return matches[column.codes]  # code -1 (NULL) picks the final False
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise Unsupported("a number column compared with text")
-    if isinstance(value, int) and abs(value) > 2**53:
-        raise Unsupported("an integer a double cannot hold exactly")
-    number = float(value)
-    if op == "!=":
-        return (column != number) & ~np.isnan(column)
-    return {
-        "<": np.less,
-        ">": np.greater,
-        "<=": np.less_equal,
-        ">=": np.greater_equal,
-        "=": np.equal,
-    }[op](column, number)
+        try:
+            rows = _fetch_pairs(cursor, np.float64)
+        except ValueError:
+            raise Unsupported(f"{table}.{column} holds a value that is not a number") from None
+        out = np.full(len(ids), np.nan)
+        words = None
+    else:
+        # The distinct words first, then each row's word number computed by
+        # SQLite (a CASE over the words, with the column's own BINARY
+        # comparison): no Python work per row.  A value that is not text
+        # becomes -2 and refuses the copy.
+        words = [
+            w
+            for (w,) in conn.execute(
+                f"SELECT DISTINCT {column} FROM {table} WHERE typeof({column}) = 'text'"
+            )
+        ]
+        if len(words) > MAX_WORDS:
+            raise Unsupported(f"{table}.{column} has more than {MAX_WORDS} different values")
+        if not all(w.isascii() for w in words):
+            raise Unsupported(f"{table}.{column} holds a word that is not ASCII")
+        cases = "".join(f" WHEN {column} = ? THEN {k}" for k in range(len(words)))
+        cursor = conn.execute(
+            f"SELECT id_num, CASE WHEN typeof({column}) <> 'text' THEN -2{cases} ELSE -3 END "
+            f"FROM {table} WHERE {column} IS NOT NULL",
+            words,
+        )
+        rows = _fetch_pairs(cursor, np.int32)
+        if len(rows) and int(rows["v"].min()) < 0:
+            raise Unsupported(f"{table}.{column} holds a value that is not TEXT")
+        out = np.full(len(ids), -1, dtype=np.int32)
+    at = np.searchsorted(ids, rows["id"])
+    known = at < len(ids)
+    known[known] = ids[at[known]] == rows["id"][known]
+    out[at[known]] = rows["v"][known]
+    return out, words
 
 
-def _compare(a: str, op: str, b: str) -> bool:
-    if op == "=":
-        return a == b
-    if op == "!=":
-        return a != b
-    if op == "<":
-        return a < b
-    if op == ">":
-        return a > b
-    if op == "<=":
-        return a <= b
-    return a >= b
+# --- the copy on disk ----------------------------------------------------------
 
 
-# --- the entry point ---------------------------------------------------------
+def _cache_folder(path: Path) -> Path:
+    import hashlib
+
+    base = CACHE_DIR
+    if base is None:
+        xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+        base = Path(xdg) / "sass" / "columns"
+    digest = hashlib.sha256(str(path.resolve()).encode()).hexdigest()[:16]
+    return base / digest
+
+
+def _name(table: str, column: str) -> str:
+    """The copy's column for a query table's column (both are schema names, never user text)."""
+    return f'"{table}.{column}"'
+
+
+def _column_sql(comparison: Comparison) -> str:
+    return _name(comparison.table, comparison.column)
+
+
+def _build(
+    conn: sqlite3.Connection,
+    path: Path,
+    want: set[tuple[str, str]],
+    progress: Callable[[int, int], None] | None = None,
+) -> None:
+    """Read `want` from SQLite inside the caller's read transaction and write
+    the copy (a new file renamed over the old: readers never see half a copy)."""
+    import json
+    import uuid
+
+    import duckdb
+
+    key = data_version(conn)
+    ids = _fetch_ints(conn, "SELECT id_num FROM person ORDER BY id_num")
+    arrays: dict[str, Any] = {"id_num": ids}
+    select = ["id_num"]
+    params: list[object] = []
+    refused: list[list[str]] = []
+    ordered = sorted(want)
+    for i, (table, column) in enumerate(ordered):
+        if progress is not None:
+            progress(i, len(ordered))
+        try:
+            values, words = _read_column(conn, table, column, ids)
+        except Unsupported:
+            refused.append([table, column])
+            continue
+        arrays[f"c{i}"] = values
+        if words is None:
+            select.append(
+                f"CASE WHEN isnan(c{i}) THEN NULL ELSE c{i} END AS {_name(table, column)}"
+            )
+        else:
+            select.append(
+                f"CASE WHEN c{i} < 0 THEN NULL ELSE (?::VARCHAR[])[c{i} + 1] END "
+                f"AS {_name(table, column)}"
+            )
+            params.append(words)
+    folder = _cache_folder(path)
+    folder.mkdir(parents=True, exist_ok=True)
+    tmp = folder / f"tmp-{uuid.uuid4().hex[:8]}.duckdb"
+    try:
+        duck = duckdb.connect(str(tmp))
+        try:
+            duck.register("sqlite_columns", arrays)
+            duck.execute(
+                f"CREATE TABLE people AS SELECT {', '.join(select)} FROM sqlite_columns", params
+            )
+            duck.execute(
+                "CREATE TABLE copy_meta AS SELECT ?::VARCHAR AS key, ?::VARCHAR AS refused",
+                [json.dumps(list(key)), json.dumps(refused)],
+            )
+        finally:
+            duck.close()
+        os.replace(tmp, folder / COPY_FILE)
+    finally:
+        tmp.unlink(missing_ok=True)
+    if progress is not None:
+        progress(len(ordered), len(ordered))
+
+
+@dataclass
+class _Copy:
+    """An open copy: the DuckDB connection (read only) and what it holds."""
+
+    stamp: tuple[int, int, int]  # the copy file's inode, mtime and size when opened
+    duck: Any
+    key: tuple[int, ...]
+    columns: frozenset[tuple[str, str]]
+    refused: frozenset[tuple[str, str]]
+    people: int
+
+
+_LOCK = threading.RLock()
+_STORES: dict[Path, _Copy] = {}
+_BUILDS: dict[Path, threading.Thread] = {}
+_PENDING: dict[Path, set[tuple[str, str]]] = {}
+
+
+def _open_copy(path: Path) -> _Copy | None:
+    """The copy of `path` on disk, opened (or the one open already), None if
+    absent or unreadable.  Call with _LOCK held."""
+    import json
+
+    import duckdb
+
+    file = _cache_folder(path) / COPY_FILE
+    try:
+        stat = file.stat()
+    except OSError:
+        stat = None
+    stamp = None if stat is None else (stat.st_ino, stat.st_mtime_ns, stat.st_size)
+    held = _STORES.get(path)
+    if held is not None and held.stamp == stamp:
+        return held
+    if held is not None:
+        held.duck.close()
+        del _STORES[path]
+    if stamp is None:
+        return None
+    try:
+        duck = duckdb.connect(str(file), read_only=True)
+    except duckdb.Error:
+        return None
+    try:
+        meta = duck.execute("SELECT key, refused, (SELECT count(*) FROM people) FROM copy_meta")
+        key, refused, people = meta.fetchone() or ("", "", 0)
+        names = [row[0] for row in duck.execute("DESCRIBE people").fetchall()]
+    except (duckdb.Error, TypeError, ValueError):
+        duck.close()
+        return None
+    held_columns = frozenset(
+        tuple(name.split(".", 1)) for name in names if name != "id_num" and "." in name
+    )
+    copy = _Copy(
+        stamp,
+        duck,
+        tuple(json.loads(key)),
+        frozenset((t, c) for t, c in held_columns),
+        frozenset((t, c) for t, c in json.loads(refused)),
+        int(people),
+    )
+    _STORES[path] = copy
+    return copy
+
+
+def wait() -> None:
+    """Wait for every background build to finish."""
+    while True:
+        with _LOCK:
+            threads = list(_BUILDS.values())
+        if not threads:
+            return
+        for thread in threads:
+            thread.join()
+
+
+def _start_build(path: Path, wanted: set[tuple[str, str]]) -> None:
+    """Have one background thread of this file build the copy with these columns."""
+    with _LOCK:
+        _PENDING.setdefault(path, set()).update(wanted)
+        if path in _BUILDS:
+            return
+        thread = threading.Thread(
+            target=_build_in_background, args=(path,), name="column copy", daemon=True
+        )
+        _BUILDS[path] = thread
+    thread.start()
+
+
+def _build_in_background(path: Path) -> None:
+    conn = None
+    try:
+        conn = sqlite3.connect(
+            f"{path.resolve().as_uri()}?mode=ro", uri=True, isolation_level=None, timeout=10.0
+        )
+        while True:
+            with _LOCK:
+                wanted = _PENDING.pop(path, None)
+                if wanted is None:
+                    _BUILDS.pop(path, None)
+                    return
+                held = _open_copy(path)
+            want = wanted | set(DEFAULT_COLUMNS) | (set() if held is None else set(held.columns))
+            try:
+                _read(conn, lambda: _build(conn, path, want))
+            except (Unsupported, OSError, sqlite3.Error, ValueError, ImportError):
+                pass  # SQLite goes on answering
+    except sqlite3.Error:
+        pass
+    finally:
+        if conn is not None:
+            conn.close()
+        with _LOCK:
+            if _BUILDS.get(path) is threading.current_thread():
+                _BUILDS.pop(path, None)
+                _PENDING.pop(path, None)
+
+
+def _read(conn: sqlite3.Connection, fn: Callable[[], Any]) -> Any:
+    """fn() inside one read transaction (the shared lock held throughout)."""
+    conn.execute("BEGIN")
+    try:
+        conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
+        return fn()
+    finally:
+        conn.execute("COMMIT")
+
+
+# --- answering -----------------------------------------------------------------
+
+# How this process's last count or id list was answered: "copy", or
+# "sqlite: " and why (tests and `sass db copy` show it; no timing needed).
+last_answer = ""
+
+
+def columns_named(compiled: CompiledQuery) -> set[tuple[str, str]]:
+    """The (table, column) pairs a compiled query reads; Unsupported if the
+    copy cannot answer it (SQLite will)."""
+    for comparison in compiled.tree.comparisons():
+        if comparison.nocase and not str(comparison.value).isascii():
+            raise Unsupported("a word that is not ASCII compared without regard to case")
+    return set(columns(compiled.tree))
 
 
 def _large_enough(conn: sqlite3.Connection) -> bool:
@@ -860,62 +442,44 @@ def _large_enough(conn: sqlite3.Connection) -> bool:
     return low is not None and high - low + 1 >= MIN_PEOPLE
 
 
-def _matches(conn: sqlite3.Connection, compiled: CompiledQuery) -> tuple[Any, ColumnStore] | None:
-    """The match mask over the store's ids, None while the copy is being built
-    (Unsupported: SQLite must answer).  Call inside a read transaction that
-    has written nothing to the main database."""
-    from sass_tui.db.schema import logged_tables
-
-    aliases = {"p": "person"} | {alias: table for alias, table in compiled.tables}
-    expected = "person p" + "".join(
-        f" LEFT JOIN {table} {alias} ON {alias}.id_num = p.id_num"
-        for alias, table in compiled.tables
-    )
-    if compiled.from_clause() != expected:
-        raise Unsupported("a join of another shape")
-    for table in aliases.values():
-        if table != "person" and not _one_row_per_person(conn, table):
-            raise Unsupported(f"{table} is not one row per person")
-    tree = parse_where(compiled.where, compiled.params, aliases)
-    wanted = _wanted(tree)
+def _matches(conn: sqlite3.Connection, compiled: CompiledQuery, ids: bool) -> Any:
+    """The answer from the copy, None while it is being built (Unsupported:
+    SQLite must answer).  Call inside a read transaction that has written
+    nothing to the main database."""
+    try:
+        import duckdb  # noqa: F401  (the optional extra: without it SQLite answers)
+    except ImportError:
+        raise Unsupported("DuckDB is not installed (pip install 'sass-tui[fast]')") from None
+    wanted = columns_named(compiled)
     path = database_path(conn)
     key = data_version(conn)
     with _LOCK:
-        store = _STORES.get(path)
-        if store is None:
-            store = _load(path)
-        if store is None or not _sync(conn, store, key):
-            store = None
-            _STORES.pop(path, None)
-            if not BACKGROUND:
-                store = _base(conn, key)
-        if store is not None:
-            _STORES[path] = store
-            if store.logged and not set(aliases.values()) <= set(logged_tables()):
-                raise Unsupported("a table the change log does not follow")
-            if wanted & store.refused:
+        copy = _open_copy(path)
+        if copy is not None and copy.key == key and wanted & copy.refused:
+            raise Unsupported("a column the copy cannot hold")
+        if copy is None or copy.key != key or not wanted <= copy.columns:
+            if BACKGROUND:
+                _start_build(path, wanted)
+                return None
+            held = set() if copy is None else set(copy.columns)
+            _build(conn, path, wanted | held | set(DEFAULT_COLUMNS))
+            copy = _open_copy(path)
+            if copy is None or copy.key != key:  # pragma: no cover - the file just written
+                raise Unsupported("the copy could not be written")
+            if wanted & copy.refused:
                 raise Unsupported("a column the copy cannot hold")
-            missing = wanted - set(store.columns)
-            if missing and not BACKGROUND:
-                for table, column in sorted(missing):
-                    store.columns[(table, column)] = _new_column(conn, table, column, store.ids)
-                store.saved_key = None
-                missing = set()
-            if not missing:
-                mask = _evaluate(tree, store)
-                if store.key != store.saved_key:
-                    if BACKGROUND:
-                        _start_build(path, set())  # saves the copy for the next process
-                    else:
-                        _save(path, store)
-                return mask, store
-    _start_build(path, wanted)
-    return None
-
-
-# How this process's last count or id list was answered: "copy", or
-# "sqlite: " and why (tests and `sass db copy` show it; no timing needed).
-last_answer = ""
+        where, params = to_sql(compiled.tree, "duckdb", column_sql=_column_sql)
+        cursor = copy.duck.cursor()
+        try:
+            if ids:
+                found = cursor.execute(
+                    f"SELECT id_num FROM people WHERE {where} ORDER BY id_num", params
+                ).fetchnumpy()["id_num"]
+                return [int(i) for i in found.tolist()]
+            row = cursor.execute(f"SELECT count(*) FROM people WHERE {where}", params).fetchone()
+            return int(row[0]) if row else 0
+        finally:
+            cursor.close()
 
 
 def _answer(conn: sqlite3.Connection, compiled: CompiledQuery, ids: bool) -> Any:
@@ -944,44 +508,32 @@ def answer_in_transaction(conn: sqlite3.Connection, compiled: CompiledQuery, ids
         last_answer = f"sqlite: fewer than {MIN_PEOPLE} people"
         return None
     try:
-        found = _matches(conn, compiled)
-        if found is None:
-            last_answer = "sqlite: the copy is being built"
-            return None
-        mask, store = found
-        last_answer = "copy"
-        if ids:
-            return store.ids[mask].tolist()
-        return int(mask.sum())
+        found = _matches(conn, compiled, ids)
     except (Unsupported, OSError, sqlite3.Error, ValueError) as exc:
         last_answer = f"sqlite: {exc}"
         return None
+    except Exception as exc:  # DuckDB's own errors (duckdb.Error): SQLite answers
+        if type(exc).__module__.split(".")[0] not in ("duckdb", "_duckdb"):
+            raise
+        last_answer = f"sqlite: {exc}"
+        return None
+    last_answer = "sqlite: the copy is being built" if found is None else "copy"
+    return found
 
 
 def count(conn: sqlite3.Connection, compiled: CompiledQuery) -> int | None:
-    """How many people match, from the column copy; None when SQLite must answer."""
+    """How many people match, from the copy; None when SQLite must answer."""
     result: int | None = _answer(conn, compiled, ids=False)
     return result
 
 
 def ids(conn: sqlite3.Connection, compiled: CompiledQuery) -> list[int] | None:
-    """The matching ids in ascending order, from the column copy; None when SQLite must answer."""
+    """The matching ids in ascending order, from the copy; None when SQLite must answer."""
     result: list[int] | None = _answer(conn, compiled, ids=True)
     return result
 
 
 # --- building it now (`sass db copy`) -------------------------------------------
-
-# The columns `sass db copy` copies besides those the copy holds and those its
-# queries name: the person's own numbers and words (source compares without
-# case, a collation the copy leaves to SQLite).
-DEFAULT_COLUMNS = (
-    ("person", "gender"),
-    ("person", "stature"),
-    ("person", "mass"),
-    ("person", "age"),
-    ("person", "handedness"),
-)
 
 
 @dataclass(frozen=True)
@@ -991,15 +543,8 @@ class Refreshed:
     people: int
     columns: tuple[tuple[str, str], ...]
     refused: tuple[tuple[str, str], ...]  # left to SQLite (a value of another type, ...)
-    how: str  # "built", "brought up to date" or "already up to date"
+    how: str  # "built" or "already up to date"
     folder: Path
-
-
-def columns_named(compiled: CompiledQuery) -> set[tuple[str, str]]:
-    """The (table, column) pairs a compiled query reads; Unsupported if the
-    copy cannot answer it (SQLite will)."""
-    aliases = {"p": "person"} | {alias: table for alias, table in compiled.tables}
-    return _wanted(parse_where(compiled.where, compiled.params, aliases))
 
 
 def refresh(
@@ -1007,47 +552,46 @@ def refresh(
     wanted: Iterable[tuple[str, str]] = (),
     progress: Callable[[int, int], None] | None = None,
 ) -> Refreshed:
-    """Build or bring up to date the column copy of conn's database now, in
-    the caller (a one-shot process's background build would die with it), and
-    save it for the next process: the columns it held, DEFAULT_COLUMNS and
-    `wanted`.  Whatever the size of the database (counts use the copy from
-    MIN_PEOPLE people).  DatabaseError when no copy can follow this file."""
+    """Build the copy of conn's database now, in the caller (a one-shot
+    process's background build would die with it), unless it is up to date:
+    the columns it held, DEFAULT_COLUMNS and `wanted`.  Whatever the size of
+    the database (counts use the copy from MIN_PEOPLE people).
+    DatabaseError when no copy can follow this file."""
     from sass_tui.db.schema import DatabaseError
 
     if conn.in_transaction:
         raise DatabaseError("the column copy is made outside a transaction")
     try:
-        path = database_path(conn)
-        key = _read(conn, lambda: data_version(conn))
-    except Unsupported as exc:
-        raise DatabaseError(f"no column copy can follow this database: {exc}") from None
-    with _LOCK:
-        store = _STORES.get(path)
-        if store is None:
-            store = _load(path)
-            if store is not None:
-                _STORES[path] = store
-        held = set() if store is None else set(store.columns)
-        current = store is not None and store.key == key and store.saved_key == key
-    want = held | set(DEFAULT_COLUMNS) | set(wanted)
+        import duckdb  # noqa: F401
+    except ImportError:
+        raise DatabaseError("the column copy needs DuckDB: pip install 'sass-tui[fast]'") from None
     try:
-        store, rebuilt = _build(conn, path, want, progress)
+        path = database_path(conn)
+        folder = _cache_folder(path)
+
+        def build() -> str:
+            key = data_version(conn)
+            with _LOCK:
+                copy = _open_copy(path)
+                held = set() if copy is None else set(copy.columns | copy.refused)
+                want = held | set(DEFAULT_COLUMNS) | set(wanted)
+                if copy is not None and copy.key == key and want <= held:
+                    return "already up to date"
+                _build(conn, path, want, progress)
+            return "built"
+
+        how = _read(conn, build)
     except Unsupported as exc:
         raise DatabaseError(f"no column copy can follow this database: {exc}") from None
-    folder = _cache_folder(path)
+    except OSError as exc:
+        raise DatabaseError(f"cannot write the column copy in {folder}: {exc}") from None
     with _LOCK:
-        columns = tuple(sorted(store.columns))
-        if store.saved_key != store.key:
-            raise DatabaseError(f"cannot write the column copy in {folder}")
-        refused = tuple(sorted(want & store.refused))
-        people = len(store.ids)
-    if rebuilt:
-        how = "built"
-    elif current and held >= want:
-        how = "already up to date"
-    else:
-        how = "brought up to date"
-    return Refreshed(people, columns, refused, how, folder)
+        copy = _open_copy(path)
+        if copy is None:
+            raise DatabaseError(f"cannot read the column copy in {folder}")
+        return Refreshed(
+            copy.people, tuple(sorted(copy.columns)), tuple(sorted(copy.refused)), how, folder
+        )
 
 
 def forget(path: Path) -> None:
@@ -1056,5 +600,7 @@ def forget(path: Path) -> None:
     import shutil
 
     with _LOCK:
-        _STORES.pop(path, None)
+        held = _STORES.pop(path, None)
+        if held is not None:
+            held.duck.close()
     shutil.rmtree(_cache_folder(path), ignore_errors=True)

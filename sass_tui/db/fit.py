@@ -36,8 +36,7 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
-from sass_tui.db.query import compile_conjuncts, compile_query, names_source
-from sass_tui.db.scope import real_only
+from sass_tui.db.query import compile_conjuncts, compile_query, real_people_only
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
@@ -122,7 +121,7 @@ class FitResult:
         return sum(g.not_measured for g in self.genders.values())
 
     def to_json(self) -> dict[str, Any]:
-        """The issue's JSON shape; per gender it also gives `naive_percent` and
+        """The JSON of docs/accommodation.md; per gender it also gives `naive_percent` and
         `not_measured`, per limit `not_measured` and `percent` (per gender)."""
         accommodated: dict[str, Any] = {
             g.gender: {
@@ -221,8 +220,7 @@ def fit_test(
     # and its WHERE runs inline (a subquery for it costs half as much again).
     people, *terms = compile_conjuncts(f"({population}) AND {limits}")
     # The population's term is compiled as a part, unscoped: real people unless it names a source.
-    scoped, scoped_params = real_only(people.where, people.params, names_source(population))
-    people = people._replace(where=scoped, params=scoped_params)
+    people = real_people_only(people)
     # The body a strength limit predicts from, only when there is one.
     body = "p.age, p.mass, p.stature, " if strength_limits else ""
     columns = body + ", ".join(f"({t.where})" for t in terms)

@@ -68,7 +68,6 @@ FILE_NAMES = {
     "elbow": "elbow-strgh.db",
     "wrist": "wrist-strgh.db",
 }
-STRENGTH_KEYS = ("strength_par", "shoulder", "elbow", "wrist")
 
 
 class FlatFileError(ValueError, SassError):

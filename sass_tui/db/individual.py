@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from sass_tui.db.query_tree import Dialect, placeholder
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
@@ -64,6 +65,12 @@ def _batch_row(row: dict[str, Any]) -> tuple[Any, ...]:
     return (0, *tuple(row.values())[1:])
 
 
+def _dialect(conn: sqlite3.Connection) -> Dialect:
+    """The engine of `conn`: SQLite's connection, or db/postgres.py's PostgresConnection."""
+    dialect: Dialect = getattr(conn, "dialect", "sqlite")
+    return dialect
+
+
 def _dicts(cursor: sqlite3.Cursor) -> list[dict[str, Any]]:
     names = [d[0] for d in cursor.description]
     return [dict(zip(names, row)) for row in cursor]
@@ -84,6 +91,10 @@ def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
     read (32 fcntl and 25 stat calls a fetch before): a third less CPU."""
     if conn.in_transaction:
         return _fetch_individual(conn, int(id_num))
+    if _dialect(conn) == "postgresql":  # one snapshot for the reads, as SQLite's one transaction
+        with conn.transaction():  # type: ignore[attr-defined]
+            conn.execute("SET TRANSACTION ISOLATION LEVEL REPEATABLE READ")
+            return _fetch_individual(conn, int(id_num))
     conn.execute("BEGIN")
     try:
         return _fetch_individual(conn, int(id_num))
@@ -93,39 +104,43 @@ def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
 
 
 def _fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
+    m = placeholder(_dialect(conn))
     person = conn.execute(
         "SELECT id_num, name, gender, stature, mass, handedness, age, source "
-        "FROM person WHERE id_num = ?",
+        f"FROM person WHERE id_num = {m}",
         (id_num,),
     ).fetchone()
     if person is None:
         raise DatabaseError(f"no person with id {id_num}")
     girth = conn.execute(
-        "SELECT seg_name, thickness, width, length, mass FROM girth WHERE id_num = ?", (id_num,)
+        f"SELECT seg_name, thickness, width, length, mass FROM girth WHERE id_num = {m}", (id_num,)
     ).fetchall()
     joint_limits = conn.execute(
-        "SELECT seg_name, jlimit_x, jlimit_y, jlimit_z FROM joint_limits WHERE id_num = ?",
+        f"SELECT seg_name, jlimit_x, jlimit_y, jlimit_z FROM joint_limits WHERE id_num = {m}",
         (id_num,),
     ).fetchall()
     cmass = conn.execute(
-        "SELECT seg_name, cmass_x, cmass_y, cmass_z FROM center_of_mass WHERE id_num = ?", (id_num,)
+        f"SELECT seg_name, cmass_x, cmass_y, cmass_z FROM center_of_mass WHERE id_num = {m}",
+        (id_num,),
     ).fetchall()
     experiments = _dicts(
-        conn.execute("SELECT * FROM strength_par WHERE id_num = ? ORDER BY exp_num", (id_num,))
+        conn.execute(f"SELECT * FROM strength_par WHERE id_num = {m} ORDER BY exp_num", (id_num,))
     )
     shoulder = _dicts(
         conn.execute(
-            "SELECT * FROM shoulder_strgh WHERE id_num = ? ORDER BY exp_num, axis", (id_num,)
+            f"SELECT * FROM shoulder_strgh WHERE id_num = {m} ORDER BY exp_num, axis", (id_num,)
         )
     )
     elbow = _dicts(
-        conn.execute("SELECT * FROM elbow_strgh WHERE id_num = ? ORDER BY exp_num", (id_num,))
+        conn.execute(f"SELECT * FROM elbow_strgh WHERE id_num = {m} ORDER BY exp_num", (id_num,))
     )
     wrist = _dicts(
-        conn.execute("SELECT * FROM wrist_strgh WHERE id_num = ? ORDER BY exp_num, axis", (id_num,))
+        conn.execute(
+            f"SELECT * FROM wrist_strgh WHERE id_num = {m} ORDER BY exp_num, axis", (id_num,)
+        )
     )
     measured = conn.execute(
-        f"SELECT {', '.join(LANDMARK_MEASURES)} FROM measure WHERE id_num = ?", (id_num,)
+        f"SELECT {', '.join(LANDMARK_MEASURES)} FROM measure WHERE id_num = {m}", (id_num,)
     ).fetchone()
     summary = strength_summary(
         [_batch_row(r)[:7] for r in experiments],
@@ -174,14 +189,18 @@ _AXES = ("x", "y", "z")
 def find_person(conn: sqlite3.Connection, key: str) -> int:
     """The id of the person `key` names: a database id, or a name (any case)."""
     text = " ".join(key.split())  # spacing as typed does not matter
+    m = placeholder(_dialect(conn))
+    same_name = (
+        f"name = {m} COLLATE NOCASE" if _dialect(conn) == "sqlite" else f"lower(name) = lower({m})"
+    )
     if text.isdigit():
-        row = conn.execute("SELECT id_num FROM person WHERE id_num = ?", (int(text),)).fetchone()
+        row = conn.execute(f"SELECT id_num FROM person WHERE id_num = {m}", (int(text),)).fetchone()
         if row is not None:
             return int(row[0])
     found = [
         int(r[0])
         for r in conn.execute(
-            "SELECT id_num FROM person WHERE name = ? COLLATE NOCASE ORDER BY id_num", (text,)
+            f"SELECT id_num FROM person WHERE {same_name} ORDER BY id_num", (text,)
         )
     ]
     if len(found) == 1:
@@ -201,6 +220,7 @@ def person_record(conn: sqlite3.Connection, id_num: int) -> dict[str, object]:
     from sass_tui.model.measures import MEASURES
 
     person = fetch_individual(conn, id_num)
+    m = placeholder(_dialect(conn))
     values: dict[str, object] = {}
     unmeasured: list[str] = []
     for word, group, names in (
@@ -218,21 +238,21 @@ def person_record(conn: sqlite3.Connection, id_num: int) -> dict[str, object]:
                 else:
                     unmeasured.append(name)
     for table_name, motion in zip(QUERY_TABLES["strength"].values(), QUERY_TABLES["strength"]):
-        row = conn.execute(f"SELECT max FROM {table_name} WHERE id_num = ?", (id_num,)).fetchone()
+        row = conn.execute(f"SELECT max FROM {table_name} WHERE id_num = {m}", (id_num,)).fetchone()
         name = f"strength.{motion}.max"
         if row is not None and row[0] is not None:
             values[name] = float(row[0])
         else:
             unmeasured.append(name)
     attributes = conn.execute(
-        f"SELECT handedness, {', '.join(PERSON_ATTRIBUTES)} FROM person WHERE id_num = ?",
+        f"SELECT handedness, {', '.join(PERSON_ATTRIBUTES)} FROM person WHERE id_num = {m}",
         (id_num,),
     ).fetchone()
     for name, value in zip(("handedness", *PERSON_ATTRIBUTES), attributes):
         if value is not None:
             values[name] = value
     measured = conn.execute(
-        f"SELECT {', '.join(MEASURES)} FROM measure WHERE id_num = ?", (id_num,)
+        f"SELECT {', '.join(MEASURES)} FROM measure WHERE id_num = {m}", (id_num,)
     ).fetchone()
     measures: dict[str, float] = {}
     for k, name in enumerate(MEASURES):

@@ -11,28 +11,66 @@ The lists are read-only work for the main database: their transactions are
 deferred and write only TEMP tables, so they take no write lock on the main
 database and go on working while another process imports.
 
-One connection is shared by the screen (paging, selecting) and the worker
-that runs a query; `lock` serialises them, and the screen refuses list
-commands while a query holds it rather than wait for it.
+One connection is shared by the screen (paging, selecting) and the workers
+that run a query, an import, a fit test or a population; QueryLists is
+their Database service: every method that reads or writes takes its lock
+(the screen asks `exclusive(wait=False)` and refuses list commands while a
+worker holds it rather than wait) and turns an engine's errors into
+DatabaseErrors (db/database.py, engine_errors).  No caller sees the
+connection or the lock.
 """
 
 from __future__ import annotations
 
 import sqlite3
 import threading
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from functools import wraps
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, ParamSpec, TypeVar
 
+from sass_tui.db.database import engine_errors
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import LIST_FIELDS, compile_query
-from sass_tui.db.schema import connect, transaction
+from sass_tui.db.schema import DatabaseError, connect, transaction
 from sass_tui.model.errors import SassError
 
+if TYPE_CHECKING:
+    from sass_tui.db.fit import FitResult, LimitHistogram
+    from sass_tui.db.individual import Individual
+    from sass_tui.db.population import SelectionPopulation
+    from sass_tui.db.targets import TargetWeights, WeightedCount
+
 # What the database may answer a user's request with (QueryError, DatabaseError
-# and FlatFileError are SassErrors): the UI's edges catch these; anything else is
-# a bug and shows as one.
-DB_ERRORS = (SassError, sqlite3.Error, OSError)
+# and FlatFileError are SassErrors; engine errors arrive as DatabaseErrors):
+# the UI's edges catch these; anything else is a bug and shows as one.
+DB_ERRORS = (SassError, OSError)
+BUSY = "Working on the database, please wait (Esc cancels)..."
+
+P = ParamSpec("P")
+R = TypeVar("R")
+
+
+class DatabaseBusy(DatabaseError):
+    """Another user of the lists (a worker) holds the connection."""
+
+
+def _serialised(method: Callable[P, R]) -> Callable[P, R]:
+    """The method under the lists' lock, engine errors as DatabaseErrors."""
+
+    @wraps(method)
+    def locked(*args: P.args, **kwargs: P.kwargs) -> R:
+        self = args[0]
+        assert isinstance(self, QueryLists)
+        if self._owner == threading.get_ident():  # held by this thread already
+            return method(*args, **kwargs)
+        with self.exclusive():
+            return method(*args, **kwargs)
+
+    return locked
+
 
 # People searched between two progress reports of a query (QueryLists.run).
 RUN_CHUNK = 20_000
@@ -49,8 +87,11 @@ _SELECT = (
 
 class QueryLists:
     def __init__(self, conn: sqlite3.Connection):
-        self.conn = conn
-        self.lock = threading.Lock()
+        self._conn = conn
+        # Not reentrant: a screen's exclusive(wait=False) while its own thread
+        # holds the lists is refused as well (tests hold them so).
+        self._lock = threading.Lock()
+        self._owner: int | None = None  # the thread holding _lock
         self.last_query: str | None = None
         conn.execute("PRAGMA temp_store = MEMORY")
         conn.execute("CREATE TEMP TABLE IF NOT EXISTS query_list (id_num INTEGER PRIMARY KEY)")
@@ -61,17 +102,33 @@ class QueryLists:
         self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
 
     @classmethod
-    def open(cls, path: str | Path) -> QueryLists:
+    def open(cls, path: str | Path, read_only: bool = False) -> QueryLists:
         # The query runs in a worker thread; the lock makes sharing the connection safe.
-        return cls(connect(path, check_same_thread=False))
+        return cls(connect(path, check_same_thread=False, read_only=read_only))
 
     def close(self) -> None:
-        self.conn.close()
+        with self.exclusive():
+            self._conn.close()
+
+    @contextmanager
+    def exclusive(self, wait: bool = True) -> Iterator[QueryLists]:
+        """Hold the lists for several calls; DatabaseBusy at once (without
+        `wait`) while a worker holds them."""
+        if not self._lock.acquire(blocking=wait):
+            raise DatabaseBusy(BUSY)
+        self._owner = threading.get_ident()
+        try:
+            with engine_errors():
+                yield self
+        finally:
+            self._owner = None
+            self._lock.release()
 
     def count(self, which: str) -> int:
         return self._counts[which]
 
     # --- running a query -----------------------------------------------------
+    @_serialised
     def run(self, text: str, progress: Progress | None = None, cancel: Cancel | None = None) -> int:
         """Replace the query list with the people `text` finds; returns how many.
         A bad query raises QueryError and leaves both lists as they were.
@@ -87,21 +144,21 @@ class QueryLists:
             f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
             f"WHERE {compiled.where} AND p.id_num NOT IN (SELECT id_num FROM temp.selected_list)"
         )
-        with transaction(self.conn, "DEFERRED"):
+        with transaction(self._conn, "DEFERRED"):
             # Read the main database first: its shared lock, held to COMMIT,
             # keeps writers out, so the column copy (db/accelerator.py) finds
             # the people SQLite would; None when SQLite must find them.
-            self.conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
-            found = accelerator.answer_in_transaction(self.conn, compiled, ids=True)
-            self.conn.execute("DELETE FROM temp.query_list")
+            self._conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
+            found = accelerator.answer_in_transaction(self._conn, compiled, ids=True)
+            self._conn.execute("DELETE FROM temp.query_list")
             if found is not None:  # the column copy found them: no search, no progress
-                count = self.conn.execute(
+                count = self._conn.execute(
                     "INSERT INTO temp.query_list (id_num) SELECT value FROM json_each(?) "
                     "WHERE value NOT IN (SELECT id_num FROM temp.selected_list)",
                     ("[" + ",".join(map(str, found)) + "]",),
                 ).rowcount
             elif progress is None and cancel is None:
-                count = self.conn.execute(sql, compiled.params).rowcount
+                count = self._conn.execute(sql, compiled.params).rowcount
             else:
                 count = self._run_in_ranges(
                     sql, compiled.params, Steps(progress, cancel, "the query"), cancel
@@ -115,7 +172,7 @@ class QueryLists:
     ) -> int:
         """The query over id ranges, each about RUN_CHUNK people wide; the people
         searched are estimated from the ids passed (exact at the end)."""
-        low, high, total = self.conn.execute(
+        low, high, total = self._conn.execute(
             "SELECT min(id_num), max(id_num), count(*) FROM person"
         ).fetchone()
         steps(0, total)
@@ -126,13 +183,14 @@ class QueryLists:
         cuts = [low + span * k // ranges for k in range(ranges)] + [high + 1]
         ranged = f"{sql} AND p.id_num >= ? AND p.id_num < ?"
         count = 0
-        with interruptible(self.conn, cancel, "the query"):
+        with interruptible(self._conn, cancel, "the query"):
             for start, stop in zip(cuts, cuts[1:]):
-                count += self.conn.execute(ranged, (*params, start, stop)).rowcount
+                count += self._conn.execute(ranged, (*params, start, stop)).rowcount
                 steps(total * (stop - low) // span, total)
         return count
 
     # --- reading -----------------------------------------------------------------
+    @_serialised
     def page(self, which: str, offset: int, limit: int = 25) -> list[dict[str, Any]]:
         sql = (
             f"SELECT {_SELECT} FROM {_TABLES[which]} l JOIN person p ON p.id_num = l.id_num "
@@ -140,25 +198,28 @@ class QueryLists:
             f"ORDER BY {_ORDER[which]} LIMIT ? OFFSET ?"
         )
         return [
-            dict(zip(LIST_FIELDS, row)) for row in self.conn.execute(sql, (int(limit), int(offset)))
+            dict(zip(LIST_FIELDS, row))
+            for row in self._conn.execute(sql, (int(limit), int(offset)))
         ]
 
+    @_serialised
     def selected_id(self, index: int) -> int | None:
         """The id of the index-th (0-based) person in the selected list."""
-        row = self.conn.execute(
+        row = self._conn.execute(
             "SELECT id_num FROM temp.selected_list ORDER BY seq LIMIT 1 OFFSET ?", (int(index),)
         ).fetchone()
         return None if row is None else row[0]
 
     # --- moving people between the lists ---------------------------------------------
+    @_serialised
     def select_one(self, id_num: int) -> bool:
         """Move one person from the query list to the end of the selected list."""
-        with transaction(self.conn, "DEFERRED"):
-            gone = self.conn.execute(
+        with transaction(self._conn, "DEFERRED"):
+            gone = self._conn.execute(
                 "DELETE FROM temp.query_list WHERE id_num = ?", (int(id_num),)
             ).rowcount
             added = (
-                self.conn.execute(
+                self._conn.execute(
                     "INSERT OR IGNORE INTO temp.selected_list (id_num) VALUES (?)", (int(id_num),)
                 ).rowcount
                 if gone
@@ -168,33 +229,37 @@ class QueryLists:
         self._counts[SELECTED_LIST] += added
         return bool(gone)
 
+    @_serialised
     def select_all(self) -> int:
         """Move the whole query list to the selected list; returns how many moved."""
-        with transaction(self.conn, "DEFERRED"):
-            moved = self.conn.execute(
+        with transaction(self._conn, "DEFERRED"):
+            moved = self._conn.execute(
                 "INSERT OR IGNORE INTO temp.selected_list (id_num) "
                 "SELECT id_num FROM temp.query_list ORDER BY id_num"
             ).rowcount
-            self.conn.execute("DELETE FROM temp.query_list")
+            self._conn.execute("DELETE FROM temp.query_list")
         self._counts[QUERY_LIST] = 0
         self._counts[SELECTED_LIST] += moved
         return moved
 
+    @_serialised
     def delete_one(self, which: str, id_num: int) -> bool:
-        with transaction(self.conn, "DEFERRED"):
-            gone = self.conn.execute(
+        with transaction(self._conn, "DEFERRED"):
+            gone = self._conn.execute(
                 f"DELETE FROM {_TABLES[which]} WHERE id_num = ?", (int(id_num),)
             ).rowcount
         self._counts[which] -= gone
         return bool(gone)
 
     # --- Input DB ------------------------------------------------------------------------
+    @_serialised
     def import_files(
         self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
     ) -> int:
         """Load flat files (one transaction: a failure or a cancel stores nothing)."""
-        return import_flat_files(self.conn, files, progress, cancel)
+        return import_flat_files(self._conn, files, progress, cancel)
 
+    @_serialised
     def import_ansur(
         self,
         path: Path,
@@ -206,10 +271,110 @@ class QueryLists:
         transaction: a failure or a cancel stores nothing); returns how many."""
         from sass_tui.db.ansur import import_ansur
 
-        return sum(import_ansur(self.conn, [path], progress, label=label, cancel=cancel).values())
+        return sum(import_ansur(self._conn, [path], progress, label=label, cancel=cancel).values())
 
+    @_serialised
     def selected_ids(self) -> list[int]:
         """The ids of the selected list, in the order they were selected."""
         return [
-            r[0] for r in self.conn.execute("SELECT id_num FROM temp.selected_list ORDER BY seq")
+            r[0] for r in self._conn.execute("SELECT id_num FROM temp.selected_list ORDER BY seq")
         ]
+
+    # --- the work of the query screen's other commands ------------------------------
+    @_serialised
+    def run_first_page(
+        self,
+        text: str,
+        page_size: int,
+        progress: Progress | None = None,
+        cancel: Cancel | None = None,
+    ) -> tuple[int, list[dict[str, Any]]]:
+        """run(text), then the query list's first page, with nobody in between."""
+        count = self.run(text, progress, cancel)
+        return count, self.page(QUERY_LIST, 0, page_size)
+
+    @_serialised
+    def fetch_person(self, id_num: int) -> Individual:
+        """The person `id_num` (e.g. a row of the query list), read whole."""
+        from sass_tui.db.individual import fetch_individual
+
+        return fetch_individual(self._conn, id_num)
+
+    @_serialised
+    def fetch_selected(self, index: int) -> Individual:
+        """Person `index` (0-based) of the selected list, read whole."""
+        from sass_tui.db.individual import fetch_individual
+
+        id_num = self.selected_id(index)
+        if id_num is None:
+            raise DatabaseError(f"there is no person {index + 1} in the selected list")
+        return fetch_individual(self._conn, id_num)
+
+    @_serialised
+    def fit_test(
+        self,
+        limits: str,
+        population: str,
+        progress: Progress | None = None,
+        cancel: Cancel | None = None,
+        target: str | None = None,
+    ) -> tuple[FitResult, tuple[LimitHistogram, ...]]:
+        """The fit test of `limits` over `population` and its histograms
+        (db/fit.py); with a `target`'s name, weighted to it too (db/targets.py)."""
+        from sass_tui.db.fit import fit_test, limit_histograms
+
+        weights = self._target(target)
+        result = fit_test(
+            self._conn, limits, population, progress=progress, cancel=cancel, target=weights
+        )
+        return result, limit_histograms(self._conn, limits, population, cancel=cancel)
+
+    @_serialised
+    def population_of(
+        self,
+        ids: tuple[int, ...],
+        title: str,
+        progress: Progress | None = None,
+        cancel: Cancel | None = None,
+        target: str | None = None,
+    ) -> SelectionPopulation:
+        """The population file of these people (db/population.py); with a
+        `target`'s name, their weighted percentiles (db/targets.py)."""
+        from sass_tui.db.population import population_of
+
+        return population_of(
+            self._conn,
+            ids=ids,
+            title=title,
+            progress=progress,
+            cancel=cancel,
+            target=self._target(target),
+        )
+
+    # --- target populations and the real-people scope ----------------------
+    def _target(self, name: str | None) -> TargetWeights | None:
+        from sass_tui.db.targets import load_target
+
+        return None if not name else load_target(self._conn, name)
+
+    @_serialised
+    def target_names(self) -> list[str]:
+        """The names of the target populations stored (`sass target`)."""
+        from sass_tui.db.targets import list_targets
+
+        return [t.name for t in list_targets(self._conn)]
+
+    @_serialised
+    def weighted_count(self, query: str, target: str) -> WeightedCount:
+        """The query's people weighted to the target `target` (db/targets.py)."""
+        from sass_tui.db.targets import load_target, weighted_count
+
+        return weighted_count(self._conn, query, load_target(self._conn, target))
+
+    @_serialised
+    def demonstration_hint(self, text: str) -> str | None:
+        """For a query that found no real person: the demonstration people it
+        would find (db/query.py's demonstration_hint)."""
+        from sass_tui.db.query import demonstration_hint
+
+        return demonstration_hint(self._conn, text)

@@ -1,4 +1,4 @@
-"""Progress and cancelling for long database work (issue 15), without Textual.
+"""Progress and cancelling for long database work, without Textual.
 
 Long functions (`import_flat_files`, `import_ansur`, `QueryLists.run`,
 `population_of`, `fit_test`, `limit_histograms`, `load_family`) take

@@ -30,11 +30,9 @@ For the UI: `Query.count()` and `Query.page(offset, limit)` (or
 from __future__ import annotations
 
 import math
-import re
-import sqlite3
 from collections.abc import Iterable, Iterator
 from functools import lru_cache
-from typing import Any, NamedTuple, NoReturn
+from typing import Any, NamedTuple, NoReturn, Protocol
 
 # The parser is lark's stand-alone LALR module generated from GRAMMAR by
 # scripts/make_query_parser.py: importing it costs a third of importing lark
@@ -52,6 +50,18 @@ from sass_tui.db._query_parser import (
     VisitError,
     v_args,
 )
+from sass_tui.db.query_tree import (
+    PERSON_TABLE,
+    And,
+    Comparison,
+    Dialect,
+    Expr,
+    Or,
+    aliases,
+    names_field,
+    placeholder,
+    to_sql,
+)
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
@@ -61,7 +71,7 @@ from sass_tui.db.schema import (
 from sass_tui.db.scope import demonstration_query, real_only
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, suggest
-from sass_tui.model.units import DISPLAY, LARGEST_NUMBER, UnitError, convert, unit_name
+from sass_tui.model.units import LARGEST_NUMBER, UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, MOTION_NAMES, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 
@@ -109,6 +119,12 @@ _GROUPS = {
 MEASURE_TABLE = "measure"
 
 
+class Connection(Protocol):
+    """What a query runs on: sqlite3's connection, or db/postgres.py's PostgresConnection."""
+
+    def execute(self, sql: str, parameters: Any = ..., /) -> Any: ...
+
+
 class QueryError(ValueError, SassError):
     """A query that cannot be run; `column` is 1-based in the query text."""
 
@@ -133,10 +149,14 @@ def parser() -> Lark:
 
 
 class CompiledQuery(NamedTuple):  # not a dataclass: see model.names.Row
+    """A query checked and compiled: its tree (db/query_tree.py) and the tree's
+    SQLite condition; `sql(dialect)` gives another engine's."""
+
     text: str
     where: str
     params: tuple[object, ...]
     tables: tuple[tuple[str, str], ...]  # (alias, table) joined to person p
+    tree: Expr
 
     def from_clause(self) -> str:
         joins = "".join(
@@ -145,46 +165,51 @@ class CompiledQuery(NamedTuple):  # not a dataclass: see model.names.Row
         )
         return f"person p{joins}"
 
+    def sql(self, dialect: Dialect) -> tuple[str, tuple[object, ...]]:
+        """The WHERE condition and its parameters in `dialect`, under the same aliases."""
+        alias_of = {"person": "p"} | {table: alias for alias, table in self.tables}
+        where, params = to_sql(self.tree, dialect, alias_of)
+        return where, tuple(params)
 
-# What the compiler makes of a subtree: SQL and its parameters; of a value: (kind, token, unit).
-_Fragment = tuple[str, list[object]]
+    def names_field(self, name: str) -> bool:
+        """Whether the query compares `name` (e.g. `source`) anywhere."""
+        return names_field(self.tree, name)
+
+
+# What the builder makes of a value: (kind, token, unit).
 _Value = tuple[str, Token, "Token | None"]
 
 
-class _Compiler(Transformer[Token, _Fragment]):
+class _TreeBuilder(Transformer[Token, Expr]):
+    """The lark parse -> the typed tree, every field resolved and every value
+    checked and converted to its stored unit (errors point at the token)."""
+
     def __init__(self, text: str):
         super().__init__()
         self.text = text
-        self.tables: dict[str, str] = {}  # table -> alias
+        self.tables: dict[str, None] = {}  # tables named so far, in order
         self._field_token: Token | None = None
-        self.names_source = False  # a `source` term: no real-people scope (db/scope.py)
 
-    def _alias(self, table: str) -> str:
+    def _count_table(self, table: str) -> None:
         if table not in self.tables and len(self.tables) >= MAX_JOINED_TABLES:
             self._fail(
                 f"the query uses more than {MAX_JOINED_TABLES} different segments, joints "
                 "and motions; split it",
                 self._field_token,
             )
-        return self.tables.setdefault(table, f"t{len(self.tables)}")
+        self.tables.setdefault(table, None)
 
     def _fail(self, message: str, token: Token | None) -> NoReturn:
         raise QueryError(message, self.text, getattr(token, "column", None))
 
-    def or_expr(self, items: list[_Fragment]) -> _Fragment:
-        return (
-            "(" + " OR ".join(sql for sql, _ in items) + ")",
-            [p for _, ps in items for p in ps],
-        )
+    def or_expr(self, items: list[Expr]) -> Expr:
+        return Or(tuple(items))
 
-    def and_expr(self, items: list[_Fragment]) -> _Fragment:
-        return (
-            "(" + " AND ".join(sql for sql, _ in items) + ")",
-            [p for _, ps in items for p in ps],
-        )
+    def and_expr(self, items: list[Expr]) -> Expr:
+        return And(tuple(items))
 
     def field(self, names: list[Token]) -> list[Token]:
-        self._field_token = names[0]  # for _alias's error: the field being resolved
+        self._field_token = names[0]  # for _count_table's error: the field being resolved
         return list(names)
 
     @v_args(inline=True)
@@ -200,8 +225,9 @@ class _Compiler(Transformer[Token, _Fragment]):
         return ("text", value, None)
 
     @v_args(inline=True)
-    def comparison(self, names: list[Token], op: Token, value: _Value) -> _Fragment:
-        alias, column, unit, words = self._resolve(names)
+    def comparison(self, names: list[Token], op: Token, value: _Value) -> Comparison:
+        table, column, unit, words = self._resolve(names)
+        field = ".".join(str(n).lower() for n in names)
         sql_op = _OPERATORS[str(op)]
         kind, token, unit_token = value
         if words is TEXT:
@@ -214,13 +240,7 @@ class _Compiler(Transformer[Token, _Fragment]):
             if sql_op not in ("=", "!="):
                 self._fail(f"{'.'.join(names)} can only be compared with = or !=", op)
             value_text = _unquote(token) if kind == "text" else str(token)
-            null_test = "IS NOT NULL" if sql_op == "=" else "IS NULL OR"
-            if sql_op == "=":
-                return (f"{alias}.{column} = ? COLLATE NOCASE", [value_text])
-            return (
-                f"({alias}.{column} {null_test} {alias}.{column} != ? COLLATE NOCASE)",
-                [value_text],
-            )
+            return Comparison(field, table, column, sql_op, value_text, nocase=True)
         if words is not None:
             if kind == "text":
                 # lark's stand-alone generator defines _T three times, so mypy reads this
@@ -232,7 +252,7 @@ class _Compiler(Transformer[Token, _Fragment]):
                 )
             if sql_op not in ("=", "!="):
                 self._fail(f"{'.'.join(names)} can only be compared with = or !=", op)
-            return (f"{alias}.{column} {sql_op} ?", [token.lower()])
+            return Comparison(field, table, column, sql_op, token.lower())
         if kind != "number":
             self._fail(f"{'.'.join(names)} needs a number, not {str(token)!r}", token)
         number = float(token)
@@ -247,17 +267,16 @@ class _Compiler(Transformer[Token, _Fragment]):
                 number = convert(number, unit_name(str(unit_token)), unit)
             except UnitError as exc:
                 self._fail(f"{exc}", unit_token)
-        return (f"{alias}.{column} {sql_op} ?", [number])
+        return Comparison(field, table, column, sql_op, number)
 
     def _resolve(self, names: list[Token]) -> FieldInfo:
-        if len(names) == 1 and str(names[0]).lower() == "source":
-            self.names_source = True
         try:
             table, column, unit, words = resolve_field([str(n) for n in names])
         except _FieldError as exc:
             self._fail(str(exc), names[min(exc.part, len(names) - 1)])
-        alias = "p" if table == "person" else self._alias(table)
-        return alias, column, unit, words
+        if table != "person":
+            self._count_table(table)
+        return table, column, unit, words
 
 
 class _FieldError(Exception):
@@ -339,7 +358,16 @@ MAX_NESTING = 50
 MAX_COMPARISONS = 200
 MAX_LENGTH = 20_000
 MAX_JOINED_TABLES = 63  # SQLite joins at most 64 tables: person and 63 more
-_COMPARISON_OPERATOR = re.compile(r"<=|>=|!=|<>|[<>=≤≥≠]")
+# The grammar's comparison operators, the two-character ones first (OP in db/query_grammar.py).
+_OPERATOR_SPELLINGS = ("<=", ">=", "!=", "<>", "<", ">", "=", "≤", "≥", "≠")
+
+
+def _operator_at(text: str, column: int) -> int:
+    """The length of the comparison operator starting at `column`, 0 if none."""
+    for spelling in _OPERATOR_SPELLINGS:
+        if text.startswith(spelling, column):
+            return len(spelling)
+    return 0
 
 
 def _check_size(text: str) -> None:
@@ -370,8 +398,8 @@ def _check_size(text: str) -> None:
         elif char == ")":
             depth -= 1
         else:
-            match = _COMPARISON_OPERATOR.match(text, column)
-            if match:
+            length = _operator_at(text, column)
+            if length:
                 comparisons += 1
                 if comparisons > MAX_COMPARISONS:
                     raise QueryError(
@@ -380,13 +408,14 @@ def _check_size(text: str) -> None:
                         text,
                         column + 1,
                     )
-                column = match.end()
+                column += length
                 continue
         column += 1
 
 
-def compile_query(text: str) -> CompiledQuery:
-    """Parse and check a query; raises QueryError pointing at the bad token."""
+def _parsed(text: str) -> Expr:
+    """The query's tree as the user wrote it (no scope added); raises QueryError
+    pointing at the bad token."""
     if not text.strip():
         raise QueryError(
             "the query is empty; expected e.g. gender = male AND stature > 180 cm", text, 1
@@ -409,31 +438,42 @@ def compile_query(text: str) -> CompiledQuery:
         ) from None
     except UnexpectedInput as exc:  # pragma: no cover - other lark errors
         raise QueryError(str(exc), text, getattr(exc, "column", None)) from None
-    compiler = _Compiler(text)
+    builder = _TreeBuilder(text)
     try:
-        where, params = compiler.transform(tree)
+        expr: Expr = builder.transform(tree)
     except VisitError as exc:
         if isinstance(exc.orig_exc, QueryError):
             raise exc.orig_exc from None
         raise
-    scoped, scoped_params = real_only(where, tuple(params), compiler.names_source)
-    return CompiledQuery(
-        text,
-        scoped,
-        scoped_params,
-        tuple((alias, table) for table, alias in compiler.tables.items()),
-    )
+    return expr
+
+
+def compile_query(text: str) -> CompiledQuery:
+    """Parse and check a query; raises QueryError pointing at the bad token.
+    A query that names no `source` reaches real people only (db/scope.py)."""
+    return _compiled(text, real_only(_parsed(text)))
+
+
+def _compiled(text: str, expr: Expr, alias_of: dict[str, str] | None = None) -> CompiledQuery:
+    """The tree with its SQLite condition, its tables joined under `alias_of`
+    (default: `aliases(expr)`)."""
+    alias_of = aliases(expr) if alias_of is None else alias_of
+    where, params = to_sql(expr, "sqlite", alias_of)
+    joined = tuple((alias, table) for table, alias in alias_of.items() if table != PERSON_TABLE)
+    return CompiledQuery(text, where, tuple(params), joined, expr)
+
+
+def real_people_only(compiled: CompiledQuery) -> CompiledQuery:
+    """A query compiled as a part (`compile_conjuncts`) limited to real people
+    unless it names a source (db/scope.py), under the same aliases."""
+    alias_of = {PERSON_TABLE: "p"} | {table: alias for alias, table in compiled.tables}
+    return _compiled(compiled.text, real_only(compiled.tree), alias_of)
 
 
 def names_source(text: str) -> bool:
     """Whether the query names a `source` term (then it is not limited to real
     people: db/scope.py).  The query must compile."""
-    return any(
-        node.data == "field"
-        and len(node.children) == 1
-        and str(node.children[0]).lower() == "source"
-        for node in parser().parse(text).iter_subtrees()
-    )
+    return names_field(_parsed(text), "source")
 
 
 _TOKEN_WORDS = {
@@ -474,60 +514,73 @@ _SELECT = (
 
 
 class Query:
-    """A compiled query bound to a connection: count it, fetch it a page at a time."""
+    """A compiled query bound to a connection (SQLite's, or a PostgresConnection
+    of db/postgres.py): count it, fetch it a page at a time."""
 
-    def __init__(self, conn: sqlite3.Connection, compiled: CompiledQuery) -> None:
+    def __init__(self, conn: Connection, compiled: CompiledQuery) -> None:
         self.conn = conn
         self.compiled = compiled
+        self.dialect: Dialect = getattr(conn, "dialect", "sqlite")
+        self.where, self.params = compiled.sql(self.dialect)
+        self.mark = placeholder(self.dialect)
 
     def count(self) -> int:
-        from sass_tui.db import accelerator  # its imports cost start-up time; counts only
+        if self.dialect == "sqlite":
+            from sass_tui.db import accelerator  # its imports cost start-up time; counts only
 
-        fast = accelerator.count(self.conn, self.compiled)  # None below ~200k people
-        if fast is not None:
-            return fast
-        sql = f"SELECT count(*) FROM {self.compiled.from_clause()} WHERE {self.compiled.where}"
-        count: int = self.conn.execute(sql, self.compiled.params).fetchone()[0]
+            fast = accelerator.count(self.conn, self.compiled)  # type: ignore[arg-type]
+            if fast is not None:  # None below ~200k people, or without DuckDB
+                return fast
+        sql = f"SELECT count(*) FROM {self.compiled.from_clause()} WHERE {self.where}"
+        count: int = self.conn.execute(sql, self.params).fetchone()[0]
         return count
 
     def _rows(self, extra: str, params: tuple[object, ...]) -> list[dict[str, Any]]:
         sql = (
             f"SELECT {_SELECT} FROM {self.compiled.from_clause()} "
             f"LEFT JOIN strength_q sq ON sq.id_num = p.id_num "
-            f"WHERE {self.compiled.where}{extra}"
+            f"WHERE {self.where}{extra}"
         )
-        return [
-            dict(zip(LIST_FIELDS, row))
-            for row in self.conn.execute(sql, self.compiled.params + params)
-        ]
+        return [dict(zip(LIST_FIELDS, row)) for row in self.conn.execute(sql, self.params + params)]
 
     def page(self, offset: int = 0, limit: int = 25) -> list[dict[str, Any]]:
         """People offset .. offset+limit-1 in id order (the query list's page)."""
-        return self._rows(" ORDER BY p.id_num LIMIT ? OFFSET ?", (int(limit), int(offset)))
+        mark = self.mark
+        return self._rows(
+            f" ORDER BY p.id_num LIMIT {mark} OFFSET {mark}", (int(limit), int(offset))
+        )
 
     def page_after(self, last_id: int | None, limit: int = 25) -> list[dict[str, Any]]:
         """The next page after person `last_id` (keyset paging: cost independent of depth)."""
         if last_id is None:
             return self.page(0, limit)
-        return self._rows(" AND p.id_num > ? ORDER BY p.id_num LIMIT ?", (int(last_id), int(limit)))
+        mark = self.mark
+        return self._rows(
+            f" AND p.id_num > {mark} ORDER BY p.id_num LIMIT {mark}", (int(last_id), int(limit))
+        )
 
     def ids(self) -> list[int]:
-        from sass_tui.db import accelerator
+        if self.dialect == "sqlite":
+            from sass_tui.db import accelerator
 
-        fast = accelerator.ids(self.conn, self.compiled)
-        if fast is not None:
-            return fast
-        sql = f"SELECT p.id_num FROM {self.compiled.from_clause()} WHERE {self.compiled.where}"
-        return [r[0] for r in self.conn.execute(sql, self.compiled.params)]
+            fast = accelerator.ids(self.conn, self.compiled)  # type: ignore[arg-type]
+            if fast is not None:
+                return fast
+        sql = (
+            f"SELECT p.id_num FROM {self.compiled.from_clause()} WHERE {self.where} "
+            "ORDER BY p.id_num"
+        )
+        return [int(r[0]) for r in self.conn.execute(sql, self.params)]
 
-    def person_rows(self) -> sqlite3.Cursor:
+    def person_rows(self) -> Iterable[tuple[Any, ...]]:
         """Every selected person as a tuple in PERSON_FIELDS order, id order, one
         statement (the command line's listing: no dict per row, no paging)."""
         sql = (
             f"SELECT {_PERSON_SELECT} FROM {self.compiled.from_clause()} "
-            f"WHERE {self.compiled.where} ORDER BY p.id_num"
+            f"WHERE {self.where} ORDER BY p.id_num"
         )
-        return self.conn.execute(sql, self.compiled.params)
+        rows: Iterable[tuple[Any, ...]] = self.conn.execute(sql, self.params)
+        return rows
 
     def iter_all(self, page_size: int = 1000) -> Iterator[dict[str, Any]]:
         last = None
@@ -539,7 +592,7 @@ class Query:
             last = rows[-1]["id"]
 
 
-def demonstration_hint(conn: sqlite3.Connection, text: str) -> str | None:
+def demonstration_hint(conn: Connection, text: str) -> str | None:
     """For a query that found no real person: how many demonstration people it
     would find, and the query that finds them (None: none, or it named a source)."""
     if names_source(text) or Query(conn, compile_query(text)).count():
@@ -557,12 +610,8 @@ def demonstration_hint(conn: sqlite3.Connection, text: str) -> str | None:
     return f"no real person matches; {found} synthetic demonstration {people}{carry}: {reach}"
 
 
-def run_query(conn: sqlite3.Connection, text: str) -> Query:
+def run_query(conn: Connection, text: str) -> Query:
     return Query(conn, compile_query(text))
-
-
-def unit_display(unit: str) -> str:
-    return DISPLAY.get(unit, unit)
 
 
 def compile_conjuncts(text: str) -> tuple[CompiledQuery, ...]:
@@ -592,18 +641,16 @@ def compile_conjuncts(text: str) -> tuple[CompiledQuery, ...]:
         if tree.data == "and_expr" and not whole_group
         else [tree]
     )
-    compiler = _Compiler(text)
-    compiled: list[tuple[str, str, list[object]]] = []
+    builder = _TreeBuilder(text)
+    built: list[tuple[str, Expr]] = []
     for term in terms:
-        sql, params = compiler.transform(term)
         label = text[term.meta.start_pos : term.meta.end_pos]
         if term.data in ("or_expr", "and_expr"):  # only a parenthesised group is a tree here
             label = f"({label})"
-        compiled.append((" ".join(label.split()), sql, params))
-    tables = tuple((alias, table) for table, alias in compiler.tables.items())
-    return tuple(
-        CompiledQuery(label, sql, tuple(params), tables) for label, sql, params in compiled
-    )
+        built.append((" ".join(label.split()), builder.transform(term)))
+    # One alias per table over all the terms, so they can share one FROM clause.
+    alias_of = aliases(And(tuple(expr for _, expr in built)))
+    return tuple(_compiled(label, expr, alias_of) for label, expr in built)
 
 
 def _parenthesised(text: str, start: int) -> bool:

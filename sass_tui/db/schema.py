@@ -22,7 +22,6 @@ No Textual import here.
 from __future__ import annotations
 
 import os
-import re
 import sqlite3
 from collections.abc import Iterable, Sequence
 from functools import lru_cache
@@ -43,7 +42,7 @@ from sass_tui.model.names import (
 )
 from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS, MOTION_NAMES
 
-SCHEMA_VERSION = "5"
+SCHEMA_VERSION = "6"
 AXES = ("x", "y", "z")
 
 GIRTH_NAMES = tuple(r.name for r in GIRTH_ROWS)
@@ -228,10 +227,10 @@ CREATE TABLE strength_q (
   id_num INTEGER PRIMARY KEY,
   strength_type TEXT, motion_speed REAL, training_level REAL, fatigue_level REAL
 );
-{axis_tables}{strength_tables}{_change_log_ddl()}{TARGET_DDL}"""
+{axis_tables}{strength_tables}{TARGET_DDL}"""
 
 
-# --- target populations (schema 5; sass_tui/db/targets.py) -------------------
+# --- target populations (schema 6; sass_tui/db/targets.py) -------------------
 # A target is a name, what it was made from and how well it matches
 # (`summary`, JSON), and one weight per person of its base population.
 TARGET_TABLES = ("target", "target_weight")
@@ -256,152 +255,12 @@ CREATE TABLE IF NOT EXISTS target_weight (
 """
 
 
-# --- the change log (schema 3; quiet bulk writes, schema 4) -----------------
+# --- the change log of schemas 3 and 4 (dropped by schema 5) -----------------
 #
-# Which people changed, for the column copy (db/accelerator.py): every table a
-# query reads (one row per person) has triggers that note the id_num of each
-# row inserted, updated or deleted in change_log, with the current generation
-# (the last row of change_gens).  sass's writers start a new generation per
-# write (new_generation); a copy made at generation G is brought up to date
-# by re-reading the people logged at G or later.  A person is logged once per
-# generation (the WHEN clause), so an import costs one key lookup per query
-# row.  The triggers fire for every writer of the file, sass or not.
-#
-# Schema 4: the logging is quiet while change_bulk holds a row (or, for a
-# large write, the per-row triggers are dropped and created again: see
-# logged_once and change_schema).  sass's own
-# bulk writer (store_people, delete_people: `logged_once`) puts one there
-# inside its write transaction, writes, logs the ids it wrote in one
-# statement and empties change_bulk before COMMIT, so no other connection
-# ever sees the row (a crash rolls it back with the rest): an import pays
-# one log row per person instead of a logging program per query row (the
-# triggers still fire, and stop at the WHEN; docs/performance.md, "Database
-# at scale").
-
-
-def logged_tables() -> tuple[str, ...]:
-    """The tables whose writes change_log records: those a query reads."""
-    return ("person", "measure", "strength_q") + tuple(
-        table for tables in QUERY_TABLES.values() for table in tables.values()
-    )
-
-
-_CURRENT_GEN = "(SELECT coalesce(max(gen), 0) FROM change_gens)"
-# Schema 4: the logging trigger's condition that keeps it quiet during a bulk
-# write (on that one trigger, not the 310 that call it: a WHEN on each cost
-# every connection 0.4 ms more to parse the schema, and saved no more).
-QUIET_WHEN = "NOT EXISTS (SELECT 1 FROM change_bulk) "
-
-
-def change_log_triggers() -> dict[str, str]:
-    """name -> CREATE TRIGGER statement, for every logged table and operation.
-    Each inserts the id into the view change_note, whose one INSTEAD OF
-    trigger does the logging: short triggers, parsed faster by every
-    connection (~1 ms for the 321 of them) and run faster than the logging
-    written out in each."""
-    out = {
-        "change_note_insert": (
-            "CREATE TRIGGER IF NOT EXISTS change_note_insert INSTEAD OF INSERT ON change_note\n"
-            f"WHEN {QUIET_WHEN}AND NOT EXISTS (SELECT 1 FROM change_log WHERE id_num = NEW.id_num "
-            f"AND gen = {_CURRENT_GEN})\nBEGIN\n"
-            "  INSERT OR REPLACE INTO change_log SELECT NEW.id_num, coalesce(max(gen), 0) "
-            "FROM change_gens;\nEND"
-        )
-    }
-    for table in logged_tables():
-        for op, refs in (("insert", ("NEW",)), ("update", ("OLD", "NEW")), ("delete", ("OLD",))):
-            name = f"log_{table}_{op}"
-            body = " ".join(f"INSERT INTO change_note VALUES ({ref}.id_num);" for ref in refs)
-            out[name] = (
-                f"CREATE TRIGGER IF NOT EXISTS {name} AFTER {op.upper()} ON {table} "
-                f"BEGIN {body} END"
-            )
-    return out
-
-
-def _change_log_ddl() -> str:
-    triggers = "".join(f"{sql};\n" for sql in change_log_triggers().values())
-    return f"""-- change_log: the people changed at each generation (see change_log_triggers).
-CREATE TABLE IF NOT EXISTS change_gens (gen INTEGER PRIMARY KEY, token INTEGER NOT NULL);
-CREATE TABLE IF NOT EXISTS change_log (id_num INTEGER PRIMARY KEY, gen INTEGER NOT NULL);
-CREATE INDEX IF NOT EXISTS change_log_gen ON change_log (gen);
-CREATE TABLE IF NOT EXISTS change_bulk (one INTEGER PRIMARY KEY);
-CREATE TABLE IF NOT EXISTS change_schema (from_cookie INTEGER PRIMARY KEY, to_cookie INTEGER NOT NULL);
-CREATE VIEW IF NOT EXISTS change_note AS SELECT 0 AS id_num;
-{triggers}"""
-
-
-def new_generation(conn: sqlite3.Connection) -> None:
-    """Start a generation of the change log (inside the caller's write
-    transaction): what this write changes is told apart from earlier writes."""
-    conn.execute(f"INSERT INTO change_gens VALUES ({_CURRENT_GEN} + 1, random())")
-
-
-# A bulk write of at least this many people drops the per-row triggers for
-# its transaction and creates them again before COMMIT (14 ms for the 310;
-# below this the triggers firing cost less than that): its rows fire nothing.
-DROP_TRIGGERS_FROM = 2_000
-
-
-def schema_cookie(conn: sqlite3.Connection) -> int:
-    """The file's schema cookie (the header's, as the caller's transaction sees it)."""
-    cookie: int = conn.execute("PRAGMA schema_version").fetchone()[0]
-    return cookie
-
-
-class logged_once:
-    """Inside the caller's write transaction: the change log's logging quiet
-    while people `ids` are written, and those ids logged in one statement on
-    the way out instead (~45 trigger programs per person before).
-
-    Quiet means a row in change_bulk (the one logging trigger stops at its
-    WHEN) or, from DROP_TRIGGERS_FROM people, the per-row triggers dropped
-    and created again on the way out, the schema cookie's move from before
-    to after recorded in change_schema: the column copy accepts a move so
-    recorded, and rebuilds after any other.  The ids are logged whatever
-    happened, so a caller that catches an error and commits still logs
-    every person that may have changed; a rollback takes the flag, the
-    dropped triggers and the record away with the rest.  Outside a
-    transaction (where each step would be committed alone) the triggers log
-    as usual."""
-
-    def __init__(self, conn: sqlite3.Connection, ids: Sequence[int]) -> None:
-        self.conn = conn
-        self.ids = ids
-        self.quiet = False
-        self.cookie: int | None = None  # before the triggers were dropped
-
-    def __enter__(self) -> None:
-        if not self.conn.in_transaction:
-            return
-        if len(self.ids) >= DROP_TRIGGERS_FROM:
-            self.cookie = schema_cookie(self.conn)
-            for name in change_log_triggers():
-                if name != "change_note_insert":
-                    self.conn.execute(f"DROP TRIGGER IF EXISTS {name}")
-        else:
-            self.conn.execute("INSERT OR IGNORE INTO change_bulk VALUES (1)")
-        self.quiet = True
-
-    def __exit__(self, exc_type: object, exc: BaseException | None, tb: object) -> None:
-        if not self.quiet or not self.conn.in_transaction:
-            return  # the triggers logged, or SQLite rolled everything back
-        import json
-
-        self.conn.execute(
-            f"INSERT OR REPLACE INTO change_log SELECT value, {_CURRENT_GEN} FROM json_each(?)",
-            (json.dumps([int(i) for i in self.ids]),),
-        )
-        if self.cookie is None:
-            self.conn.execute("DELETE FROM change_bulk")
-            return
-        for name, sql in change_log_triggers().items():
-            if name != "change_note_insert":
-                self.conn.execute(sql)
-        self.conn.execute(
-            "INSERT OR REPLACE INTO change_schema VALUES (?, ?)",
-            (self.cookie, schema_cookie(self.conn)),
-        )
+# Schemas 3 and 4 logged every write to every query table in change_log, by
+# triggers, for the home-made column copy; the copy is now DuckDB's, rebuilt
+# whole after any write (db/accelerator.py), and no trigger follows writes.
+_CHANGE_LOG_TABLES = ("change_gens", "change_log", "change_bulk", "change_schema")
 
 
 RELATIONS = (
@@ -425,22 +284,25 @@ PERSON_TABLES = (
 
 
 def default_db_path() -> Path:
-    """$SASS_DB, else $XDG_DATA_HOME/sass/sass.db (~/.local/share/sass/sass.db)."""
+    """$SASS_DB, else sass.db in the user's data directory (model/paths.py's
+    data_dir: $XDG_DATA_HOME/sass/sass.db, ~/.local/share/sass/sass.db on Linux).
+    DatabaseError when $SASS_DB is a PostgreSQL address (callers that take
+    one look at it first: db/database.py's configured_target)."""
+    from sass_tui.db.addresses import is_url, sqlite_only
+
+    if is_url(os.environ.get("SASS_DB")):
+        raise DatabaseError(sqlite_only("this command") + "; $SASS_DB names a PostgreSQL database")
     if os.environ.get("SASS_DB"):
         return Path(os.environ["SASS_DB"])
-    base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
-    return Path(base) / "sass" / "sass.db"
+    from sass_tui.model.paths import data_dir
+
+    return data_dir() / "sass.db"
 
 
 # Attributes of a person besides the model's (ANSUR II's survey fields).
 PERSON_ATTRIBUTES = ("component", "branch", "subjectnumericrace", "dodrace", "ethnicity")
 # Tables every sass database of this version holds.
-EXPECTED_TABLES = frozenset(
-    ("meta", "change_gens", "change_log", "change_bulk", "change_schema")
-    + TARGET_TABLES
-    + RELATIONS
-    + PERSON_TABLES
-)
+EXPECTED_TABLES = frozenset(("meta",) + TARGET_TABLES + RELATIONS + PERSON_TABLES)
 BUSY_TIMEOUT_S = 10.0
 
 
@@ -450,6 +312,7 @@ def connect(
     create: bool = False,
     check_same_thread: bool = True,
     rebuild: bool = False,
+    read_only: bool = False,
 ) -> sqlite3.Connection:
     """Open a sass database (autocommit mode: writers use transaction()).
 
@@ -458,7 +321,9 @@ def connect(
     newer schema.  A database of schema 1 is migrated (columns and the
     measure table added, nothing removed).  `rebuild` (db init) accepts any
     sass database, whatever its version or state, since it is about to be
-    rebuilt."""
+    rebuilt.  `read_only` (`sass serve --read-only`) opens the file in
+    SQLite's read-only mode: any write to it fails (TEMP tables, where the
+    query lists live, still work)."""
     path = Path(path)
     new_file = not path.exists()
     if new_file and not create:
@@ -469,9 +334,11 @@ def connect(
         path.parent.mkdir(parents=True, exist_ok=True)
         if new_file:
             _check_not_read_only(path)
+    target, uri = (path.resolve().as_uri() + "?mode=ro", True) if read_only else (str(path), False)
     try:
         conn = sqlite3.connect(
-            str(path),
+            target,
+            uri=uri,
             isolation_level=None,
             check_same_thread=check_same_thread,
             timeout=BUSY_TIMEOUT_S,
@@ -567,14 +434,8 @@ def _check_schema(conn: sqlite3.Connection, path: Path, create: bool, rebuild: b
     if version == "1":
         migrate_1_to_2(conn)
         version = "2"
-    if version == "2":
-        migrate_2_to_3(conn)
-        version = "3"
-    if version == "3":
-        migrate_3_to_4(conn)
-        version = "4"
-    if version == "4":
-        migrate_4_to_5(conn)
+    if version in ("2", "3", "4", "5"):
+        migrate_to_6(conn)
         names = _tables(conn)
     elif version != SCHEMA_VERSION:
         raise DatabaseError(
@@ -599,52 +460,42 @@ def migrate_1_to_2(conn: sqlite3.Connection) -> None:
             return
         for column, kind in zip(PERSON_ATTRIBUTES, ("TEXT", "TEXT", "INTEGER", "INTEGER", "TEXT")):
             conn.execute(f"ALTER TABLE person ADD COLUMN {column} {kind}")
-        for statement in _schema_statements():
-            if re.search(r"CREATE (TABLE|TRIGGER) measure", statement):
+        for statement in schema_statements():
+            code = " ".join(
+                line for line in statement.splitlines() if not line.lstrip().startswith("--")
+            ).lstrip()
+            if code.startswith(("CREATE TABLE measure", "CREATE TRIGGER measure")):
                 conn.execute(statement)
         conn.execute("UPDATE meta SET value = '2' WHERE key = 'schema_version'")
 
 
-def migrate_2_to_3(conn: sqlite3.Connection) -> None:
-    """Schema 2 -> 3: the change log and its triggers (no data changed)."""
+def migrate_to_6(conn: sqlite3.Connection) -> None:
+    """Schemas 2 to 5 -> 6: the change log of schemas 3 to 5 dropped (its
+    tables, view and triggers; the column copy no longer follows writes) and
+    the target populations' tables made; no person's data changed."""
     with transaction(conn):
         row = conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
-        if row is None or row[0] != "2":  # another process migrated it meanwhile
+        if row is None or row[0] not in ("2", "3", "4", "5"):  # migrated meanwhile
             return
-        for statement in _schema_statements():
-            if "IF NOT EXISTS" in statement:  # the change log's tables, index and triggers
-                conn.execute(statement)
-        new_generation(conn)
-        conn.execute("UPDATE meta SET value = '3' WHERE key = 'schema_version'")
-
-
-def migrate_3_to_4(conn: sqlite3.Connection) -> None:
-    """Schema 3 -> 4: the change log's triggers quiet while change_bulk holds
-    a row (bulk writes log their ids once); no data changed."""
-    with transaction(conn):
-        row = conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
-        if row is None or row[0] != "3":  # another process migrated it meanwhile
-            return
-        conn.execute("DROP TRIGGER IF EXISTS change_note_insert")
-        for statement in _schema_statements():
-            if "IF NOT EXISTS" in statement:  # change_bulk, change_schema, the trigger
-                conn.execute(statement)
-        conn.execute("UPDATE meta SET value = '4' WHERE key = 'schema_version'")
-
-
-def migrate_4_to_5(conn: sqlite3.Connection) -> None:
-    """Schema 4 -> 5: the target populations' tables (no data changed)."""
-    with transaction(conn):
-        row = conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
-        if row is None or row[0] != "4":  # another process migrated it meanwhile
-            return
-        for statement in _schema_statements():
+        triggers = [
+            name
+            for (name,) in conn.execute(
+                "SELECT name FROM sqlite_master WHERE type = 'trigger' "
+                "AND (name LIKE 'log\\_%' ESCAPE '\\' OR name = 'change_note_insert')"
+            ).fetchall()
+        ]
+        for name in triggers:
+            conn.execute(f'DROP TRIGGER "{name}"')
+        conn.execute("DROP VIEW IF EXISTS change_note")
+        for table in _CHANGE_LOG_TABLES:
+            conn.execute(f"DROP TABLE IF EXISTS {table}")
+        for statement in schema_statements():
             if "CREATE TABLE IF NOT EXISTS target" in statement:
                 conn.execute(statement)
-        conn.execute("UPDATE meta SET value = '5' WHERE key = 'schema_version'")
+        conn.execute("UPDATE meta SET value = '6' WHERE key = 'schema_version'")
 
 
-def _schema_statements() -> list[str]:
+def schema_statements() -> list[str]:
     statements: list[str] = []
     pending = ""
     for piece in _ddl().split(";\n"):
@@ -665,10 +516,9 @@ def create_schema(conn: sqlite3.Connection) -> None:
 
 
 def _create_tables(conn: sqlite3.Connection) -> None:
-    for statement in _schema_statements():
+    for statement in schema_statements():
         conn.execute(statement)
     conn.execute("INSERT INTO meta VALUES ('schema_version', ?)", (SCHEMA_VERSION,))
-    new_generation(conn)
     conn.execute(
         "INSERT INTO meta VALUES ('units', "
         "'length cm, mass kg, angle deg, strength N-m, speed deg/s, age years')"
@@ -678,6 +528,8 @@ def _create_tables(conn: sqlite3.Connection) -> None:
 def recreate_schema(conn: sqlite3.Connection) -> None:
     """Drop every table and create the schema afresh (inside the caller's
     exclusive transaction: other processes see the old database or the new one)."""
+    for (name,) in conn.execute("SELECT name FROM sqlite_master WHERE type = 'view'").fetchall():
+        conn.execute(f'DROP VIEW "{name}"')  # schema 3 and 4's change_note
     for (name,) in conn.execute(
         "SELECT name FROM sqlite_master WHERE type = 'table' AND name NOT LIKE 'sqlite_%'"
     ).fetchall():
@@ -872,9 +724,7 @@ def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iter
 
 def delete_people(conn: sqlite3.Connection, ids: Sequence[int]) -> None:
     """Delete these people with all their data (inside the caller's transaction)."""
-    new_generation(conn)
-    with logged_once(conn, ids):
-        _delete_people(conn, ids)
+    _delete_people(conn, ids)
 
 
 def _delete_people(conn: sqlite3.Connection, ids: Sequence[int]) -> None:
@@ -889,11 +739,9 @@ def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool 
     """Insert a batch (inside the caller's transaction).  With replace, people
     whose id_num is already stored are deleted first, with all their data."""
     ids = [int(i) for i in batch.id_num]
-    new_generation(conn)
-    with logged_once(conn, ids):
-        if replace:
-            _delete_people(conn, ids)
-        _store_people(conn, ids, batch)
+    if replace:
+        _delete_people(conn, ids)
+    _store_people(conn, ids, batch)
 
 
 def _store_people(conn: sqlite3.Connection, ids: list[int], batch: PeopleBatch) -> None:

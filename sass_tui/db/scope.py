@@ -9,8 +9,9 @@ that names no `source` term reaches only the people whose source is not
 `synthetic`; any `source` term (`source = synthetic`, `source != ansur2`)
 leaves the choice to the query.
 
-`real_only` is the one place that scope is added; `db/query.py`'s
-`compile_query` calls it with whether the query named `source`.  When the
+`real_only` is the one place that scope is added, on the query's tree
+(db/query_tree.py), so every engine's SQL and the DuckDB copy carry it;
+`db/query.py`'s `compile_query` calls it.  When the
 scope leaves nobody, `query.demonstration_hint` says how many demonstration
 people the query would reach, and the query that reaches them
 (`demonstration_query`).
@@ -18,20 +19,25 @@ people the query would reach, and the query that reaches them
 
 from __future__ import annotations
 
+from sass_tui.db.query_tree import PERSON_TABLE, And, Comparison, Expr, names_field
+
 DEMONSTRATION_SOURCE = "synthetic"
 # source is NOT NULL (db/schema.py) and the default database stores the label
-# in lower case, so a plain comparison: the column copy of db/accelerator.py
-# answers it (it leaves a comparison without regard to case to SQLite).
-_REAL_ONLY = "p.source != ?"
+# in lower case, so a plain comparison.  Its field is not `source`: the user
+# did not name it, and a query that does is not scoped (names_field).
+REAL_PEOPLE = Comparison("(real people)", PERSON_TABLE, "source", "!=", DEMONSTRATION_SOURCE)
 
 
-def real_only(
-    where: str, params: tuple[object, ...], names_source: bool
-) -> tuple[str, tuple[object, ...]]:
-    """`where` limited to real people, unless the query named a `source` term."""
-    if names_source:
-        return where, params
-    return f"{where} AND {_REAL_ONLY}", (*params, DEMONSTRATION_SOURCE)
+def real_only(expr: Expr | None) -> Expr:
+    """`expr` (None: everyone) limited to real people, unless it names a
+    `source` term (or is limited already): the scope is one more term of its
+    top-level AND."""
+    if expr is None:
+        return REAL_PEOPLE
+    if names_field(expr, "source") or REAL_PEOPLE in expr.comparisons():
+        return expr
+    terms = expr.terms if isinstance(expr, And) else (expr,)
+    return And((*terms, REAL_PEOPLE))
 
 
 def demonstration_query(text: str) -> str:

@@ -29,6 +29,7 @@ from sass_tui.db.query import (
     compile_query,
     resolve_field,
 )
+from sass_tui.db.query_tree import PERSON_TABLE, to_sql
 from sass_tui.db.scope import real_only
 from sass_tui.model.measures import MEASURES
 
@@ -103,8 +104,9 @@ def load_values(
     else:
         from_clause = "person p" + "".join(joins)
         if ids is None:  # everyone: every real person (db/scope.py), e.g. what predict learns from
-            scope, params = real_only("1", params, names_source=False)
+            scope, scope_params = to_sql(real_only(None), "sqlite", {PERSON_TABLE: "p"})
             conditions.append(scope)
+            params = (*params, *scope_params)
     if ids is not None:
         # One parameter whatever the number of people (no SQLITE_MAX_VARIABLE_NUMBER).
         conditions.append("p.id_num IN (SELECT value FROM json_each(?))")

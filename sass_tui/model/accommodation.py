@@ -372,8 +372,8 @@ class Family:
         return self.ellipsoid.measures
 
     def to_json(self) -> dict[str, Any]:
-        """family.json: the issue's shape, plus the counts behind the percentages,
-        the chi-square promise and the family's kind and ranges."""
+        """family.json as docs/accommodation.md shows it: with the counts behind
+        the percentages, the chi-square promise and the family's kind and ranges."""
         low, high = family_ranges(list(self.points()))
         return {
             "gender": self.gender,

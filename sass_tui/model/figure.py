@@ -5,7 +5,7 @@ display unit the user can switch (cm|in, deg|rad).  No Textual import here.
 
 A group's values at its percentile (the default figure, a new group
 percentile, a new gender) are computed in plain floats: the TUI's first
-screen is drawn before numpy is imported (issue 16).  They become a numpy
+screen is drawn before numpy is imported, to start sooner.  They become a numpy
 array when something asks for the array (a cell edit, an export).
 """
 

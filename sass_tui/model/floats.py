@@ -1,5 +1,5 @@
 """Float arithmetic as numpy's arrays do it, for the code that runs before
-numpy is imported (issue 16: the TUI's first screen)."""
+numpy is imported: the TUI's first screen, drawn sooner without it."""
 
 from __future__ import annotations
 

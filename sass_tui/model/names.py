@@ -14,7 +14,6 @@ from types import MappingProxyType
 from typing import NamedTuple
 
 AXES = ("x", "y", "z")
-PERCENTILE_COLUMNS = (5.0, 50.0, 95.0)
 
 GIRTH = "girth"
 JOINT_LIMITS = "joint_limits"

@@ -1,4 +1,10 @@
-"""File names as users type them: `~` expanded, in one place for the TUI and the CLI."""
+"""File names as users type them: `~` expanded, in one place for the TUI and the CLI.
+
+A session served to a web browser (`sass serve`, model/served.py) has a
+working directory: every file name its prompts take is then a name inside
+that directory (`inside`), so a browser session cannot read or write the
+server user's other files.
+"""
 
 from __future__ import annotations
 
@@ -16,9 +22,12 @@ class PathError(ValueError, SassError):
         self.reason = reason or message
 
 
-def user_path(text: str | Path) -> Path:
+def user_path(text: str | Path, workdir: Path | None = None) -> Path:
     """`~` and `~user` expanded; an unknown user is refused with a message
-    (Path.expanduser raises RuntimeError for it)."""
+    (Path.expanduser raises RuntimeError for it).  With `workdir` (a served
+    session's) the name must lie inside it: see `inside`."""
+    if workdir is not None:
+        return inside(workdir, text)
     try:
         return Path(text).expanduser()
     except RuntimeError:
@@ -26,10 +35,31 @@ def user_path(text: str | Path) -> Path:
         raise PathError(f"{text}: cannot expand {user} (no such user or home)") from None
 
 
-def regular_file(text: str | Path) -> Path:
+def inside(workdir: Path, text: str | Path) -> Path:
+    """`text`, a relative name, as the path it names inside `workdir`
+    (symbolic links followed).  Refused with a message: an absolute name, a
+    `~` name, any `..`, and a name a symbolic link leads out of `workdir`."""
+    name = str(text)
+    if not name.strip():
+        raise PathError("no file name given")
+    if name.startswith("~") or Path(name).is_absolute():
+        raise PathError(f"{name}: give a name inside {workdir}, not an absolute or ~ path")
+    if ".." in Path(name).parts:
+        raise PathError(f"{name}: '..' is refused; files stay inside {workdir}")
+    root = workdir.resolve()
+    try:
+        path = (root / name).resolve()  # follows every link, as opening it would
+    except (RuntimeError, OSError) as exc:  # a loop of links (RuntimeError before 3.13)
+        raise PathError(f"{name}: cannot follow its links ({exc})") from None
+    if not path.is_relative_to(root):
+        raise PathError(f"{name}: a symbolic link leads out of {workdir}; refused")
+    return path
+
+
+def regular_file(text: str | Path, workdir: Path | None = None) -> Path:
     """The expanded path of an existing regular file.  A FIFO, a device or a
     directory is refused before it is opened: reading a FIFO blocks forever."""
-    path = user_path(text)
+    path = user_path(text, workdir)
     try:
         mode = path.stat().st_mode
     except FileNotFoundError:
@@ -38,3 +68,30 @@ def regular_file(text: str | Path) -> Path:
         kind = "a directory" if stat.S_ISDIR(mode) else "not a regular file"
         raise PathError(f"{path}: {kind}; give a data file", f"{kind}; give a data file")
     return path
+
+
+# --- sass's own directories ----------------------------------------------------------
+# platformdirs knows each system's place ($XDG_*_HOME or ~/.local/share,
+# ~/.cache, ~/.config on Linux; ~/Library/... on macOS; %LOCALAPPDATA% on
+# Windows).  Imported when first asked: `sass query --db F` never needs it.
+
+
+def data_dir() -> Path:
+    """Where sass keeps its database and served sessions' directories."""
+    from platformdirs import user_data_dir
+
+    return Path(user_data_dir("sass", appauthor=False))
+
+
+def cache_dir() -> Path:
+    """Where sass keeps what it can rebuild (the database's column copies)."""
+    from platformdirs import user_cache_dir
+
+    return Path(user_cache_dir("sass", appauthor=False))
+
+
+def config_dir() -> Path:
+    """Where sass keeps the user's settings."""
+    from platformdirs import user_config_dir
+
+    return Path(user_config_dir("sass", appauthor=False))

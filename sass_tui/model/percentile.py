@@ -8,7 +8,7 @@ grows more negative with the percentile).
 
 The model is written once, for one cell in plain floats (`cell_value_at`,
 `cell_percentile_of`): the TUI's first screen is computed with them before
-numpy is imported (issue 16).  `value_at` and `percentile_of` apply them
+numpy is imported, to start sooner.  `value_at` and `percentile_of` apply them
 over numpy arrays whose last axis holds (v5, v50, v95), with broadcasting.
 """
 

@@ -71,7 +71,7 @@ class PopulationData:
     """One group's statistics: per gender (rows, axes, 3 percentiles).
 
     A file's are read into plain floats (`Cells`), so that the TUI's first
-    screen is computed before numpy is imported (issue 16); `stats` makes the
+    screen is computed before numpy is imported (a faster start); `stats` makes the
     array from them once, on first use, and `cell` goes on reading the plain
     floats (faster than an array's elements).  A population made from the
     database sets the array itself."""

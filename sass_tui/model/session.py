@@ -42,7 +42,7 @@ class Session:
     ) -> None:
         """`strength_later` makes the population's strength sheet when it is
         first asked for, instead of `strength_sheet` now: the TUI draws its
-        first screen before the strength data are read (issue 16)."""
+        first screen before the strength data are read, to start sooner."""
         self.population = population
         self.person: Figure | None = None
         self.person_index = 0

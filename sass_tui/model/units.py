@@ -1,19 +1,20 @@
-"""Units: the factors of the units SASS uses, and one pint registry for the rest.
+"""Units: the factors of the units SASS uses.
 
 Users type units the way the report does ("12in", "30deg", "17.98 ft-lb",
-"24 N-m"); pint would read "ft-lb" as feet minus pounds, so unit spellings are
-mapped to registry names first.  Every unit a user can type has its factor in
-`BASE_FACTORS` (checked against pint by tests/model/test_units.py), so
-converting "70 in" costs a multiplication, not pint's ~0.15 s import; pint is
-imported only for a unit outside that table.
+"24 N-m"); the spellings are mapped to unit names first (pint, for one,
+would read "ft-lb" as feet minus pounds).  Every unit a user can type, and
+every unit sass stores, has its factor in `BASE_FACTORS`, so converting
+"70 in" costs a multiplication.  The table is checked against pint, and pint
+is needed for nothing else: tests/model/test_units.py compares every pair
+of units with pint's conversion through the same definitions
+(tests/model/units.txt), so pint is a test dependency only.
 """
 
 from __future__ import annotations
 
 import math
 import re
-from functools import cache, lru_cache
-from pathlib import Path
+from functools import cache
 from typing import TYPE_CHECKING, overload
 
 from sass_tui.model.errors import SassError
@@ -22,25 +23,15 @@ from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH
 if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
-    import pint
 
 
 class UnitError(ValueError, SassError):
     """A value or unit the user typed cannot be used here."""
 
 
-@lru_cache(maxsize=1)
-def registry() -> pint.UnitRegistry[float]:
-    """The pint UnitRegistry.  pint is imported here, not at module level: it
-    costs ~0.1 s, and a figure in its canonical units never needs it."""
-    import pint
-
-    return pint.UnitRegistry(str(Path(__file__).with_name("units.txt")), cache_folder=None)
-
-
-# Registry name -> (dimension, factor to the SI unit of that dimension).  The
-# values are units.txt's definitions written out; a test compares each pair's
-# factor with pint's.
+# Unit name -> (dimension, factor to the SI unit of that dimension).  The
+# values are tests/model/units.txt's definitions written out; a test compares
+# each pair's factor with pint's.
 BASE_FACTORS: dict[str, tuple[str, float]] = {
     "m": ("length", 1.0),
     "cm": ("length", 1e-2),
@@ -61,25 +52,16 @@ BASE_FACTORS: dict[str, tuple[str, float]] = {
 
 @cache
 def _factor(from_unit: str, to_unit: str) -> float:
-    if from_unit in BASE_FACTORS and to_unit in BASE_FACTORS:
-        (from_dimension, from_base), (to_dimension, to_base) = (
-            BASE_FACTORS[from_unit],
-            BASE_FACTORS[to_unit],
-        )
-        if from_dimension == to_dimension:
-            return from_base / to_base
-        raise _wrong_dimension(from_unit, to_unit)
-    return _pint_factor(from_unit, to_unit)
-
-
-def _pint_factor(from_unit: str, to_unit: str) -> float:
-    """A unit outside BASE_FACTORS: ask pint (imported now, the first time)."""
-    import pint
-
-    try:
-        return float(registry().Quantity(1.0, from_unit).to(to_unit).magnitude)
-    except pint.DimensionalityError:
-        raise _wrong_dimension(from_unit, to_unit) from None
+    for unit in (from_unit, to_unit):
+        if unit not in BASE_FACTORS:
+            raise UnitError(f"unknown unit {unit!r}")
+    (from_dimension, from_base), (to_dimension, to_base) = (
+        BASE_FACTORS[from_unit],
+        BASE_FACTORS[to_unit],
+    )
+    if from_dimension == to_dimension:
+        return from_base / to_base
+    raise _wrong_dimension(from_unit, to_unit)
 
 
 def _wrong_dimension(from_unit: str, to_unit: str) -> UnitError:

@@ -41,10 +41,16 @@ class SassApp(App):
         *,
         strength_path: str | Path | None = None,
         db_path: str | Path | None = None,
+        workdir: Path | None = None,
+        read_only: bool = False,
     ) -> None:
         super().__init__()
         # None = $SASS_DB or the user's data directory, created on first Query.
         self.db_path = user_path(db_path) if db_path else None
+        # A session served to a browser (model/served.py): the directory every
+        # file name typed at a prompt stays in, and a database it must not change.
+        self.workdir = workdir
+        self.read_only = read_only
         figure = figure or Figure.default()
         self._strength_error = STRENGTH_NOT_LOADED
         # The strength sheet (numpy, ~10 ms) is made once the first screen is
@@ -131,6 +137,17 @@ class SassApp(App):
             gc.enable()
 
     # --- what tests and screens read ------------------------------------------------
+    def user_path(self, text: str) -> Path:
+        """A file name typed at a prompt: the user's own, or inside a served
+        session's working directory (model/paths.py's `inside`)."""
+        return user_path(text, self.workdir)
+
+    def regular_file(self, text: str) -> Path:
+        """An existing regular file named at a prompt, as `user_path` finds it."""
+        from sass_tui.model.paths import regular_file
+
+        return regular_file(text, self.workdir)
+
     @property
     def spreadsheet(self) -> SpreadsheetScreen:
         return next(s for s in self.screen_stack if isinstance(s, SpreadsheetScreen))
@@ -179,22 +196,10 @@ class SassApp(App):
     def selected_individual(self, index: int) -> Individual:
         """Person `index` of the selected list, read from the database; OSError
         when it cannot be read, DatabaseError when there is no such person."""
-        import sqlite3
-
-        from sass_tui.db.individual import fetch_individual
-        from sass_tui.db.schema import DatabaseError
-
         lists = self.query_lists
         if lists is None:
             raise OSError("the database is not open")
-        try:
-            with lists.lock:
-                id_num = lists.selected_id(index)
-                if id_num is None:
-                    raise DatabaseError(f"there is no person {index + 1} in the selected list")
-                return fetch_individual(lists.conn, id_num)
-        except sqlite3.Error as exc:
-            raise OSError(f"database error: {exc}") from exc
+        return lists.fetch_selected(index)
 
     def person_figure(self, index: int, population: Figure) -> Figure:
         """The figure of person `index` of the selected list (report §12.4)."""
@@ -209,8 +214,16 @@ def _screen_commands_provider():
     return ScreenCommands
 
 
+def make_app(db_path: str | Path | None = None) -> SassApp:
+    """The app `sass` runs: a served session's (`sass serve`) when its
+    environment says so (model/served.py)."""
+    from sass_tui.model.served import served_read_only, served_workdir
+
+    return SassApp(db_path=db_path, workdir=served_workdir(), read_only=served_read_only())
+
+
 def run_app(db_path: str | Path | None = None, **run_options) -> int:
     """Run the TUI; the exit status is the app's (non-zero after a crash)."""
-    app = SassApp(db_path=db_path)
+    app = make_app(db_path)
     app.run(**run_options)
     return app.return_code or 0

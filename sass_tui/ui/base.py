@@ -20,6 +20,7 @@ from textual.binding import Binding
 from textual.dom import DOMNode
 from textual.screen import Screen
 
+from sass_tui.ui.textual_api import bindings_of
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
 
 if TYPE_CHECKING:  # app.py imports the screens: at run time this would be a cycle
@@ -114,7 +115,7 @@ class SassScreen(Screen):
             return  # the prompt's own keys (Enter, Escape) are the answer's bindings
         node: DOMNode | None = self.focused
         while node is not None and node is not self:
-            if event.key in node._bindings.key_to_bindings:
+            if event.key in bindings_of(node).key_to_bindings:
                 return  # a widget's own binding comes first (the app runs it)
             node = node.parent
         if await self._run_binding(event.key):
@@ -132,7 +133,7 @@ class SassScreen(Screen):
     async def _run_binding(self, key: str) -> bool:
         """Run this screen's binding for `key`, or say why it does nothing
         here.  False when the screen has nothing to do with the key."""
-        for binding in self._bindings.key_to_bindings.get(key, ()):
+        for binding in bindings_of(self).key_to_bindings.get(key, ()):
             if self.check_action(binding.action, ()):
                 await self.run_action(binding.action)
                 return True

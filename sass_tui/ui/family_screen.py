@@ -19,7 +19,6 @@ from textual.widgets import DataTable, Footer, Label
 from textual_plotext import PlotextPlot
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import user_path
 from sass_tui.model.vocabulary import GENDERS
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
@@ -170,17 +169,13 @@ class FamilyScreen(SassScreen):
         coverage: float,
         work: Work,
     ) -> None:
-        import sqlite3
-
-        from sass_tui.db.default import open_database
-        from sass_tui.db.fit import DEFAULT_POPULATION, load_family
-        from sass_tui.db.values import load_values
+        from sass_tui.db.database import Database
+        from sass_tui.db.fit import DEFAULT_POPULATION
 
         try:
-            conn = open_database(db_path)
+            db = Database.open(db_path)
             try:
-                family = load_family(
-                    conn,
+                family, people = db.family(
                     gender,
                     measures,
                     coverage / 100.0,
@@ -189,14 +184,9 @@ class FamilyScreen(SassScreen):
                     progress=work.report,
                     cancel=work.cancel,
                 )
-                people = load_values(
-                    conn,
-                    list(family.measures[:2]),
-                    f"({DEFAULT_POPULATION}) AND gender = {gender}",
-                )
             finally:
-                conn.close()
-        except (SassError, OSError, sqlite3.Error) as exc:
+                db.close()
+        except (SassError, OSError) as exc:
             self.post_message(FamilyFailed(f"Cannot build the family: {exc}"))
             return
         matrix = people.matrix
@@ -255,7 +245,7 @@ class FamilyScreen(SassScreen):
         # while the directory is asked.
         self.ask(
             f"Directory for the family's files [{default}]:",
-            lambda text: self._write_to(family, user_path(text.strip() or default)),
+            lambda text: self._write_to(family, self.sass_app.user_path(text.strip() or default)),
         )
 
     def _write_to(self, family: Family, directory: Path) -> None:

@@ -120,24 +120,10 @@ class FitScreen(SassScreen):
     def run_fit(
         self, lists: QueryLists, limits: str, population: str, work: Work, target: str | None
     ) -> None:
-        from sass_tui.db.fit import fit_test, limit_histograms
-
         try:
-            with lists.lock:
-                weights = None
-                if target:
-                    from sass_tui.db.targets import load_target
-
-                    weights = load_target(lists.conn, target)
-                result = fit_test(
-                    lists.conn,
-                    limits,
-                    population,
-                    progress=work.report,
-                    cancel=work.cancel,
-                    target=weights,
-                )
-                histograms = limit_histograms(lists.conn, limits, population, cancel=work.cancel)
+            result, histograms = lists.fit_test(
+                limits, population, work.report, work.cancel, target=target
+            )
         except DB_ERRORS as exc:
             self.post_message(FitDone(error=str(exc)))
             return

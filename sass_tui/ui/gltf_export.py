@@ -18,7 +18,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import user_path
 from sass_tui.ui.widgets.message_line import CANCELLED
 
 if TYPE_CHECKING:
@@ -42,7 +41,9 @@ async def _export(screen: SassScreen, figure: Figure, default: str) -> None:
     if name is None:
         screen.say(CANCELLED)
         return
-    path = check_path(user_path(name.strip() or default))  # refused before the next prompt
+    # A served session's file stays in its working directory (SassApp.user_path).
+    name = name.strip() or default
+    path = check_path(screen.sass_app.user_path(name))  # refused before the next prompt
     answer = await screen.answer_to(f"Pose: {' or '.join(POSES)} [{POSES[0]}]:")
     if answer is None:
         screen.say(CANCELLED)
@@ -86,9 +87,8 @@ def export_list_person(
 ) -> None:
     """The query screen's Export glTF: the person of the list row `row`, read
     through the screen's `database()` (which refuses while a query runs)."""
-    import sqlite3
-
-    from sass_tui.db.individual import fetch_individual, person_figure
+    from sass_tui.db.individual import person_figure
+    from sass_tui.db.lists import DB_ERRORS
     from sass_tui.model.hanim import build_humanoid
 
     if row is None:
@@ -96,8 +96,8 @@ def export_list_person(
         return
     with database() as lists:
         try:
-            person = fetch_individual(lists.conn, row["id"])
-        except sqlite3.Error as exc:
+            person = lists.fetch_person(row["id"])
+        except DB_ERRORS as exc:
             screen.complain(f"Cannot read {row['name']} from the database: {exc}")
             return
     figure = person_figure(person, screen.sass_app.session.population)

@@ -33,6 +33,7 @@ from textual.containers import Vertical
 from textual.screen import ModalScreen, Screen
 from textual.widgets import DataTable, Static
 
+from sass_tui.ui.textual_api import bindings_of, class_bindings
 from sass_tui.ui.widgets import CommandMenu
 
 # Keys Textual shows better than their names.
@@ -133,7 +134,7 @@ def screen_commands(screen) -> list[ScreenCommand]:
     for menu in screen.query(CommandMenu):
         for spec in menu.commands:
             labels[spec.action] = spec.label(menu.context)
-    return _commands(screen, screen._bindings, labels)
+    return _commands(screen, bindings_of(screen), labels)
 
 
 def class_commands(screen_class: type[Screen], app) -> list[ScreenCommand]:
@@ -145,7 +146,7 @@ def class_commands(screen_class: type[Screen], app) -> list[ScreenCommand]:
             labels[spec.action] = spec.label(None)
         except AttributeError:  # a label that reads the screen ("void" or not)
             labels[spec.action] = _humanize(spec.name)
-    return _commands(screen_class, screen_class._merge_bindings(), labels, app)
+    return _commands(screen_class, class_bindings(screen_class), labels, app)
 
 
 def _commands(screen, bindings: BindingsMap, labels: dict[str, str], app=None):

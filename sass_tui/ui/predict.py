@@ -52,14 +52,13 @@ class PredictorOpened(Message):
 def open_predictor_at(db_path: Path | None) -> Predictor:
     """The predictor of the database the query screen uses (the default one
     when no --db was given); run in a worker."""
-    from sass_tui.db.default import open_database
-    from sass_tui.db.predict import open_predictor
+    from sass_tui.db.database import Database
 
-    conn = open_database(db_path)
+    db = Database.open(db_path)
     try:
-        return open_predictor(conn)
+        return db.predictor()
     finally:
-        conn.close()
+        db.close()
 
 
 def interval_text(prediction: Prediction, field: str, unit: str, convert) -> str:

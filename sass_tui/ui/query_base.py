@@ -9,7 +9,7 @@ from pathlib import Path
 
 from textual import work
 
-from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, DatabaseBusy, QueryLists
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
 from sass_tui.ui.query_builder import QueryBuilder
@@ -92,12 +92,13 @@ class QueryScreenBase(SassScreen):
         from sass_tui.db.schema import default_db_path
 
         path = db_path or default_db_path()
-        building = db_path is None and default_needs_building(path)
+        read_only = self.sass_app.read_only  # served --read-only: never built nor changed
+        building = db_path is None and not read_only and default_needs_building(path)
         try:
             if building:
                 self.post_message(DatabaseProgress(f"Creating the default database {path} ..."))
                 create_default_database(path, work.report, cancel=work.cancel)
-            lists = QueryLists.open(path)
+            lists = QueryLists.open(path, read_only=read_only)
         except Cancelled as exc:
             if building:  # rolled back: the empty file must not pass for the database
                 for leftover in (path, Path(f"{path}-journal"), Path(f"{path}-wal")):
@@ -142,12 +143,11 @@ class QueryScreenBase(SassScreen):
         """The lists, if no query or import is using the connection."""
         if self.lists is None:
             raise Busy("The database is not open yet.")
-        if not self.lists.lock.acquire(blocking=False):
-            raise Busy(WAIT)
         try:
-            yield self.lists
-        finally:
-            self.lists.lock.release()
+            with self.lists.exclusive(wait=False) as lists:
+                yield lists
+        except DatabaseBusy:
+            raise Busy(WAIT) from None
 
     def _list_command(self, func) -> None:
         try:

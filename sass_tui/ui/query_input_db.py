@@ -10,7 +10,6 @@ from textual import work
 from sass_tui.db.flatfile import FlatFiles
 from sass_tui.db.lists import DB_ERRORS, QueryLists
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import regular_file
 from sass_tui.ui.progress import Work
 from sass_tui.ui.query_base import WAIT, QueryScreenBase
 from sass_tui.ui.query_messages import ImportFinished
@@ -40,6 +39,9 @@ class InputDbCommands(QueryScreenBase):
             return
         if self.lists is None:
             self.say("The database is not open yet.")
+            return
+        if self.sass_app.read_only:
+            self.complain("Input DB is off: this database is served read-only (sass serve).")
             return
         self.converse(self._input_db())
 
@@ -75,7 +77,7 @@ class InputDbCommands(QueryScreenBase):
                 )
                 continue
             try:
-                path = regular_file(name)
+                path = self.sass_app.regular_file(name)
             except SassError as exc:
                 problem = f"{exc}."
                 continue
@@ -107,8 +109,7 @@ class InputDbCommands(QueryScreenBase):
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def import_ansur(self, lists: QueryLists, path: Path, label: str, work: Work) -> None:
         try:
-            with lists.lock:
-                count = lists.import_ansur(path, label, work.report, work.cancel)
+            count = lists.import_ansur(path, label, work.report, work.cancel)
         except DB_ERRORS as exc:
             self.post_message(ImportFinished(None, str(exc)))
             return
@@ -122,8 +123,7 @@ class InputDbCommands(QueryScreenBase):
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def import_files(self, lists: QueryLists, files: FlatFiles, work: Work) -> None:
         try:
-            with lists.lock:
-                count = lists.import_files(files, work.report, work.cancel)
+            count = lists.import_files(files, work.report, work.cancel)
         except DB_ERRORS as exc:
             self.post_message(ImportFinished(None, str(exc)))
             return

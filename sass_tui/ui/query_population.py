@@ -57,13 +57,12 @@ class PopulationCommands(QueryScreenBase):
             if not name:
                 self.say("Make Population cancelled: no file name given.")
                 return
+            path = self.sass_app.user_path(name)
             work = self.begin_work("Make Population")
             self.say(f"Making the population of {len(ids):,} selected people (Esc cancels)...")
             sources = " OR ".join(f"({q})" for q in self.selected_from) or "selection"
             title = f"Population of {len(ids):,} selected from {sources}"
-            self.make_population(
-                self.lists, tuple(ids), Path(name).expanduser(), title, work, self.target
-            )
+            self.make_population(self.lists, tuple(ids), path, title, work, self.target)
 
         self.ask(
             f"Population of the {len(ids):,} selected people: file name "
@@ -82,27 +81,15 @@ class PopulationCommands(QueryScreenBase):
         work: Work,
         weighted_to: str | None = None,
     ) -> None:
-        from sass_tui.db.population import population_of
         from sass_tui.db.population_files import write_population_files
         from sass_tui.db.progress import Steps
 
         try:
-            with lists.lock:
-                weights = None
-                if weighted_to:
-                    from sass_tui.db.targets import load_target
-                    from sass_tui.ui.target_picker import weighted_words
+            if weighted_to:
+                from sass_tui.ui.target_picker import weighted_words
 
-                    weights = load_target(lists.conn, weighted_to)
-                    title += weighted_words(weighted_to)
-                result = population_of(
-                    lists.conn,
-                    ids=ids,
-                    title=title,
-                    progress=work.report,
-                    cancel=work.cancel,
-                    target=weights,
-                )
+                title += weighted_words(weighted_to)
+            result = lists.population_of(ids, title, work.report, work.cancel, target=weighted_to)
             Steps(cancel=work.cancel, what="making the population").check()  # last chance
             paths = write_population_files(result, target)
         except DB_ERRORS as exc:

@@ -22,7 +22,6 @@ from textual.containers import Horizontal
 from textual.widgets import Footer
 
 from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
-from sass_tui.db.query import demonstration_hint
 from sass_tui.model.text import printable
 from sass_tui.ui.progress import QUERY_BAR_AFTER, Work, WorkBar
 from sass_tui.ui.query_base import WAIT
@@ -256,15 +255,13 @@ class QueryScreen(InputDbCommands, PopulationCommands):
         self, lists: QueryLists, text: str, page_size: int, work: Work, target: str | None = None
     ) -> None:
         try:
-            with lists.lock:
-                count = lists.run(text, work.report, work.cancel)
-                rows = lists.page(QUERY_LIST, 0, page_size)
-                hint = "" if count else demonstration_hint(lists.conn, text) or ""
-                weighted = ""
-                if target:
-                    from sass_tui.ui.target_picker import weighted_count_words
+            count, rows = lists.run_first_page(text, page_size, work.report, work.cancel)
+            hint = "" if count else lists.demonstration_hint(text) or ""
+            weighted = ""
+            if target:
+                from sass_tui.ui.target_picker import weighted_count_words
 
-                    weighted = weighted_count_words(lists, text, target)
+                weighted = weighted_count_words(lists, text, target)
         except DB_ERRORS as exc:
             self.post_message(QueryFinished(error=str(exc)))
             return

@@ -8,14 +8,13 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from platformdirs import user_config_dir
-
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
+from sass_tui.model.paths import config_dir
 
 
 def settings_path() -> Path:
-    return Path(user_config_dir("sass")) / "tui.json"
+    return config_dir() / "tui.json"
 
 
 def load_settings() -> dict[str, object]:

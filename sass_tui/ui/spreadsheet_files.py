@@ -16,7 +16,6 @@ from sass_tui.model.names import (
     GROUPS,
     STRENGTH,
 )
-from sass_tui.model.paths import regular_file, user_path
 from sass_tui.model.popfile import read_population_file
 from sass_tui.ui.spreadsheet_base import (
     AnswerError,
@@ -50,7 +49,7 @@ class FileCommands(SheetScreenBase):
         if self.data_group == STRENGTH and self._strength_data_set(text.strip().lower()):
             return
         # Refused here, before any worker opens it: a FIFO would block it forever.
-        path = regular_file(text.strip())
+        path = self.sass_app.regular_file(text.strip())
         self.say(f"Reading {text.strip()} ...")
         self.read_data_file(path, self.data_group)
 
@@ -147,7 +146,7 @@ class FileCommands(SheetScreenBase):
         if name is None:
             self.say(CANCELLED)
             return
-        path = user_path(name.strip() or default)
+        path = self.sass_app.user_path(name.strip() or default)
         sections = []
         strength = self.session.strength_sheet
         if strength is not None:
@@ -220,7 +219,7 @@ class FileCommands(SheetScreenBase):
         if name is None:
             self.say(CANCELLED)
             return
-        path = user_path(name.strip() or default)
+        path = self.sass_app.user_path(name.strip() or default)
         text = render_hanim(self.figure)  # on the UI thread: see _write_figure
         done = f"Exported the HAnim humanoid to {path}.{not_in_humanoid_note(self.figure)}"
         if await self._may_write(path):

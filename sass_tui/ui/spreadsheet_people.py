@@ -156,13 +156,9 @@ class PeopleCommands(SheetScreenBase):
 
     @work(thread=True, exclusive=True, group="predictor", exit_on_error=False)
     def open_predictor(self, db_path: Path | None) -> None:
-        import sqlite3
-
         try:
             self.post_message(PredictorOpened(open_predictor_at(db_path)))
         except (SassError, OSError) as exc:
-            self.post_message(WorkerSaid(f"Cannot open the prediction model: {exc}", "error"))
-        except sqlite3.Error as exc:
             self.post_message(WorkerSaid(f"Cannot open the prediction model: {exc}", "error"))
 
     def on_predictor_opened(self, event: PredictorOpened) -> None:

@@ -21,11 +21,8 @@ NO_TARGET = "No target (unweighted)"
 
 
 def target_names(lists: QueryLists) -> list[str]:
-    """The stored targets' names (a short read, under the lists' lock)."""
-    from sass_tui.db.targets import list_targets
-
-    with lists.lock:
-        return [t.name for t in list_targets(lists.conn)]
+    """The stored targets' names (a short read)."""
+    return lists.target_names()
 
 
 def weighted_words(name: str | None) -> str:
@@ -88,10 +85,8 @@ def pick_target(screen, lists: QueryLists, current: str | None, chosen: Callable
 
 
 def weighted_count_words(lists: QueryLists, query: str, name: str) -> str:
-    """The query's weighted share of a target (in a worker, under the lists' lock)."""
-    from sass_tui.db.targets import load_target, weighted_count
-
-    counted = weighted_count(lists.conn, query, load_target(lists.conn, name))
+    """The query's weighted share of a target (in a worker)."""
+    counted = lists.weighted_count(query, name)
     return (
         f" Weighted to target {name}: {counted.weighted:,.1f} of {counted.total:,.0f} "
         f"({counted.percent:.1f} %)."

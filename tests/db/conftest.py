@@ -1,10 +1,10 @@
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import pytest
 
-from sass_tui.db.default import create_default_database
 from sass_tui.db.schema import connect
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -12,9 +12,11 @@ DEFAULT_FLAT = ROOT / "datasets" / "db"
 
 
 @pytest.fixture(scope="session")
-def default_db_file(tmp_path_factory) -> Path:
+def default_db_file(shipped_db_file, tmp_path_factory) -> Path:
+    """The default database the database tests share (their queries keep lists
+    in it): a copy of the session's build, which other areas copy too."""
     path = tmp_path_factory.mktemp("db") / "default.db"
-    create_default_database(path)
+    shutil.copy(shipped_db_file, path)
     return path
 
 

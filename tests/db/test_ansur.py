@@ -133,6 +133,7 @@ def test_ellipse_axes_ratio():
     assert a2[0] / b2[0] == pytest.approx(1.5)
 
 
+@pytest.mark.slow
 def test_reimport_does_not_duplicate(ansur_files, tmp_path):
     conn = connect(tmp_path / "x.db", create=True)
     import_ansur(conn, ansur_files[1:])
@@ -143,6 +144,7 @@ def test_reimport_does_not_duplicate(ansur_files, tmp_path):
     assert [r[0] for r in conn.execute("SELECT id_num FROM person ORDER BY id_num LIMIT 5")] == ids
 
 
+@pytest.mark.slow
 def test_missing_column_rejected(ansur_db, ansur_files, tmp_path):
     conn, _, path = ansur_db
     text = ansur_files[1].read_text(encoding="cp1252").splitlines()

@@ -204,6 +204,7 @@ def test_errors_are_one_clear_line(db, capsys, known, message):
     assert "Traceback" not in err
 
 
+@pytest.mark.slow
 def test_a_gender_without_people_says_so(db, capsys):
     conn = connect(db)
     females = [r[0] for r in conn.execute("SELECT id_num FROM person WHERE gender = 'female'")]
@@ -214,6 +215,7 @@ def test_a_gender_without_people_says_so(db, capsys):
     assert "no female people" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_the_fit_is_cached_beside_the_database_and_rebuilt_when_data_change(db):
     conn = connect(db)
     path = cache_path(conn)

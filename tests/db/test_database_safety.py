@@ -1,7 +1,7 @@
-"""The database survives what users and other processes do to it (issue 17,
-"Critical: the database"): `db init` rebuilds in place, a stale journal is
-harmless, the schema is checked on open, a foreign or damaged file is never
-written, and the query lists work while another process imports."""
+"""The database survives what users and other processes do to it: `db init`
+rebuilds in place, a stale journal is harmless, the schema is checked on open,
+a foreign or damaged file is never written, and the query lists work while
+another process imports."""
 
 from __future__ import annotations
 
@@ -188,6 +188,7 @@ def test_a_damaged_database_refuses_writes(db_path, tmp_path):
 # --- db init ------------------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_db_init_needs_force_to_replace_people(db_path, tmp_path, capsys):
     conn = connect(db_path)
     import_flat_files(conn, _flat(tmp_path))
@@ -200,6 +201,7 @@ def test_db_init_needs_force_to_replace_people(db_path, tmp_path, capsys):
     assert _count(db_path) == 6068 + 200
 
 
+@pytest.mark.slow
 def test_db_init_rebuilds_in_place_under_an_open_connection(db_path, tmp_path):
     """No file is renamed over the database: the same inode, and a connection
     opened before the rebuild reads the new database, not a malformed one."""
@@ -217,6 +219,7 @@ def test_db_init_rebuilds_in_place_under_an_open_connection(db_path, tmp_path):
     assert not Path(f"{db_path}-journal").exists()
 
 
+@pytest.mark.slow
 def test_db_init_builds_an_empty_file_in_place(tmp_path):
     path = tmp_path / "empty.db"
     path.touch()
@@ -240,6 +243,7 @@ CHILD = textwrap.dedent(
 )
 
 
+@pytest.mark.slow
 def test_kill_9_mid_import_then_db_init(db_path):
     """A killed import leaves a hot journal: the database reads as before, and
     `db init` rebuilds it whole."""
@@ -293,6 +297,7 @@ def _start_import(path: Path) -> subprocess.Popen:
     return child
 
 
+@pytest.mark.slow
 def test_db_init_while_another_process_imports(db_path):
     child = _start_import(db_path)
     create_default_database(db_path, replace=True)
@@ -314,7 +319,7 @@ def test_db_init_while_another_process_imports(db_path):
 
 def test_lists_work_while_another_process_holds_the_write_lock(db_path):
     lists = QueryLists.open(db_path)
-    lists.conn.execute("PRAGMA busy_timeout = 300")  # a lock would fail fast, not hang
+    lists._conn.execute("PRAGMA busy_timeout = 300")  # a lock would fail fast, not hang
     writer = subprocess.Popen(
         [
             sys.executable,
@@ -347,6 +352,7 @@ def test_lists_work_while_another_process_holds_the_write_lock(db_path):
         lists.close()
 
 
+@pytest.mark.slow
 def test_lists_page_while_another_process_imports(db_path):
     lists = QueryLists.open(db_path)
     child = _start_import(db_path)
@@ -387,6 +393,7 @@ def test_building_reports_progress(tmp_path):
     assert calls[-1][0] == calls[-1][1] == sum(f.stat().st_size for f in shipped_ansur_files())
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("answer, status, kept", [("n\n", 1, 1), ("y\n", 0, 0)])
 def test_db_init_asks_on_a_terminal(db_path, tmp_path, monkeypatch, answer, status, kept):
     conn = connect(db_path)

@@ -1,4 +1,4 @@
-"""Progress and cancel of the long database work (issue 15): every function
+"""Progress and cancel of the long database work: every function
 reports (done, total) and stops on a cancel with nothing written."""
 
 from __future__ import annotations
@@ -44,6 +44,7 @@ def _checked(reports: list[tuple[int, int]]) -> None:
     assert done == sorted(done) and 0 <= done[0] and done[-1] == reports[-1][1]
 
 
+@pytest.mark.slow
 def test_flat_import_reports_lines_and_a_cancel_stores_nothing(default_db, tmp_path):
     files = write_big_flat_files(tmp_path / "big", people=1500)
     before = _state(default_db)
@@ -103,9 +104,9 @@ def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(
         reports: list[tuple[int, int]] = []
         found = lists.run("gender = male", progress=lambda d, t: reports.append((d, t)))
         _checked(reports)
-        (people,) = lists.conn.execute("SELECT count(*) FROM person").fetchone()
+        (people,) = lists._conn.execute("SELECT count(*) FROM person").fetchone()
         assert reports[-1] == (people, people) and len(reports) > 2
-        (male,) = lists.conn.execute(
+        (male,) = lists._conn.execute(
             "SELECT count(*) FROM person WHERE gender = 'male' AND source != 'synthetic'"
         ).fetchone()
         assert found == male == lists.count(QUERY_LIST)

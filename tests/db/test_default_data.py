@@ -121,6 +121,7 @@ def test_cli_query_csv_and_table(default_db_file, capsys):
     assert capsys.readouterr().out.strip().endswith(("people", "person"))
 
 
+@pytest.mark.slow
 def test_cli_db_init_uses_xdg_location(tmp_path, monkeypatch, capsys):
     monkeypatch.delenv("SASS_DB", raising=False)
     monkeypatch.setenv("XDG_DATA_HOME", str(tmp_path))
@@ -153,6 +154,7 @@ def test_bad_query_leaves_database_unchanged(default_db, default_db_file, capsys
     assert row_counts(default_db) == before
 
 
+@pytest.mark.slow
 def test_query_output_into_a_closed_pipe_is_not_an_error(tmp_path):
     """`sass query ... | head -1`: the reader closes early; sass exits quietly."""
     import subprocess

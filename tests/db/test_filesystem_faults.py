@@ -1,7 +1,7 @@
-"""A full file system and a read-only one (issue 17, "Fault tests in the
-suite"): every write is refused with a message that names the file, never a
-traceback; the database is unchanged and passes `PRAGMA integrity_check`; no
-temporary file, journal or half-made database is left behind; reading goes on.
+"""A full file system and a read-only one: every write is refused with a
+message that names the file, never a traceback; the database is unchanged and
+passes `PRAGMA integrity_check`; no temporary file, journal or half-made
+database is left behind; reading goes on.
 
 The file systems are real: a tmpfs mounted for the test, filled to the last
 byte (or to a few pages) or remounted read-only (tests/_tmpfs.py; skipped
@@ -197,6 +197,7 @@ def test_the_library_refuses_a_read_only_database_before_writing(tmpfs_with_db, 
         conn.close()
 
 
+@pytest.mark.slow
 def test_a_first_build_the_disk_cut_short_is_finished_by_the_next_run(
     tmp_path, monkeypatch, capsys
 ):

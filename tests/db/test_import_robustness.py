@@ -1,4 +1,4 @@
-"""Imports refuse what is not a plausible number (issue 17): non-finite and
+"""Imports refuse what is not a plausible number: non-finite and
 absurd values, ids that are not whole or too large, with file:line; UTF-8
 with a byte-order mark is read; duplicate ids name both lines; the ANSUR
 reader streams (memory bounded by a chunk); the database is unchanged after

@@ -60,7 +60,7 @@ def test_every_measure_is_stored_in_canonical_units(default_db, survey):
 
 
 def test_tenth_units_convert(default_db, survey):
-    """weightkg is published in 0.1 kg, interpupillarybreadth in 0.1 mm (issue 11)."""
+    """weightkg is published in 0.1 kg, interpupillarybreadth in 0.1 mm."""
     first = survey[0]
     assert first["weightkg"] == "815" and first["interpupillarybreadth"] == "685"
     assert _stored(default_db, first, "weightkg") == pytest.approx(81.5)

@@ -417,8 +417,8 @@ def target(name: str) -> Target:
     return _BUILT[name]
 
 
-# Crashes found by fuzzing in parsers other work owns (issue 17: ANSUR/flat
-# import robustness).  The suite's fuzz tests let exactly these through until
+# Crashes found by fuzzing in parsers other work owns (the ANSUR and
+# flat-file import robustness).  The suite's fuzz tests let exactly these through until
 # that work lands, so that a new crash still fails them; scripts/fuzz.py counts
 # them as tracebacks all the same.
 KNOWN_ELSEWHERE: dict[str, tuple[type[BaseException], ...]] = {}

@@ -1,4 +1,4 @@
-"""Fuzzing in the suite (issue 17): every parser, a modest budget each.
+"""Fuzzing in the suite: every parser, a modest budget each.
 
 Each input is a mutated seed file or random text (tests/fuzz/fuzz_targets.py);
 the parser must return or raise SassError/OSError, never another exception.
@@ -35,6 +35,7 @@ def check(name: str, value: object) -> str:
         faulthandler.cancel_dump_traceback_later()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(TARGET_MAKERS))
 def test_every_parser_survives_its_fuzz_inputs(name):
     target(name)  # build the seeds (and for queries the database) outside the examples

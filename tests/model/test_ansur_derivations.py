@@ -1,5 +1,5 @@
 """The table of ANSUR II derivations against appendices B and C in
-docs/data-sources.md is what scripts/ansur_derivations.py writes (issue 11),
+docs/data-sources.md is what scripts/ansur_derivations.py writes,
 and the choices it documents are the ones the import makes."""
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
-"""Output files (issue 17 "Output files", issue 11 "no such directory"):
-modes, targets that are not regular files, messages, and killed writes."""
+"""Output files: modes, targets that are not regular files, messages (a
+missing folder is "no such directory"), and killed writes."""
 
 from __future__ import annotations
 
@@ -94,7 +94,7 @@ def test_a_missing_directory_is_named(tmp_path, capsys):
 
 def test_errors_name_the_target_not_the_temporary(tmp_path):
     if os.geteuid() == 0:
-        # chmod does not stop root; a read-only file system does (issue 17)
+        # chmod does not stop root; a read-only file system does
         with mounted_tmpfs(tmp_path / "locked", 64 * 1024) as locked:
             remount_read_only(locked)
             _refused_naming_the_target(locked)

@@ -1,5 +1,5 @@
 """`sass fig --person` and `sass export hanim --person` write a real person's
-figure headless; impossible sizes are refused (issue 11)."""
+figure headless; impossible sizes are refused."""
 
 from __future__ import annotations
 

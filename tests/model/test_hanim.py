@@ -1,4 +1,4 @@
-"""HAnim export (issue 7): structure, sizes, limits, masses, and a real X3D browser."""
+"""HAnim export (ISO/IEC 19774): structure, sizes, limits, masses, and a real X3D browser."""
 
 from __future__ import annotations
 
@@ -312,7 +312,7 @@ def test_view3dscene_parses_without_warnings(male50):
     result = subprocess.run(["tovrmlx3d", str(path)], capture_output=True, text=True, timeout=60)
     assert result.returncode == 0, result.stderr
     # Debian's view3dscene 4.2 predates X3D 4.0's HAnimHumanoid `loa` field,
-    # which issue 11 asks for: that one warning is the viewer's, and only it.
+    # which sass declares (clause 4.8.5): that one warning is the viewer's, and only it.
     known = 'Unknown X3D field name (unhandled X3D XML attribute) "loa" in node "HAnimHumanoid"'
     lines = [line for line in result.stderr.splitlines() if line.strip()]
     assert [line for line in lines if known not in line] == []
@@ -412,7 +412,7 @@ def test_axis_angle_round_trips_every_axis_aligned_rotation():
     assert count == 24
 
 
-# --- issue 11: the x3d package's checks, loa, DEF names ---------------------------
+# --- the x3d package's checks, loa, DEF names ------------------------------------
 
 _CONTAINER = {"Appearance": "appearance", "Material": "material", "Box": "geometry"}
 _CONTAINER["Sphere"] = "geometry"
@@ -581,6 +581,7 @@ def test_sass_export_hanim_notes_girth_lengths_of_another_percentile(tmp_path, c
         assert capsys.readouterr().err == ""
 
 
+@pytest.mark.slow
 def test_the_segment_dimensions_the_humanoid_leaves_out_are_exactly_those_listed():
     # Every girth cell changed by 10 %: the ones in NOT_IN_HUMANOID leave the
     # export as it was (the joints stand at the stature's landmarks; LOA-1

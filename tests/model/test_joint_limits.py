@@ -1,4 +1,4 @@
-"""Joint limits are never an inverted or empty range (issue 11): for every
+"""Joint limits are never an inverted or empty range: for every
 joint, axis and both genders, lower <= upper at every percentile 0.5-99.5,
 in the model, in the .fig and in the HAnim file."""
 
@@ -38,6 +38,7 @@ def test_every_percentile_on_a_fine_grid(gender):
         assert ok.all(), (gender, joint, grid[~ok.all(axis=0)][:3])
 
 
+@pytest.mark.slow
 @settings(max_examples=40, deadline=None)
 @given(gender=st.sampled_from(["male", "female"]), p=PERCENTILES)
 def test_model_fig_and_hanim(gender, p):

@@ -1,10 +1,11 @@
-"""Non-finite and absurd numbers are refused where they enter (issue 17,
-"Values that are not numbers"): population and strength files, the figure's
-strength parameters, the .fig reader and writer, the query language, JSON."""
+"""Non-finite and absurd numbers are refused where they enter:
+population and strength files, the figure's strength parameters, the .fig
+reader and writer, the query language, JSON."""
 
 from __future__ import annotations
 
 import json
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -142,12 +143,11 @@ def test_sass_fig_in_huge_units_is_refused(tmp_path, capsys):
     assert list(tmp_path.iterdir()) == []
 
 
-def test_json_output_refuses_a_stored_infinity(tmp_path, capsys):
-    from sass_tui.db.default import create_default_database
+def test_json_output_refuses_a_stored_infinity(shipped_db_file, tmp_path, capsys):
     from sass_tui.db.schema import connect
 
     db = tmp_path / "s.db"
-    create_default_database(db)
+    shutil.copy(shipped_db_file, db)
     conn = connect(db)
     with conn:
         conn.execute(

@@ -1,5 +1,5 @@
 """Disp. Indv. shows the person's own strength: their experiments in the
-database, at their angles (issue 11; the model side of the strength page)."""
+database, at their angles (the model side of the strength page)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The first screen's numbers in plain floats equal numpy's (issue 16).
+"""The first screen's numbers in plain floats equal numpy's.
 
 The TUI computes the default figure before numpy is imported: population
 files are read into plain floats and the percentile model runs cell by cell.
@@ -99,6 +99,7 @@ finite = st.floats(min_value=-1e6, max_value=1e6, allow_nan=False)
 cells = st.one_of(finite, st.just(0.0), st.just(math.nan), st.sampled_from([1.0, -1.0, 5.0]))
 
 
+@pytest.mark.slow
 @settings(max_examples=500, deadline=None)
 @given(v5=cells, v50=cells, v95=cells, p=st.floats(min_value=0.5, max_value=99.5), value=cells)
 def test_one_cell_either_way_is_numpys(v5, v50, v95, p, value):

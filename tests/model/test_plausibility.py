@@ -1,5 +1,5 @@
 """The reader finds the report's suspected misprints by rule, and refuses
-files of the wrong kind (issue 11)."""
+files of the wrong kind."""
 
 from __future__ import annotations
 

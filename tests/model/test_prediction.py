@@ -97,6 +97,7 @@ def test_the_prediction_is_least_squares_with_its_prediction_interval(values, pr
         assert not estimate.known
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("gender", ["male", "female"])
 def test_90_percent_intervals_cover_85_to_95_percent_of_held_out_people(values, gender):
     rows = _rows(values, gender)

@@ -1,4 +1,4 @@
-"""Session.show_person with the person's own strength (issue 11): shown in place
+"""Session.show_person with the person's own strength: shown in place
 of the population's, or why there is none; Disp. Pop. brings the population's back."""
 
 from __future__ import annotations

@@ -264,7 +264,7 @@ def test_fig_includes_strength_unless_told_not_to(tmp_path, capsys):
     assert not (tmp_path / "no.fig").exists()
 
 
-# --- issue 11: strength answers say what they are --------------------------------
+# --- strength answers say what they are -----------------------------------------
 
 
 def test_every_output_of_the_shipped_test_data_says_so(tmp_path, capsys, data, male):

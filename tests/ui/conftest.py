@@ -1,12 +1,37 @@
+"""The UI tests' apps: `app_at(size, db=True)` runs a SassApp at a terminal
+size on a private copy of the shipped database; `new_app(...)` makes one for
+`snap_compare`, which runs it itself."""
+
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import shutil
+from collections.abc import AsyncIterator, Callable
+from pathlib import Path
 
 import pytest
+from textual.pilot import Pilot
 from textual.widgets import Input
 
-from sass_tui.db.default import create_default_database
+from sass_tui.model.figure import Figure
+from sass_tui.ui.app import SassApp
+
+
+@pytest.fixture(autouse=True, scope="session")
+def quick_idle_check():
+    """The Pilot waits after every key press and pause until the app is idle:
+    it sleeps SLEEP_GRANULARITY (20 ms) at a time until a sleep passes with
+    under 1 ms of CPU.  A key costs ~4 ms of CPU here, so the UI tests spent
+    most of their time asleep: 50 keys typed into a prompt took 4.8 s, 2.2 s
+    with 5 ms sleeps (load 11 on the 2 cores).  Still the same test of
+    idleness, 1 ms of CPU in a sleep.  Textual's private module: setattr
+    raises if the name moves, failing every UI test at once."""
+    import textual._wait
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(textual._wait, "SLEEP_GRANULARITY", 1 / 200)
+        yield
 
 
 @pytest.fixture(autouse=True)
@@ -27,18 +52,43 @@ def drive():
     return asyncio.run
 
 
-@pytest.fixture(scope="session")
-def shipped_db_file(tmp_path_factory):
-    """The database `sass` builds from the shipped data (synthetic people),
-    built once per test process."""
-    path = tmp_path_factory.mktemp("db") / "sass.db"
-    create_default_database(path)
-    return path
-
-
 @pytest.fixture
 def db(shipped_db_file, tmp_path):
     """A private copy: Input DB and the lists must not leak between tests."""
     path = tmp_path / "sass.db"
     shutil.copy(shipped_db_file, path)
     return path
+
+
+@pytest.fixture
+def new_app(request) -> Callable[..., SassApp]:
+    """`new_app(figure=None, db=False, strength_path=None)`: a SassApp as `sass`
+    makes it.  `db=True`: on this test's private copy of the shipped database
+    (the `db` fixture, copied only when asked for); a path: that database;
+    False: the session's default database ($SASS_DB, tests/conftest.py), for
+    tests that never open the query screen."""
+
+    def make(
+        figure: Figure | None = None,
+        *,
+        db: bool | Path = False,
+        strength_path: Path | None = None,
+    ) -> SassApp:
+        db_path = request.getfixturevalue("db") if db is True else (db or None)
+        return SassApp(figure, db_path=db_path, strength_path=strength_path)
+
+    return make
+
+
+@pytest.fixture
+def app_at(new_app):
+    """`async with app_at((80, 24), db=True) as (app, pilot):` the app running
+    headless at that terminal size (`new_app`'s arguments after the size)."""
+
+    @contextlib.asynccontextmanager
+    async def run(size: tuple[int, int], *args, **kwargs) -> AsyncIterator[tuple[SassApp, Pilot]]:
+        app = new_app(*args, **kwargs)
+        async with app.run_test(size=size) as pilot:
+            yield app, pilot
+
+    return run

@@ -3,24 +3,25 @@ person named `\\x1b[2J\\x1b]0;pwned\\x07` cleared the screen when listed)."""
 
 from __future__ import annotations
 
-from test_query_screen import SAMPLE, build_sample_query, choose, open_query_screen, settle
+import pytest
+from _screen import settle
+from test_query_screen import SAMPLE, build_sample_query, choose, open_query_screen
 
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_screen import ListSheet
 
 HOSTILE = "\x1b[2J\x1b]0;pwned\x07"
 
 
-def test_a_hostile_name_is_shown_escaped_in_the_list_and_messages(drive, db):
+@pytest.mark.slow
+def test_a_hostile_name_is_shown_escaped_in_the_list_and_messages(drive, app_at, db):
     with connect(db) as conn:
         first = run_query(conn, SAMPLE).ids()[0]
         conn.execute("UPDATE person SET name = ? WHERE id_num = ?", (HOSTILE, first))
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(120, 40)) as pilot:
+        async with app_at((120, 40), db=True) as (app, pilot):
             await open_query_screen(pilot)
             await pilot.press("d")
             await pilot.click(ListSheet, offset=(20, 6), button=3)

@@ -6,37 +6,28 @@ message line; a bug in it is not swallowed."""
 from __future__ import annotations
 
 import pytest
+from _screen import message, wait_until
 from textual.widgets import Input
 
 from sass_tui.model.figfile import read_fig
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.widgets import DataSheet, MessageLine
 from sass_tui.ui.widgets.message_line import CANCELLED
 
 SIZE = (100, 34)
 
 
-def message(app) -> str:
-    return str(app.screen.query_one("#message").render())
-
-
 async def until(pilot, condition) -> None:
-    for _ in range(200):
-        if condition():
-            return
-        await pilot.pause()
-    raise AssertionError("the condition never held")
+    await wait_until(pilot, condition, lambda: f"never held; the line says {message(pilot.app)!r}")
 
 
-def test_create_figure_answered_key_by_key_writes_the_figure(drive, tmp_path, monkeypatch):
+def test_create_figure_answered_key_by_key_writes_the_figure(app_at, drive, tmp_path, monkeypatch):
     # f (Create Figure), the name, Enter, n (no strength), Enter: no letter
     # of the name runs a command (b: See figure, u: Undo), and the file is a
     # figure without strength.
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await pilot.pause()
             assert app.session.strength_sheet is not None  # so the strength question comes
             await pilot.press("f", *"bu.fig", "enter", "n", "enter")
@@ -50,12 +41,11 @@ def test_create_figure_answered_key_by_key_writes_the_figure(drive, tmp_path, mo
     assert "strength variables" not in (tmp_path / "bu.fig").read_text()
 
 
-def test_escape_and_a_refused_answer_end_the_questions(drive, tmp_path, monkeypatch):
+def test_escape_and_a_refused_answer_end_the_questions(app_at, drive, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await pilot.pause()
             await pilot.press("f")
             await until(pilot, lambda: "Figure file name" in message(app))
@@ -72,14 +62,13 @@ def test_escape_and_a_refused_answer_end_the_questions(drive, tmp_path, monkeypa
     assert not (tmp_path / "x.fig").exists()
 
 
-def test_answers_given_before_the_next_question_are_its_own(drive):
+def test_answers_given_before_the_next_question_are_its_own(app_at, drive):
     # Two Enters handled before the coroutine asks its second question: the
     # second answer waits for it, in order.
     answers = []
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await pilot.pause()
             screen = app.spreadsheet
 
@@ -99,13 +88,12 @@ def test_answers_given_before_the_next_question_are_its_own(drive):
     assert answers == ["one", "two"]
 
 
-def test_a_bug_in_the_questions_is_raised_not_swallowed(drive):
+def test_a_bug_in_the_questions_is_raised_not_swallowed(app_at, drive):
     class Bug(Exception):
         pass
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await pilot.pause()
 
             async def broken():

@@ -5,22 +5,19 @@ from __future__ import annotations
 
 import json
 
+import pytest
+from _screen import paste, settle
 from textual.widgets import DataTable
 
 from sass_tui.db.default import open_database
 from sass_tui.db.fit import load_family
 from sass_tui.db.values import load_values
 from sass_tui.model.figfile import read_fig
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.family_screen import FamilyBuilt, FamilyScreen
 
 
-async def settle(pilot) -> None:
-    await pilot.app.workers.wait_for_complete()
-    await pilot.pause()
-
-
-def test_the_family_table_equals_load_family(db, drive, tmp_path):
+@pytest.mark.slow
+def test_the_family_table_equals_load_family(db, drive, app_at, tmp_path):
     conn = open_database(db)
     try:
         expected = load_family(conn, "male", ["stature", "mass"], 0.9)
@@ -28,8 +25,7 @@ def test_the_family_table_equals_load_family(db, drive, tmp_path):
         conn.close()
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37), db=True) as (app, pilot):
             await pilot.press("y")
             assert isinstance(app.screen, FamilyScreen)
             await pilot.press("enter")  # gender: male
@@ -44,7 +40,8 @@ def test_the_family_table_equals_load_family(db, drive, tmp_path):
                 assert row[1:3] == [f"{manikin.values[f]:.1f}" for f in expected.measures]
                 assert manikin.nearest.name in row[3]
             await pilot.press("w")
-            await pilot.press(*str(tmp_path / "fam"), "enter")
+            await paste(pilot, str(tmp_path / "fam"))
+            await pilot.press("enter")
             written = json.loads((tmp_path / "fam" / "family.json").read_text())
             assert len(written["manikins"]) == len(expected.manikins)
             assert read_fig(tmp_path / "fam" / f"male_{expected.manikins[0].name}.fig")
@@ -54,10 +51,9 @@ def test_the_family_table_equals_load_family(db, drive, tmp_path):
     drive(scenario())
 
 
-def test_a_wrong_measure_is_said(db, drive):
+def test_a_wrong_measure_is_said(db, drive, app_at):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37), db=True) as (app, pilot):
             await pilot.press("y", "enter", *"stature,nosuch", "enter")
             kind, text = app.screen.message_line.history[-1]
             assert kind == "error" and "nosuch" in text
@@ -65,7 +61,10 @@ def test_a_wrong_measure_is_said(db, drive):
     drive(scenario())
 
 
-def test_w_writes_the_family_it_offered_even_if_another_arrives_meanwhile(db, drive, tmp_path):
+@pytest.mark.slow
+def test_w_writes_the_family_it_offered_even_if_another_arrives_meanwhile(
+    db, drive, app_at, tmp_path
+):
     """`w` offers the family shown; a family built meanwhile (a worker started
     by `b` finishing while the directory is asked) does not take its place."""
     conn = open_database(db)
@@ -76,24 +75,25 @@ def test_w_writes_the_family_it_offered_even_if_another_arrives_meanwhile(db, dr
         conn.close()
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37), db=True) as (app, pilot):
             await pilot.press("y", "enter", *"stature,mass", "enter", *"90", "enter")
             await settle(pilot)
             await pilot.press("w")
             assert "[family_male]" in str(app.screen.query_one("#message").render())
             app.screen.post_message(FamilyBuilt(female, list(people[:, 0]), list(people[:, 1])))
             await pilot.pause()
-            await pilot.press(*str(tmp_path / "fam"), "enter")
+            await paste(pilot, str(tmp_path / "fam"))
+            await pilot.press("enter")
             names = sorted(p.name for p in (tmp_path / "fam").glob("*.fig"))
             assert names and all(name.startswith("male_") for name in names), names
 
     drive(scenario())
 
 
-def test_family_screen_snapshot(db, snap_compare):
+@pytest.mark.slow
+def test_family_screen_snapshot(db, snap_compare, new_app):
     async def run_before(pilot):
         await pilot.press("y", "enter", *"stature,mass", "enter", *"90", "enter")
         await settle(pilot)
 
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=(100, 37))
+    assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=(100, 37))

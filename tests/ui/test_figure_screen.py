@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+from _screen import wait_until
 from textual_canvas import Canvas
 
 from sass_tui.model.figure import Figure
@@ -32,19 +33,18 @@ def colour_rows(app, colour) -> list[int]:
 
 @pytest.mark.parametrize("size", [(80, 24), (120, 40)])
 @pytest.mark.parametrize("gender, p", [("male", 95), ("female", 5)])
-def test_figure_view_snapshot(snap_compare, gender, p, size):
-    assert snap_compare(SassApp(percentile_figure(gender, p)), press=["b"], terminal_size=size)
+def test_figure_view_snapshot(snap_compare, new_app, gender, p, size):
+    assert snap_compare(new_app(percentile_figure(gender, p)), press=["b"], terminal_size=size)
 
 
-def test_figure_view_snapshot_with_overlay(snap_compare):
-    app = SassApp(percentile_figure("female", 5))
+def test_figure_view_snapshot_with_overlay(snap_compare, new_app):
+    app = new_app(percentile_figure("female", 5))
     assert snap_compare(app, press=["b", "o"], terminal_size=(120, 40))
 
 
-def test_b_opens_the_figure_and_escape_goes_back(drive):
+def test_b_opens_the_figure_and_escape_goes_back(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30)) as (app, pilot):
             await pilot.press("b")
             await pilot.pause()
             assert isinstance(app.screen, FigureScreen)
@@ -57,12 +57,11 @@ def test_b_opens_the_figure_and_escape_goes_back(drive):
     drive(scenario())
 
 
-def test_an_edit_is_drawn_when_the_screen_is_shown_again(drive):
+def test_an_edit_is_drawn_when_the_screen_is_shown_again(drive, app_at):
     """Stature 50th -> 99th on the spreadsheet: the figure stands taller."""
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30)) as (app, pilot):
             await pilot.press("b")
             await pilot.pause()
             before = app.screen.query_one(FigureView).outlines[0].height
@@ -81,10 +80,9 @@ def test_an_edit_is_drawn_when_the_screen_is_shown_again(drive):
     drive(scenario())
 
 
-def test_o_cycles_the_population_overlay(drive):
+def test_o_cycles_the_population_overlay(drive, app_at):
     async def scenario():
-        app = SassApp(percentile_figure("male", 95))
-        async with app.run_test(size=(120, 40)) as pilot:
+        async with app_at((120, 40), percentile_figure("male", 95)) as (app, pilot):
             await pilot.press("b", "o")
             await pilot.pause()
             view = app.screen.query_one(FigureView)
@@ -117,14 +115,13 @@ def panel_rows(app, colour) -> list[int]:
     ]
 
 
-def test_the_spreadsheet_with_the_figure_panel_snapshot(snap_compare):
-    assert snap_compare(SassApp(percentile_figure("male", 95)), terminal_size=(120, 40))
+def test_the_spreadsheet_with_the_figure_panel_snapshot(snap_compare, new_app):
+    assert snap_compare(new_app(percentile_figure("male", 95)), terminal_size=(120, 40))
 
 
-def test_no_figure_panel_below_120_columns(drive):
+def test_no_figure_panel_below_120_columns(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(119, 40)) as pilot:
+        async with app_at((119, 40)) as (app, pilot):
             await pilot.pause()
             assert app.spreadsheet.figure_panel is None
             await pilot.resize_terminal(120, 40)
@@ -137,22 +134,21 @@ def test_no_figure_panel_below_120_columns(drive):
     drive(scenario())
 
 
-def test_quitting_on_the_first_screen_before_the_panel_is_drawn(drive, monkeypatch):
+def test_quitting_on_the_first_screen_before_the_panel_is_drawn(drive, app_at, monkeypatch):
     """The panel adds its canvas one frame after the first screen (issue 16):
     an app closing by then (q pressed at once) ends cleanly, not with a
     MountError."""
     monkeypatch.setattr(SassApp, "first_screen_drawn", lambda app: app.exit())
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(120, 40)) as pilot:
+        async with app_at((120, 40)) as (app, pilot):
             await pilot.pause()
         assert app.return_code == 0
 
     drive(scenario())
 
 
-def test_the_panel_is_outlined_once_at_start_and_when_it_comes_back(drive, monkeypatch):
+def test_the_panel_is_outlined_once_at_start_and_when_it_comes_back(drive, app_at, monkeypatch):
     """Issue 16 (first screen): the figure is outlined once when the app starts,
     not again for each resize or the first screen resume; a panel hidden by a
     narrow terminal draws the edits made meanwhile when it shows again."""
@@ -168,9 +164,9 @@ def test_the_panel_is_outlined_once_at_start_and_when_it_comes_back(drive, monke
     monkeypatch.setattr(figure_screen, "figure_outline", counted)
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(120, 40)) as pilot:
-            await pilot.pause()
+        async with app_at((120, 40)) as (app, pilot):
+            # The panel draws a frame after the first screen (two refreshes later).
+            await wait_until(pilot, lambda: outlined, "the figure was never outlined")
             assert outlined == ["male figure"]
             await pilot.resize_terminal(130, 40)
             await pilot.pause()
@@ -180,7 +176,7 @@ def test_the_panel_is_outlined_once_at_start_and_when_it_comes_back(drive, monke
             app.session.set_stature_percentile(99)
             app.spreadsheet.refresh_screen()
             await pilot.resize_terminal(120, 40)
-            await pilot.pause()
+            await wait_until(pilot, lambda: len(outlined) > 1, "the edit was never drawn")
             panel = app.spreadsheet.figure_panel
             assert panel.display and len(outlined) == 2
             assert panel.outlines == figure_screen.session_outlines(app.session, None)
@@ -188,13 +184,16 @@ def test_the_panel_is_outlined_once_at_start_and_when_it_comes_back(drive, monke
     drive(scenario())
 
 
-def test_every_edit_redraws_the_figure_panel(drive):
+@pytest.mark.slow
+def test_every_edit_redraws_the_figure_panel(drive, app_at):
     """Typed on the spreadsheet: the panel draws each edit as it is made."""
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(120, 40)) as pilot:
-            await pilot.pause()
+        async with app_at((120, 40)) as (app, pilot):
+            # The panel draws a frame after the first screen (two refreshes later).
+            await wait_until(
+                pilot, lambda: app.spreadsheet.figure_panel.outlines, "the panel never drew"
+            )
             panel = app.spreadsheet.figure_panel
             assert panel is not None and panel.display
             start = panel.outlines[0]
@@ -226,15 +225,17 @@ def test_every_edit_redraws_the_figure_panel(drive):
     drive(scenario())
 
 
-def test_the_panel_keeps_the_overlay_chosen_on_the_figure_screen(drive):
+def test_the_panel_keeps_the_overlay_chosen_on_the_figure_screen(drive, app_at):
     async def scenario():
-        app = SassApp(percentile_figure("male", 95))
-        async with app.run_test(size=(120, 40)) as pilot:
-            await pilot.pause()
+        async with app_at((120, 40), percentile_figure("male", 95)) as (app, pilot):
+            # The panel draws a frame after the first screen (two refreshes later).
+            await wait_until(
+                pilot, lambda: app.spreadsheet.figure_panel.outlines, "the panel never drew"
+            )
             panel = app.spreadsheet.figure_panel
             assert len(panel.outlines) == 1
             await pilot.press("b", "o", "escape")
-            await pilot.pause()
+            await wait_until(pilot, lambda: len(panel.outlines) > 1, "no overlay drawn")
             assert [o.label for o in panel.outlines] == ["male figure", "population 50th"]
             assert panel_rows(app, OVERLAY)
             # Kept when the figure screen opens again, and still drawn after an edit.
@@ -250,10 +251,9 @@ def test_the_panel_keeps_the_overlay_chosen_on_the_figure_screen(drive):
     drive(scenario())
 
 
-def test_g_switches_the_gender_on_the_figure_screen_and_redraws(drive):
+def test_g_switches_the_gender_on_the_figure_screen_and_redraws(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30)) as (app, pilot):
             await pilot.press("b")
             await pilot.pause()
             view = app.screen.query_one(FigureView)

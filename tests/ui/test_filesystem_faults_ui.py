@@ -9,10 +9,10 @@ import hashlib
 from pathlib import Path
 
 import pytest
+from _screen import message, settle
 from _tmpfs import fill, remount_read_only
 from textual import events
 
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_screen import ListSheet, QueryScreen
 
 SIZE = (120, 40)
@@ -31,15 +31,6 @@ def one_person(tmp_path) -> list[Path]:
     return [person, *empty]
 
 
-def message(app) -> str:
-    return str(app.screen.query_one("#message").render())
-
-
-async def settle(pilot) -> None:
-    await pilot.app.workers.wait_for_complete()
-    await pilot.pause()
-
-
 async def answer(pilot, text: str) -> None:
     pilot.app.screen.query_one("#answer").post_message(events.Paste(text))
     await pilot.pause()
@@ -54,16 +45,16 @@ async def input_db(pilot, files: list[Path]) -> None:
     await settle(pilot)
 
 
+@pytest.mark.slow
 def test_on_a_read_only_file_system_the_tui_opens_lists_and_refuses_input_db(
-    drive, tmpfs_with_db, one_person
+    drive, app_at, tmpfs_with_db, one_person
 ):
     mnt, db = tmpfs_with_db
     remount_read_only(mnt)
     digest = hashlib.sha256(db.read_bytes()).hexdigest()
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=db) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             screen = app.screen
@@ -86,8 +77,9 @@ def test_on_a_read_only_file_system_the_tui_opens_lists_and_refuses_input_db(
     assert sorted(p.name for p in mnt.iterdir()) == ["sass.db"]
 
 
+@pytest.mark.slow
 def test_on_a_full_file_system_input_db_and_create_figure_name_the_file(
-    drive, tmpfs_with_db, one_person
+    drive, app_at, tmpfs_with_db, one_person
 ):
     mnt, db = tmpfs_with_db
     fill(mnt)
@@ -95,8 +87,7 @@ def test_on_a_full_file_system_input_db_and_create_figure_name_the_file(
     before = sorted(p.name for p in mnt.iterdir())
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=db) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             await input_db(pilot, one_person)
@@ -105,8 +96,7 @@ def test_on_a_full_file_system_input_db_and_create_figure_name_the_file(
             assert f"cannot write {db}: the disk is full" in text
 
     async def create_figure():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=db) as (app, pilot):
             await pilot.press("f")
             await answer(pilot, str(mnt / "x.fig"))
             await pilot.press("enter")  # include strength: yes
@@ -119,7 +109,10 @@ def test_on_a_full_file_system_input_db_and_create_figure_name_the_file(
     assert sorted(p.name for p in mnt.iterdir()) == before
 
 
-def test_the_query_screen_finishes_a_default_database_build_cut_short(drive, tmp_path, monkeypatch):
+@pytest.mark.slow
+def test_the_query_screen_finishes_a_default_database_build_cut_short(
+    drive, app_at, tmp_path, monkeypatch
+):
     """What a disk that filled during the first build leaves: the schema and
     nobody in it.  The Query screen built the default database only when the
     file was missing, and listed nobody for good."""
@@ -130,8 +123,7 @@ def test_the_query_screen_finishes_a_default_database_build_cut_short(drive, tmp
     monkeypatch.setenv("SASS_DB", str(path))
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             screen = app.screen

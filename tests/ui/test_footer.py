@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_screen import QueryScreen
 
 
@@ -22,10 +21,9 @@ async def shown_footer(pilot, wanted: str = "palette") -> str:
     return footer_text(pilot.app)
 
 
-def test_the_spreadsheet_footer_at_80_columns(drive):
+def test_the_spreadsheet_footer_at_80_columns(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(80, 24)) as pilot:
+        async with app_at((80, 24)) as (app, pilot):
             text = await shown_footer(pilot)
             for item in ("n Next", "p Prev", "f Figure", "d Query", "u Undo", "w Warn"):
                 assert item in text
@@ -38,10 +36,9 @@ def test_the_spreadsheet_footer_at_80_columns(drive):
     drive(scenario())
 
 
-def test_the_query_screen_footer_at_80_columns(drive, db):
+def test_the_query_screen_footer_at_80_columns(drive, app_at, db):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(80, 24)) as pilot:
+        async with app_at((80, 24), db=True) as (app, pilot):
             await pilot.press("d")
             await app.workers.wait_for_complete()
             assert isinstance(app.screen, QueryScreen)

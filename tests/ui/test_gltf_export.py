@@ -5,26 +5,17 @@ back with pygltflib."""
 from __future__ import annotations
 
 import pytest
+from _screen import message, settle
 from textual import events
 
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.schema import connect
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_builder import QueryPopup
 from sass_tui.ui.query_screen import COMPLETE, QueryScreen
 
 pygltflib = pytest.importorskip("pygltflib")
 
 SIZE = (120, 40)
-
-
-def message(app) -> str:
-    return str(app.screen.query_one("#message").render())
-
-
-async def settle(pilot) -> None:
-    await pilot.app.workers.wait_for_complete()
-    await pilot.pause()
 
 
 async def answer(pilot, text: str) -> None:
@@ -38,12 +29,11 @@ def read_back(path):
     return gltf.scenes[0].extras, [gltf.nodes[j].name for j in gltf.skins[0].joints]
 
 
-def test_spreadsheet_exports_the_figure_shown(drive, db, tmp_path):
+def test_spreadsheet_exports_the_figure_shown(app_at, drive, db, tmp_path):
     out = tmp_path / "body.glb"
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=db) as (app, pilot):
             await pilot.press("G")
             assert "glTF file name (.glb, or .gltf + .bin) [MALE50.glb]:" in message(app)
             await answer(pilot, str(out))
@@ -73,12 +63,11 @@ def test_spreadsheet_exports_the_figure_shown(drive, db, tmp_path):
     drive(scenario())
 
 
-def test_query_screen_exports_the_highlighted_person(drive, db, tmp_path):
+def test_query_screen_exports_the_highlighted_person(app_at, drive, db, tmp_path):
     out = tmp_path / "person.gltf"
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=db) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             screen = app.screen

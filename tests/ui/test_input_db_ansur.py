@@ -7,13 +7,14 @@ from __future__ import annotations
 
 import gzip
 
-from test_query_screen import message, open_query_screen, settle
+import pytest
+from _screen import message, settle
+from test_query_screen import open_query_screen
 from test_work_progress import HeldWork, _answer, _state
 
 from sass_tui.db.ansur import looks_like_ansur
 from sass_tui.db.default import shipped_ansur_files
 from sass_tui.db.schema import connect
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.progress import WorkBar
 
 SIZE = (120, 40)
@@ -46,13 +47,12 @@ def test_the_header_tells_a_survey_file_from_a_person_file(tmp_path):
     assert not looks_like_ansur(tmp_path / "missing.csv")
 
 
-def test_input_db_imports_an_ansur_file_under_the_label_asked_for(drive, db, tmp_path):
+def test_input_db_imports_an_ansur_file_under_the_label_asked_for(drive, app_at, db, tmp_path):
     survey = tmp_path / "fieldstudy.csv"
     ids = _small_survey(survey, 30)
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await open_query_screen(pilot)
             await pilot.press("i")
             await _answer(pilot, survey)
@@ -70,14 +70,14 @@ def test_input_db_imports_an_ansur_file_under_the_label_asked_for(drive, db, tmp
     assert [row[0] for row in stored] == [f"fieldstudy F {i}" for i in ids]
 
 
-def test_escape_rolls_an_ansur_import_back(drive, db, tmp_path, monkeypatch):
+@pytest.mark.slow
+def test_escape_rolls_an_ansur_import_back(drive, app_at, db, tmp_path, monkeypatch):
     male = next(p for p in shipped_ansur_files() if "FEMALE" not in p.name)
     before = _state(db)
     held = HeldWork(monkeypatch, "ANSUR import")
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             bar = screen.query_one(WorkBar)
             await pilot.press("i")

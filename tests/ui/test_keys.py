@@ -6,21 +6,18 @@ from __future__ import annotations
 import os
 
 import pytest
+from _screen import message, wait_until
 from textual import events
 
 from sass_tui.cli import main
 from sass_tui.model.names import GIRTH, STRENGTH, row_index
-from sass_tui.ui.app import SassApp, run_app
+from sass_tui.ui.app import run_app
 from sass_tui.ui.query_screen import QueryScreen
 from sass_tui.ui.spreadsheet import SpreadsheetScreen
 from sass_tui.ui.widgets import DataSheet, GlobalPanel
 
 LARGE = (120, 40)
 ARM = row_index(GIRTH, "right_upper_arm")
-
-
-def message(app) -> str:
-    return str(app.screen.query_one("#message").render())
 
 
 def answer(app) -> str:
@@ -44,10 +41,9 @@ async def choose_cell(pilot, row: int, column: int) -> None:
 
 
 @pytest.mark.parametrize("how", ["burst", "press", "paste"])
-def test_a_value_typed_fast_is_the_prompts_not_input_datas(drive, how):
+def test_a_value_typed_fast_is_the_prompts_not_input_datas(drive, app_at, how):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await choose_cell(pilot, ARM, 4)
             if how == "burst":
                 burst(app, "14in")
@@ -66,14 +62,13 @@ def test_a_value_typed_fast_is_the_prompts_not_input_datas(drive, how):
     drive(scenario())
 
 
-def test_enter_typed_ahead_with_the_value_submits_it(drive):
+def test_enter_typed_ahead_with_the_value_submits_it(drive, app_at):
     """`14in` and Enter in one burst: the Enter that reached the sheet before
     the prompt had the focus submits the answer (it was dropped: the submit
     coroutine was never awaited)."""
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await choose_cell(pilot, ARM, 4)
             burst(app, "14in")
             app.post_message(events.Key("enter", "\r"))
@@ -86,10 +81,9 @@ def test_enter_typed_ahead_with_the_value_submits_it(drive):
 
 
 @pytest.mark.parametrize("how", ["burst", "paste"])
-def test_an_angle_in_radians_does_not_open_the_query_screen(drive, how):
+def test_an_angle_in_radians_does_not_open_the_query_screen(drive, app_at, how):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37)) as (app, pilot):
             await pilot.press("s")
             await pilot.pause()
             assert app.data_group == STRENGTH
@@ -107,10 +101,10 @@ def test_an_angle_in_radians_does_not_open_the_query_screen(drive, how):
     drive(scenario())
 
 
-def test_female_typed_into_the_gender_cell_does_not_create_a_figure(drive):
+@pytest.mark.slow
+def test_female_typed_into_the_gender_cell_does_not_create_a_figure(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             panel = app.query_one(GlobalPanel)
             panel.select("gender")
             panel.focus()
@@ -128,10 +122,10 @@ def test_female_typed_into_the_gender_cell_does_not_create_a_figure(drive):
     drive(scenario())
 
 
-def test_a_group_letter_then_digits_switch_group_first(drive):
+@pytest.mark.slow
+def test_a_group_letter_then_digits_switch_group_first(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             burst(app, "m12")
             await pilot.pause()
             assert app.data_group == "center_of_mass"
@@ -141,13 +135,12 @@ def test_a_group_letter_then_digits_switch_group_first(drive):
     drive(scenario())
 
 
-def test_a_click_elsewhere_while_asking_leaves_the_keys_with_the_prompt(drive):
+def test_a_click_elsewhere_while_asking_leaves_the_keys_with_the_prompt(drive, app_at):
     """Issue 17: `9`, a click on a data cell, Down spun at 100 % CPU and
     Enter/Escape no longer reached the prompt."""
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await pilot.press("9")
             assert app.message_line.prompting
             await choose_cell(pilot, 3, 0)
@@ -164,12 +157,11 @@ def test_a_click_elsewhere_while_asking_leaves_the_keys_with_the_prompt(drive):
 
 
 @pytest.mark.parametrize("width", [40, 30, 12])
-def test_a_narrow_terminal_at_start_and_on_resize(drive, width):
+def test_a_narrow_terminal_at_start_and_on_resize(drive, app_at, width):
     """Issue 17: 40 columns or fewer crashed with a negative field width."""
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(width, 24)) as pilot:
+        async with app_at((width, 24)) as (app, pilot):
             await pilot.pause()
             assert "Population" in str(app.query_one(GlobalPanel).render())[:20] or width < 20
             await pilot.resize_terminal(width + 60, 24)
@@ -183,10 +175,9 @@ def test_a_narrow_terminal_at_start_and_on_resize(drive, width):
     drive(scenario())
 
 
-def test_an_unknown_user_at_a_file_prompt_is_a_message(drive):
+def test_an_unknown_user_at_a_file_prompt_is_a_message(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             for command in ("i", "f", "e"):
                 await pilot.press(command)
                 app.post_message(events.Paste("~nosuchuser/x"))
@@ -205,13 +196,12 @@ def test_an_unknown_user_in_db_is_refused_before_the_tui_starts(capsys):
     assert "cannot expand ~nosuchuser" in capsys.readouterr().err
 
 
-def test_a_fifo_given_to_input_data_is_refused_and_quit_exits(drive, tmp_path):
+def test_a_fifo_given_to_input_data_is_refused_and_quit_exits(drive, app_at, tmp_path):
     fifo = tmp_path / "girth.fifo"
     os.mkfifo(fifo)
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await pilot.press("i")
             app.post_message(events.Paste(str(fifo)))
             await pilot.pause()
@@ -234,7 +224,9 @@ def test_run_app_exits_non_zero_after_a_crash(monkeypatch):
     assert run_app(headless=True) != 0
 
 
-def test_the_write_worker_writes_the_figure_as_it_was_when_asked(drive, tmp_path, monkeypatch):
+def test_the_write_worker_writes_the_figure_as_it_was_when_asked(
+    drive, app_at, tmp_path, monkeypatch
+):
     """Issue 10: the worker wrote whatever the figure held when the thread got
     to it; an edit made meanwhile went into the file.  Every file step taken
     off the UI thread here waits until the test has edited the figure."""
@@ -260,17 +252,12 @@ def test_the_write_worker_writes_the_figure_as_it_was_when_asked(drive, tmp_path
     out = tmp_path / "asked.fig"
 
     async def scenario():
-        app = SassApp(strength_path=tmp_path / "no-strength.dat")
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE, strength_path=tmp_path / "no-strength.dat") as (app, pilot):
             await pilot.press("f")
             app.post_message(events.Paste(str(out)))
             await pilot.pause()
             await pilot.press("enter")
-            for _ in range(300):  # until the worker is at work
-                if working.is_set():
-                    break
-                await pilot.pause(0.01)
-            assert working.is_set()
+            await wait_until(pilot, working.is_set, "the worker never started writing")
             app.session.set_value(GIRTH, 0, 0, 10.0)  # the user edits while it writes
             edited.set()
             await app.workers.wait_for_complete()

@@ -9,7 +9,6 @@ import numpy as np
 import pytest
 
 from sass_tui.model.names import GROUPS
-from sass_tui.ui.app import SassApp
 
 KEYS = [
     *"njmgspciuwdvxeorbal",
@@ -34,14 +33,14 @@ KEYS = [
 ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("seed", [1988, 2026])
-def test_random_keys_never_crash(drive, db, tmp_path, monkeypatch, seed):
+def test_random_keys_never_crash(drive, app_at, db, tmp_path, monkeypatch, seed):
     monkeypatch.chdir(tmp_path)  # figures and exports typed at random land here
     rnd = random.Random(seed)
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37), db=True) as (app, pilot):
             for _ in range(150):
                 await pilot.press(rnd.choice(KEYS))
                 if rnd.random() < 0.05:

@@ -6,7 +6,6 @@ from __future__ import annotations
 from test_query_screen import open_query_screen
 from textual import events
 
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.widgets import DataSheet
 
 SIZE = (100, 30)
@@ -16,10 +15,9 @@ def prompt_text(app) -> str:
     return str(app.spreadsheet.message_line.query_one("#message").render())
 
 
-def test_a_click_chooses_a_cell_and_a_second_click_edits_it(drive):
+def test_a_click_chooses_a_cell_and_a_second_click_edits_it(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             sheet = app.screen.query_one("#sheet", DataSheet)
             top = sheet.content_region.y - sheet.region.y  # the border
             left = sheet.content_region.x - sheet.region.x
@@ -36,10 +34,9 @@ def test_a_click_chooses_a_cell_and_a_second_click_edits_it(drive):
     drive(scenario())
 
 
-def test_a_double_click_edits_another_cell_at_once(drive):
+def test_a_double_click_edits_another_cell_at_once(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             sheet = app.screen.query_one("#sheet", DataSheet)
             sheet.focus()
             top = sheet.content_region.y - sheet.region.y
@@ -54,10 +51,9 @@ def test_a_double_click_edits_another_cell_at_once(drive):
     drive(scenario())
 
 
-def test_the_wheel_pages_the_data_section(drive):
+def test_the_wheel_pages_the_data_section(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             sheet = app.screen.query_one("#sheet", DataSheet)
             assert sheet.pages > 1 and sheet.page == 0
             region = sheet.region
@@ -94,12 +90,11 @@ async def wheel(pilot, selector: str, event_class) -> None:
     await pilot._post_mouse_events([event_class], selector, offset=(4, 4))
 
 
-def test_the_wheel_pages_the_query_list(drive, db):
+def test_the_wheel_pages_the_query_list(drive, app_at, db):
     from sass_tui.ui.query_screen import ListSheet
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(120, 40)) as pilot:
+        async with app_at((120, 40), db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             screen.start_query("stature > 0")
             await app.workers.wait_for_complete()

@@ -3,18 +3,14 @@ became "inf cm" in a cell, and Create Figure then wrote `botheadx = infcm;`)."""
 
 from __future__ import annotations
 
+from _screen import message
+
 from sass_tui.model.names import GIRTH
-from sass_tui.ui.app import SassApp
 
 
-def message(app) -> str:
-    return str(app.query_one("#message").render())
-
-
-def test_a_cell_refuses_1e400_and_keeps_its_value(drive):
+def test_a_cell_refuses_1e400_and_keeps_its_value(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(80, 24)) as pilot:
+        async with app_at((80, 24)) as (app, pilot):
             await pilot.press(*"1e400", "enter")
             assert "not a usable number" in message(app)
             assert app.query_one("#message").has_class("-error")

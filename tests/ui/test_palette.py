@@ -3,12 +3,13 @@ of the screen shown."""
 
 from __future__ import annotations
 
+import pytest
+from _screen import settle
 from test_query_screen import open_query_screen
 from textual.command import CommandPalette
 from textual.widgets import DataTable
 
 from sass_tui.model.figure import Figure
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.figure_screen import FigureScreen
 from sass_tui.ui.figure_view import FigureView
 from sass_tui.ui.palette import SCREENS, HelpScreen, ScreenCommands, class_commands, key_name
@@ -29,41 +30,38 @@ def asks_for_the_figure_file(app) -> bool:
 async def choose_in_palette(pilot, text: str) -> None:
     """ctrl+p, type `text`, Enter on the best hit."""
     await pilot.press("ctrl+p", *text)
-    await pilot.pause(0.3)
+    await settle(pilot)  # the palette searches in a worker
     await pilot.press("enter")
-    await pilot.pause(0.2)
+    await settle(pilot)
 
 
-def test_the_palette_finds_create_figure_and_runs_it(drive):
+def test_the_palette_finds_create_figure_and_runs_it(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30)) as (app, pilot):
             await pilot.press("ctrl+p")
             await pilot.pause()
             assert isinstance(app.screen, CommandPalette)
             await pilot.press(*"create fig")
-            await pilot.pause(0.3)
+            await settle(pilot)  # the palette searches in a worker
             await pilot.press("enter")
-            await pilot.pause(0.2)
+            await settle(pilot)
             assert asks_for_the_figure_file(app)
 
     drive(scenario())
 
 
-def test_the_palette_runs_see_figure_a_command_not_in_the_menu(drive):
+def test_the_palette_runs_see_figure_a_command_not_in_the_menu(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30)) as (app, pilot):
             await choose_in_palette(pilot, "see figure")
             assert isinstance(app.screen, FigureScreen)
 
     drive(scenario())
 
 
-def test_f1_and_question_mark_list_every_binding_of_the_screen(drive):
+def test_f1_and_question_mark_list_every_binding_of_the_screen(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30)) as (app, pilot):
             sheet = app.spreadsheet
             every_key = {key_name(k) for k in sheet._bindings.key_to_bindings}
             for opener in ("f1", "question_mark"):
@@ -82,10 +80,9 @@ def test_f1_and_question_mark_list_every_binding_of_the_screen(drive):
     drive(scenario())
 
 
-def test_help_on_the_figure_screen_lists_its_own_keys(drive):
+def test_help_on_the_figure_screen_lists_its_own_keys(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30)) as (app, pilot):
             await pilot.press("b", "f1")
             await pilot.pause()
             names = {name for _, name, _ in help_rows(app)}
@@ -95,13 +92,12 @@ def test_help_on_the_figure_screen_lists_its_own_keys(drive):
     drive(scenario())
 
 
-def test_help_wraps_what_each_key_does_at_80_columns(drive):
+def test_help_wraps_what_each_key_does_at_80_columns(drive, app_at):
     """F1 at 80x24: every column fits the box (no sideways scrolling) and a
     long "What it does" wraps onto more lines instead of being cut off."""
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(80, 24)) as pilot:
+        async with app_at((80, 24)) as (app, pilot):
             await pilot.press("f1")
             await pilot.pause()
             table = app.screen.query_one(DataTable)
@@ -115,16 +111,16 @@ def test_help_wraps_what_each_key_does_at_80_columns(drive):
     drive(scenario())
 
 
-def test_palette_snapshot(snap_compare):
+def test_palette_snapshot(snap_compare, new_app):
     async def type_query(pilot):
         await pilot.press("ctrl+p", *"create fig")
-        await pilot.pause(0.3)
+        await settle(pilot)  # the palette searches in a worker
 
-    assert snap_compare(SassApp(), run_before=type_query, terminal_size=(80, 24))
+    assert snap_compare(new_app(), run_before=type_query, terminal_size=(80, 24))
 
 
-def test_help_screen_snapshot(snap_compare):
-    assert snap_compare(SassApp(), press=["f1"], terminal_size=(80, 24))
+def test_help_screen_snapshot(snap_compare, new_app):
+    assert snap_compare(new_app(), press=["f1"], terminal_size=(80, 24))
 
 
 def palette_entries(app) -> list[tuple[str, str]]:
@@ -135,10 +131,9 @@ def palette_entries(app) -> list[tuple[str, str]]:
     return [(name, help_text) for name, help_text, _ in provider._commands()]
 
 
-def test_the_palette_lists_every_screens_commands_with_their_screen(drive):
+def test_the_palette_lists_every_screens_commands_with_their_screen(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30)) as (app, pilot):
             await pilot.press("ctrl+p")
             await pilot.pause()
             entries = palette_entries(app)
@@ -165,12 +160,12 @@ def test_the_palette_lists_every_screens_commands_with_their_screen(drive):
     drive(scenario())
 
 
-def test_the_palette_runs_a_query_screen_command_from_the_spreadsheet(drive, db):
+@pytest.mark.slow
+def test_the_palette_runs_a_query_screen_command_from_the_spreadsheet(drive, app_at, db):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30), db=True) as (app, pilot):
             await pilot.press("ctrl+p", *"input db")
-            await pilot.pause(0.3)
+            await settle(pilot)  # the palette searches in a worker
             await pilot.press("enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
@@ -188,10 +183,10 @@ def test_the_palette_runs_a_query_screen_command_from_the_spreadsheet(drive, db)
     drive(scenario())
 
 
-def test_the_palette_opens_the_figure_screen_for_its_overlay(drive):
+@pytest.mark.slow
+def test_the_palette_opens_the_figure_screen_for_its_overlay(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30)) as (app, pilot):
             await choose_in_palette(pilot, "overlay")
             assert isinstance(app.screen, FigureScreen)
             assert app.figure_overlay == 50
@@ -200,10 +195,9 @@ def test_the_palette_opens_the_figure_screen_for_its_overlay(drive):
     drive(scenario())
 
 
-def test_a_screen_that_cannot_open_from_here_says_how_to_get_there(drive, db):
+def test_a_screen_that_cannot_open_from_here_says_how_to_get_there(drive, app_at, db):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30), db=True) as (app, pilot):
             # A person is shown: Query opens from the population only.
             app.session.show_person(Figure.default("female"), -1)
             app.spreadsheet.refresh_screen()
@@ -216,12 +210,12 @@ def test_a_screen_that_cannot_open_from_here_says_how_to_get_there(drive, db):
     drive(scenario())
 
 
-def test_on_the_query_builder_pop_up_the_palette_lists_its_own_commands(drive, db):
+@pytest.mark.slow
+def test_on_the_query_builder_pop_up_the_palette_lists_its_own_commands(drive, app_at, db):
     from sass_tui.ui.query_builder import QueryBuilderScreen
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(120, 40)) as pilot:
+        async with app_at((120, 40), db=True) as (app, pilot):
             await open_query_screen(pilot)
             await pilot.press("d", "b")
             await pilot.pause()

@@ -4,19 +4,14 @@ driven by keys: the query screen selects a person, the spreadsheet shows them.""
 from __future__ import annotations
 
 import pytest
+from _screen import settle
 
 from sass_tui.db.individual import fetch_individual, strength_measurements
 from sass_tui.db.schema import connect
 from sass_tui.model.strength import MOTION_NAMES
 from sass_tui.model.units import convert
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_screen import QueryScreen
 from sass_tui.ui.widgets import MessageLine
-
-
-async def settle(pilot) -> None:
-    await pilot.app.workers.wait_for_complete()
-    await pilot.pause()
 
 
 async def show_first_person_of(pilot, query: str) -> None:
@@ -38,10 +33,10 @@ async def show_first_person_of(pilot, query: str) -> None:
     await pilot.pause()
 
 
-def test_the_strength_page_shows_the_persons_own_experiments(db, drive):
+@pytest.mark.slow
+def test_the_strength_page_shows_the_persons_own_experiments(db, drive, app_at):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37), db=True) as (app, pilot):
             population_title = app.session.strength_sheet.title
             assert "TEST DATA" in population_title
             await show_first_person_of(pilot, "source = synthetic")
@@ -78,10 +73,10 @@ def test_the_strength_page_shows_the_persons_own_experiments(db, drive):
     drive(scenario())
 
 
-def test_a_person_without_experiments_is_said_so(db, drive):
+@pytest.mark.slow
+def test_a_person_without_experiments_is_said_so(db, drive, app_at):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37), db=True) as (app, pilot):
             await show_first_person_of(pilot, "source = ansur2")
             assert app.session.strength_sheet is None
             page = app.strength_page

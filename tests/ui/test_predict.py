@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from _screen import wait_until
 
 from sass_tui.db.default import open_database
 from sass_tui.db.predict import open_predictor
 from sass_tui.model.figfile import read_fig
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH
 from sass_tui.model.prediction import split_known
-from sass_tui.ui.app import SassApp
 
 KNOWN = "stature=180 cm, mass=85 kg"
 
@@ -27,11 +27,11 @@ def expected(db):
 
 
 async def _wait_prompt(app, pilot):
-    for _ in range(200):
-        await pilot.pause(0.02)
-        if app.message_line.prompting:
-            return
-    raise AssertionError(f"no prompt: {app.message_line.history[-1]}")
+    await wait_until(
+        pilot,
+        lambda: app.message_line.prompting,
+        lambda: f"no prompt: {app.message_line.history[-1]}",
+    )
 
 
 async def _predict(app, pilot, text=KNOWN):
@@ -42,12 +42,14 @@ async def _predict(app, pilot, text=KNOWN):
     await pilot.pause()
 
 
-def test_predict_by_keys_shows_the_predicted_figure(db, drive, expected, tmp_path, monkeypatch):
+@pytest.mark.slow
+def test_predict_by_keys_shows_the_predicted_figure(
+    db, drive, app_at, expected, tmp_path, monkeypatch
+):
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(80, 40)) as pilot:
+        async with app_at((80, 40), db=True) as (app, pilot):
             population = app.session.population
             before = population.groups[GIRTH].values.copy()
             await _predict(app, pilot)
@@ -94,10 +96,10 @@ def test_predict_by_keys_shows_the_predicted_figure(db, drive, expected, tmp_pat
         ("stature", "expected NAME=VALUE"),
     ],
 )
-def test_predict_errors_on_the_message_line(db, drive, typed, said):
+@pytest.mark.slow
+def test_predict_errors_on_the_message_line(db, drive, app_at, typed, said):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(80, 40)) as pilot:
+        async with app_at((80, 40), db=True) as (app, pilot):
             population = app.session.population
             await _predict(app, pilot, typed)
             kind, text = app.message_line.history[-1]
@@ -107,15 +109,18 @@ def test_predict_errors_on_the_message_line(db, drive, typed, said):
     drive(scenario())
 
 
-def test_names_complete_as_typed(db, drive):
+@pytest.mark.slow
+def test_names_complete_as_typed(db, drive, app_at):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(80, 40)) as pilot:
+        async with app_at((80, 40), db=True) as (app, pilot):
             await pilot.press("k")
             await _wait_prompt(app, pilot)
             await pilot.press(*"stature=180 cm, ma")
-            await pilot.pause(0.1)
             answer = app.message_line.answer
+            # The suggester answers in a worker of its own.
+            await wait_until(
+                pilot, lambda: answer._suggestion.startswith("stature=180 cm, ma"), "no suggestion"
+            )
             assert answer._suggestion == "stature=180 cm, mass"
             await pilot.press("right")  # accepts the suggestion
             assert answer.value == "stature=180 cm, mass"
@@ -123,20 +128,21 @@ def test_names_complete_as_typed(db, drive):
     drive(scenario())
 
 
-def test_predicted_figure_snapshot(db, snap_compare):
+@pytest.mark.slow
+def test_predicted_figure_snapshot(db, snap_compare, new_app):
     """80x24: the label in the population slot, the Interval command, a cell's interval."""
 
     async def run_before(pilot):
         await _predict(pilot.app, pilot)
         await pilot.press("down", "a")
 
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=(80, 24))
+    assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=(80, 24))
 
 
-def test_a_gender_without_people_is_said(db, drive):
+@pytest.mark.slow
+def test_a_gender_without_people_is_said(db, drive, app_at):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(80, 40)) as pilot:
+        async with app_at((80, 40), db=True) as (app, pilot):
             await pilot.press("k")
             await _wait_prompt(app, pilot)
             await pilot.press("escape")

@@ -4,13 +4,14 @@ a direct count over the survey's CSV files."""
 
 from __future__ import annotations
 
+import pytest
+from _screen import settle
 from test_query_measurements import csv_rows
-from test_query_screen import choose, settle
+from test_query_screen import choose
 
 from sass_tui.db.fit import fit_test
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.schema import connect
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.fit_screen import FitScreen
 from sass_tui.ui.query_screen import QueryScreen
 
@@ -18,7 +19,8 @@ SIZE = (120, 40)
 LIMITS = "measure.sittingheight < 95 cm AND stature > 160"  # as the menus build it
 
 
-def test_fit_test_of_the_query_over_ansur2(drive, db):
+@pytest.mark.slow
+def test_fit_test_of_the_query_over_ansur2(drive, app_at, db):
     fit = {"male": 0, "female": 0}
     people = {"male": 0, "female": 0}
     for row in csv_rows():
@@ -32,8 +34,7 @@ def test_fit_test_of_the_query_over_ansur2(drive, db):
         assert expected.genders[gender].n == people[gender]
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             await pilot.press("d", "b")
@@ -75,8 +76,9 @@ async def open_fit_screen(pilot) -> None:
     await settle(pilot)
 
 
-def test_fit_screen_snapshot(snap_compare, db):
-    assert snap_compare(SassApp(db_path=db), run_before=open_fit_screen, terminal_size=(80, 24))
+@pytest.mark.slow
+def test_fit_screen_snapshot(snap_compare, new_app, db):
+    assert snap_compare(new_app(db=True), run_before=open_fit_screen, terminal_size=(80, 24))
 
 
 def _direct_counts(edges, values) -> list[int]:
@@ -89,7 +91,8 @@ def _direct_counts(edges, values) -> list[int]:
     ]
 
 
-def test_fit_screen_histogram_counts_the_population_and_draws_the_limits(drive, db):
+@pytest.mark.slow
+def test_fit_screen_histogram_counts_the_population_and_draws_the_limits(drive, app_at, db):
     """The bars plotted are a direct count over the survey's CSV (mm -> cm);
     `l` moves to the next limited measurement."""
     survey = {
@@ -101,8 +104,7 @@ def test_fit_screen_histogram_counts_the_population_and_draws_the_limits(drive, 
             survey[row["gender"].lower()][name].append(float(row[name]) / 10)
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await open_fit_screen(pilot)
             screen = app.screen
             assert isinstance(screen, FitScreen)
@@ -126,18 +128,18 @@ def test_fit_screen_histogram_counts_the_population_and_draws_the_limits(drive, 
     drive(scenario())
 
 
-def test_fit_screen_histogram_snapshot(snap_compare, db):
-    assert snap_compare(SassApp(db_path=db), run_before=open_fit_screen, terminal_size=(100, 30))
+def test_fit_screen_histogram_snapshot(snap_compare, new_app, db):
+    assert snap_compare(new_app(db=True), run_before=open_fit_screen, terminal_size=(100, 30))
 
 
-def test_the_fit_screen_says_when_it_is_done_and_f1_lists_its_keys(drive, db):
+@pytest.mark.slow
+def test_the_fit_screen_says_when_it_is_done_and_f1_lists_its_keys(drive, app_at, db):
     """A SassScreen like the others: its message line says the test is done
     and which keys apply; F1 lists them; Escape closes the help, then returns."""
     from sass_tui.ui.palette import HelpScreen
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await open_fit_screen(pilot)
             screen = app.screen
             assert isinstance(screen, FitScreen)

@@ -8,9 +8,9 @@ import csv
 
 import pytest
 from _paths import ANSUR
-from test_query_screen import choose, message, popup_labels, settle, summary
+from _screen import message, settle
+from test_query_screen import choose, popup_labels, summary
 
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_builder import MenuSearch, QueryPopup
 from sass_tui.ui.query_screen import ListSheet
 
@@ -27,7 +27,8 @@ def csv_rows():
                 yield {key.lower(): value for key, value in row.items()}
 
 
-def test_measurement_menu_filters_and_builds_a_query_with_quoted_text(drive, db):
+@pytest.mark.slow
+def test_measurement_menu_filters_and_builds_a_query_with_quoted_text(drive, app_at, db):
     # Independent count: sitting height is in mm in the survey, 95 cm = 950 mm.
     expected = sum(
         1
@@ -36,8 +37,7 @@ def test_measurement_menu_filters_and_builds_a_query_with_quoted_text(drive, db)
     )
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             await pilot.press("d", "b")
@@ -69,10 +69,10 @@ def test_measurement_menu_filters_and_builds_a_query_with_quoted_text(drive, db)
     drive(scenario())
 
 
-def test_escape_in_the_measurement_menu_is_previous_menu(drive, db):
+@pytest.mark.slow
+def test_escape_in_the_measurement_menu_is_previous_menu(drive, app_at, db):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             await pilot.press("d", "b")

@@ -6,14 +6,15 @@ refused with the count."""
 from __future__ import annotations
 
 import numpy as np
-from test_query_screen import choose, message, settle
+import pytest
+from _screen import message, paste, settle
+from test_query_screen import choose
 
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.population_files import cmass_path
 from sass_tui.db.schema import connect
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH
 from sass_tui.model.popfile import read_population_file
-from sass_tui.ui.app import SassApp
 
 SIZE = (120, 40)
 
@@ -54,19 +55,20 @@ def medians_of(db, ids: list[int]) -> dict[str, np.ndarray]:
     }
 
 
-def test_make_population_writes_files_of_the_medians_and_loads_them(drive, db, tmp_path):
+@pytest.mark.slow
+def test_make_population_writes_files_of_the_medians_and_loads_them(drive, app_at, db, tmp_path):
     ids = young_women(db)
     medians = medians_of(db, ids)
     target = tmp_path / "young.dat"
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await query_young_women(pilot)
             assert f"{len(ids):,} people found" in message(app)
             await pilot.press("a")  # Select All: the selected list is what Make Population uses
             await pilot.press("m")
-            await pilot.press(*str(target), "enter")
+            await paste(pilot, str(target))
+            await pilot.press("enter")
             await settle(pilot)
             said = message(app)
             assert f"{len(ids):,} women" in said
@@ -95,7 +97,8 @@ def test_make_population_writes_files_of_the_medians_and_loads_them(drive, db, t
         assert np.isfinite(data.stats("female")).all()  # every cell filled
 
 
-def test_make_population_refuses_a_gender_with_fewer_than_20(drive, db, tmp_path):
+@pytest.mark.slow
+def test_make_population_refuses_a_gender_with_fewer_than_20(drive, app_at, db, tmp_path):
     with connect(db) as conn:
         (count,) = conn.execute(
             "SELECT count(*) FROM person WHERE gender = 'female' AND stature > 180"
@@ -104,8 +107,7 @@ def test_make_population_refuses_a_gender_with_fewer_than_20(drive, db, tmp_path
     target = tmp_path / "tall.dat"
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             await pilot.press("d", "b")
@@ -116,7 +118,9 @@ def test_make_population_refuses_a_gender_with_fewer_than_20(drive, db, tmp_path
             await pilot.press(*"180", "enter")
             await choose(pilot, "Done")
             await settle(pilot)
-            await pilot.press("a", "m", *str(target), "enter")
+            await pilot.press("a", "m")
+            await paste(pilot, str(target))
+            await pilot.press("enter")
             await settle(pilot)
             word = "woman" if count == 1 else "women"
             assert f"only {count} {word}" in message(app)
@@ -125,7 +129,8 @@ def test_make_population_refuses_a_gender_with_fewer_than_20(drive, db, tmp_path
     drive(scenario())
 
 
-def test_make_population_uses_the_selected_list_not_the_last_query(drive, db, tmp_path):
+@pytest.mark.slow
+def test_make_population_uses_the_selected_list_not_the_last_query(drive, app_at, db, tmp_path):
     """25 young women picked one by one, then another query run: the population
     is those 25 women's, whose medians the test computes from the database."""
     young = young_women(db)
@@ -135,8 +140,7 @@ def test_make_population_uses_the_selected_list_not_the_last_query(drive, db, tm
     target = tmp_path / "picked.dat"
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await query_young_women(pilot)
             await pilot.press(*["s"] * len(chosen))  # Select One, 25 times
             screen = app.screen
@@ -145,7 +149,8 @@ def test_make_population_uses_the_selected_list_not_the_last_query(drive, db, tm
             await settle(pilot)
             await pilot.press("m")
             assert "25 selected people" in message(app)
-            await pilot.press(*str(target), "enter")
+            await paste(pilot, str(target))
+            await pilot.press("enter")
             await settle(pilot)
             said = message(app)
             assert "25 women" in said, said
@@ -162,10 +167,10 @@ def test_make_population_uses_the_selected_list_not_the_last_query(drive, db, tm
     assert "male" not in data.sections
 
 
-def test_make_population_with_nobody_selected_says_so(drive, db, tmp_path):
+@pytest.mark.slow
+def test_make_population_with_nobody_selected_says_so(drive, app_at, db, tmp_path):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await query_young_women(pilot)
             await pilot.press("m")
             assert "selected list, which is empty" in message(app)

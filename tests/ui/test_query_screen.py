@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from _screen import message, settle
 from textual import events
 from textual.widgets import OptionList
 
@@ -13,7 +14,6 @@ from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect
 from sass_tui.model.figfile import read_fig
 from sass_tui.model.names import GIRTH, row_index
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_builder import VALUE_PROMPT, QueryBuilderScreen, QueryPopup
 from sass_tui.ui.query_screen import (
     BUILD_PROMPT,
@@ -34,10 +34,6 @@ SAMPLE = (
 )
 
 
-def message(app) -> str:
-    return str(app.screen.query_one("#message").render())
-
-
 def summary(app) -> str:
     return str(app.screen.query_one(SummaryPanel).render())
 
@@ -51,11 +47,6 @@ def command_slots(app) -> list[str]:
     """Labels of the first two visible buttons of figure 6's second column."""
     column = app.query(".command-column").last()
     return [str(b.label) for b in column.query(MenuItem) if b.display][:2]
-
-
-async def settle(pilot) -> None:
-    await pilot.app.workers.wait_for_complete()
-    await pilot.pause()
 
 
 async def choose(pilot, label: str) -> None:
@@ -109,13 +100,15 @@ async def build_sample_query(pilot, title_log: list[str]) -> None:
     await type_answer(pilot, "synthetic")
 
 
-def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, db, tmp_path):
+@pytest.mark.slow
+def test_sample_query_through_the_menus_then_display_and_write_a_person(
+    drive, app_at, db, tmp_path
+):
     with connect(db) as conn:
         expected = run_query(conn, SAMPLE).count()
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await open_query_screen(pilot)
             assert "Query List" in summary(app) and "Exit Query" in str(
                 app.screen.query_one("#command-exit_query").label
@@ -227,10 +220,10 @@ def test_sample_query_through_the_menus_then_display_and_write_a_person(drive, d
     drive(scenario())
 
 
-def test_previous_menu_and_abort(drive, db):
+@pytest.mark.slow
+def test_previous_menu_and_abort(drive, app_at, db):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
             await choose(pilot, "Anthropometric Groups")
@@ -273,13 +266,13 @@ def test_previous_menu_and_abort(drive, db):
     drive(scenario())
 
 
-def test_query_text_edited_before_done_then_re_executed(drive, db):
+@pytest.mark.slow
+def test_query_text_edited_before_done_then_re_executed(drive, app_at, db):
     with connect(db) as conn:
         expected = run_query(conn, "gender = female AND stature > 165 cm").count()
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
             await choose(pilot, "Global Information")
@@ -307,10 +300,10 @@ def test_query_text_edited_before_done_then_re_executed(drive, db):
     drive(scenario())
 
 
-def test_constraint_that_is_not_a_number(drive, db):
+@pytest.mark.slow
+def test_constraint_that_is_not_a_number(drive, app_at, db):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
             await choose(pilot, "Global Information")
@@ -329,10 +322,9 @@ def test_constraint_that_is_not_a_number(drive, db):
     drive(scenario())
 
 
-def test_paging_delete_and_busy_while_a_query_runs(drive, db):
+def test_paging_delete_and_busy_while_a_query_runs(drive, app_at, db):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             screen.start_query("stature > 0")
             assert message(app) == WAIT
@@ -349,14 +341,15 @@ def test_paging_delete_and_busy_while_a_query_runs(drive, db):
             assert sheet.rows[0]["name"] == second
             assert f"Total Data in Query List: {total - 1:,}" in summary(app)
             # While the database is busy, list commands answer at once instead of waiting.
-            with screen.lists.lock:
+            with screen.lists.exclusive():
                 await pilot.press("n")
                 assert message(app) == WAIT
 
     drive(scenario())
 
 
-def test_input_db_one_file_at_a_time(drive, db, tmp_path):
+@pytest.mark.slow
+def test_input_db_one_file_at_a_time(drive, app_at, db, tmp_path):
     from sass_tui.model import datasets
 
     source = datasets.directory() / "db"
@@ -385,8 +378,7 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
         )
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
 
             async def answer(text):
@@ -417,7 +409,7 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
             assert "Input DB failed, the database is unchanged" in message(app)
             assert "girth.db:1" in message(app)
             assert (
-                screen.lists.conn.execute(
+                screen.lists._conn.execute(
                     "SELECT count(*) FROM person WHERE id_num = 99901"
                 ).fetchone()[0]
                 == 0
@@ -436,14 +428,13 @@ def test_input_db_one_file_at_a_time(drive, db, tmp_path):
     drive(scenario())
 
 
-def test_builder_is_a_modal_screen_that_owns_its_keys(drive, db):
+def test_builder_is_a_modal_screen_that_owns_its_keys(drive, app_at, db):
     """While the pop-up builder is up, its screen has the keys: a query-screen
     command key (l: Display Selected List, n: Next Page) does nothing to the
     query screen below; the builder's result comes back when it closes."""
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
             assert isinstance(app.screen, QueryBuilderScreen)
@@ -457,13 +448,12 @@ def test_builder_is_a_modal_screen_that_owns_its_keys(drive, db):
     drive(scenario())
 
 
-def test_enters_in_a_burst_on_abort_close_the_builder_once(drive, db):
+def test_enters_in_a_burst_on_abort_close_the_builder_once(drive, app_at, db):
     """Enter typed several times at once on Abort: the builder closes once,
     the query screen stays (the extra Enters used to pop it, then crash)."""
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
             await pilot.press(*["down"] * popup_labels(app).index("Abort"))
@@ -476,13 +466,12 @@ def test_enters_in_a_burst_on_abort_close_the_builder_once(drive, db):
     drive(scenario())
 
 
-def test_enters_in_a_burst_in_the_more_menu_choose_once(drive, db):
+def test_enters_in_a_burst_in_the_more_menu_choose_once(drive, app_at, db):
     """Enter typed several times at once in the More Menu: one choice (Next),
     the spreadsheet stays (the extra Enters popped it, then crashed)."""
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             screen.start_query("stature > 0")
             await settle(pilot)

@@ -4,19 +4,21 @@ SQLite, driven by key presses."""
 
 from __future__ import annotations
 
-from test_query_screen import SIZE, choose, message, open_query_screen, settle, summary
+import pytest
+from _screen import message, settle
+from test_query_screen import SIZE, choose, open_query_screen, summary
 
 from sass_tui.db import accelerator
 from sass_tui.db.lists import QUERY_LIST
 from sass_tui.db.query import compile_query
 from sass_tui.db.schema import connect
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_screen import COMPLETE
 
 QUERY = "gender = female AND stature > 165 cm"
 
 
-def test_query_db_list_comes_from_the_column_copy(drive, db, monkeypatch, tmp_path):
+@pytest.mark.slow
+def test_query_db_list_comes_from_the_column_copy(drive, app_at, db, monkeypatch, tmp_path):
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)  # the copy answers on any size
     monkeypatch.setattr(accelerator, "BACKGROUND", False)
     monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
@@ -41,8 +43,7 @@ def test_query_db_list_comes_from_the_column_copy(drive, db, monkeypatch, tmp_pa
     assert expected
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             await pilot.press("d", "b")
             await choose(pilot, "Global Information")

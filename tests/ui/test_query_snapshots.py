@@ -5,9 +5,8 @@ Update with `pytest tests/ui/test_query_snapshots.py --snapshot-update`."""
 from __future__ import annotations
 
 import pytest
-from test_query_screen import SAMPLE, choose, settle
-
-from sass_tui.ui.app import SassApp
+from _screen import settle
+from test_query_screen import SAMPLE, choose
 
 SIZE = (100, 37)
 
@@ -18,7 +17,7 @@ async def open_builder(pilot):
     await pilot.press("d", "b")
 
 
-def test_query_screen_with_results(snap_compare, db):
+def test_query_screen_with_results(snap_compare, new_app, db):
     async def run_before(pilot):
         await pilot.press("d")
         await settle(pilot)
@@ -26,7 +25,7 @@ def test_query_screen_with_results(snap_compare, db):
         await settle(pilot)
         await pilot.press("down", "s")
 
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
+    assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=SIZE)
 
 
 # The menus of figure 13's sequence, each reached by the choices before it.
@@ -50,26 +49,29 @@ MENU_PATHS = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("menu", sorted(MENU_PATHS))
-def test_popup_menu(snap_compare, db, menu):
+def test_popup_menu(snap_compare, new_app, db, menu):
     async def run_before(pilot):
         await open_builder(pilot)
         for label in MENU_PATHS[menu]:
             await choose(pilot, label)
 
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
+    assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=SIZE)
 
 
-def test_measurement_menu_filtered(snap_compare, db):
+@pytest.mark.slow
+def test_measurement_menu_filtered(snap_compare, new_app, db):
     async def run_before(pilot):
         await open_builder(pilot)
         await choose(pilot, "Measurements")
         await pilot.press(*"sitting")
 
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
+    assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=SIZE)
 
 
-def test_individual_displayed(snap_compare, db):
+@pytest.mark.slow
+def test_individual_displayed(snap_compare, new_app, db):
     async def run_before(pilot):
         await pilot.press("d")
         await settle(pilot)
@@ -77,10 +79,10 @@ def test_individual_displayed(snap_compare, db):
         await settle(pilot)
         await pilot.press("s", "e", "v")
 
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
+    assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=SIZE)
 
 
-def test_more_menu(snap_compare, db):
+def test_more_menu(snap_compare, new_app, db):
     async def run_before(pilot):
         await pilot.press("d")
         await settle(pilot)
@@ -88,4 +90,4 @@ def test_more_menu(snap_compare, db):
         await settle(pilot)
         await pilot.press("a", "e", "v", "x")
 
-    assert snap_compare(SassApp(db_path=db), run_before=run_before, terminal_size=SIZE)
+    assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=SIZE)

@@ -5,11 +5,11 @@ person shown is titled as one."""
 
 from __future__ import annotations
 
-from test_query_screen import message, settle
+import pytest
+from _screen import message, settle
 
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.query_screen import ListSheet, QueryScreen
 from sass_tui.ui.widgets import GlobalPanel, MessageLine
 
@@ -30,7 +30,8 @@ async def typed_query(pilot, text: str) -> None:
     await settle(pilot)
 
 
-def test_at_80_columns_the_list_shows_age_and_branch(drive, db):
+@pytest.mark.slow
+def test_at_80_columns_the_list_shows_age_and_branch(app_at, drive, db):
     with connect(db) as conn:
         first = run_query(conn, "branch = 'Combat Arms' AND age > 40").page(0, 1)[0]
         (branch,) = conn.execute(
@@ -38,8 +39,7 @@ def test_at_80_columns_the_list_shows_age_and_branch(drive, db):
         ).fetchone()
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(80, 30)) as pilot:
+        async with app_at((80, 30), db=db) as (app, pilot):
             await typed_query(pilot, "branch = 'Combat Arms' AND age > 40")
             sheet = app.screen.query_one(ListSheet)
             assert sheet.rows[0]["name"] == first["name"]
@@ -52,7 +52,8 @@ def test_at_80_columns_the_list_shows_age_and_branch(drive, db):
     drive(scenario())
 
 
-def test_a_strength_query_finding_no_real_person_shows_the_query_that_would(drive, db):
+@pytest.mark.slow
+def test_a_strength_query_finding_no_real_person_shows_the_query_that_would(app_at, drive, db):
     text = "strength.elbow_flexion.max > 20 ft-lb"
     reach = f"({text}) AND source = synthetic"
     with connect(db) as conn:
@@ -61,8 +62,7 @@ def test_a_strength_query_finding_no_real_person_shows_the_query_that_would(driv
     assert found > 0
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(120, 40)) as pilot:
+        async with app_at((120, 40), db=db) as (app, pilot):
             await typed_query(pilot, text)
             said = message(app)
             assert "No data satisfied the query." in said
@@ -77,15 +77,15 @@ def test_a_strength_query_finding_no_real_person_shows_the_query_that_would(driv
     drive(scenario())
 
 
-def test_make_population_of_real_women_then_create_figure(drive, db, tmp_path):
+@pytest.mark.slow
+def test_make_population_of_real_women_then_create_figure(app_at, drive, db, tmp_path):
     """The selected real women make a population whose every cell has a value:
     Create Figure writes it (it refused a population with 999 cells)."""
     target = tmp_path / "young.dat"
     figure = tmp_path / "young.fig"
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(120, 40)) as pilot:
+        async with app_at((120, 40), db=db) as (app, pilot):
             await typed_query(pilot, "gender = female AND age < 25")
             await pilot.press("a", "m", *str(target), "enter")  # Select All, Make Population
             await settle(pilot)
@@ -111,13 +111,13 @@ def test_make_population_of_real_women_then_create_figure(drive, db, tmp_path):
     assert target.with_name("young-cmass.dat").is_file()
 
 
-def test_no_hint_when_the_real_people_found_are_all_selected(drive, db):
+@pytest.mark.slow
+def test_no_hint_when_the_real_people_found_are_all_selected(app_at, drive, db):
     """Re-run a query whose real people are all in the selected list: the query
     list is empty, but the query does reach real people, so no hint."""
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(120, 40)) as pilot:
+        async with app_at((120, 40), db=db) as (app, pilot):
             await typed_query(pilot, "gender = female AND stature > 165 cm")
             assert "people found" in message(app) or "person" in message(app)
             await pilot.press("a")  # Select All

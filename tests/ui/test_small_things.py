@@ -3,10 +3,10 @@ were measured', on the screen."""
 
 from __future__ import annotations
 
+from _screen import message
 from textual import events
 
 from sass_tui.model.names import GIRTH, row_index
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.message_log import MessageLog
 from sass_tui.ui.query_screen import ListSheet, QueryScreen
 from sass_tui.ui.widgets import DataSheet
@@ -15,19 +15,14 @@ LARGE = (120, 40)
 CLAVICLE = row_index(GIRTH, "right_clavicle")  # x: 5th, 50th and 95th all 1.0 cm
 
 
-def message(app) -> str:
-    return str(app.screen.query_one("#message").render())
-
-
 def sheet_line(app, label: str) -> str:
     text = str(app.query_one(DataSheet).render())
     return next(line for line in text.splitlines() if line.startswith(label))
 
 
-def test_a_value_on_a_row_without_spread_has_no_percentile_and_says_why(drive):
+def test_a_value_on_a_row_without_spread_has_no_percentile_and_says_why(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             sheet = app.query_one(DataSheet)
             sheet.cursor_row, sheet.cursor_column = CLAVICLE, 0
             sheet.focus()
@@ -44,10 +39,9 @@ def test_a_value_on_a_row_without_spread_has_no_percentile_and_says_why(drive):
     drive(scenario())
 
 
-def test_x_o_r_where_they_do_not_apply_say_why(drive):
+def test_x_o_r_where_they_do_not_apply_say_why(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await pilot.press("x")
             assert "Disp. Indv. (v) first" in message(app)
             await pilot.press("o")
@@ -59,12 +53,11 @@ def test_x_o_r_where_they_do_not_apply_say_why(drive):
     drive(scenario())
 
 
-def test_long_messages_are_read_whole_in_the_message_log(drive, tmp_path):
+def test_long_messages_are_read_whole_in_the_message_log(drive, app_at, tmp_path):
     long_name = tmp_path / ("a-very-long-directory-name-" * 6) / "girth.dat"
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=(80, 24)) as pilot:
+        async with app_at((80, 24)) as (app, pilot):
             await pilot.press("i")
             app.post_message(events.Paste(str(long_name)))
             await pilot.pause()
@@ -83,10 +76,9 @@ def test_long_messages_are_read_whole_in_the_message_log(drive, tmp_path):
     drive(scenario())
 
 
-def test_the_query_list_shows_whole_names(drive, db):
+def test_the_query_list_shows_whole_names(drive, app_at, db):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE, db=True) as (app, pilot):
             await pilot.press("d")
             await app.workers.wait_for_complete()
             await pilot.pause()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from _screen import message, paste
 from textual import events
 
 from sass_tui.model import datasets
@@ -11,16 +12,11 @@ from sass_tui.model.figfile import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH, row_index
 from sass_tui.model.popfile import parse_population_text, read_population_file
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.spreadsheet import FIRST_MESSAGE
 from sass_tui.ui.widgets import DataSheet, GlobalPanel
 
 SMALL = (80, 24)
 LARGE = (120, 40)
-
-
-def message(app) -> str:
-    return str(app.query_one("#message").render())
 
 
 def sheet_text(app) -> str:
@@ -29,12 +25,6 @@ def sheet_text(app) -> str:
 
 def global_panel_text(app) -> str:
     return str(app.query_one(GlobalPanel).render())
-
-
-async def paste(pilot, text: str) -> None:
-    """A file name arrives as a paste (typing it key by key only slows the test)."""
-    pilot.app.query_one("#answer").post_message(events.Paste(text))
-    await pilot.pause()
 
 
 async def click_cell(pilot, row: int, column: int) -> None:
@@ -46,10 +36,9 @@ async def click_cell(pilot, row: int, column: int) -> None:
     await pilot.click(DataSheet, offset=(start + 2, line + 1))
 
 
-def test_start_screen_shows_default_data(drive):
+def test_start_screen_shows_default_data(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SMALL) as pilot:
+        async with app_at(SMALL) as (app, pilot):
             await pilot.pause()
             assert message(app) == FIRST_MESSAGE
             assert app.query_one("#group-girth").has_class("-selected")
@@ -63,11 +52,10 @@ def test_start_screen_shows_default_data(drive):
     drive(scenario())
 
 
-def test_click_cell_type_value_with_unit(drive):
+def test_click_cell_type_value_with_unit(drive, app_at):
     async def scenario():
-        app = SassApp()
         row = row_index(GIRTH, "right_upper_arm")
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await click_cell(pilot, row, 4)  # z value
             assert app.query_one(DataSheet).cursor_row == row
             await pilot.press(*"14in", "enter")
@@ -86,11 +74,11 @@ def test_click_cell_type_value_with_unit(drive):
     drive(scenario())
 
 
-def test_percentile_drives_value_and_blank_return_and_escape(drive):
+@pytest.mark.slow
+def test_percentile_drives_value_and_blank_return_and_escape(drive, app_at):
     async def scenario():
-        app = SassApp()
         stats = read_population_file(datasets.path("girth.dat"), GIRTH).stats("male")
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await click_cell(pilot, 2, 1)  # Center Torso x percentile
             await pilot.press("enter")
             assert "percentile" in message(app)
@@ -108,10 +96,9 @@ def test_percentile_drives_value_and_blank_return_and_escape(drive):
     drive(scenario())
 
 
-def test_wrong_unit_is_refused_and_the_cell_kept(drive):
+def test_wrong_unit_is_refused_and_the_cell_kept(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SMALL) as pilot:
+        async with app_at(SMALL) as (app, pilot):
             await pilot.press(*"12 deg", "enter")
             assert "deg is not a unit of length" in message(app)
             assert app.query_one("#message").has_class("-error")
@@ -124,10 +111,9 @@ def test_wrong_unit_is_refused_and_the_cell_kept(drive):
     drive(scenario())
 
 
-def test_paging_reaches_every_row_at_80x24(drive):
+def test_paging_reaches_every_row_at_80x24(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SMALL) as pilot:
+        async with app_at(SMALL) as (app, pilot):
             await pilot.press("j")
             sheet = app.query_one(DataSheet)
             pages = sheet.pages
@@ -154,10 +140,9 @@ def test_paging_reaches_every_row_at_80x24(drive):
     drive(scenario())
 
 
-def test_large_terminal_holds_the_reports_25_rows(drive):
+def test_large_terminal_holds_the_reports_25_rows(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await pilot.press("j")
             sheet = app.query_one(DataSheet)
             assert sheet.page_size == 25 and sheet.pages == 2
@@ -167,10 +152,9 @@ def test_large_terminal_holds_the_reports_25_rows(drive):
     drive(scenario())
 
 
-def test_switch_group_by_key_and_click_and_strength(drive):
+def test_switch_group_by_key_and_click_and_strength(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await pilot.press("j")
             assert app.data_group == JOINT_LIMITS
             assert app.query_one("#group-joint_limits").has_class("-selected")
@@ -188,10 +172,9 @@ def test_switch_group_by_key_and_click_and_strength(drive):
     drive(scenario())
 
 
-def test_strength_group_refused_when_its_data_failed_to_load(drive, tmp_path):
+def test_strength_group_refused_when_its_data_failed_to_load(drive, app_at, tmp_path):
     async def scenario():
-        app = SassApp(strength_path=tmp_path / "missing.dat")
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE, strength_path=tmp_path / "missing.dat") as (app, pilot):
             await pilot.press("m")
             await pilot.click("#group-strength")
             assert "Strength data is not loaded" in message(app)
@@ -203,11 +186,11 @@ def test_strength_group_refused_when_its_data_failed_to_load(drive, tmp_path):
     drive(scenario())
 
 
-def test_switch_gender_reloads_every_group(drive):
+@pytest.mark.slow
+def test_switch_gender_reloads_every_group(drive, app_at):
     async def scenario():
-        app = SassApp()
         girth = read_population_file(datasets.path("girth.dat"), GIRTH).stats("female")
-        async with app.run_test(size=SMALL) as pilot:
+        async with app_at(SMALL) as (app, pilot):
             await pilot.click(GlobalPanel, offset=(15, 2))  # the gender value
             await pilot.press("enter")
             assert "Gender" in message(app)
@@ -224,9 +207,10 @@ def test_switch_gender_reloads_every_group(drive):
     drive(scenario())
 
 
-def test_group_percentile_rescales_that_group_only(drive):
+@pytest.mark.slow
+def test_group_percentile_rescales_that_group_only(drive, new_app):
     async def scenario():
-        app = SassApp()
+        app = new_app()
         stats = read_population_file(datasets.path("girth.dat"), GIRTH).stats("male")
         joint_limits = app.figure.groups[JOINT_LIMITS].values.copy()
         async with app.run_test(size=SMALL) as pilot:
@@ -251,10 +235,10 @@ def test_group_percentile_rescales_that_group_only(drive):
     drive(scenario())
 
 
-def test_convert_units_and_back(drive):
+@pytest.mark.slow
+def test_convert_units_and_back(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await pilot.press("m")
             before = sheet_text(app)
             values = app.figure.groups[CENTER_OF_MASS].values.copy()
@@ -285,12 +269,12 @@ T MALE
 """
 
 
-def test_bad_file_is_refused_and_data_kept(drive, tmp_path):
+def test_bad_file_is_refused_and_data_kept(drive, new_app, tmp_path):
     bad = tmp_path / "bad_girth.dat"
     bad.write_text(BAD_GIRTH)
 
     async def scenario():
-        app = SassApp()
+        app = new_app()
         values = app.figure.groups[GIRTH].values.copy()
         async with app.run_test(size=SMALL) as pilot:
             await pilot.click("#command-input_data")
@@ -314,7 +298,7 @@ def test_bad_file_is_refused_and_data_kept(drive, tmp_path):
     drive(scenario())
 
 
-def test_input_data_loads_and_shows_warnings(drive, tmp_path):
+def test_input_data_loads_and_shows_warnings(drive, app_at, tmp_path):
     text = (
         datasets.path("jntlmt.dat").read_text().replace("NASA Crewmember Trainees", "Test crew", 1)
     )
@@ -324,8 +308,7 @@ def test_input_data_loads_and_shows_warnings(drive, tmp_path):
     assert warnings  # the seed table's inconsistencies
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             await pilot.press("j", "i")
             await paste(pilot, str(population))
             await pilot.press("enter")
@@ -340,12 +323,12 @@ def test_input_data_loads_and_shows_warnings(drive, tmp_path):
     drive(scenario())
 
 
-def test_create_figure_writes_and_asks_before_overwriting(drive, tmp_path, monkeypatch):
+@pytest.mark.slow
+def test_create_figure_writes_and_asks_before_overwriting(drive, app_at, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SMALL) as pilot:
+        async with app_at(SMALL) as (app, pilot):
             await pilot.press("f")
             assert "[MALE50.FIG]" in message(app)
             await pilot.press("enter")
@@ -383,7 +366,7 @@ def test_create_figure_writes_and_asks_before_overwriting(drive, tmp_path, monke
     drive(scenario())
 
 
-def test_create_figure_refused_without_a_group(drive):
+def test_create_figure_refused_without_a_group(drive, app_at):
     figure = Figure.default()
     female_only = datasets.path("cmass.dat").read_text().split("T MALE")[0]
     if "T FEMALE" not in female_only:
@@ -394,8 +377,7 @@ def test_create_figure_refused_without_a_group(drive):
     assert not figure.groups[CENTER_OF_MASS].loaded
 
     async def scenario():
-        app = SassApp(figure)
-        async with app.run_test(size=SMALL) as pilot:
+        async with app_at(SMALL, figure) as (app, pilot):
             await pilot.press("f")
             assert "Cannot create a figure: Center of Mass not loaded" in message(app)
             assert not app.message_line.prompting
@@ -405,13 +387,12 @@ def test_create_figure_refused_without_a_group(drive):
     drive(scenario())
 
 
-def test_keys_typed_in_one_burst_run_in_order(drive):
+def test_keys_typed_in_one_burst_run_in_order(drive, app_at):
     """A command letter then digits, arriving together (a paste, a fast typist,
     `tmux send-keys "m12"`): the group switch happens before the edit starts."""
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=LARGE) as pilot:
+        async with app_at(LARGE) as (app, pilot):
             for key in ("m", "1", "2"):
                 app.post_message(events.Key(key, key))
             await pilot.pause()

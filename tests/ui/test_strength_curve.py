@@ -9,7 +9,6 @@ import pytest
 from textual.widgets import Static
 
 from sass_tui.model.figure import Figure
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.strength_curve_screen import StrengthCurveScreen
 
 
@@ -25,10 +24,9 @@ async def type_answer(pilot, text: str) -> None:
     await pilot.pause()
 
 
-def test_t_draws_the_knee_extension_curve_with_its_source(drive):
+def test_t_draws_the_knee_extension_curve_with_its_source(app_at, drive):
     async def scenario():
-        app = SassApp(young_man())
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30), young_man()) as (app, pilot):
             await pilot.press("t")
             await pilot.pause()
             screen = app.screen
@@ -50,10 +48,9 @@ def test_t_draws_the_knee_extension_curve_with_its_source(drive):
     drive(scenario())
 
 
-def test_age_percentile_and_speed_change_the_curve(drive):
+def test_age_percentile_and_speed_change_the_curve(app_at, drive):
     async def scenario():
-        app = SassApp(young_man())
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30), young_man()) as (app, pilot):
             await pilot.press("t")
             await pilot.pause()
             screen = app.screen
@@ -79,10 +76,9 @@ def test_age_percentile_and_speed_change_the_curve(drive):
     drive(scenario())
 
 
-def test_the_strength_group_selects_a_data_set_by_name(drive):
+def test_the_strength_group_selects_a_data_set_by_name(app_at, drive):
     async def scenario():
-        app = SassApp(young_man())
-        async with app.run_test(size=(100, 30)) as pilot:
+        async with app_at((100, 30), young_man()) as (app, pilot):
             await pilot.press("s")
             await pilot.pause()
             await pilot.press("i")
@@ -94,14 +90,13 @@ def test_the_strength_group_selects_a_data_set_by_name(drive):
     drive(scenario())
 
 
-def test_a_real_persons_curve_uses_their_own_age_and_is_marked_predicted(db, drive):
+def test_a_real_persons_curve_uses_their_own_age_and_is_marked_predicted(app_at, db, drive):
     from sass_tui.db.individual import fetch_individual
     from sass_tui.db.schema import connect
     from tests.ui.test_person_strength_page import show_first_person_of
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37), db=db) as (app, pilot):
             await show_first_person_of(pilot, "source = ansur2 AND gender = female AND age > 55")
             with connect(db) as conn:
                 person = fetch_individual(conn, app.query_lists.selected_id(0))

@@ -6,7 +6,7 @@ from __future__ import annotations
 import xml.etree.ElementTree as ET
 
 import pytest
-from textual import events
+from _screen import message, paste
 
 from sass_tui.model.figfile import read_fig
 from sass_tui.model.figure import Figure
@@ -19,16 +19,11 @@ from sass_tui.model.strength import (
     strength_type_factor,
     training_factor,
 )
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.strength_page import StrengthPage
 from sass_tui.ui.widgets import GlobalPanel, MenuItem
 
 SIZE = (100, 37)
 REPORT_VALUE = 17.98  # figure 5: right shoulder abduction at x 30, y 45, elbow 90
-
-
-def message(app) -> str:
-    return str(app.query_one("#message").render())
 
 
 def page_text(app) -> str:
@@ -46,11 +41,6 @@ def row_value(app, label: str) -> float:
 
 def button_label(app, name: str) -> str:
     return str(app.query_one(f"#command-{name}", MenuItem).label)
-
-
-async def paste(pilot, text: str) -> None:
-    pilot.app.query_one("#answer").post_message(events.Paste(text))
-    await pilot.pause()
 
 
 async def open_strength(pilot) -> None:
@@ -78,10 +68,9 @@ def expected_sheet(**figure_settings) -> StrengthSheet:
     return StrengthSheet(read_strength_file(), figure)
 
 
-def test_strength_page_shows_figure_5(drive):
+def test_strength_page_shows_figure_5(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             text = page_text(app)
             lines = text.splitlines()
@@ -111,11 +100,11 @@ def test_strength_page_shows_figure_5(drive):
     drive(scenario())
 
 
-def test_edit_angle_recomputes_row_stored_then_predicted(drive):
+@pytest.mark.slow
+def test_edit_angle_recomputes_row_stored_then_predicted(drive, app_at):
     async def scenario():
-        app = SassApp()
         expected = expected_sheet()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             # Shoulder abduction, shoulder x: a stored configuration.
             await pilot.press("enter")
@@ -144,10 +133,9 @@ def test_edit_angle_recomputes_row_stored_then_predicted(drive):
     drive(scenario())
 
 
-def test_click_an_angle_cell_then_edit(drive):
+def test_click_an_angle_cell_then_edit(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             page = app.query_one(StrengthPage)
             start, _ = page._column_start(3)  # elbow y
@@ -164,10 +152,10 @@ def test_click_an_angle_cell_then_edit(drive):
     drive(scenario())
 
 
-def test_angle_beyond_the_joint_limit_is_refused(drive):
+@pytest.mark.slow
+def test_angle_beyond_the_joint_limit_is_refused(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             await pilot.press(*"200", "enter")
             await pilot.pause()
@@ -190,10 +178,9 @@ def test_angle_beyond_the_joint_limit_is_refused(drive):
     drive(scenario())
 
 
-def test_ft_lb_to_n_m_and_back(drive):
+def test_ft_lb_to_n_m_and_back(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             await pilot.press("c")
             assert row_value(app, "Shoulder abduction") == 24.38
@@ -206,10 +193,10 @@ def test_ft_lb_to_n_m_and_back(drive):
     drive(scenario())
 
 
-def test_right_to_left_with_a_typed_factor_and_with_return(drive):
+@pytest.mark.slow
+def test_right_to_left_with_a_typed_factor_and_with_return(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             assert button_label(app, "switch_side") == "Right → Left"
             await pilot.press("r")
@@ -240,10 +227,10 @@ def test_right_to_left_with_a_typed_factor_and_with_return(drive):
     drive(scenario())
 
 
-def test_global_strength_parameters_move_the_values(drive):
+@pytest.mark.slow
+def test_global_strength_parameters_move_the_values(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             await edit_global(pilot, "strength_type", "isokinetic")
             await edit_global(pilot, "motion_speed", "60")
@@ -279,7 +266,7 @@ def test_global_strength_parameters_move_the_values(drive):
     drive(scenario())
 
 
-def test_input_data_on_the_strength_page(drive, tmp_path):
+def test_input_data_on_the_strength_page(drive, app_at, tmp_path):
     broken = tmp_path / "broken.dat"
     broken.write_text("P broken\nG MALE\nL RIGHT\n30 45 0 90 0 0 0 17 50\n")
     small = tmp_path / "small.dat"
@@ -289,8 +276,7 @@ def test_input_data_on_the_strength_page(drive, tmp_path):
     )
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             await pilot.press("i")
             assert "Strength data file:" in message(app)
@@ -315,12 +301,12 @@ def test_input_data_on_the_strength_page(drive, tmp_path):
     drive(scenario())
 
 
-def test_create_figure_with_and_without_strength(drive, tmp_path, monkeypatch):
+@pytest.mark.slow
+def test_create_figure_with_and_without_strength(drive, app_at, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await pilot.press("f", "enter")
             assert "Include strength in the figure? (Y/n)" in message(app)
             await pilot.press("enter")
@@ -351,12 +337,11 @@ def test_create_figure_with_and_without_strength(drive, tmp_path, monkeypatch):
     drive(scenario())
 
 
-def test_create_figure_without_strength_data_does_not_ask(drive, tmp_path, monkeypatch):
+def test_create_figure_without_strength_data_does_not_ask(drive, app_at, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp(strength_path=tmp_path / "missing.dat")
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, strength_path=tmp_path / "missing.dat") as (app, pilot):
             await pilot.press("f", "enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
@@ -367,12 +352,12 @@ def test_create_figure_without_strength_data_does_not_ask(drive, tmp_path, monke
     drive(scenario())
 
 
-def test_export_hanim_writes_x3d_and_asks_before_overwriting(drive, tmp_path, monkeypatch):
+@pytest.mark.slow
+def test_export_hanim_writes_x3d_and_asks_before_overwriting(drive, app_at, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await pilot.click("#command-export_hanim")
             assert "HAnim file name [MALE50.x3d]:" in message(app)
             await pilot.press("enter")
@@ -407,14 +392,13 @@ def test_export_hanim_writes_x3d_and_asks_before_overwriting(drive, tmp_path, mo
     drive(scenario())
 
 
-def test_export_hanim_refuses_an_incomplete_figure(drive, tmp_path, monkeypatch):
+def test_export_hanim_refuses_an_incomplete_figure(drive, app_at, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     figure = Figure.default()
     figure.groups[JOINT_LIMITS].values = None  # as if no joint limits for this gender
 
     async def scenario():
-        app = SassApp(figure)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, figure) as (app, pilot):
             await pilot.press("e", "enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
@@ -424,11 +408,12 @@ def test_export_hanim_refuses_an_incomplete_figure(drive, tmp_path, monkeypatch)
     drive(scenario())
 
 
-def test_strength_page_snapshot(snap_compare):
-    assert snap_compare(SassApp(), press=["s"], terminal_size=SIZE)
+def test_strength_page_snapshot(snap_compare, new_app):
+    assert snap_compare(new_app(), press=["s"], terminal_size=SIZE)
 
 
-def test_angles_outside_new_limits_are_marked(drive):
+@pytest.mark.slow
+def test_angles_outside_new_limits_are_marked(drive, app_at):
     """Lowering the joint-limit percentile can leave a shown angle outside its limit."""
 
     def outside_cells(page) -> list[str]:
@@ -439,8 +424,7 @@ def test_angles_outside_new_limits_are_marked(drive):
         ]
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             await pilot.press(*"175", "enter", "right")  # allowed at the 50th (180.95)
             await pilot.pause()
@@ -455,10 +439,9 @@ def test_angles_outside_new_limits_are_marked(drive):
     drive(scenario())
 
 
-def test_undo_takes_the_newest_edit_angle_or_figure(drive):
+def test_undo_takes_the_newest_edit_angle_or_figure(drive, app_at):
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await open_strength(pilot)
             await pilot.press("enter")  # shoulder abduction, shoulder x
             await paste(pilot, "60")
@@ -478,8 +461,9 @@ def test_undo_takes_the_newest_edit_angle_or_figure(drive):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_lengths_the_humanoid_leaves_out_are_said_on_edit_and_on_export(
-    drive, tmp_path, monkeypatch
+    drive, app_at, tmp_path, monkeypatch
 ):
     # The humanoid (and the figure view drawn from it) stands its joints at the
     # stature's landmarks: a leg length typed here reaches the .fig only, and
@@ -487,8 +471,7 @@ def test_lengths_the_humanoid_leaves_out_are_said_on_edit_and_on_export(
     monkeypatch.chdir(tmp_path)
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await pilot.click("#command-export_hanim")
             await pilot.press("enter")
             await app.workers.wait_for_complete()

@@ -6,14 +6,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_query_screen import settle
+from _screen import settle
 
 from sass_tui.cli import main
 from sass_tui.db.fit import fit_test
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.schema import connect
 from sass_tui.db.targets import load_target, weighted_count
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.fit_screen import FitScreen
 from sass_tui.ui.query_screen import QueryScreen
 from sass_tui.ui.target_picker import NO_TARGET, TargetPicker
@@ -38,15 +37,14 @@ def targeted_db(db, tmp_path):
     return db
 
 
-def test_the_query_screen_and_fit_test_weighted_to_a_target(drive, targeted_db):
+def test_the_query_screen_and_fit_test_weighted_to_a_target(app_at, drive, targeted_db):
     with connect(targeted_db) as conn:
         weights = load_target(conn, "civ")
         counted = weighted_count(conn, QUERY, weights)
         expected = format_table(fit_test(conn, QUERY, target=weights))
 
     async def scenario():
-        app = SassApp(db_path=targeted_db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=targeted_db) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             screen = app.screen
@@ -82,10 +80,9 @@ def test_the_query_screen_and_fit_test_weighted_to_a_target(drive, targeted_db):
     drive(scenario())
 
 
-def test_no_targets_says_how_to_make_one(drive, db):
+def test_no_targets_says_how_to_make_one(app_at, drive, db):
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=db) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             await pilot.press("t")
@@ -96,7 +93,8 @@ def test_no_targets_says_how_to_make_one(drive, db):
     drive(scenario())
 
 
-def test_make_population_weighted_to_a_target(drive, targeted_db, tmp_path):
+@pytest.mark.slow
+def test_make_population_weighted_to_a_target(app_at, drive, targeted_db, tmp_path):
     """Make Population with a target: the spreadsheet's stature percentiles are the
     weighted empirical percentiles of the target's people (computed here from the
     stored weights and the people's statures)."""
@@ -112,8 +110,7 @@ def test_make_population_weighted_to_a_target(drive, targeted_db, tmp_path):
     out = tmp_path / "civ.dat"
 
     async def scenario():
-        app = SassApp(db_path=targeted_db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=targeted_db) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             app.screen.start_query("gender = female")

@@ -7,13 +7,14 @@ from __future__ import annotations
 
 import threading
 
+import pytest
+from _screen import message, paste, settle
 from big_flat_files import write_big_flat_files
 from test_query_population import query_young_women
-from test_query_screen import message, open_query_screen, settle
+from test_query_screen import open_query_screen
 from textual import events
 
 from sass_tui.db.schema import connect, row_counts
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.progress import Work, WorkBar
 
 SIZE = (120, 40)
@@ -64,15 +65,14 @@ async def _answer(pilot, text) -> None:
 
 
 def test_input_db_shows_lines_done_of_total_and_escape_rolls_it_back(
-    drive, db, tmp_path, monkeypatch
+    drive, app_at, db, tmp_path, monkeypatch
 ):
     files = write_big_flat_files(tmp_path / "big", people=1500)
     before = _state(db)
     held = HeldWork(monkeypatch, "Input DB")
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             bar = screen.query_one(WorkBar)
             assert not bar.display or bar.text == ""
@@ -97,7 +97,7 @@ def test_input_db_shows_lines_done_of_total_and_escape_rolls_it_back(
     assert _state(db) == before
 
 
-def test_input_db_bar_runs_to_the_total(drive, db, tmp_path, monkeypatch):
+def test_input_db_bar_runs_to_the_total(drive, app_at, db, tmp_path, monkeypatch):
     files = write_big_flat_files(tmp_path / "big", people=600)
     seen: list[tuple[int, int]] = []
     original = WorkBar.show
@@ -109,8 +109,7 @@ def test_input_db_bar_runs_to_the_total(drive, db, tmp_path, monkeypatch):
     monkeypatch.setattr(WorkBar, "show", show)
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await open_query_screen(pilot)
             await pilot.press("i")
             for path in (files.person, files.girth, files.joint_limits, files.center_of_mass):
@@ -124,18 +123,21 @@ def test_input_db_bar_runs_to_the_total(drive, db, tmp_path, monkeypatch):
     assert [d for d, _t in seen] == sorted(d for d, _t in seen)
 
 
-def test_make_population_cancelled_writes_and_loads_nothing(drive, db, tmp_path, monkeypatch):
+@pytest.mark.slow
+def test_make_population_cancelled_writes_and_loads_nothing(
+    drive, app_at, db, tmp_path, monkeypatch
+):
     target = tmp_path / "young.dat"
     held = HeldWork(monkeypatch, "Make Population")
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             await query_young_women(pilot)
             screen = app.screen
             await pilot.press("a", "m")
             loaded = {g: fig.source for g, fig in app.session.population.groups.items()}
-            await pilot.press(*str(target), "enter")
+            await paste(pilot, str(target))
+            await pilot.press("enter")
             bar = screen.query_one(WorkBar)
             await held.until_shown(pilot, bar)
             assert bar.text.startswith("Make Population ")
@@ -153,7 +155,8 @@ def test_make_population_cancelled_writes_and_loads_nothing(drive, db, tmp_path,
     assert not (tmp_path / "young-cmass.dat").exists()
 
 
-def test_a_query_shows_people_searched_and_escape_keeps_the_lists(drive, db, monkeypatch):
+@pytest.mark.slow
+def test_a_query_shows_people_searched_and_escape_keeps_the_lists(drive, app_at, db, monkeypatch):
     monkeypatch.setattr("sass_tui.ui.query_screen.QUERY_BAR_AFTER", 0.0)  # show it at once
     monkeypatch.setattr("sass_tui.ui.progress.MAX_UPDATES", 10**9)  # and every report
     monkeypatch.setattr("sass_tui.db.lists.RUN_CHUNK", 5000)  # two ranges of the people
@@ -162,8 +165,7 @@ def test_a_query_shows_people_searched_and_escape_keeps_the_lists(drive, db, mon
         (people,) = conn.execute("SELECT count(*) FROM person").fetchone()
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             screen.start_query("gender = male")
             bar = screen.query_one(WorkBar)
@@ -201,7 +203,8 @@ def test_reports_are_thinned_to_the_screen_but_the_last_always_comes():
     assert len(target.posted) < 100
 
 
-def test_a_family_shows_its_steps_and_escape_cancels_it(drive, db, monkeypatch):
+@pytest.mark.slow
+def test_a_family_shows_its_steps_and_escape_cancels_it(drive, app_at, db, monkeypatch):
     from textual.widgets import DataTable
 
     from sass_tui.ui.family_screen import FamilyScreen
@@ -210,8 +213,7 @@ def test_a_family_shows_its_steps_and_escape_cancels_it(drive, db, monkeypatch):
     held = HeldWork(monkeypatch, "Family")
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37), db=True) as (app, pilot):
             await pilot.press("y", "enter", *"stature,mass", "enter", *"90", "enter")
             screen = app.screen
             assert isinstance(screen, FamilyScreen)
@@ -233,7 +235,7 @@ def test_a_family_shows_its_steps_and_escape_cancels_it(drive, db, monkeypatch):
     drive(scenario())
 
 
-def test_the_fit_test_shows_its_steps_and_escape_cancels_it(drive, db, monkeypatch):
+def test_the_fit_test_shows_its_steps_and_escape_cancels_it(drive, app_at, db, monkeypatch):
     from sass_tui.ui.fit_screen import FitScreen
     from sass_tui.ui.query_screen import QueryScreen
 
@@ -241,8 +243,7 @@ def test_the_fit_test_shows_its_steps_and_escape_cancels_it(drive, db, monkeypat
     held = HeldWork(monkeypatch, "Fit Test")
 
     async def scenario():
-        app = SassApp(db_path=db)
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
             screen.start_query("stature < 190 cm")
             await settle(pilot)
@@ -262,7 +263,7 @@ def test_the_fit_test_shows_its_steps_and_escape_cancels_it(drive, db, monkeypat
 
 
 def test_escape_during_the_first_build_of_the_default_database_leaves_no_file(
-    drive, tmp_path, monkeypatch
+    drive, app_at, tmp_path, monkeypatch
 ):
     """Cancelled at its first report: rolled back and the file removed, so the
     next start builds it again instead of opening an empty database."""
@@ -271,8 +272,7 @@ def test_escape_during_the_first_build_of_the_default_database_leaves_no_file(
     held = HeldWork(monkeypatch, "Building the database")
 
     async def scenario():
-        app = SassApp()
-        async with app.run_test(size=SIZE) as pilot:
+        async with app_at(SIZE) as (app, pilot):
             await pilot.press("d")
             screen = app.screen
             bar = screen.query_one(WorkBar)

@@ -1,15 +1,14 @@
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import pytest
 
-from sass_tui.db.default import create_default_database
-
 
 @pytest.fixture(scope="session")
-def default_people_db(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """The default database, built once for the browser tests."""
+def default_people_db(shipped_db_file: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The default database for the browser tests: a copy of the session's build."""
     path = tmp_path_factory.mktemp("web") / "sass.db"
-    create_default_database(path)
+    shutil.copy(shipped_db_file, path)
     return path

@@ -11,13 +11,11 @@ import base64
 import json
 import re
 import shutil
-import socket
-import subprocess
-import sys
 import time
 from pathlib import Path
 
 import pytest
+from _serve import start_serve
 
 CHROMIUM = shutil.which("chromium")
 CHROMEDRIVER = shutil.which("chromedriver")
@@ -33,22 +31,6 @@ ESCAPES = re.compile(
     r"\x1b\[[0-9;?<>=]*[ -/]*[@-~]|\x1b\][^\x07\x1b]*(?:\x07|\x1b\\)|\x1b[()][0-9A-B]"
 )
 READY = "Press left-mouse to select items."
-
-
-def free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def wait_for_port(port: int, timeout: float = 20.0) -> None:
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        with socket.socket() as s:
-            if s.connect_ex(("127.0.0.1", port)) == 0:
-                return
-        time.sleep(0.1)
-    raise TimeoutError(f"sass serve did not listen on port {port}")
 
 
 class Screen:
@@ -84,33 +66,14 @@ class Screen:
 
 @pytest.fixture
 def served(tmp_path: Path, default_people_db: Path):
-    port = free_port()
-    server = subprocess.Popen(
-        [
-            sys.executable,
-            "-m",
-            "sass_tui",
-            "serve",
-            "--host",
-            "localhost",
-            "--port",
-            str(port),
-            "--db",
-            str(default_people_db),
-        ],
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.PIPE,
-        cwd=tmp_path,
+    """The URL `sass serve` prints (with its token): the only one that opens."""
+    server = start_serve(
+        tmp_path, "--host", "localhost", "--db", str(default_people_db), "--workdir", "work"
     )
     try:
-        wait_for_port(port)
-        yield f"http://localhost:{port}/"
+        yield server.url
     finally:
-        server.terminate()
-        try:
-            server.wait(10)
-        except subprocess.TimeoutExpired:
-            server.kill()
+        server.stop()
 
 
 @pytest.fixture
@@ -138,6 +101,7 @@ def browser(tmp_path: Path):
         driver.quit()
 
 
+@pytest.mark.slow
 def test_the_spreadsheet_runs_in_a_browser_and_takes_keys(served: str, browser) -> None:
     browser.get(served)
     start = browser.find_elements(By.ID, "start")

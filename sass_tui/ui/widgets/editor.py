@@ -7,6 +7,8 @@ from __future__ import annotations
 from textual import events
 from textual.message import Message
 
+from sass_tui.ui.textual_api import bindings_of
+
 # Characters that start typing a new number straight into the message line.
 NUMBER_START = set("0123456789.-+")
 
@@ -69,7 +71,7 @@ class EditorKeys:
             event.stop()
             event.prevent_default()
             self.start_typing("")
-        elif event.key not in self._bindings.key_to_bindings:  # type: ignore[attr-defined]
+        elif event.key not in bindings_of(self).key_to_bindings:  # type: ignore[arg-type]
             # Not this widget's (its arrows are): the screen's, in this order.
             event.stop()
             event.prevent_default()

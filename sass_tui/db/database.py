@@ -1,0 +1,271 @@
+"""The Database service: the one owner of a database connection, its
+transactions, its lock and the differences between the engines.
+
+`Database.open(target)` opens a SQLite file (a path; the default database
+when None) or a PostgreSQL database (`postgresql://user@host/db`; also from
+$SASS_DB).  The command line's verbs and the screens ask it for answers
+(`query`, `count`, `import_ansur`, `import_flat`, `init`) and never see a
+connection; functions of this layer that take a connection are handed it
+here.  Engine errors leave as DatabaseErrors (`engine_error`).
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from sass_tui.db.schema import DatabaseError
+
+if TYPE_CHECKING:
+    from sass_tui.db.flatfile import FlatFiles
+    from sass_tui.db.progress import Cancel, Progress
+    from sass_tui.db.query import CompiledQuery, Query
+    from sass_tui.db.query_tree import Dialect
+    from sass_tui.db.values import Values
+    from sass_tui.model.accommodation import Family
+    from sass_tui.model.prediction import Predictor
+
+
+def configured_target(given: str | Path | None) -> str | Path | None:
+    """What `--db` names, else $SASS_DB, else None (the default file).  A
+    PostgreSQL address stays text (a Path would fold its `//`)."""
+    from sass_tui.db.addresses import is_url
+
+    if given is not None and str(given):
+        return given
+    env = os.environ.get("SASS_DB")
+    if env and is_url(env):
+        return env
+    return None
+
+
+def engine_error(exc: BaseException) -> DatabaseError | None:
+    """An engine's own error (sqlite3's, psycopg's, duckdb's) as a message a
+    user can act on; None for anything else (a bug, shown as one)."""
+    import sys
+
+    if isinstance(exc, DatabaseError):
+        return exc
+    sqlite3 = sys.modules.get("sqlite3")
+    if sqlite3 is not None and isinstance(exc, sqlite3.Error):
+        if isinstance(exc, sqlite3.OperationalError) and "locked" in str(exc):
+            return DatabaseError(
+                f"the database is busy ({exc}): another process is writing to it; "
+                "nothing changed, try again when it has finished"
+            )
+        return DatabaseError(f"database error: {exc}")
+    for module in ("psycopg", "duckdb"):
+        driver = sys.modules.get(module)
+        if driver is not None and isinstance(exc, driver.Error):
+            first = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+            return DatabaseError(f"database error ({module}): {first}")
+    return None
+
+
+@contextmanager
+def engine_errors() -> Iterator[None]:
+    """Engine errors raised inside become DatabaseErrors."""
+    try:
+        yield
+    except Exception as exc:
+        error = engine_error(exc)
+        if error is None or error is exc:
+            raise
+        raise error from None
+
+
+class Database:
+    """One open database (SQLite or PostgreSQL) and the lock that serialises
+    its users (a screen and its workers share one connection)."""
+
+    def __init__(self, conn: Any, target: str | Path | None) -> None:
+        self._conn = conn
+        self.target = target
+        self.dialect: Dialect = getattr(conn, "dialect", "sqlite")
+        self.lock = threading.RLock()
+
+    @classmethod
+    def open(
+        cls,
+        target: str | Path | None = None,
+        *,
+        create: bool = False,
+        progress: Progress | None = None,
+    ) -> Database:
+        """The database `target` names (see configured_target)."""
+        from sass_tui.db.addresses import is_url
+        from sass_tui.db.postgres import connect_postgres
+
+        target = configured_target(target)
+        if is_url(target):
+            return cls(connect_postgres(str(target), create=create), target)
+        from sass_tui.db.default import open_database
+
+        with engine_errors():
+            return cls(open_database(target, create=create, progress=progress), target)
+
+    @property
+    def name(self) -> str:
+        """The database as shown to a user (a PostgreSQL address without its password)."""
+        from sass_tui.db.addresses import is_url
+        from sass_tui.db.postgres import shown
+
+        if is_url(self.target):
+            return shown(str(self.target))
+        if self.dialect == "sqlite":
+            for _seq, name, file in self._conn.execute("PRAGMA database_list"):
+                if name == "main":
+                    return str(file)
+        return str(self.target)
+
+    @contextmanager
+    def connection(self) -> Iterator[Any]:
+        """The connection, under the lock, engine errors as DatabaseErrors: for
+        this layer's functions that take one (`with db.connection() as conn:`)."""
+        with self.lock, engine_errors():
+            yield self._conn
+
+    def close(self) -> None:
+        with self.lock:
+            self._conn.close()
+
+    # --- reading -------------------------------------------------------------
+
+    def query(self, query: str | CompiledQuery) -> Query:
+        from sass_tui.db.query import Query, compile_query
+
+        compiled = compile_query(query) if isinstance(query, str) else query
+        return Query(self._conn, compiled)
+
+    def count(self, query: str | CompiledQuery) -> int:
+        with self.connection():
+            return self.query(query).count()
+
+    def page(self, query: str | CompiledQuery, offset: int = 0, limit: int = 25) -> list[Any]:
+        with self.connection():
+            return self.query(query).page(offset, limit)
+
+    def person_rows(self, query: str | CompiledQuery) -> list[tuple[Any, ...]]:
+        """Every selected person in PERSON_FIELDS order (db/query.py), id order."""
+        with self.connection():
+            return list(self.query(query).person_rows())
+
+    def person_records(self, keys: Sequence[str]) -> list[dict[str, object]]:
+        """Everything stored about the people `keys` name (an id or a name), in
+        order (db/individual.py's person_record)."""
+        from sass_tui.db.individual import find_person, person_record
+
+        with self.connection() as conn:
+            return [person_record(conn, find_person(conn, key)) for key in keys]
+
+    def people_count(self) -> int:
+        with self.connection() as conn:
+            return int(conn.execute("SELECT count(*) FROM person").fetchone()[0])
+
+    def predictor(self) -> Predictor:
+        """The database's prediction model (db/predict.py)."""
+        from sass_tui.db.predict import open_predictor
+
+        with self.connection() as conn:
+            return open_predictor(conn)
+
+    def family(
+        self,
+        gender: str,
+        measures: tuple[str, ...],
+        coverage: float,
+        method: str,
+        population: str,
+        progress: Progress | None = None,
+        cancel: Cancel | None = None,
+    ) -> tuple[Family, Values]:
+        """A manikin family (db/fit.py) and the people's values of its first two
+        measures (the scatter it is drawn over)."""
+        from sass_tui.db.fit import load_family
+        from sass_tui.db.values import load_values
+
+        with self.connection() as conn:
+            family = load_family(
+                conn,
+                gender,
+                measures,
+                coverage,
+                method,
+                population,
+                progress=progress,
+                cancel=cancel,
+            )
+            people = load_values(
+                conn, list(family.measures[:2]), f"({population}) AND gender = {gender}"
+            )
+        return family, people
+
+    # --- writing -------------------------------------------------------------
+
+    def import_ansur(
+        self,
+        files: Sequence[str | Path],
+        *,
+        label: str,
+        progress: Progress | None = None,
+        cancel: Cancel | None = None,
+    ) -> dict[str, int]:
+        """Import ANSUR II format files in one transaction; people per gender."""
+        from sass_tui.db.ansur import import_ansur
+
+        with self.connection() as conn:
+            if self.dialect == "postgresql":
+                from sass_tui.db.postgres import import_staged
+
+                return import_staged(
+                    conn,
+                    lambda staging: import_ansur(
+                        staging, files, progress, label=label, cancel=cancel
+                    ),
+                )
+            return import_ansur(conn, files, progress, label=label, cancel=cancel)
+
+    def import_flat(
+        self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
+    ) -> int:
+        """Import legacy flat files in one transaction; how many people."""
+        from sass_tui.db.flatfile import import_flat_files
+
+        with self.connection() as conn:
+            if self.dialect == "postgresql":
+                from sass_tui.db.postgres import import_staged
+
+                return import_staged(
+                    conn, lambda staging: import_flat_files(staging, files, progress, cancel)
+                )
+            return import_flat_files(conn, files, progress, cancel)
+
+
+def init_postgres(url: str, progress: Progress | None = None, *, force: bool) -> dict[str, int]:
+    """`sass db init` on PostgreSQL: the schema made (or migrated) and the
+    default people stored in one transaction, replacing everyone (with
+    `force`; without it a database holding people is refused)."""
+    from sass_tui.db.default import fill_default
+    from sass_tui.db.postgres import connect_postgres, import_staged, people_count, shown
+    from sass_tui.db.schema import transaction
+
+    conn = connect_postgres(url, create=True)
+    try:
+        held = people_count(conn)
+        if held and not force:
+            raise DatabaseError(
+                f"{shown(url)} holds {held} people; `sass db init --force` replaces them "
+                "(imports included)"
+            )
+
+        def stage(staging: Any) -> dict[str, int]:
+            with transaction(staging):
+                return fill_default(staging, progress)
+
+        return import_staged(conn, stage, replace_all=True)
+    finally:
+        conn.close()

@@ -1,0 +1,360 @@
+"""PostgreSQL: one people database shared by a lab (`--db postgresql://user@host/db`).
+
+The driver is psycopg 3 (`pip install 'sass-tui[postgres]'`), imported only
+here and only when a PostgreSQL address is given.
+
+- The schema is SQLite's (db/schema.py), read back from an in-memory SQLite
+  database built from the same DDL and written out in PostgreSQL's types:
+  one definition of the tables for both engines.  SQLite's measure_packed
+  (a read cache of the measure table, kept by triggers) is not made.
+  `meta.schema_version` is SCHEMA_VERSION; MIGRATIONS lists the steps from
+  older PostgreSQL schemas (none yet: version 5 is the first).
+- An import is parsed and checked by the SQLite import (db/ansur.py,
+  db/flatfile.py, db/default.py) into a private staging file, then copied
+  in ONE PostgreSQL transaction: a reader sees the database before it or
+  after it, never half; a client killed mid-import leaves it as it was (the
+  server rolls the transaction back).  Imports take a transaction-level
+  advisory lock, so concurrent writers from several machines take their
+  turns; a person is known by its natural key `source_key` (the source's
+  label and the subject), UNIQUE in the table, so a re-import replaces the
+  person under the same id and no person is ever stored twice.
+- Queries are the query tree compiled in the "postgresql" dialect
+  (db/query_tree.py); PostgreSQL counts with its own parallel scans.
+- A connection lost between two statements (the server restarted) is opened
+  again once for the next statement outside a transaction; a server that is
+  gone is a DatabaseError that says so.
+"""
+
+from __future__ import annotations
+
+import sqlite3
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any, TypeVar
+
+from sass_tui.db.query_tree import Dialect
+from sass_tui.db.schema import (
+    PERSON_TABLES,
+    SCHEMA_VERSION,
+    TARGET_TABLES,
+    DatabaseError,
+    connect,
+    schema_statements,
+)
+
+# pg_advisory_xact_lock key of sass's writers: "SASS" in ASCII.
+WRITE_LOCK = 0x53415353
+# Older PostgreSQL schema version -> the statements that bring it to the next one.
+MIGRATIONS: dict[str, tuple[str, ...]] = {}
+CONNECT_TIMEOUT_S = 10
+T = TypeVar("T")
+# SQLite's declared types -> PostgreSQL's.
+_TYPES = {"INTEGER": "BIGINT", "REAL": "DOUBLE PRECISION", "TEXT": "TEXT", "BLOB": "BYTEA"}
+_SQLITE_ONLY = ("measure_packed",)
+
+
+def shown(url: str) -> str:
+    """The address without its password, for messages."""
+    from urllib.parse import urlsplit, urlunsplit
+
+    parts = urlsplit(url)
+    if parts.password is None:
+        return url
+    host = parts.hostname or ""
+    user = parts.username or ""
+    port = f":{parts.port}" if parts.port else ""
+    return urlunsplit(parts._replace(netloc=f"{user}:***@{host}{port}"))
+
+
+def _driver() -> Any:
+    try:
+        import psycopg
+    except ImportError:
+        raise DatabaseError(
+            "a PostgreSQL database needs the psycopg driver: pip install 'sass-tui[postgres]'"
+        ) from None
+    return psycopg
+
+
+class PostgresConnection:
+    """A psycopg connection in autocommit mode, with sqlite3's `execute` shape
+    (`%s` placeholders) and engine errors turned into DatabaseErrors."""
+
+    dialect: Dialect = "postgresql"
+
+    def __init__(self, url: str) -> None:
+        self.url = url
+        self._psycopg = _driver()
+        self._conn = self._connect()
+        self._depth = 0  # open transaction() blocks
+
+    def _connect(self) -> Any:
+        try:
+            return self._psycopg.connect(
+                self.url, autocommit=True, connect_timeout=CONNECT_TIMEOUT_S
+            )
+        except self._psycopg.Error as exc:
+            raise DatabaseError(
+                f"{shown(self.url)}: cannot reach the PostgreSQL server ({_first_line(exc)}); "
+                "check that it is running and that the address, user and database are right"
+            ) from None
+
+    @property
+    def in_transaction(self) -> bool:
+        return self._depth > 0
+
+    def execute(self, sql: str, params: Sequence[object] = ()) -> Any:
+        """Run one statement; the cursor (iterate it, or fetchone / fetchall)."""
+        try:
+            return self._conn.execute(sql, tuple(params))
+        except self._psycopg.OperationalError as exc:
+            if self._depth or not self._conn.broken and not self._conn.closed:
+                raise self.error(exc) from None
+        except self._psycopg.Error as exc:
+            raise self.error(exc) from None
+        # The connection broke between statements (a server restart): open it again once.
+        self._conn = self._connect()
+        try:
+            return self._conn.execute(sql, tuple(params))
+        except self._psycopg.Error as exc:
+            raise self.error(exc) from None
+
+    def error(self, exc: BaseException) -> DatabaseError:
+        """A driver error as a message a user can act on."""
+        if isinstance(exc, DatabaseError):
+            return exc
+        where = shown(self.url)
+        if self._conn.broken or self._conn.closed:
+            return DatabaseError(
+                f"{where}: the PostgreSQL server closed the connection ({_first_line(exc)}); "
+                "nothing of the interrupted command was stored; run it again when the "
+                "server is back"
+            )
+        return DatabaseError(f"{where}: {_first_line(exc)}")
+
+    @contextmanager
+    def transaction(self) -> Iterator[PostgresConnection]:
+        """One transaction: committed at the end, rolled back on any error."""
+        try:
+            with self._conn.transaction():
+                self._depth += 1
+                try:
+                    yield self
+                finally:
+                    self._depth -= 1
+        except self._psycopg.Error as exc:
+            raise self.error(exc) from None
+
+    def copy_rows(
+        self, table: str, columns: Sequence[str], rows: Iterator[Sequence[object]]
+    ) -> int:
+        """COPY rows into a table (inside the caller's transaction); how many."""
+        count = 0
+        try:
+            with self._conn.cursor() as cursor:
+                with cursor.copy(f"COPY {table} ({', '.join(columns)}) FROM STDIN") as copy:
+                    for row in rows:
+                        copy.write_row(row)
+                        count += 1
+        except self._psycopg.Error as exc:
+            raise self.error(exc) from None
+        return count
+
+    def close(self) -> None:
+        self._conn.close()
+
+
+def _first_line(exc: BaseException) -> str:
+    text = str(exc).strip()
+    return text.splitlines()[0] if text else type(exc).__name__
+
+
+def connect_postgres(url: str, *, create: bool = False) -> PostgresConnection:
+    """Open the database at `url`: its schema made when `create` and absent,
+    checked (and migrated) otherwise."""
+    conn = PostgresConnection(url)
+    try:
+        _check_schema(conn, create)
+    except BaseException:
+        conn.close()
+        raise
+    return conn
+
+
+def _has_schema(conn: PostgresConnection) -> bool:
+    row = conn.execute("SELECT to_regclass('meta') IS NOT NULL").fetchone()
+    return bool(row[0])
+
+
+def _check_schema(conn: PostgresConnection, create: bool) -> None:
+    if not _has_schema(conn):
+        if not create:
+            raise DatabaseError(
+                f"{shown(conn.url)}: no sass schema in this database "
+                f"(create it with `sass db init --db {shown(conn.url)}`)"
+            )
+        with conn.transaction():
+            conn.execute("SELECT pg_advisory_xact_lock(%s)", (WRITE_LOCK,))
+            if not _has_schema(conn):  # another process made it meanwhile
+                create_schema(conn)
+        return
+    with conn.transaction():
+        conn.execute("SELECT pg_advisory_xact_lock(%s)", (WRITE_LOCK,))
+        row = conn.execute("SELECT value FROM meta WHERE key = 'schema_version'").fetchone()
+        version = row[0] if row else None
+        while version in MIGRATIONS:
+            for statement in MIGRATIONS[version]:
+                conn.execute(statement)
+            version = str(int(version) + 1)
+            conn.execute("UPDATE meta SET value = %s WHERE key = 'schema_version'", (version,))
+    if version != SCHEMA_VERSION:
+        raise DatabaseError(
+            f"{shown(conn.url)}: a sass database of schema version {version}, this sass "
+            f"reads version {SCHEMA_VERSION}: use the sass that made it, or rebuild it "
+            f"with `sass db init --force --db {shown(conn.url)}` (deletes its people)"
+        )
+
+
+def postgres_ddl() -> list[str]:
+    """The CREATE statements of SQLite's schema in PostgreSQL's types: tables
+    with their primary keys, NOT NULL and UNIQUE columns, and their indexes."""
+    memory = sqlite3.connect(":memory:")
+    try:
+        for statement in schema_statements():
+            memory.execute(statement)
+        tables = [
+            name
+            for (name,) in memory.execute(
+                "SELECT name FROM sqlite_master WHERE type = 'table' ORDER BY rowid"
+            )
+            if name not in _SQLITE_ONLY
+        ]
+        out: list[str] = []
+        indexes: list[str] = []
+        for table in tables:
+            info = memory.execute(f"PRAGMA table_info({table})").fetchall()
+            keys = [name for _cid, name, *_rest, pk in sorted(info, key=lambda r: r[5]) if pk]
+            unique: set[str] = set()
+            for _seq, index, is_unique, origin, _partial in memory.execute(
+                f"PRAGMA index_list({table})"
+            ):
+                columns = [r[2] for r in memory.execute(f"PRAGMA index_info({index})")]
+                if origin == "u" and len(columns) == 1:
+                    unique.add(columns[0])
+                elif origin == "c":
+                    kind = "UNIQUE INDEX" if is_unique else "INDEX"
+                    indexes.append(f"CREATE {kind} {index} ON {table} ({', '.join(columns)})")
+            lines = [
+                f"{name} {_TYPES[declared.upper()]}"
+                + (" NOT NULL" if notnull and not (pk and len(keys) == 1) else "")
+                + (" UNIQUE" if name in unique else "")
+                for _cid, name, declared, notnull, _default, pk in info
+            ]
+            if keys:
+                lines.append(f"PRIMARY KEY ({', '.join(keys)})")
+            out.append(f"CREATE TABLE {table} ({', '.join(lines)})")
+        return out + indexes
+    finally:
+        memory.close()
+
+
+def create_schema(conn: PostgresConnection) -> None:
+    """Make the tables (inside the caller's transaction)."""
+    for statement in postgres_ddl():
+        conn.execute(statement)
+    conn.execute("INSERT INTO meta VALUES ('schema_version', %s)", (SCHEMA_VERSION,))
+    conn.execute(
+        "INSERT INTO meta VALUES ('units', "
+        "'length cm, mass kg, angle deg, strength N-m, speed deg/s, age years')"
+    )
+
+
+def _tables_of_people() -> tuple[str, ...]:
+    """The tables a person's rows are in, person last (deleted after its rows)."""
+    return tuple(t for t in PERSON_TABLES if t not in _SQLITE_ONLY) + ("person",)
+
+
+def recreate_schema(conn: PostgresConnection) -> None:
+    """Drop sass's tables and make them afresh (inside the caller's transaction)."""
+    for table in ("meta", *TARGET_TABLES, *_tables_of_people()):
+        conn.execute(f"DROP TABLE IF EXISTS {table} CASCADE")
+    create_schema(conn)
+
+
+def people_count(conn: PostgresConnection) -> int:
+    return int(conn.execute("SELECT count(*) FROM person").fetchone()[0])
+
+
+# --- imports -------------------------------------------------------------------
+
+
+def import_staged(
+    conn: PostgresConnection,
+    stage: Callable[[sqlite3.Connection], T],
+    *,
+    replace_all: bool = False,
+    staging_file: Path | None = None,
+) -> T:
+    """`stage` imports into a private SQLite file (its parsing and checks, its
+    errors); then its people are copied into PostgreSQL in one transaction.
+    `replace_all`: everyone stored before goes (`sass db init`)."""
+    import tempfile
+
+    with tempfile.TemporaryDirectory(prefix="sass-staging-") as folder:
+        path = staging_file or Path(folder) / "staging.db"
+        staging = connect(path, create=True)
+        try:
+            result = stage(staging)
+            with conn.transaction():
+                conn.execute("SELECT pg_advisory_xact_lock(%s)", (WRITE_LOCK,))
+                if replace_all:
+                    recreate_schema(conn)
+                copy_people(staging, conn)
+        finally:
+            staging.close()
+    return result
+
+
+def copy_people(staging: sqlite3.Connection, conn: PostgresConnection) -> int:
+    """Every person of the staging file into PostgreSQL (inside the caller's
+    transaction, under WRITE_LOCK): a person whose source_key is stored
+    already is replaced under its id, one without a key keeps its own id
+    (the flat files' numbering, as SQLite's import does), and every other
+    person gets a new id after the last.  Returns how many."""
+    staged = staging.execute("SELECT id_num, source_key FROM person ORDER BY id_num").fetchall()
+    if not staged:
+        return 0
+    keys = [key for _id, key in staged if key is not None]
+    known = dict(
+        conn.execute(
+            "SELECT source_key, id_num FROM person WHERE source_key = ANY(%s)", (keys,)
+        ).fetchall()
+    )
+    (last,) = conn.execute("SELECT coalesce(max(id_num), 0) FROM person").fetchone()
+    own = [int(i) for i, key in staged if key is None]
+    next_id = max([int(last), *own]) + 1
+    new_id: dict[int, int] = {}
+    for id_num, key in staged:
+        if key is None:
+            new_id[id_num] = id_num
+        elif key in known:
+            new_id[id_num] = int(known[key])
+        else:
+            new_id[id_num] = next_id
+            next_id += 1
+    replaced = sorted(set(new_id.values()))
+    for table in _tables_of_people():
+        conn.execute(f"DELETE FROM {table} WHERE id_num = ANY(%s)", (replaced,))
+    for table in ("person", *_tables_of_people()[:-1]):
+        columns = [r[1] for r in staging.execute(f"PRAGMA table_info({table})")]
+        at = columns.index("id_num")
+
+        def rows(table: str = table, columns: list[str] = columns, at: int = at) -> Iterator[Any]:
+            for row in staging.execute(f"SELECT {', '.join(columns)} FROM {table}"):
+                values = list(row)
+                values[at] = new_id[values[at]]
+                yield values
+
+        conn.copy_rows(table, columns, rows())
+    return len(staged)

@@ -1,0 +1,28 @@
+"""The Textual private API sass uses, in one place.
+
+Textual has no public way to ask which keys a widget or a screen binds: its
+class's `BINDINGS` merged with its base classes' (`inherit_bindings`) and
+any bound at run time.  sass needs the answer twice: a screen runs its own
+bindings in the order keys arrive, after the focused widgets' own
+(ui/base.py, ui/widgets/editor.py), and the help screen and the command palette list
+every screen's bindings, shown or not (ui/palette.py).  Both read Textual's
+`DOMNode._bindings` (an instance's map) and `DOMNode._merge_bindings()` (a
+class's), here only; tests/ui/test_textual_api.py fails, naming what moved,
+when a Textual release renames or reshapes either.
+"""
+
+from __future__ import annotations
+
+from textual.binding import BindingsMap
+from textual.dom import DOMNode
+
+
+def bindings_of(node: DOMNode) -> BindingsMap:
+    """The keys `node` binds now (its class's, merged, and any bound since)."""
+    bindings: BindingsMap = node._bindings
+    return bindings
+
+
+def class_bindings(node_class: type[DOMNode]) -> BindingsMap:
+    """The keys an instance of `node_class` starts with."""
+    return node_class._merge_bindings()

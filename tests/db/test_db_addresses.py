@@ -1,0 +1,51 @@
+"""A PostgreSQL address given to a command that reads a SQLite file is refused
+with a message naming the commands that take one, and no file is made."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+from sass_tui.cli import main
+from sass_tui.db.addresses import is_url
+
+URL = "postgresql://lab@dbhost.invalid/sass"
+
+
+def test_addresses_and_files_are_told_apart():
+    assert is_url(URL) and is_url("POSTGRES://x/y")
+    assert not is_url("postgresql.db") and not is_url(None)
+
+
+def test_a_sqlite_verb_refuses_an_address(capsys, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main(["fit", "--db", URL, "stature <= 190 cm"]) == 2
+    err = capsys.readouterr().err
+    assert "reads a SQLite file only" in err and "sass query" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_tui_refuses_an_address_from_sass_db(tmp_path):
+    env = dict(os.environ, SASS_DB=URL)
+    done = subprocess.run(
+        [sys.executable, "-m", "sass_tui"],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        timeout=60,
+        stdin=subprocess.DEVNULL,
+    )
+    assert done.returncode == 2
+    assert "the spreadsheet (TUI) reads a SQLite file only" in done.stderr
+    assert "Traceback" not in done.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_default_path_is_never_made_of_an_address(monkeypatch, capsys, tmp_path):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("SASS_DB", URL)
+    assert main(["population", "--query", "stature > 1", "-o", "x.dat"]) == 2
+    assert "SQLite file only" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []

@@ -1,0 +1,42 @@
+"""`sass serve --read-only`: a database opened read-only (SQLite's mode=ro)
+answers queries (the query lists are TEMP tables) and refuses every change,
+leaving the file as it was."""
+
+from __future__ import annotations
+
+import hashlib
+import sqlite3
+
+import pytest
+from big_flat_files import write_big_flat_files
+
+from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.schema import connect
+
+
+def digest(path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def test_a_read_only_database_is_queried_and_never_changed(default_db_file, tmp_path):
+    path = tmp_path / "sass.db"
+    path.write_bytes(default_db_file.read_bytes())
+    before = digest(path)
+    with connect(path) as conn:  # the same question, read-write (real people: db/scope.py)
+        males = conn.execute(
+            "SELECT count(*) FROM person WHERE gender = 'male' AND source != 'synthetic'"
+        ).fetchone()[0]
+    assert males > 0
+    lists = QueryLists.open(path, read_only=True)
+    try:
+        assert lists.run("gender = male") == males
+        assert lists.count(QUERY_LIST) == males
+        lists.select_all()
+        assert lists.count(SELECTED_LIST) == males
+        with pytest.raises(DB_ERRORS):
+            lists.import_files(write_big_flat_files(tmp_path / "flat", people=3))
+        with pytest.raises(sqlite3.OperationalError, match="readonly"):
+            lists._conn.execute("DELETE FROM person")
+    finally:
+        lists.close()
+    assert digest(path) == before
