@@ -16,21 +16,25 @@ from sass_tui.ui.query_messages import PopulationMade
 class PopulationCommands(QueryScreenBase):
     def action_choose_target(self) -> None:
         """Pick a target population: counts, Fit Test and Make Population weighted to it."""
-        from sass_tui.ui.target_picker import pick_target
 
         if self.running or self.lists is None:
             self.say(WAIT if self.running else "The database is not open yet.")
             return
 
-        def chosen(name: str) -> None:
-            self.target = name or None
-            self.say(
-                f"Target {name}: query counts, Fit Test and Make Population are weighted to it."
-                if name
-                else "No target: the people unweighted."
-            )
+        self.converse(self._choose_target(self.lists))
 
-        pick_target(self, self.lists, self.target, chosen)
+    async def _choose_target(self, lists: QueryLists) -> None:
+        from sass_tui.ui.target_picker import pick_target
+
+        name = await pick_target(self, lists, self.target)
+        if name is None:
+            return
+        self.target = name or None
+        self.say(
+            f"Target {name}: query counts, Fit Test and Make Population are weighted to it."
+            if name
+            else "No target: the people unweighted."
+        )
 
     # --- Make Population (issue 12) ----------------------------------------------------
     def action_make_population(self) -> None:
