@@ -111,7 +111,14 @@ class SassScreen(Screen):
         return await self.message_line.answer_to(prompt, initial)
 
     async def on_key(self, event: events.Key) -> None:
-        if self.message_line.prompting:
+        line = self.message_line
+        if line.prompting:
+            if not line.answer.display:
+                # A conversation whose first question is not shown yet: the
+                # key is its answer's, never a command (converse).
+                event.stop()
+                event.prevent_default()
+                line.type_ahead(event.key, event.character)
             return  # the prompt's own keys (Enter, Escape) are the answer's bindings
         node: DOMNode | None = self.focused
         while node is not None and node is not self:

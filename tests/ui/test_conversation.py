@@ -5,8 +5,11 @@ message line; a bug in it is not swallowed."""
 
 from __future__ import annotations
 
+import asyncio
+
 import pytest
 from _screen import message, wait_until
+from test_query_screen import open_query_screen
 from textual.widgets import Input
 
 from sass_tui.model.figfile import read_fig
@@ -108,3 +111,30 @@ def test_a_bug_in_the_questions_is_raised_not_swallowed(app_at, drive):
 
     with pytest.raises(Bug):
         drive(scenario())
+
+
+def test_keys_before_the_first_question_are_its_answer(app_at, drive):
+    # Keys typed after the command's key but before its first question shows
+    # (its coroutine has not asked yet) are the answer's, not the screen's
+    # commands: on the query screen x is Delete One and s Select One.
+    answers = []
+
+    async def scenario():
+        async with app_at(SIZE, db=True) as (app, pilot):
+            screen = await open_query_screen(pilot)
+            asked = asyncio.Event()
+
+            async def late_question():
+                await asked.wait()
+                answers.append(await screen.answer_to("Q:"))
+
+            screen.converse(late_question())
+            await pilot.press("x", "s")
+            assert not screen.message_line.answer.display  # not asked yet
+            asked.set()
+            await until(pilot, lambda: "Q:" in message(app))
+            await pilot.press("enter")
+            await until(pilot, lambda: answers)
+
+    drive(scenario())
+    assert answers == ["xs"]
