@@ -131,8 +131,9 @@ class MessageLine(Horizontal):
 
     # --- a conversation: questions awaited one after another ----------------------
     def hold(self) -> None:
-        """A conversation is about to start (its worker runs soon): from now
-        the keys typed are its first question's."""
+        """A conversation is about to start (its task runs soon, SassScreen.
+        converse): from now the keys typed are its first question's, even
+        before the question shows."""
         self._held = True
 
     @asynccontextmanager
