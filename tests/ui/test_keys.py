@@ -1,5 +1,5 @@
-"""Keys that belong to a prompt stay with it, however fast they come (issue
-10), and the TUI's crash and hang defects the robustness review found."""
+"""Keys that belong to a prompt stay with it, however fast they come, and the
+TUI's crash and hang defects the robustness review found."""
 
 from __future__ import annotations
 
