@@ -28,7 +28,7 @@ here and only when a PostgreSQL address is given.
 from __future__ import annotations
 
 import sqlite3
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, TypeVar
@@ -117,6 +117,15 @@ class PostgresConnection:
         self._conn = self._connect()
         try:
             return self._conn.execute(sql, tuple(params))
+        except self._psycopg.Error as exc:
+            raise self.error(exc) from None
+
+    def executemany(self, sql: str, rows: Iterable[Sequence[object]]) -> None:
+        """Run one statement for each row (pipelined by psycopg; inside the caller's
+        transaction, as a write is)."""
+        try:
+            with self._conn.cursor() as cursor:
+                cursor.executemany(sql, [tuple(row) for row in rows])
         except self._psycopg.Error as exc:
             raise self.error(exc) from None
 

@@ -65,8 +65,11 @@ def interruptible(
 ) -> Iterator[None]:
     """Abort a running statement once `cancel` is set; raises Cancelled instead
     of SQLite's "interrupted" (the caller's transaction rolls back)."""
-    if cancel is None:
+    if cancel is None or getattr(conn, "dialect", "sqlite") != "sqlite":
+        # PostgreSQL: the cancel is seen between statements (the Steps around them).
         yield
+        if cancel is not None and cancel.is_set():
+            raise Cancelled(what)
         return
     conn.set_progress_handler(lambda: 1 if cancel.is_set() else 0, HANDLER_INSTRUCTIONS)
     try:

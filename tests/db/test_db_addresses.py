@@ -1,5 +1,6 @@
 """A PostgreSQL address given to a command that reads a SQLite file is refused
-with a message naming the commands that take one, and no file is made."""
+with a message naming the commands that take one, and no file is made; the
+commands that take one try the server (and say when it cannot be reached)."""
 
 from __future__ import annotations
 
@@ -7,8 +8,10 @@ import os
 import subprocess
 import sys
 
+import pytest
+
 from sass_tui.cli import main
-from sass_tui.db.addresses import is_url
+from sass_tui.db.addresses import POSTGRES_COMMANDS, is_url
 
 URL = "postgresql://lab@dbhost.invalid/sass"
 
@@ -20,9 +23,28 @@ def test_addresses_and_files_are_told_apart():
 
 def test_a_sqlite_verb_refuses_an_address(capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    assert main(["fit", "--db", URL, "stature <= 190 cm"]) == 2
+    assert main(["fig", "--person", "17", "--db", URL, "-o", "x.fig"]) == 2
     err = capsys.readouterr().err
-    assert "reads a SQLite file only" in err and "sass query" in err
+    assert "reads a SQLite file only" in err
+    for verb in ("query", "person", "fit", "target", "db"):
+        assert f"`sass {verb}" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["fit", "stature <= 190 cm"],
+        ["target", "--list"],
+    ],
+)
+def test_the_verbs_that_take_an_address_try_the_server(capsys, tmp_path, monkeypatch, argv):
+    pytest.importorskip("psycopg")
+    assert argv[0] in POSTGRES_COMMANDS
+    monkeypatch.chdir(tmp_path)
+    assert main([*argv, "--db", "postgresql://nobody@127.0.0.1:1/none"]) == 2
+    err = capsys.readouterr().err
+    assert "cannot reach the PostgreSQL server" in err and "Traceback" not in err
     assert list(tmp_path.iterdir()) == []
 
 
@@ -46,6 +68,6 @@ def test_the_tui_refuses_an_address_from_sass_db(tmp_path):
 def test_a_default_path_is_never_made_of_an_address(monkeypatch, capsys, tmp_path):
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("SASS_DB", URL)
-    assert main(["population", "--query", "stature > 1", "-o", "x.dat"]) == 2
+    assert main(["fig", "--person", "17", "-o", "x.fig"]) == 2
     assert "SQLite file only" in capsys.readouterr().err
     assert list(tmp_path.iterdir()) == []

@@ -1,0 +1,99 @@
+"""The verbs that compute over many people give the same answers on SQLite
+and PostgreSQL after `sass db init`: `fit` (table and JSON) and `target` (the
+stored weights, through every verb that reads them).  The fixtures `cluster`
+and `initialised` are conftest.py's (a throwaway PostgreSQL cluster)."""
+
+from __future__ import annotations
+
+import json
+import re
+
+import pytest
+from test_targets import civilian_women, write_sample
+
+from sass_tui.cli import main
+
+
+def both(capsys, initialised, *argv: str) -> dict[str, str]:
+    """What `sass ARGV --db <engine>` prints on each engine (it must succeed)."""
+    printed = {}
+    for engine, target in initialised.items():
+        assert main([*argv, "--db", target]) == 0, capsys.readouterr().err
+        printed[engine] = capsys.readouterr().out
+    return printed
+
+
+@pytest.fixture(scope="module")
+def with_target(initialised, tmp_path_factory) -> dict[str, str]:
+    """The target `civ` (women weighted to a civilian-like sample) made on both
+    engines; what `sass target` printed on each."""
+    sample = write_sample(tmp_path_factory.mktemp("sample") / "civ.csv", civilian_women(3000))
+    made = {}
+    for engine, target in initialised.items():
+        argv = ["target", "civ", "--force", "--gender", "female", "--sample", str(sample)]
+        assert main([*argv, "--db", target]) == 0
+        made[engine] = target
+    return made
+
+
+LIMITS = (
+    "stature <= 190 cm AND measure.sittingheight <= 100 cm AND mass <= 110 kg "
+    "AND branch != 'Combat Arms'"
+)
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["fit", LIMITS],
+        ["fit", "--format", "json", "--failing", "--mix", "male=0.8", LIMITS],
+        ["fit", "--population", "gender = female AND age < 30", "stature <= 165 cm"],
+        ["fit", "--strength", "knee_extension >= 150 N-m at knee_y=60", "stature <= 190 cm"],
+        [
+            "fit",
+            "--format",
+            "json",
+            "--population",
+            "source = synthetic",
+            "strength.elbow_flexion.max > 20 ft-lb AND girth.right_upper_arm.z > 28 cm",
+        ],
+    ],  # fmt: skip
+)
+def test_fit_prints_the_same_on_both_engines(initialised, capsys, argv):
+    printed = both(capsys, initialised, *argv)
+    assert printed["postgresql"] == printed["sqlite"]
+    if "json" in argv:
+        result = json.loads(printed["sqlite"])
+        shares = [g["percent"] for k, g in result["accommodated"].items() if k != "weighted"]
+        assert any(0 < s < 100 for s in shares), shares  # not a vacuous agreement
+        if "--failing" in argv:
+            assert len(result["failing"]) > 10
+
+
+def test_a_target_is_the_same_on_both_engines(with_target, initialised, capsys):
+    listed = both(capsys, initialised, "target", "--list")
+    created = re.compile(r"; \d{4}-\d\d-\d\dT[0-9:+]+$", re.M)
+    assert created.sub("", listed["postgresql"]) == created.sub("", listed["sqlite"])
+    assert "effective n" in listed["sqlite"]
+    # the weights, read back by each verb that takes --target
+    limits = "stature <= 165 cm AND mass <= 80 kg"
+    fitted = both(capsys, initialised, "fit", "--format", "json", "--target", "civ", limits)
+    assert fitted["postgresql"] == fitted["sqlite"]
+    assert json.loads(fitted["sqlite"])["target"]["percent"] > 0
+    counted = both(capsys, initialised, "query", "--count", "--target", "civ", "stature <= 165 cm")
+    assert counted["postgresql"] == counted["sqlite"] and "weighted:" in counted["sqlite"]
+
+
+@pytest.mark.slow
+def test_a_target_is_dropped_on_postgresql(initialised, cluster, tmp_path, capsys):
+    url = cluster.create_database("targets")
+    assert main(["db", "init", "--force", "--db", url]) == 0
+    sample = write_sample(tmp_path / "civ.csv", civilian_women(500))
+    argv = ["target", "t1", "--gender", "female", "--sample", str(sample), "--db", url]
+    assert main(argv) == 0
+    assert main(argv) == 2  # stored already, no --force
+    assert "exists" in capsys.readouterr().err
+    assert main(["target", "--drop", "t1", "--db", url]) == 0
+    capsys.readouterr()
+    assert main(["target", "--list", "--db", url]) == 0
+    assert capsys.readouterr().out.startswith("no targets")
