@@ -1,12 +1,14 @@
 """The verbs that compute over many people give the same answers on SQLite
-and PostgreSQL after `sass db init`: `fit` (table and JSON) and `target` (the
-stored weights, through every verb that reads them).  The fixtures `cluster`
-and `initialised` are conftest.py's (a throwaway PostgreSQL cluster)."""
+and PostgreSQL after `sass db init`: `fit` (table and JSON), `target` (the
+stored weights, through every verb that reads them) and `population` (the
+files, byte for byte but the title's date).  The fixtures `cluster` and
+`initialised` are conftest.py's (a throwaway PostgreSQL cluster)."""
 
 from __future__ import annotations
 
 import json
 import re
+from pathlib import Path
 
 import pytest
 from test_targets import civilian_women, write_sample
@@ -97,3 +99,65 @@ def test_a_target_is_dropped_on_postgresql(initialised, cluster, tmp_path, capsy
     capsys.readouterr()
     assert main(["target", "--list", "--db", url]) == 0
     assert capsys.readouterr().out.startswith("no targets")
+
+
+DATE = re.compile(rb"\d{4}-\d\d-\d\d\)$", re.M)
+
+
+def files_of(folder: Path) -> dict[str, bytes]:
+    """Every file under `folder` by its relative name, the title's date blanked."""
+    return {
+        str(p.relative_to(folder)): DATE.sub(b"DATE)", p.read_bytes())
+        for p in sorted(folder.rglob("*"))
+        if p.is_file()
+    }
+
+
+def run_in(engine_dirs: dict[str, Path], initialised, capsys, *argv: str) -> dict[str, str]:
+    """`sass ARGV --db <engine>` with its output written under a folder per engine
+    (`{out}` in ARGV); what it printed, the folder's name replaced by OUT."""
+    printed = {}
+    for engine, target in initialised.items():
+        out = engine_dirs[engine]
+        args = [a.replace("{out}", str(out)) for a in argv]
+        assert main([*args, "--db", target]) == 0, capsys.readouterr().err
+        captured = capsys.readouterr()
+        printed[engine] = (captured.out + captured.err).replace(str(out), "OUT")
+    return printed
+
+
+@pytest.fixture()
+def engine_dirs(tmp_path) -> dict[str, Path]:
+    dirs = {"sqlite": tmp_path / "sqlite", "postgresql": tmp_path / "postgresql"}
+    for folder in dirs.values():
+        folder.mkdir()
+    return dirs
+
+
+@pytest.mark.slow
+def test_population_files_are_the_same_on_both_engines(
+    initialised, with_target, engine_dirs, capsys, tmp_path
+):
+    ids = tmp_path / "ids.csv"
+    assert main(["query", "--format", "csv", "--db", initialised["sqlite"], "stature > 160 cm"
+                 " AND source = synthetic"]) == 0  # fmt: skip
+    ids.write_text(capsys.readouterr().out + "999999\n", encoding="utf-8")
+    for argv in (
+        ["population", "--query", "gender = female AND age < 25", "-o", "{out}/young.dat"],
+        ["population", "--ids", str(ids), "-o", "{out}/listed.dat"],
+        [
+            "population",
+            "--ids",
+            str(ids),
+            "--query",
+            "gender = male AND source = synthetic",
+            "-o",
+            "{out}/men.dat",
+        ],
+        ["population", "--target", "civ", "-o", "{out}/civ.dat"],
+    ):
+        printed = run_in(engine_dirs, initialised, capsys, *argv)
+        assert printed["postgresql"] == printed["sqlite"]
+    made = {engine: files_of(folder) for engine, folder in engine_dirs.items()}
+    assert made["postgresql"] == made["sqlite"]
+    assert len(made["sqlite"]) == 4 * 2 + 1  # girth and cmass each, and the target's global
