@@ -36,6 +36,13 @@ def ids_in(conn: Any, column: str, ids: Sequence[int]) -> tuple[str, object]:
     return f"{column} = ANY(%s)", numbers
 
 
+def total(conn: Any, expression: str) -> str:
+    """SQLite's total(x) (a float, 0.0 over no rows) in the connection's SQL."""
+    if dialect_of(conn) == "sqlite":
+        return f"total({expression})"
+    return f"coalesce(sum({expression}), 0)::float8"
+
+
 @contextmanager
 def writing(conn: Any) -> Iterator[Any]:
     """One write transaction: committed at the end, rolled back on any error.

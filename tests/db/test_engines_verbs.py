@@ -1,12 +1,14 @@
 """The verbs that compute over many people give the same answers on SQLite
 and PostgreSQL after `sass db init`: `fit` (table and JSON), `target` (the
-stored weights, through every verb that reads them) and `population` (the
-files, byte for byte but the title's date).  The fixtures `cluster` and
-`initialised` are conftest.py's (a throwaway PostgreSQL cluster)."""
+stored weights, through every verb that reads them), `population` (the files,
+byte for byte but the title's date) and `predict` (numbers within
+floating-point noise).  The fixtures `cluster` and `initialised` are
+conftest.py's (a throwaway PostgreSQL cluster)."""
 
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -161,3 +163,67 @@ def test_population_files_are_the_same_on_both_engines(
     made = {engine: files_of(folder) for engine, folder in engine_dirs.items()}
     assert made["postgresql"] == made["sqlite"]
     assert len(made["sqlite"]) == 4 * 2 + 1  # girth and cmass each, and the target's global
+
+
+def close(a: object, b: object) -> bool:
+    """Equal, numbers within floating-point noise (relative 1e-9)."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        return a.keys() == b.keys() and all(close(a[k], b[k]) for k in a)
+    if isinstance(a, list) and isinstance(b, list):
+        return len(a) == len(b) and all(close(x, y) for x, y in zip(a, b))
+    if isinstance(a, float) and isinstance(b, (int, float)):
+        return math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-9)
+    return a == b
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    "argv",
+    [
+        [
+            "--gender",
+            "male",
+            "--known",
+            "stature=175.5cm",
+            "--known",
+            "mass=82.2kg",
+            "--nearest",
+            "5",
+        ],
+        [
+            "--gender",
+            "female",
+            "--population",
+            "branch = 'Combat Arms'",
+            "--known",
+            "stature=165cm",
+        ],
+    ],  # fmt: skip
+)
+def test_predict_gives_the_same_numbers_on_both_engines(initialised, capsys, argv):
+    printed = both(capsys, initialised, "predict", "--format", "json", *argv)
+    sqlite, postgresql = (json.loads(printed[e]) for e in ("sqlite", "postgresql"))
+    assert close(postgresql, sqlite)
+    assert sqlite["model"]["n"] > 20 and len(sqlite["predicted"]) > 50
+
+
+@pytest.mark.slow
+def test_predict_csv_batch_on_both_engines(initialised, engine_dirs, capsys, tmp_path):
+    known = tmp_path / "known.csv"
+    known.write_text("stature,mass\n175 cm,80 kg\n190 cm,95 kg\n", encoding="utf-8")
+    run_in(engine_dirs, initialised, capsys, "predict", "--gender", "male", "--input", str(known),
+           "--output", "{out}/predicted.csv")  # fmt: skip
+    rows = {}
+    for engine, folder in engine_dirs.items():
+        lines = (folder / "predicted.csv").read_text(encoding="utf-8").splitlines()
+        rows[engine] = [line.split(",") for line in lines]
+    assert rows["sqlite"][0] == rows["postgresql"][0] and len(rows["sqlite"]) == 3
+    for a, b in zip(rows["sqlite"][1:], rows["postgresql"][1:]):
+        assert close([number(x) for x in a], [number(x) for x in b])
+
+
+def number(cell: str) -> float | str:
+    try:
+        return float(cell)
+    except ValueError:
+        return cell  # an input column as given, e.g. '175 cm'
