@@ -26,7 +26,7 @@ def test_a_sqlite_verb_refuses_an_address(capsys, tmp_path, monkeypatch):
     assert main(["fig", "--person", "17", "--db", URL, "-o", "x.fig"]) == 2
     err = capsys.readouterr().err
     assert "reads a SQLite file only" in err
-    for verb in ("query", "person", "fit", "target", "population", "predict", "db"):
+    for verb in ("query", "person", "fit", "family", "population", "predict", "target", "db"):
         assert f"`sass {verb}" in err
     assert list(tmp_path.iterdir()) == []
 
@@ -35,9 +35,10 @@ def test_a_sqlite_verb_refuses_an_address(capsys, tmp_path, monkeypatch):
     "argv",
     [
         ["fit", "stature <= 190 cm"],
-        ["target", "--list"],
+        ["family", "--gender", "female", "--measures", "stature,mass", "-o", "F"],
         ["population", "--query", "stature > 1", "-o", "x.dat"],
         ["predict", "--gender", "male", "--known", "stature=180cm"],
+        ["target", "--list"],
     ],
 )
 def test_the_verbs_that_take_an_address_try_the_server(capsys, tmp_path, monkeypatch, argv):

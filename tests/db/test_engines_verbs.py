@@ -1,9 +1,9 @@
 """The verbs that compute over many people give the same answers on SQLite
 and PostgreSQL after `sass db init`: `fit` (table and JSON), `target` (the
 stored weights, through every verb that reads them), `population` (the files,
-byte for byte but the title's date) and `predict` (numbers within
-floating-point noise).  The fixtures `cluster` and `initialised` are
-conftest.py's (a throwaway PostgreSQL cluster)."""
+byte for byte but the title's date), `predict` (numbers within floating-point
+noise) and `family` (manikins and coverage).  The fixtures `cluster` and
+`initialised` are conftest.py's (a throwaway PostgreSQL cluster)."""
 
 from __future__ import annotations
 
@@ -227,3 +227,31 @@ def number(cell: str) -> float | str:
         return float(cell)
     except ValueError:
         return cell  # an input column as given, e.g. '175 cm'
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["--gender", "female", "--measures", "stature,mass,sittingheight", "--coverage", "90"],
+        [
+            "--gender",
+            "male",
+            "--measures",
+            "stature,mass",
+            "--kind",
+            "distributed",
+            "--coverage",
+            "95",
+            "--population",
+            "branch = 'Combat Arms'",
+        ],
+        ["--gender", "female", "--measures", "stature,mass", "--coverage", "90", "--target", "civ"],
+    ],  # fmt: skip
+)
+def test_family_is_the_same_on_both_engines(initialised, with_target, engine_dirs, capsys, argv):
+    printed = run_in(engine_dirs, initialised, capsys, "family", *argv, "-o", "{out}/family")
+    assert printed["postgresql"] == printed["sqlite"]
+    assert "inside the ellipsoid" in printed["sqlite"]
+    made = {engine: files_of(folder) for engine, folder in engine_dirs.items()}
+    assert made["postgresql"] == made["sqlite"] and len(made["sqlite"]) > 3
