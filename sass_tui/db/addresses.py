@@ -7,10 +7,11 @@ from __future__ import annotations
 from pathlib import Path
 
 URL_PREFIXES = ("postgresql://", "postgres://")
-# The verbs that take a PostgreSQL database; the others (and the TUI) read a SQLite file.
+# The verbs that take a PostgreSQL database, as the TUI does; the others read a SQLite file.
 POSTGRES_COMMANDS = ("query", "person", "fit", "target", "population", "predict", "family")
 POSTGRES_VERBS = (
-    ", ".join(f"`sass {verb}`" for verb in POSTGRES_COMMANDS)
+    "`sass` (the spreadsheet), "
+    + ", ".join(f"`sass {verb}`" for verb in POSTGRES_COMMANDS)
     + " and `sass db init | import-ansur | import-flat`"
 )
 

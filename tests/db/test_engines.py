@@ -44,7 +44,7 @@ QUERIES = [
 
 needs_postgres = pytest.mark.skipif(why_not() is not None, reason=f"PostgreSQL: {why_not()}")
 
-# The fixtures `cluster` and `initialised` (both engines after `sass db init`): conftest.py.
+# The fixtures `cluster` and `initialised` (both engines after `sass db init`): tests/conftest.py.
 
 
 def answers(target: str, text: str) -> tuple[int, list[dict]]:

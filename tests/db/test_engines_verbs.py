@@ -3,7 +3,7 @@ and PostgreSQL after `sass db init`: `fit` (table and JSON), `target` (the
 stored weights, through every verb that reads them), `population` (the files,
 byte for byte but the title's date), `predict` (numbers within floating-point
 noise) and `family` (manikins and coverage).  The fixtures `cluster` and
-`initialised` are conftest.py's (a throwaway PostgreSQL cluster)."""
+`initialised` are tests/conftest.py's (a throwaway PostgreSQL cluster)."""
 
 from __future__ import annotations
 
@@ -255,3 +255,44 @@ def test_family_is_the_same_on_both_engines(initialised, with_target, engine_dir
     assert "inside the ellipsoid" in printed["sqlite"]
     made = {engine: files_of(folder) for engine, folder in engine_dirs.items()}
     assert made["postgresql"] == made["sqlite"] and len(made["sqlite"]) > 3
+
+
+# --- the query screen's lists (the TUI's database work) ------------------------
+
+
+def lists_work(target: str) -> dict[str, object]:
+    """Everything the query screen asks of its lists, on one engine."""
+    from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+
+    lists = QueryLists.open(target)
+    try:
+        seen: dict[str, object] = {}
+        seen["run"] = lists.run("gender = female AND stature > 175 cm")
+        first = lists.page(QUERY_LIST, 0, 10)
+        seen["page"] = first
+        assert lists.select_one(first[3]["id"]) and not lists.select_one(first[3]["id"])
+        assert lists.select_one(first[1]["id"])
+        seen["after select"] = (lists.count(QUERY_LIST), lists.count(SELECTED_LIST))
+        seen["selected"] = lists.selected_ids()  # in the order selected
+        seen["rerun"] = lists.run("gender = female AND stature > 175 cm")  # the selected stay out
+        seen["ranges"] = lists.run("stature > 170 cm", progress=lambda done, total: None)
+        seen["select all"] = lists.select_all()
+        assert lists.delete_one(SELECTED_LIST, seen["selected"][0])  # type: ignore[index]
+        seen["selected page"] = lists.page(SELECTED_LIST, 0, 5)
+        seen["person"] = lists.fetch_selected(0).name
+        fit, histograms = lists.fit_test("stature <= 190 cm AND mass <= 100 kg", "source = ansur2")
+        seen["fit"] = fit.to_json()
+        seen["histograms"] = [(h.field, h.edges.tolist(), h.missing) for h in histograms]
+        population = lists.population_of(tuple(lists.selected_ids()), "the selected people")
+        seen["population"] = (population.counts, population.modelled)
+        seen["hint"] = lists.demonstration_hint("strength.elbow_flexion.max > 20 ft-lb")
+        return seen
+    finally:
+        lists.close()
+
+
+@pytest.mark.slow
+def test_the_query_screens_lists_work_the_same_on_both_engines(initialised):
+    sqlite, postgresql = (lists_work(initialised[e]) for e in ("sqlite", "postgresql"))
+    assert close(postgresql, sqlite), [k for k in sqlite if not close(postgresql[k], sqlite[k])]
+    assert sqlite["run"] > 10 and sqlite["select all"] > 100 and sqlite["hint"]
