@@ -8,7 +8,18 @@ from pathlib import Path
 
 URL_PREFIXES = ("postgresql://", "postgres://")
 # The verbs that take a PostgreSQL database, as the TUI does; the others read a SQLite file.
-POSTGRES_COMMANDS = ("query", "person", "fit", "target", "population", "predict", "family")
+POSTGRES_COMMANDS = (
+    "query",
+    "person",
+    "fit",
+    "target",
+    "population",
+    "predict",
+    "family",
+    "fig",
+    "export",
+    "strength",
+)
 POSTGRES_VERBS = (
     "`sass` (the spreadsheet), "
     + ", ".join(f"`sass {verb}`" for verb in POSTGRES_COMMANDS)

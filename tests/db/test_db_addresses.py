@@ -19,10 +19,10 @@ def test_addresses_and_files_are_told_apart():
 
 def test_a_sqlite_verb_refuses_an_address(capsys, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    assert main(["fig", "--person", "17", "--db", URL, "-o", "x.fig"]) == 2
+    assert main(["serve", "--port", "0", "--db", URL]) == 2
     err = capsys.readouterr().err
-    assert "reads a SQLite file only" in err
-    for verb in ("query", "person", "fit", "family", "population", "predict", "target", "db"):
+    assert "`sass serve` reads a SQLite file only" in err and "`sass` (the spreadsheet)" in err
+    for verb in POSTGRES_COMMANDS + ("db",):
         assert f"`sass {verb}" in err
     assert list(tmp_path.iterdir()) == []
 
@@ -35,6 +35,9 @@ def test_a_sqlite_verb_refuses_an_address(capsys, tmp_path, monkeypatch):
         ["population", "--query", "stature > 1", "-o", "x.dat"],
         ["predict", "--gender", "male", "--known", "stature=180cm"],
         ["target", "--list"],
+        ["fig", "--person", "17", "-o", "x.fig"],
+        ["export", "hanim", "--person", "17", "-o", "x.x3d"],
+        ["strength", "--person", "17", "knee_extension", "knee_y=60"],
     ],
 )
 def test_the_verbs_that_take_an_address_try_the_server(capsys, tmp_path, monkeypatch, argv):
@@ -58,6 +61,6 @@ def test_sass_serve_refuses_an_address_from_sass_db(tmp_path, monkeypatch, capsy
 def test_a_default_path_is_never_made_of_an_address(monkeypatch, capsys, tmp_path):
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("SASS_DB", URL)
-    assert main(["fig", "--person", "17", "-o", "x.fig"]) == 2
+    assert main(["serve", "--port", "0", "--read-only"]) == 2
     assert "SQLite file only" in capsys.readouterr().err
     assert list(tmp_path.iterdir()) == []

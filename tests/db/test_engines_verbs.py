@@ -2,8 +2,9 @@
 and PostgreSQL after `sass db init`: `fit` (table and JSON), `target` (the
 stored weights, through every verb that reads them), `population` (the files,
 byte for byte but the title's date), `predict` (numbers within floating-point
-noise) and `family` (manikins and coverage).  The fixtures `cluster` and
-`initialised` are tests/conftest.py's (a throwaway PostgreSQL cluster)."""
+noise), `family` (manikins and coverage), the query screen's lists, and a
+person by `--person` (`fig`, `export`, `strength`).  The fixtures `cluster`
+and `initialised` are tests/conftest.py's (a throwaway PostgreSQL cluster)."""
 
 from __future__ import annotations
 
@@ -296,3 +297,23 @@ def test_the_query_screens_lists_work_the_same_on_both_engines(initialised):
     sqlite, postgresql = (lists_work(initialised[e]) for e in ("sqlite", "postgresql"))
     assert close(postgresql, sqlite), [k for k in sqlite if not close(postgresql[k], sqlite[k])]
     assert sqlite["run"] > 10 and sqlite["select all"] > 100 and sqlite["hint"]
+
+
+# --- a person of the database as a figure, a humanoid, strength (--person) ---------
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["fig", "--person", "17", "-o", "{out}/person.fig"],
+        ["fig", "--person", "ANSUR II M 10032", "--percentile", "5", "-o", "{out}/person.fig"],
+        ["export", "hanim", "--person", "ansur ii f 10037", "-o", "{out}/person.x3d"],
+        ["strength", "--person", "17", "--format", "json", "knee_extension", "knee_y=60"],
+    ],
+)
+def test_a_person_is_the_same_on_both_engines(initialised, engine_dirs, capsys, argv):
+    printed = run_in(engine_dirs, initialised, capsys, *argv)
+    assert printed["postgresql"] == printed["sqlite"]
+    made = {engine: files_of(folder) for engine, folder in engine_dirs.items()}
+    assert made["postgresql"] == made["sqlite"]
+    assert made["sqlite"] or '"person"' in printed["sqlite"] or "17" in printed["sqlite"]
