@@ -99,14 +99,24 @@ class QueryLists:
         self.last_query: str | None = None
         self.dialect = dialect_of(conn)
         self._mark = mark_of(conn)
-        # seq numbers the selected people in the order they were selected.
+        self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
         if self.dialect == "sqlite":
             conn.execute("PRAGMA temp_store = MEMORY")
+        else:
+            # A PostgreSQL connection opened again after a server restart has
+            # lost its TEMP tables: the lists start again, empty.
+            conn.on_reconnect.append(self._make_lists)
+        self._make_lists()
+
+    def _make_lists(self) -> None:
+        """The TEMP tables of the lists (empty); seq numbers the selected people
+        in the order they were selected."""
+        if self.dialect == "sqlite":
             key, seq = "INTEGER", "seq INTEGER PRIMARY KEY"  # SQLite's rowid
         else:
             key, seq = "BIGINT", "seq BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY"
-        conn.execute(f"CREATE TEMP TABLE IF NOT EXISTS query_list (id_num {key} PRIMARY KEY)")
-        conn.execute(
+        self._conn.execute(f"CREATE TEMP TABLE IF NOT EXISTS query_list (id_num {key} PRIMARY KEY)")
+        self._conn.execute(
             f"CREATE TEMP TABLE IF NOT EXISTS selected_list ({seq}, id_num {key} NOT NULL UNIQUE)"
         )
         self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}

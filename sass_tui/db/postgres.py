@@ -88,6 +88,9 @@ class PostgresConnection:
         self._psycopg = _driver()
         self._conn = self._connect()
         self._depth = 0  # open transaction() blocks
+        # Called after the connection was opened again (a server restart): what
+        # lived in the old session, e.g. TEMP tables (db/lists.py), is gone.
+        self.on_reconnect: list[Callable[[], None]] = []
 
     def _connect(self) -> Any:
         try:
@@ -115,6 +118,8 @@ class PostgresConnection:
             raise self.error(exc) from None
         # The connection broke between statements (a server restart): open it again once.
         self._conn = self._connect()
+        for reopened in self.on_reconnect:
+            reopened()
         try:
             return self._conn.execute(sql, tuple(params))
         except self._psycopg.Error as exc:

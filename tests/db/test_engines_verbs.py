@@ -317,3 +317,26 @@ def test_a_person_is_the_same_on_both_engines(initialised, engine_dirs, capsys, 
     made = {engine: files_of(folder) for engine, folder in engine_dirs.items()}
     assert made["postgresql"] == made["sqlite"]
     assert made["sqlite"] or '"person"' in printed["sqlite"] or "17" in printed["sqlite"]
+
+
+@pytest.mark.slow
+def test_the_lists_on_postgresql_import_and_outlive_a_restart(cluster, ansur_dir):
+    """The query screen's Input DB imports into PostgreSQL (staged, one
+    transaction); after a server restart the lists start again, empty, and work."""
+    from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+
+    url = cluster.create_database("lists")
+    assert main(["db", "init", "--force", "--db", url]) == 0
+    lists = QueryLists.open(url)
+    try:
+        female = ansur_dir / "ANSUR_II_FEMALE_Public.csv"
+        women = lists.import_ansur(female, "desk")
+        assert women > 1000 and lists.run("source = desk") == women
+        lists.select_one(lists.page(QUERY_LIST, 0, 1)[0]["id"])
+        assert lists.count(SELECTED_LIST) == 1
+        cluster.restart()
+        assert lists.page(SELECTED_LIST, 0, 5) == []
+        assert (lists.count(QUERY_LIST), lists.count(SELECTED_LIST)) == (0, 0)
+        assert lists.run("source = desk AND stature > 170 cm") > 0
+    finally:
+        lists.close()
