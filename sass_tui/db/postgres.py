@@ -134,6 +134,15 @@ class PostgresConnection:
         except self._psycopg.Error as exc:
             raise self.error(exc) from None
 
+    def cancel_statement(self) -> None:
+        """Ask the server to cancel the statement running now (from another
+        thread; db/progress.py's interruptible).  Its execute raises a
+        DatabaseError; a transaction around it rolls back."""
+        try:
+            self._conn.cancel()
+        except self._psycopg.Error:
+            pass  # nothing running, or the connection is gone: nothing to cancel
+
     def error(self, exc: BaseException) -> DatabaseError:
         """A driver error as a message a user can act on."""
         if isinstance(exc, DatabaseError):

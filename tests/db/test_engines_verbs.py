@@ -340,3 +340,27 @@ def test_the_lists_on_postgresql_import_and_outlive_a_restart(cluster, ansur_dir
         assert lists.run("source = desk AND stature > 170 cm") > 0
     finally:
         lists.close()
+
+
+def test_a_long_statement_on_postgresql_is_cancelled(initialised):
+    """Escape on a screen sets the cancel: a PostgreSQL statement running then
+    is cancelled by the server at once, as SQLite's is interrupted."""
+    import threading
+    import time
+
+    from sass_tui.db.database import Database
+    from sass_tui.db.progress import Cancelled, interruptible
+
+    db = Database.open(initialised["postgresql"])
+    try:
+        with db.connection() as conn:
+            cancel = threading.Event()
+            threading.Timer(0.3, cancel.set).start()
+            started = time.monotonic()
+            with pytest.raises(Cancelled):
+                with interruptible(conn, cancel, "the sleep"):
+                    conn.execute("SELECT pg_sleep(30)")
+            assert time.monotonic() - started < 10
+            assert conn.execute("SELECT 1").fetchone()[0] == 1  # the connection goes on
+    finally:
+        db.close()
