@@ -246,9 +246,14 @@ def served_workdir(name: str | None) -> Path:
 def database_path(args: argparse.Namespace, read_only: bool) -> Path | None:
     """The database the sessions open.  Read-only, it is opened (and the
     default one built on first use) here, since a session cannot build it."""
+    from sass_tui.db.addresses import is_url, sqlite_only
+    from sass_tui.db.database import configured_target
+    from sass_tui.db.schema import DatabaseError
     from sass_tui.model.paths import user_path
 
     db = getattr(args, "db", None)
+    if is_url(configured_target(db)):
+        raise DatabaseError(sqlite_only("`sass serve`"))
     if not read_only:
         return user_path(db).resolve() if db else None
     from sass_tui.cli.options import open_db
