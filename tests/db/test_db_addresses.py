@@ -17,13 +17,39 @@ def test_addresses_and_files_are_told_apart():
     assert not is_url("postgresql.db") and not is_url(None)
 
 
-def test_a_sqlite_verb_refuses_an_address(capsys, tmp_path, monkeypatch):
+def test_sass_serve_hands_an_address_to_its_sessions_in_the_environment(tmp_path, monkeypatch):
+    """A served session opens the PostgreSQL database the server was given;
+    the address (its password too) travels in $SASS_DB, never on a command
+    line `ps` shows."""
+    pytest.importorskip("textual_serve")
+    from sass_tui.cli.serve import database_path
+    from sass_tui.ui.serve import ServeOptions, _server_class
+
+    secret = "postgresql://lab:s3cret@dbhost.invalid/sass"
+    monkeypatch.setenv("SASS_DB", secret)
+    args = type("Args", (), {"db": None})()
+    db = database_path(args, read_only=False)
+    assert db == secret
+    options = ServeOptions(host="127.0.0.1", port=0, token="t" * 32, workdir=tmp_path, db=db)
+    assert "s3cret" not in " ".join(options.command())
+    assert "--db" not in options.command()
+
+    async def nothing(*_args) -> None:
+        return None
+
+    service = _server_class().session_class(
+        options, write_bytes=nothing, write_str=nothing, close=nothing, download_manager=None
+    )
+    assert service._build_environment()["SASS_DB"] == secret
+
+
+def test_sass_serve_read_only_on_an_address_says_to_use_a_reading_role(
+    tmp_path, monkeypatch, capsys
+):
     monkeypatch.chdir(tmp_path)
-    assert main(["serve", "--port", "0", "--db", URL]) == 2
+    assert main(["serve", "--port", "0", "--read-only", "--db", URL]) == 2
     err = capsys.readouterr().err
-    assert "`sass serve` reads a SQLite file only" in err and "`sass` (the spreadsheet)" in err
-    for verb in POSTGRES_COMMANDS + ("db",):
-        assert f"`sass {verb}" in err
+    assert "--read-only opens a SQLite file read-only" in err and "GRANT SELECT" in err
     assert list(tmp_path.iterdir()) == []
 
 
@@ -50,17 +76,9 @@ def test_the_verbs_that_take_an_address_try_the_server(capsys, tmp_path, monkeyp
     assert list(tmp_path.iterdir()) == []
 
 
-def test_sass_serve_refuses_an_address_from_sass_db(tmp_path, monkeypatch, capsys):
-    monkeypatch.chdir(tmp_path)
-    monkeypatch.setenv("SASS_DB", URL)
-    assert main(["serve", "--port", "0"]) == 2
-    assert "`sass serve` reads a SQLite file only" in capsys.readouterr().err
-    assert list(tmp_path.iterdir()) == []
-
-
 def test_a_default_path_is_never_made_of_an_address(monkeypatch, capsys, tmp_path):
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("SASS_DB", URL)
     assert main(["serve", "--port", "0", "--read-only"]) == 2
-    assert "SQLite file only" in capsys.readouterr().err
+    assert "--read-only opens a SQLite file read-only" in capsys.readouterr().err
     assert list(tmp_path.iterdir()) == []
