@@ -73,6 +73,33 @@ SLOW_S = 2.0
 _unmarked_slow: list[tuple[str, float]] = []
 
 
+# --- both engines: a throwaway PostgreSQL cluster (tests/_postgres.py) ------------
+
+
+@pytest.fixture(scope="session")
+def cluster():
+    """A running PostgreSQL cluster; the test skips, saying why, where none can start."""
+    from _postgres import running_cluster, why_not
+
+    reason = why_not()
+    if reason is not None:
+        pytest.skip(f"PostgreSQL: {reason}")
+    with running_cluster() as running:
+        yield running
+
+
+@pytest.fixture(scope="session")
+def initialised(tmp_path_factory, cluster) -> dict[str, str]:
+    """One database per engine after `sass db init`: {"sqlite": path, "postgresql": url}."""
+    from sass_tui.cli import main
+
+    sqlite_path = str(tmp_path_factory.mktemp("engines") / "sass.db")
+    url = cluster.create_database("initialised")
+    for target in (sqlite_path, url):
+        assert main(["db", "init", "--force", "--db", target]) == 0
+    return {"sqlite": sqlite_path, "postgresql": url}
+
+
 def pytest_runtest_logreport(report: pytest.TestReport) -> None:
     """Note every test whose call took over SLOW_S without `@pytest.mark.slow`
     (under xdist this runs in the controller, on each worker's report)."""

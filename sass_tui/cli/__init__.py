@@ -192,11 +192,6 @@ def run_tui(db: str | None) -> int:
     # classes, CSS rules, widgets); the cyclic collector would walk them some
     # 200 times before the first screen (50-85 ms, docs/performance.md).  It
     # is off until the app has drawn that screen (SassApp.first_screen_drawn).
-    from sass_tui.db.addresses import is_url, sqlite_only
-
-    if is_url(db) or (db is None and is_url(os.environ.get("SASS_DB"))):
-        print(f"sass: error: {sqlite_only('the spreadsheet (TUI)')}", file=sys.stderr)
-        return 2
     gc.disable()
     try:
         from sass_tui.model.errors import SassError

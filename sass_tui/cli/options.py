@@ -48,15 +48,19 @@ def open_database(args: argparse.Namespace, create: bool = False):  # -> db.data
     return db
 
 
-def open_db(args: argparse.Namespace, create: bool = False):  # -> sqlite3.Connection
-    """The SQLite database `--db` names, or the default one, for the verbs that
-    read a SQLite file only (a PostgreSQL address is refused, saying which
-    verbs serve it)."""
-    from sass_tui.db.addresses import is_url, sqlite_only
+def open_db(args: argparse.Namespace, create: bool = False):  # -> the db layer's connection
+    """The connection of the database `--db` names, or of the default one, for
+    the db layer's functions that take one: a SQLite file, or a PostgreSQL
+    database for the verbs of POSTGRES_COMMANDS (db/addresses.py; for the
+    others an address is refused, saying which verbs serve it)."""
+    from sass_tui.db.addresses import POSTGRES_COMMANDS, is_url, sqlite_only
     from sass_tui.db.database import configured_target
     from sass_tui.db.schema import DatabaseError
 
-    if is_url(configured_target(getattr(args, "db", None))):
+    if (
+        is_url(configured_target(getattr(args, "db", None)))
+        and args.command not in POSTGRES_COMMANDS
+    ):
         raise DatabaseError(sqlite_only(f"`sass {args.command}`"))
     db = open_database(args, create=create)
     with db.connection() as conn:

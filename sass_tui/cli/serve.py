@@ -133,7 +133,10 @@ def run(args: argparse.Namespace) -> int:
     err = sys.stderr
     print(f"sass serve: web sessions read and write files in {workdir}", file=err)
     if db is not None:
-        print(f"sass serve: database {db}{' (read-only)' if args.read_only else ''}", file=err)
+        from sass_tui.db.postgres import shown
+
+        named = shown(db) if isinstance(db, str) else db  # never the password
+        print(f"sass serve: database {named}{' (read-only)' if args.read_only else ''}", file=err)
     if not loopback and ssl_context is None:
         print(
             f"sass serve: warning: {args.host} serves plain HTTP: anyone on the network "
@@ -243,12 +246,25 @@ def served_workdir(name: str | None) -> Path:
     return path.resolve()
 
 
-def database_path(args: argparse.Namespace, read_only: bool) -> Path | None:
-    """The database the sessions open.  Read-only, it is opened (and the
-    default one built on first use) here, since a session cannot build it."""
+def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | None:
+    """The database the sessions open: a SQLite file, or a PostgreSQL address
+    (`--db` or $SASS_DB).  A read-only file is opened (and the default one
+    built on first use) here, since a session cannot build it."""
+    from sass_tui.db.addresses import is_url
+    from sass_tui.db.database import configured_target
+    from sass_tui.db.schema import DatabaseError
     from sass_tui.model.paths import user_path
 
     db = getattr(args, "db", None)
+    target = configured_target(db)
+    if is_url(target):
+        if read_only:
+            raise DatabaseError(
+                "--read-only opens a SQLite file read-only; a PostgreSQL database is "
+                "served read-only by an address whose role may only read (GRANT SELECT; "
+                "docs/user-guide.md)"
+            )
+        return str(target)
     if not read_only:
         return user_path(db).resolve() if db else None
     from sass_tui.cli.options import open_db

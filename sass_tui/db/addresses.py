@@ -7,8 +7,24 @@ from __future__ import annotations
 from pathlib import Path
 
 URL_PREFIXES = ("postgresql://", "postgres://")
-# The commands that take a PostgreSQL database; the others read a SQLite file.
-POSTGRES_VERBS = "`sass query`, `sass person` and `sass db init | import-ansur | import-flat`"
+# The verbs that take a PostgreSQL database, as the TUI does; the others read a SQLite file.
+POSTGRES_COMMANDS = (
+    "query",
+    "person",
+    "fit",
+    "target",
+    "population",
+    "predict",
+    "family",
+    "fig",
+    "export",
+    "strength",
+)
+POSTGRES_VERBS = (
+    "`sass` (the spreadsheet), "
+    + ", ".join(f"`sass {verb}`" for verb in POSTGRES_COMMANDS)
+    + " and `sass db init | import-ansur | import-flat`"
+)
 
 
 def is_url(target: str | Path | None) -> bool:

@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
+from sass_tui.db.dialect import dialect_of, ids_in
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import compile_conjuncts, compile_query, real_people_only
 from sass_tui.model.accommodation import Family, build_family, measure_field
@@ -223,12 +224,16 @@ def fit_test(
     people = real_people_only(people)
     # The body a strength limit predicts from, only when there is one.
     body = "p.age, p.mass, p.stature, " if strength_limits else ""
-    columns = body + ", ".join(f"({t.where})" for t in terms)
+    # Each limit is a column: 1/0 (SQLite) or true/false (PostgreSQL), NULL unmeasured.
+    dialect = dialect_of(conn)
+    limit_sql = [t.sql(dialect) for t in terms]
+    where, where_params = people.sql(dialect)
+    columns = body + ", ".join(f"({condition})" for condition, _ in limit_sql)
     sql = (
         f"SELECT p.id_num, p.gender, {columns} FROM {people.from_clause()} "
-        f"WHERE {people.where} ORDER BY p.id_num"
+        f"WHERE {where} ORDER BY p.id_num"
     )
-    params = tuple(v for t in terms for v in t.params) + people.params
+    params = tuple(v for _, values in limit_sql for v in values) + where_params
     with interruptible(conn, cancel, "the fit test"):
         rows = conn.execute(sql, params).fetchall()
     steps(1, 3)
@@ -361,14 +366,10 @@ def _failing(
     fails: npt.NDArray[np.bool_],
 ) -> tuple[FailingPerson, ...]:
     rows = np.flatnonzero(fails.any(axis=1))
-    wanted = [int(i) for i in ids[rows]]
-    names: dict[int, str] = {}
-    for start in range(0, len(wanted), 900):  # SQLite's default limit on ? is 999
-        chunk = wanted[start : start + 900]
-        marks = ", ".join("?" * len(chunk))
-        names.update(
-            conn.execute(f"SELECT id_num, name FROM person WHERE id_num IN ({marks})", chunk)
-        )
+    condition, listed = ids_in(conn, "id_num", [int(i) for i in ids[rows]])
+    names: dict[int, str] = dict(
+        conn.execute(f"SELECT id_num, name FROM person WHERE {condition}", (listed,))
+    )
     return tuple(
         FailingPerson(
             id=int(ids[r]),

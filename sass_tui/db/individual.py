@@ -11,7 +11,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from sass_tui.db.query_tree import Dialect, placeholder
+from sass_tui.db.dialect import dialect_of
+from sass_tui.db.query_tree import placeholder
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
@@ -65,12 +66,6 @@ def _batch_row(row: dict[str, Any]) -> tuple[Any, ...]:
     return (0, *tuple(row.values())[1:])
 
 
-def _dialect(conn: sqlite3.Connection) -> Dialect:
-    """The engine of `conn`: SQLite's connection, or db/postgres.py's PostgresConnection."""
-    dialect: Dialect = getattr(conn, "dialect", "sqlite")
-    return dialect
-
-
 def _dicts(cursor: sqlite3.Cursor) -> list[dict[str, Any]]:
     names = [d[0] for d in cursor.description]
     return [dict(zip(names, row)) for row in cursor]
@@ -91,7 +86,7 @@ def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
     read (32 fcntl and 25 stat calls a fetch before): a third less CPU."""
     if conn.in_transaction:
         return _fetch_individual(conn, int(id_num))
-    if _dialect(conn) == "postgresql":  # one snapshot for the reads, as SQLite's one transaction
+    if dialect_of(conn) == "postgresql":  # one snapshot for the reads, as SQLite's one transaction
         with conn.transaction():  # type: ignore[attr-defined]
             conn.execute("SET TRANSACTION ISOLATION LEVEL REPEATABLE READ")
             return _fetch_individual(conn, int(id_num))
@@ -104,7 +99,7 @@ def fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
 
 
 def _fetch_individual(conn: sqlite3.Connection, id_num: int) -> Individual:
-    m = placeholder(_dialect(conn))
+    m = placeholder(dialect_of(conn))
     person = conn.execute(
         "SELECT id_num, name, gender, stature, mass, handedness, age, source "
         f"FROM person WHERE id_num = {m}",
@@ -189,9 +184,11 @@ _AXES = ("x", "y", "z")
 def find_person(conn: sqlite3.Connection, key: str) -> int:
     """The id of the person `key` names: a database id, or a name (any case)."""
     text = " ".join(key.split())  # spacing as typed does not matter
-    m = placeholder(_dialect(conn))
+    m = placeholder(dialect_of(conn))
     same_name = (
-        f"name = {m} COLLATE NOCASE" if _dialect(conn) == "sqlite" else f"lower(name) = lower({m})"
+        f"name = {m} COLLATE NOCASE"
+        if dialect_of(conn) == "sqlite"
+        else f"lower(name) = lower({m})"
     )
     if text.isdigit():
         row = conn.execute(f"SELECT id_num FROM person WHERE id_num = {m}", (int(text),)).fetchone()
@@ -220,7 +217,7 @@ def person_record(conn: sqlite3.Connection, id_num: int) -> dict[str, object]:
     from sass_tui.model.measures import MEASURES
 
     person = fetch_individual(conn, id_num)
-    m = placeholder(_dialect(conn))
+    m = placeholder(dialect_of(conn))
     values: dict[str, object] = {}
     unmeasured: list[str] = []
     for word, group, names in (

@@ -1,8 +1,9 @@
 """The query list and the selected list of the database query spreadsheet
 (report §12.3.2): people found by the last query, and people the user picked.
 
-Both lists live in TEMP tables of the connection, so a query list of a million
-people costs no Python memory and a page is one indexed read.  Select One
+Both lists live in TEMP tables of the connection (SQLite's or PostgreSQL's:
+the same SQL, the differences asked of db/dialect.py), so a query list of a
+million people costs no Python memory and a page is one indexed read.  Select One
 moves a person from the query list to the selected list; a new query replaces
 the query list and keeps the selected list (people already selected do not
 come back into the query list).  No Textual import here.
@@ -31,6 +32,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ParamSpec, TypeVar
 
 from sass_tui.db.database import engine_errors
+from sass_tui.db.dialect import dialect_of, mark_of
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import LIST_FIELDS, compile_query
@@ -76,7 +78,8 @@ def _serialised(method: Callable[P, R]) -> Callable[P, R]:
 RUN_CHUNK = 20_000
 QUERY_LIST = "query"
 SELECTED_LIST = "selected"
-_TABLES = {QUERY_LIST: "temp.query_list", SELECTED_LIST: "temp.selected_list"}
+# Unqualified: both engines look among the connection's TEMP tables first.
+_TABLES = {QUERY_LIST: "query_list", SELECTED_LIST: "selected_list"}
 # Selected people keep the order they were selected in (seq); the query list is in id order.
 _ORDER = {QUERY_LIST: "l.id_num", SELECTED_LIST: "l.seq"}
 _SELECT = (
@@ -86,25 +89,61 @@ _SELECT = (
 
 
 class QueryLists:
-    def __init__(self, conn: sqlite3.Connection):
-        self._conn = conn
+    def __init__(self, conn: Any):
+        # sqlite3's connection, or db/postgres.py's PostgresConnection
+        self._conn: Any = conn
         # Not reentrant: a screen's exclusive(wait=False) while its own thread
         # holds the lists is refused as well (tests hold them so).
         self._lock = threading.Lock()
         self._owner: int | None = None  # the thread holding _lock
         self.last_query: str | None = None
-        conn.execute("PRAGMA temp_store = MEMORY")
-        conn.execute("CREATE TEMP TABLE IF NOT EXISTS query_list (id_num INTEGER PRIMARY KEY)")
-        conn.execute(
-            "CREATE TEMP TABLE IF NOT EXISTS selected_list "
-            "(seq INTEGER PRIMARY KEY, id_num INTEGER NOT NULL UNIQUE)"
+        self.dialect = dialect_of(conn)
+        self._mark = mark_of(conn)
+        self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
+        if self.dialect == "sqlite":
+            conn.execute("PRAGMA temp_store = MEMORY")
+        else:
+            # A PostgreSQL connection opened again after a server restart has
+            # lost its TEMP tables: the lists start again, empty.
+            conn.on_reconnect.append(self._make_lists)
+        self._make_lists()
+
+    def _make_lists(self) -> None:
+        """The TEMP tables of the lists (empty); seq numbers the selected people
+        in the order they were selected."""
+        if self.dialect == "sqlite":
+            key, seq = "INTEGER", "seq INTEGER PRIMARY KEY"  # SQLite's rowid
+        else:
+            key, seq = "BIGINT", "seq BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY"
+        self._conn.execute(f"CREATE TEMP TABLE IF NOT EXISTS query_list (id_num {key} PRIMARY KEY)")
+        self._conn.execute(
+            f"CREATE TEMP TABLE IF NOT EXISTS selected_list ({seq}, id_num {key} NOT NULL UNIQUE)"
         )
         self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
 
     @classmethod
-    def open(cls, path: str | Path, read_only: bool = False) -> QueryLists:
+    def open(cls, target: str | Path, read_only: bool = False) -> QueryLists:
+        """The lists of the SQLite file `target`, or of the PostgreSQL database
+        it names (`postgresql://...`)."""
+        from sass_tui.db.addresses import is_url
+
+        if is_url(target):
+            from sass_tui.db.postgres import connect_postgres
+
+            return cls(connect_postgres(str(target)))
         # The query runs in a worker thread; the lock makes sharing the connection safe.
-        return cls(connect(path, check_same_thread=False, read_only=read_only))
+        return cls(connect(target, check_same_thread=False, read_only=read_only))
+
+    @contextmanager
+    def _transaction(self) -> Iterator[None]:
+        """A transaction of the lists (TEMP tables only): SQLite's deferred one
+        takes no lock on the main database."""
+        if self.dialect == "sqlite":
+            with transaction(self._conn, "DEFERRED"):
+                yield
+        else:
+            with self._conn.transaction():
+                yield
 
     def close(self) -> None:
         with self.exclusive():
@@ -140,32 +179,35 @@ class QueryLists:
         from sass_tui.db import accelerator  # numpy only on a large database
 
         compiled = compile_query(text)
+        where, params = compiled.sql(self.dialect)
         sql = (
-            f"INSERT INTO temp.query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
-            f"WHERE {compiled.where} AND p.id_num NOT IN (SELECT id_num FROM temp.selected_list)"
+            f"INSERT INTO query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
+            f"WHERE {where} AND p.id_num NOT IN (SELECT id_num FROM selected_list)"
         )
-        with transaction(self._conn, "DEFERRED"):
-            # Read the main database first: its shared lock, held to COMMIT,
-            # keeps writers out, so the column copy (db/accelerator.py) finds
-            # the people SQLite would; None when SQLite must find them.
-            self._conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
-            found = accelerator.answer_in_transaction(self._conn, compiled, ids=True)
-            self._conn.execute("DELETE FROM temp.query_list")
+        with self._transaction():
+            found = None
+            if self.dialect == "sqlite":
+                # Read the main database first: its shared lock, held to COMMIT,
+                # keeps writers out, so the column copy (db/accelerator.py) finds
+                # the people SQLite would; None when SQLite must find them.
+                self._conn.execute("SELECT 1 FROM person LIMIT 1").fetchone()
+                found = accelerator.answer_in_transaction(self._conn, compiled, ids=True)
+            self._conn.execute("DELETE FROM query_list")
             if found is not None:  # the column copy found them: no search, no progress
                 count = self._conn.execute(
-                    "INSERT INTO temp.query_list (id_num) SELECT value FROM json_each(?) "
-                    "WHERE value NOT IN (SELECT id_num FROM temp.selected_list)",
+                    "INSERT INTO query_list (id_num) SELECT value FROM json_each(?) "
+                    "WHERE value NOT IN (SELECT id_num FROM selected_list)",
                     ("[" + ",".join(map(str, found)) + "]",),
                 ).rowcount
             elif progress is None and cancel is None:
-                count = self._conn.execute(sql, compiled.params).rowcount
+                count = self._conn.execute(sql, params).rowcount
             else:
                 count = self._run_in_ranges(
-                    sql, compiled.params, Steps(progress, cancel, "the query"), cancel
+                    sql, params, Steps(progress, cancel, "the query"), cancel
                 )
-        self._counts[QUERY_LIST] = count
+        self._counts[QUERY_LIST] = int(count)
         self.last_query = text
-        return count
+        return int(count)
 
     def _run_in_ranges(
         self, sql: str, params: tuple[object, ...], steps: Steps, cancel: Cancel | None
@@ -181,7 +223,7 @@ class QueryLists:
         ranges = max(1, -(-total // RUN_CHUNK))
         span = high - low + 1
         cuts = [low + span * k // ranges for k in range(ranges)] + [high + 1]
-        ranged = f"{sql} AND p.id_num >= ? AND p.id_num < ?"
+        ranged = f"{sql} AND p.id_num >= {self._mark} AND p.id_num < {self._mark}"
         count = 0
         with interruptible(self._conn, cancel, "the query"):
             for start, stop in zip(cuts, cuts[1:]):
@@ -195,7 +237,7 @@ class QueryLists:
         sql = (
             f"SELECT {_SELECT} FROM {_TABLES[which]} l JOIN person p ON p.id_num = l.id_num "
             f"LEFT JOIN strength_q sq ON sq.id_num = l.id_num "
-            f"ORDER BY {_ORDER[which]} LIMIT ? OFFSET ?"
+            f"ORDER BY {_ORDER[which]} LIMIT {self._mark} OFFSET {self._mark}"
         )
         return [
             dict(zip(LIST_FIELDS, row))
@@ -206,7 +248,8 @@ class QueryLists:
     def selected_id(self, index: int) -> int | None:
         """The id of the index-th (0-based) person in the selected list."""
         row = self._conn.execute(
-            "SELECT id_num FROM temp.selected_list ORDER BY seq LIMIT 1 OFFSET ?", (int(index),)
+            f"SELECT id_num FROM selected_list ORDER BY seq LIMIT 1 OFFSET {self._mark}",
+            (int(index),),
         ).fetchone()
         return None if row is None else row[0]
 
@@ -214,13 +257,15 @@ class QueryLists:
     @_serialised
     def select_one(self, id_num: int) -> bool:
         """Move one person from the query list to the end of the selected list."""
-        with transaction(self._conn, "DEFERRED"):
+        m = self._mark
+        with self._transaction():
             gone = self._conn.execute(
-                "DELETE FROM temp.query_list WHERE id_num = ?", (int(id_num),)
+                f"DELETE FROM query_list WHERE id_num = {m}", (int(id_num),)
             ).rowcount
             added = (
                 self._conn.execute(
-                    "INSERT OR IGNORE INTO temp.selected_list (id_num) VALUES (?)", (int(id_num),)
+                    f"INSERT INTO selected_list (id_num) VALUES ({m}) ON CONFLICT DO NOTHING",
+                    (int(id_num),),
                 ).rowcount
                 if gone
                 else 0
@@ -232,21 +277,22 @@ class QueryLists:
     @_serialised
     def select_all(self) -> int:
         """Move the whole query list to the selected list; returns how many moved."""
-        with transaction(self._conn, "DEFERRED"):
+        with self._transaction():
+            # WHERE true: SQLite's parser needs it before an upsert's ON CONFLICT.
             moved = self._conn.execute(
-                "INSERT OR IGNORE INTO temp.selected_list (id_num) "
-                "SELECT id_num FROM temp.query_list ORDER BY id_num"
+                "INSERT INTO selected_list (id_num) "
+                "SELECT id_num FROM query_list WHERE true ORDER BY id_num ON CONFLICT DO NOTHING"
             ).rowcount
-            self._conn.execute("DELETE FROM temp.query_list")
+            self._conn.execute("DELETE FROM query_list")
         self._counts[QUERY_LIST] = 0
         self._counts[SELECTED_LIST] += moved
-        return moved
+        return int(moved)
 
     @_serialised
     def delete_one(self, which: str, id_num: int) -> bool:
-        with transaction(self._conn, "DEFERRED"):
+        with self._transaction():
             gone = self._conn.execute(
-                f"DELETE FROM {_TABLES[which]} WHERE id_num = ?", (int(id_num),)
+                f"DELETE FROM {_TABLES[which]} WHERE id_num = {self._mark}", (int(id_num),)
             ).rowcount
         self._counts[which] -= gone
         return bool(gone)
@@ -257,6 +303,12 @@ class QueryLists:
         self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
     ) -> int:
         """Load flat files (one transaction: a failure or a cancel stores nothing)."""
+        if self.dialect == "postgresql":
+            from sass_tui.db.postgres import import_staged
+
+            return import_staged(
+                self._conn, lambda staging: import_flat_files(staging, files, progress, cancel)
+            )
         return import_flat_files(self._conn, files, progress, cancel)
 
     @_serialised
@@ -271,14 +323,19 @@ class QueryLists:
         transaction: a failure or a cancel stores nothing); returns how many."""
         from sass_tui.db.ansur import import_ansur
 
-        return sum(import_ansur(self._conn, [path], progress, label=label, cancel=cancel).values())
+        def load(conn: sqlite3.Connection) -> int:
+            return sum(import_ansur(conn, [path], progress, label=label, cancel=cancel).values())
+
+        if self.dialect == "postgresql":
+            from sass_tui.db.postgres import import_staged
+
+            return import_staged(self._conn, load)
+        return load(self._conn)
 
     @_serialised
     def selected_ids(self) -> list[int]:
         """The ids of the selected list, in the order they were selected."""
-        return [
-            r[0] for r in self._conn.execute("SELECT id_num FROM temp.selected_list ORDER BY seq")
-        ]
+        return [r[0] for r in self._conn.execute("SELECT id_num FROM selected_list ORDER BY seq")]
 
     # --- the work of the query screen's other commands ------------------------------
     @_serialised

@@ -309,11 +309,10 @@ def parse_id_list(text: str, where: str) -> list[int]:
 
 def missing_ids(conn: sqlite3.Connection, ids: Sequence[int]) -> list[int]:
     """The ids of `ids` no person in the database has, in their order."""
-    import json
+    from sass_tui.db.dialect import ids_in
 
-    rows = conn.execute(
-        "SELECT value FROM json_each(?) WHERE value NOT IN (SELECT id_num FROM person) "
-        "ORDER BY key",
-        (json.dumps([int(i) for i in ids]),),
-    )
-    return [value for (value,) in rows]
+    condition, listed = ids_in(conn, "id_num", ids)
+    stored = {
+        int(i) for (i,) in conn.execute(f"SELECT id_num FROM person WHERE {condition}", (listed,))
+    }
+    return [int(i) for i in ids if int(i) not in stored]

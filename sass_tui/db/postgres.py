@@ -28,7 +28,7 @@ here and only when a PostgreSQL address is given.
 from __future__ import annotations
 
 import sqlite3
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, TypeVar
@@ -88,6 +88,9 @@ class PostgresConnection:
         self._psycopg = _driver()
         self._conn = self._connect()
         self._depth = 0  # open transaction() blocks
+        # Called after the connection was opened again (a server restart): what
+        # lived in the old session, e.g. TEMP tables (db/lists.py), is gone.
+        self.on_reconnect: list[Callable[[], None]] = []
 
     def _connect(self) -> Any:
         try:
@@ -115,10 +118,30 @@ class PostgresConnection:
             raise self.error(exc) from None
         # The connection broke between statements (a server restart): open it again once.
         self._conn = self._connect()
+        for reopened in self.on_reconnect:
+            reopened()
         try:
             return self._conn.execute(sql, tuple(params))
         except self._psycopg.Error as exc:
             raise self.error(exc) from None
+
+    def executemany(self, sql: str, rows: Iterable[Sequence[object]]) -> None:
+        """Run one statement for each row (pipelined by psycopg; inside the caller's
+        transaction, as a write is)."""
+        try:
+            with self._conn.cursor() as cursor:
+                cursor.executemany(sql, [tuple(row) for row in rows])
+        except self._psycopg.Error as exc:
+            raise self.error(exc) from None
+
+    def cancel_statement(self) -> None:
+        """Ask the server to cancel the statement running now (from another
+        thread; db/progress.py's interruptible).  Its execute raises a
+        DatabaseError; a transaction around it rolls back."""
+        try:
+            self._conn.cancel()
+        except self._psycopg.Error:
+            pass  # nothing running, or the connection is gone: nothing to cancel
 
     def error(self, exc: BaseException) -> DatabaseError:
         """A driver error as a message a user can act on."""

@@ -29,6 +29,7 @@ import hashlib
 import sqlite3
 from pathlib import Path
 
+from sass_tui.db.dialect import dialect_of, total
 from sass_tui.db.values import load_values
 from sass_tui.model.prediction import MODEL_VERSION, Predictor, predicted_fields
 
@@ -40,7 +41,10 @@ DEFAULT_POPULATION = "gender = male OR gender = female"
 
 
 def database_file(conn: sqlite3.Connection) -> Path | None:
-    """The file of the connection's main database (None: in memory)."""
+    """The file of the connection's main database (None: in memory, or a
+    PostgreSQL database: its model is fitted in each process, never cached)."""
+    if dialect_of(conn) != "sqlite":
+        return None
     for _, name, file in conn.execute("PRAGMA database_list"):
         if name == "main":
             return Path(file) if file else None
@@ -53,7 +57,7 @@ def cache_path(conn: sqlite3.Connection) -> Path | None:
 
 
 def _columns(conn: sqlite3.Connection, table: str) -> list[str]:
-    return [row[1] for row in conn.execute(f"PRAGMA table_info({table})")]
+    return [column[0] for column in conn.execute(f"SELECT * FROM {table} LIMIT 0").description]
 
 
 def data_key(conn: sqlite3.Connection, population: str = DEFAULT_POPULATION) -> str:
@@ -63,21 +67,17 @@ def data_key(conn: sqlite3.Connection, population: str = DEFAULT_POPULATION) -> 
     # "real people": the fit learns from real people unless the population names a
     # source (db/scope.py); a cache fitted before, on the synthetic people too, is not reused.
     parts: list[object] = [MODEL_VERSION, fields, "real people", " ".join(population.split())]
-    parts += conn.execute(
-        "SELECT count(*), total(id_num), total(id_num * (gender = 'male')), "
-        "total(stature), total(mass) FROM person"
-    ).fetchone()
+
+    def totals(table: str, columns: list[str]) -> None:
+        sums = ", ".join(total(conn, column) for column in ["id_num", *columns])
+        parts.extend(conn.execute(f"SELECT count(*), {sums} FROM {table}").fetchone())
+
+    totals("person", ["CASE WHEN gender = 'male' THEN id_num ELSE 0 END", "stature", "mass"])
     measure = [c for c in _columns(conn, "measure") if c != "id_num"]
     if measure:
-        totals = ", ".join(f'total("{c}")' for c in measure)
-        parts += conn.execute(f"SELECT count(*), total(id_num), {totals} FROM measure").fetchone()
-    parts += conn.execute(
-        "SELECT count(*), total(id_num), total(thickness), total(width), total(length) FROM girth"
-    ).fetchone()
-    parts += conn.execute(
-        "SELECT count(*), total(id_num), total(cmass_x), total(cmass_y), total(cmass_z) "
-        "FROM center_of_mass"
-    ).fetchone()
+        totals("measure", [f'"{c}"' for c in measure])
+    totals("girth", ["thickness", "width", "length"])
+    totals("center_of_mass", ["cmass_x", "cmass_y", "cmass_z"])
     return hashlib.sha256(repr(parts).encode()).hexdigest()
 
 

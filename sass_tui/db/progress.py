@@ -8,9 +8,10 @@ Long functions (`import_flat_files`, `import_ansur`, `QueryLists.run`,
 
 and raise `Cancelled` at the next step after `cancel.is_set()`; they stop only
 where nothing is half-written (an import's transaction is rolled back, a
-query list is left as it was).  A SQLite statement that runs long is
-interrupted too: `interruptible(conn, cancel)` installs a progress handler
-that aborts the statement once the cancel is set.
+query list is left as it was).  A statement that runs long is interrupted
+too: `interruptible(conn, cancel)` installs a SQLite progress handler that
+aborts the statement once the cancel is set, or on PostgreSQL watches the
+cancel from a thread and asks the server to cancel the statement.
 """
 
 from __future__ import annotations
@@ -18,11 +19,13 @@ from __future__ import annotations
 import sqlite3
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Protocol
+from typing import Any, Protocol
 
 from sass_tui.model.errors import SassError
 
 Progress = Callable[[int, int], None]
+# How often a PostgreSQL statement's watcher looks at the cancel, seconds.
+CANCEL_POLL_S = 0.05
 # SQLite calls the progress handler every this many virtual-machine instructions.
 HANDLER_INSTRUCTIONS = 20_000
 
@@ -64,9 +67,14 @@ def interruptible(
     conn: sqlite3.Connection, cancel: Cancel | None, what: str = "the work"
 ) -> Iterator[None]:
     """Abort a running statement once `cancel` is set; raises Cancelled instead
-    of SQLite's "interrupted" (the caller's transaction rolls back)."""
+    of SQLite's "interrupted" or PostgreSQL's "canceling statement" (the
+    caller's transaction rolls back)."""
     if cancel is None:
         yield
+        return
+    if getattr(conn, "dialect", "sqlite") != "sqlite":
+        with _postgres_interruptible(conn, cancel, what):
+            yield
         return
     conn.set_progress_handler(lambda: 1 if cancel.is_set() else 0, HANDLER_INSTRUCTIONS)
     try:
@@ -77,5 +85,34 @@ def interruptible(
         raise
     finally:
         conn.set_progress_handler(None, HANDLER_INSTRUCTIONS)
+    if cancel.is_set():
+        raise Cancelled(what)
+
+
+@contextmanager
+def _postgres_interruptible(conn: Any, cancel: Cancel, what: str) -> Iterator[None]:
+    """A watcher thread asks the PostgreSQL server to cancel the running
+    statement once `cancel` is set (db/postgres.py's cancel_statement)."""
+    import threading
+
+    done = threading.Event()
+
+    def watch() -> None:
+        while not done.wait(CANCEL_POLL_S):
+            if cancel.is_set():
+                conn.cancel_statement()
+                return
+
+    watcher = threading.Thread(target=watch, name="sass-cancel", daemon=True)
+    watcher.start()
+    try:
+        yield
+    except SassError:
+        if cancel.is_set():
+            raise Cancelled(what) from None
+        raise
+    finally:
+        done.set()
+        watcher.join()
     if cancel.is_set():
         raise Cancelled(what)

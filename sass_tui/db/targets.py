@@ -24,8 +24,8 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from sass_tui.db.dialect import mark_of, writing
 from sass_tui.db.query import compile_query
-from sass_tui.db.schema import check_writable, transaction
 from sass_tui.model.target_sample import Sample
 from sass_tui.model.targets import TargetError, Weighting, calibrate
 from sass_tui.model.vocabulary import GENDERS
@@ -162,16 +162,16 @@ def make_target(
 def store_target(conn: sqlite3.Connection, weights: TargetWeights, *, replace: bool) -> None:
     """Store a made target; TargetExistsError unless `replace` when its name is taken."""
     target = weights.target
-    check_writable(conn)
-    with transaction(conn):
-        if conn.execute("SELECT 1 FROM target WHERE name = ?", (target.name,)).fetchone():
+    m = mark_of(conn)
+    with writing(conn):
+        if target_exists(conn, target.name):
             if not replace:
                 raise TargetExistsError(
                     f"a target named {target.name!r} exists; give --force to replace it"
                 )
             _delete(conn, target.name)
         conn.execute(
-            "INSERT INTO target VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+            f"INSERT INTO target VALUES ({', '.join([m] * 10)})",
             (
                 target.name,
                 target.gender,
@@ -186,7 +186,7 @@ def store_target(conn: sqlite3.Connection, weights: TargetWeights, *, replace: b
             ),
         )
         conn.executemany(
-            "INSERT INTO target_weight VALUES (?, ?, ?)",
+            f"INSERT INTO target_weight VALUES ({m}, {m}, {m})",
             zip(
                 [target.name] * len(weights.ids),
                 weights.ids.tolist(),
@@ -196,17 +196,18 @@ def store_target(conn: sqlite3.Connection, weights: TargetWeights, *, replace: b
 
 
 def target_exists(conn: sqlite3.Connection, name: str) -> bool:
-    return conn.execute("SELECT 1 FROM target WHERE name = ?", (name,)).fetchone() is not None
+    m = mark_of(conn)
+    return conn.execute(f"SELECT 1 FROM target WHERE name = {m}", (name,)).fetchone() is not None
 
 
 def _delete(conn: sqlite3.Connection, name: str) -> None:
-    conn.execute("DELETE FROM target_weight WHERE target = ?", (name,))
-    conn.execute("DELETE FROM target WHERE name = ?", (name,))
+    m = mark_of(conn)
+    conn.execute(f"DELETE FROM target_weight WHERE target = {m}", (name,))
+    conn.execute(f"DELETE FROM target WHERE name = {m}", (name,))
 
 
 def drop_target(conn: sqlite3.Connection, name: str) -> None:
-    check_writable(conn)
-    with transaction(conn):
+    with writing(conn):
         if not target_exists(conn, name):
             raise _unknown(conn, name)
         _delete(conn, name)
@@ -250,12 +251,13 @@ def _unknown(conn: sqlite3.Connection, name: str) -> UnknownTargetError:
 
 def load_target(conn: sqlite3.Connection, name: str) -> TargetWeights:
     """A stored target and the weights of its people still in the database (id order)."""
-    row = conn.execute(f"SELECT {_COLUMNS} FROM target WHERE name = ?", (name,)).fetchone()
+    m = mark_of(conn)
+    row = conn.execute(f"SELECT {_COLUMNS} FROM target WHERE name = {m}", (name,)).fetchone()
     if row is None:
         raise _unknown(conn, name)
     rows = conn.execute(
         "SELECT w.id_num, w.weight FROM target_weight w JOIN person p ON p.id_num = w.id_num "
-        "WHERE w.target = ? ORDER BY w.id_num",
+        f"WHERE w.target = {m} ORDER BY w.id_num",
         (name,),
     ).fetchall()
     ids = np.array([r[0] for r in rows], dtype=np.int64)

@@ -14,13 +14,13 @@ id order.  No Textual import here.
 
 from __future__ import annotations
 
-import json
 import sqlite3
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
+from sass_tui.db.dialect import dialect_of, ids_in
 from sass_tui.db.query import (
     MEASURE_TABLE,
     TEXT,
@@ -72,13 +72,18 @@ def load_values(
 ) -> Values:
     """Every selected person's values of `fields` (see the module's docstring)."""
     resolved = [numeric_field(f) for f in fields]
+    dialect = dialect_of(conn)
     compiled = compile_query(where) if where is not None and where.strip() else None
     aliases: dict[str, str] = {}
     joins = []
     columns = []
     measure_slots: list[tuple[int, int]] = []  # (field index, MEASURES index)
+    # SQLite reads the measures from measure_packed (one row of doubles per
+    # person, kept by triggers); PostgreSQL has no such copy and selects them
+    # from the measure table like any other column.
+    packed = dialect == "sqlite"
     for k, (table, column, _unit) in enumerate(resolved):
-        if table == MEASURE_TABLE:
+        if table == MEASURE_TABLE and packed:
             measure_slots.append((k, MEASURE_INDEX[column]))
             continue
         if table == "person":
@@ -90,7 +95,9 @@ def load_values(
                 f" LEFT JOIN {table} {aliases[table]} ON {aliases[table]}.id_num = p.id_num"
             )
         columns.append(f"{aliases[table]}.{column}")
-    other = [k for k, (table, _c, _u) in enumerate(resolved) if table != MEASURE_TABLE]
+    other = [
+        k for k, (table, _c, _u) in enumerate(resolved) if not (table == MEASURE_TABLE and packed)
+    ]
     select = ["p.id_num", "p.name", "p.gender"] + columns
     if measure_slots:
         joins.append(" LEFT JOIN measure_packed vp ON vp.id_num = p.id_num")
@@ -99,18 +106,18 @@ def load_values(
     params: tuple[object, ...] = ()
     if compiled is not None:
         from_clause = compiled.from_clause() + "".join(joins)
-        conditions.append(compiled.where)
-        params = compiled.params
+        condition, params = compiled.sql(dialect)
+        conditions.append(condition)
     else:
         from_clause = "person p" + "".join(joins)
         if ids is None:  # everyone: every real person (db/scope.py), e.g. what predict learns from
-            scope, scope_params = to_sql(real_only(None), "sqlite", {PERSON_TABLE: "p"})
+            scope, scope_params = to_sql(real_only(None), dialect, {PERSON_TABLE: "p"})
             conditions.append(scope)
             params = (*params, *scope_params)
     if ids is not None:
-        # One parameter whatever the number of people (no SQLITE_MAX_VARIABLE_NUMBER).
-        conditions.append("p.id_num IN (SELECT value FROM json_each(?))")
-        params = (*params, json.dumps([int(i) for i in ids]))
+        condition, listed = ids_in(conn, "p.id_num", ids)
+        conditions.append(condition)
+        params = (*params, listed)
     where_sql = f" WHERE {' AND '.join(f'({c})' for c in conditions)}" if conditions else ""
     sql = f"SELECT {', '.join(select)} FROM {from_clause}{where_sql} ORDER BY p.id_num"
     rows = conn.execute(sql, params).fetchall()

@@ -51,6 +51,10 @@ def inside(workdir: Path, text: str | Path) -> Path:
         path = (root / name).resolve()  # follows every link, as opening it would
     except (RuntimeError, OSError) as exc:  # a loop of links (RuntimeError before 3.13)
         raise PathError(f"{name}: cannot follow its links ({exc})") from None
+    # Python 3.13 leaves a loop of links unresolved instead of raising: a link
+    # still in the resolved path is one.
+    if any(part.is_symlink() for part in (path, *path.parents)):
+        raise PathError(f"{name}: cannot follow its links (a loop of symbolic links)")
     if not path.is_relative_to(root):
         raise PathError(f"{name}: a symbolic link leads out of {workdir}; refused")
     return path

@@ -45,8 +45,13 @@ class SassApp(App):
         read_only: bool = False,
     ) -> None:
         super().__init__()
-        # None = $SASS_DB or the user's data directory, created on first Query.
-        self.db_path = user_path(db_path) if db_path else None
+        # None = $SASS_DB or the user's data directory, created on first Query;
+        # a PostgreSQL address (postgresql://...) stays text.
+        self.db_path: str | Path | None = None
+        if db_path:
+            from sass_tui.db.addresses import is_url  # imports nothing (the first screen's path)
+
+            self.db_path = db_path if is_url(db_path) else user_path(db_path)
         # A session served to a browser (model/served.py): the directory every
         # file name typed at a prompt stays in, and a database it must not change.
         self.workdir = workdir

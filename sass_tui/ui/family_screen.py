@@ -88,7 +88,7 @@ class FamilyScreen(SassScreen):
     FamilyScreen #family-plot { width: 1fr; }
     """
 
-    def __init__(self, db_path: Path | None, gender: str = "male") -> None:
+    def __init__(self, db_path: str | Path | None, gender: str = "male") -> None:
         super().__init__(id="family")
         self.db_path = db_path
         self.default_gender = gender
@@ -163,7 +163,7 @@ class FamilyScreen(SassScreen):
     @work(thread=True, exclusive=True, group="family", exit_on_error=False)
     def build_family(
         self,
-        db_path: Path | None,
+        db_path: str | Path | None,
         gender: str,
         measures: tuple[str, ...],
         coverage: float,

@@ -49,7 +49,7 @@ class PredictorOpened(Message):
         self.predictor = predictor
 
 
-def open_predictor_at(db_path: Path | None) -> Predictor:
+def open_predictor_at(db_path: str | Path | None) -> Predictor:
     """The predictor of the database the query screen uses (the default one
     when no --db was given); run in a worker."""
     from sass_tui.db.database import Database

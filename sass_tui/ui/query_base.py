@@ -33,7 +33,7 @@ class QueryScreenBase(SassScreen):
     commands are in QueryScreen and the command mixins (query_input_db.py,
     query_population.py) that subclass this."""
 
-    def __init__(self, lists: QueryLists | None, db_path: Path | None = None) -> None:
+    def __init__(self, lists: QueryLists | None, db_path: str | Path | None = None) -> None:
         super().__init__(id="query-screen")
         self._when_open: list[str] = []  # palette commands waiting for the database
         self.lists = lists
@@ -82,16 +82,29 @@ class QueryScreenBase(SassScreen):
         self.say(f"Cancelling {work.what} ...")
 
     # --- database ------------------------------------------------------------------
-    def open_database(self, db_path: Path | None) -> None:
+    def open_database(self, db_path: str | Path | None) -> None:
         self._open_database(db_path, self.begin_work("Building the database", busy=False))
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
-    def _open_database(self, db_path: Path | None, work: Work) -> None:
+    def _open_database(self, db_path: str | Path | None, work: Work) -> None:
+        from sass_tui.db.addresses import is_url
+        from sass_tui.db.database import configured_target
         from sass_tui.db.default import create_default_database, default_needs_building
         from sass_tui.db.progress import Cancelled
         from sass_tui.db.schema import default_db_path
 
-        path = db_path or default_db_path()
+        target = configured_target(db_path)
+        if is_url(target):  # a lab's PostgreSQL database (--db or $SASS_DB): never built here
+            from sass_tui.db.postgres import shown
+
+            try:
+                lists = QueryLists.open(str(target))
+            except DB_ERRORS as exc:
+                self.post_message(DatabaseFailed(f"Cannot open the database: {exc}"))
+                return
+            self.post_message(DatabaseOpened(lists, shown(str(target))))
+            return
+        path = Path(db_path) if db_path else default_db_path()
         read_only = self.sass_app.read_only  # served --read-only: never built nor changed
         building = db_path is None and not read_only and default_needs_building(path)
         try:

@@ -11,7 +11,7 @@ from sass_tui.db.lists import QueryLists
 
 
 class DatabaseOpened(Message):
-    def __init__(self, lists: QueryLists, path: Path) -> None:
+    def __init__(self, lists: QueryLists, path: str | Path) -> None:
         super().__init__()
         self.lists = lists
         self.path = path

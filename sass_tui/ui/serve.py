@@ -63,7 +63,7 @@ class ServeOptions:
     port: int
     token: str
     workdir: Path
-    db: Path | None = None
+    db: Path | str | None = None  # a SQLite file, or a PostgreSQL address (str)
     read_only: bool = False
     max_sessions: int = 8
     loopback: bool = True  # bound to this machine only
@@ -107,7 +107,7 @@ class ServeOptions:
 
     def command(self) -> list[str]:
         command = [sys.executable, "-m", "sass_tui"]
-        if self.db is not None:
+        if isinstance(self.db, Path):  # an address travels in $SASS_DB, not in `ps`
             command += ["--db", str(self.db)]
         return command
 
@@ -190,6 +190,8 @@ def _server_class():  # -> type[textual_serve.server.Server]
             environment = super()._build_environment(width, height)
             environment[WORKDIR_ENV] = str(self.options.workdir)
             environment[READ_ONLY_ENV] = "1" if self.options.read_only else ""
+            if isinstance(self.options.db, str):  # a PostgreSQL address (its password too)
+                environment["SASS_DB"] = self.options.db
             return environment
 
         async def _open_app_process(self, width: int = 80, height: int = 24):

@@ -155,7 +155,7 @@ class PeopleCommands(SheetScreenBase):
         self.open_predictor(self.sass_app.db_path)
 
     @work(thread=True, exclusive=True, group="predictor", exit_on_error=False)
-    def open_predictor(self, db_path: Path | None) -> None:
+    def open_predictor(self, db_path: str | Path | None) -> None:
         try:
             self.post_message(PredictorOpened(open_predictor_at(db_path)))
         except (SassError, OSError) as exc:

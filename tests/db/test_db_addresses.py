@@ -1,14 +1,13 @@
 """A PostgreSQL address given to a command that reads a SQLite file is refused
-with a message naming the commands that take one, and no file is made."""
+with a message naming the commands that take one, and no file is made; the
+commands that take one try the server (and say when it cannot be reached)."""
 
 from __future__ import annotations
 
-import os
-import subprocess
-import sys
+import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.addresses import is_url
+from sass_tui.db.addresses import POSTGRES_COMMANDS, is_url
 
 URL = "postgresql://lab@dbhost.invalid/sass"
 
@@ -18,34 +17,68 @@ def test_addresses_and_files_are_told_apart():
     assert not is_url("postgresql.db") and not is_url(None)
 
 
-def test_a_sqlite_verb_refuses_an_address(capsys, tmp_path, monkeypatch):
+def test_sass_serve_hands_an_address_to_its_sessions_in_the_environment(tmp_path, monkeypatch):
+    """A served session opens the PostgreSQL database the server was given;
+    the address (its password too) travels in $SASS_DB, never on a command
+    line `ps` shows."""
+    pytest.importorskip("textual_serve")
+    from sass_tui.cli.serve import database_path
+    from sass_tui.ui.serve import ServeOptions, _server_class
+
+    secret = "postgresql://lab:s3cret@dbhost.invalid/sass"
+    monkeypatch.setenv("SASS_DB", secret)
+    args = type("Args", (), {"db": None})()
+    db = database_path(args, read_only=False)
+    assert db == secret
+    options = ServeOptions(host="127.0.0.1", port=0, token="t" * 32, workdir=tmp_path, db=db)
+    assert "s3cret" not in " ".join(options.command())
+    assert "--db" not in options.command()
+
+    async def nothing(*_args) -> None:
+        return None
+
+    service = _server_class().session_class(
+        options, write_bytes=nothing, write_str=nothing, close=nothing, download_manager=None
+    )
+    assert service._build_environment()["SASS_DB"] == secret
+
+
+def test_sass_serve_read_only_on_an_address_says_to_use_a_reading_role(
+    tmp_path, monkeypatch, capsys
+):
     monkeypatch.chdir(tmp_path)
-    assert main(["fit", "--db", URL, "stature <= 190 cm"]) == 2
+    assert main(["serve", "--port", "0", "--read-only", "--db", URL]) == 2
     err = capsys.readouterr().err
-    assert "reads a SQLite file only" in err and "sass query" in err
+    assert "--read-only opens a SQLite file read-only" in err and "GRANT SELECT" in err
     assert list(tmp_path.iterdir()) == []
 
 
-def test_the_tui_refuses_an_address_from_sass_db(tmp_path):
-    env = dict(os.environ, SASS_DB=URL)
-    done = subprocess.run(
-        [sys.executable, "-m", "sass_tui"],
-        capture_output=True,
-        text=True,
-        env=env,
-        cwd=tmp_path,
-        timeout=60,
-        stdin=subprocess.DEVNULL,
-    )
-    assert done.returncode == 2
-    assert "the spreadsheet (TUI) reads a SQLite file only" in done.stderr
-    assert "Traceback" not in done.stderr
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["fit", "stature <= 190 cm"],
+        ["family", "--gender", "female", "--measures", "stature,mass", "-o", "F"],
+        ["population", "--query", "stature > 1", "-o", "x.dat"],
+        ["predict", "--gender", "male", "--known", "stature=180cm"],
+        ["target", "--list"],
+        ["fig", "--person", "17", "-o", "x.fig"],
+        ["export", "hanim", "--person", "17", "-o", "x.x3d"],
+        ["strength", "--person", "17", "knee_extension", "knee_y=60"],
+    ],
+)
+def test_the_verbs_that_take_an_address_try_the_server(capsys, tmp_path, monkeypatch, argv):
+    pytest.importorskip("psycopg")
+    assert argv[0] in POSTGRES_COMMANDS
+    monkeypatch.chdir(tmp_path)
+    assert main([*argv, "--db", "postgresql://nobody@127.0.0.1:1/none"]) == 2
+    err = capsys.readouterr().err
+    assert "cannot reach the PostgreSQL server" in err and "Traceback" not in err
     assert list(tmp_path.iterdir()) == []
 
 
 def test_a_default_path_is_never_made_of_an_address(monkeypatch, capsys, tmp_path):
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("SASS_DB", URL)
-    assert main(["population", "--query", "stature > 1", "-o", "x.dat"]) == 2
-    assert "SQLite file only" in capsys.readouterr().err
+    assert main(["serve", "--port", "0", "--read-only"]) == 2
+    assert "--read-only opens a SQLite file read-only" in capsys.readouterr().err
     assert list(tmp_path.iterdir()) == []

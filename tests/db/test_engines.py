@@ -14,7 +14,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from _postgres import running_cluster, why_not
+from _postgres import why_not
 
 from sass_tui.cli import main
 from sass_tui.db.database import Database
@@ -44,24 +44,7 @@ QUERIES = [
 
 needs_postgres = pytest.mark.skipif(why_not() is not None, reason=f"PostgreSQL: {why_not()}")
 
-
-@pytest.fixture(scope="session")
-def cluster():
-    reason = why_not()
-    if reason is not None:
-        pytest.skip(f"PostgreSQL: {reason}")
-    with running_cluster() as running:
-        yield running
-
-
-@pytest.fixture(scope="session")
-def initialised(tmp_path_factory, cluster) -> dict[str, str]:
-    """One database per engine after `sass db init`."""
-    sqlite_path = str(tmp_path_factory.mktemp("engines") / "sass.db")
-    url = cluster.create_database("initialised")
-    for target in (sqlite_path, url):
-        assert main(["db", "init", "--force", "--db", target]) == 0
-    return {"sqlite": sqlite_path, "postgresql": url}
+# The fixtures `cluster` and `initialised` (both engines after `sass db init`): tests/conftest.py.
 
 
 def answers(target: str, text: str) -> tuple[int, list[dict]]:

@@ -1,4 +1,4 @@
-"""Names from files never send escape sequences to the terminal (issue 17: a
+"""Names from files never send escape sequences to the terminal (a
 person named `\\x1b[2J\\x1b]0;pwned\\x07` cleared the screen when listed)."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The manikin family screen (issue 14), driven by keys: its table equals
+"""The manikin family screen, driven by keys: its table equals
 `load_family`, and `w` writes the files `sass family` writes."""
 
 from __future__ import annotations

@@ -135,7 +135,7 @@ def test_no_figure_panel_below_120_columns(drive, app_at):
 
 
 def test_quitting_on_the_first_screen_before_the_panel_is_drawn(drive, app_at, monkeypatch):
-    """The panel adds its canvas one frame after the first screen (issue 16):
+    """The panel adds its canvas one frame after the first screen:
     an app closing by then (q pressed at once) ends cleanly, not with a
     MountError."""
     monkeypatch.setattr(SassApp, "first_screen_drawn", lambda app: app.exit())
@@ -149,7 +149,7 @@ def test_quitting_on_the_first_screen_before_the_panel_is_drawn(drive, app_at, m
 
 
 def test_the_panel_is_outlined_once_at_start_and_when_it_comes_back(drive, app_at, monkeypatch):
-    """Issue 16 (first screen): the figure is outlined once when the app starts,
+    """At start-up the figure is outlined once when the app starts,
     not again for each resize or the first screen resume; a panel hidden by a
     narrow terminal draws the edits made meanwhile when it shows again."""
     import sass_tui.ui.figure_screen as figure_screen

@@ -1,4 +1,4 @@
-"""The TUI on a read-only and on a full file system (issue 17): it opens and
+"""The TUI on a read-only and on a full file system: it opens and
 lists, Input DB and Create Figure say what the file system refused and name
 the file, nothing is half-written (tests/_tmpfs.py mounts a real tmpfs;
 skipped where this process may not mount)."""

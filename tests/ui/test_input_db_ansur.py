@@ -1,4 +1,4 @@
-"""Input DB takes an ANSUR II format file too (issue 15's "ANSUR import" in
+"""Input DB takes an ANSUR II format file too (the "ANSUR import" of
 the TUI): given as the Person file, it is recognised by its header, imported
 under the source label asked for, with the progress bar, and Escape rolls it
 back."""

@@ -1,5 +1,5 @@
-"""Keys that belong to a prompt stay with it, however fast they come (issue
-10), and the TUI's crash and hang defects of issue 17."""
+"""Keys that belong to a prompt stay with it, however fast they come, and the
+TUI's crash and hang defects the robustness review found."""
 
 from __future__ import annotations
 
@@ -136,7 +136,7 @@ def test_a_group_letter_then_digits_switch_group_first(drive, app_at):
 
 
 def test_a_click_elsewhere_while_asking_leaves_the_keys_with_the_prompt(drive, app_at):
-    """Issue 17: `9`, a click on a data cell, Down spun at 100 % CPU and
+    """`9`, a click on a data cell, Down spun at 100 % CPU and
     Enter/Escape no longer reached the prompt."""
 
     async def scenario():
@@ -158,7 +158,7 @@ def test_a_click_elsewhere_while_asking_leaves_the_keys_with_the_prompt(drive, a
 
 @pytest.mark.parametrize("width", [40, 30, 12])
 def test_a_narrow_terminal_at_start_and_on_resize(drive, app_at, width):
-    """Issue 17: 40 columns or fewer crashed with a negative field width."""
+    """40 columns or fewer crashed with a negative field width."""
 
     async def scenario():
         async with app_at((width, 24)) as (app, pilot):
@@ -227,7 +227,7 @@ def test_run_app_exits_non_zero_after_a_crash(monkeypatch):
 def test_the_write_worker_writes_the_figure_as_it_was_when_asked(
     drive, app_at, tmp_path, monkeypatch
 ):
-    """Issue 10: the worker wrote whatever the figure held when the thread got
+    """The worker wrote whatever the figure held when the thread got
     to it; an edit made meanwhile went into the file.  Every file step taken
     off the UI thread here waits until the test has edited the figure."""
     import threading

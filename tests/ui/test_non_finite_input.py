@@ -1,4 +1,4 @@
-"""The spreadsheet refuses numbers that are not numbers (issue 17: "1e400"
+"""The spreadsheet refuses numbers that are not numbers ("1e400"
 became "inf cm" in a cell, and Create Figure then wrote `botheadx = infcm;`)."""
 
 from __future__ import annotations

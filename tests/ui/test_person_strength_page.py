@@ -1,4 +1,4 @@
-"""Disp. Indv. shows the person's own strength on the strength page (issue 11),
+"""Disp. Indv. shows the person's own strength on the strength page,
 driven by keys: the query screen selects a person, the spreadsheet shows them."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Predict on the spreadsheet (issue 13), driven by keys."""
+"""Predict on the spreadsheet, driven by keys."""
 
 from __future__ import annotations
 

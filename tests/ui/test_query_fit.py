@@ -1,4 +1,4 @@
-"""Fit Test on the query screen (issue 14): the last query as design limits
+"""Fit Test on the query screen: the last query as design limits
 over ANSUR II, driven by key presses; the shares on screen are fit_test's and
 a direct count over the survey's CSV files."""
 

@@ -1,4 +1,4 @@
-"""Issue 12 on the query screen: the searchable Measurements menu, the new
+"""On the query screen: the searchable Measurements menu, the new
 Global Information attributes (text values put in quotes), and the list's
 source column; driven by key presses, counts checked against the CSV."""
 

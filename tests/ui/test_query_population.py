@@ -1,4 +1,4 @@
-"""Make Population on the query screen (issue 12): the people of the selected
+"""Make Population on the query screen: the people of the selected
 list (Select One / Select All), driven by key presses, written as population
 files and loaded for the next Create Figure; a gender with too few people
 refused with the count."""

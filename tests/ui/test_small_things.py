@@ -1,4 +1,4 @@
-"""Issue 11, 'Small things users hit' and 'Real people are shown as they
+"""'Small things users hit' and 'Real people are shown as they
 were measured', on the screen."""
 
 from __future__ import annotations
@@ -99,7 +99,7 @@ def test_the_query_list_shows_whole_names(drive, app_at, db):
             )
             await pilot.pause()
             rows = str(sheet.render()).splitlines()
-            # the whole name, then the Source column (issue 12), then the gender
+            # the whole name, then the Source column, then the gender
             assert rows[2].split()[:6] == ["ANSUR", "II", "F", "11533", "ANSUR", "II"]
             assert rows[2].startswith("ANSUR II F 11533 ANSUR II")
             assert rows[2].split()[6] == "female"

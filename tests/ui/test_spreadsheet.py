@@ -356,7 +356,7 @@ def test_create_figure_writes_and_asks_before_overwriting(drive, app_at, tmp_pat
             await pilot.press("enter", "enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
-            # Issue 11: the missing directory is named, not a temporary file.
+            # The missing directory is named, not a temporary file.
             assert (
                 f"{tmp_path / 'no' / 'dir.fig'}: cannot write: no such directory: {tmp_path / 'no'}"
                 in message(app)

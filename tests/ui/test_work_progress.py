@@ -1,4 +1,4 @@
-"""Long work shows progress and Escape cancels it (issue 15), driven by key
+"""Long work shows progress and Escape cancels it, driven by key
 presses: Input DB of a generated file shows done/total on the bar; Escape
 rolls the import back (row counts and integrity_check unchanged); a cancelled
 Make Population writes no file and loads nothing."""

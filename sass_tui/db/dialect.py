@@ -1,0 +1,62 @@
+"""What differs between the engines a function of this layer runs on, in one
+place: which engine a connection is, a list of ids as one parameter, and a
+write transaction.  A function serves both engines by asking these (and the
+query tree's `to_sql(expr, dialect)` / `placeholder(dialect)`), never by a
+copy per engine.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from typing import Any
+
+from sass_tui.db.query_tree import Dialect, placeholder
+
+
+def dialect_of(conn: Any) -> Dialect:
+    """The engine of `conn`: sqlite3's connection, or db/postgres.py's PostgresConnection."""
+    dialect: Dialect = getattr(conn, "dialect", "sqlite")
+    return dialect
+
+
+def mark_of(conn: Any) -> str:
+    """The connection's parameter placeholder (`?` or `%s`)."""
+    return placeholder(dialect_of(conn))
+
+
+def ids_in(conn: Any, column: str, ids: Sequence[int]) -> tuple[str, object]:
+    """`column` is one of `ids`, as a condition and its one parameter whatever
+    the number of ids (no limit on the number of placeholders): SQLite reads
+    a JSON array, PostgreSQL takes an array."""
+    numbers = [int(i) for i in ids]
+    if dialect_of(conn) == "sqlite":
+        return f"{column} IN (SELECT value FROM json_each(?))", json.dumps(numbers)
+    return f"{column} = ANY(%s)", numbers
+
+
+def total(conn: Any, expression: str) -> str:
+    """SQLite's total(x) (a float, 0.0 over no rows) in the connection's SQL."""
+    if dialect_of(conn) == "sqlite":
+        return f"total({expression})"
+    return f"coalesce(sum({expression}), 0)::float8"
+
+
+@contextmanager
+def writing(conn: Any) -> Iterator[Any]:
+    """One write transaction: committed at the end, rolled back on any error.
+    SQLite: the file checked first (db/schema.py's check_writable), BEGIN
+    IMMEDIATE.  PostgreSQL: under the writers' advisory lock (db/postgres.py)."""
+    if dialect_of(conn) == "sqlite":
+        from sass_tui.db.schema import check_writable, transaction
+
+        check_writable(conn)
+        with transaction(conn):
+            yield conn
+        return
+    from sass_tui.db.postgres import WRITE_LOCK
+
+    with conn.transaction():
+        conn.execute("SELECT pg_advisory_xact_lock(%s)", (WRITE_LOCK,))
+        yield conn
