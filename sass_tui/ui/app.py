@@ -24,7 +24,7 @@ if TYPE_CHECKING:  # the database costs start-up time: imported when first used
     from sass_tui.db.individual import Individual
     from sass_tui.db.lists import QueryLists
     from sass_tui.model.strength import StrengthSheet
-    from sass_tui.ui.query_screen import DatabaseOpened
+    from sass_tui.ui.query_messages import DatabaseOpened
 
 
 class SassApp(App):

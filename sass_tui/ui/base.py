@@ -11,8 +11,9 @@ screen's bindings are its own.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import TYPE_CHECKING, cast
+import asyncio
+from collections.abc import Callable, Coroutine
+from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from textual import events
 from textual.binding import Binding
@@ -26,12 +27,20 @@ if TYPE_CHECKING:  # app.py imports the screens: at run time this would be a cyc
     from sass_tui.ui.app import SassApp
 
 
+T = TypeVar("T")
+
+
 class SassScreen(Screen):
     # Every screen's help (bindings merge down the class hierarchy).
     BINDINGS = [
         Binding("f1", "help", "Help", show=False),
         Binding("question_mark", "help", "Help", show=False),
     ]
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        super().__init__(*args, **kwargs)
+        # The commands asking their questions now (converse).
+        self._conversations: set[asyncio.Task[None]] = set()
 
     @property
     def sass_app(self) -> SassApp:
@@ -59,8 +68,57 @@ class SassScreen(Screen):
     ) -> None:
         self.message_line.ask(prompt, on_answer, initial, on_cancel, kind)
 
+    def converse(self, questions: Coroutine[Any, Any, None]) -> None:
+        """Run a command that asks several questions in turn: `questions` is
+        one coroutine that awaits each answer (`answer_to`, `choose`) and
+        reads top to bottom.  The keys typed from now on are its answers.
+
+        It runs as a task of this screen, not as a worker: a worker is work
+        under way (`app.workers.wait_for_complete()` waits for it, the palette
+        calls its screen busy), a question waits for the user.  A bug in it
+        is raised on the screen's message loop, as a handler's would be."""
+        line = self.message_line
+        line.hold()
+
+        async def run() -> None:
+            async with line.conversation():
+                await questions
+
+        task = asyncio.get_running_loop().create_task(run())
+        self._conversations.add(task)  # the loop keeps only a weak reference
+        task.add_done_callback(self._conversation_done)
+
+    def _conversation_done(self, task: asyncio.Task[None]) -> None:
+        self._conversations.discard(task)
+        error = None if task.cancelled() else task.exception()
+        if error is None:
+            return
+
+        def raise_it() -> None:
+            raise error
+
+        self.call_next(raise_it)
+
+    async def choose(self, screen: Screen[T]) -> T | None:
+        """Push a modal screen and wait, in `converse`, for what it is
+        dismissed with."""
+        chosen: asyncio.Future[T | None] = asyncio.get_running_loop().create_future()
+        self.app.push_screen(screen, chosen.set_result)
+        return await chosen
+
+    async def answer_to(self, prompt: str, initial: str = "") -> str | None:
+        """Ask and wait, in `converse`: the answer, None when cancelled (Escape)."""
+        return await self.message_line.answer_to(prompt, initial)
+
     async def on_key(self, event: events.Key) -> None:
-        if self.message_line.prompting:
+        line = self.message_line
+        if line.prompting:
+            if not line.answer.display:
+                # A conversation whose first question is not shown yet: the
+                # key is its answer's, never a command (converse).
+                event.stop()
+                event.prevent_default()
+                line.type_ahead(event.key, event.character)
             return  # the prompt's own keys (Enter, Escape) are the answer's bindings
         node: DOMNode | None = self.focused
         while node is not None and node is not self:

@@ -23,6 +23,7 @@ from sass_tui.model.vocabulary import GENDERS
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
 from sass_tui.ui.widgets import MessageLine
+from sass_tui.ui.widgets.message_line import CANCELLED
 
 if TYPE_CHECKING:  # numpy: imported when a family is written
     from sass_tui.model.accommodation import Family
@@ -128,28 +129,27 @@ class FamilyScreen(SassScreen):
     # --- the questions ------------------------------------------------------------
     def action_build(self) -> None:
         """Build a new family (coverage, number of manikins)."""
-        self.ask(
-            f"Gender ({' or '.join(GENDERS)}) [{self.default_gender}]:",
-            self._gender_given,
-        )
+        self.converse(self._build_questions())
 
-    def _gender_given(self, text: str) -> None:
+    async def _build_questions(self) -> None:
+        """The family's questions in turn (gender, measures, coverage), then
+        the build in a worker."""
+        text = await self.answer_to(f"Gender ({' or '.join(GENDERS)}) [{self.default_gender}]:")
+        if text is None:
+            self.say(CANCELLED)
+            return
         gender = text.strip().lower() or self.default_gender
         if gender not in GENDERS:
             raise FamilyAnswerError(f"expected {' or '.join(GENDERS)}, got {text.strip()!r}")
-        self.ask(
-            f"Measures, 2 to 6 separated by commas [{DEFAULT_MEASURES}]:",
-            lambda answer: self._measures_given(gender, answer),
-        )
-
-    def _measures_given(self, gender: str, text: str) -> None:
+        text = await self.answer_to(f"Measures, 2 to 6 separated by commas [{DEFAULT_MEASURES}]:")
+        if text is None:
+            self.say(CANCELLED)
+            return
         measures = parse_measures(text)
-        self.ask(
-            f"Coverage in % [{DEFAULT_COVERAGE:g}]:",
-            lambda answer: self._coverage_given(gender, measures, answer),
-        )
-
-    def _coverage_given(self, gender: str, measures: list[str], text: str) -> None:
+        text = await self.answer_to(f"Coverage in % [{DEFAULT_COVERAGE:g}]:")
+        if text is None:
+            self.say(CANCELLED)
+            return
         coverage = parse_coverage(text)
         self.say(
             f"Building the {gender} family over {', '.join(measures)} at {coverage:g} % "

@@ -98,13 +98,16 @@ class FitScreen(SassScreen):
             self.say("The fit test is running: wait for it, or Esc.")
             return
 
-        def chosen(name: str) -> None:
-            self.target = name or None
-            self.query_one("#fit-title", Static).update(self.title_text())
-            self.query_one("#fit-table", Static).update("Testing, please wait...")
-            self.start_fit()
+        self.converse(self._choose_target())
 
-        pick_target(self, self.lists, self.target, chosen)
+    async def _choose_target(self) -> None:
+        name = await pick_target(self, self.lists, self.target)
+        if name is None:
+            return
+        self.target = name or None
+        self.query_one("#fit-title", Static).update(self.title_text())
+        self.query_one("#fit-table", Static).update("Testing, please wait...")
+        self.start_fit()
 
     def on_work_progressed(self, event: WorkProgressed) -> None:
         event.stop()

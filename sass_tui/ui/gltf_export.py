@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from sass_tui.model.errors import SassError
+from sass_tui.ui.widgets.message_line import CANCELLED
 
 if TYPE_CHECKING:
     from sass_tui.model.figure import Figure
@@ -27,46 +28,43 @@ if TYPE_CHECKING:
 
 def ask_gltf_export(screen: SassScreen, figure: Figure, default: str) -> None:
     """Ask for the file name and the pose, then write `figure` as glTF."""
-    screen.ask(
-        f"glTF file name (.glb, or .gltf + .bin) [{default}]:",
-        lambda text: _ask_pose(screen, figure, text.strip() or default),
-    )
+    screen.converse(_export(screen, figure, default))
 
 
-def _ask_pose(screen: SassScreen, figure: Figure, name: str) -> None:
-    from sass_tui.model.gltf import POSES, check_path, pose_of
-
-    # A served session's file stays in its working directory (SassApp.user_path).
-    path = check_path(screen.sass_app.user_path(name))  # refused before the next prompt
-
-    def posed(answer: str) -> None:
-        _export(screen, figure, path, pose_of(answer))
-
-    screen.ask(f"Pose: {' or '.join(POSES)} [{POSES[0]}]:", posed)
-
-
-def _export(screen: SassScreen, figure: Figure, path: Path, pose: str) -> None:
-    from sass_tui.model.gltf import bin_path, render_gltf
+async def _export(screen: SassScreen, figure: Figure, default: str) -> None:
+    """Export glTF's questions: the file name, the pose, and y/N before a
+    file is replaced."""
+    from sass_tui.model.gltf import POSES, bin_path, check_path, pose_of, render_gltf
     from sass_tui.model.hanim import not_in_humanoid_note
 
+    name = await screen.answer_to(f"glTF file name (.glb, or .gltf + .bin) [{default}]:")
+    if name is None:
+        screen.say(CANCELLED)
+        return
+    # A served session's file stays in its working directory (SassApp.user_path).
+    name = name.strip() or default
+    path = check_path(screen.sass_app.user_path(name))  # refused before the next prompt
+    answer = await screen.answer_to(f"Pose: {' or '.join(POSES)} [{POSES[0]}]:")
+    if answer is None:
+        screen.say(CANCELLED)
+        return
+    pose = pose_of(answer)
     asset = render_gltf(figure, pose)
     files = [path] if path.suffix.lower() == ".glb" else [path, bin_path(path)]
     done = (
         f"Exported the {pose} glTF body to {' and '.join(map(str, files))}."
         f"{not_in_humanoid_note(figure)}"
     )
-    existing = [f for f in files if f.exists()]
-    if not existing:
-        _write(screen, asset, path, done)
-        return
-
-    def overwrite(answer: str) -> None:
-        if answer.strip().lower() in ("y", "yes"):
-            _write(screen, asset, path, done)
-        else:
-            screen.say(f"Not written; {' and '.join(map(str, existing))} kept as it was.")
-
-    screen.ask(f"{' and '.join(map(str, existing))} exists. Overwrite? (y/N)", overwrite)
+    existing = " and ".join(str(f) for f in files if f.exists())
+    if existing:
+        answer = await screen.answer_to(f"{existing} exists. Overwrite? (y/N)")
+        if answer is None:
+            screen.say(CANCELLED)
+            return
+        if answer.strip().lower() not in ("y", "yes"):
+            screen.say(f"Not written; {existing} kept as it was.")
+            return
+    _write(screen, asset, path, done)
 
 
 def _write(screen: SassScreen, asset: GltfDocument, path: Path, done: str) -> None:

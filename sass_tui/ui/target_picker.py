@@ -6,7 +6,7 @@ cancelled."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from textual.app import ComposeResult
 from textual.binding import Binding
@@ -16,6 +16,9 @@ from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
 from sass_tui.db.lists import DB_ERRORS, QueryLists
+
+if TYPE_CHECKING:  # for the annotation only
+    from sass_tui.ui.base import SassScreen
 
 NO_TARGET = "No target (unweighted)"
 
@@ -61,27 +64,24 @@ class TargetPicker(ModalScreen[str | None]):
             self.dismiss("" if index == 0 else self.names[index - 1])
 
 
-def pick_target(screen, lists: QueryLists, current: str | None, chosen: Callable[[str], None]):
-    """Open the picker over `screen` (a SassScreen); `chosen(name or "")` when one is taken."""
+async def pick_target(screen: SassScreen, lists: QueryLists, current: str | None) -> str | None:
+    """The picker over `screen`, in its `converse`: the name taken, "" for no
+    target; None when none was (said on the message line)."""
     try:
         names = target_names(lists)
     except DB_ERRORS as exc:
         screen.complain(f"Cannot read the targets: {exc}")
-        return
+        return None
     if not names:
         screen.say(
             "No target populations in the database: make one with "
             "`sass target NAME --gender G --sample FILE.csv`."
         )
-        return
-
-    def done(name: str | None) -> None:
-        if name is None:
-            screen.say("Target unchanged.")
-        else:
-            chosen(name)
-
-    screen.app.push_screen(TargetPicker(names, current), done)
+        return None
+    name = await screen.choose(TargetPicker(names, current))
+    if name is None:
+        screen.say("Target unchanged.")
+    return name
 
 
 def weighted_count_words(lists: QueryLists, query: str, name: str) -> str:

@@ -4,7 +4,7 @@ Textual has no public way to ask which keys a widget or a screen binds: its
 class's `BINDINGS` merged with its base classes' (`inherit_bindings`) and
 any bound at run time.  sass needs the answer twice: a screen runs its own
 bindings in the order keys arrive, after the focused widgets' own
-(ui/base.py, ui/widgets.py), and the help screen and the command palette list
+(ui/base.py, ui/widgets/editor.py), and the help screen and the command palette list
 every screen's bindings, shown or not (ui/palette.py).  Both read Textual's
 `DOMNode._bindings` (an instance's map) and `DOMNode._merge_bindings()` (a
 class's), here only; tests/ui/test_textual_api.py fails, naming what moved,

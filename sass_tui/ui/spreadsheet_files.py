@@ -1,0 +1,232 @@
+"""The spreadsheet's file commands (report §12.2.4): Input Data, Create
+Figure, Export HAnim and glTF.  Files are read and written in workers that
+get an immutable input (a path, the rendered text)."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from textual import work
+
+from sass_tui.model.errors import SassError
+from sass_tui.model.names import (
+    GIRTH,
+    GROUP_TITLES,
+    GROUPS,
+    STRENGTH,
+)
+from sass_tui.model.popfile import read_population_file
+from sass_tui.ui.spreadsheet_base import (
+    AnswerError,
+    PopulationRead,
+    SheetScreenBase,
+    StrengthRead,
+    WorkerSaid,
+)
+from sass_tui.ui.widgets.message_line import CANCELLED
+
+
+def _slug(name: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("_") or "person"
+
+
+class FileCommands(SheetScreenBase):
+    # --- Input Data -----------------------------------------------------------------
+    def action_input_data(self) -> None:
+        """Read a population (or strength) file into the group shown."""
+        if self.data_group == STRENGTH:
+            self.ask(
+                "Strength data file: (or a data set: example, anderson2007)", self._input_data_from
+            )
+            return
+        self.ask(f"{GROUP_TITLES[self.data_group]} population file:", self._input_data_from)
+
+    def _input_data_from(self, text: str) -> None:
+        if not text.strip():
+            self.say("No file given; nothing loaded.")
+            return
+        if self.data_group == STRENGTH and self._strength_data_set(text.strip().lower()):
+            return
+        # Refused here, before any worker opens it: a FIFO would block it forever.
+        path = self.sass_app.regular_file(text.strip())
+        self.say(f"Reading {text.strip()} ...")
+        self.read_data_file(path, self.data_group)
+
+    def _strength_data_set(self, name: str) -> bool:
+        """A strength data set named instead of a file (docs/strength.md): the
+        example data read again, or Anderson et al. 2007's curves shown."""
+        from sass_tui.model.published_strength import DATA_SET, EXAMPLE_DATA_SET
+
+        if name == EXAMPLE_DATA_SET:
+            from sass_tui.model.strength import default_path
+
+            self.say(f"Reading the example data ({default_path().name}) ...")
+            self.read_data_file(default_path(), STRENGTH)
+            return True
+        if name == DATA_SET:
+            self.action_strength_curve()
+            return True
+        return False
+
+    @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
+    def read_data_file(self, path: Path, group: str) -> None:
+        """Input Data: read in a worker; a file that fails changes nothing."""
+        what = "strength data" if group == STRENGTH else GROUP_TITLES[group]
+        try:
+            if group == STRENGTH:
+                from sass_tui.model.strength import read_strength_file
+
+                self.post_message(StrengthRead(read_strength_file(path)))
+            else:
+                self.post_message(PopulationRead(group, read_population_file(path, group)))
+        except SassError as exc:
+            self.post_message(WorkerSaid(f"{exc}; {what} unchanged.", "error"))
+        except OSError as exc:
+            self.post_message(
+                WorkerSaid(f"{path}: {exc.strerror or exc}; {what} unchanged.", "error")
+            )
+
+    def on_strength_read(self, event: StrengthRead) -> None:
+        data = event.data
+        self.session.load_strength(data)
+        self._warning_index = 0
+        self.refresh_screen()
+        self.say(f"Loaded strength from {data.path} ({data.title}).")
+        if self.session.warnings:
+            self._show_warning()
+
+    def on_population_read(self, event: PopulationRead) -> None:
+        group, data = event.group, event.data
+        gender = self.figure.gender
+        if not data.has(gender):
+            self.complain(
+                f"{data.path}: no 'T {gender.upper()}' section for this {gender} "
+                f"figure; {GROUP_TITLES[group]} unchanged."
+            )
+            return
+        try:
+            self.session.load_group(group, data)
+        except SassError as exc:
+            self.complain(f"{exc}; {GROUP_TITLES[group]} unchanged.")
+            return
+        self._warning_index = 0
+        self.refresh_screen()
+        self.say(f"Loaded {GROUP_TITLES[group]} from {data.path} ({data.title}).")
+        if self.session.warnings:
+            self._show_warning()
+
+    # --- Create Figure --------------------------------------------------------------
+    def _default_name(self, suffix: str) -> str:
+        """Create Figure's and Export HAnim's file name: the person's shown,
+        else the figure's gender and girth percentile (MALE50.FIG)."""
+        from sass_tui.model.figfile import default_fig_name
+
+        figure = self.figure
+        if figure.person:
+            return f"{_slug(figure.person)}{suffix}"
+        name = default_fig_name(figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
+        return name if suffix == ".fig" else Path(name).with_suffix(suffix).name
+
+    def action_create_figure(self) -> None:
+        """Write the figure shown as a .fig file."""
+        missing = self.figure.missing_groups()
+        if missing:
+            self.complain(
+                f"Cannot create a figure: {', '.join(missing)} not loaded for {self.figure.gender}."
+            )
+            return
+        self.converse(self._create_figure())
+
+    async def _create_figure(self) -> None:
+        """Create Figure's questions: the file name, whether to include
+        strength (when it is loaded), and y/N before a file is replaced."""
+        default = self._default_name(".fig")
+        name = await self.answer_to(f"Figure file name [{default}]:")
+        if name is None:
+            self.say(CANCELLED)
+            return
+        path = self.sass_app.user_path(name.strip() or default)
+        sections = []
+        strength = self.session.strength_sheet
+        if strength is not None:
+            answer = await self.answer_to("Include strength in the figure? (Y/n)")
+            if answer is None:
+                self.say(CANCELLED)
+                return
+            word = answer.strip().lower()
+            if word in ("", "y", "yes"):
+                from sass_tui.model.strength import fig_section, lower_limb_fig_section
+
+                sections = [fig_section(strength), lower_limb_fig_section(self.figure)]
+            elif word not in ("n", "no"):
+                raise AnswerError(f"expected y or n, got {answer.strip()!r}; nothing written")
+        if await self._may_write(path):
+            self._write_figure(path, sections)
+
+    async def _may_write(self, path: Path) -> bool:
+        """A new file may be written; an existing one only after the user says y."""
+        if not path.exists():
+            return True
+        answer = await self.answer_to(f"{path} exists. Overwrite it? (y/N)")
+        if answer is None:
+            self.say(CANCELLED)
+            return False
+        if answer.strip().lower() in ("y", "yes"):
+            return True
+        self.say(f"Not written; {path} kept as it was.")
+        return False
+
+    def _write_figure(self, path: Path, sections: list) -> None:
+        """Rendered here, on the UI thread: the worker gets the text, never the
+        figure the user may be editing meanwhile."""
+        from sass_tui.model.figfile import render_fig
+
+        figure = self.figure
+        text = render_fig(figure, sections)
+        filled = sum(int(figure.output_values(g)[1].sum()) for g in GROUPS)
+        note = (
+            f" {filled} values not measured for {figure.person} came from the population."
+            if filled
+            else ""
+        )
+        self.write_text(path, text, f"Wrote {path}.{note}")
+
+    @work(thread=True, group="write", exit_on_error=False)
+    def write_text(self, path: Path, text: str, done: str) -> None:
+        from sass_tui.model.atomic import write_text_atomic
+
+        try:
+            write_text_atomic(path, text)
+        except (SassError, OSError) as exc:
+            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else exc
+            self.post_message(WorkerSaid(f"{path}: cannot write: {reason}", "error"))
+            return
+        self.post_message(WorkerSaid(done))
+
+    # --- Export HAnim -----------------------------------------------------------------
+    def action_export_hanim(self) -> None:
+        """Write the figure shown as an HAnim X3D humanoid."""
+        self.converse(self._export_hanim())
+
+    async def _export_hanim(self) -> None:
+        """Export HAnim's questions: the file name, and y/N before a file is
+        replaced."""
+        from sass_tui.model.hanim import not_in_humanoid_note, render_hanim
+
+        default = self._default_name(".x3d")
+        name = await self.answer_to(f"HAnim file name [{default}]:")
+        if name is None:
+            self.say(CANCELLED)
+            return
+        path = self.sass_app.user_path(name.strip() or default)
+        text = render_hanim(self.figure)  # on the UI thread: see _write_figure
+        done = f"Exported the HAnim humanoid to {path}.{not_in_humanoid_note(self.figure)}"
+        if await self._may_write(path):
+            self.write_text(path, text, done)
+
+    def action_export_gltf(self) -> None:
+        """Write the figure shown as a glTF 2.0 body (.glb)."""
+        from sass_tui.ui.gltf_export import ask_gltf_export
+
+        ask_gltf_export(self, self.figure, self._default_name(".glb"))

@@ -1,0 +1,245 @@
+"""The report's command/message window: says things, and asks."""
+
+from __future__ import annotations
+
+import asyncio
+from collections.abc import AsyncIterator, Callable
+from contextlib import asynccontextmanager
+
+from rich.text import Text
+from textual.binding import Binding
+from textual.containers import Horizontal
+from textual.message import Message
+from textual.widget import Widget
+from textual.widgets import Input, Label
+
+from sass_tui.model.errors import SassError
+from sass_tui.ui.widgets.formats import printable_lines
+
+
+class AnswerInput(Input):
+    BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
+
+    class Cancelled(Message):
+        pass
+
+    def action_cancel(self) -> None:
+        self.post_message(self.Cancelled())
+
+    def submit(self) -> None:
+        """Enter, from code that cannot await: what Input.action_submit (a
+        coroutine) does for an input without validators."""
+        self.post_message(self.Submitted(self, self.value))
+
+
+Handler = Callable[[str], None]
+HISTORY_LENGTH = 200
+# What a user may cause in an answer: shown on the message line, never a
+# traceback; anything else is a bug and shows as one.
+USER_ERRORS = (SassError, OSError)
+CANCELLED = "Cancelled; nothing changed."
+
+
+class MessageLine(Horizontal):
+    """The report's command/message window: says things, and asks.
+
+    It owns its prompt: the answer being typed, the handler the answer goes
+    to, the handler of a cancel (Escape), and the widget to give the focus
+    back to.  A handler may ask again (a follow-up question).  A handler's
+    SassError or OSError is shown as an error; after each answer or cancel
+    the line posts `Answered` so the screen can redraw.
+
+    A command of several questions is one coroutine (a `@work` method) that
+    awaits each answer in turn, inside `conversation()`:
+    `name = await line.answer_to("File name:")`, None when cancelled."""
+
+    class Answered(Message):
+        pass
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self._on_answer: Handler | None = None
+        self._on_cancel: Callable[[], None] | None = None
+        self._focus_after: Widget | None = None
+        # A conversation's state: the question awaited, and answers given
+        # before the next question was asked (an Enter typed ahead).
+        self._held = False
+        self._future: asyncio.Future[str | None] | None = None
+        self._early: list[str | None] = []
+        # What was said, oldest first: one line is cut at the terminal's width,
+        # the message log (`l`) shows it whole.
+        self.history: list[tuple[str, str]] = []
+
+    def compose(self):
+        yield Label("", id="message")
+        yield AnswerInput(id="answer", compact=True, select_on_focus=False)
+
+    def on_mount(self) -> None:
+        self.answer.display = False
+
+    @property
+    def answer(self) -> AnswerInput:
+        return self.query_one("#answer", AnswerInput)
+
+    def show(self, text: str, kind: str = "info") -> None:
+        # Messages quote names and titles from files: no escape sequence in
+        # them may reach the terminal (issue 17).
+        text = printable_lines(text)
+        if kind != "prompt" and (not self.history or self.history[-1] != (kind, text)):
+            self.history.append((kind, text))
+            del self.history[:-HISTORY_LENGTH]
+        label = self.query_one("#message", Label)
+        label.update(Text(text))
+        for name in ("info", "error", "warning", "prompt"):
+            label.set_class(name == kind, f"-{name}")
+
+    def say(self, text: str) -> None:
+        self.show(text, "info")
+
+    def complain(self, text: str) -> None:
+        self.show(text, "error")
+
+    @property
+    def prompting(self) -> bool:
+        """A prompt is open, or a conversation holds the keys for its next
+        question."""
+        return bool(self.answer.display) or self._held
+
+    def ask(
+        self,
+        prompt: str,
+        on_answer: Handler,
+        initial: str = "",
+        on_cancel: Callable[[], None] | None = None,
+        kind: str = "prompt",
+    ) -> None:
+        self._on_answer, self._on_cancel = on_answer, on_cancel
+        self._open(prompt, initial, kind)
+
+    def _open(self, prompt: str, initial: str, kind: str) -> None:
+        focused = self.screen.focused
+        if focused is not None and focused is not self.answer:
+            self._focus_after = focused
+        self.show(prompt + " ", kind)
+        answer = self.answer
+        if not (self._held and answer.value):  # what was typed ahead stays
+            answer.value = initial
+        answer.display = True
+        # Now, not on the next idle: the keys that follow belong to the answer.
+        self.screen.set_focus(answer)
+        answer.cursor_position = len(answer.value)
+
+    # --- a conversation: questions awaited one after another ----------------------
+    def hold(self) -> None:
+        """A conversation is about to start (its task runs soon, SassScreen.
+        converse): from now the keys typed are its first question's, even
+        before the question shows."""
+        self._held = True
+
+    @asynccontextmanager
+    async def conversation(self) -> AsyncIterator[None]:
+        """The questions of one command, asked in turn by `answer_to`.
+
+        From `hold` (or the start) to the end the keys are the questions':
+        typed before the next question shows, they are its answer, as
+        TypedAhead makes them for a single prompt.  A SassError or OSError
+        raised inside ends the conversation on the line, as a handler's
+        does; at the end the focus goes back and `Answered` is posted."""
+        self._held = True
+        try:
+            yield
+        except USER_ERRORS as exc:
+            self.complain(str(exc))
+        finally:
+            self._held = False
+            self._early.clear()
+            if self.is_attached:
+                self._close()
+                self.post_message(self.Answered())
+
+    async def answer_to(self, prompt: str, initial: str = "", kind: str = "prompt") -> str | None:
+        """Ask inside `conversation()` and wait: the answer, or None when
+        cancelled (Escape)."""
+        if self._early:  # answered before it was asked
+            return self._early.pop(0)
+        future: asyncio.Future[str | None] = asyncio.get_running_loop().create_future()
+        self._future = future
+        self._open(prompt, initial, kind)
+        try:
+            return await future
+        finally:
+            self._future = None
+
+    def _settle(self, answer: str | None) -> None:
+        """An answer or cancel in a conversation: to the question awaited, or
+        kept for the next one.  The answer keeps the focus until the end."""
+        self.answer.value = ""
+        future = self._future
+        if future is not None and not future.done():
+            future.set_result(answer)
+        else:
+            self._early.append(answer)
+
+    def keep_focus(self) -> None:
+        """While asking, the answer keeps the focus (a click elsewhere does not
+        take the keys away from the prompt)."""
+        if self.answer.display and self.screen.focused is not self.answer:
+            self.screen.set_focus(self.answer)
+
+    def type_ahead(self, key: str, character: str | None, text: str = "") -> None:
+        """A key that reached another widget before the answer had the focus."""
+        if not self.prompting:
+            return
+        answer = self.answer
+        if text:
+            answer.insert_text_at_cursor(text)
+        elif key == "enter":
+            answer.submit()
+        elif key == "escape":
+            answer.action_cancel()
+        elif key == "backspace":
+            answer.action_delete_left()
+        elif character and character.isprintable():
+            answer.insert_text_at_cursor(character)
+
+    def _close(self) -> tuple[Handler | None, Callable[[], None] | None]:
+        handlers = self._on_answer, self._on_cancel
+        self._on_answer = self._on_cancel = None
+        answer = self.answer
+        answer.value = ""
+        answer.display = False
+        focus, self._focus_after = self._focus_after, None
+        if focus is not None and focus.is_attached and focus.display:
+            # Synchronously, so that a follow-up question keeps the focus.
+            self.screen.set_focus(focus)
+        return handlers
+
+    def _run(self, handler: Callable[[], None]) -> None:
+        try:
+            handler()
+        except USER_ERRORS as exc:
+            self.complain(str(exc))
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        event.stop()
+        if self._held:
+            self._settle(event.value)
+            self.post_message(self.Answered())
+            return
+        on_answer, _ = self._close()
+        if on_answer is not None:
+            self._run(lambda: on_answer(event.value))
+        self.post_message(self.Answered())
+
+    def on_answer_input_cancelled(self, event: AnswerInput.Cancelled) -> None:
+        event.stop()
+        if self._held:
+            self._settle(None)
+            self.post_message(self.Answered())
+            return
+        _, on_cancel = self._close()
+        if on_cancel is not None:
+            self._run(on_cancel)
+        else:
+            self.say(CANCELLED)
+        self.post_message(self.Answered())
