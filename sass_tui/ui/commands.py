@@ -152,7 +152,7 @@ COMMANDS: tuple[CommandSpec, ...] = (
         row=5,
         available=_on_strength_page,
     ),
-    # Issue 13: predict a figure from known values; the interval of a predicted cell.
+    # Predict a figure from known values; the interval of a predicted cell.
     CommandSpec(
         "predict",
         "k",
@@ -174,7 +174,7 @@ COMMANDS: tuple[CommandSpec, ...] = (
         available=_showing_prediction,
         in_footer=False,
     ),
-    # Issue 14: a manikin family, on a screen of its own; its slot is Interval's
+    # A manikin family, on a screen of its own; its slot is Interval's
     # while a person or a prediction is shown.
     CommandSpec(
         "family",

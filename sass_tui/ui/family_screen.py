@@ -1,4 +1,4 @@
-"""A manikin family on screen (issue 14): the gender, measures and coverage
+"""A manikin family on screen: the gender, measures and coverage
 asked on the message line, the family computed in a worker (`load_family`,
 as `sass family` does), shown as a table and as a scatter plot of the first
 two measures with the population's people and the manikins; `w` writes the

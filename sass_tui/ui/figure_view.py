@@ -50,7 +50,7 @@ class FigureView(Vertical):
         self.canvas_focus = canvas_focus
         # True beside the spreadsheet: the view takes its place at once and
         # draws one frame after it is first shown, so that the spreadsheet's
-        # first screen does not wait for the canvas (issue 16).
+        # first screen does not wait for the canvas.
         self.canvas_later = canvas_later
 
     def compose(self) -> ComposeResult:

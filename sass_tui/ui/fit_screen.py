@@ -1,4 +1,4 @@
-"""Fit Test (issue 14) on the query screen: the current query as design limits
+"""Fit Test on the query screen: the current query as design limits
 over a population (default `source = ansur2`), shown as `sass fit` prints it:
 the shares per gender and weighted, the naive estimate, the per-limit table;
 below it a histogram (textual-plotext) of one limited measurement for the

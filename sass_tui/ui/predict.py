@@ -1,4 +1,4 @@
-"""Predict on the spreadsheet (issue 13): the known values are typed on the
+"""Predict on the spreadsheet: the known values are typed on the
 message line with their names completed as they are typed; the prediction
 model is opened in a worker (the first fit takes about a second) and posted
 back as `PredictorOpened`.

@@ -1,4 +1,4 @@
-"""Progress of long work on screen (issue 15): a bar with the count done/total
+"""Progress of long work on screen: a bar with the count done/total
 and "Esc cancels", fed by Messages that a worker posts.
 
     work = screen.begin_work("Input DB", bar)   # on the UI thread

@@ -45,14 +45,14 @@ class QueryScreenBase(SassScreen):
         # The queries whose people were moved to the selected list (the
         # population's title says them).
         self.selected_from: list[str] = []
-        self.work: Work | None = None  # the long work under way (issue 15)
+        self.work: Work | None = None  # the long work under way
         self.target: str | None = None  # the target population answers are weighted to
 
     @property
     def sheet(self) -> ListSheet:
         return self.query_one(ListSheet)
 
-    # --- long work: progress bar and Escape (issue 15) -----------------------------
+    # --- long work: progress bar and Escape -----------------------------
     def begin_work(self, what: str, show_after: float = 0.0, busy: bool = True) -> Work:
         """Start long work: the bar (at once, or after `show_after` s) and its
         cancel; `busy`: list commands wait for it (not while the database opens)."""

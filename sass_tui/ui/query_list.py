@@ -65,7 +65,7 @@ def _cell(row: dict, key: str) -> str:
         return ""
     if isinstance(value, float):
         return f"{value:.1f}" if key in ("mass", "stature") else f"{value:g}"
-    return printable(value)  # names and sources come from files (issue 17)
+    return printable(value)  # names and sources come from files
 
 
 class ListSheet(Widget, can_focus=True):

@@ -36,7 +36,7 @@ class PopulationCommands(QueryScreenBase):
             else "No target: the people unweighted."
         )
 
-    # --- Make Population (issue 12) ----------------------------------------------------
+    # --- Make Population ----------------------------------------------------
     def action_make_population(self) -> None:
         """Write and load population files made of the selected list's people
         (Select One / Select All), not the last query's."""
@@ -134,7 +134,7 @@ class PopulationCommands(QueryScreenBase):
             "the loaded population."
         )
 
-    # --- Fit Test (issue 14) ------------------------------------------------------------
+    # --- Fit Test ------------------------------------------------------------
     def action_fit_test(self) -> None:
         """Test a population against the last query as design limits."""
         from sass_tui.db.fit import DEFAULT_POPULATION

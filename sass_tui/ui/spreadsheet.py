@@ -114,7 +114,7 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
 
     def _first_screen_drawn(self) -> None:
         # The figure panel takes its place on the first screen and is drawn
-        # one frame after it (issue 16: the outline and the canvas cost ~25 ms);
+        # one frame after it (the outline and the canvas cost ~25 ms);
         # once, when it is shown.
         self._first_screen_shown = True
         self.redraw_figure_panel()

@@ -28,7 +28,7 @@ from sass_tui.ui.widgets import (
     MessageLine,
 )
 
-if TYPE_CHECKING:  # numpy-heavy: imported when first used, after the first screen (issue 16)
+if TYPE_CHECKING:  # numpy-heavy: imported when first used, after the first screen
     from sass_tui.model.prediction import Prediction, Predictor
     from sass_tui.model.strength import StrengthData
 
@@ -92,7 +92,7 @@ class SheetScreenBase(SassScreen):
         # The prediction shown and its figure (shown while it is session.person).
         self.prediction: tuple[Prediction, Figure] | None = None
 
-    # --- the live figure panel (issue 15) -----------------------------------------
+    # --- the live figure panel -----------------------------------------
     @property
     def figure_panel(self):
         """The FigureView beside the data, or None (never mounted: narrow terminal)."""

@@ -32,7 +32,7 @@ from sass_tui.ui.spreadsheet_base import (
 )
 from sass_tui.ui.widgets.message_line import CANCELLED
 
-if TYPE_CHECKING:  # numpy-heavy: imported when first used, after the first screen (issue 16)
+if TYPE_CHECKING:  # numpy-heavy: imported when first used, after the first screen
     from sass_tui.model.strength import StrengthData
 
 
@@ -104,7 +104,7 @@ class PeopleCommands(SheetScreenBase):
         self.say(f"Person {index + 1} of {total} in the selected list: {person.person}.")
 
     def _own_strength(self, index: int, person: Figure) -> StrengthData | str:
-        """The person's own strength experiments (issue 11), or why there are none."""
+        """The person's own strength experiments, or why there are none."""
         from sass_tui.db.individual import strength_measurements
         from sass_tui.model.strength import person_strength_data
 
@@ -138,14 +138,14 @@ class PeopleCommands(SheetScreenBase):
         self.refresh_screen()
         self.say(f"Population {self.figure.population} displayed.")
 
-    # --- Family (issue 14) ----------------------------------------------------------------
+    # --- Family ----------------------------------------------------------------
     def action_family(self) -> None:
         """Build a manikin family covering the population."""
         from sass_tui.ui.family_screen import FamilyScreen
 
         self.app.push_screen(FamilyScreen(self.sass_app.db_path, self.session.population.gender))
 
-    # --- Predict (issue 13) ---------------------------------------------------------------
+    # --- Predict ---------------------------------------------------------------
     def action_predict(self) -> None:
         """Predict a whole figure from a few known measurements."""
         if self._predictor is not None:

@@ -16,7 +16,7 @@ from rich.text import Text
 from sass_tui.model.vocabulary import JOINT_AXES
 from sass_tui.ui.widgets import DataSheet
 
-if TYPE_CHECKING:  # numpy-heavy: the page is hidden on the first screen (issue 16)
+if TYPE_CHECKING:  # numpy-heavy: the page is hidden on the first screen
     from sass_tui.model.strength import StrengthSheet
 
 ANGLE_WIDTH = 6

@@ -19,7 +19,7 @@ class MenuItem(Widget, can_focus=False):
     """One command of a CommandMenu: its label, clicked like a button.
 
     Not Textual's Button: the spreadsheet's 15 Buttons cost ~15 ms of the
-    first screen (issue 16), mostly their large default CSS matched against
+    first screen, mostly their large default CSS matched against
     every widget; the menu uses only the label, the click and the look
     (sass.tcss, query.tcss)."""
 

@@ -170,7 +170,7 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
             line.append(f"{state.rows[index].label:<{name_w}}"[:name_w], name_style)
             for column in range(self.COLUMNS):
                 # Cell by cell in plain floats: the first screen is drawn
-                # before numpy is imported (issue 16).
+                # before numpy is imported.
                 value, percentile = state.cell(index, column // 2)
                 style: str | Style
                 if column % 2 == 0:

@@ -156,7 +156,7 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
                 line.append(" " * max(0, start - column))
                 text = global_text(figure, group, cell.field, self.strength_percentile)
                 cell_style = cursor_style if cell == self.cursor else ""
-                # A terminal narrower than the panel leaves a cell no room (issue 17).
+                # A terminal narrower than the panel leaves a cell no room.
                 width = max(0, span - 1)
                 line.append(f"{text:<{width}}"[:width], cell_style)
                 line.append(" ")

@@ -83,7 +83,7 @@ class MessageLine(Horizontal):
 
     def show(self, text: str, kind: str = "info") -> None:
         # Messages quote names and titles from files: no escape sequence in
-        # them may reach the terminal (issue 17).
+        # them may reach the terminal.
         text = printable_lines(text)
         if kind != "prompt" and (not self.history or self.history[-1] != (kind, text)):
             self.history.append((kind, text))
