@@ -124,6 +124,7 @@ print(sorted(seen))
 """
 
 
+@pytest.mark.slow
 @needs_postgres
 def test_four_imports_at_once_and_four_readers(cluster, ansur_dir, tmp_path):
     url = cluster.create_database("load")
@@ -181,6 +182,7 @@ def test_four_imports_at_once_and_four_readers(cluster, ansur_dir, tmp_path):
         db.close()
 
 
+@pytest.mark.slow
 @needs_postgres
 def test_a_reimport_replaces_and_never_duplicates(cluster, ansur_dir):
     url = cluster.create_database("reimport")
@@ -211,6 +213,7 @@ sys.exit(main(sys.argv[1:]))
 """
 
 
+@pytest.mark.slow
 @needs_postgres
 def test_a_client_killed_mid_import_leaves_the_database_as_before(cluster, ansur_dir):
     url = cluster.create_database("killed")
@@ -246,6 +249,7 @@ def test_a_client_killed_mid_import_leaves_the_database_as_before(cluster, ansur
         db.close()
 
 
+@pytest.mark.slow
 @needs_postgres
 def test_a_server_restarted_between_two_commands(cluster, capsys):
     url = cluster.create_database("restarted")
@@ -274,6 +278,7 @@ def test_a_server_restarted_between_two_commands(cluster, capsys):
         db.close()
 
 
+@pytest.mark.slow
 @needs_postgres
 def test_sass_db_env_names_the_server(cluster, tmp_path):
     url = cluster.create_database("from_env")

@@ -464,6 +464,7 @@ def test_a_file_name_is_glb_or_gltf_or_refused_by_name(text):
         assert path.suffix.lower() in (".glb", ".gltf")
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(shutil.which("chromium") is None, reason="Debian's chromium is not installed")
 def test_the_picture_script_renders_both_figures(tmp_path):
     """scripts/gltf_pictures.py (docs/gltf-figures.png): three.js loads both

@@ -64,14 +64,15 @@ def db(shipped_db_file, tmp_path):
 def new_app(request) -> Callable[..., SassApp]:
     """`new_app(figure=None, db=False, strength_path=None)`: a SassApp as `sass`
     makes it.  `db=True`: on this test's private copy of the shipped database
-    (the `db` fixture, copied only when asked for); a path: that database;
+    (the `db` fixture, copied only when asked for); a path or a PostgreSQL
+    address: that database;
     False: the session's default database ($SASS_DB, tests/conftest.py), for
     tests that never open the query screen."""
 
     def make(
         figure: Figure | None = None,
         *,
-        db: bool | Path = False,
+        db: bool | Path | str = False,
         strength_path: Path | None = None,
     ) -> SassApp:
         db_path = request.getfixturevalue("db") if db is True else (db or None)

@@ -63,6 +63,7 @@ def test_spreadsheet_exports_the_figure_shown(app_at, drive, db, tmp_path):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_query_screen_exports_the_highlighted_person(app_at, drive, db, tmp_path):
     out = tmp_path / "person.gltf"
 

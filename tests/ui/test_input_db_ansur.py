@@ -47,6 +47,7 @@ def test_the_header_tells_a_survey_file_from_a_person_file(tmp_path):
     assert not looks_like_ansur(tmp_path / "missing.csv")
 
 
+@pytest.mark.slow
 def test_input_db_imports_an_ansur_file_under_the_label_asked_for(drive, app_at, db, tmp_path):
     survey = tmp_path / "fieldstudy.csv"
     ids = _small_survey(survey, 30)

@@ -40,6 +40,7 @@ async def choose_cell(pilot, row: int, column: int) -> None:
     await pilot.pause()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("how", ["burst", "press", "paste"])
 def test_a_value_typed_fast_is_the_prompts_not_input_datas(drive, app_at, how):
     async def scenario():

@@ -12,7 +12,6 @@ from textual.widgets import DataTable
 
 from sass_tui.db.database import Database
 from sass_tui.db.fit import load_family
-from sass_tui.ui.app import SassApp
 from sass_tui.ui.family_screen import FamilyScreen
 from sass_tui.ui.query_screen import COMPLETE, QueryScreen, SummaryPanel
 
@@ -20,7 +19,7 @@ QUERY = "gender = female AND stature > 175 cm"
 
 
 @pytest.mark.slow
-def test_the_query_screen_on_postgresql(drive, initialised):
+def test_the_query_screen_on_postgresql(drive, initialised, app_at):
     db = Database.open(initialised["sqlite"])
     try:
         expected = db.count(QUERY)
@@ -29,8 +28,7 @@ def test_the_query_screen_on_postgresql(drive, initialised):
     assert expected > 0
 
     async def scenario():
-        app = SassApp(db_path=initialised["postgresql"])
-        async with app.run_test(size=(120, 40)) as pilot:
+        async with app_at((120, 40), db=initialised["postgresql"]) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             screen = app.screen
@@ -49,13 +47,13 @@ def test_the_query_screen_on_postgresql(drive, initialised):
     drive(scenario())
 
 
-def test_the_tui_takes_an_address(initialised):
-    app = SassApp(db_path=initialised["postgresql"])
+def test_the_tui_takes_an_address(initialised, new_app):
+    app = new_app(db=initialised["postgresql"])
     assert app.db_path == initialised["postgresql"]  # text: a Path would fold its //
 
 
 @pytest.mark.slow
-def test_the_family_screen_on_postgresql(drive, initialised):
+def test_the_family_screen_on_postgresql(drive, initialised, app_at):
     db = Database.open(initialised["sqlite"])
     try:
         with db.connection() as conn:
@@ -64,8 +62,7 @@ def test_the_family_screen_on_postgresql(drive, initialised):
         db.close()
 
     async def scenario():
-        app = SassApp(db_path=initialised["postgresql"])
-        async with app.run_test(size=(100, 37)) as pilot:
+        async with app_at((100, 37), db=initialised["postgresql"]) as (app, pilot):
             await pilot.press("y")
             assert isinstance(app.screen, FamilyScreen)
             await pilot.press("enter")  # gender: male
@@ -82,6 +79,7 @@ def test_the_family_screen_on_postgresql(drive, initialised):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_the_spreadsheets_predictor_on_postgresql(initialised):
     from sass_tui.ui.predict import open_predictor_at
 
