@@ -15,12 +15,12 @@ The goal: each under 0.5 s.
 from __future__ import annotations
 
 import argparse
-import statistics
 import sys
 import tempfile
 import time
-from collections.abc import Callable
 from pathlib import Path
+
+from fit import median_ms  # benchmarks/fit.py: the one timing helper of both
 
 from sass_tui.db.default import create_default_database
 from sass_tui.db.fit import fit_test
@@ -46,15 +46,6 @@ def sample_text(rows: int) -> str:
     lines = ["id,stature[in],mass[kg]"]
     lines += [f"{i},{s / 2.54:.3f},{m:.2f}" for i, (s, m) in enumerate(values)]
     return "\n".join(lines) + "\n"
-
-
-def median_ms(func: Callable[[], object], runs: int) -> tuple[float, float]:
-    times = []
-    for _ in range(runs):
-        start = time.perf_counter()
-        func()
-        times.append((time.perf_counter() - start) * 1000)
-    return statistics.median(times), min(times)
 
 
 def main() -> None:

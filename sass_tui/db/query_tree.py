@@ -79,7 +79,9 @@ class Comparison(_Node):
         yield self
 
 
-class And(_Node):
+class _Terms(_Node):
+    """A node joining its terms (And, Or): one class body for both, told apart by type."""
+
     __slots__ = ("terms",)
     terms: tuple[Expr, ...]
 
@@ -91,16 +93,12 @@ class And(_Node):
             yield from term.comparisons()
 
 
-class Or(_Node):
-    __slots__ = ("terms",)
-    terms: tuple[Expr, ...]
+class And(_Terms):
+    """Every term holds."""
 
-    def __init__(self, terms: tuple[Expr, ...]) -> None:
-        object.__setattr__(self, "terms", tuple(terms))
 
-    def comparisons(self) -> Iterator[Comparison]:
-        for term in self.terms:
-            yield from term.comparisons()
+class Or(_Terms):
+    """Some term holds."""
 
 
 Expr = Comparison | And | Or
