@@ -272,3 +272,19 @@ def grip_strength(
         source=source_label(row),
         sided=row.side != EITHER,
     )
+
+
+def table_words() -> str:
+    """The shipped table in one line, with its source (the strength group's
+    Input Data says it: the page's forces are not the strength page's torques)."""
+    data = read_hfds2003()
+    parts = []
+    for motion in GRIP_MOTIONS:
+        values = [
+            f"{'' if r.side == EITHER else r.side + ' '}{r.newtons:g} N"
+            for r in data.rows
+            if r.motion == motion
+        ]
+        parts.append(f"{GRIP_LABELS[motion]} {', '.join(values)}")
+    sources = sorted({source_label(r) for r in data.rows})
+    return f"{' / '.join(sources)}: {'; '.join(parts)}"
