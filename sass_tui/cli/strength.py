@@ -36,6 +36,10 @@ from sass_tui.model.vocabulary import (
     STRENGTH_TYPES,
 )
 
+# Joint torques and the grips' forces (HFDS 2003 prints newtons), defaults first.
+TORQUE_UNITS = ("ft-lb", "N-m")
+FORCE_UNITS = ("N", "lbf")
+
 
 def register(commands: SubParsers) -> None:
     parser = commands.add_parser(
@@ -127,10 +131,6 @@ def register(commands: SubParsers) -> None:
     parser.set_defaults(func=run)
 
 
-TORQUE_UNITS = ("ft-lb", "N-m")
-FORCE_UNITS = ("N", "lbf")
-
-
 def run(args: argparse.Namespace) -> int:
     from sass_tui.model.published_grip import grip_motion
     from sass_tui.model.published_strength import lower_limb_motion
@@ -162,7 +162,6 @@ def run(args: argparse.Namespace) -> int:
         raise StrengthError(f"--unit {args.unit}: {what} is given in {' or '.join(units)}")
     args.unit = args.unit or units[0]
     if data_set == GRIP_DATA_SET:
-        # Refused before the database is opened (or built).
         return _grip(args, grip)
     if args.percentile is None:
         args.percentile = 50.0
