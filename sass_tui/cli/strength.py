@@ -4,10 +4,14 @@ the source it comes from.
     sass strength shoulder_abduction shoulder_x=30 shoulder_y=45 elbow_y=90
     sass strength knee_extension knee_y=60 --age 30 --mass 80 --stature 180cm --plot
 
-Upper-limb motions come from the example strength file (invented values,
-said so on every answer; angles not given keep the motion's first stored
+Arm motions come from the example strength file (invented values, said so
+on every answer; angles not given keep the motion's first stored
 configuration).  Hip, knee and ankle motions come from Anderson et al. 2007
-(docs/strength.md; an angle not given is the motion's peak angle).
+(docs/strength.md; an angle not given is the motion's peak angle).  Hand
+and thumb-finger grip forces come from FAA HFDS 2003 exhibit 14.5.2.1, as
+printed (5th percentile men, momentary hold).
+
+    sass strength hand_grip --side left
 """
 
 from __future__ import annotations
@@ -15,6 +19,7 @@ from __future__ import annotations
 import argparse
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.model.published_grip import GRIP_DATA_SET, GRIP_MOTIONS
 from sass_tui.model.published_strength import (
     DATA_SET,
     EXAMPLE_DATA_SET,
@@ -31,6 +36,10 @@ from sass_tui.model.vocabulary import (
     STRENGTH_TYPES,
 )
 
+# Joint torques and the grips' forces (HFDS 2003 prints newtons), defaults first.
+TORQUE_UNITS = ("ft-lb", "N-m")
+FORCE_UNITS = ("N", "lbf")
+
 
 def register(commands: SubParsers) -> None:
     parser = commands.add_parser(
@@ -39,11 +48,14 @@ def register(commands: SubParsers) -> None:
         description="Print the strength of MOTION at the given joint angles and its source. "
         "Arm motions: the example data (invented), the stored value when the configuration "
         "is in the data, else the prediction equation.  Hip, knee and ankle: Anderson et "
-        "al. 2007's published model for the figure's (or --person's) body "
-        "(docs/strength.md).",
+        "al. 2007's published model for the figure's (or --person's) body.  Hand and "
+        "thumb-finger grip: the force FAA HFDS 2003 exhibit 14.5.2.1 prints (5th "
+        "percentile men, momentary hold) (docs/strength.md).",
     )
     parser.add_argument(
-        "motion", metavar="MOTION", help=", ".join((*MOTION_NAMES, *LOWER_LIMB_MOTIONS))
+        "motion",
+        metavar="MOTION",
+        help=", ".join((*MOTION_NAMES, *LOWER_LIMB_MOTIONS, *GRIP_MOTIONS)),
     )
     parser.add_argument(
         "angles",
@@ -55,8 +67,9 @@ def register(commands: SubParsers) -> None:
     )
     parser.add_argument(
         "--strength-data",
-        choices=(DATA_SET, EXAMPLE_DATA_SET),
+        choices=(DATA_SET, GRIP_DATA_SET, EXAMPLE_DATA_SET),
         help=f"{DATA_SET}: Anderson et al. 2007 (the default for hip, knee and ankle); "
+        f"{GRIP_DATA_SET}: FAA HFDS 2003 exhibit 14.5.2.1 (the default for the grips); "
         f"{EXAMPLE_DATA_SET}: the invented example file (the default for the arm)",
     )
     parser.add_argument(
@@ -85,9 +98,15 @@ def register(commands: SubParsers) -> None:
     add_db_option(parser)
     parser.add_argument("--gender", choices=GENDERS, help="default male")
     parser.add_argument("--side", choices=SIDES, default="right")
-    parser.add_argument("--unit", choices=("ft-lb", "N-m"), default="ft-lb")
     parser.add_argument(
-        "--percentile", type=float, default=50.0, help="strength percentile (default 50)"
+        "--unit",
+        choices=(*TORQUE_UNITS, *FORCE_UNITS),
+        help="torque: ft-lb (default) or N-m; grip force: N (default) or lbf",
+    )
+    parser.add_argument(
+        "--percentile",
+        type=float,
+        help="strength percentile (default 50; the grips: the table's, 5)",
     )
     parser.add_argument(
         "--joint-limit-percentile",
@@ -113,18 +132,39 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from sass_tui.model.published_grip import grip_motion
     from sass_tui.model.published_strength import lower_limb_motion
     from sass_tui.model.strength import StrengthError
 
     motion = lower_limb_motion(args.motion)
-    data_set = args.strength_data or (
-        DATA_SET if motion is not None and args.file is None else EXAMPLE_DATA_SET
-    )
+    grip = grip_motion(args.motion)
+    if args.strength_data is not None:
+        data_set = args.strength_data
+    elif grip is not None and args.file is None:
+        data_set = GRIP_DATA_SET
+    elif motion is not None and args.file is None:
+        data_set = DATA_SET
+    else:
+        data_set = EXAMPLE_DATA_SET
+    if data_set != GRIP_DATA_SET and grip is not None:
+        raise StrengthError(
+            f"{grip}: the {data_set} strength data have no hand or thumb-finger grip; "
+            f"--strength-data {GRIP_DATA_SET} (FAA HFDS 2003 exhibit 14.5.2.1) has them"
+        )
     if data_set == EXAMPLE_DATA_SET and motion is not None:
         raise StrengthError(
             f"{motion}: the example strength data have no hip, knee or ankle motions; "
             f"--strength-data {DATA_SET} (Anderson et al. 2007) has them"
         )
+    units = FORCE_UNITS if data_set == GRIP_DATA_SET else TORQUE_UNITS
+    if args.unit is not None and args.unit not in units:
+        what = "a grip force" if data_set == GRIP_DATA_SET else "a joint torque"
+        raise StrengthError(f"--unit {args.unit}: {what} is given in {' or '.join(units)}")
+    args.unit = args.unit or units[0]
+    if data_set == GRIP_DATA_SET:
+        return _grip(args, grip)
+    if args.percentile is None:
+        args.percentile = 50.0
     if data_set == EXAMPLE_DATA_SET and args.person is not None:
         # Refused before the database is opened (or built).
         raise StrengthError(
@@ -381,4 +421,82 @@ def _example(args: argparse.Namespace) -> int:
     print(f"source: {data.source}")
     if data.test_data:
         print(f"note: {data.label}: values made for testing (docs/data-sources.md, Strength)")
+    return 0
+
+
+def _grip(args: argparse.Namespace, motion: str | None) -> int:
+    """A hand or thumb-finger grip force from FAA HFDS 2003 exhibit 14.5.2.1."""
+    from sass_tui.model.published_grip import CITATION, GRIP_LABELS, grip_strength
+    from sass_tui.model.published_strength import PublishedStrengthError, ordinal
+    from sass_tui.model.units import DISPLAY, convert, unit_name
+
+    if motion is None:
+        raise PublishedStrengthError(
+            f"{args.motion.strip()!r}: {CITATION} as shipped covers {', '.join(GRIP_MOTIONS)} "
+            "(its arm-strength table was not reachable as printed)"
+        )
+    # What the exhibit does not depend on is refused, not silently ignored.
+    given = [
+        option
+        for option, used in (
+            ("JOINT_AXIS=ANGLE", bool(args.angles)),
+            ("--person", args.person is not None),
+            ("--age", args.age is not None),
+            ("--mass", args.mass is not None),
+            ("--stature", args.stature is not None),
+            ("--plot", args.plot),
+            ("--file", args.file is not None),
+            ("--factor", bool(args.factor)),
+            ("--training-level", bool(args.training_level)),
+            ("--fatigue-level", bool(args.fatigue_level)),
+            ("--handedness left", args.handedness != "right"),
+            (f"--strength-type {args.strength_type}", args.strength_type != "isometric"),
+            ("--motion-speed", bool(args.motion_speed)),
+        )
+        if used
+    ]
+    if given:
+        raise PublishedStrengthError(
+            f"{', '.join(given)}: {CITATION} prints one momentary-hold force per hand for "
+            f"{motion}, with no joint angle, body size, age, person, curve, modifier or "
+            "dominant hand"
+        )
+    answer = grip_strength(motion, args.side, args.gender or "male", args.percentile)
+    unit = unit_name(args.unit)
+    value = float(convert(answer.force, "N", unit))
+    printed = f"{answer.force:g} N ({answer.printed_lb:g} lb)"
+    # The page prints the thumb-finger grips without left or right.
+    what = (
+        f"{args.side} {GRIP_LABELS[motion]}"
+        if answer.sided
+        else (f"{GRIP_LABELS[motion]}, either hand")
+    )
+    if args.format == "json":
+        import json
+
+        print(
+            json.dumps(
+                {
+                    "motion": motion,
+                    "side": args.side,
+                    "sided": answer.sided,
+                    "value": round(value, 4),
+                    "unit": DISPLAY[unit],
+                    "force_N": answer.force,
+                    "printed": printed,
+                    "column": answer.column,
+                    "condition": answer.condition,
+                    "gender": answer.gender,
+                    "percentile": answer.percentile,
+                    "source": answer.source,
+                }
+            )
+        )
+        return 0
+    print(
+        f"{what}: {value:.2f} {DISPLAY[unit]} ({CITATION}, {answer.condition}; "
+        f"{answer.gender}, {ordinal(answer.percentile)} percentile); as printed {printed}, "
+        f"column {answer.column}"
+    )
+    print(f"source: {answer.source}")
     return 0

@@ -197,14 +197,19 @@ def group_words(group: str) -> str:
     return next(g[3] for g in AGE_GROUPS if g[0] == group)
 
 
-def percentile_words(percentile: float) -> str:
-    if percentile == 50:
-        return "mean"
-    n = f"{percentile:g}"
+def ordinal(number: float) -> str:
+    """5 -> '5th', 1 -> '1st', 22 -> '22nd', 2.5 -> '2.5th'."""
+    n = f"{number:g}"
     suffix = "th"
     if n.isdigit() and not 11 <= int(n) % 100 <= 13:
         suffix = {"1": "st", "2": "nd", "3": "rd"}.get(n[-1], "th")
-    return f"{n}{suffix} percentile"
+    return f"{n}{suffix}"
+
+
+def percentile_words(percentile: float) -> str:
+    if percentile == 50:
+        return "mean"
+    return f"{ordinal(percentile)} percentile"
 
 
 def source_label(gender: str, group: str, percentile: float) -> str:

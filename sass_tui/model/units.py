@@ -47,6 +47,9 @@ BASE_FACTORS: dict[str, tuple[str, float]] = {
     "deg/s": ("angular speed", math.pi / 180.0),
     "N_m": ("torque", 1.0),
     "ft_lb": ("torque", 0.3048 * 4.4482216152605),
+    # Forces: the grip table of HFDS 2003 exhibit 14.5.2.1 (model/published_grip.py).
+    "N": ("force", 1.0),
+    "lbf": ("force", 4.4482216152605),
 }
 
 
@@ -126,6 +129,12 @@ _ALIASES = {
     "nm": "N_m",
     "n*m": "N_m",
     "n m": "N_m",
+    "n": "N",
+    "newton": "N",
+    "newtons": "N",
+    "lbf": "lbf",
+    "pound-force": "lbf",
+    "pounds-force": "lbf",
     "deg/s": "deg/s",
     "°/s": "deg/s",
     "rad/s": "rad/s",
@@ -141,6 +150,8 @@ DISPLAY = {
     "lb": "lb",
     "ft_lb": "ft-lb",
     "N_m": "N-m",
+    "N": "N",
+    "lbf": "lbf",
     "mm": "mm",
     "m": "m",
     "ft": "ft",
@@ -244,6 +255,8 @@ def _dimension_word(unit: str) -> str:
         "lb": "mass",
         "ft_lb": "torque",
         "N_m": "torque",
+        "N": "force",
+        "lbf": "force",
         "deg/s": "angular speed",
     }.get(unit, unit)
 

@@ -37,7 +37,8 @@ class FileCommands(SheetScreenBase):
         """Read a population (or strength) file into the group shown."""
         if self.data_group == STRENGTH:
             self.ask(
-                "Strength data file: (or a data set: example, anderson2007)", self._input_data_from
+                "Strength data file: (or a data set: example, anderson2007, hfds2003)",
+                self._input_data_from,
             )
             return
         self.ask(f"{GROUP_TITLES[self.data_group]} population file:", self._input_data_from)
@@ -55,7 +56,9 @@ class FileCommands(SheetScreenBase):
 
     def _strength_data_set(self, name: str) -> bool:
         """A strength data set named instead of a file (docs/strength.md): the
-        example data read again, or Anderson et al. 2007's curves shown."""
+        example data read again, Anderson et al. 2007's curves shown, or HFDS
+        2003's grip forces said (forces: the strength page shows joint torques)."""
+        from sass_tui.model.published_grip import GRIP_DATA_SET, table_words
         from sass_tui.model.published_strength import DATA_SET, EXAMPLE_DATA_SET
 
         if name == EXAMPLE_DATA_SET:
@@ -66,6 +69,9 @@ class FileCommands(SheetScreenBase):
             return True
         if name == DATA_SET:
             self.action_strength_curve()
+            return True
+        if name == GRIP_DATA_SET:
+            self.say(f"{table_words()} (forces, not on this page: sass strength hand_grip).")
             return True
         return False
 

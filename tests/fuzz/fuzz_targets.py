@@ -385,6 +385,18 @@ def _anderson2007() -> Target:
     return Target("anderson2007", [seed], run)
 
 
+def _hfds2003() -> Target:
+    from sass_tui.model.published_grip import GRIP_MOTIONS, grip_strength, parse_hfds2003_text
+
+    seed = (DATASETS / "hfds2003_grip.csv").read_text(encoding="utf-8")
+
+    def run(text: object) -> object:
+        data = parse_hfds2003_text(str(text), "g.csv")
+        return [grip_strength(m, "left", "male", None, data) for m in GRIP_MOTIONS]
+
+    return Target("hfds2003", [seed], run)
+
+
 def _strength_limit() -> Target:
     from sass_tui.model.published_strength import parse_strength_limit
 
@@ -406,6 +418,7 @@ TARGET_MAKERS: dict[str, Callable[[], Target]] = {
     "units": _units,
     "ids": _ids,
     "anderson2007": _anderson2007,
+    "hfds2003": _hfds2003,
     "strength_limit": _strength_limit,
 }
 _BUILT: dict[str, Target] = {}
