@@ -57,6 +57,8 @@ def writing(conn: Any) -> Iterator[Any]:
         return
     from sass_tui.db.postgres import WRITE_LOCK
 
+    # Read-only (sass serve --read-only) is left to the server: it refuses the
+    # first change (db/postgres.py), and the transaction rolls back.
     with conn.transaction():
         conn.execute("SELECT pg_advisory_xact_lock(%s)", (WRITE_LOCK,))
         yield conn
