@@ -37,10 +37,16 @@ def ids_in(conn: Any, column: str, ids: Sequence[int]) -> tuple[str, object]:
 
 
 def total(conn: Any, expression: str) -> str:
-    """SQLite's total(x) (a float, 0.0 over no rows) in the connection's SQL."""
+    """A column's total for a key that must change with the data and only with
+    it (db/predict.py's data_key).  SQLite: total(x), a float summed in row
+    order.  PostgreSQL: the exact sum of the values in millionths (a float's
+    edit below a millionth of its unit is not seen): a parallel scan adds
+    floats in a varying order, and their float sum's last bits differed
+    between two runs over the same people; an exact numeric sum took 13x
+    the float sum's time, the integer sum 1.7x (0.09 s for the default people)."""
     if dialect_of(conn) == "sqlite":
         return f"total({expression})"
-    return f"coalesce(sum({expression}), 0)::float8"
+    return f"coalesce(sum((({expression}) * 1e6)::bigint), 0)"
 
 
 @contextmanager

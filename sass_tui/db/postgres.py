@@ -150,6 +150,12 @@ class PostgresConnection:
         of ours: then nothing of the statement that found it ran."""
         return not self._depth and (self._conn.broken or self._conn.closed)
 
+    def identity(self) -> str:
+        """The database as the server told it: host, port, database and user
+        (the defaults and $PG* variables resolved; never the password)."""
+        info = self._conn.info
+        return f"postgresql {info.host}:{info.port}/{info.dbname} user {info.user}"
+
     def refuse_writes(self, what: str) -> None:
         """A DatabaseError before `what` (a change) starts, when read-only: the
         server would refuse it anyway, after the work of preparing it."""
