@@ -42,8 +42,8 @@ def total(conn: Any, expression: str) -> str:
     order.  PostgreSQL: the exact sum of the values in millionths (a float's
     edit below a millionth of its unit is not seen): a parallel scan adds
     floats in a varying order, and their float sum's last bits differed
-    between two runs over the same people; an exact numeric sum took 13x
-    the float sum's time, the integer sum 1.7x (0.09 s for the default people)."""
+    between two runs over the same people.  An exact numeric sum would do too,
+    several times slower than the integer one."""
     if dialect_of(conn) == "sqlite":
         return f"total({expression})"
     return f"coalesce(sum((({expression}) * 1e6)::bigint), 0)"
