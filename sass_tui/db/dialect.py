@@ -43,10 +43,15 @@ def total(conn: Any, expression: str) -> str:
     edit below a millionth of its unit is not seen): a parallel scan adds
     floats in a varying order, and their float sum's last bits differed
     between two runs over the same people.  An exact numeric sum would do too,
-    several times slower than the integer one."""
+    several times slower than the integer one.  A value beyond 1e12 (a flat
+    file's girth may hold any finite number) counts as +-1e12: no overflow."""
     if dialect_of(conn) == "sqlite":
         return f"total({expression})"
-    return f"coalesce(sum((({expression}) * 1e6)::bigint), 0)"
+    x = f"({expression})"
+    return (
+        f"coalesce(sum((CASE WHEN abs({x}) < 1e12 THEN {x} * 1e6 "
+        f"ELSE sign({x}) * 1e18 END)::bigint), 0)"
+    )
 
 
 @contextmanager

@@ -106,3 +106,27 @@ def test_the_cache_file_is_named_without_the_password(cluster, private_cache):
             assert predict_module.cache_path(conn) != path
     finally:
         db.close()
+
+
+def test_the_key_takes_any_finite_value_and_sees_a_change(cluster):
+    """A flat file's girth may hold any finite number: the key's integer sums
+    (db/dialect.py's total) neither overflow on 1e200 nor miss an edit of
+    0.1 mm."""
+    import psycopg
+
+    url = cluster.create_database("predict_key")
+    Database.open(url, create=True).close()
+    with psycopg.connect(url, autocommit=True) as raw:
+        raw.execute(
+            "INSERT INTO person (id_num, name, gender, stature, mass, source) "
+            "VALUES (1, 'a', 'male', 180.0, 80.0, 'lab')"
+        )
+        raw.execute(
+            "INSERT INTO girth (id_num, seg_name, thickness, width, length, mass) "
+            "VALUES (1, 'head', 1e200, -1e200, 20.0, NULL)"
+        )
+    keys = [key_of(url), key_of(url)]
+    assert keys[0] == keys[1]
+    with psycopg.connect(url, autocommit=True) as raw:
+        raw.execute("UPDATE girth SET length = 20.01")
+    assert key_of(url) != keys[0]
