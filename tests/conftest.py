@@ -46,6 +46,19 @@ def _private_default_database(tmp_path_factory: pytest.TempPathFactory):
         os.environ["SASS_DB"] = saved
 
 
+@pytest.fixture(autouse=True, scope="session")
+def _private_cache(tmp_path_factory):
+    """What sass caches in the user's cache directory (a PostgreSQL database's
+    prediction fit, db/predict.py) goes here, never in the user's."""
+    saved = os.environ.get("XDG_CACHE_HOME")
+    os.environ["XDG_CACHE_HOME"] = str(tmp_path_factory.mktemp("cache"))
+    yield
+    if saved is None:
+        os.environ.pop("XDG_CACHE_HOME", None)
+    else:
+        os.environ["XDG_CACHE_HOME"] = saved
+
+
 # --- the fault tests' small file systems (tests/_tmpfs.py) --------------------
 
 

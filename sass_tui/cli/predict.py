@@ -4,7 +4,8 @@
     sass predict --gender female --input known.csv --output predicted.csv
 
 The model (sass_tui/model/prediction.py) is fitted on the database's people
-and cached beside the database (sass_tui/db/predict.py).
+and cached beside a SQLite file, or in the user's cache directory for a
+PostgreSQL database (sass_tui/db/predict.py).
 """
 
 from __future__ import annotations

@@ -248,22 +248,22 @@ def served_workdir(name: str | None) -> Path:
 
 def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | None:
     """The database the sessions open: a SQLite file, or a PostgreSQL address
-    (`--db` or $SASS_DB).  A read-only file is opened (and the default one
-    built on first use) here, since a session cannot build it."""
+    (`--db` or $SASS_DB).  A read-only database is opened (and the default
+    file built on first use) here, since a session cannot build it and a
+    server that cannot be reached is better said once than in every session.
+    Each session's connections to a PostgreSQL database are then read-only
+    by the server's rule ($SASS_READ_ONLY, db/postgres.py)."""
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import configured_target
-    from sass_tui.db.schema import DatabaseError
     from sass_tui.model.paths import user_path
 
     db = getattr(args, "db", None)
     target = configured_target(db)
     if is_url(target):
         if read_only:
-            raise DatabaseError(
-                "--read-only opens a SQLite file read-only; a PostgreSQL database is "
-                "served read-only by an address whose role may only read (GRANT SELECT; "
-                "docs/user-guide.md)"
-            )
+            from sass_tui.db.postgres import connect_postgres
+
+            connect_postgres(str(target), read_only=True).close()
         return str(target)
     if not read_only:
         return user_path(db).resolve() if db else None

@@ -37,10 +37,21 @@ def ids_in(conn: Any, column: str, ids: Sequence[int]) -> tuple[str, object]:
 
 
 def total(conn: Any, expression: str) -> str:
-    """SQLite's total(x) (a float, 0.0 over no rows) in the connection's SQL."""
+    """A column's total for a key that must change with the data and only with
+    it (db/predict.py's data_key).  SQLite: total(x), a float summed in row
+    order.  PostgreSQL: the exact sum of the values in millionths (a float's
+    edit below a millionth of its unit is not seen): a parallel scan adds
+    floats in a varying order, and their float sum's last bits differed
+    between two runs over the same people.  An exact numeric sum would do too,
+    several times slower than the integer one.  A value beyond 1e12 (a flat
+    file's girth may hold any finite number) counts as +-1e12: no overflow."""
     if dialect_of(conn) == "sqlite":
         return f"total({expression})"
-    return f"coalesce(sum({expression}), 0)::float8"
+    x = f"({expression})"
+    return (
+        f"coalesce(sum((CASE WHEN abs({x}) < 1e12 THEN {x} * 1e6 "
+        f"ELSE sign({x}) * 1e18 END)::bigint), 0)"
+    )
 
 
 @contextmanager
@@ -57,6 +68,8 @@ def writing(conn: Any) -> Iterator[Any]:
         return
     from sass_tui.db.postgres import WRITE_LOCK
 
+    # Read-only (sass serve --read-only) is left to the server: it refuses the
+    # first change (db/postgres.py), and the transaction rolls back.
     with conn.transaction():
         conn.execute("SELECT pg_advisory_xact_lock(%s)", (WRITE_LOCK,))
         yield conn

@@ -88,6 +88,19 @@ _SELECT = (
 )
 
 
+def list_tables(dialect: str) -> tuple[str, str]:
+    """The CREATE statements of the lists' TEMP tables; seq numbers the selected
+    people in the order they were selected."""
+    if dialect == "sqlite":
+        key, seq = "INTEGER", "seq INTEGER PRIMARY KEY"  # SQLite's rowid
+    else:
+        key, seq = "BIGINT", "seq BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY"
+    return (
+        f"CREATE TEMP TABLE IF NOT EXISTS query_list (id_num {key} PRIMARY KEY)",
+        f"CREATE TEMP TABLE IF NOT EXISTS selected_list ({seq}, id_num {key} NOT NULL UNIQUE)",
+    )
+
+
 class QueryLists:
     def __init__(self, conn: Any):
         # sqlite3's connection, or db/postgres.py's PostgresConnection
@@ -97,40 +110,63 @@ class QueryLists:
         self._lock = threading.Lock()
         self._owner: int | None = None  # the thread holding _lock
         self.last_query: str | None = None
+        # What a server restart took (PostgreSQL), to be told once (take_lost).
+        self._lost: str | None = None
         self.dialect = dialect_of(conn)
         self._mark = mark_of(conn)
         self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
         if self.dialect == "sqlite":
             conn.execute("PRAGMA temp_store = MEMORY")
         else:
-            # A PostgreSQL connection opened again after a server restart has
-            # lost its TEMP tables: the lists start again, empty.
-            conn.on_reconnect.append(self._make_lists)
-        self._make_lists()
+            conn.on_reconnect.append(self._lists_lost)
+        # A read-only PostgreSQL session made them before it became read-only
+        # (PostgresConnection's temp_tables): no CREATE in a read-only transaction.
+        if not getattr(conn, "read_only", False):
+            for statement in list_tables(self.dialect):
+                conn.execute(statement)
 
-    def _make_lists(self) -> None:
-        """The TEMP tables of the lists (empty); seq numbers the selected people
-        in the order they were selected."""
-        if self.dialect == "sqlite":
-            key, seq = "INTEGER", "seq INTEGER PRIMARY KEY"  # SQLite's rowid
-        else:
-            key, seq = "BIGINT", "seq BIGINT GENERATED ALWAYS AS IDENTITY PRIMARY KEY"
-        self._conn.execute(f"CREATE TEMP TABLE IF NOT EXISTS query_list (id_num {key} PRIMARY KEY)")
-        self._conn.execute(
-            f"CREATE TEMP TABLE IF NOT EXISTS selected_list ({seq}, id_num {key} NOT NULL UNIQUE)"
-        )
+    def _lists_lost(self) -> None:
+        """The PostgreSQL connection was opened again (a server restart): its
+        TEMP tables were made again, empty; the people the lists held are gone."""
+        held = [
+            f"the {name} list ({count} {'person' if count == 1 else 'people'})"
+            for name, count in (
+                ("query", self._counts[QUERY_LIST]),
+                ("selected", self._counts[SELECTED_LIST]),
+            )
+            if count
+        ]
+        if held:
+            self._lost = (
+                "The PostgreSQL server restarted and sass connected again; "
+                + " and ".join(held)
+                + " went with the old connection."
+            )
         self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
+
+    def take_lost(self) -> str | None:
+        """What the last server restart took from the lists, once; else None."""
+        lost, self._lost = self._lost, None
+        return lost
 
     @classmethod
     def open(cls, target: str | Path, read_only: bool = False) -> QueryLists:
         """The lists of the SQLite file `target`, or of the PostgreSQL database
-        it names (`postgresql://...`)."""
+        it names (`postgresql://...`).  `read_only`: any change to the database
+        is refused (SQLite's read-only mode; PostgreSQL's read-only session,
+        also when $SASS_READ_ONLY says so: db/postgres.py)."""
         from sass_tui.db.addresses import is_url
 
         if is_url(target):
             from sass_tui.db.postgres import connect_postgres
 
-            return cls(connect_postgres(str(target)))
+            return cls(
+                connect_postgres(
+                    str(target),
+                    read_only=True if read_only else None,
+                    temp_tables=list_tables("postgresql"),
+                )
+            )
         # The query runs in a worker thread; the lock makes sharing the connection safe.
         return cls(connect(target, check_same_thread=False, read_only=read_only))
 

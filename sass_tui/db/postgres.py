@@ -21,15 +21,24 @@ here and only when a PostgreSQL address is given.
 - Queries are the query tree compiled in the "postgresql" dialect
   (db/query_tree.py); PostgreSQL counts with its own parallel scans.
 - A connection lost between two statements (the server restarted) is opened
-  again once for the next statement outside a transaction; a server that is
-  gone is a DatabaseError that says so.
+  again once for the next statement or transaction begun outside a
+  transaction (nothing of it has run yet); a server that is gone is a
+  DatabaseError that says so.  What lived in the old session (the query
+  screen's TEMP tables, db/lists.py) is made again.
+- Read-only (`sass serve --read-only`, or any process whose $SASS_READ_ONLY
+  is 1: model/served.py) is the server's: the session's TEMP tables are
+  made, then `SET SESSION CHARACTERISTICS AS TRANSACTION READ ONLY` makes
+  every later transaction read-only, and PostgreSQL refuses any change to a
+  table that is not temporary (SET TRANSACTION in its manual: INSERT, UPDATE
+  and DELETE on temporary tables stay allowed, CREATE does not).  A write of
+  sass that reaches it even through a bug is refused, nothing changed.
 """
 
 from __future__ import annotations
 
 import sqlite3
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from contextlib import contextmanager
+from contextlib import ExitStack, contextmanager
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -77,24 +86,39 @@ def _driver() -> Any:
     return psycopg
 
 
+# PostgreSQL's SQLSTATE for a change refused in a read-only transaction.
+READ_ONLY_SQLSTATE = "25006"
+
+
 class PostgresConnection:
     """A psycopg connection in autocommit mode, with sqlite3's `execute` shape
-    (`%s` placeholders) and engine errors turned into DatabaseErrors."""
+    (`%s` placeholders) and engine errors turned into DatabaseErrors.
+
+    `read_only` (None: as $SASS_READ_ONLY says, model/served.py): every
+    transaction of the session is read-only, after `temp_tables` (CREATE TEMP
+    TABLE statements, made at each connect) exist."""
 
     dialect: Dialect = "postgresql"
 
-    def __init__(self, url: str) -> None:
+    def __init__(
+        self, url: str, *, read_only: bool | None = None, temp_tables: Sequence[str] = ()
+    ) -> None:
+        from sass_tui.model.served import served_read_only
+
         self.url = url
+        self.read_only = served_read_only() if read_only is None else read_only
+        self._temp_tables = tuple(temp_tables)
         self._psycopg = _driver()
-        self._conn = self._connect()
         self._depth = 0  # open transaction() blocks
         # Called after the connection was opened again (a server restart): what
-        # lived in the old session, e.g. TEMP tables (db/lists.py), is gone.
+        # lived in the old session, e.g. the lists' rows (db/lists.py), is gone.
         self.on_reconnect: list[Callable[[], None]] = []
+        self._conn = self._connect()
 
     def _connect(self) -> Any:
+        """A new session: its TEMP tables made, then read-only when asked."""
         try:
-            return self._psycopg.connect(
+            conn = self._psycopg.connect(
                 self.url, autocommit=True, connect_timeout=CONNECT_TIMEOUT_S
             )
         except self._psycopg.Error as exc:
@@ -102,6 +126,41 @@ class PostgresConnection:
                 f"{shown(self.url)}: cannot reach the PostgreSQL server ({_first_line(exc)}); "
                 "check that it is running and that the address, user and database are right"
             ) from None
+        try:
+            for statement in self._temp_tables:
+                conn.execute(statement)
+            if self.read_only:
+                conn.execute("SET SESSION CHARACTERISTICS AS TRANSACTION READ ONLY")
+        except self._psycopg.Error as exc:
+            conn.close()
+            raise DatabaseError(f"{shown(self.url)}: {_first_line(exc)}") from None
+        return conn
+
+    def _reconnect(self) -> None:
+        """The connection broke between two statements (a server restart): open
+        it again (DatabaseError when the server is still gone) and tell those
+        who kept something in the old session."""
+        self._conn.close()
+        self._conn = self._connect()
+        for reopened in self.on_reconnect:
+            reopened()
+
+    def _lost(self) -> bool:
+        """Whether the connection was closed under us, outside any transaction
+        of ours: then nothing of the statement that found it ran."""
+        return not self._depth and (self._conn.broken or self._conn.closed)
+
+    def identity(self) -> str:
+        """The database as the server told it: host, port, database and user
+        (the defaults and $PG* variables resolved; never the password)."""
+        info = self._conn.info
+        return f"postgresql {info.host}:{info.port}/{info.dbname} user {info.user}"
+
+    def refuse_writes(self, what: str) -> None:
+        """A DatabaseError before `what` (a change) starts, when read-only: the
+        server would refuse it anyway, after the work of preparing it."""
+        if self.read_only:
+            raise DatabaseError(read_only_message(shown(self.url), what))
 
     @property
     def in_transaction(self) -> bool:
@@ -112,14 +171,11 @@ class PostgresConnection:
         try:
             return self._conn.execute(sql, tuple(params))
         except self._psycopg.OperationalError as exc:
-            if self._depth or not self._conn.broken and not self._conn.closed:
+            if not self._lost():
                 raise self.error(exc) from None
         except self._psycopg.Error as exc:
             raise self.error(exc) from None
-        # The connection broke between statements (a server restart): open it again once.
-        self._conn = self._connect()
-        for reopened in self.on_reconnect:
-            reopened()
+        self._reconnect()
         try:
             return self._conn.execute(sql, tuple(params))
         except self._psycopg.Error as exc:
@@ -148,6 +204,8 @@ class PostgresConnection:
         if isinstance(exc, DatabaseError):
             return exc
         where = shown(self.url)
+        if getattr(exc, "sqlstate", None) == READ_ONLY_SQLSTATE:
+            return DatabaseError(read_only_message(where, "this change"))
         if self._conn.broken or self._conn.closed:
             return DatabaseError(
                 f"{where}: the PostgreSQL server closed the connection ({_first_line(exc)}); "
@@ -158,16 +216,26 @@ class PostgresConnection:
 
     @contextmanager
     def transaction(self) -> Iterator[PostgresConnection]:
-        """One transaction: committed at the end, rolled back on any error."""
-        try:
-            with self._conn.transaction():
+        """One transaction: committed at the end, rolled back on any error.  A
+        connection found closed at its BEGIN is opened again once (nothing of
+        the transaction has run)."""
+        with ExitStack() as stack:
+            try:
+                try:
+                    stack.enter_context(self._conn.transaction())
+                except self._psycopg.OperationalError:
+                    if not self._lost():
+                        raise
+                    self._reconnect()
+                    stack.enter_context(self._conn.transaction())
                 self._depth += 1
                 try:
                     yield self
                 finally:
                     self._depth -= 1
-        except self._psycopg.Error as exc:
-            raise self.error(exc) from None
+                stack.close()  # COMMIT here, its errors turned into messages below
+            except self._psycopg.Error as exc:
+                raise self.error(exc) from None
 
     def copy_rows(
         self, table: str, columns: Sequence[str], rows: Iterator[Sequence[object]]
@@ -188,15 +256,29 @@ class PostgresConnection:
         self._conn.close()
 
 
+def read_only_message(where: str, what: str) -> str:
+    return (
+        f"{where}: the database is open read-only (sass serve --read-only): {what} "
+        "was refused; nothing changed"
+    )
+
+
 def _first_line(exc: BaseException) -> str:
     text = str(exc).strip()
     return text.splitlines()[0] if text else type(exc).__name__
 
 
-def connect_postgres(url: str, *, create: bool = False) -> PostgresConnection:
+def connect_postgres(
+    url: str,
+    *,
+    create: bool = False,
+    read_only: bool | None = None,
+    temp_tables: Sequence[str] = (),
+) -> PostgresConnection:
     """Open the database at `url`: its schema made when `create` and absent,
-    checked (and migrated) otherwise."""
-    conn = PostgresConnection(url)
+    checked (and migrated) otherwise; `read_only` and `temp_tables` as
+    PostgresConnection's."""
+    conn = PostgresConnection(url, read_only=read_only, temp_tables=temp_tables)
     try:
         _check_schema(conn, create)
     except BaseException:
@@ -324,6 +406,7 @@ def import_staged(
     `replace_all`: everyone stored before goes (`sass db init`)."""
     import tempfile
 
+    conn.refuse_writes("an import")
     with tempfile.TemporaryDirectory(prefix="sass-staging-") as folder:
         path = staging_file or Path(folder) / "staging.db"
         staging = connect(path, create=True)

@@ -1,11 +1,15 @@
-"""The prediction model of a database: fitted once, cached beside the file.
+"""The prediction model of a database: fitted once, cached.
 
 `open_predictor(conn)` returns the `Predictor` (sass_tui/model/prediction.py)
 fitted on the database's people.  The fit is saved as `<database>.predict.npz`
-and reused while the data it was fitted on are unchanged: the file records a
-key (a hash of the people's count, ids, genders and the totals of every
-column the fit reads), recomputed from the database on each open — a few
-milliseconds of SQL, against loading and fitting every value.
+beside a SQLite file, and for a PostgreSQL database in the user's cache
+directory (model/paths.py's cache_dir: `predict/<hash>.predict.npz`, the
+hash of the server, port, database and user the connection reached, never
+its password).  It is reused while the data it was fitted on are unchanged:
+the file records a key (a hash of the people's count, ids, genders and the
+totals of every column the fit reads), recomputed from the database on each
+open — a few milliseconds of SQL, against loading and fitting every value
+(about 2 s for the default people).
 
 What the CLI (`sass predict`) and the TUI call:
 
@@ -42,7 +46,7 @@ DEFAULT_POPULATION = "gender = male OR gender = female"
 
 def database_file(conn: sqlite3.Connection) -> Path | None:
     """The file of the connection's main database (None: in memory, or a
-    PostgreSQL database: its model is fitted in each process, never cached)."""
+    PostgreSQL database)."""
     if dialect_of(conn) != "sqlite":
         return None
     for _, name, file in conn.execute("PRAGMA database_list"):
@@ -52,8 +56,20 @@ def database_file(conn: sqlite3.Connection) -> Path | None:
 
 
 def cache_path(conn: sqlite3.Connection) -> Path | None:
+    """Where the database's fit is cached (None: a database in memory)."""
+    if dialect_of(conn) == "postgresql":
+        return server_cache_path(conn.identity())  # type: ignore[attr-defined]
     db = database_file(conn)
     return None if db is None else db.with_name(db.name + CACHE_SUFFIX)
+
+
+def server_cache_path(identity: str) -> Path:
+    """The cache file of the PostgreSQL database `identity` names (db/postgres.py's
+    PostgresConnection.identity: server, port, database and user, no password)."""
+    from sass_tui.model.paths import cache_dir
+
+    digest = hashlib.sha256(identity.encode()).hexdigest()[:32]
+    return cache_dir() / "predict" / f"{digest}{CACHE_SUFFIX}"
 
 
 def _columns(conn: sqlite3.Connection, table: str) -> list[str]:
@@ -109,6 +125,7 @@ def open_predictor(
     predictor = fit_predictor(conn, key, population)
     if path is not None:
         try:
+            path.parent.mkdir(parents=True, exist_ok=True)  # the cache directory, at first use
             predictor.save(path)
         except OSError:
             pass  # a read-only place: predict without a cache

@@ -98,7 +98,7 @@ class QueryScreenBase(SassScreen):
             from sass_tui.db.postgres import shown
 
             try:
-                lists = QueryLists.open(str(target))
+                lists = QueryLists.open(str(target), read_only=self.sass_app.read_only)
             except DB_ERRORS as exc:
                 self.post_message(DatabaseFailed(f"Cannot open the database: {exc}"))
                 return

@@ -42,6 +42,7 @@ class QueryFinished(Message):
         error: str = "",
         weighted: str = "",
         hint: str = "",
+        lost: str = "",
     ) -> None:
         super().__init__()
         self.count = count
@@ -49,6 +50,7 @@ class QueryFinished(Message):
         self.error = error
         self.weighted = weighted  # the target's weighted share (ui/target_picker.py)
         self.hint = hint  # no real person found: the demonstration people who would be
+        self.lost = lost  # what a PostgreSQL server's restart took from the lists
 
 
 class PopulationMade(Message):

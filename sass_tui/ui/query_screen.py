@@ -265,7 +265,8 @@ class QueryScreen(InputDbCommands, PopulationCommands):
         except DB_ERRORS as exc:
             self.post_message(QueryFinished(error=str(exc)))
             return
-        self.post_message(QueryFinished(count, rows, weighted=weighted, hint=hint))
+        lost = lists.take_lost() or ""
+        self.post_message(QueryFinished(count, rows, weighted=weighted, hint=hint, lost=lost))
 
     def on_query_finished(self, event: QueryFinished) -> None:
         event.stop()
@@ -282,10 +283,11 @@ class QueryScreen(InputDbCommands, PopulationCommands):
         self.sheet.cursor = 0
         self.sheet.show_rows(rows, 0, count)
         self.refresh_screen()
+        lost = f" {event.lost}" if event.lost else ""
         if count:
-            self.say(f"{COMPLETE} {count:,} people found.{event.weighted}")
+            self.say(f"{COMPLETE} {count:,} people found.{event.weighted}{lost}")
         else:
-            self.say(f"{NO_DATA} {printable(event.hint)}".rstrip())
+            self.say(f"{NO_DATA} {printable(event.hint)}{lost}".rstrip())
 
     def action_export_gltf(self) -> None:
         """Write the highlighted person as a glTF 2.0 body (.glb)."""
