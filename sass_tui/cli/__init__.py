@@ -16,6 +16,7 @@ from types import ModuleType
 from typing import Any, cast
 
 from sass_tui.cli.options import DB_HELP, SubParsers
+from sass_tui.model.errors import SassError
 
 # The verbs in `sass --help`'s order, each the module sass_tui.cli.VERB,
 # imported when its parser is built or listed (a verb run imports only its own).
@@ -194,7 +195,6 @@ def run_tui(db: str | None) -> int:
     # is off until the app has drawn that screen (SassApp.first_screen_drawn).
     gc.disable()
     try:
-        from sass_tui.model.errors import SassError
         from sass_tui.ui.app import run_app
 
         try:
@@ -208,7 +208,6 @@ def run_tui(db: str | None) -> int:
 
 def run_verb(args: argparse.Namespace) -> int:
     """Run the chosen verb; every error a user can cause ends here as a message."""
-    from sass_tui.model.errors import SassError
     from sass_tui.model.text import printable
 
     try:

@@ -11,6 +11,7 @@ from sass_tui.cli.options import (
     person_file_name,
     print_warnings,
 )
+from sass_tui.model.names import GIRTH
 
 
 def register(commands: SubParsers) -> None:
@@ -34,7 +35,6 @@ def register(commands: SubParsers) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from sass_tui.model.figfile import default_fig_name, write_fig
-    from sass_tui.model.names import GIRTH
 
     figure, warnings = figure_from_args(args)
     extra_sections = []

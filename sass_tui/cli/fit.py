@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from typing import TYPE_CHECKING
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.model.published_strength import parse_strength_limit
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -82,8 +84,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    import json
-
     from sass_tui.db.fit import check_mix, fit_test
     from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
 
@@ -96,8 +96,6 @@ def run(args: argparse.Namespace) -> int:
         error.column = exc.column
         raise error from None
     check_mix(args.mix)
-    from sass_tui.model.published_strength import parse_strength_limit
-
     strength = [parse_strength_limit(text) for text in args.strength]
     conn = open_db(args)
     target = None

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from typing import TYPE_CHECKING, TypeAlias
 
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS
@@ -27,8 +28,6 @@ def add_db_option(parser: argparse.ArgumentParser) -> None:
 def open_database(args: argparse.Namespace, create: bool = False):  # -> db.database.Database
     """The Database `--db` (or $SASS_DB) names, or the default file (built on
     first use, with a progress bar on a terminal)."""
-    import sys
-
     from sass_tui.cli.progress import progress_for
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import Database, configured_target
@@ -194,8 +193,6 @@ def person_file_name(name: str, suffix: str) -> str:
 
 
 def print_warnings(warnings: list[str]) -> None:
-    import sys
-
     from sass_tui.model.text import printable
 
     for warning in warnings:

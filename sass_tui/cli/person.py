@@ -6,6 +6,7 @@ N-m)."""
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
@@ -25,8 +26,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    import json
-
     db = open_database(args)
     try:
         records = db.person_records(args.ids)

@@ -17,6 +17,8 @@ import sys
 from pathlib import Path
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.model.names import GROUP_TITLES
+from sass_tui.model.paths import regular_file
 
 
 def register(commands: SubParsers) -> None:
@@ -55,7 +57,6 @@ def run(args: argparse.Namespace) -> int:
     )
     from sass_tui.db.population_files import write_population_files
     from sass_tui.db.query import compile_query
-    from sass_tui.model.names import GROUP_TITLES
 
     if args.query is None and args.ids is None and args.target is None:
         print(
@@ -107,8 +108,6 @@ def _read_ids(name: str) -> list[int]:
 
     if name == "-":
         return parse_id_list(sys.stdin.read(), "standard input")
-    from sass_tui.model.paths import regular_file
-
     path = regular_file(name)  # not a FIFO, which would block the read
     try:
         text = path.read_text(encoding="utf-8")

@@ -10,11 +10,14 @@ and cached beside the database (sass_tui/db/predict.py).
 from __future__ import annotations
 
 import argparse
+import io
+import json
 import sys
 from typing import TYPE_CHECKING, Any, TextIO
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.errors import SassError
+from sass_tui.model.paths import regular_file
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -130,8 +133,6 @@ def run(args: argparse.Namespace) -> int:
     prediction = predictor.predict(args.gender, known, nearest=args.nearest)
     out = sys.stdout
     if args.format == "json":
-        import json
-
         json.dump(prediction_json(predictor, prediction, args.population), out, indent=1)
         out.write("\n")
     elif args.format == "csv":
@@ -226,12 +227,10 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
     cell filled with its prediction, and adds F, F.low, F.high for every
     predicted field F (F.low and F.high only, for a field that is an input column)."""
     import csv
-    import io
 
     import numpy as np
 
     from sass_tui.model.atomic import write_text_atomic
-    from sass_tui.model.paths import regular_file
     from sass_tui.model.prediction import UnknownFieldError, field_unit
     from sass_tui.model.units import UnitError, parse_quantity
 

@@ -3,9 +3,13 @@
 from __future__ import annotations
 
 import argparse
+import json
+import math
 import sys
 from collections.abc import Iterable
 from itertools import islice
+from json.encoder import encode_basestring_ascii as quote
+from operator import itemgetter
 from typing import TextIO
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
@@ -62,7 +66,6 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
     out = sys.stdout
     if args.format == "csv":
         import csv
-        from operator import itemgetter
 
         from sass_tui.model.text import is_printable, printable
 
@@ -178,11 +181,6 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
     function, when the numbers are all finite numbers (their sum is finite;
     None or a text raises TypeError); otherwise by the encoder, person by
     person (benchmarks/query_formats.py)."""
-    import json
-    import math
-    from json.encoder import encode_basestring_ascii as quote
-    from operator import itemgetter
-
     from sass_tui.db.query import PERSON_FIELDS
 
     try:
@@ -209,8 +207,6 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
 
 def _finite(person: dict) -> dict:
     """The person for JSON, which has no Infinity or NaN: refuse one stored so."""
-    import math
-
     from sass_tui.db.query import QueryError
     from sass_tui.model.text import printable
 

@@ -8,9 +8,13 @@ working directory; then ui/serve.py serves.
 from __future__ import annotations
 
 import argparse
+import sys
+import time
+from ipaddress import ip_address
 from pathlib import Path
+from urllib.parse import urlsplit
 
-from sass_tui.cli.options import SubParsers, add_db_option
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.errors import SassError
 
 # secrets.token_urlsafe(32): 256 bits.  A token file's must have at least
@@ -97,7 +101,6 @@ def _positive(text: str) -> int:
 
 
 def run(args: argparse.Namespace) -> int:
-    import sys
     from importlib.util import find_spec
 
     if find_spec("textual_serve") is None:  # the [serve] extra is not installed
@@ -156,7 +159,6 @@ def run(args: argparse.Namespace) -> int:
 def is_loopback(host: str) -> bool:
     """True when every address `host` names is this machine's loopback."""
     import socket
-    from ipaddress import ip_address
 
     try:
         infos = socket.getaddrinfo(host, None)
@@ -190,8 +192,6 @@ def tls_context(certfile: str | None, keyfile: str | None):  # -> ssl.SSLContext
 
 
 def check_public_url(url: str) -> None:
-    from urllib.parse import urlsplit
-
     parts = urlsplit(url)
     if parts.scheme not in ("http", "https") or not parts.hostname:
         raise ServeError(f"--public-url {url!r}: expected http(s)://HOST[:PORT]/")
@@ -228,7 +228,6 @@ def served_workdir(name: str | None) -> Path:
     directory; its real path, so that no link in it moves later."""
     if name is None:
         import tempfile
-        import time
 
         from sass_tui.model.paths import data_dir
 
@@ -267,7 +266,6 @@ def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | Non
         return str(target)
     if not read_only:
         return user_path(db).resolve() if db else None
-    from sass_tui.cli.options import open_db
     from sass_tui.db.schema import default_db_path
 
     open_db(args).close()

@@ -13,13 +13,24 @@ configuration).  Hip, knee and ankle motions come from Anderson et al. 2007
 from __future__ import annotations
 
 import argparse
+import json
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.model.names import JOINT_LIMITS
 from sass_tui.model.published_strength import (
+    AGE_GROUPS,
+    CITATION,
     DATA_SET,
     EXAMPLE_DATA_SET,
     LOWER_LIMB_AXES,
     LOWER_LIMB_MOTIONS,
+    MOTION_AXIS,
+    PublishedStrengthError,
+    Subject,
+    lower_limb_curve,
+    lower_limb_motion,
+    lower_limb_strength,
+    text_plot,
 )
 from sass_tui.model.vocabulary import (
     GENDERS,
@@ -113,7 +124,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from sass_tui.model.published_strength import lower_limb_motion
     from sass_tui.model.strength import StrengthError
 
     motion = lower_limb_motion(args.motion)
@@ -142,7 +152,6 @@ def run(args: argparse.Namespace) -> int:
 def _take_person(args: argparse.Namespace) -> None:
     """A database person's own gender, age, mass and stature into `args`."""
     from sass_tui.db.individual import find_person, person_record
-    from sass_tui.model.published_strength import PublishedStrengthError
 
     given = [
         option
@@ -178,7 +187,6 @@ def _take_person(args: argparse.Namespace) -> None:
 def _figure(args: argparse.Namespace):  # -> Figure
     """The figure whose mass, stature and joint limits the answer uses."""
     from sass_tui.model.figure import Figure
-    from sass_tui.model.names import JOINT_LIMITS
     from sass_tui.model.units import parse_quantity
 
     figure = Figure.default(args.gender)
@@ -204,17 +212,6 @@ def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
 
 def _published(args: argparse.Namespace, motion: str | None) -> int:
     """A hip, knee or ankle motion from Anderson et al. 2007."""
-    from sass_tui.model.published_strength import (
-        AGE_GROUPS,
-        CITATION,
-        LOWER_LIMB_MOTIONS,
-        MOTION_AXIS,
-        PublishedStrengthError,
-        Subject,
-        lower_limb_curve,
-        lower_limb_strength,
-        text_plot,
-    )
     from sass_tui.model.strength import check_angle, joint_limit_range
     from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
 
@@ -266,8 +263,6 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
         curve = lower_limb_curve(motion, subject, lower, upper, speed, args.percentile)
         shown = [(x, float(convert(y, "N_m", unit))) for x, y in curve]
     if args.format == "json":
-        import json
-
         print(
             json.dumps(
                 {
@@ -347,8 +342,6 @@ def _example(args: argparse.Namespace) -> int:
             "have no curve of one angle"
         )
     if args.format == "json":
-        import json
-
         print(
             json.dumps(
                 {

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, TextIO
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.errors import SassError
+from sass_tui.model.paths import regular_file
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -122,7 +123,6 @@ def by_fields(text: str) -> list[str]:
 def _make(args: argparse.Namespace) -> int:
     from sass_tui.db.query import QueryError, compile_query
     from sass_tui.db.targets import check_name, make_target, store_target, target_exists
-    from sass_tui.model.paths import regular_file
     from sass_tui.model.target_sample import SampleError, read_sample
 
     # Everything that needs no database first: a bad input touches nothing.

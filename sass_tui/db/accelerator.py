@@ -37,6 +37,7 @@ SQLite is fast, and neither numpy nor duckdb need be imported).
 
 from __future__ import annotations
 
+import json
 import os
 import sqlite3
 import threading
@@ -45,6 +46,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from sass_tui.db.query_tree import Comparison, columns, to_sql
+from sass_tui.db.schema import DatabaseError
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterable
@@ -235,7 +237,6 @@ def _build(
 ) -> None:
     """Read `want` from SQLite inside the caller's read transaction and write
     the copy (a new file renamed over the old: readers never see half a copy)."""
-    import json
     import uuid
 
     import duckdb
@@ -310,8 +311,6 @@ _PENDING: dict[Path, set[tuple[str, str]]] = {}
 def _open_copy(path: Path) -> _Copy | None:
     """The copy of `path` on disk, opened (or the one open already), None if
     absent or unreadable.  Call with _LOCK held."""
-    import json
-
     import duckdb
 
     file = _cache_folder(path) / COPY_FILE
@@ -557,8 +556,6 @@ def refresh(
     the columns it held, DEFAULT_COLUMNS and `wanted`.  Whatever the size of
     the database (counts use the copy from MIN_PEOPLE people).
     DatabaseError when no copy can follow this file."""
-    from sass_tui.db.schema import DatabaseError
-
     if conn.in_transaction:
         raise DatabaseError("the column copy is made outside a transaction")
     try:

@@ -27,6 +27,7 @@ from sass_tui.db.schema import (
     connect,
     default_db_path,
     recreate_schema,
+    store_people,
     write_refused,
 )
 from sass_tui.db.scope import DEMONSTRATION_SOURCE
@@ -171,7 +172,6 @@ def fill_default(conn: sqlite3.Connection, progress: Progress | None = None) -> 
     """Store the shipped people (inside the caller's transaction)."""
     from sass_tui.db.ansur import DEFAULT_LABEL, store_ansur
     from sass_tui.db.flatfile import FlatFiles, read_flat_files
-    from sass_tui.db.schema import store_people
     from sass_tui.model import datasets
 
     synthetic = read_flat_files(FlatFiles.in_directory(datasets.directory() / "db"))

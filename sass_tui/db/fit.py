@@ -37,7 +37,7 @@ import numpy.typing as npt
 
 from sass_tui.db.dialect import dialect_of, ids_in
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
-from sass_tui.db.query import compile_conjuncts, compile_query, real_people_only
+from sass_tui.db.query import QueryError, compile_conjuncts, compile_query, parser, real_people_only
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
@@ -472,7 +472,6 @@ class LimitHistogram:
 def limit_lines(limits: str) -> tuple[LimitLine, ...]:
     """The comparisons of `limits` on numeric fields, in the order written
     (word and text fields, e.g. gender or branch, have no place on an axis)."""
-    from sass_tui.db.query import QueryError, parser
     from sass_tui.db.values import numeric_field
 
     compile_query(limits)

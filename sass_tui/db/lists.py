@@ -35,7 +35,7 @@ from sass_tui.db.database import engine_errors
 from sass_tui.db.dialect import dialect_of, mark_of
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
-from sass_tui.db.query import LIST_FIELDS, compile_query
+from sass_tui.db.query import LIST_FIELDS, compile_query, demonstration_hint
 from sass_tui.db.schema import DatabaseError, connect, transaction
 from sass_tui.model.errors import SassError
 
@@ -432,6 +432,4 @@ class QueryLists:
     def demonstration_hint(self, text: str) -> str | None:
         """For a query that found no real person: the demonstration people it
         would find (db/query.py's demonstration_hint)."""
-        from sass_tui.db.query import demonstration_hint
-
         return demonstration_hint(self._conn, text)

@@ -32,6 +32,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, TypeVar
+from urllib.parse import urlsplit, urlunsplit
 
 from sass_tui.db.query_tree import Dialect
 from sass_tui.db.schema import (
@@ -56,8 +57,6 @@ _SQLITE_ONLY = ("measure_packed",)
 
 def shown(url: str) -> str:
     """The address without its password, for messages."""
-    from urllib.parse import urlsplit, urlunsplit
-
     parts = urlsplit(url)
     if parts.password is None:
         return url

@@ -28,6 +28,9 @@ from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from sass_tui.db.addresses import is_url, sqlite_only
+from sass_tui.model.paths import data_dir
+
 if TYPE_CHECKING:
     import numpy as np
 
@@ -288,14 +291,10 @@ def default_db_path() -> Path:
     data_dir: $XDG_DATA_HOME/sass/sass.db, ~/.local/share/sass/sass.db on Linux).
     DatabaseError when $SASS_DB is a PostgreSQL address (callers that take
     one look at it first: db/database.py's configured_target)."""
-    from sass_tui.db.addresses import is_url, sqlite_only
-
     if is_url(os.environ.get("SASS_DB")):
         raise DatabaseError(sqlite_only("this command") + "; $SASS_DB names a PostgreSQL database")
     if os.environ.get("SASS_DB"):
         return Path(os.environ["SASS_DB"])
-    from sass_tui.model.paths import data_dir
-
     return data_dir() / "sass.db"
 
 

@@ -32,6 +32,7 @@ from sass_tui.model.names import (
     center_of_mass_variable,
     joint_limit_variable,
 )
+from sass_tui.model.paths import regular_file
 
 if TYPE_CHECKING:
     from lark import Lark, Token, Tree
@@ -273,8 +274,6 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
 
 
 def read_fig(path: str | Path) -> FigFile:
-    from sass_tui.model.paths import regular_file
-
     path = regular_file(path)  # a FIFO or a device would never end
     return parse_fig(path.read_text(encoding="utf-8"), str(path))
 

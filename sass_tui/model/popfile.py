@@ -35,6 +35,7 @@ from sass_tui.model.names import (
     label_lookup,
     normalise_label,
 )
+from sass_tui.model.paths import PathError, regular_file
 from sass_tui.model.units import UnitError, finite_number
 from sass_tui.model.vocabulary import GENDERS
 
@@ -110,8 +111,6 @@ class PopulationData:
 
 
 def read_population_file(path: str | Path, group: str) -> PopulationData:
-    from sass_tui.model.paths import PathError, regular_file
-
     try:
         path = regular_file(path)  # a FIFO or a device (/dev/zero) would never end
     except PathError as exc:

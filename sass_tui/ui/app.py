@@ -9,6 +9,7 @@ See docs/architecture.md.
 from __future__ import annotations
 
 import gc
+import time
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -16,7 +17,7 @@ from textual.app import App
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
-from sass_tui.model.paths import user_path
+from sass_tui.model.paths import regular_file, user_path
 from sass_tui.model.session import Session
 from sass_tui.ui.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
 
@@ -115,8 +116,6 @@ class SassApp(App):
 
     async def action_quit(self) -> None:
         """Quit; with edits that would be lost, only on a second q."""
-        import time
-
         now = time.monotonic()
         if not self.session.can_undo() or now - self._quit_asked_at < self.QUIT_AGAIN_S:
             self.exit()
@@ -149,8 +148,6 @@ class SassApp(App):
 
     def regular_file(self, text: str) -> Path:
         """An existing regular file named at a prompt, as `user_path` finds it."""
-        from sass_tui.model.paths import regular_file
-
         return regular_file(text, self.workdir)
 
     @property

@@ -19,6 +19,7 @@ from textual.widgets import DataTable, Footer, Label
 from textual_plotext import PlotextPlot
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.figure import Figure
 from sass_tui.model.vocabulary import GENDERS
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
@@ -250,7 +251,6 @@ class FamilyScreen(SassScreen):
 
     def _write_to(self, family: Family, directory: Path) -> None:
         from sass_tui.model.accommodation import write_family
-        from sass_tui.model.figure import Figure
 
         written = write_family(family, directory, Figure.default(family.gender))
         self.say(

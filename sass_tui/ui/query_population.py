@@ -3,11 +3,14 @@ whole: Make Population, Fit Test, the target population."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 from textual import work
 
 from sass_tui.db.lists import DB_ERRORS, QueryLists
+from sass_tui.db.progress import Steps
+from sass_tui.model.names import GLOBAL, GROUP_TITLES
 from sass_tui.ui.progress import Work
 from sass_tui.ui.query_base import WAIT, Busy, QueryScreenBase
 from sass_tui.ui.query_messages import PopulationMade
@@ -86,7 +89,6 @@ class PopulationCommands(QueryScreenBase):
         weighted_to: str | None = None,
     ) -> None:
         from sass_tui.db.population_files import write_population_files
-        from sass_tui.db.progress import Steps
 
         try:
             if weighted_to:
@@ -102,10 +104,7 @@ class PopulationCommands(QueryScreenBase):
         self.post_message(PopulationMade(result, paths))
 
     def on_population_made(self, event: PopulationMade) -> None:
-        from dataclasses import replace
-
         from sass_tui.db.population import people_words
-        from sass_tui.model.names import GLOBAL, GROUP_TITLES
 
         event.stop()
         if self.end_work() and event.error:

@@ -17,6 +17,7 @@ from textual.widgets import Footer, Static
 from textual_plotext import PlotextPlot
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.percentile import check_percentile
 from sass_tui.model.published_strength import (
     AGE_GROUPS,
     LOWER_LIMB_MOTIONS,
@@ -176,8 +177,6 @@ class StrengthCurveScreen(SassScreen):
         """Set the strength percentile of the curve."""
 
         def answer(text: str) -> None:
-            from sass_tui.model.percentile import check_percentile
-
             try:
                 value = float(text)
             except ValueError:
