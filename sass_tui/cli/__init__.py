@@ -148,6 +148,7 @@ class _VersionAction(argparse.Action):
     """--version, looked up only when asked (importlib.metadata costs start-up time)."""
 
     def __call__(self, parser: argparse.ArgumentParser, *_: object) -> None:
+        # deferred: importlib.metadata — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
         from importlib.metadata import PackageNotFoundError, version
 
         try:
@@ -195,6 +196,7 @@ def run_tui(db: str | None) -> int:
     # is off until the app has drawn that screen (SassApp.first_screen_drawn).
     gc.disable()
     try:
+        # deferred: ui.app — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
         from sass_tui.ui.app import run_app
 
         try:
@@ -208,6 +210,7 @@ def run_tui(db: str | None) -> int:
 
 def run_verb(args: argparse.Namespace) -> int:
     """Run the chosen verb; every error a user can cause ends here as a message."""
+    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.text import printable
 
     try:
@@ -231,6 +234,7 @@ def run_verb(args: argparse.Namespace) -> int:
     except Exception as exc:
         if "sass_tui.db.database" not in sys.modules:
             raise  # no database was opened: not an engine's error
+        # deferred: db.database — off sass fig, sass --help, sass strength … (sass_tui/startup.py)
         from sass_tui.db.database import engine_error
 
         error = engine_error(exc)

@@ -34,11 +34,13 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    # deferred: model.figfile — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.figfile import default_fig_name, write_fig
 
     figure, warnings = figure_from_args(args)
     extra_sections = []
     if not args.no_strength:
+        # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
         from sass_tui.model.strength import (
             StrengthSheet,
             fig_section,

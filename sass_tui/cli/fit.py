@@ -84,6 +84,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    # deferred: db.fit, db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.fit import check_mix, fit_test
     from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
 
@@ -100,6 +101,7 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     target = None
     if args.target is not None:
+        # deferred: db.targets — off sass --help, sass fit, sass --version (sass_tui/startup.py)
         from sass_tui.db.targets import load_target
 
         target = load_target(conn, args.target)
@@ -116,6 +118,7 @@ def run(args: argparse.Namespace) -> int:
         json.dump(result.to_json(), sys.stdout, indent=1, allow_nan=False)
         sys.stdout.write("\n")
     else:
+        # deferred: db.fit_table — off sass --help, sass --version (sass_tui/startup.py)
         from sass_tui.db.fit_table import format_table
 
         sys.stdout.write(format_table(result))

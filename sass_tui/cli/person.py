@@ -48,6 +48,7 @@ def _num(value: object) -> str:
 
 
 def _table(record: dict, out) -> None:  # out: TextIO
+    # deferred: db.scope, model.measures, model.text — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.scope import DEMONSTRATION_SOURCE
     from sass_tui.model.measures import MEASURE_UNITS
     from sass_tui.model.text import printable

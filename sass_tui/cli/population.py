@@ -50,6 +50,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    # deferred: db.population, db.population_files, db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.population import (
         missing_ids,
         people_words,
@@ -72,6 +73,7 @@ def run(args: argparse.Namespace) -> int:
         absent = missing_ids(conn, ids) if ids is not None else []
         target = None
         if args.target is not None:
+            # deferred: db.targets — off sass --help, sass population, sass --version (sass_tui/startup.py)
             from sass_tui.db.targets import load_target
 
             target = load_target(conn, args.target)
@@ -104,6 +106,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _read_ids(name: str) -> list[int]:
+    # deferred: db.population — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.population import parse_id_list
 
     if name == "-":

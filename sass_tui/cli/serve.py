@@ -101,10 +101,12 @@ def _positive(text: str) -> int:
 
 
 def run(args: argparse.Namespace) -> int:
+    # deferred: importlib.util — off sass --help (sass_tui/startup.py)
     from importlib.util import find_spec
 
     if find_spec("textual_serve") is None:  # the [serve] extra is not installed
         raise ServeError("sass serve needs textual-serve: pip install 'sass-tui[serve]'")
+    # deferred: ui.serve — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.ui.serve import ServeOptions, serve
 
     loopback = is_loopback(args.host)
@@ -136,6 +138,7 @@ def run(args: argparse.Namespace) -> int:
     err = sys.stderr
     print(f"sass serve: web sessions read and write files in {workdir}", file=err)
     if db is not None:
+        # deferred: db.postgres — off sass --help, sass serve, sass --version (sass_tui/startup.py)
         from sass_tui.db.postgres import shown
 
         named = shown(db) if isinstance(db, str) else db  # never the password
@@ -158,6 +161,7 @@ def run(args: argparse.Namespace) -> int:
 
 def is_loopback(host: str) -> bool:
     """True when every address `host` names is this machine's loopback."""
+    # deferred: socket — off sass --help (sass_tui/startup.py)
     import socket
 
     try:
@@ -174,8 +178,10 @@ def tls_context(certfile: str | None, keyfile: str | None):  # -> ssl.SSLContext
         return None
     if certfile is None:
         raise ServeError("--keyfile needs --certfile (the certificate it belongs to)")
+    # deferred: ssl — off sass --help, sass --version (sass_tui/startup.py)
     import ssl
 
+    # deferred: model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.model.paths import regular_file
 
     cert = regular_file(certfile)
@@ -198,6 +204,7 @@ def check_public_url(url: str) -> None:
 
 
 def new_token() -> str:
+    # deferred: secrets — off sass --help, sass serve, sass --version (sass_tui/startup.py)
     import secrets
 
     return secrets.token_urlsafe(TOKEN_BYTES)
@@ -205,6 +212,7 @@ def new_token() -> str:
 
 def read_token(name: str) -> str:
     """The token in file `name` (its first line, spaces around it dropped)."""
+    # deferred: model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.model.paths import regular_file
 
     path = regular_file(name)
@@ -227,14 +235,17 @@ def served_workdir(name: str | None) -> Path:
     """--workdir (made if missing), or a new directory under the user's data
     directory; its real path, so that no link in it moves later."""
     if name is None:
+        # deferred: tempfile — off sass --help, sass serve (sass_tui/startup.py)
         import tempfile
 
+        # deferred: model.paths — off sass serve (sass_tui/startup.py)
         from sass_tui.model.paths import data_dir
 
         base = data_dir() / "serve"
         base.mkdir(parents=True, exist_ok=True)
         stamp = time.strftime("%Y%m%d-%H%M%S-")
         return Path(tempfile.mkdtemp(prefix=stamp, dir=base)).resolve()
+    # deferred: model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.model.paths import user_path
 
     path = user_path(name)
@@ -249,6 +260,7 @@ def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | Non
     """The database the sessions open: a SQLite file, or a PostgreSQL address
     (`--db` or $SASS_DB).  A read-only file is opened (and the default one
     built on first use) here, since a session cannot build it."""
+    # deferred: db.addresses, db.database, db.schema, model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import configured_target
     from sass_tui.db.schema import DatabaseError
@@ -266,6 +278,7 @@ def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | Non
         return str(target)
     if not read_only:
         return user_path(db).resolve() if db else None
+    # deferred: db.schema — off sass --help, sass serve, sass --version (sass_tui/startup.py)
     from sass_tui.db.schema import default_db_path
 
     open_db(args).close()

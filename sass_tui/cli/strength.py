@@ -124,6 +124,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import StrengthError
 
     motion = lower_limb_motion(args.motion)
@@ -151,6 +152,7 @@ def run(args: argparse.Namespace) -> int:
 
 def _take_person(args: argparse.Namespace) -> None:
     """A database person's own gender, age, mass and stature into `args`."""
+    # deferred: db.individual — off sass --help, sass strength, sass --version (sass_tui/startup.py)
     from sass_tui.db.individual import find_person, person_record
 
     given = [
@@ -186,6 +188,7 @@ def _take_person(args: argparse.Namespace) -> None:
 
 def _figure(args: argparse.Namespace):  # -> Figure
     """The figure whose mass, stature and joint limits the answer uses."""
+    # deferred: model.figure, model.units — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.figure import Figure
     from sass_tui.model.units import parse_quantity
 
@@ -199,6 +202,7 @@ def _figure(args: argparse.Namespace):  # -> Figure
 
 
 def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
+    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import StrengthError
 
     out = []
@@ -212,6 +216,7 @@ def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
 
 def _published(args: argparse.Namespace, motion: str | None) -> int:
     """A hip, knee or ankle motion from Anderson et al. 2007."""
+    # deferred: model.strength, model.units — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import check_angle, joint_limit_range
     from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
 
@@ -304,6 +309,7 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
 
 def _example(args: argparse.Namespace) -> int:
     """An arm motion from the example strength file (or --file)."""
+    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import (
         EXTRAPOLATION_MARGIN_DEG,
         StrengthError,

@@ -96,6 +96,7 @@ class Database:
         progress: Progress | None = None,
     ) -> Database:
         """The database `target` names (see configured_target)."""
+        # deferred: db.postgres — off sass db init (sass_tui/startup.py)
         from sass_tui.db.postgres import connect_postgres
 
         target = configured_target(target)
@@ -107,6 +108,7 @@ class Database:
     @property
     def name(self) -> str:
         """The database as shown to a user (a PostgreSQL address without its password)."""
+        # deferred: db.postgres — off sass db init (sass_tui/startup.py)
         from sass_tui.db.postgres import shown
 
         if is_url(self.target):
@@ -131,6 +133,7 @@ class Database:
     # --- reading -------------------------------------------------------------
 
     def query(self, query: str | CompiledQuery) -> Query:
+        # deferred: db.query — off sass person, sass db init (sass_tui/startup.py)
         from sass_tui.db.query import Query, compile_query
 
         compiled = compile_query(query) if isinstance(query, str) else query
@@ -152,6 +155,7 @@ class Database:
     def person_records(self, keys: Sequence[str]) -> list[dict[str, object]]:
         """Everything stored about the people `keys` name (an id or a name), in
         order (db/individual.py's person_record)."""
+        # deferred: db.individual — off sass query, sass query --count, sass population … (sass_tui/startup.py)
         from sass_tui.db.individual import find_person, person_record
 
         with self.connection() as conn:
@@ -163,6 +167,7 @@ class Database:
 
     def predictor(self) -> Predictor:
         """The database's prediction model (db/predict.py)."""
+        # deferred: db.predict — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         from sass_tui.db.predict import open_predictor
 
         with self.connection() as conn:
@@ -180,6 +185,7 @@ class Database:
     ) -> tuple[Family, Values]:
         """A manikin family (db/fit.py) and the people's values of its first two
         measures (the scatter it is drawn over)."""
+        # deferred: db.fit, db.values — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         from sass_tui.db.fit import load_family
         from sass_tui.db.values import load_values
 
@@ -210,10 +216,12 @@ class Database:
         cancel: Cancel | None = None,
     ) -> dict[str, int]:
         """Import ANSUR II format files in one transaction; people per gender."""
+        # deferred: db.ansur — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         from sass_tui.db.ansur import import_ansur
 
         with self.connection() as conn:
             if self.dialect == "postgresql":
+                # deferred: db.postgres — off sass db init (sass_tui/startup.py)
                 from sass_tui.db.postgres import import_staged
 
                 return import_staged(
@@ -228,10 +236,12 @@ class Database:
         self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
     ) -> int:
         """Import legacy flat files in one transaction; how many people."""
+        # deferred: db.flatfile — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         from sass_tui.db.flatfile import import_flat_files
 
         with self.connection() as conn:
             if self.dialect == "postgresql":
+                # deferred: db.postgres — off sass db init (sass_tui/startup.py)
                 from sass_tui.db.postgres import import_staged
 
                 return import_staged(
@@ -244,6 +254,7 @@ def init_postgres(url: str, progress: Progress | None = None, *, force: bool) ->
     """`sass db init` on PostgreSQL: the schema made (or migrated) and the
     default people stored in one transaction, replacing everyone (with
     `force`; without it a database holding people is refused)."""
+    # deferred: db.postgres — off sass db init (sass_tui/startup.py)
     from sass_tui.db.postgres import connect_postgres, import_staged, people_count, shown
 
     conn = connect_postgres(url, create=True)

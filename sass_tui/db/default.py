@@ -105,6 +105,7 @@ def holds_people(conn: sqlite3.Connection) -> bool:
 
 
 def shipped_ansur_files() -> list[Path]:
+    # deferred: model.datasets — off sass query, sass query --count, sass person … (sass_tui/startup.py)
     from sass_tui.model import datasets
 
     return [datasets.directory() / "ansur2" / name for name in ANSUR_FILES]
@@ -170,6 +171,7 @@ def _build(
 
 def fill_default(conn: sqlite3.Connection, progress: Progress | None = None) -> dict[str, int]:
     """Store the shipped people (inside the caller's transaction)."""
+    # deferred: db.ansur, db.flatfile, model.datasets — off sass query, sass query --count, sass person … (sass_tui/startup.py)
     from sass_tui.db.ansur import DEFAULT_LABEL, store_ansur
     from sass_tui.db.flatfile import FlatFiles, read_flat_files
     from sass_tui.model import datasets

@@ -272,6 +272,7 @@ def _percentiles(
         if weights is None:
             out[k] = np.percentile(column[present], PERCENTILES)
         else:
+            # deferred: model.targets — off sass population (sass_tui/startup.py)
             from sass_tui.model.targets import weighted_percentile
 
             out[k] = weighted_percentile(column, weights, PERCENTILES)

@@ -68,6 +68,7 @@ def shown(url: str) -> str:
 
 def _driver() -> Any:
     try:
+        # deferred: psycopg — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         import psycopg
     except ImportError:
         raise DatabaseError(
@@ -321,6 +322,7 @@ def import_staged(
     """`stage` imports into a private SQLite file (its parsing and checks, its
     errors); then its people are copied into PostgreSQL in one transaction.
     `replace_all`: everyone stored before goes (`sass db init`)."""
+    # deferred: tempfile — off sass query, sass query --count, sass person … (sass_tui/startup.py)
     import tempfile
 
     with tempfile.TemporaryDirectory(prefix="sass-staging-") as folder:

@@ -84,6 +84,7 @@ _MASS_FRACTION = dict(MASS_FRACTIONS)
 def girth_mass_fractions() -> np.ndarray:
     """Appendix K fraction of each girth row (0 for eyes, NaN for eye location).
     A function so that opening a database does not import numpy."""
+    # deferred: numpy — off sass query, sass query --count (sass_tui/startup.py)
     import numpy as np
 
     return np.array(
@@ -698,6 +699,7 @@ class PeopleBatch:
 
 def _nullable(array: np.ndarray) -> list[Any]:
     """Array -> nested lists with None for NaN (vectorised: object array)."""
+    # deferred: numpy — off sass query, sass query --count (sass_tui/startup.py)
     import numpy as np
 
     out = array.astype(object)
@@ -708,6 +710,7 @@ def _nullable(array: np.ndarray) -> list[Any]:
 
 def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iterable[SqlRow]:
     """(id, row name, v...) for every row that has at least one value."""
+    # deferred: numpy — off sass query, sass query --count (sass_tui/startup.py)
     import numpy as np
 
     present = ~np.all(np.isnan(values), axis=2)
@@ -744,6 +747,7 @@ def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool 
 
 
 def _store_people(conn: sqlite3.Connection, ids: list[int], batch: PeopleBatch) -> None:
+    # deferred: numpy — off sass query, sass query --count (sass_tui/startup.py)
     import numpy as np
 
     no_value = [None] * len(ids)

@@ -123,6 +123,7 @@ def make_target(
     population: str = DEFAULT_POPULATION,
 ) -> tuple[Target, TargetWeights, Weighting]:
     """Compute a target (nothing stored: `store_target` stores it)."""
+    # deferred: db.values — off sass target (sass_tui/startup.py)
     from sass_tui.db.values import load_values
 
     check_name(name)

@@ -71,6 +71,7 @@ def person_joint_lengths(figure: Figure) -> dict[str, float]:
     figure and for a person without those measurements."""
     if not figure.landmarks or math.isnan(figure.stature):
         return {}
+    # deferred: model.landmarks — off sass fig (sass_tui/startup.py)
     from sass_tui.model.landmarks import joint_lengths, measured_heights
 
     lengths = joint_lengths(measured_heights(figure.landmarks, figure.stature / 100.0))
@@ -223,12 +224,14 @@ COMMENT: /\/\*(.|\n)*?\*\//
 
 @lru_cache(maxsize=1)
 def _parser() -> Lark:
+    # deferred: lark — off the first screen's next frame, sass fig, sass export hanim … (sass_tui/startup.py)
     from lark import Lark
 
     return Lark(_GRAMMAR, parser="lalr", propagate_positions=True)
 
 
 def parse_fig(text: str, name: str = "<text>") -> FigFile:
+    # deferred: lark.exceptions — off the first screen's next frame, sass fig, sass export hanim … (sass_tui/startup.py)
     from lark.exceptions import (
         UnexpectedCharacters,
         UnexpectedEOF,

@@ -20,6 +20,7 @@ import json
 import math
 import struct
 from dataclasses import dataclass
+from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 from urllib.parse import quote
@@ -354,8 +355,6 @@ def figure_extras(figure: Figure, humanoid: Humanoid, pose: str) -> dict[str, An
 
 
 def sass_version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
-
     try:
         return version("sass-tui")
     except PackageNotFoundError:

@@ -809,7 +809,8 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
     """The HAnimHumanoid node.  DEF names follow the HAnim convention the x3d
     package checks: the humanoid's name, '_', the node's name ('male_50_l_hip');
     humanoids with different names can share a scene."""
-    import xml.etree.ElementTree as ET  # the X3D document only: not the TUI's drawing
+    # deferred: xml.etree.ElementTree — the X3D document only: not the TUI's drawing
+    import xml.etree.ElementTree as ET
 
     prefix = f"{humanoid.name}_"
     # skeletalConfiguration is "BASIC" (clause 4.8.2) through the field's X3D 4.0
@@ -897,6 +898,7 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
 
 def scene_document(humanoids: list[tuple[ET.Element, float]], title: str, height: float) -> str:
     """An X3D 4.0 document holding humanoids side by side (x offsets in metres)."""
+    # deferred: xml.etree.ElementTree — off the first screen's next frame, sass export gltf, sass fit (sass_tui/startup.py)
     import xml.etree.ElementTree as ET
 
     x3d = ET.Element(

@@ -96,6 +96,7 @@ class PopulationData:
         if not isinstance(section, list):
             return section
         if gender not in self._arrays:
+            # deferred: numpy — off the first screen (sass_tui/startup.py)
             import numpy as np
 
             self._arrays[gender] = np.array(section, dtype=float)
@@ -466,6 +467,7 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
 
 def write_population_file(data: PopulationData, path: str | Path) -> None:
     """Write statistics back in the same format (atomically)."""
+    # deferred: model.atomic — off the first screen, sass strength (sass_tui/startup.py)
     from sass_tui.model.atomic import write_text_atomic
 
     lines = [f"C {data.title}"]

@@ -50,7 +50,8 @@ class SassApp(App):
         # a PostgreSQL address (postgresql://...) stays text.
         self.db_path: str | Path | None = None
         if db_path:
-            from sass_tui.db.addresses import is_url  # imports nothing (the first screen's path)
+            # deferred: db.addresses — the db package is off the first screen (sass_tui/startup.py) unless --db is given; addresses imports nothing
+            from sass_tui.db.addresses import is_url
 
             self.db_path = db_path if is_url(db_path) else user_path(db_path)
         # A session served to a browser (model/served.py): the directory every
@@ -73,6 +74,7 @@ class SassApp(App):
 
     # --- the theme, chosen in the palette ("Change theme"), remembered -----------
     def _restore_theme(self) -> None:
+        # deferred: ui.settings — off the first screen (sass_tui/startup.py)
         from sass_tui.ui.settings import load_settings
 
         theme = load_settings().get("theme")
@@ -83,6 +85,7 @@ class SassApp(App):
     def watch_theme(self, theme: str) -> None:
         if not getattr(self, "_theme_restored", False):
             return  # the default, or the one just read back
+        # deferred: ui.settings — off the first screen (sass_tui/startup.py)
         from sass_tui.ui.settings import save_setting
 
         problem = save_setting("theme", theme)
@@ -98,6 +101,7 @@ class SassApp(App):
     def _make_strength_sheet(self, figure: Figure, path: str | Path | None) -> StrengthSheet | None:
         """The population's strength sheet from `path` (None =
         datasets/strength.dat), or None and why in strength_error."""
+        # deferred: model.strength — off the first screen (sass_tui/startup.py)
         from sass_tui.model.strength import StrengthError, StrengthSheet, read_strength_file
 
         try:
@@ -178,11 +182,13 @@ class SassApp(App):
     def open_query_screen(self) -> None:
         # Imported when first used: the database costs ~60 ms of start-up
         # that a user who never queries should not pay.
+        # deferred: ui.query_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.ui.query_screen import QueryScreen
 
         self.push_screen(QueryScreen(self.query_lists, self.db_path))
 
     def open_figure_screen(self) -> None:
+        # deferred: ui.figure_screen — off the first screen (sass_tui/startup.py)
         from sass_tui.ui.figure_screen import FigureScreen
 
         self.push_screen(FigureScreen(self.session))
@@ -191,6 +197,7 @@ class SassApp(App):
         self.query_lists = event.lists
 
     def selected_count(self) -> int:
+        # deferred: db.lists — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.db.lists import SELECTED_LIST
 
         return self.query_lists.count(SELECTED_LIST) if self.query_lists else 0
@@ -205,12 +212,14 @@ class SassApp(App):
 
     def person_figure(self, index: int, population: Figure) -> Figure:
         """The figure of person `index` of the selected list (report §12.4)."""
+        # deferred: db.individual — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.db.individual import person_figure as figure_of
 
         return figure_of(self.selected_individual(index), population)
 
 
 def _screen_commands_provider():
+    # deferred: ui.palette — off the first screen, the first screen's next frame (sass_tui/startup.py)
     from sass_tui.ui.palette import ScreenCommands
 
     return ScreenCommands
@@ -219,6 +228,7 @@ def _screen_commands_provider():
 def make_app(db_path: str | Path | None = None) -> SassApp:
     """The app `sass` runs: a served session's (`sass serve`) when its
     environment says so (model/served.py)."""
+    # deferred: model.served — off the first screen, the first screen's next frame (sass_tui/startup.py)
     from sass_tui.model.served import served_read_only, served_workdir
 
     return SassApp(db_path=db_path, workdir=served_workdir(), read_only=served_read_only())

@@ -56,6 +56,7 @@ def parse_measures(text: str) -> list[str]:
     names = [name for name in names if name]
     if not 2 <= len(names) <= 6:
         raise FamilyAnswerError(f"give 2 to 6 measurements separated by commas, not {len(names)}")
+    # deferred: model.accommodation — only parse_measures() needs it; importing ui.family_screen does not load it
     from sass_tui.model.accommodation import measure_field
 
     for name in names:
@@ -170,6 +171,7 @@ class FamilyScreen(SassScreen):
         coverage: float,
         work: Work,
     ) -> None:
+        # deferred: db.database, db.fit — only build_family() needs it; importing ui.family_screen does not load it
         from sass_tui.db.database import Database
         from sass_tui.db.fit import DEFAULT_POPULATION
 
@@ -250,6 +252,7 @@ class FamilyScreen(SassScreen):
         )
 
     def _write_to(self, family: Family, directory: Path) -> None:
+        # deferred: model.accommodation — only _write_to() needs it; importing ui.family_screen does not load it
         from sass_tui.model.accommodation import write_family
 
         written = write_family(family, directory, Figure.default(family.gender))

@@ -90,11 +90,13 @@ class QueryScreenBase(SassScreen):
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def _open_database(self, db_path: str | Path | None, work: Work) -> None:
+        # deferred: db.addresses, db.default — only _open_database() needs it; importing ui.query_base does not load it
         from sass_tui.db.addresses import is_url
         from sass_tui.db.default import create_default_database, default_needs_building
 
         target = configured_target(db_path)
         if is_url(target):  # a lab's PostgreSQL database (--db or $SASS_DB): never built here
+            # deferred: db.postgres — only _open_database() needs it; importing ui.query_base does not load it
             from sass_tui.db.postgres import shown
 
             try:

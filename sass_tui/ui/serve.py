@@ -172,6 +172,7 @@ def _hostname(host_header: str) -> str:
 def _server_class():  # -> type[textual_serve.server.Server]
     """The server class, made when first served: textual-serve and aiohttp are
     imported only by `sass serve`."""
+    # deferred: aiohttp_jinja2, aiohttp.web, textual_serve.app_service, textual_serve.server — off sass serve (sass_tui/startup.py)
     import aiohttp_jinja2
     from aiohttp import web
     from textual_serve.app_service import AppService
@@ -356,6 +357,7 @@ def _server_class():  # -> type[textual_serve.server.Server]
             options = self.options
             print(f"sass serve: open {options.url}", flush=True)
             if options.open_browser:
+                # deferred: webbrowser — off sass serve (sass_tui/startup.py)
                 import webbrowser
 
                 # In a thread: a browser that runs in this terminal would block the server.

@@ -85,6 +85,7 @@ class StrengthCurveScreen(SassScreen):
         return Subject(figure.gender, age, figure.output_mass(), figure.stature / 100.0)
 
     def draw(self) -> None:
+        # deferred: model.strength — only draw() needs it; importing ui.strength_curve_screen does not load it
         from sass_tui.model.strength import joint_limit_range
 
         motion = LOWER_LIMB_MOTIONS[self.motion]
