@@ -28,7 +28,7 @@ def add_db_option(parser: argparse.ArgumentParser) -> None:
 def open_database(args: argparse.Namespace, create: bool = False):  # -> db.database.Database
     """The Database `--db` (or $SASS_DB) names, or the default file (built on
     first use, with a progress bar on a terminal)."""
-    # deferred: cli.progress — off sass fig, sass strength, sass export … (sass_tui/startup.py)
+    # deferred: cli.progress — off sass fig, sass strength, sass export hanim … (sass_tui/startup.py)
     from sass_tui.cli.progress import progress_for
 
     # deferred: db.addresses, db.database, db.default, db.schema, model.paths — off sass serve (sass_tui/startup.py)
