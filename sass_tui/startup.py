@@ -11,7 +11,7 @@ import numpy.  An import inside a function elsewhere in sass_tui carries
 MODULE off one of these paths, by the row's `name`
 (tests/test_deferred_imports.py checks both).
 
-Pure data: nothing here is imported by sass itself, and it imports nothing.
+Pure data: nothing in sass imports it, and it imports only typing.
 """
 
 from __future__ import annotations
@@ -32,9 +32,10 @@ class StartupPath(NamedTuple):
     status: int = 0  # the exit status the argv is expected to give
 
 
-# Never imported at run time: the query grammar is lark's stand-alone parser,
-# generated into db/_query_parser.py; pint only checks the unit table in the
-# tests; pygltflib only reads exported glTF files back in the tests.
+# Off every path here: the query grammar is lark's stand-alone parser,
+# generated into db/_query_parser.py, and lark itself parses only a .fig file
+# being read (model/figfile.py); pint only checks the unit table in the tests;
+# pygltflib only reads exported glTF files back in the tests.
 NEVER = ("lark", "pint", "pygltflib")
 # Textual and what draws or serves it: only the TUI and `sass serve`.
 UI = ("textual", "rich", "textual_canvas", "textual_plotext", "textual_serve", "aiohttp")
