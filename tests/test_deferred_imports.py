@@ -7,6 +7,8 @@ from __future__ import annotations
 import runpy
 from pathlib import Path
 
+import pytest
+
 from sass_tui.startup import PATHS
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -14,17 +16,22 @@ METRICS = runpy.run_path(str(ROOT / "scripts" / "code_metrics.py"))
 TABLE = " (sass_tui/startup.py)"
 
 
-def test_every_function_level_import_gives_its_reason():
-    found = METRICS["function_level_import_reasons"]()
+@pytest.fixture(scope="module")
+def found() -> list[tuple[str, int, str | None]]:
+    """Every function-level import of sass_tui with its reason (one read of the tree)."""
+    return METRICS["function_level_import_reasons"]()
+
+
+def test_every_function_level_import_gives_its_reason(found):
     assert found, "no function-level import found: the script reads nothing"
     assert [f"{where}:{line}" for where, line, reason in found if reason is None] == []
 
 
-def test_a_reason_names_only_paths_of_the_table():
+def test_a_reason_names_only_paths_of_the_table(found):
     # "# deferred: numpy — off the first screen, sass query … (sass_tui/startup.py)"
     names = {path.name for path in PATHS}
     unknown = []
-    for where, line, reason in METRICS["function_level_import_reasons"]():
+    for where, line, reason in found:
         why = METRICS["DEFERRED"].search(reason)["why"]
         if why.startswith("off ") and why.endswith(TABLE):
             for name in why.removeprefix("off ").removesuffix(TABLE).rstrip(" …").split(", "):
