@@ -65,31 +65,65 @@ def class_method_counts() -> list[tuple[str, str, int]]:
     return sorted(found, key=lambda item: -item[2])
 
 
+# The reason a function-level import gives (sass_tui/startup.py): on the
+# statement's own lines, or on a comment line directly above the run of imports
+# it belongs to, "# deferred: MODULE — REASON".
+DEFERRED = re.compile(r"#\s*deferred:\s*(?P<modules>[^—]*\S)\s+—\s+(?P<why>\S.*)$")
+
+
+def function_level_import_reasons() -> list[tuple[str, int, str | None]]:
+    """Every import statement inside a function body (nested functions too):
+    where it is and the `# deferred:` comment that says why (None if none)."""
+    found: list[tuple[str, int, str | None]] = []
+    for path in python_files(PACKAGE):
+        lines = path.read_text(encoding="utf-8").splitlines()
+        tree = parse(path)
+        import_lines = {
+            line
+            for node in ast.walk(tree)
+            if isinstance(node, ast.Import | ast.ImportFrom)
+            for line in range(node.lineno, (node.end_lineno or node.lineno) + 1)
+        }
+        inside: list[ast.Import | ast.ImportFrom] = []
+
+        class Visitor(ast.NodeVisitor):
+            depth = 0
+
+            def visit_FunctionDef(self, node: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
+                self.depth += 1
+                self.generic_visit(node)
+                self.depth -= 1
+
+            visit_AsyncFunctionDef = visit_FunctionDef
+
+            def visit_Import(self, node: ast.Import | ast.ImportFrom) -> None:
+                if self.depth:
+                    inside.append(node)
+
+            visit_ImportFrom = visit_Import
+
+        Visitor().visit(tree)
+        for node in inside:
+            last = node.end_lineno or node.lineno
+            reason = next(
+                (m.group(0) for m in map(DEFERRED.search, lines[node.lineno - 1 : last]) if m),
+                None,
+            )
+            line = node.lineno - 1  # 1-based number of the line above
+            while reason is None and line >= 1:
+                text = lines[line - 1].strip()
+                if not (text.startswith("#") or line in import_lines):
+                    break
+                match = DEFERRED.search(text) if text.startswith("#") else None
+                reason = match.group(0) if match else None
+                line -= 1
+            found.append((relative(path), node.lineno, reason))
+    return found
+
+
 def function_level_imports() -> Counter[str]:
     """Import statements inside a function body (nested functions too), by module."""
-    counts: Counter[str] = Counter()
-
-    class Visitor(ast.NodeVisitor):
-        def __init__(self, name: str) -> None:
-            self.name = name
-            self.depth = 0
-
-        def visit_FunctionDef(self, node: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
-            self.depth += 1
-            self.generic_visit(node)
-            self.depth -= 1
-
-        visit_AsyncFunctionDef = visit_FunctionDef
-
-        def visit_Import(self, node: ast.Import | ast.ImportFrom) -> None:
-            if self.depth:
-                counts[self.name] += 1
-
-        visit_ImportFrom = visit_Import
-
-    for path in python_files(PACKAGE):
-        Visitor(relative(path)).visit(parse(path))
-    return counts
+    return Counter(where for where, _, _ in function_level_import_reasons())
 
 
 def textual_source() -> str:
@@ -224,7 +258,8 @@ def main() -> int:
         print(f"  {methods:4d}  {name} ({where}){'  <-- over' if methods > MAX_METHODS else ''}")
 
     imports = function_level_imports()
-    print(f"\nFunction-level imports in sass_tui: {sum(imports.values())}")
+    reasons = sum(reason is not None for _, _, reason in function_level_import_reasons())
+    print(f"\nFunction-level imports: {sum(imports.values())} ({reasons} with a reason)")
     for where, count in imports.most_common(8):
         print(f"  {count:4d}  {where}")
 

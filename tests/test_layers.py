@@ -1,14 +1,12 @@
 """Import hygiene: the model, database and command line never import Textual,
-and the command line's start-up imports only what `sass fig` needs."""
+and the start-up keeps what it does not show for later.  What each start-up
+path must not import is sass_tui/startup.py's table, run by tests/test_startup.py."""
 
 from __future__ import annotations
 
 import pkgutil
-import shutil
 import subprocess
 import sys
-
-import pytest
 
 import sass_tui.db
 import sass_tui.model
@@ -56,80 +54,6 @@ def test_model_db_and_cli_do_not_import_textual():
     assert _run(code) == ""
 
 
-def test_the_command_line_starts_without_its_heavy_imports():
-    # Every subcommand is registered, yet sqlite3, lark, pint and Textual wait
-    # until a command needs them (`sass fig` < 0.5 s, docs/performance.md).
-    code = (
-        "import sys\nfrom sass_tui.cli import build_parser\nbuild_parser()\n"
-        "heavy = ('sqlite3', 'lark', 'pint', 'textual')\n"
-        "print(','.join(sorted(m for m in heavy if m in sys.modules)))\n"
-    )
-    assert _run(code) == ""
-
-
-HEAVY = ("lark", "pint", "textual", "numpy")
-# What `sass query` must not import either (start-up <= 5x a bare interpreter):
-# the generated parser's logging, dataclasses/inspect and pickle, and shutil
-# (argparse's help formatter imports it for the terminal's width); nor the
-# drivers of the other engines on a SQLite file below the column copy's size.
-QUERY_NEEDS_NONE_OF = (
-    *HEAVY, "logging", "dataclasses", "inspect", "pickle", "shutil", "duckdb", "psycopg",
-)  # fmt: skip
-
-
-def _imported_while_running(argv: list[str], cwd, heavy: tuple[str, ...] = HEAVY) -> set[str]:
-    code = (
-        "import sys\nfrom sass_tui.cli import main\n"
-        f"status = main({argv!r})\n"
-        f"heavy = {heavy!r}\n"
-        "print(status, ','.join(m for m in heavy if m in sys.modules), file=sys.stderr)\n"
-    )
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=cwd)
-    last = done.stderr.strip().splitlines()[-1]
-    status, _, modules = last.partition(" ")
-    assert status == "0", done.stderr
-    return set(filter(None, modules.split(",")))
-
-
-@pytest.mark.slow
-def test_a_query_in_inches_does_not_import_pint(shipped_db_file, tmp_path):
-    # "70 in" is converted from the unit table, not by pint (slow to import).
-    db = tmp_path / "sass.db"
-    shutil.copy(shipped_db_file, db)
-    imported = _imported_while_running(
-        ["--db", str(db), "query", "--format", "csv", "stature > 70 in"], tmp_path
-    )
-    assert "pint" not in imported and "textual" not in imported
-    # The table (the default format), a unit converted, parentheses, OR, a group row:
-    # the parser, the compiler, the database and the table writer all ran.
-    query = "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"
-    argv = ["--db", str(db), "query", query]
-    assert _imported_while_running(argv, tmp_path, QUERY_NEEDS_NONE_OF) == set()
-
-
-def test_sass_fig_does_not_import_pint(tmp_path):
-    # Nor numpy.ma (np.median and np.unique import it: 25 ms), nor secrets
-    # (hashlib, hmac, random) for a temporary file's name.
-    # What `import numpy` itself brings is numpy's (numpy 1.26, the floor, imports
-    # numpy.ma and, through numpy.random, secrets): sass must not add them.
-    by_numpy = set(
-        subprocess.run(
-            [sys.executable, "-c", "import sys, numpy; print(' '.join(sys.modules))"],
-            capture_output=True,
-            text=True,
-            check=True,
-        ).stdout.split()
-    )
-    heavy = tuple(
-        m
-        for m in (*HEAVY, "numpy.ma", "secrets", "logging", "shutil")
-        if m == "numpy" or m not in by_numpy
-    )
-    imported = _imported_while_running(["fig", "-o", str(tmp_path / "X.fig")], tmp_path, heavy)
-    assert imported == {"numpy"}  # no pint, no lark, no Textual
-    assert (tmp_path / "X.fig").is_file()
-
-
 def test_only_the_verb_being_run_is_built():
     # Each verb's parser costs start-up time: `sass query` builds only its own,
     # while `sass --help` (and an unknown verb's error) lists them all.
@@ -146,39 +70,6 @@ def test_only_the_verb_being_run_is_built():
     assert verbs(["--db", "query", "fig", "-o", "X.fig"]) == {"fig"}
     for argv in ([], ["-h", "query"], ["--version", "fig"], ["nosuch"]):
         assert len(verbs(argv)) == len(VERBS), argv
-
-
-def test_the_spreadsheet_starts_without_what_other_screens_use():
-    # For a fast first screen: the database, the query language, pint, the
-    # prediction model and the other screens load when first used.
-    code = (
-        "import sys\nimport sass_tui.ui.app\n"
-        "later = ('sqlite3', 'lark', 'pint', 'sass_tui.model.prediction', 'sass_tui.db',\n"
-        "         'sass_tui.ui.query_screen', 'sass_tui.ui.figure_screen', 'numpy')\n"
-        "print(','.join(sorted(m for m in later if m in sys.modules)))\n"
-    )
-    assert _run(code) == ""
-
-
-@pytest.mark.slow
-def test_the_first_screen_is_drawn_without_what_it_does_not_show():
-    # For a fast first screen: the spreadsheet with its figure panel at 120
-    # columns, up and drawn, has not imported what only exports, other screens
-    # or the first edit use.
-    code = (
-        "import asyncio, sys\n"
-        "from sass_tui.ui.app import SassApp\n"
-        "async def first_screen():\n"
-        "    app = SassApp()\n"
-        "    async with app.run_test(size=(120, 40)) as pilot:\n"
-        "        await pilot.pause()\n"
-        "        assert app.spreadsheet.figure_panel.outlines\n"
-        "asyncio.run(first_screen())\n"
-        "later = ('xml.etree.ElementTree', 'sqlite3', 'lark', 'pint',\n"
-        "         'sass_tui.model.prediction', 'sass_tui.ui.query_screen')\n"
-        "print(','.join(sorted(m for m in later if m in sys.modules)))\n"
-    )
-    assert _run(code) == ""
 
 
 def test_the_first_screen_is_drawn_before_numpy_is_imported():

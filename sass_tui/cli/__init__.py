@@ -16,6 +16,7 @@ from types import ModuleType
 from typing import Any, cast
 
 from sass_tui.cli.options import DB_HELP, SubParsers
+from sass_tui.model.errors import SassError
 
 # The verbs in `sass --help`'s order, each the module sass_tui.cli.VERB,
 # imported when its parser is built or listed (a verb run imports only its own).
@@ -147,6 +148,7 @@ class _VersionAction(argparse.Action):
     """--version, looked up only when asked (importlib.metadata costs start-up time)."""
 
     def __call__(self, parser: argparse.ArgumentParser, *_: object) -> None:
+        # deferred: importlib.metadata — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
         from importlib.metadata import PackageNotFoundError, version
 
         try:
@@ -194,7 +196,7 @@ def run_tui(db: str | None) -> int:
     # is off until the app has drawn that screen (SassApp.first_screen_drawn).
     gc.disable()
     try:
-        from sass_tui.model.errors import SassError
+        # deferred: ui.app — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
         from sass_tui.ui.app import run_app
 
         try:
@@ -208,7 +210,7 @@ def run_tui(db: str | None) -> int:
 
 def run_verb(args: argparse.Namespace) -> int:
     """Run the chosen verb; every error a user can cause ends here as a message."""
-    from sass_tui.model.errors import SassError
+    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.text import printable
 
     try:
@@ -232,6 +234,7 @@ def run_verb(args: argparse.Namespace) -> int:
     except Exception as exc:
         if "sass_tui.db.database" not in sys.modules:
             raise  # no database was opened: not an engine's error
+        # deferred: db.database — off sass fig, sass --help, sass strength … (sass_tui/startup.py)
         from sass_tui.db.database import engine_error
 
         error = engine_error(exc)

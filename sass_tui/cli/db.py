@@ -72,6 +72,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run_init(args: argparse.Namespace) -> int:
+    # deferred: db.addresses, db.database, db.default, db.schema — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import configured_target
     from sass_tui.db.default import create_default_database, people_count
@@ -109,6 +110,7 @@ def run_init(args: argparse.Namespace) -> int:
     # The old column copy follows another history: never read again, only
     # taking disk space.  None is built: the default people are fewer than
     # the copy's threshold (accelerator.MIN_PEOPLE), counted by SQLite.
+    # deferred: db.accelerator — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db import accelerator
 
     accelerator.forget(path.resolve())
@@ -122,6 +124,7 @@ def run_init(args: argparse.Namespace) -> int:
 def _init_postgres(url: str, force: bool) -> int:
     """`sass db init --db postgresql://...`: the schema and the default people,
     in one transaction; asks (or needs --force) before replacing people."""
+    # deferred: db.database, db.postgres, db.schema — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.database import Database, init_postgres
     from sass_tui.db.postgres import shown
     from sass_tui.db.schema import DatabaseError
@@ -166,6 +169,7 @@ def _has_person_table(conn) -> bool:  # sqlite3.Connection
 
 
 def run_import_flat(args: argparse.Namespace) -> int:
+    # deferred: db.flatfile — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.flatfile import FlatFileError, FlatFiles
 
     if len(args.strength) > 4:
@@ -194,6 +198,7 @@ def run_import_ansur(args: argparse.Namespace) -> int:
 
 
 def run_copy(args: argparse.Namespace) -> int:
+    # deferred: db.accelerator, db.query, db.schema, model.text — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db import accelerator
     from sass_tui.db.query import QueryError, compile_query
     from sass_tui.db.schema import DatabaseError

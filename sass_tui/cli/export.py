@@ -45,6 +45,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run_hanim(args: argparse.Namespace) -> int:
+    # deferred: model.hanim — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.hanim import export_hanim
 
     figure, warnings = figure_from_args(args)
@@ -56,6 +57,7 @@ def run_hanim(args: argparse.Namespace) -> int:
 
 
 def run_gltf(args: argparse.Namespace) -> int:
+    # deferred: model.gltf — off sass --help, sass export hanim, sass --version (sass_tui/startup.py)
     from sass_tui.model.gltf import check_path, export_gltf
 
     path = check_path(user_path(args.output))  # refused before the database is opened
@@ -69,6 +71,7 @@ def run_gltf(args: argparse.Namespace) -> int:
 
 def _note(figure: Figure) -> None:
     """What of the figure the humanoid (HAnim and glTF alike) leaves out."""
+    # deferred: model.hanim — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.hanim import not_in_humanoid_note
 
     note = not_in_humanoid_note(figure).strip()

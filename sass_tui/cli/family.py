@@ -73,6 +73,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    # deferred: db.fit, db.query, model.accommodation, model.figure — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.fit import load_family
     from sass_tui.db.query import QueryError, compile_query
     from sass_tui.model.accommodation import measure_field, write_family
@@ -89,6 +90,7 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     weighted_to = None
     if args.target is not None:
+        # deferred: db.targets — off sass --help, sass family, sass --version (sass_tui/startup.py)
         from sass_tui.db.targets import load_target
 
         weighted_to = load_target(conn, args.target)

@@ -11,6 +11,7 @@ from sass_tui.cli.options import (
     person_file_name,
     print_warnings,
 )
+from sass_tui.model.names import GIRTH
 
 
 def register(commands: SubParsers) -> None:
@@ -33,12 +34,13 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    # deferred: model.figfile — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.figfile import default_fig_name, write_fig
-    from sass_tui.model.names import GIRTH
 
     figure, warnings = figure_from_args(args)
     extra_sections = []
     if not args.no_strength:
+        # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
         from sass_tui.model.strength import (
             StrengthSheet,
             fig_section,

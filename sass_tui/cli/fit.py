@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from typing import TYPE_CHECKING
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.model.published_strength import parse_strength_limit
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -82,8 +84,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    import json
-
+    # deferred: db.fit, db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.fit import check_mix, fit_test
     from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
 
@@ -96,12 +97,11 @@ def run(args: argparse.Namespace) -> int:
         error.column = exc.column
         raise error from None
     check_mix(args.mix)
-    from sass_tui.model.published_strength import parse_strength_limit
-
     strength = [parse_strength_limit(text) for text in args.strength]
     conn = open_db(args)
     target = None
     if args.target is not None:
+        # deferred: db.targets — off sass --help, sass fit, sass --version (sass_tui/startup.py)
         from sass_tui.db.targets import load_target
 
         target = load_target(conn, args.target)
@@ -118,6 +118,7 @@ def run(args: argparse.Namespace) -> int:
         json.dump(result.to_json(), sys.stdout, indent=1, allow_nan=False)
         sys.stdout.write("\n")
     else:
+        # deferred: db.fit_table — off sass --help, sass --version (sass_tui/startup.py)
         from sass_tui.db.fit_table import format_table
 
         sys.stdout.write(format_table(result))

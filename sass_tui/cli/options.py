@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from typing import TYPE_CHECKING, TypeAlias
 
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS
@@ -27,9 +28,10 @@ def add_db_option(parser: argparse.ArgumentParser) -> None:
 def open_database(args: argparse.Namespace, create: bool = False):  # -> db.database.Database
     """The Database `--db` (or $SASS_DB) names, or the default file (built on
     first use, with a progress bar on a terminal)."""
-    import sys
-
+    # deferred: cli.progress — off sass fig, sass strength, sass export hanim … (sass_tui/startup.py)
     from sass_tui.cli.progress import progress_for
+
+    # deferred: db.addresses, db.database, db.default, db.schema, model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import Database, configured_target
     from sass_tui.db.default import needs_building
@@ -53,6 +55,7 @@ def open_db(args: argparse.Namespace, create: bool = False):  # -> the db layer'
     the db layer's functions that take one: a SQLite file, or a PostgreSQL
     database for the verbs of POSTGRES_COMMANDS (db/addresses.py; for the
     others an address is refused, saying which verbs serve it)."""
+    # deferred: db.addresses, db.database, db.schema — off sass fig, sass --help, sass strength … (sass_tui/startup.py)
     from sass_tui.db.addresses import POSTGRES_COMMANDS, is_url, sqlite_only
     from sass_tui.db.database import configured_target
     from sass_tui.db.schema import DatabaseError
@@ -118,6 +121,7 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
 def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     """Build the figure the options describe, through a Session as the TUI
     does (each edit checked the same way); returns it and the load warnings."""
+    # deferred: model.figure, model.names, model.popfile, model.session, model.units — off sass serve (sass_tui/startup.py)
     from sass_tui.model.figure import Figure, FigureError
     from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
     from sass_tui.model.popfile import read_population_file
@@ -174,6 +178,7 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
 
 def person_figure(args: argparse.Namespace, population: Figure) -> Figure:
     """The person `--person` names, measured against the population figure."""
+    # deferred: db.individual — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
     from sass_tui.db.individual import fetch_individual, find_person
     from sass_tui.db.individual import person_figure as figure_of
 
@@ -194,8 +199,7 @@ def person_file_name(name: str, suffix: str) -> str:
 
 
 def print_warnings(warnings: list[str]) -> None:
-    import sys
-
+    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.text import printable
 
     for warning in warnings:

@@ -6,6 +6,7 @@ N-m)."""
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
@@ -25,8 +26,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    import json
-
     db = open_database(args)
     try:
         records = db.person_records(args.ids)
@@ -49,6 +48,7 @@ def _num(value: object) -> str:
 
 
 def _table(record: dict, out) -> None:  # out: TextIO
+    # deferred: db.scope, model.measures, model.text — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.scope import DEMONSTRATION_SOURCE
     from sass_tui.model.measures import MEASURE_UNITS
     from sass_tui.model.text import printable

@@ -3,9 +3,13 @@
 from __future__ import annotations
 
 import argparse
+import json
+import math
 import sys
 from collections.abc import Iterable
 from itertools import islice
+from json.encoder import encode_basestring_ascii as quote
+from operator import itemgetter
 from typing import TextIO
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
@@ -33,6 +37,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import compile_query
 
     compiled = compile_query(args.query)  # before opening: a bad query touches nothing
@@ -43,6 +48,7 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Query
+    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import PERSON_FIELDS
 
     if args.count:
@@ -55,15 +61,17 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
             _say_who_else(conn, args.query)
         return
     if args.target is not None:
+        # deferred: model.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
         from sass_tui.model.targets import TargetError
 
         raise TargetError("--target weights a count: give --count too")
     rows = query.person_rows()  # tuples in PERSON_FIELDS order
     out = sys.stdout
     if args.format == "csv":
+        # deferred: csv — off sass query, sass query --count (sass_tui/startup.py)
         import csv
-        from operator import itemgetter
 
+        # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
         from sass_tui.model.text import is_printable, printable
 
         # Names and sources come from files and the CSV may go to a terminal: a
@@ -96,6 +104,7 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
 
 def _weighted_count(conn, query: str, name: str) -> None:
     """The raw count, and beside it the target's weighted count and share."""
+    # deferred: db.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
     from sass_tui.db.targets import load_target, weighted_count
 
     counted = weighted_count(conn, query, load_target(conn, name))
@@ -110,6 +119,7 @@ def _weighted_count(conn, query: str, name: str) -> None:
 
 def _say_who_else(conn, text: str) -> None:  # conn: sqlite3.Connection
     """A query that found no real person: the demonstration people it would find."""
+    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import demonstration_hint
 
     hint = demonstration_hint(conn, text)
@@ -142,6 +152,7 @@ def _table_lines(rows: list[tuple]) -> str:
     stored, with one format per row, and checked once; only a chunk that holds
     a control character, a missing value or a value of another type is made
     again with every text through printable() (docs/performance.md)."""
+    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.text import is_printable_lines, printable
 
     if not any(None in row for row in rows):
@@ -178,11 +189,7 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
     function, when the numbers are all finite numbers (their sum is finite;
     None or a text raises TypeError); otherwise by the encoder, person by
     person (benchmarks/query_formats.py)."""
-    import json
-    import math
-    from json.encoder import encode_basestring_ascii as quote
-    from operator import itemgetter
-
+    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import PERSON_FIELDS
 
     try:
@@ -209,8 +216,7 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
 
 def _finite(person: dict) -> dict:
     """The person for JSON, which has no Infinity or NaN: refuse one stored so."""
-    import math
-
+    # deferred: db.query, model.text — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import QueryError
     from sass_tui.model.text import printable
 

@@ -8,9 +8,13 @@ working directory; then ui/serve.py serves.
 from __future__ import annotations
 
 import argparse
+import sys
+import time
+from ipaddress import ip_address
 from pathlib import Path
+from urllib.parse import urlsplit
 
-from sass_tui.cli.options import SubParsers, add_db_option
+from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.errors import SassError
 
 # secrets.token_urlsafe(32): 256 bits.  A token file's must have at least
@@ -97,11 +101,12 @@ def _positive(text: str) -> int:
 
 
 def run(args: argparse.Namespace) -> int:
-    import sys
+    # deferred: importlib.util — off sass --help (sass_tui/startup.py)
     from importlib.util import find_spec
 
     if find_spec("textual_serve") is None:  # the [serve] extra is not installed
         raise ServeError("sass serve needs textual-serve: pip install 'sass-tui[serve]'")
+    # deferred: ui.serve — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.ui.serve import ServeOptions, serve
 
     loopback = is_loopback(args.host)
@@ -133,6 +138,7 @@ def run(args: argparse.Namespace) -> int:
     err = sys.stderr
     print(f"sass serve: web sessions read and write files in {workdir}", file=err)
     if db is not None:
+        # deferred: db.postgres — off sass --help, sass serve, sass --version (sass_tui/startup.py)
         from sass_tui.db.postgres import shown
 
         named = shown(db) if isinstance(db, str) else db  # never the password
@@ -155,8 +161,8 @@ def run(args: argparse.Namespace) -> int:
 
 def is_loopback(host: str) -> bool:
     """True when every address `host` names is this machine's loopback."""
+    # deferred: socket — off sass --help (sass_tui/startup.py)
     import socket
-    from ipaddress import ip_address
 
     try:
         infos = socket.getaddrinfo(host, None)
@@ -172,8 +178,10 @@ def tls_context(certfile: str | None, keyfile: str | None):  # -> ssl.SSLContext
         return None
     if certfile is None:
         raise ServeError("--keyfile needs --certfile (the certificate it belongs to)")
+    # deferred: ssl — off sass --help, sass --version (sass_tui/startup.py)
     import ssl
 
+    # deferred: model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.model.paths import regular_file
 
     cert = regular_file(certfile)
@@ -190,14 +198,13 @@ def tls_context(certfile: str | None, keyfile: str | None):  # -> ssl.SSLContext
 
 
 def check_public_url(url: str) -> None:
-    from urllib.parse import urlsplit
-
     parts = urlsplit(url)
     if parts.scheme not in ("http", "https") or not parts.hostname:
         raise ServeError(f"--public-url {url!r}: expected http(s)://HOST[:PORT]/")
 
 
 def new_token() -> str:
+    # deferred: secrets — off sass --help, sass serve, sass --version (sass_tui/startup.py)
     import secrets
 
     return secrets.token_urlsafe(TOKEN_BYTES)
@@ -205,6 +212,7 @@ def new_token() -> str:
 
 def read_token(name: str) -> str:
     """The token in file `name` (its first line, spaces around it dropped)."""
+    # deferred: model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.model.paths import regular_file
 
     path = regular_file(name)
@@ -227,15 +235,17 @@ def served_workdir(name: str | None) -> Path:
     """--workdir (made if missing), or a new directory under the user's data
     directory; its real path, so that no link in it moves later."""
     if name is None:
+        # deferred: tempfile — off sass --help, sass serve (sass_tui/startup.py)
         import tempfile
-        import time
 
+        # deferred: model.paths — off sass serve (sass_tui/startup.py)
         from sass_tui.model.paths import data_dir
 
         base = data_dir() / "serve"
         base.mkdir(parents=True, exist_ok=True)
         stamp = time.strftime("%Y%m%d-%H%M%S-")
         return Path(tempfile.mkdtemp(prefix=stamp, dir=base)).resolve()
+    # deferred: model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.model.paths import user_path
 
     path = user_path(name)
@@ -253,6 +263,7 @@ def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | Non
     server that cannot be reached is better said once than in every session.
     Each session's connections to a PostgreSQL database are then read-only
     by the server's rule ($SASS_READ_ONLY, db/postgres.py)."""
+    # deferred: db.addresses, db.database, db.schema, model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import configured_target
     from sass_tui.model.paths import user_path
@@ -261,13 +272,14 @@ def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | Non
     target = configured_target(db)
     if is_url(target):
         if read_only:
+            # deferred: db.postgres — psycopg only on the PostgreSQL path (sass_tui/startup.py)
             from sass_tui.db.postgres import connect_postgres
 
             connect_postgres(str(target), read_only=True).close()
         return str(target)
     if not read_only:
         return user_path(db).resolve() if db else None
-    from sass_tui.cli.options import open_db
+    # deferred: db.schema — off sass --help, sass serve, sass --version (sass_tui/startup.py)
     from sass_tui.db.schema import default_db_path
 
     open_db(args).close()

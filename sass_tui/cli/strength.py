@@ -17,14 +17,35 @@ printed (5th percentile men, momentary hold).
 from __future__ import annotations
 
 import argparse
+import json
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
-from sass_tui.model.published_grip import GRIP_DATA_SET, GRIP_MOTIONS
+from sass_tui.model.names import JOINT_LIMITS
+from sass_tui.model.published_grip import (
+    CITATION as GRIP_CITATION,
+)
+from sass_tui.model.published_grip import (
+    GRIP_DATA_SET,
+    GRIP_LABELS,
+    GRIP_MOTIONS,
+    grip_motion,
+    grip_strength,
+)
 from sass_tui.model.published_strength import (
+    AGE_GROUPS,
+    CITATION,
     DATA_SET,
     EXAMPLE_DATA_SET,
     LOWER_LIMB_AXES,
     LOWER_LIMB_MOTIONS,
+    MOTION_AXIS,
+    PublishedStrengthError,
+    Subject,
+    lower_limb_curve,
+    lower_limb_motion,
+    lower_limb_strength,
+    ordinal,
+    text_plot,
 )
 from sass_tui.model.vocabulary import (
     GENDERS,
@@ -132,8 +153,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from sass_tui.model.published_grip import grip_motion
-    from sass_tui.model.published_strength import lower_limb_motion
+    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import StrengthError
 
     motion = lower_limb_motion(args.motion)
@@ -181,8 +201,8 @@ def run(args: argparse.Namespace) -> int:
 
 def _take_person(args: argparse.Namespace) -> None:
     """A database person's own gender, age, mass and stature into `args`."""
+    # deferred: db.individual — off sass --help, sass strength, sass --version (sass_tui/startup.py)
     from sass_tui.db.individual import find_person, person_record
-    from sass_tui.model.published_strength import PublishedStrengthError
 
     given = [
         option
@@ -217,8 +237,8 @@ def _take_person(args: argparse.Namespace) -> None:
 
 def _figure(args: argparse.Namespace):  # -> Figure
     """The figure whose mass, stature and joint limits the answer uses."""
+    # deferred: model.figure, model.units — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.figure import Figure
-    from sass_tui.model.names import JOINT_LIMITS
     from sass_tui.model.units import parse_quantity
 
     figure = Figure.default(args.gender)
@@ -231,6 +251,7 @@ def _figure(args: argparse.Namespace):  # -> Figure
 
 
 def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
+    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import StrengthError
 
     out = []
@@ -244,17 +265,7 @@ def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
 
 def _published(args: argparse.Namespace, motion: str | None) -> int:
     """A hip, knee or ankle motion from Anderson et al. 2007."""
-    from sass_tui.model.published_strength import (
-        AGE_GROUPS,
-        CITATION,
-        LOWER_LIMB_MOTIONS,
-        MOTION_AXIS,
-        PublishedStrengthError,
-        Subject,
-        lower_limb_curve,
-        lower_limb_strength,
-        text_plot,
-    )
+    # deferred: model.strength, model.units — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import check_angle, joint_limit_range
     from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
 
@@ -306,8 +317,6 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
         curve = lower_limb_curve(motion, subject, lower, upper, speed, args.percentile)
         shown = [(x, float(convert(y, "N_m", unit))) for x, y in curve]
     if args.format == "json":
-        import json
-
         print(
             json.dumps(
                 {
@@ -349,6 +358,7 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
 
 def _example(args: argparse.Namespace) -> int:
     """An arm motion from the example strength file (or --file)."""
+    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import (
         EXTRAPOLATION_MARGIN_DEG,
         StrengthError,
@@ -387,8 +397,6 @@ def _example(args: argparse.Namespace) -> int:
             "have no curve of one angle"
         )
     if args.format == "json":
-        import json
-
         print(
             json.dumps(
                 {
@@ -426,13 +434,12 @@ def _example(args: argparse.Namespace) -> int:
 
 def _grip(args: argparse.Namespace, motion: str | None) -> int:
     """A hand or thumb-finger grip force from FAA HFDS 2003 exhibit 14.5.2.1."""
-    from sass_tui.model.published_grip import CITATION, GRIP_LABELS, grip_strength
-    from sass_tui.model.published_strength import PublishedStrengthError, ordinal
+    # deferred: model.units — only a grip's answer converts here; the lookups convert in model.strength
     from sass_tui.model.units import DISPLAY, convert, unit_name
 
     if motion is None:
         raise PublishedStrengthError(
-            f"{args.motion.strip()!r}: {CITATION} as shipped covers {', '.join(GRIP_MOTIONS)} "
+            f"{args.motion.strip()!r}: {GRIP_CITATION} as shipped covers {', '.join(GRIP_MOTIONS)} "
             "(its arm-strength table was not reachable as printed)"
         )
     # What the exhibit does not depend on is refused, not silently ignored.
@@ -457,7 +464,7 @@ def _grip(args: argparse.Namespace, motion: str | None) -> int:
     ]
     if given:
         raise PublishedStrengthError(
-            f"{', '.join(given)}: {CITATION} prints one momentary-hold force per hand for "
+            f"{', '.join(given)}: {GRIP_CITATION} prints one momentary-hold force per hand for "
             f"{motion}, with no joint angle, body size, age, person, curve, modifier or "
             "dominant hand"
         )
@@ -472,8 +479,6 @@ def _grip(args: argparse.Namespace, motion: str | None) -> int:
         else (f"{GRIP_LABELS[motion]}, either hand")
     )
     if args.format == "json":
-        import json
-
         print(
             json.dumps(
                 {
@@ -494,7 +499,7 @@ def _grip(args: argparse.Namespace, motion: str | None) -> int:
         )
         return 0
     print(
-        f"{what}: {value:.2f} {DISPLAY[unit]} ({CITATION}, {answer.condition}; "
+        f"{what}: {value:.2f} {DISPLAY[unit]} ({GRIP_CITATION}, {answer.condition}; "
         f"{answer.gender}, {ordinal(answer.percentile)} percentile); as printed {printed}, "
         f"column {answer.column}"
     )

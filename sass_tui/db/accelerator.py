@@ -37,6 +37,7 @@ SQLite is fast, and neither numpy nor duckdb need be imported).
 
 from __future__ import annotations
 
+import json
 import os
 import sqlite3
 import threading
@@ -45,6 +46,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from sass_tui.db.query_tree import Comparison, columns, to_sql
+from sass_tui.db.schema import DatabaseError
 
 if TYPE_CHECKING:
     from collections.abc import Callable, Iterable
@@ -80,6 +82,7 @@ class Unsupported(Exception):
 def data_version(conn: sqlite3.Connection) -> tuple[int, ...]:
     """The key of the copy: header change counter, page count and schema cookie,
     with the file's size, mtime and inode.  Call inside a read transaction."""
+    # deferred: struct — off sass query --count (sass_tui/startup.py)
     import struct
 
     path = database_path(conn)
@@ -132,6 +135,7 @@ def _one_row_per_person(conn: sqlite3.Connection, table: str) -> bool:
 
 
 def _fetch_ints(conn: sqlite3.Connection, sql: str) -> Any:
+    # deferred: numpy — off sass query --count (sass_tui/startup.py)
     import numpy as np
 
     cursor = conn.execute(sql)
@@ -142,6 +146,7 @@ def _fetch_ints(conn: sqlite3.Connection, sql: str) -> Any:
 
 
 def _fetch_pairs(cursor: sqlite3.Cursor, value_type: Any) -> Any:
+    # deferred: numpy — off sass query --count (sass_tui/startup.py)
     import numpy as np
 
     dtype = np.dtype([("id", np.int64), ("v", value_type)])
@@ -154,6 +159,7 @@ def _fetch_pairs(cursor: sqlite3.Cursor, value_type: Any) -> Any:
 def _read_column(conn: sqlite3.Connection, table: str, column: str, ids: Any) -> tuple[Any, Any]:
     """One column aligned on the sorted person ids: (float64 values with NaN for
     NULL, None) or (int32 word numbers with -1 for NULL, the words)."""
+    # deferred: numpy — off sass query --count (sass_tui/startup.py)
     import numpy as np
 
     if not _one_row_per_person(conn, table):
@@ -208,6 +214,7 @@ def _read_column(conn: sqlite3.Connection, table: str, column: str, ids: Any) ->
 
 
 def _cache_folder(path: Path) -> Path:
+    # deferred: hashlib — off sass query --count (sass_tui/startup.py)
     import hashlib
 
     base = CACHE_DIR
@@ -235,9 +242,10 @@ def _build(
 ) -> None:
     """Read `want` from SQLite inside the caller's read transaction and write
     the copy (a new file renamed over the old: readers never see half a copy)."""
-    import json
+    # deferred: uuid — off sass query --count, sass db init (sass_tui/startup.py)
     import uuid
 
+    # deferred: duckdb — off sass query --count, sass db init (sass_tui/startup.py)
     import duckdb
 
     key = data_version(conn)
@@ -310,8 +318,7 @@ _PENDING: dict[Path, set[tuple[str, str]]] = {}
 def _open_copy(path: Path) -> _Copy | None:
     """The copy of `path` on disk, opened (or the one open already), None if
     absent or unreadable.  Call with _LOCK held."""
-    import json
-
+    # deferred: duckdb — off sass query --count, sass db init (sass_tui/startup.py)
     import duckdb
 
     file = _cache_folder(path) / COPY_FILE
@@ -447,6 +454,7 @@ def _matches(conn: sqlite3.Connection, compiled: CompiledQuery, ids: bool) -> An
     SQLite must answer).  Call inside a read transaction that has written
     nothing to the main database."""
     try:
+        # deferred: duckdb — off sass query --count, sass db init (sass_tui/startup.py)
         import duckdb  # noqa: F401  (the optional extra: without it SQLite answers)
     except ImportError:
         raise Unsupported("DuckDB is not installed (pip install 'sass-tui[fast]')") from None
@@ -557,11 +565,10 @@ def refresh(
     the columns it held, DEFAULT_COLUMNS and `wanted`.  Whatever the size of
     the database (counts use the copy from MIN_PEOPLE people).
     DatabaseError when no copy can follow this file."""
-    from sass_tui.db.schema import DatabaseError
-
     if conn.in_transaction:
         raise DatabaseError("the column copy is made outside a transaction")
     try:
+        # deferred: duckdb — off sass query --count, sass db init (sass_tui/startup.py)
         import duckdb  # noqa: F401
     except ImportError:
         raise DatabaseError("the column copy needs DuckDB: pip install 'sass-tui[fast]'") from None
@@ -597,6 +604,7 @@ def refresh(
 def forget(path: Path) -> None:
     """Drop the copy of the database at `path`, in memory and on disk (after
     `db init`: no later history can use it; errors ignored)."""
+    # deferred: shutil — off sass query --count (sass_tui/startup.py)
     import shutil
 
     with _LOCK:

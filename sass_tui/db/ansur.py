@@ -38,6 +38,7 @@ from sass_tui.db.schema import (
 )
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES, PUBLISHED_TO_CANONICAL
+from sass_tui.model.paths import PathError, regular_file
 from sass_tui.model.text import control_character, printable
 
 ANSUR_HANDEDNESS = {
@@ -326,8 +327,6 @@ def iter_ansur(
     a time: memory stays bounded whatever the file's size.  Every row is
     checked; the first bad one raises AnsurImportError naming file:line (the
     caller's transaction then stores nothing).  `progress(bytes_read)`."""
-    from sass_tui.model.paths import PathError, regular_file
-
     path = Path(path)
     try:
         raw, stream = _open_bytes(regular_file(path))  # a FIFO or a device would never end

@@ -12,13 +12,16 @@ here.  Engine errors leave as DatabaseErrors (`engine_error`).
 from __future__ import annotations
 
 import os
+import sys
 import threading
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from sass_tui.db.schema import DatabaseError
+from sass_tui.db.addresses import is_url
+from sass_tui.db.default import fill_default, open_database
+from sass_tui.db.schema import DatabaseError, transaction
 
 if TYPE_CHECKING:
     from sass_tui.db.flatfile import FlatFiles
@@ -33,8 +36,6 @@ if TYPE_CHECKING:
 def configured_target(given: str | Path | None) -> str | Path | None:
     """What `--db` names, else $SASS_DB, else None (the default file).  A
     PostgreSQL address stays text (a Path would fold its `//`)."""
-    from sass_tui.db.addresses import is_url
-
     if given is not None and str(given):
         return given
     env = os.environ.get("SASS_DB")
@@ -46,8 +47,6 @@ def configured_target(given: str | Path | None) -> str | Path | None:
 def engine_error(exc: BaseException) -> DatabaseError | None:
     """An engine's own error (sqlite3's, psycopg's, duckdb's) as a message a
     user can act on; None for anything else (a bug, shown as one)."""
-    import sys
-
     if isinstance(exc, DatabaseError):
         return exc
     sqlite3 = sys.modules.get("sqlite3")
@@ -97,21 +96,19 @@ class Database:
         progress: Progress | None = None,
     ) -> Database:
         """The database `target` names (see configured_target)."""
-        from sass_tui.db.addresses import is_url
+        # deferred: db.postgres — off sass db init (sass_tui/startup.py)
         from sass_tui.db.postgres import connect_postgres
 
         target = configured_target(target)
         if is_url(target):
             return cls(connect_postgres(str(target), create=create), target)
-        from sass_tui.db.default import open_database
-
         with engine_errors():
             return cls(open_database(target, create=create, progress=progress), target)
 
     @property
     def name(self) -> str:
         """The database as shown to a user (a PostgreSQL address without its password)."""
-        from sass_tui.db.addresses import is_url
+        # deferred: db.postgres — off sass db init (sass_tui/startup.py)
         from sass_tui.db.postgres import shown
 
         if is_url(self.target):
@@ -136,6 +133,7 @@ class Database:
     # --- reading -------------------------------------------------------------
 
     def query(self, query: str | CompiledQuery) -> Query:
+        # deferred: db.query — off sass person, sass db init (sass_tui/startup.py)
         from sass_tui.db.query import Query, compile_query
 
         compiled = compile_query(query) if isinstance(query, str) else query
@@ -157,6 +155,7 @@ class Database:
     def person_records(self, keys: Sequence[str]) -> list[dict[str, object]]:
         """Everything stored about the people `keys` name (an id or a name), in
         order (db/individual.py's person_record)."""
+        # deferred: db.individual — off sass query, sass query --count, sass population … (sass_tui/startup.py)
         from sass_tui.db.individual import find_person, person_record
 
         with self.connection() as conn:
@@ -168,6 +167,7 @@ class Database:
 
     def predictor(self) -> Predictor:
         """The database's prediction model (db/predict.py)."""
+        # deferred: db.predict — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         from sass_tui.db.predict import open_predictor
 
         with self.connection() as conn:
@@ -185,6 +185,7 @@ class Database:
     ) -> tuple[Family, Values]:
         """A manikin family (db/fit.py) and the people's values of its first two
         measures (the scatter it is drawn over)."""
+        # deferred: db.fit, db.values — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         from sass_tui.db.fit import load_family
         from sass_tui.db.values import load_values
 
@@ -215,10 +216,12 @@ class Database:
         cancel: Cancel | None = None,
     ) -> dict[str, int]:
         """Import ANSUR II format files in one transaction; people per gender."""
+        # deferred: db.ansur — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         from sass_tui.db.ansur import import_ansur
 
         with self.connection() as conn:
             if self.dialect == "postgresql":
+                # deferred: db.postgres — off sass db init (sass_tui/startup.py)
                 from sass_tui.db.postgres import import_staged
 
                 return import_staged(
@@ -233,10 +236,12 @@ class Database:
         self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
     ) -> int:
         """Import legacy flat files in one transaction; how many people."""
+        # deferred: db.flatfile — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         from sass_tui.db.flatfile import import_flat_files
 
         with self.connection() as conn:
             if self.dialect == "postgresql":
+                # deferred: db.postgres — off sass db init (sass_tui/startup.py)
                 from sass_tui.db.postgres import import_staged
 
                 return import_staged(
@@ -249,9 +254,8 @@ def init_postgres(url: str, progress: Progress | None = None, *, force: bool) ->
     """`sass db init` on PostgreSQL: the schema made (or migrated) and the
     default people stored in one transaction, replacing everyone (with
     `force`; without it a database holding people is refused)."""
-    from sass_tui.db.default import fill_default
+    # deferred: db.postgres — off sass db init (sass_tui/startup.py)
     from sass_tui.db.postgres import connect_postgres, import_staged, people_count, shown
-    from sass_tui.db.schema import transaction
 
     conn = connect_postgres(url, create=True)
     try:

@@ -27,6 +27,7 @@ from sass_tui.db.schema import (
     connect,
     default_db_path,
     recreate_schema,
+    store_people,
     write_refused,
 )
 from sass_tui.db.scope import DEMONSTRATION_SOURCE
@@ -104,6 +105,7 @@ def holds_people(conn: sqlite3.Connection) -> bool:
 
 
 def shipped_ansur_files() -> list[Path]:
+    # deferred: model.datasets — off sass query, sass query --count, sass person … (sass_tui/startup.py)
     from sass_tui.model import datasets
 
     return [datasets.directory() / "ansur2" / name for name in ANSUR_FILES]
@@ -169,9 +171,9 @@ def _build(
 
 def fill_default(conn: sqlite3.Connection, progress: Progress | None = None) -> dict[str, int]:
     """Store the shipped people (inside the caller's transaction)."""
+    # deferred: db.ansur, db.flatfile, model.datasets — off sass query, sass query --count, sass person … (sass_tui/startup.py)
     from sass_tui.db.ansur import DEFAULT_LABEL, store_ansur
     from sass_tui.db.flatfile import FlatFiles, read_flat_files
-    from sass_tui.db.schema import store_people
     from sass_tui.model import datasets
 
     synthetic = read_flat_files(FlatFiles.in_directory(datasets.directory() / "db"))

@@ -12,7 +12,9 @@ from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
+from sass_tui.db.postgres import WRITE_LOCK
 from sass_tui.db.query_tree import Dialect, placeholder
+from sass_tui.db.schema import check_writable, transaction
 
 
 def dialect_of(conn: Any) -> Dialect:
@@ -60,14 +62,10 @@ def writing(conn: Any) -> Iterator[Any]:
     SQLite: the file checked first (db/schema.py's check_writable), BEGIN
     IMMEDIATE.  PostgreSQL: under the writers' advisory lock (db/postgres.py)."""
     if dialect_of(conn) == "sqlite":
-        from sass_tui.db.schema import check_writable, transaction
-
         check_writable(conn)
         with transaction(conn):
             yield conn
         return
-    from sass_tui.db.postgres import WRITE_LOCK
-
     # Read-only (sass serve --read-only) is left to the server: it refuses the
     # first change (db/postgres.py), and the transaction rolls back.
     with conn.transaction():

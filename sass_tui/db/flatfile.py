@@ -49,6 +49,7 @@ from sass_tui.db.schema import (
 )
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
+from sass_tui.model.paths import PathError, regular_file
 from sass_tui.model.text import control_character
 from sass_tui.model.units import UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, SIDES, STRENGTH_TYPES
@@ -120,8 +121,6 @@ _LINES: ContextVar[_LineCount | None] = ContextVar("flatfile_lines", default=Non
 
 class _Reader:
     def __init__(self, path: Path):
-        from sass_tui.model.paths import PathError, regular_file
-
         self.path = path
         try:
             regular_file(path)  # a FIFO or a device would never end

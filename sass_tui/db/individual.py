@@ -15,16 +15,22 @@ from sass_tui.db.dialect import dialect_of
 from sass_tui.db.query_tree import placeholder
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
+    ELBOW_MOTIONS,
     GIRTH_NAMES,
     JOINT_LIMIT_NAMES,
     PERSON_ATTRIBUTES,
     QUERY_TABLES,
+    SHOULDER_MOTIONS,
     STRENGTH_Q_COLUMNS,
+    WRIST_MOTIONS,
     DatabaseError,
     strength_summary,
 )
+from sass_tui.db.scope import DEMONSTRATION_SOURCE
 from sass_tui.model.landmarks import LANDMARK_MEASURES
-from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
+from sass_tui.model.measures import MEASURES
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS
+from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS
 
 if TYPE_CHECKING:
     from sass_tui.model.figure import Figure
@@ -214,8 +220,6 @@ def person_record(conn: sqlite3.Connection, id_num: int) -> dict[str, object]:
     """Everything stored about one person, by query-language names, canonical
     units (cm, kg, deg, N-m): `values` (group rows and survey attributes),
     `measures` (ANSUR II measurements) and `unmeasured` (names with no value)."""
-    from sass_tui.model.measures import MEASURES
-
     person = fetch_individual(conn, id_num)
     m = placeholder(dialect_of(conn))
     values: dict[str, object] = {}
@@ -287,8 +291,6 @@ def strength_measurements(person: Individual) -> list[StrengthMeasurement]:
     motions of schema.SHOULDER_MOTIONS, ELBOW_MOTIONS, WRIST_MOTIONS).  Angles
     an experiment does not record (the wrist in a shoulder experiment, the
     shoulder in a wrist one) are taken as neutral, 0 deg."""
-    from sass_tui.db.schema import ELBOW_MOTIONS, SHOULDER_MOTIONS, WRIST_MOTIONS
-
     experiments = {e["exp_num"]: e for e in person.experiments}
 
     def angle(value: object) -> float:
@@ -344,10 +346,6 @@ def person_figure(person: Individual, population: Figure) -> Figure:
     """The person's figure (report §12.4, Disp. Indv.): their own values,
     percentiles against `population`, unmeasured cells from the population
     (the figure says which); `population` is left as it was."""
-    from sass_tui.db.scope import DEMONSTRATION_SOURCE
-    from sass_tui.model.names import GROUPS
-    from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS
-
     # The figure's name is its title (and its file's name): a demonstration
     # person is never taken for a real one (db/scope.py).
     synthetic = person.source.lower() == DEMONSTRATION_SOURCE

@@ -35,7 +35,7 @@ from sass_tui.db.database import engine_errors
 from sass_tui.db.dialect import dialect_of, mark_of
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
-from sass_tui.db.query import LIST_FIELDS, compile_query
+from sass_tui.db.query import LIST_FIELDS, compile_query, demonstration_hint
 from sass_tui.db.schema import DatabaseError, connect, transaction
 from sass_tui.model.errors import SassError
 
@@ -155,9 +155,11 @@ class QueryLists:
         it names (`postgresql://...`).  `read_only`: any change to the database
         is refused (SQLite's read-only mode; PostgreSQL's read-only session,
         also when $SASS_READ_ONLY says so: db/postgres.py)."""
+        # deferred: db.addresses — only open() needs it; importing db.lists does not load it
         from sass_tui.db.addresses import is_url
 
         if is_url(target):
+            # deferred: db.postgres — only open() needs it; importing db.lists does not load it
             from sass_tui.db.postgres import connect_postgres
 
             return cls(
@@ -212,7 +214,8 @@ class QueryLists:
         about RUN_CHUNK people: `progress(people searched, people in the
         database)` after each, and `cancel` stops it with Cancelled (between
         ranges or inside one), the lists as they were."""
-        from sass_tui.db import accelerator  # numpy only on a large database
+        # deferred: db.accelerator — numpy only on a large database
+        from sass_tui.db import accelerator
 
         compiled = compile_query(text)
         where, params = compiled.sql(self.dialect)
@@ -340,6 +343,7 @@ class QueryLists:
     ) -> int:
         """Load flat files (one transaction: a failure or a cancel stores nothing)."""
         if self.dialect == "postgresql":
+            # deferred: db.postgres — only import_files() needs it; importing db.lists does not load it
             from sass_tui.db.postgres import import_staged
 
             return import_staged(
@@ -357,12 +361,14 @@ class QueryLists:
     ) -> int:
         """Load an ANSUR II format file under the source `label` (one
         transaction: a failure or a cancel stores nothing); returns how many."""
+        # deferred: db.ansur — only import_ansur() needs it; importing db.lists does not load it
         from sass_tui.db.ansur import import_ansur
 
         def load(conn: sqlite3.Connection) -> int:
             return sum(import_ansur(conn, [path], progress, label=label, cancel=cancel).values())
 
         if self.dialect == "postgresql":
+            # deferred: db.postgres — only import_ansur() needs it; importing db.lists does not load it
             from sass_tui.db.postgres import import_staged
 
             return import_staged(self._conn, load)
@@ -389,6 +395,7 @@ class QueryLists:
     @_serialised
     def fetch_person(self, id_num: int) -> Individual:
         """The person `id_num` (e.g. a row of the query list), read whole."""
+        # deferred: db.individual — only fetch_person() needs it; importing db.lists does not load it
         from sass_tui.db.individual import fetch_individual
 
         return fetch_individual(self._conn, id_num)
@@ -396,6 +403,7 @@ class QueryLists:
     @_serialised
     def fetch_selected(self, index: int) -> Individual:
         """Person `index` (0-based) of the selected list, read whole."""
+        # deferred: db.individual — only fetch_selected() needs it; importing db.lists does not load it
         from sass_tui.db.individual import fetch_individual
 
         id_num = self.selected_id(index)
@@ -414,6 +422,7 @@ class QueryLists:
     ) -> tuple[FitResult, tuple[LimitHistogram, ...]]:
         """The fit test of `limits` over `population` and its histograms
         (db/fit.py); with a `target`'s name, weighted to it too (db/targets.py)."""
+        # deferred: db.fit — only fit_test() needs it; importing db.lists does not load it
         from sass_tui.db.fit import fit_test, limit_histograms
 
         weights = self._target(target)
@@ -433,6 +442,7 @@ class QueryLists:
     ) -> SelectionPopulation:
         """The population file of these people (db/population.py); with a
         `target`'s name, their weighted percentiles (db/targets.py)."""
+        # deferred: db.population — only population_of() needs it; importing db.lists does not load it
         from sass_tui.db.population import population_of
 
         return population_of(
@@ -446,6 +456,7 @@ class QueryLists:
 
     # --- target populations and the real-people scope ----------------------
     def _target(self, name: str | None) -> TargetWeights | None:
+        # deferred: db.targets — only _target() needs it; importing db.lists does not load it
         from sass_tui.db.targets import load_target
 
         return None if not name else load_target(self._conn, name)
@@ -453,6 +464,7 @@ class QueryLists:
     @_serialised
     def target_names(self) -> list[str]:
         """The names of the target populations stored (`sass target`)."""
+        # deferred: db.targets — only target_names() needs it; importing db.lists does not load it
         from sass_tui.db.targets import list_targets
 
         return [t.name for t in list_targets(self._conn)]
@@ -460,6 +472,7 @@ class QueryLists:
     @_serialised
     def weighted_count(self, query: str, target: str) -> WeightedCount:
         """The query's people weighted to the target `target` (db/targets.py)."""
+        # deferred: db.targets — only weighted_count() needs it; importing db.lists does not load it
         from sass_tui.db.targets import load_target, weighted_count
 
         return weighted_count(self._conn, query, load_target(self._conn, target))
@@ -468,6 +481,4 @@ class QueryLists:
     def demonstration_hint(self, text: str) -> str | None:
         """For a query that found no real person: the demonstration people it
         would find (db/query.py's demonstration_hint)."""
-        from sass_tui.db.query import demonstration_hint
-
         return demonstration_hint(self._conn, text)

@@ -32,12 +32,15 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from sass_tui.db.dialect import ids_in
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.schema import CENTER_OF_MASS_NAMES, GIRTH_NAMES
 from sass_tui.db.values import load_values
+from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import AXES, CENTER_OF_MASS, GIRTH, GLOBAL, GLOBAL_ROWS, ROWS
-from sass_tui.model.popfile import PopulationData
+from sass_tui.model.popfile import PopulationData, read_population_file
+from sass_tui.model.text import printable
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -204,9 +207,6 @@ def _stature_scale(statures: np.ndarray, gender: str) -> tuple[np.ndarray, str]:
 
 
 def _report(group: str) -> PopulationData:
-    from sass_tui.model import datasets
-    from sass_tui.model.popfile import read_population_file
-
     name = "global.dat" if group == GLOBAL else datasets.FILES[group]
     return read_population_file(datasets.path(name), group)
 
@@ -272,6 +272,7 @@ def _percentiles(
         if weights is None:
             out[k] = np.percentile(column[present], PERCENTILES)
         else:
+            # deferred: model.targets — off sass population (sass_tui/startup.py)
             from sass_tui.model.targets import weighted_percentile
 
             out[k] = weighted_percentile(column, weights, PERCENTILES)
@@ -295,8 +296,6 @@ def parse_id_list(text: str, where: str) -> list[int]:
         # SQLite's integers are 64-bit: a longer number names nobody.
         digits = field.lstrip("0") or "0"
         if not (field.isascii() and field.isdigit() and len(digits) < 20 and int(digits) < 2**63):
-            from sass_tui.model.text import printable
-
             raise IdListError(
                 f"{where}:{number}: {printable(field)!r} is not a person id "
                 "(expected a whole number, one a line, or `sass query --format csv` output)"
@@ -309,8 +308,6 @@ def parse_id_list(text: str, where: str) -> list[int]:
 
 def missing_ids(conn: sqlite3.Connection, ids: Sequence[int]) -> list[int]:
     """The ids of `ids` no person in the database has, in their order."""
-    from sass_tui.db.dialect import ids_in
-
     condition, listed = ids_in(conn, "id_num", ids)
     stored = {
         int(i) for (i,) in conn.execute(f"SELECT id_num FROM person WHERE {condition}", (listed,))

@@ -41,6 +41,7 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import ExitStack, contextmanager
 from pathlib import Path
 from typing import Any, TypeVar
+from urllib.parse import urlsplit, urlunsplit
 
 from sass_tui.db.query_tree import Dialect
 from sass_tui.db.schema import (
@@ -51,6 +52,7 @@ from sass_tui.db.schema import (
     connect,
     schema_statements,
 )
+from sass_tui.model.served import served_read_only
 
 # pg_advisory_xact_lock key of sass's writers: "SASS" in ASCII.
 WRITE_LOCK = 0x53415353
@@ -65,8 +67,6 @@ _SQLITE_ONLY = ("measure_packed",)
 
 def shown(url: str) -> str:
     """The address without its password, for messages."""
-    from urllib.parse import urlsplit, urlunsplit
-
     parts = urlsplit(url)
     if parts.password is None:
         return url
@@ -78,6 +78,7 @@ def shown(url: str) -> str:
 
 def _driver() -> Any:
     try:
+        # deferred: psycopg — off sass query, sass query --count, sass person … (sass_tui/startup.py)
         import psycopg
     except ImportError:
         raise DatabaseError(
@@ -103,8 +104,6 @@ class PostgresConnection:
     def __init__(
         self, url: str, *, read_only: bool | None = None, temp_tables: Sequence[str] = ()
     ) -> None:
-        from sass_tui.model.served import served_read_only
-
         self.url = url
         self.read_only = served_read_only() if read_only is None else read_only
         self._temp_tables = tuple(temp_tables)
@@ -404,6 +403,7 @@ def import_staged(
     """`stage` imports into a private SQLite file (its parsing and checks, its
     errors); then its people are copied into PostgreSQL in one transaction.
     `replace_all`: everyone stored before goes (`sass db init`)."""
+    # deferred: tempfile — off sass query, sass query --count, sass person … (sass_tui/startup.py)
     import tempfile
 
     conn.refuse_writes("an import")

@@ -35,6 +35,7 @@ from pathlib import Path
 
 from sass_tui.db.dialect import dialect_of, total
 from sass_tui.db.values import load_values
+from sass_tui.model.paths import cache_dir
 from sass_tui.model.prediction import MODEL_VERSION, Predictor, predicted_fields
 
 CACHE_SUFFIX = ".predict.npz"
@@ -66,8 +67,6 @@ def cache_path(conn: sqlite3.Connection) -> Path | None:
 def server_cache_path(identity: str) -> Path:
     """The cache file of the PostgreSQL database `identity` names (db/postgres.py's
     PostgresConnection.identity: server, port, database and user, no password)."""
-    from sass_tui.model.paths import cache_dir
-
     digest = hashlib.sha256(identity.encode()).hexdigest()[:32]
     return cache_dir() / "predict" / f"{digest}{CACHE_SUFFIX}"
 

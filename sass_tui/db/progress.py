@@ -17,6 +17,7 @@ cancel from a thread and asks the server to cancel the statement.
 from __future__ import annotations
 
 import sqlite3
+import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any, Protocol
@@ -93,8 +94,6 @@ def interruptible(
 def _postgres_interruptible(conn: Any, cancel: Cancel, what: str) -> Iterator[None]:
     """A watcher thread asks the PostgreSQL server to cancel the running
     statement once `cancel` is set (db/postgres.py's cancel_statement)."""
-    import threading
-
     done = threading.Event()
 
     def watch() -> None:

@@ -526,7 +526,8 @@ class Query:
 
     def count(self) -> int:
         if self.dialect == "sqlite":
-            from sass_tui.db import accelerator  # its imports cost start-up time; counts only
+            # deferred: db.accelerator — its imports cost start-up time; counts only
+            from sass_tui.db import accelerator
 
             fast = accelerator.count(self.conn, self.compiled)  # type: ignore[arg-type]
             if fast is not None:  # None below ~200k people, or without DuckDB
@@ -561,6 +562,7 @@ class Query:
 
     def ids(self) -> list[int]:
         if self.dialect == "sqlite":
+            # deferred: db.accelerator — off sass query, sass population, sass predict … (sass_tui/startup.py)
             from sass_tui.db import accelerator
 
             fast = accelerator.ids(self.conn, self.compiled)  # type: ignore[arg-type]

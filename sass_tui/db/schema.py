@@ -28,6 +28,9 @@ from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from sass_tui.db.addresses import is_url, sqlite_only
+from sass_tui.model.paths import data_dir
+
 if TYPE_CHECKING:
     import numpy as np
 
@@ -81,6 +84,7 @@ _MASS_FRACTION = dict(MASS_FRACTIONS)
 def girth_mass_fractions() -> np.ndarray:
     """Appendix K fraction of each girth row (0 for eyes, NaN for eye location).
     A function so that opening a database does not import numpy."""
+    # deferred: numpy — off sass query, sass query --count (sass_tui/startup.py)
     import numpy as np
 
     return np.array(
@@ -288,14 +292,10 @@ def default_db_path() -> Path:
     data_dir: $XDG_DATA_HOME/sass/sass.db, ~/.local/share/sass/sass.db on Linux).
     DatabaseError when $SASS_DB is a PostgreSQL address (callers that take
     one look at it first: db/database.py's configured_target)."""
-    from sass_tui.db.addresses import is_url, sqlite_only
-
     if is_url(os.environ.get("SASS_DB")):
         raise DatabaseError(sqlite_only("this command") + "; $SASS_DB names a PostgreSQL database")
     if os.environ.get("SASS_DB"):
         return Path(os.environ["SASS_DB"])
-    from sass_tui.model.paths import data_dir
-
     return data_dir() / "sass.db"
 
 
@@ -699,6 +699,7 @@ class PeopleBatch:
 
 def _nullable(array: np.ndarray) -> list[Any]:
     """Array -> nested lists with None for NaN (vectorised: object array)."""
+    # deferred: numpy — off sass query, sass query --count (sass_tui/startup.py)
     import numpy as np
 
     out = array.astype(object)
@@ -709,6 +710,7 @@ def _nullable(array: np.ndarray) -> list[Any]:
 
 def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iterable[SqlRow]:
     """(id, row name, v...) for every row that has at least one value."""
+    # deferred: numpy — off sass query, sass query --count (sass_tui/startup.py)
     import numpy as np
 
     present = ~np.all(np.isnan(values), axis=2)
@@ -745,6 +747,7 @@ def store_people(conn: sqlite3.Connection, batch: PeopleBatch, *, replace: bool 
 
 
 def _store_people(conn: sqlite3.Connection, ids: list[int], batch: PeopleBatch) -> None:
+    # deferred: numpy — off sass query, sass query --count (sass_tui/startup.py)
     import numpy as np
 
     no_value = [None] * len(ids)

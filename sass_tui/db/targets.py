@@ -25,9 +25,10 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.db.dialect import mark_of, writing
-from sass_tui.db.query import compile_query
+from sass_tui.db.query import compile_query, run_query
 from sass_tui.model.target_sample import Sample
 from sass_tui.model.targets import TargetError, Weighting, calibrate
+from sass_tui.model.text import printable
 from sass_tui.model.vocabulary import GENDERS
 
 DEFAULT_POPULATION = "source = ansur2"  # the real people (= db.fit.DEFAULT_POPULATION)
@@ -104,8 +105,6 @@ def base_query(population: str, gender: str) -> str:
 
 def check_name(name: str) -> str:
     """A target's name: 1-64 printable characters, no space at either end."""
-    from sass_tui.model.text import printable
-
     if not name or name != name.strip() or len(name) > MAX_NAME or printable(name) != name:
         raise TargetError(
             f"target name {printable(name)!r}: expected 1 to {MAX_NAME} printable characters "
@@ -124,6 +123,7 @@ def make_target(
     population: str = DEFAULT_POPULATION,
 ) -> tuple[Target, TargetWeights, Weighting]:
     """Compute a target (nothing stored: `store_target` stores it)."""
+    # deferred: db.values — off sass target (sass_tui/startup.py)
     from sass_tui.db.values import load_values
 
     check_name(name)
@@ -239,8 +239,6 @@ def _target(row: Sequence[Any]) -> Target:
 
 
 def _unknown(conn: sqlite3.Connection, name: str) -> UnknownTargetError:
-    from sass_tui.model.text import printable
-
     names = [t.name for t in list_targets(conn)]
     known = f"; the targets are {', '.join(names)}" if names else "; none is stored yet"
     return UnknownTargetError(
@@ -280,8 +278,6 @@ class WeightedCount:
 
 def weighted_count(conn: sqlite3.Connection, query: str, weights: TargetWeights) -> WeightedCount:
     """How many people `query` selects, and the share of the target's weight they hold."""
-    from sass_tui.db.query import run_query
-
     result = run_query(conn, query)
     ids = np.array(sorted(result.ids()), dtype=np.int64)
     mine = weights.of(ids)

@@ -32,6 +32,7 @@ from sass_tui.model.names import (
     center_of_mass_variable,
     joint_limit_variable,
 )
+from sass_tui.model.paths import regular_file
 
 if TYPE_CHECKING:
     from lark import Lark, Token, Tree
@@ -70,6 +71,7 @@ def person_joint_lengths(figure: Figure) -> dict[str, float]:
     figure and for a person without those measurements."""
     if not figure.landmarks or math.isnan(figure.stature):
         return {}
+    # deferred: model.landmarks — off sass fig (sass_tui/startup.py)
     from sass_tui.model.landmarks import joint_lengths, measured_heights
 
     lengths = joint_lengths(measured_heights(figure.landmarks, figure.stature / 100.0))
@@ -222,12 +224,14 @@ COMMENT: /\/\*(.|\n)*?\*\//
 
 @lru_cache(maxsize=1)
 def _parser() -> Lark:
+    # deferred: lark — off the first screen's next frame, sass fig, sass export hanim … (sass_tui/startup.py)
     from lark import Lark
 
     return Lark(_GRAMMAR, parser="lalr", propagate_positions=True)
 
 
 def parse_fig(text: str, name: str = "<text>") -> FigFile:
+    # deferred: lark.exceptions — off the first screen's next frame, sass fig, sass export hanim … (sass_tui/startup.py)
     from lark.exceptions import (
         UnexpectedCharacters,
         UnexpectedEOF,
@@ -273,8 +277,6 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
 
 
 def read_fig(path: str | Path) -> FigFile:
-    from sass_tui.model.paths import regular_file
-
     path = regular_file(path)  # a FIFO or a device would never end
     return parse_fig(path.read_text(encoding="utf-8"), str(path))
 

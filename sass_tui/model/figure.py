@@ -202,6 +202,7 @@ class Figure:
         (None = keep this figure's); `landmarks` the person's measurements
         that place the HAnim humanoid and the `.fig`'s joints (cm, by the
         survey's names: model/landmarks.py)."""
+        # deferred: numpy — off the first screen (sass_tui/startup.py)
         import numpy as np
 
         gender = _check_choice(gender, GENDERS, "gender")
@@ -356,6 +357,7 @@ class Figure:
         measures no joint limits, for one) but the population has one, the
         population's value at the group percentile.  A population figure has
         nothing to fill.  999 cells (no motion) stay NaN."""
+        # deferred: numpy — off the first screen (sass_tui/startup.py)
         import numpy as np
 
         state = self.groups[group]
@@ -457,6 +459,7 @@ def _copy(cells: Grid | np.ndarray | None) -> Grid | np.ndarray | None:
 
 
 def _array(grid: Grid) -> np.ndarray:
+    # deferred: numpy — off the first screen (sass_tui/startup.py)
     import numpy as np
 
     return np.array(grid, dtype=float)

@@ -20,13 +20,16 @@ import json
 import math
 import struct
 from dataclasses import dataclass
+from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
+from urllib.parse import quote
 
 import numpy as np
 
 from sass_tui.model.atomic import write_bytes_atomic
 from sass_tui.model.errors import SassError
+from sass_tui.model.hanim import LOA1, SEGMENT_OF, SKIN, build_humanoid
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS
 
 if TYPE_CHECKING:
@@ -88,8 +91,6 @@ class GltfDocument:
 
     def gltf(self, bin_name: str) -> bytes:
         """The JSON document of a .gltf whose buffer is the file `bin_name` beside it."""
-        from urllib.parse import quote
-
         document = dict(self.document)
         document["buffers"] = [{"byteLength": len(self.buffer), "uri": quote(bin_name)}]
         return _json(document)
@@ -157,8 +158,6 @@ def export_gltf(figure: Figure, path: str | Path, pose: str = "standing") -> lis
 
 def render_gltf(figure: Figure, pose: str = "standing") -> GltfDocument:
     """The figure's humanoid (hanim.build_humanoid) as a glTF asset in `pose`."""
-    from sass_tui.model.hanim import LOA1, SKIN, build_humanoid
-
     if pose not in POSES:
         raise GltfError(f"pose {pose!r}: expected one of {', '.join(POSES)}")
     humanoid = build_humanoid(figure)
@@ -356,8 +355,6 @@ def figure_extras(figure: Figure, humanoid: Humanoid, pose: str) -> dict[str, An
 
 
 def sass_version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
-
     try:
         return version("sass-tui")
     except PackageNotFoundError:
@@ -396,8 +393,6 @@ def body_mesh(humanoid: Humanoid) -> BodyMesh:
     centre, size), each a superellipsoid filling its box, stretched past the
     joints it spans so that neighbours overlap; every vertex weighted to its
     segment's joint, blended with the next joint near a joint (_boundaries)."""
-    from sass_tui.model.hanim import LOA1
-
     joints = [joint for joint, _, _ in LOA1]
     index = {joint: i for i, joint in enumerate(joints)}
     boundaries = _boundaries(humanoid)
@@ -521,8 +516,6 @@ def _boundaries(humanoid: Humanoid) -> list[Boundary]:
     """Where a vertex passes from one joint's influence to the next: along
     the limbs and the spine both neighbours blend; at the hips and shoulders,
     which sit off the trunk's axis, only the limb's top does."""
-    from sass_tui.model.hanim import SEGMENT_OF
-
     up, down, forward = np.array([0.0, 1, 0]), np.array([0.0, -1, 0]), np.array([0.0, 0, 1])
     chain: list[tuple[str, str, np.ndarray, bool]] = [
         ("sacroiliac", "vl5", up, True),

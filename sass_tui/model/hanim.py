@@ -24,10 +24,12 @@ from sass_tui.model.landmarks import HUMERAL_HEAD_RADIUS, half_breadths, measure
 from sass_tui.model.names import (
     CENTER_OF_MASS,
     GIRTH,
+    GLOBAL,
     JOINT_LIMITS,
     ROWS,
     row_index,
 )
+from sass_tui.model.percentile import value_at
 
 if TYPE_CHECKING:
     import xml.etree.ElementTree as ET
@@ -308,9 +310,6 @@ def humanoid_stature(figure: Figure) -> float:
     whose stature was not measured) the population's median."""
     if not math.isnan(figure.stature):
         return float(figure.stature)
-    from sass_tui.model.names import GLOBAL, row_index
-    from sass_tui.model.percentile import value_at
-
     if figure.global_stats is None or not figure.global_stats.has(figure.gender):
         raise HAnimError("cannot export a humanoid: no stature, and no population stature")
     stats = figure.global_stats.stats(figure.gender)[row_index(GLOBAL, "stature"), 0]
@@ -341,8 +340,6 @@ def landmark_heights(
 
 def _population_girth(figure: Figure) -> np.ndarray:
     """The population's segment dimensions (cm) at the figure's girth percentile."""
-    from sass_tui.model.percentile import value_at
-
     state = figure.groups[GIRTH]
     if state.source is None:
         raise HAnimError("cannot export a humanoid: no girth statistics loaded")
@@ -812,7 +809,8 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
     """The HAnimHumanoid node.  DEF names follow the HAnim convention the x3d
     package checks: the humanoid's name, '_', the node's name ('male_50_l_hip');
     humanoids with different names can share a scene."""
-    import xml.etree.ElementTree as ET  # the X3D document only: not the TUI's drawing
+    # deferred: xml.etree.ElementTree — the X3D document only: not the TUI's drawing
+    import xml.etree.ElementTree as ET
 
     prefix = f"{humanoid.name}_"
     # skeletalConfiguration is "BASIC" (clause 4.8.2) through the field's X3D 4.0
@@ -900,6 +898,7 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
 
 def scene_document(humanoids: list[tuple[ET.Element, float]], title: str, height: float) -> str:
     """An X3D 4.0 document holding humanoids side by side (x offsets in metres)."""
+    # deferred: xml.etree.ElementTree — off the first screen's next frame, sass export gltf, sass fit (sass_tui/startup.py)
     import xml.etree.ElementTree as ET
 
     x3d = ET.Element(

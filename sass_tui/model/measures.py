@@ -118,6 +118,7 @@ PUBLISHED_TO_CANONICAL: Final[dict[str, float]] = {
 
 def suggest(name: str, limit: int = 3) -> list[str]:
     """Measurement names close to `name`, for a "did you mean" after a typo."""
+    # deferred: difflib — off sass query, sass query --count, sass person … (sass_tui/startup.py)
     import difflib
 
     return difflib.get_close_matches(name.lower(), MEASURES, n=limit, cutoff=0.6)

@@ -65,6 +65,7 @@ class OutlineError(ValueError, SassError):
 
 def figure_outline(figure: Any, label: str = "") -> Outline:
     """The front and side views of `figure` (a model Figure with every group loaded)."""
+    # deferred: model.hanim — off the first screen (sass_tui/startup.py)
     from sass_tui.model.hanim import build_humanoid
 
     try:

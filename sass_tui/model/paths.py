@@ -82,6 +82,7 @@ def regular_file(text: str | Path, workdir: Path | None = None) -> Path:
 
 def data_dir() -> Path:
     """Where sass keeps its database and served sessions' directories."""
+    # deferred: platformdirs — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
     from platformdirs import user_data_dir
 
     return Path(user_data_dir("sass", appauthor=False))
@@ -89,6 +90,7 @@ def data_dir() -> Path:
 
 def cache_dir() -> Path:
     """Where sass keeps what it can rebuild (the database's column copies)."""
+    # deferred: platformdirs — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
     from platformdirs import user_cache_dir
 
     return Path(user_cache_dir("sass", appauthor=False))
@@ -96,6 +98,7 @@ def cache_dir() -> Path:
 
 def config_dir() -> Path:
     """Where sass keeps the user's settings."""
+    # deferred: platformdirs — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
     from platformdirs import user_config_dir
 
     return Path(user_config_dir("sass", appauthor=False))

@@ -46,6 +46,7 @@ def check_percentile(p: npt.ArrayLike) -> npt.ArrayLike:
         if not MIN_PERCENTILE <= p <= MAX_PERCENTILE:
             raise _refuse(float(p))
         return p
+    # deferred: numpy — off the first screen, sass --help, sass --version (sass_tui/startup.py)
     import numpy as np
 
     arr = np.asarray(p, dtype=float)
@@ -57,6 +58,7 @@ def check_percentile(p: npt.ArrayLike) -> npt.ArrayLike:
 
 def z_score(p: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Standard normal quantile of percentile(s) p (0.5-99.5)."""
+    # deferred: numpy — off the first screen, sass --help, sass --version (sass_tui/startup.py)
     import numpy as np
 
     arr = np.asarray(p, dtype=float)
@@ -115,6 +117,7 @@ def cell_percentile_of(v5: float, v50: float, v95: float, value: float) -> float
 def value_at(stats: npt.NDArray[np.float64], p: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """Values at percentile p over an array.  stats[..., 0:3] = (v5, v50,
     v95); p broadcasts against stats[..., 0]."""
+    # deferred: numpy — off the first screen, sass --help, sass --version (sass_tui/startup.py)
     import numpy as np
 
     check_percentile(p)
@@ -130,6 +133,7 @@ def percentile_of(
 ) -> npt.NDArray[np.float64] | np.float64:
     """Percentiles of value(s) against stats, over an array (see
     cell_percentile_of); a 0-d result is a numpy float."""
+    # deferred: numpy — off the first screen, sass --help, sass --version (sass_tui/startup.py)
     import numpy as np
 
     stats = np.asarray(stats, dtype=float)

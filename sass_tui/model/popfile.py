@@ -35,6 +35,7 @@ from sass_tui.model.names import (
     label_lookup,
     normalise_label,
 )
+from sass_tui.model.paths import PathError, regular_file
 from sass_tui.model.units import UnitError, finite_number
 from sass_tui.model.vocabulary import GENDERS
 
@@ -95,6 +96,7 @@ class PopulationData:
         if not isinstance(section, list):
             return section
         if gender not in self._arrays:
+            # deferred: numpy — off the first screen (sass_tui/startup.py)
             import numpy as np
 
             self._arrays[gender] = np.array(section, dtype=float)
@@ -110,8 +112,6 @@ class PopulationData:
 
 
 def read_population_file(path: str | Path, group: str) -> PopulationData:
-    from sass_tui.model.paths import PathError, regular_file
-
     try:
         path = regular_file(path)  # a FIFO or a device (/dev/zero) would never end
     except PathError as exc:
@@ -467,6 +467,7 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
 
 def write_population_file(data: PopulationData, path: str | Path) -> None:
     """Write statistics back in the same format (atomically)."""
+    # deferred: model.atomic — off the first screen, sass strength (sass_tui/startup.py)
     from sass_tui.model.atomic import write_text_atomic
 
     lines = [f"C {data.title}"]

@@ -56,7 +56,15 @@ import numpy.typing as npt
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES
-from sass_tui.model.names import AXES, CENTER_OF_MASS, CENTER_OF_MASS_ROWS, GIRTH, GIRTH_ROWS
+from sass_tui.model.names import (
+    AXES,
+    CENTER_OF_MASS,
+    CENTER_OF_MASS_ROWS,
+    GIRTH,
+    GIRTH_ROWS,
+    JOINT_LIMITS,
+    ROWS,
+)
 from sass_tui.model.units import UnitError, parse_quantity
 from sass_tui.model.vocabulary import GENDERS
 
@@ -298,8 +306,6 @@ class Prediction:
         of mass from the prediction, percentiles against `base`'s population,
         joint limits and any cell without a prediction from that population at
         output.  `base` is left unchanged, so Disp. Pop. returns to it."""
-        from sass_tui.model.names import JOINT_LIMITS, ROWS
-
         return base.for_person(
             self.label(),
             self.gender,

@@ -438,6 +438,7 @@ def parse_strength_limit(text: str) -> StrengthLimit:
     """'strength.knee_extension >= 150 N-m at knee_y=60' (the `strength.`
     prefix, the unit and the `at AXIS=ANGLE` part are optional; N-m without
     a unit)."""
+    # deferred: model.units — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.units import parse_quantity
 
     shape = "MOTION >= TORQUE [at AXIS=ANGLE], e.g. knee_extension >= 150 N-m at knee_y=60"

@@ -193,6 +193,7 @@ class Session:
     def load_strength(self, data: StrengthData) -> StrengthSheet:
         """A new strength file: the view settings (side, unit, percentile,
         factor) survive; the angles are the new file's."""
+        # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
         from sass_tui.model.strength import StrengthSheet
 
         sheet = StrengthSheet(data, self.figure)
@@ -208,6 +209,7 @@ class Session:
 
     def _require_strength(self) -> StrengthSheet:
         if self.strength_sheet is None:
+            # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
             from sass_tui.model.strength import StrengthError
 
             raise StrengthError("strength data is not loaded")
@@ -227,6 +229,7 @@ class Session:
         if isinstance(own_strength, str):
             self.strength_sheet, self.strength_missing = None, own_strength
         elif own_strength is not None:
+            # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
             from sass_tui.model.strength import StrengthSheet
 
             sheet = StrengthSheet(own_strength, person)

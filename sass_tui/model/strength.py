@@ -37,13 +37,15 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.model import datasets
+from sass_tui.model import published_strength as published
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
+from sass_tui.model.paths import PathError, regular_file
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
 from sass_tui.model.published_strength import EXAMPLE_SOURCE
-from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity
+from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity, unit_name
 from sass_tui.model.vocabulary import GENDERS, JOINT_AXES, MOTION_NAMES, SIDES
 
 FILE_NAME = "strength.dat"
@@ -189,8 +191,6 @@ def default_path() -> Path:
 
 
 def read_strength_file(path: str | Path | None = None) -> StrengthData:
-    from sass_tui.model.paths import PathError, regular_file
-
     try:  # a FIFO or a device (/dev/zero) would never end
         path = regular_file(path) if path is not None else default_path()
     except PathError as exc:
@@ -907,8 +907,6 @@ class StrengthSheet:
         return self.row(index)
 
     def set_unit(self, unit: str) -> None:
-        from sass_tui.model.units import unit_name
-
         name = unit_name(unit) if unit not in GROUP_UNITS[STRENGTH] else unit
         if name not in GROUP_UNITS[STRENGTH]:
             raise StrengthError(f"strength is shown in ft-lb or N-m, not {unit}")
@@ -970,8 +968,6 @@ def lower_limb_fig_section(
     """The figure's hip, knee and ankle strength (Anderson et al. 2007) for a
     .fig file, from its gender, mass and stature (a figure has no age: the
     18-25 group) within its joint limits."""
-    from sass_tui.model import published_strength as published
-
     subject = published.Subject(
         figure.gender, published.AGE_GROUPS[0][1], figure.output_mass(), figure.stature / 100.0
     )

@@ -49,6 +49,7 @@ def is_weighting_field(field: str) -> bool:
 
 def header_field(name: str) -> str | None:
     """The field a column name stands for, None for a column passed over."""
+    # deferred: model.accommodation — off sass target (sass_tui/startup.py)
     from sass_tui.model.accommodation import measure_field
 
     word = name.strip().lower()
@@ -60,6 +61,7 @@ def header_field(name: str) -> str | None:
 def read_sample(text: str, fields: Sequence[str], where: str) -> Sample:
     """The values of `fields` (query-language names) in the CSV `text` (the
     file `where`).  SampleError says file:line and the column."""
+    # deferred: model.prediction — off sass target (sass_tui/startup.py)
     from sass_tui.model.prediction import field_unit
 
     fields = tuple(fields)

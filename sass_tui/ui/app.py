@@ -9,6 +9,7 @@ See docs/architecture.md.
 from __future__ import annotations
 
 import gc
+import time
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -16,7 +17,7 @@ from textual.app import App
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
-from sass_tui.model.paths import user_path
+from sass_tui.model.paths import regular_file, user_path
 from sass_tui.model.session import Session
 from sass_tui.ui.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
 
@@ -49,7 +50,8 @@ class SassApp(App):
         # a PostgreSQL address (postgresql://...) stays text.
         self.db_path: str | Path | None = None
         if db_path:
-            from sass_tui.db.addresses import is_url  # imports nothing (the first screen's path)
+            # deferred: db.addresses — the db package is off the first screen (sass_tui/startup.py) unless --db is given; addresses imports nothing
+            from sass_tui.db.addresses import is_url
 
             self.db_path = db_path if is_url(db_path) else user_path(db_path)
         # A session served to a browser (model/served.py): the directory every
@@ -72,6 +74,7 @@ class SassApp(App):
 
     # --- the theme, chosen in the palette ("Change theme"), remembered -----------
     def _restore_theme(self) -> None:
+        # deferred: ui.settings — off the first screen (sass_tui/startup.py)
         from sass_tui.ui.settings import load_settings
 
         theme = load_settings().get("theme")
@@ -82,6 +85,7 @@ class SassApp(App):
     def watch_theme(self, theme: str) -> None:
         if not getattr(self, "_theme_restored", False):
             return  # the default, or the one just read back
+        # deferred: ui.settings — off the first screen (sass_tui/startup.py)
         from sass_tui.ui.settings import save_setting
 
         problem = save_setting("theme", theme)
@@ -97,6 +101,7 @@ class SassApp(App):
     def _make_strength_sheet(self, figure: Figure, path: str | Path | None) -> StrengthSheet | None:
         """The population's strength sheet from `path` (None =
         datasets/strength.dat), or None and why in strength_error."""
+        # deferred: model.strength — off the first screen (sass_tui/startup.py)
         from sass_tui.model.strength import StrengthError, StrengthSheet, read_strength_file
 
         try:
@@ -115,8 +120,6 @@ class SassApp(App):
 
     async def action_quit(self) -> None:
         """Quit; with edits that would be lost, only on a second q."""
-        import time
-
         now = time.monotonic()
         if not self.session.can_undo() or now - self._quit_asked_at < self.QUIT_AGAIN_S:
             self.exit()
@@ -149,8 +152,6 @@ class SassApp(App):
 
     def regular_file(self, text: str) -> Path:
         """An existing regular file named at a prompt, as `user_path` finds it."""
-        from sass_tui.model.paths import regular_file
-
         return regular_file(text, self.workdir)
 
     @property
@@ -181,11 +182,13 @@ class SassApp(App):
     def open_query_screen(self) -> None:
         # Imported when first used: the database costs ~60 ms of start-up
         # that a user who never queries should not pay.
+        # deferred: ui.query_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.ui.query_screen import QueryScreen
 
         self.push_screen(QueryScreen(self.query_lists, self.db_path))
 
     def open_figure_screen(self) -> None:
+        # deferred: ui.figure_screen — off the first screen (sass_tui/startup.py)
         from sass_tui.ui.figure_screen import FigureScreen
 
         self.push_screen(FigureScreen(self.session))
@@ -194,6 +197,7 @@ class SassApp(App):
         self.query_lists = event.lists
 
     def selected_count(self) -> int:
+        # deferred: db.lists — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.db.lists import SELECTED_LIST
 
         return self.query_lists.count(SELECTED_LIST) if self.query_lists else 0
@@ -208,12 +212,14 @@ class SassApp(App):
 
     def person_figure(self, index: int, population: Figure) -> Figure:
         """The figure of person `index` of the selected list (report §12.4)."""
+        # deferred: db.individual — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.db.individual import person_figure as figure_of
 
         return figure_of(self.selected_individual(index), population)
 
 
 def _screen_commands_provider():
+    # deferred: ui.palette — off the first screen, the first screen's next frame (sass_tui/startup.py)
     from sass_tui.ui.palette import ScreenCommands
 
     return ScreenCommands
@@ -222,6 +228,7 @@ def _screen_commands_provider():
 def make_app(db_path: str | Path | None = None) -> SassApp:
     """The app `sass` runs: a served session's (`sass serve`) when its
     environment says so (model/served.py)."""
+    # deferred: model.served — off the first screen, the first screen's next frame (sass_tui/startup.py)
     from sass_tui.model.served import served_read_only, served_workdir
 
     return SassApp(db_path=db_path, workdir=served_workdir(), read_only=served_read_only())

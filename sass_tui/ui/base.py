@@ -164,6 +164,7 @@ class SassScreen(Screen):
 
     def action_help(self) -> None:
         """List every key of this screen, what it runs and what that does."""
+        # deferred: ui.palette — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.ui.palette import HelpScreen, screen_commands
 
         title = f"Keys of {type(self).__name__.removesuffix('Screen') or 'this'} screen"

@@ -19,6 +19,7 @@ from textual.widgets import DataTable, Footer, Label
 from textual_plotext import PlotextPlot
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.figure import Figure
 from sass_tui.model.vocabulary import GENDERS
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
@@ -55,6 +56,7 @@ def parse_measures(text: str) -> list[str]:
     names = [name for name in names if name]
     if not 2 <= len(names) <= 6:
         raise FamilyAnswerError(f"give 2 to 6 measurements separated by commas, not {len(names)}")
+    # deferred: model.accommodation — only parse_measures() needs it; importing ui.family_screen does not load it
     from sass_tui.model.accommodation import measure_field
 
     for name in names:
@@ -169,6 +171,7 @@ class FamilyScreen(SassScreen):
         coverage: float,
         work: Work,
     ) -> None:
+        # deferred: db.database, db.fit — only build_family() needs it; importing ui.family_screen does not load it
         from sass_tui.db.database import Database
         from sass_tui.db.fit import DEFAULT_POPULATION
 
@@ -249,8 +252,8 @@ class FamilyScreen(SassScreen):
         )
 
     def _write_to(self, family: Family, directory: Path) -> None:
+        # deferred: model.accommodation — only _write_to() needs it; importing ui.family_screen does not load it
         from sass_tui.model.accommodation import write_family
-        from sass_tui.model.figure import Figure
 
         written = write_family(family, directory, Figure.default(family.gender))
         self.say(

@@ -63,6 +63,7 @@ class FigureView(Vertical):
             self.call_after_refresh(self._add_canvas)
 
     def _new_canvas(self) -> Canvas:
+        # deferred: textual_canvas — off the first screen (sass_tui/startup.py)
         from textual_canvas import Canvas
 
         canvas = Canvas(1, 2, id="figure-canvas")

@@ -52,6 +52,7 @@ class PredictorOpened(Message):
 def open_predictor_at(db_path: str | Path | None) -> Predictor:
     """The predictor of the database the query screen uses (the default one
     when no --db was given); run in a worker."""
+    # deferred: db.database — off the first screen, the first screen's next frame (sass_tui/startup.py)
     from sass_tui.db.database import Database
 
     db = Database.open(db_path)

@@ -9,7 +9,10 @@ from pathlib import Path
 
 from textual import work
 
+from sass_tui.db.database import configured_target
 from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, DatabaseBusy, QueryLists
+from sass_tui.db.progress import Cancelled
+from sass_tui.db.schema import default_db_path
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
 from sass_tui.ui.query_builder import QueryBuilder
@@ -87,14 +90,13 @@ class QueryScreenBase(SassScreen):
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def _open_database(self, db_path: str | Path | None, work: Work) -> None:
+        # deferred: db.addresses, db.default — only _open_database() needs it; importing ui.query_base does not load it
         from sass_tui.db.addresses import is_url
-        from sass_tui.db.database import configured_target
         from sass_tui.db.default import create_default_database, default_needs_building
-        from sass_tui.db.progress import Cancelled
-        from sass_tui.db.schema import default_db_path
 
         target = configured_target(db_path)
         if is_url(target):  # a lab's PostgreSQL database (--db or $SASS_DB): never built here
+            # deferred: db.postgres — only _open_database() needs it; importing ui.query_base does not load it
             from sass_tui.db.postgres import shown
 
             try:

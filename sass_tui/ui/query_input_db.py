@@ -82,6 +82,7 @@ class InputDbCommands(QueryScreenBase):
                 problem = f"{exc}."
                 continue
             if index == 0:
+                # deferred: db.ansur — only _input_db() needs it; importing ui.query_input_db does not load it
                 from sass_tui.db.ansur import looks_like_ansur
 
                 if looks_like_ansur(path):  # a survey file holds everything: no group files
@@ -92,6 +93,7 @@ class InputDbCommands(QueryScreenBase):
         self._import(chosen)
 
     async def _input_ansur(self, path: Path) -> None:
+        # deferred: db.ansur — only _input_ansur() needs it; importing ui.query_input_db does not load it
         from sass_tui.db.ansur import DEFAULT_LABEL
 
         default = path.name.split(".")[0] or DEFAULT_LABEL

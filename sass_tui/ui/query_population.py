@@ -3,11 +3,14 @@ whole: Make Population, Fit Test, the target population."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 from textual import work
 
 from sass_tui.db.lists import DB_ERRORS, QueryLists
+from sass_tui.db.progress import Steps
+from sass_tui.model.names import GLOBAL, GROUP_TITLES
 from sass_tui.ui.progress import Work
 from sass_tui.ui.query_base import WAIT, Busy, QueryScreenBase
 from sass_tui.ui.query_messages import PopulationMade
@@ -24,6 +27,7 @@ class PopulationCommands(QueryScreenBase):
         self.converse(self._choose_target(self.lists))
 
     async def _choose_target(self, lists: QueryLists) -> None:
+        # deferred: ui.target_picker — only _choose_target() needs it; importing ui.query_population does not load it
         from sass_tui.ui.target_picker import pick_target
 
         name = await pick_target(self, lists, self.target)
@@ -85,11 +89,12 @@ class PopulationCommands(QueryScreenBase):
         work: Work,
         weighted_to: str | None = None,
     ) -> None:
+        # deferred: db.population_files — only make_population() needs it; importing ui.query_population does not load it
         from sass_tui.db.population_files import write_population_files
-        from sass_tui.db.progress import Steps
 
         try:
             if weighted_to:
+                # deferred: ui.target_picker — only make_population() needs it; importing ui.query_population does not load it
                 from sass_tui.ui.target_picker import weighted_words
 
                 title += weighted_words(weighted_to)
@@ -102,10 +107,8 @@ class PopulationCommands(QueryScreenBase):
         self.post_message(PopulationMade(result, paths))
 
     def on_population_made(self, event: PopulationMade) -> None:
-        from dataclasses import replace
-
+        # deferred: db.population — only on_population_made() needs it; importing ui.query_population does not load it
         from sass_tui.db.population import people_words
-        from sass_tui.model.names import GLOBAL, GROUP_TITLES
 
         event.stop()
         if self.end_work() and event.error:
@@ -137,6 +140,7 @@ class PopulationCommands(QueryScreenBase):
     # --- Fit Test ------------------------------------------------------------
     def action_fit_test(self) -> None:
         """Test a population against the last query as design limits."""
+        # deferred: db.fit, ui.fit_screen — only action_fit_test() needs it; importing ui.query_population does not load it
         from sass_tui.db.fit import DEFAULT_POPULATION
         from sass_tui.ui.fit_screen import FitScreen
 

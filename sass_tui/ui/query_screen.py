@@ -259,6 +259,7 @@ class QueryScreen(InputDbCommands, PopulationCommands):
             hint = "" if count else lists.demonstration_hint(text) or ""
             weighted = ""
             if target:
+                # deferred: ui.target_picker — only run_query() needs it; importing ui.query_screen does not load it
                 from sass_tui.ui.target_picker import weighted_count_words
 
                 weighted = weighted_count_words(lists, text, target)
@@ -291,6 +292,7 @@ class QueryScreen(InputDbCommands, PopulationCommands):
 
     def action_export_gltf(self) -> None:
         """Write the highlighted person as a glTF 2.0 body (.glb)."""
+        # deferred: ui.gltf_export — only action_export_gltf() needs it; importing ui.query_screen does not load it
         from sass_tui.ui.gltf_export import export_list_person
 
         self._list_command(lambda: export_list_person(self, self._database, self.sheet.highlighted))

@@ -30,7 +30,10 @@ from __future__ import annotations
 import asyncio
 import hmac
 import logging
+import signal
+import socket
 import sys
+import threading
 from collections.abc import Awaitable, Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -87,8 +90,6 @@ class ServeOptions:
             return self.public_url.rstrip("/") + "/"
         host = self.host  # the name or address given, which the server listens on
         if host in ("0.0.0.0", "::", ""):  # every interface: name this machine
-            import socket
-
             host = socket.getfqdn()
         if ":" in host:
             host = f"[{host}]"
@@ -171,8 +172,7 @@ def _hostname(host_header: str) -> str:
 def _server_class():  # -> type[textual_serve.server.Server]
     """The server class, made when first served: textual-serve and aiohttp are
     imported only by `sass serve`."""
-    import signal
-
+    # deferred: aiohttp_jinja2, aiohttp.web, textual_serve.app_service, textual_serve.server — off sass serve (sass_tui/startup.py)
     import aiohttp_jinja2
     from aiohttp import web
     from textual_serve.app_service import AppService
@@ -357,7 +357,7 @@ def _server_class():  # -> type[textual_serve.server.Server]
             options = self.options
             print(f"sass serve: open {options.url}", flush=True)
             if options.open_browser:
-                import threading
+                # deferred: webbrowser — off sass serve (sass_tui/startup.py)
                 import webbrowser
 
                 # In a thread: a browser that runs in this terminal would block the server.

@@ -139,6 +139,7 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
         wide = width >= FIGURE_PANEL_MIN_WIDTH
         new, shown = False, panel is not None and panel.display
         if panel is None and wide:
+            # deferred: ui.figure_view — off the first screen (sass_tui/startup.py)
             from sass_tui.ui.figure_view import FigureView
 
             panel = FigureView(canvas_focus=False, canvas_later=True, id="figure-panel")
@@ -262,6 +263,7 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
 
     def action_message_log(self) -> None:
         """List the messages shown so far."""
+        # deferred: ui.message_log — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.ui.message_log import MessageLog
 
         self.app.push_screen(MessageLog(self.message_line.history))
@@ -273,6 +275,7 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
         if not (self.data_group == STRENGTH and strength is not None):
             self.say("Right → Left applies to the Strength group (press s).")
             return
+        # deferred: model.strength — off the first screen (sass_tui/startup.py)
         from sass_tui.model.strength import DEFAULT_NON_DOMINANT_FACTOR
 
         self.ask(

@@ -105,6 +105,7 @@ class SheetScreenBase(SassScreen):
         panel = self.figure_panel
         if panel is None or not panel.display or not self._first_screen_shown:
             return
+        # deferred: ui.figure_screen — off the first screen (sass_tui/startup.py)
         from sass_tui.ui.figure_screen import session_outlines
 
         try:
@@ -199,6 +200,7 @@ class SheetScreenBase(SassScreen):
 
     def action_strength_curve(self) -> None:
         """Strength curves: hip, knee and ankle torque over the joint's range."""
+        # deferred: ui.strength_curve_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.ui.strength_curve_screen import StrengthCurveScreen
 
         sheet = self.session.made_strength_sheet()

@@ -109,6 +109,7 @@ class EditCommands(SheetScreenBase):
         else:
             where = f"{format_percentile(percentile)} percentile"
         said = f"{name} = {format_value(shown, state.unit)} {DISPLAY[state.unit]} ({where})."
+        # deferred: model.hanim — off the first screen (sass_tui/startup.py)
         from sass_tui.model.hanim import NOT_IN_HUMANOID
 
         if group == GIRTH and (state.rows[row].name, axis) in NOT_IN_HUMANOID:
@@ -125,6 +126,7 @@ class EditCommands(SheetScreenBase):
         if sheet is None:
             self.complain(self.strength_error)
             return
+        # deferred: model.strength — off the first screen (sass_tui/startup.py)
         from sass_tui.model.strength import JOINT_AXIS_LABELS, MOTIONS
 
         name = f"{sheet.side} {MOTIONS[row].label.lower()}, {JOINT_AXIS_LABELS[column].lower()}"
@@ -136,6 +138,7 @@ class EditCommands(SheetScreenBase):
         )
 
     def _edit_angle(self, row: int, column: int, text: str) -> None:
+        # deferred: model.strength — off the first screen (sass_tui/startup.py)
         from sass_tui.model.strength import JOINT_AXIS_LABELS, MOTIONS
 
         axis = JOINT_AXIS_LABELS[column].lower()

@@ -58,10 +58,14 @@ class FileCommands(SheetScreenBase):
         """A strength data set named instead of a file (docs/strength.md): the
         example data read again, Anderson et al. 2007's curves shown, or HFDS
         2003's grip forces said (forces: the strength page shows joint torques)."""
+        # deferred: model.published_grip — off the first screen (sass_tui/startup.py)
         from sass_tui.model.published_grip import GRIP_DATA_SET, table_words
+
+        # deferred: model.published_strength — off the first screen (sass_tui/startup.py)
         from sass_tui.model.published_strength import DATA_SET, EXAMPLE_DATA_SET
 
         if name == EXAMPLE_DATA_SET:
+            # deferred: model.strength — off the first screen (sass_tui/startup.py)
             from sass_tui.model.strength import default_path
 
             self.say(f"Reading the example data ({default_path().name}) ...")
@@ -81,6 +85,7 @@ class FileCommands(SheetScreenBase):
         what = "strength data" if group == STRENGTH else GROUP_TITLES[group]
         try:
             if group == STRENGTH:
+                # deferred: model.strength — off the first screen (sass_tui/startup.py)
                 from sass_tui.model.strength import read_strength_file
 
                 self.post_message(StrengthRead(read_strength_file(path)))
@@ -126,6 +131,7 @@ class FileCommands(SheetScreenBase):
     def _default_name(self, suffix: str) -> str:
         """Create Figure's and Export HAnim's file name: the person's shown,
         else the figure's gender and girth percentile (MALE50.FIG)."""
+        # deferred: model.figfile — off the first screen (sass_tui/startup.py)
         from sass_tui.model.figfile import default_fig_name
 
         figure = self.figure
@@ -162,6 +168,7 @@ class FileCommands(SheetScreenBase):
                 return
             word = answer.strip().lower()
             if word in ("", "y", "yes"):
+                # deferred: model.strength — off the first screen (sass_tui/startup.py)
                 from sass_tui.model.strength import fig_section, lower_limb_fig_section
 
                 sections = [fig_section(strength), lower_limb_fig_section(self.figure)]
@@ -186,6 +193,7 @@ class FileCommands(SheetScreenBase):
     def _write_figure(self, path: Path, sections: list) -> None:
         """Rendered here, on the UI thread: the worker gets the text, never the
         figure the user may be editing meanwhile."""
+        # deferred: model.figfile — off the first screen (sass_tui/startup.py)
         from sass_tui.model.figfile import render_fig
 
         figure = self.figure
@@ -200,6 +208,7 @@ class FileCommands(SheetScreenBase):
 
     @work(thread=True, group="write", exit_on_error=False)
     def write_text(self, path: Path, text: str, done: str) -> None:
+        # deferred: model.atomic — off the first screen (sass_tui/startup.py)
         from sass_tui.model.atomic import write_text_atomic
 
         try:
@@ -218,6 +227,7 @@ class FileCommands(SheetScreenBase):
     async def _export_hanim(self) -> None:
         """Export HAnim's questions: the file name, and y/N before a file is
         replaced."""
+        # deferred: model.hanim — off the first screen (sass_tui/startup.py)
         from sass_tui.model.hanim import not_in_humanoid_note, render_hanim
 
         default = self._default_name(".x3d")
@@ -233,6 +243,7 @@ class FileCommands(SheetScreenBase):
 
     def action_export_gltf(self) -> None:
         """Write the figure shown as a glTF 2.0 body (.glb)."""
+        # deferred: ui.gltf_export — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.ui.gltf_export import ask_gltf_export
 
         ask_gltf_export(self, self.figure, self._default_name(".glb"))

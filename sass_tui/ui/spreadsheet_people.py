@@ -59,6 +59,7 @@ class PeopleCommands(SheetScreenBase):
 
     async def _display_more(self) -> None:
         """The More Menu's choice; for Nth Person, the number."""
+        # deferred: ui.more_menu — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.ui.more_menu import MoreMenu
 
         choice = await self.choose(MoreMenu())
@@ -105,6 +106,7 @@ class PeopleCommands(SheetScreenBase):
 
     def _own_strength(self, index: int, person: Figure) -> StrengthData | str:
         """The person's own strength experiments, or why there are none."""
+        # deferred: db.individual, model.strength — off the first screen (sass_tui/startup.py)
         from sass_tui.db.individual import strength_measurements
         from sass_tui.model.strength import person_strength_data
 
@@ -141,6 +143,7 @@ class PeopleCommands(SheetScreenBase):
     # --- Family ----------------------------------------------------------------
     def action_family(self) -> None:
         """Build a manikin family covering the population."""
+        # deferred: ui.family_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.ui.family_screen import FamilyScreen
 
         self.app.push_screen(FamilyScreen(self.sass_app.db_path, self.session.population.gender))
@@ -192,6 +195,7 @@ class PeopleCommands(SheetScreenBase):
         self._predict_from(text)
 
     def _predict_from(self, text: str) -> None:
+        # deferred: model.prediction — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.model.prediction import split_known
 
         if not text.strip():

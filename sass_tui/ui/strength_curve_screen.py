@@ -17,6 +17,7 @@ from textual.widgets import Footer, Static
 from textual_plotext import PlotextPlot
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.percentile import check_percentile
 from sass_tui.model.published_strength import (
     AGE_GROUPS,
     LOWER_LIMB_MOTIONS,
@@ -84,6 +85,7 @@ class StrengthCurveScreen(SassScreen):
         return Subject(figure.gender, age, figure.output_mass(), figure.stature / 100.0)
 
     def draw(self) -> None:
+        # deferred: model.strength — only draw() needs it; importing ui.strength_curve_screen does not load it
         from sass_tui.model.strength import joint_limit_range
 
         motion = LOWER_LIMB_MOTIONS[self.motion]
@@ -176,8 +178,6 @@ class StrengthCurveScreen(SassScreen):
         """Set the strength percentile of the curve."""
 
         def answer(text: str) -> None:
-            from sass_tui.model.percentile import check_percentile
-
             try:
                 value = float(text)
             except ValueError:

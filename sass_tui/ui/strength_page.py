@@ -81,6 +81,7 @@ class StrengthPage(DataSheet):
     def _limits(self, sheet) -> list[tuple[float, float]]:
         """(lower, upper) of each angle column for the shown side; the joint
         limits change with their percentile and the gender, so ask each time."""
+        # deferred: model.strength — off the first screen (sass_tui/startup.py)
         from sass_tui.model.strength import StrengthError, joint_limit_range
 
         try:
@@ -103,6 +104,7 @@ class StrengthPage(DataSheet):
         second = Text(no_wrap=True, overflow="crop")
         if sheet is None:
             return Text("\n").join([top, Text(self.missing or "Strength data is not loaded.")])
+        # deferred: model.strength — off the first screen (sass_tui/startup.py)
         from sass_tui.model.strength import StrengthError
 
         try:

@@ -1,0 +1,221 @@
+"""What each way of starting sass must not import, and why: the one list of
+start-up paths.  tests/test_startup.py runs every row (the verb in a fresh
+interpreter, on a copy of the shipped database where it reads one) and fails
+if a module named in `forbidden` was imported.
+
+Each row says only what is true today (every list was measured by running
+the path and reading `sys.modules`); a module `import numpy` itself brings
+(numpy.ma and secrets on numpy 1.26) is not held against a path that may
+import numpy.  An import inside a function elsewhere in sass_tui carries
+`# deferred: MODULE — off PATH, ... (sass_tui/startup.py)` when it keeps
+MODULE off one of these paths, by the row's `name`
+(tests/test_deferred_imports.py checks both).
+
+Pure data: nothing in sass imports it, and it imports only typing.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+
+class StartupPath(NamedTuple):
+    name: str  # how a `# deferred:` comment names the path
+    argv: tuple[str, ...]  # `sass`'s arguments; () is the TUI
+    forbidden: tuple[str, ...]  # modules the path must not import
+    why: str
+    # The TUI's moment of the check: "drawn" (the first screen is on the
+    # terminal, SpreadsheetScreen._first_screen_drawn) or "settled" (a frame
+    # later, the figure panel drawn); a verb is checked when it has returned.
+    moment: str = "end"
+    needs_db: bool = False  # run with `--db` on a copy of the shipped database
+    status: int = 0  # the exit status the argv is expected to give
+
+
+# Off every path here: the query grammar is lark's stand-alone parser,
+# generated into db/_query_parser.py, and lark itself parses only a .fig file
+# being read (model/figfile.py); pint only checks the unit table in the tests;
+# pygltflib only reads exported glTF files back in the tests.
+NEVER = ("lark", "pint", "pygltflib")
+# Textual and what draws or serves it: only the TUI and `sass serve`.
+UI = ("textual", "rich", "textual_canvas", "textual_plotext", "textual_serve", "aiohttp")
+# The engines past SQLite: PostgreSQL on an address, DuckDB for the column
+# copy of 200,000 people and more (db/accelerator.py).
+ENGINES = ("psycopg", "duckdb")
+# Standard-library modules a command that writes nothing to a temporary file,
+# logs nothing and copies no file need not pay for.
+NOT_FOR_A_SHORT_COMMAND = ("logging", "shutil", "tempfile", "importlib.metadata", "asyncio")
+# What the TUI's other screens, the database and the prediction model bring.
+OTHER_SCREENS = (
+    "sqlite3",
+    "sass_tui.db",
+    "sass_tui.model.prediction",
+    "sass_tui.ui.query_screen",
+)
+
+# fmt: off
+PATHS: tuple[StartupPath, ...] = (
+    StartupPath(
+        "the first screen",
+        (),
+        (*NEVER, *ENGINES, *OTHER_SCREENS, "numpy", "textual_canvas", "textual_plotext",
+         "textual_serve", "aiohttp", "xml.etree.ElementTree", "importlib.metadata",
+         "sass_tui.ui.figure_screen"),
+        "`sass` start-up <= 1.3x a bare Textual app (benchmarks/cli_ratios.py): the default"
+        " figure is read and computed in plain floats; numpy (~31 ms) waits a frame",
+        moment="drawn",
+    ),
+    StartupPath(
+        "the first screen's next frame",
+        (),
+        (*NEVER, *ENGINES, *OTHER_SCREENS, "textual_plotext", "textual_serve", "aiohttp",
+         "xml.etree.ElementTree", "numpy.ma", "secrets"),
+        "the figure panel and the strength sheet (numpy, textual-canvas) come one frame"
+        " later; the query screen, the database, exports and the first edit's modules wait"
+        " until used",
+        moment="settled",
+    ),
+    StartupPath(
+        "sass --help",
+        ("--help",),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "sqlite3", "platformdirs",
+         "pickle", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+        "every verb's module is imported to list it: each imports at its top only what"
+        " its parser needs",
+    ),
+    StartupPath(
+        "sass --version",
+        ("--version",),
+        (*NEVER, *UI, *ENGINES, "numpy", "sqlite3", "logging", "asyncio", "pickle",
+         "sass_tui.db", "sass_tui.ui"),
+        "importlib.metadata reads the version; nothing else is needed",
+    ),
+    StartupPath(
+        "sass fig",
+        ("fig", "-o", "X.fig"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",
+         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+        "`sass fig -o X.fig` <= 1.6x `python -c 'import numpy'` (benchmarks/cli_ratios.py):"
+        " the figure needs numpy and the model, no database and no temporary file's name",
+    ),
+    StartupPath(
+        "sass export hanim",
+        ("export", "hanim", "-o", "X.x3d"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",
+         "secrets", "sass_tui.db", "sass_tui.ui"),
+        "the X3D document needs the figure and xml.etree, no database",
+    ),
+    StartupPath(
+        "sass export gltf",
+        ("export", "gltf", "-o", "X.glb"),
+        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "sqlite3", "platformdirs", "numpy.ma",
+         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+        "the glTF body needs the figure's humanoid, not the X3D writer nor a database",
+    ),
+    StartupPath(
+        "sass strength",
+        ("strength", "elbow_flexion"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",
+         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+        "the strength of the default figure needs the strength file and the model only",
+    ),
+    StartupPath(
+        "sass query",
+        ("query", "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "dataclasses", "inspect",
+         "pickle", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
+         "sass_tui.model.prediction", "sass_tui.db.accelerator"),
+        "`sass query` <= 5x `python -c pass` (benchmarks/cli_ratios.py): the generated"
+        " parser, the unit table (not pint), SQLite and the table writer; argparse's help"
+        " formatter without shutil; no column copy below its size",
+        needs_db=True,
+    ),
+    StartupPath(
+        "sass query --format csv",
+        ("query", "--format", "csv", "stature > 70 in"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "dataclasses", "inspect",
+         "pickle", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
+         "sass_tui.model.prediction", "sass_tui.db.accelerator"),
+        "as `sass query`: \"70 in\" is converted from the unit table, and csv is the writer",
+        needs_db=True,
+    ),
+    StartupPath(
+        "sass query --count",
+        ("query", "--count", "gender = male"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "pickle", "secrets",
+         "platformdirs", "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction"),
+        "a count asks the column copy's module whether a copy exists; below its size"
+        " SQLite counts, without duckdb or numpy",
+        needs_db=True,
+    ),
+    StartupPath(
+        "sass person",
+        ("person", "1"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy.ma", "secrets", "platformdirs",
+         "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
+         "sass_tui.db._query_parser", "sass_tui.db.accelerator"),
+        "one person's record: no query language, no prediction",
+        needs_db=True,
+    ),
+    StartupPath(
+        "sass population",
+        ("population", "--query", "gender = male", "-o", "X.dat"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "secrets", "platformdirs",
+         "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
+         "sass_tui.db.accelerator"),
+        "the population files need the query, the people and numpy's statistics only",
+        needs_db=True,
+    ),
+    StartupPath(
+        "sass predict",
+        ("predict", "--gender", "male", "--known", "stature=180"),
+        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "importlib.metadata", "numpy.ma",
+         "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
+         "sass_tui.db.accelerator"),
+        "the regression needs the people and numpy, not the exports' writers",
+        needs_db=True,
+    ),
+    StartupPath(
+        "sass fit",
+        ("fit", "stature <= 190 cm"),
+        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "importlib.metadata", "numpy.ma",
+         "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
+         "sass_tui.db.accelerator"),
+        "the fit test needs the query, the people and numpy only",
+        needs_db=True,
+    ),
+    StartupPath(
+        "sass family",
+        ("family", "--gender", "male", "--measures", "stature,mass", "-o", "family"),
+        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "importlib.metadata", "numpy.ma",
+         "secrets", "platformdirs", "sass_tui.ui", "sass_tui.db.accelerator"),
+        "the family needs the people, the prediction and the X3D writer, no TUI",
+        needs_db=True,
+    ),
+    StartupPath(
+        "sass target",
+        ("target", "--list"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy.ma", "secrets", "platformdirs",
+         "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
+         "sass_tui.db.accelerator"),
+        "listing the stored targets reads the database only",
+        needs_db=True,
+    ),
+    StartupPath(
+        "sass db init",
+        ("--db", "new.db", "db", "init"),
+        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "tempfile", "importlib.metadata",
+         "numpy.ma", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
+         "sass_tui.model.prediction", "sass_tui.db._query_parser"),
+        "building the default database needs the shipped files and SQLite, no query",
+    ),
+    StartupPath(
+        "sass serve",
+        ("serve", "--host", "0.0.0.0"),
+        (*NEVER, *UI, *ENGINES, "numpy", "sqlite3", "tempfile", "importlib.metadata",
+         "platformdirs", "sass_tui.db"),
+        "an address it will not serve on is refused before the web server is imported",
+        status=2,
+    ),
+)
+# fmt: on
