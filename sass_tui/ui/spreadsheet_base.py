@@ -153,7 +153,7 @@ class SheetScreenBase(SassScreen):
             self.sheet.show_group(self.figure, self.data_group)
         else:  # hidden on the other pages (and the sheet made after the first screen)
             self.strength_page.show_sheet(
-                self.session.strength_sheet, self.session.strength_missing
+                self.session.strength_sheet, self.session.strength_sheets.missing
             )
         self.redraw_figure_panel()
 
@@ -201,7 +201,7 @@ class SheetScreenBase(SassScreen):
         """Strength curves: hip, knee and ankle torque over the joint's range."""
         from sass_tui.ui.strength_curve_screen import StrengthCurveScreen
 
-        sheet = self.session.made_strength_sheet()
+        sheet = self.session.strength_sheets.made()
         side = sheet.side if sheet is not None else "right"
         percentile = sheet.percentile if sheet is not None else 50.0
         screen = StrengthCurveScreen(self.session, side, percentile)
