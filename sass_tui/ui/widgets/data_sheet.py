@@ -14,7 +14,7 @@ from textual.widget import Widget
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import AXES, GROUP_TITLES
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert
-from sass_tui.ui.widgets.editor import EditorKeys
+from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 from sass_tui.ui.widgets.formats import (
     format_cell_percentile,
     format_value,
@@ -38,13 +38,10 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
         "datasheet--page",
     }
     BINDINGS = [
-        Binding("up", "move(-1, 0)", show=False),
-        Binding("down", "move(1, 0)", show=False),
-        Binding("left", "move(0, -1)", show=False),
-        Binding("right", "move(0, 1)", show=False),
+        *CURSOR_BINDINGS,
         Binding("home", "jump(0)", show=False),
         Binding("end", "jump(-1)", show=False),
-        Binding("enter", "edit", "Edit", show=False),
+        EDIT_BINDING,
     ]
     HEADER_LINES = 2
     PAGE_ROWS = 25  # the report's fixed page
@@ -227,14 +224,8 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
             self.cursor_row = row % self.row_count
             self.refresh()
 
-    def action_edit(self) -> None:
-        self.request_edit(self.EditRequested(self.cursor_row, self.cursor_column))
-
-    def start_typing(self, text: str) -> None:
-        self.request_edit(self.EditRequested(self.cursor_row, self.cursor_column, text))
+    def edit_request(self, initial: str) -> Message:
+        return self.EditRequested(self.cursor_row, self.cursor_column, initial)
 
     def on_resize(self) -> None:
-        self.refresh()
-
-    def on_focus(self) -> None:
         self.refresh()

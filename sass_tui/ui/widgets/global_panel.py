@@ -9,14 +9,13 @@ from dataclasses import dataclass
 
 from rich.text import Text
 from textual import events
-from textual.binding import Binding
 from textual.message import Message
 from textual.widget import Widget
 
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import GIRTH, STRENGTH
 from sass_tui.model.text import printable
-from sass_tui.ui.widgets.editor import EditorKeys
+from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 from sass_tui.ui.widgets.formats import (
     format_percentile,
 )
@@ -83,13 +82,7 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
         "globalpanel--cursor-blur",
         "globalpanel--readonly",
     }
-    BINDINGS = [
-        Binding("up", "move(-1, 0)", show=False),
-        Binding("down", "move(1, 0)", show=False),
-        Binding("left", "move(0, -1)", show=False),
-        Binding("right", "move(0, 1)", show=False),
-        Binding("enter", "edit", "Edit", show=False),
-    ]
+    BINDINGS = [*CURSOR_BINDINGS, EDIT_BINDING]
 
     class EditRequested(Message):
         def __init__(self, field: str, initial: str = "") -> None:
@@ -199,11 +192,5 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
                 self.cursor = same_row[index]
         self.refresh()
 
-    def action_edit(self) -> None:
-        self.request_edit(self.EditRequested(self.cursor.field))
-
-    def start_typing(self, text: str) -> None:
-        self.request_edit(self.EditRequested(self.cursor.field, text))
-
-    def on_focus(self) -> None:
-        self.refresh()
+    def edit_request(self, initial: str) -> Message:
+        return self.EditRequested(self.cursor.field, initial)
