@@ -189,19 +189,14 @@ def default_path() -> Path:
 
 
 def read_strength_file(path: str | Path | None = None) -> StrengthData:
-    from sass_tui.model.paths import PathError, regular_file
+    from sass_tui.model.paths import PathError, read_user_text
 
-    try:  # a FIFO or a device (/dev/zero) would never end
-        path = regular_file(path) if path is not None else default_path()
-    except PathError as exc:
-        raise StrengthFileError(f"{path}: cannot read: {exc.reason}") from None
+    where = default_path() if path is None else path
     try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError:
-        text = path.read_text(encoding="latin-1")
-    except OSError as exc:
-        raise StrengthFileError(f"{path}: cannot read: {exc.strerror or exc}") from None
-    return parse_strength_text(text, str(path))
+        read, text = read_user_text(where)
+    except PathError as exc:
+        raise StrengthFileError(f"{where}: cannot read: {exc.reason}") from None
+    return parse_strength_text(text, str(read))
 
 
 def motion_index(text: str) -> int:

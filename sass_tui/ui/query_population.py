@@ -16,12 +16,9 @@ from sass_tui.ui.query_messages import PopulationMade
 class PopulationCommands(QueryScreenBase):
     def action_choose_target(self) -> None:
         """Pick a target population: counts, Fit Test and Make Population weighted to it."""
-
-        if self.running or self.lists is None:
-            self.say(WAIT if self.running else "The database is not open yet.")
-            return
-
-        self.converse(self._choose_target(self.lists))
+        lists = self.ready_lists()
+        if lists is not None:
+            self.converse(self._choose_target(lists))
 
     async def _choose_target(self, lists: QueryLists) -> None:
         from sass_tui.ui.target_picker import pick_target
