@@ -36,13 +36,20 @@ async def wait_until(pilot, condition, what) -> None:
     raise AssertionError(what() if callable(what) else what)
 
 
+async def open_query_screen(pilot) -> QueryScreen:
+    """From the spreadsheet: Query DB, the database opened."""
+    await pilot.press("d")
+    await settle(pilot)
+    screen = pilot.app.screen
+    assert isinstance(screen, QueryScreen)
+    return screen
+
+
 async def typed_query(pilot, text: str) -> None:
     """From the spreadsheet: Query DB, the builder, its query edited as
     `text`, Done; the query screen stays, its list filled."""
     app = pilot.app
-    await pilot.press("d")
-    await settle(pilot)
-    assert isinstance(app.screen, QueryScreen)
+    await open_query_screen(pilot)
     await pilot.press("d", "b", "e")
     app.screen.query_one(MessageLine).answer.value = ""
     await pilot.press(*text, "enter")

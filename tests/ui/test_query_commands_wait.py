@@ -4,10 +4,9 @@ or an import runs, or before the database is open, each says why it waits
 
 from __future__ import annotations
 
-from _screen import message, settle
+from _screen import message, open_query_screen
 
 from sass_tui.ui.query_base import WAIT
-from sass_tui.ui.query_screen import QueryScreen
 
 SIZE = (120, 40)
 
@@ -15,10 +14,7 @@ SIZE = (120, 40)
 def test_commands_on_the_database_wait_for_it(drive, app_at, db):
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):
-            await pilot.press("d")
-            await settle(pilot)
-            screen = app.screen
-            assert isinstance(screen, QueryScreen)
+            screen = await open_query_screen(pilot)
             lists = screen.lists
             assert lists is not None
             for why, running, open_lists in (
