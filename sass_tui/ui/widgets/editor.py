@@ -57,13 +57,27 @@ class EditorKeys:
 
     The widget says what editing its cursor's cell asks for
     (`edit_request`: its EditRequested message); Enter, a click on the chosen
-    cell and typing all ask with it."""
+    cell and typing all ask with it.  A click chooses the cell under it
+    (`cell_at`, `chosen`, `choose`); a second click on it, or a double
+    click, edits it."""
 
     _typing_ahead = False
 
     def edit_request(self, initial: str) -> Message:
         """The message asking to edit the cell under the cursor, `initial`
         being what was typed so far."""
+        raise NotImplementedError
+
+    def cell_at(self, x: int, y: int) -> object | None:
+        """The cell at (x, y) of the content; None off the cells."""
+        raise NotImplementedError
+
+    def chosen(self) -> object:
+        """The cell under the cursor, as `cell_at` names it."""
+        raise NotImplementedError
+
+    def choose(self, cell: object) -> None:
+        """Put the cursor on `cell` (one that `cell_at` gave)."""
         raise NotImplementedError
 
     def request_edit(self, message: Message) -> None:
@@ -107,6 +121,19 @@ class EditorKeys:
             self.post_message(TypedAhead("paste", None, event.text))  # type: ignore[attr-defined]
         elif event.text.strip():
             self.start_typing(event.text.strip())
+
+    def on_click(self, event: events.Click) -> None:
+        offset = event.get_content_offset(self)  # type: ignore[arg-type]
+        cell = None if offset is None else self.cell_at(offset.x, offset.y)
+        if cell is None:
+            return
+        # Not while a prompt has the keys: the first click takes the focus back.
+        again = self.has_focus and (event.chain > 1 or cell == self.chosen())  # type: ignore[attr-defined]
+        self.choose(cell)
+        self.focus()  # type: ignore[attr-defined]
+        self.refresh()  # type: ignore[attr-defined]
+        if again:
+            self.action_edit()
 
     def on_focus(self) -> None:
         self.refresh()  # type: ignore[attr-defined]

@@ -8,7 +8,6 @@ import math
 from dataclasses import dataclass
 
 from rich.text import Text
-from textual import events
 from textual.message import Message
 from textual.widget import Widget
 
@@ -157,10 +156,8 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
             lines.append(line)
         return Text("\n", no_wrap=True).join(lines)
 
-    def on_click(self, event: events.Click) -> None:
-        offset = event.get_content_offset(self)
-        if offset is None:
-            return
+    def cell_at(self, x: int, y: int) -> GlobalCell | None:
+        """The cell whose label or value is at (x, y)."""
         for cell in GLOBAL_CELLS:
             start, span = self._slot_span(cell.slot)
             if cell.field == "population":
@@ -168,14 +165,16 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
             label_start = (
                 0 if cell.slot == 0 else start - self._label_b() if cell.slot == 2 else start
             )
-            if cell.row == offset.y and label_start <= offset.x < start + span:
-                again = self.has_focus and (event.chain > 1 or self.cursor == cell)
-                self.cursor = cell
-                self.focus()
-                self.refresh()
-                if again:  # a second click on the chosen value edits it
-                    self.action_edit()
-                return
+            if cell.row == y and label_start <= x < start + span:
+                return cell
+        return None
+
+    def chosen(self) -> GlobalCell:
+        return self.cursor
+
+    def choose(self, cell: object) -> None:
+        assert isinstance(cell, GlobalCell)
+        self.cursor = cell
 
     def action_move(self, rows: int, slots: int) -> None:
         here = self.cursor
