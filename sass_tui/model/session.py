@@ -1,5 +1,6 @@
 """What one user has open: the population figure, the person shown (if any),
-the strength sheet, the warnings of the last file read, and one undo journal.
+the strength sheets (StrengthSheets), the warnings of the last file read, and
+one undo journal (Journal).
 
 Every edit goes through a Session method: the edit runs first and an undo
 entry is recorded only once it has been accepted, so a refused edit leaves
