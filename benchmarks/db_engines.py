@@ -15,7 +15,8 @@ people by each engine sass can use, side by side in one run:
 
     python benchmarks/db_engines.py [--cache DIR] [--sizes 1000000,5000000]
 
-The databases are benchmarks/db_scale.py's (built once into DIR and reused).
+The databases are benchmarks/scale_databases.py's (built once into DIR and
+reused), as benchmarks/db_scale.py's.
 """
 
 from __future__ import annotations
@@ -25,13 +26,12 @@ import os
 import platform
 import shutil
 import sqlite3
-import statistics
 import sys
 import time
 from pathlib import Path
 
 from db_million import SAMPLE
-from db_scale import database
+from scale_databases import database, median_time
 
 from sass_tui.db import accelerator
 from sass_tui.db.query import Query, compile_query
@@ -39,15 +39,6 @@ from sass_tui.db.schema import connect
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from _postgres import running_cluster, why_not
-
-
-def median_time(fn, runs: int = 5) -> tuple[float, object]:
-    times, result = [], None
-    for _ in range(runs):
-        t0 = time.perf_counter()
-        result = fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times), result
 
 
 def sqlite_count(conn: sqlite3.Connection) -> int:

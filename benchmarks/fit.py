@@ -18,12 +18,11 @@ from __future__ import annotations
 
 import argparse
 import statistics
-import tempfile
+import sys
 import time
 from collections.abc import Callable
 from pathlib import Path
 
-from sass_tui.db.default import create_default_database
 from sass_tui.db.fit import fit_test, load_family
 from sass_tui.db.predict import open_predictor
 from sass_tui.db.query import run_query
@@ -32,6 +31,9 @@ from sass_tui.model.accommodation import write_family
 from sass_tui.model.figfile import write_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.hanim import export_hanim
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+from scripts.default_database import add_db_option, default_database
 
 SEAT = (
     "stature <= 190 cm AND measure.sittingheight <= 100 cm "
@@ -51,15 +53,10 @@ def median_ms(func: Callable[[], object], runs: int) -> tuple[float, float]:
 
 def main() -> None:
     parser = argparse.ArgumentParser()
-    parser.add_argument("--db", help="database (default: the default database, built now)")
+    add_db_option(parser)
     parser.add_argument("--runs", type=int, default=20)
     args = parser.parse_args()
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(args.db) if args.db else Path(tmp) / "default.db"
-        if not args.db:
-            start = time.perf_counter()
-            create_default_database(path)
-            print(f"built the default database in {time.perf_counter() - start:.1f} s")
+    with default_database(args.db) as (path, out):
         conn = connect(path)
         fit_test(conn, SEAT)  # the query grammar is built once per process
         base, base_best = median_ms(lambda: run_query(conn, SEAT).count(), args.runs)
@@ -77,7 +74,6 @@ def main() -> None:
             f"prediction model, first use (fit and cache beside the database): "
             f"{(time.perf_counter() - start) * 1000:.0f} ms"
         )
-        out = Path(tmp)
         family_runs = max(3, args.runs // 4)
 
         def one_figure() -> None:

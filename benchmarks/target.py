@@ -16,13 +16,10 @@ from __future__ import annotations
 
 import argparse
 import sys
-import tempfile
-import time
 from pathlib import Path
 
 from fit import median_ms  # benchmarks/fit.py: the one timing helper of both
 
-from sass_tui.db.default import create_default_database
 from sass_tui.db.fit import fit_test
 from sass_tui.db.schema import connect
 from sass_tui.db.targets import load_target, make_target, store_target
@@ -31,6 +28,7 @@ from sass_tui.model.target_sample import read_sample
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from scripts.default_database import add_db_option, default_database  # noqa: E402
 from scripts.target_accuracy import civilian_women  # noqa: E402
 
 SEAT = (
@@ -50,17 +48,12 @@ def sample_text(rows: int) -> str:
 
 def main() -> None:
     parser = argparse.ArgumentParser()
-    parser.add_argument("--db", help="database (default: the default database, built now)")
+    add_db_option(parser)
     parser.add_argument("--runs", type=int, default=10)
     args = parser.parse_args()
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(args.db) if args.db else Path(tmp) / "default.db"
-        if not args.db:
-            start = time.perf_counter()
-            create_default_database(path)
-            print(f"built the default database in {time.perf_counter() - start:.1f} s")
+    with default_database(args.db) as (path, tmp):
         conn = connect(path)
-        csv_path = Path(tmp) / "sample.csv"
+        csv_path = tmp / "sample.csv"
         csv_path.write_text(sample_text(ROWS), encoding="utf-8")
 
         def make() -> None:

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import argparse
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -24,11 +23,11 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from sass_tui.db.default import create_default_database  # noqa: E402
 from sass_tui.db.schema import connect  # noqa: E402
 from sass_tui.db.targets import make_target  # noqa: E402
 from sass_tui.model.target_sample import Sample  # noqa: E402
 from sass_tui.model.targets import weighted_percentile  # noqa: E402
+from scripts.default_database import add_db_option, default_database  # noqa: E402
 
 # U.S. civilian-like adult women: mean stature 160.5 cm (SD 6.8), median
 # mass 74 kg (log SD 0.19), correlation 0.3 between stature and log mass.
@@ -49,13 +48,10 @@ def civilian_women(rows: int, seed: int) -> np.ndarray:
 
 def main() -> None:
     parser = argparse.ArgumentParser()
-    parser.add_argument("--db", help="database (default: the default database, built now)")
+    add_db_option(parser)
     parser.add_argument("--seeds", type=int, default=5)
     args = parser.parse_args()
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(args.db) if args.db else Path(tmp) / "default.db"
-        if not args.db:
-            create_default_database(path)
+    with default_database(args.db, say_build_time=False) as (path, _tmp):
         conn = connect(path)
         from sass_tui.db.values import load_values
 

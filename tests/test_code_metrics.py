@@ -1,5 +1,5 @@
-"""The UI stays in pieces a reader can hold: no module in sass_tui/ui/ over
-500 lines, no class there with over 30 methods of its own
+"""The code stays in pieces a reader can hold: no module in sass_tui/ui/ over
+500 lines, no class anywhere in sass_tui with over 30 methods of its own
 (scripts/code_metrics.py, docs/architecture.md "Screens in pieces")."""
 
 from __future__ import annotations
@@ -19,8 +19,10 @@ def test_no_ui_module_is_over_the_limit():
     assert over == []
 
 
-def test_no_ui_class_has_over_the_limit_of_methods():
-    classes = [c for c in METRICS["class_method_counts"]() if c[0].startswith("sass_tui/ui/")]
+def test_no_class_has_over_the_limit_of_methods():
+    classes = METRICS["class_method_counts"]()
+    # Every layer is measured, not the UI alone (the model's Figure and Session too).
+    assert {c[0].split("/")[1] for c in classes} >= {"cli", "db", "model", "ui"}
     over = [c for c in classes if c[2] > METRICS["MAX_METHODS"]]
     assert over == []
 

@@ -86,7 +86,7 @@ def test_the_first_screen_is_drawn_before_numpy_is_imported():
         "drawn = SpreadsheetScreen._first_screen_drawn\n"
         "def first_screen_drawn(screen):\n"
         "    seen['numpy'] = 'numpy' in sys.modules\n"
-        "    seen['strength'] = screen.session.made_strength_sheet() is not None\n"
+        "    seen['strength'] = screen.session.strength_sheets.made() is not None\n"
         "    drawn(screen)\n"
         "SpreadsheetScreen._first_screen_drawn = first_screen_drawn\n"
         "async def first_screen():\n"
@@ -94,7 +94,7 @@ def test_the_first_screen_is_drawn_before_numpy_is_imported():
         "    async with app.run_test(size=(120, 40)) as pilot:\n"
         "        await pilot.pause()\n"
         "        assert app.spreadsheet.figure_panel.outlines\n"
-        "        seen['strength after'] = app.session.made_strength_sheet() is not None\n"
+        "        seen['strength after'] = app.session.strength_sheets.made() is not None\n"
         "asyncio.run(first_screen())\n"
         "print(sorted(seen.items()), 'numpy' in sys.modules)\n"
     )

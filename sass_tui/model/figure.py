@@ -31,9 +31,12 @@ from sass_tui.model.names import (
     Row,
 )
 from sass_tui.model.percentile import (
+    Cell,
+    Grid,
     cell_percentile_of,
     cell_value_at,
     check_percentile,
+    grid_at,
     percentile_of,
     value_at,
 )
@@ -47,9 +50,6 @@ from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS, HANDEDNESS, STRENGT
 
 if TYPE_CHECKING:
     import numpy as np
-
-# A group's (rows, 3 axes) cells in plain floats, before numpy is wanted.
-Grid = list[list[float]]
 
 # A stature outside these is a typing error (2 for 200, metres for cm), not a person.
 MIN_STATURE_CM = 50.0
@@ -116,6 +116,27 @@ class GroupState:
     def rows(self) -> tuple[Row, ...]:
         return ROWS[self.group]
 
+    # --- the population's statistics at a gender: the percentile model's input ---
+    def stats(self, gender: str) -> np.ndarray:
+        """(rows, 3, 3): each cell's stored 5th/50th/95th values."""
+        assert self.source is not None, f"{self.group} not loaded"
+        return self.source.stats(gender)
+
+    def cell_stats(self, gender: str, row: int, axis: int) -> Cell:
+        assert self.source is not None, f"{self.group} not loaded"
+        return self.source.cell(gender, row, axis)
+
+    def rescale(self, gender: str) -> None:
+        """Every cell at the group percentile, in plain floats; nothing loaded
+        when the population has no statistics for the gender."""
+        source = self.source
+        if source is None or not source.has(gender):
+            self.values = self.percentiles = None
+            return
+        self.values, self.percentiles = grid_at(
+            lambda row, axis: source.cell(gender, row, axis), len(self.rows), self.percentile
+        )
+
 
 @dataclass
 class Figure:
@@ -167,7 +188,7 @@ class Figure:
         state.source = data
         if group == GIRTH and self.person is None:
             self.population = data.title
-        self._rescale(state)
+        state.rescale(self.gender)
         girth, cmass = self.groups[GIRTH].source, self.groups[CENTER_OF_MASS].source
         if group in (GIRTH, CENTER_OF_MASS) and girth is not None and cmass is not None:
             # appendix L.1's rules tie the two files: say what they find on loading either
@@ -241,8 +262,12 @@ class Figure:
             if value is not None:
                 person.set_strength_parameter(parameter, value)
         person.mass, person.stature = float(mass), float(stature)
-        person.mass_percentile = person._global_percentile("mass", mass)
-        person.stature_percentile = person._global_percentile("stature", stature)
+        person.mass_percentile = _global_percentile(
+            person.global_stats, person.gender, "mass", mass
+        )
+        person.stature_percentile = _global_percentile(
+            person.global_stats, person.gender, "stature", stature
+        )
         return person
 
     # --- global data -----------------------------------------------------
@@ -250,7 +275,7 @@ class Figure:
         gender = _check_choice(gender, GENDERS, "gender")
         self.gender = gender
         for state in self.groups.values():
-            self._rescale(state)
+            state.rescale(self.gender)
         self._reset_globals()
 
     def set_figure_type(self, figure_type: str) -> None:
@@ -260,12 +285,12 @@ class Figure:
         if not kg > 0:
             raise FigureError(f"mass must be positive, got {kg:g} kg")
         self.mass = float(kg)
-        self.mass_percentile = self._global_percentile("mass", kg)
+        self.mass_percentile = _global_percentile(self.global_stats, self.gender, "mass", kg)
 
     def set_mass_percentile(self, p: float) -> None:
         check_percentile(p)
         self.mass_percentile = float(p)
-        self.mass = self._global_value("mass", p)
+        self.mass = _global_value(self.global_stats, self.gender, "mass", p)
 
     def set_stature(self, cm: float) -> None:
         if not MIN_STATURE_CM <= cm <= MAX_STATURE_CM:
@@ -274,12 +299,12 @@ class Figure:
                 f"{MIN_STATURE_CM:g}-{MAX_STATURE_CM:g} cm"
             )
         self.stature = float(cm)
-        self.stature_percentile = self._global_percentile("stature", cm)
+        self.stature_percentile = _global_percentile(self.global_stats, self.gender, "stature", cm)
 
     def set_stature_percentile(self, p: float) -> None:
         check_percentile(p)
         self.stature_percentile = float(p)
-        self.stature = self._global_value("stature", p)
+        self.stature = _global_value(self.global_stats, self.gender, "stature", p)
 
     def set_strength_parameter(self, name: str, value: str | float) -> None:
         if name == "strength_type":
@@ -301,32 +326,34 @@ class Figure:
         check_percentile(p)
         state = self.groups[group]
         state.percentile = float(p)
-        self._rescale(state)
+        state.rescale(self.gender)
         if group == GIRTH:
             self.hand_set_lengths = frozenset(row.name for row in state.rows)
 
     def set_value(self, group: str, row: int, axis: int, value: float) -> None:
         """Set one cell's value (canonical unit); its percentile follows.  A
         segment size (girth) must be positive."""
-        state = self._cell(group, row, axis)
+        state = self.check_cell(group, row, axis)
         if group == GIRTH and not value > 0:
             raise FigureError(
                 f"{state.rows[row].label} {'xyz'[axis]}: a segment size must be "
                 f"positive, got {value:g} cm"
             )
         values, percentiles = state.values, state.percentiles
-        assert values is not None and percentiles is not None  # _cell: loaded
+        assert values is not None and percentiles is not None  # check_cell: loaded
         values[row, axis] = value
-        percentiles[row, axis] = cell_percentile_of(*self._cell_stats(state, row, axis), value)
+        percentiles[row, axis] = cell_percentile_of(
+            *state.cell_stats(self.gender, row, axis), value
+        )
         self._hand_set(group, row, axis)
 
     def set_cell_percentile(self, group: str, row: int, axis: int, p: float) -> None:
         """Set one cell's percentile; its value follows."""
         check_percentile(p)
-        state = self._cell(group, row, axis)
+        state = self.check_cell(group, row, axis)
         values, percentiles = state.values, state.percentiles
-        assert values is not None and percentiles is not None  # _cell: loaded
-        values[row, axis] = cell_value_at(*self._cell_stats(state, row, axis), float(p))
+        assert values is not None and percentiles is not None  # check_cell: loaded
+        values[row, axis] = cell_value_at(*state.cell_stats(self.gender, row, axis), float(p))
         percentiles[row, axis] = p
         self._hand_set(group, row, axis)
 
@@ -334,9 +361,16 @@ class Figure:
         if group == GIRTH and axis == 2:
             self.hand_set_lengths = self.hand_set_lengths | {ROWS[GIRTH][row].name}
 
-    def check_cell(self, group: str, row: int, axis: int) -> None:
-        """Raise FigureError when the cell cannot be edited (no data, or 999)."""
-        self._cell(group, row, axis)
+    def check_cell(self, group: str, row: int, axis: int) -> GroupState:
+        """The cell's group; FigureError when the cell cannot be edited (no
+        data, or 999)."""
+        state = self.groups[group]
+        if not state.loaded:
+            raise FigureError(f"{GROUP_TITLES[group]} has no {self.gender} data loaded")
+        if math.isnan(state.cell_stats(self.gender, row, axis)[1]):
+            what = "no motion about this axis" if group == JOINT_LIMITS else "no value here"
+            raise FigureError(f"{state.rows[row].label} {'xyz'[axis]}: {what}")
+        return state
 
     def set_unit(self, group: str, unit: str) -> None:
         if unit not in GROUP_UNITS[group]:
@@ -362,7 +396,7 @@ class Figure:
 
         state = self.groups[group]
         assert state.values is not None, f"{group} not loaded"  # callers check missing_groups()
-        population = value_at(self._stats(state), state.percentile)
+        population = value_at(state.stats(self.gender), state.percentile)
         filled = np.isnan(state.values) & ~np.isnan(population)
         return np.where(filled, population, state.values), filled
 
@@ -370,7 +404,7 @@ class Figure:
         """The total mass for output: when a person's is unknown, the
         population's median."""
         if math.isnan(self.mass):
-            return self._global_value("mass", 50.0)
+            return _global_value(self.global_stats, self.gender, "mass", 50.0)
         return self.mass
 
     def value(self, group: str, row_name: str, axis: int) -> float:
@@ -399,57 +433,33 @@ class Figure:
             self.groups[group].unit = unit
 
     # --- internals -----------------------------------------------------------
-    def _rescale(self, state: GroupState) -> None:
-        source = state.source
-        if source is None or not source.has(self.gender):
-            state.values = state.percentiles = None
-            return
-        p = state.percentile
-        values = [
-            [cell_value_at(*source.cell(self.gender, row, axis), p) for axis in range(3)]
-            for row in range(len(state.rows))
-        ]
-        state.values = values
-        state.percentiles = [[math.nan if math.isnan(v) else p for v in row] for row in values]
-
-    def _stats(self, state: GroupState) -> np.ndarray:
-        assert state.source is not None, f"{state.group} not loaded"
-        return state.source.stats(self.gender)
-
-    def _cell_stats(self, state: GroupState, row: int, axis: int) -> tuple[float, float, float]:
-        assert state.source is not None, f"{state.group} not loaded"
-        return state.source.cell(self.gender, row, axis)
-
-    def _cell(self, group: str, row: int, axis: int) -> GroupState:
-        state = self.groups[group]
-        if not state.loaded:
-            raise FigureError(f"{GROUP_TITLES[group]} has no {self.gender} data loaded")
-        if math.isnan(self._cell_stats(state, row, axis)[1]):
-            what = "no motion about this axis" if group == JOINT_LIMITS else "no value here"
-            raise FigureError(f"{state.rows[row].label} {'xyz'[axis]}: {what}")
-        return state
-
     def _reset_globals(self) -> None:
         if self.global_stats is None or not self.global_stats.has(self.gender):
             return
-        self.mass = self._global_value("mass", self.mass_percentile)
-        self.stature = self._global_value("stature", self.stature_percentile)
+        self.mass = _global_value(self.global_stats, self.gender, "mass", self.mass_percentile)
+        self.stature = _global_value(
+            self.global_stats, self.gender, "stature", self.stature_percentile
+        )
 
-    def _global_stats_cell(self, name: str) -> tuple[float, float, float]:
-        if self.global_stats is None or not self.global_stats.has(self.gender):
-            raise FigureError(f"no {self.gender} {name} statistics loaded")
-        index = [r.name for r in ROWS[GLOBAL]].index(name)
-        return self.global_stats.cell(self.gender, index, 0)
 
-    def _global_value(self, name: str, p: float) -> float:
-        check_percentile(p)
-        return cell_value_at(*self._global_stats_cell(name), float(p))
+# --- stature and mass against the global statistics (global.dat's rows) -----
+def _global_cell(stats: PopulationData | None, gender: str, name: str) -> Cell:
+    if stats is None or not stats.has(gender):
+        raise FigureError(f"no {gender} {name} statistics loaded")
+    return stats.cell(gender, [r.name for r in ROWS[GLOBAL]].index(name), 0)
 
-    def _global_percentile(self, name: str, value: float) -> float:
-        try:
-            return cell_percentile_of(*self._global_stats_cell(name), float(value))
-        except FigureError:
-            return float("nan")
+
+def _global_value(stats: PopulationData | None, gender: str, name: str, p: float) -> float:
+    check_percentile(p)
+    return cell_value_at(*_global_cell(stats, gender, name), float(p))
+
+
+def _global_percentile(stats: PopulationData | None, gender: str, name: str, value: float) -> float:
+    """NaN when no global statistics are loaded: a size can be set without them."""
+    try:
+        return cell_percentile_of(*_global_cell(stats, gender, name), float(value))
+    except FigureError:
+        return float("nan")
 
 
 def _copy(cells: Grid | np.ndarray | None) -> Grid | np.ndarray | None:

@@ -74,6 +74,21 @@ def regular_file(text: str | Path, workdir: Path | None = None) -> Path:
     return path
 
 
+def read_user_text(text: str | Path) -> tuple[Path, str]:
+    """A data file the user names (a population or strength file): its path
+    (`regular_file`) and its text, UTF-8 or else Latin-1 (a file of the
+    report's time has no other).  PathError, `reason` saying why, when it
+    cannot be read."""
+    path = regular_file(text)
+    try:
+        return path, path.read_text(encoding="utf-8")
+    except UnicodeDecodeError:
+        return path, path.read_text(encoding="latin-1")
+    except OSError as exc:
+        reason = exc.strerror or str(exc)
+        raise PathError(f"{path}: cannot read: {reason}", reason) from None
+
+
 # --- sass's own directories ----------------------------------------------------------
 # platformdirs knows each system's place ($XDG_*_HOME or ~/.local/share,
 # ~/.cache, ~/.config on Linux; ~/Library/... on macOS; %LOCALAPPDATA% on

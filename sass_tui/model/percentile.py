@@ -15,6 +15,7 @@ over numpy arrays whose last axis holds (v5, v50, v95), with broadcasting.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from statistics import NormalDist
 from typing import TYPE_CHECKING
 
@@ -24,6 +25,11 @@ from sass_tui.model.floats import divide
 if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
+
+# One cell's stored (v5, v50, v95), and a group's (rows, 3 axes) cells in
+# plain floats, before numpy is wanted.
+Cell = tuple[float, float, float]
+Grid = list[list[float]]
 
 MIN_PERCENTILE = 0.5
 MAX_PERCENTILE = 99.5
@@ -112,6 +118,14 @@ def cell_percentile_of(v5: float, v50: float, v95: float, value: float) -> float
     else:
         return math.nan
     return _STANDARD.cdf(z) * 100.0
+
+
+def grid_at(cells: Callable[[int, int], Cell], rows: int, p: float) -> tuple[Grid, Grid]:
+    """A group of `rows` rows at percentile p, cell by cell in plain floats
+    (`cells(row, axis)` gives a cell's stored values): the values, and each
+    value's percentile (p; NaN where there is no value)."""
+    values = [[cell_value_at(*cells(row, axis), p) for axis in range(3)] for row in range(rows)]
+    return values, [[math.nan if math.isnan(v) else p for v in row] for row in values]
 
 
 def value_at(stats: npt.NDArray[np.float64], p: npt.ArrayLike) -> npt.NDArray[np.float64]:

@@ -35,7 +35,7 @@ from sass_tui.model.names import (
     label_lookup,
     normalise_label,
 )
-from sass_tui.model.paths import PathError, regular_file
+from sass_tui.model.paths import PathError, read_user_text
 from sass_tui.model.units import UnitError, finite_number
 from sass_tui.model.vocabulary import GENDERS
 
@@ -113,15 +113,9 @@ class PopulationData:
 
 def read_population_file(path: str | Path, group: str) -> PopulationData:
     try:
-        path = regular_file(path)  # a FIFO or a device (/dev/zero) would never end
+        path, text = read_user_text(path)
     except PathError as exc:
         raise PopulationFileError(f"{path}: cannot read: {exc.reason}") from None
-    try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError:
-        text = path.read_text(encoding="latin-1")
-    except OSError as exc:
-        raise PopulationFileError(f"{path}: cannot read: {exc.strerror or exc}") from None
     return parse_population_text(text, group, str(path))
 
 

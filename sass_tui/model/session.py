@@ -1,5 +1,6 @@
 """What one user has open: the population figure, the person shown (if any),
-the strength sheet, the warnings of the last file read, and one undo journal.
+the strength sheets (StrengthSheets), the warnings of the last file read, and
+one undo journal (Journal).
 
 Every edit goes through a Session method: the edit runs first and an undo
 entry is recorded only once it has been accepted, so a refused edit leaves
@@ -32,6 +33,144 @@ class JournalEntry:
     restore: Callable[[], None]
 
 
+class Journal:
+    """The undo journal: the last JOURNAL_LENGTH accepted edits, newest last.
+    Only the edits of what is shown (`live`: the figure, the strength sheet)
+    are undone; the others wait until theirs is shown again."""
+
+    def __init__(self) -> None:
+        self._entries: list[JournalEntry] = []
+
+    def record(self, target: object, restore: Callable[[], None]) -> None:
+        self._entries.append(JournalEntry(target, restore))
+        del self._entries[:-JOURNAL_LENGTH]
+
+    def can_undo(self, live: tuple[object, ...]) -> bool:
+        return any(_among(entry.target, live) for entry in self._entries)
+
+    def undo(self, live: tuple[object, ...]) -> bool:
+        """Undo the newest edit of one of `live`; False when there is none."""
+        for position in range(len(self._entries) - 1, -1, -1):
+            entry = self._entries[position]
+            if _among(entry.target, live):
+                del self._entries[position]
+                entry.restore()
+                return True
+        return False
+
+    def drop(self, targets: Iterable[object]) -> None:
+        """Forget the edits of what is gone (a person left, a sheet replaced)."""
+        gone = tuple(t for t in targets if t is not None)
+        self._entries = [e for e in self._entries if not _among(e.target, gone)]
+
+
+def _among(target: object, targets: tuple[object, ...]) -> bool:
+    # By identity: two figures with equal values are two figures.
+    return any(target is t for t in targets)
+
+
+class StrengthSheets:
+    """A session's strength sheets: the population's, and the one shown (the
+    population's, or a person's own, or none with the reason why: `missing`).
+    With `later`, the population's sheet is made when first asked for: the TUI
+    draws its first screen before the strength data are read, to start
+    sooner.  Each sheet computes against `figure()`, the figure shown."""
+
+    def __init__(
+        self,
+        sheet: StrengthSheet | None,
+        later: Callable[[], StrengthSheet | None] | None,
+        figure: Callable[[], Figure],
+    ) -> None:
+        self._later = later
+        self._figure = figure
+        self._shown = sheet
+        # The population's sheet, shown again after a person's own (Disp. Pop.).
+        self._population = sheet
+        # Why a person shown has no strength (None: the sheet is shown).
+        self.missing: str | None = None
+        if sheet is not None:
+            sheet.figure = figure()
+
+    @property
+    def shown(self) -> StrengthSheet | None:
+        """The sheet shown: the population's, or a person's own."""
+        self.make()
+        return self._shown
+
+    @property
+    def population(self) -> StrengthSheet | None:
+        self.make()
+        return self._population
+
+    def made(self) -> StrengthSheet | None:
+        """The sheet shown if it has been made, without making it (what the
+        first screen shows of it is what a new sheet shows: the right side)."""
+        return self._shown
+
+    def make(self) -> None:
+        """Make the population's strength sheet now, if it is still to be made."""
+        make, self._later = self._later, None
+        if make is None:
+            return
+        sheet = make()
+        if sheet is not None:
+            sheet.figure = self._figure()
+        self._shown = self._population = sheet
+
+    def require(self) -> StrengthSheet:
+        sheet = self.shown
+        if sheet is None:
+            # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
+            from sass_tui.model.strength import StrengthError
+
+            raise StrengthError("strength data is not loaded")
+        return sheet
+
+    def load(self, data: StrengthData) -> tuple[StrengthSheet, StrengthSheet | None]:
+        """A new population sheet from a strength file, and the one it replaces:
+        the view settings (side, unit, percentile, factor) survive; the angles
+        are the new file's."""
+        # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
+        from sass_tui.model.strength import StrengthSheet
+
+        sheet = StrengthSheet(data, self._figure())
+        old = self.shown
+        if old is not None:
+            sheet.side, sheet.unit = old.side, old.unit
+            sheet.percentile, sheet.non_dominant_factor = old.percentile, old.non_dominant_factor
+        self._shown = self._population = sheet
+        self.missing = None
+        return sheet, old
+
+    def show_own(self, person: Figure, own_strength: StrengthData | str | None) -> None:
+        """A person's own sheet (shown on the population's side and unit), or
+        none and why (a sentence), or (None) the population's kept."""
+        if isinstance(own_strength, str):
+            self.make()
+            self._shown, self.missing = None, own_strength
+        elif own_strength is not None:
+            # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
+            from sass_tui.model.strength import StrengthSheet
+
+            sheet = StrengthSheet(own_strength, person)
+            shown = self.population
+            if shown is not None:
+                sheet.side, sheet.unit = shown.side, shown.unit
+            self._shown = sheet
+
+    def show_population(self) -> StrengthSheet | None:
+        """Back to the population's sheet; the person's own one it leaves, if any."""
+        left = self.shown
+        self._shown, self.missing = self._population, None
+        return left if left is not self._population else None
+
+    def follow(self, figure: Figure) -> None:
+        """The sheet shown computes against `figure` (the figure now shown)."""
+        if self.shown is not None:
+            self.shown.figure = figure
+
+
 class Session:
     def __init__(
         self,
@@ -41,58 +180,18 @@ class Session:
         strength_later: Callable[[], StrengthSheet | None] | None = None,
     ) -> None:
         """`strength_later` makes the population's strength sheet when it is
-        first asked for, instead of `strength_sheet` now: the TUI draws its
-        first screen before the strength data are read, to start sooner."""
+        first asked for, instead of `strength_sheet` now (StrengthSheets)."""
         self.population = population
         self.person: Figure | None = None
         self.person_index = 0
-        self._strength_later = strength_later
-        self._strength_sheet = strength_sheet
-        # The population's sheet, shown again after a person's own (Disp. Pop.).
-        self._population_strength = strength_sheet
-        # Why a person shown has no strength (None: the sheet is shown).
-        self.strength_missing: str | None = None
-        if strength_sheet is not None:
-            strength_sheet.figure = population
+        self.strength_sheets = StrengthSheets(strength_sheet, strength_later, lambda: self.figure)
         self.warnings: list[str] = []
-        self._journal: list[JournalEntry] = []
+        self._journal = Journal()
 
-    # --- the strength sheets, made on first use with strength_later ------------
     @property
     def strength_sheet(self) -> StrengthSheet | None:
         """The sheet shown: the population's, or a person's own."""
-        self.make_strength_sheet()
-        return self._strength_sheet
-
-    @strength_sheet.setter
-    def strength_sheet(self, sheet: StrengthSheet | None) -> None:
-        self.make_strength_sheet()
-        self._strength_sheet = sheet
-
-    @property
-    def population_strength(self) -> StrengthSheet | None:
-        self.make_strength_sheet()
-        return self._population_strength
-
-    @population_strength.setter
-    def population_strength(self, sheet: StrengthSheet | None) -> None:
-        self.make_strength_sheet()
-        self._population_strength = sheet
-
-    def made_strength_sheet(self) -> StrengthSheet | None:
-        """The sheet shown if it has been made, without making it (what the
-        first screen shows of it is what a new sheet shows: the right side)."""
-        return self._strength_sheet
-
-    def make_strength_sheet(self) -> None:
-        """Make the population's strength sheet now, if it is still to be made."""
-        make, self._strength_later = self._strength_later, None
-        if make is None:
-            return
-        sheet = make()
-        if sheet is not None:
-            sheet.figure = self.figure
-        self._strength_sheet = self._population_strength = sheet
+        return self.strength_sheets.shown
 
     @property
     def figure(self) -> Figure:
@@ -100,27 +199,14 @@ class Session:
         return self.person if self.person is not None else self.population
 
     # --- the undo journal ----------------------------------------------------
-    def _record(self, target: object, restore: Callable[[], None]) -> None:
-        self._journal.append(JournalEntry(target, restore))
-        del self._journal[:-JOURNAL_LENGTH]
-
-    def _live(self, entry: JournalEntry) -> bool:
-        # The sheet as it stands: an entry for it exists only once it is made.
-        return entry.target is self.figure or entry.target is self._strength_sheet
-
     def can_undo(self) -> bool:
-        return any(self._live(entry) for entry in self._journal)
+        # The sheet as it stands: an entry for it exists only once it is made.
+        return self._journal.can_undo((self.figure, self.strength_sheets.made()))
 
     def undo(self) -> bool:
         """Undo the newest edit of what is shown (figure or strength angle).
         False when there is none."""
-        for position in range(len(self._journal) - 1, -1, -1):
-            entry = self._journal[position]
-            if self._live(entry):
-                del self._journal[position]
-                entry.restore()
-                return True
-        return False
+        return self._journal.undo((self.figure, self.strength_sheets.made()))
 
     def _edit_figure(self, edit: Callable[[Figure], T]) -> T:
         figure = self.figure
@@ -130,7 +216,7 @@ class Session:
         except BaseException:
             figure.restore(before)
             raise
-        self._record(figure, lambda: figure.restore(before))
+        self._journal.record(figure, lambda: figure.restore(before))
         return result
 
     # --- figure edits ------------------------------------------------------------
@@ -180,40 +266,23 @@ class Session:
 
     # --- the strength sheet ---------------------------------------------------------
     def set_angle(self, row: int, column: int, text: str | float) -> StrengthRow:
-        sheet = self._require_strength()
+        sheet = self.strength_sheets.require()
         old = float(sheet.angles[row, column])
         result = sheet.set_angle(row, column, text)
 
         def restore() -> None:
             sheet.angles[row, column] = old
 
-        self._record(sheet, restore)
+        self._journal.record(sheet, restore)
         return result
 
     def load_strength(self, data: StrengthData) -> StrengthSheet:
-        """A new strength file: the view settings (side, unit, percentile,
-        factor) survive; the angles are the new file's."""
-        # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
-        from sass_tui.model.strength import StrengthSheet
-
-        sheet = StrengthSheet(data, self.figure)
-        old = self.strength_sheet
-        if old is not None:
-            sheet.side, sheet.unit = old.side, old.unit
-            sheet.percentile, sheet.non_dominant_factor = old.percentile, old.non_dominant_factor
-        self.strength_sheet = self.population_strength = sheet
-        self.strength_missing = None
-        self._drop_entries_of([old])
+        """A new strength file (StrengthSheets.load); the old sheet's edits are
+        forgotten."""
+        sheet, old = self.strength_sheets.load(data)
+        self._journal.drop([old])
         self.warnings = list(data.warnings)
         return sheet
-
-    def _require_strength(self) -> StrengthSheet:
-        if self.strength_sheet is None:
-            # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
-            from sass_tui.model.strength import StrengthError
-
-            raise StrengthError("strength data is not loaded")
-        return self.strength_sheet
 
     # --- the person shown ----------------------------------------------------------------
     def show_person(
@@ -226,34 +295,13 @@ class Session:
         strength (a predicted figure)."""
         self._leave_person()
         self.person, self.person_index = person, index
-        if isinstance(own_strength, str):
-            self.strength_sheet, self.strength_missing = None, own_strength
-        elif own_strength is not None:
-            # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
-            from sass_tui.model.strength import StrengthSheet
-
-            sheet = StrengthSheet(own_strength, person)
-            shown = self.population_strength
-            if shown is not None:
-                sheet.side, sheet.unit = shown.side, shown.unit
-            self.strength_sheet = sheet
-        self._follow_figure()
+        self.strength_sheets.show_own(person, own_strength)
+        self.strength_sheets.follow(self.figure)
 
     def show_population(self) -> None:
         self._leave_person()
         self.person = None
-        self._follow_figure()
+        self.strength_sheets.follow(self.figure)
 
     def _leave_person(self) -> None:
-        if self.strength_sheet is not self.population_strength:
-            self._drop_entries_of([self.strength_sheet])
-        self._drop_entries_of([self.person])
-        self.strength_sheet, self.strength_missing = self.population_strength, None
-
-    def _follow_figure(self) -> None:
-        if self.strength_sheet is not None:
-            self.strength_sheet.figure = self.figure
-
-    def _drop_entries_of(self, targets: Iterable[object]) -> None:
-        gone = [t for t in targets if t is not None]
-        self._journal = [e for e in self._journal if not any(e.target is t for t in gone)]
+        self._journal.drop([self.strength_sheets.show_population(), self.person])

@@ -41,7 +41,7 @@ from sass_tui.model import published_strength as published
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH, Row, normalise_label, row_index
-from sass_tui.model.paths import PathError, regular_file
+from sass_tui.model.paths import PathError, read_user_text
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
 from sass_tui.model.published_strength import EXAMPLE_SOURCE
@@ -191,17 +191,12 @@ def default_path() -> Path:
 
 
 def read_strength_file(path: str | Path | None = None) -> StrengthData:
-    try:  # a FIFO or a device (/dev/zero) would never end
-        path = regular_file(path) if path is not None else default_path()
-    except PathError as exc:
-        raise StrengthFileError(f"{path}: cannot read: {exc.reason}") from None
+    where = default_path() if path is None else path
     try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError:
-        text = path.read_text(encoding="latin-1")
-    except OSError as exc:
-        raise StrengthFileError(f"{path}: cannot read: {exc.strerror or exc}") from None
-    return parse_strength_text(text, str(path))
+        read, text = read_user_text(where)
+    except PathError as exc:
+        raise StrengthFileError(f"{where}: cannot read: {exc.reason}") from None
+    return parse_strength_text(text, str(read))
 
 
 def motion_index(text: str) -> int:

@@ -95,7 +95,7 @@ class SassApp(App):
     @property
     def strength_error(self) -> str:
         """What to say when the strength sheet is asked for and there is none."""
-        self.session.make_strength_sheet()
+        self.session.strength_sheets.make()
         return self._strength_error
 
     def _make_strength_sheet(self, figure: Figure, path: str | Path | None) -> StrengthSheet | None:
@@ -139,7 +139,7 @@ class SassApp(App):
         nothing has asked for it yet); the collector, held off while starting
         (cli.run_tui), runs again; what the start made is frozen out of its
         walks, since it lives as long as the app."""
-        self.session.make_strength_sheet()
+        self.session.strength_sheets.make()
         if not gc.isenabled():
             gc.freeze()
             gc.enable()

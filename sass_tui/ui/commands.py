@@ -43,7 +43,7 @@ def _conversion_label(screen) -> str:
 
 
 def _side_label(screen) -> str:
-    sheet = screen.session.made_strength_sheet()  # on the first screen: none yet
+    sheet = screen.session.strength_sheets.made()  # on the first screen: none yet
     side = sheet.side if sheet is not None else "right"
     other = "left" if side == "right" else "right"
     return f"{side.capitalize()} → {other.capitalize()}"

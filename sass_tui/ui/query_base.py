@@ -153,6 +153,18 @@ class QueryScreenBase(SassScreen):
             super().run_when_ready(action)
         self._when_open.clear()
 
+    def ready_lists(self) -> QueryLists | None:
+        """The open database's lists for a command that starts work on them;
+        None, saying why, while a query or an import runs or before the
+        database is open."""
+        if self.running:
+            self.say(WAIT)
+            return None
+        if self.lists is None:
+            self.say("The database is not open yet.")
+            return None
+        return self.lists
+
     @contextmanager
     def _database(self):
         """The lists, if no query or import is using the connection."""

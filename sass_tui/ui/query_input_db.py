@@ -11,7 +11,7 @@ from sass_tui.db.flatfile import FlatFiles
 from sass_tui.db.lists import DB_ERRORS, QueryLists
 from sass_tui.model.errors import SassError
 from sass_tui.ui.progress import Work
-from sass_tui.ui.query_base import WAIT, QueryScreenBase
+from sass_tui.ui.query_base import QueryScreenBase
 from sass_tui.ui.query_messages import ImportFinished
 
 # Input DB asks for these one by one (report §12.3.3); ESC at Strength
@@ -34,11 +34,7 @@ CANCELLED_UNCHANGED = "Input DB cancelled; the database is unchanged."
 class InputDbCommands(QueryScreenBase):
     def action_input_db(self) -> None:
         """Import person, group and strength files into the database."""
-        if self.running:
-            self.say(WAIT)
-            return
-        if self.lists is None:
-            self.say("The database is not open yet.")
+        if self.ready_lists() is None:
             return
         if self.sass_app.read_only:
             self.complain("Input DB is off: this database is served read-only (sass serve).")

@@ -19,12 +19,9 @@ from sass_tui.ui.query_messages import PopulationMade
 class PopulationCommands(QueryScreenBase):
     def action_choose_target(self) -> None:
         """Pick a target population: counts, Fit Test and Make Population weighted to it."""
-
-        if self.running or self.lists is None:
-            self.say(WAIT if self.running else "The database is not open yet.")
-            return
-
-        self.converse(self._choose_target(self.lists))
+        lists = self.ready_lists()
+        if lists is not None:
+            self.converse(self._choose_target(lists))
 
     async def _choose_target(self, lists: QueryLists) -> None:
         # deferred: ui.target_picker — only _choose_target() needs it; importing ui.query_population does not load it

@@ -200,11 +200,7 @@ class QueryScreen(InputDbCommands, PopulationCommands):
     # --- Query DB: the pop-up builder -------------------------------------------------
     def action_query_db(self) -> None:
         """Start a query of the database."""
-        if self.running:
-            self.say(WAIT)
-            return
-        if self.lists is None:
-            self.say("The database is not open yet.")
+        if self.ready_lists() is None:
             return
         self.awaiting_build = True
         self.builder = QueryBuilder()

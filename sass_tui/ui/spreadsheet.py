@@ -188,7 +188,11 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
         if self.message_line.prompting:
             return
         session = self.session
-        if group == STRENGTH and session.strength_sheet is None and not session.strength_missing:
+        if (
+            group == STRENGTH
+            and session.strength_sheet is None
+            and not session.strength_sheets.missing
+        ):
             self.complain(self.strength_error)
             return
         had_focus = self.focused is self.active_sheet
@@ -210,8 +214,8 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
         strength = self.session.strength_sheet
         if self.data_group == STRENGTH and strength is not None:
             message += f" {strength.side.capitalize()} limb: {strength.data.label}."
-        elif self.data_group == STRENGTH and self.session.strength_missing:
-            message += f" {self.session.strength_missing}"
+        elif self.data_group == STRENGTH and self.session.strength_sheets.missing:
+            message += f" {self.session.strength_sheets.missing}"
         self.say(message)
 
     # --- commands ---------------------------------------------------------------

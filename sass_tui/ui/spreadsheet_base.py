@@ -154,7 +154,7 @@ class SheetScreenBase(SassScreen):
             self.sheet.show_group(self.figure, self.data_group)
         else:  # hidden on the other pages (and the sheet made after the first screen)
             self.strength_page.show_sheet(
-                self.session.strength_sheet, self.session.strength_missing
+                self.session.strength_sheet, self.session.strength_sheets.missing
             )
         self.redraw_figure_panel()
 
@@ -203,7 +203,7 @@ class SheetScreenBase(SassScreen):
         # deferred: ui.strength_curve_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)
         from sass_tui.ui.strength_curve_screen import StrengthCurveScreen
 
-        sheet = self.session.made_strength_sheet()
+        sheet = self.session.strength_sheets.made()
         side = sheet.side if sheet is not None else "right"
         percentile = sheet.percentile if sheet is not None else 50.0
         screen = StrengthCurveScreen(self.session, side, percentile)

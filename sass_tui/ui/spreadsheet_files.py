@@ -101,11 +101,7 @@ class FileCommands(SheetScreenBase):
     def on_strength_read(self, event: StrengthRead) -> None:
         data = event.data
         self.session.load_strength(data)
-        self._warning_index = 0
-        self.refresh_screen()
-        self.say(f"Loaded strength from {data.path} ({data.title}).")
-        if self.session.warnings:
-            self._show_warning()
+        self._say_loaded("strength", data.path, data.title)
 
     def on_population_read(self, event: PopulationRead) -> None:
         group, data = event.group, event.data
@@ -121,9 +117,14 @@ class FileCommands(SheetScreenBase):
         except SassError as exc:
             self.complain(f"{exc}; {GROUP_TITLES[group]} unchanged.")
             return
+        self._say_loaded(GROUP_TITLES[group], data.path, data.title)
+
+    def _say_loaded(self, what: str, path: str, title: str) -> None:
+        """A file just loaded (Input Data): the screen redrawn, what was
+        loaded said, then the file's warnings one by one."""
         self._warning_index = 0
         self.refresh_screen()
-        self.say(f"Loaded {GROUP_TITLES[group]} from {data.path} ({data.title}).")
+        self.say(f"Loaded {what} from {path} ({title}).")
         if self.session.warnings:
             self._show_warning()
 

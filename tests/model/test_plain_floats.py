@@ -156,12 +156,12 @@ def test_a_strength_sheet_made_later_is_made_once_when_first_asked_for():
     sheet = StrengthSheet(read_strength_file(), Figure.default("female"))
     later = Made(sheet)
     session = Session(population, strength_later=later)
-    assert session.made_strength_sheet() is None and later.calls == 0
+    assert session.strength_sheets.made() is None and later.calls == 0
     assert not session.can_undo()  # the journal does not make it either
     assert later.calls == 0
     assert session.strength_sheet is sheet and later.calls == 1
     assert sheet.figure is population  # as a sheet given at once
-    assert session.population_strength is sheet and later.calls == 1
+    assert session.strength_sheets.population is sheet and later.calls == 1
     session.set_angle(0, 0, "10")
     assert session.undo() and later.calls == 1
 
@@ -175,7 +175,7 @@ def test_a_strength_sheet_set_before_it_is_made_stays():
     session = Session(Figure.default(), strength_later=later)
     sheet = session.load_strength(read_strength_file())
     assert later.calls == 1
-    assert session.strength_sheet is sheet and session.population_strength is sheet
+    assert session.strength_sheet is sheet and session.strength_sheets.population is sheet
     assert later.calls == 1
 
 

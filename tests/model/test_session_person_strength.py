@@ -33,7 +33,7 @@ def test_own_strength_replaces_the_population_s_and_comes_back():
     assert "P's own strength experiments" in own.title
     session.set_angle(0, 0, "10")
     session.show_population()
-    assert session.strength_sheet is population_sheet and session.strength_missing is None
+    assert session.strength_sheet is population_sheet and session.strength_sheets.missing is None
     assert not session.can_undo()  # the person's sheet and its edits are gone
 
 
@@ -43,7 +43,7 @@ def test_a_person_without_strength_says_why_and_a_prediction_keeps_the_populatio
     person = _person(session)
     session.show_person(person, 0, "P has no strength experiments")
     assert session.strength_sheet is None
-    assert session.strength_missing == "P has no strength experiments"
+    assert session.strength_sheets.missing == "P has no strength experiments"
     session.show_person(person, -1)  # a predicted figure: the population's strength
-    assert session.strength_sheet is population_sheet and session.strength_missing is None
+    assert session.strength_sheet is population_sheet and session.strength_sheets.missing is None
     assert population_sheet.figure is person

@@ -5,6 +5,9 @@ from __future__ import annotations
 
 from textual import events
 
+from sass_tui.ui.query_screen import QueryScreen
+from sass_tui.ui.widgets import MessageLine
+
 
 def message(app) -> str:
     """The message line of the screen shown."""
@@ -31,3 +34,25 @@ async def wait_until(pilot, condition, what) -> None:
             return
         await pilot.pause()
     raise AssertionError(what() if callable(what) else what)
+
+
+async def open_query_screen(pilot) -> QueryScreen:
+    """From the spreadsheet: Query DB, the database opened."""
+    await pilot.press("d")
+    await settle(pilot)
+    screen = pilot.app.screen
+    assert isinstance(screen, QueryScreen)
+    return screen
+
+
+async def typed_query(pilot, text: str) -> None:
+    """From the spreadsheet: Query DB, the builder, its query edited as
+    `text`, Done; the query screen stays, its list filled."""
+    app = pilot.app
+    await open_query_screen(pilot)
+    await pilot.press("d", "b", "e")
+    app.screen.query_one(MessageLine).answer.value = ""
+    await pilot.press(*text, "enter")
+    labels = [str(o.prompt) for o in app.screen.query_one("#popup-options").options]
+    await pilot.press(*["down"] * labels.index("Done"), "enter")
+    await settle(pilot)

@@ -4,29 +4,19 @@ driven by keys: the query screen selects a person, the spreadsheet shows them.""
 from __future__ import annotations
 
 import pytest
-from _screen import settle
+from _screen import typed_query
 
 from sass_tui.db.individual import fetch_individual, strength_measurements
 from sass_tui.db.schema import connect
 from sass_tui.model.strength import MOTION_NAMES
 from sass_tui.model.units import convert
 from sass_tui.ui.query_screen import QueryScreen
-from sass_tui.ui.widgets import MessageLine
 
 
 async def show_first_person_of(pilot, query: str) -> None:
     """Query screen: the query typed as text, Done, Select One, Exit; Disp. Indv."""
     app = pilot.app
-    await pilot.press("d")
-    await settle(pilot)
-    assert isinstance(app.screen, QueryScreen)
-    await pilot.press("d", "b", "e")
-    answer = app.screen.query_one(MessageLine).answer
-    answer.value = ""
-    await pilot.press(*query, "enter")
-    popup_labels = [str(o.prompt) for o in app.screen.query_one("#popup-options").options]
-    await pilot.press(*["down"] * popup_labels.index("Done"), "enter")
-    await settle(pilot)
+    await typed_query(pilot, query)
     await pilot.press("s", "e")  # Select One, Exit Query
     assert not isinstance(app.screen, QueryScreen)
     await pilot.press("v", "s")  # Disp. Indv., the Strength group

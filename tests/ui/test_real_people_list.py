@@ -6,28 +6,12 @@ person shown is titled as one."""
 from __future__ import annotations
 
 import pytest
-from _screen import message, settle
+from _screen import message, settle, typed_query
 
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect
 from sass_tui.ui.query_screen import ListSheet, QueryScreen
 from sass_tui.ui.widgets import GlobalPanel, MessageLine
-
-
-async def typed_query(pilot, text: str) -> None:
-    """Query DB, the builder, its query edited as text, Done."""
-    app = pilot.app
-    await pilot.press("d")
-    await settle(pilot)
-    assert isinstance(app.screen, QueryScreen)
-    await pilot.press("d", "b", "e")
-    answer = app.screen.query_one(MessageLine).answer
-    answer.value = ""
-    await pilot.press(*text, "enter")
-    options = app.screen.query_one("#popup-options").options
-    labels = [str(o.prompt) for o in options]
-    await pilot.press(*["down"] * labels.index("Done"), "enter")
-    await settle(pilot)
 
 
 @pytest.mark.slow

@@ -14,7 +14,7 @@ from textual.widget import Widget
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import AXES, GROUP_TITLES
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert
-from sass_tui.ui.widgets.editor import EditorKeys
+from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 from sass_tui.ui.widgets.formats import (
     format_cell_percentile,
     format_value,
@@ -38,13 +38,10 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
         "datasheet--page",
     }
     BINDINGS = [
-        Binding("up", "move(-1, 0)", show=False),
-        Binding("down", "move(1, 0)", show=False),
-        Binding("left", "move(0, -1)", show=False),
-        Binding("right", "move(0, 1)", show=False),
+        *CURSOR_BINDINGS,
         Binding("home", "jump(0)", show=False),
         Binding("end", "jump(-1)", show=False),
-        Binding("enter", "edit", "Edit", show=False),
+        EDIT_BINDING,
     ]
     HEADER_LINES = 2
     PAGE_ROWS = 25  # the report's fixed page
@@ -187,27 +184,24 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
         return Text("\n", no_wrap=True).join(lines)
 
     # --- input ----------------------------------------------------------
-    def on_click(self, event: events.Click) -> None:
-        offset = event.get_content_offset(self)
-        if offset is None:
-            return
-        row = self.page * self.page_size + offset.y - self.HEADER_LINES
-        if offset.y < self.HEADER_LINES or row >= min(
-            self.row_count, (self.page + 1) * self.page_size
-        ):
-            return
-        chosen = (self.cursor_row, self.cursor_column)
-        was_focused = self.has_focus  # not while a prompt has the keys
-        self.cursor_row = row
-        for column in range(self.COLUMNS):
-            start, width = self._column_start(column)
-            if start <= offset.x < start + width:
-                self.cursor_column = column
-        self.focus()
-        self.refresh()
-        # A click chooses the cell; a second click on it (or a double click) edits it.
-        if was_focused and (event.chain > 1 or chosen == (self.cursor_row, self.cursor_column)):
-            self.action_edit()
+    def cell_at(self, x: int, y: int) -> tuple[int, int] | None:
+        """(row, column); a click beside the columns keeps the cursor's column."""
+        row = self.page * self.page_size + y - self.HEADER_LINES
+        if y < self.HEADER_LINES or row >= min(self.row_count, (self.page + 1) * self.page_size):
+            return None
+        column = self.cursor_column
+        for candidate in range(self.COLUMNS):
+            start, width = self._column_start(candidate)
+            if start <= x < start + width:
+                column = candidate
+        return row, column
+
+    def chosen(self) -> tuple[int, int]:
+        return self.cursor_row, self.cursor_column
+
+    def choose(self, cell: object) -> None:
+        assert isinstance(cell, tuple)
+        self.cursor_row, self.cursor_column = cell
 
     def on_mouse_scroll_down(self, event: events.MouseScrollDown) -> None:
         event.stop()
@@ -227,14 +221,8 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
             self.cursor_row = row % self.row_count
             self.refresh()
 
-    def action_edit(self) -> None:
-        self.request_edit(self.EditRequested(self.cursor_row, self.cursor_column))
-
-    def start_typing(self, text: str) -> None:
-        self.request_edit(self.EditRequested(self.cursor_row, self.cursor_column, text))
+    def edit_request(self, initial: str) -> Message:
+        return self.EditRequested(self.cursor_row, self.cursor_column, initial)
 
     def on_resize(self) -> None:
-        self.refresh()
-
-    def on_focus(self) -> None:
         self.refresh()

@@ -5,12 +5,23 @@ screen's commands)."""
 from __future__ import annotations
 
 from textual import events
+from textual.binding import Binding
 from textual.message import Message
 
 from sass_tui.ui.textual_api import bindings_of
 
 # Characters that start typing a new number straight into the message line.
 NUMBER_START = set("0123456789.-+")
+
+# The keys each editing widget binds: the arrows move its cursor, Enter edits
+# the cell under it (a widget adds its own between them: DataSheet's Home/End).
+CURSOR_BINDINGS = [
+    Binding("up", "move(-1, 0)", show=False),
+    Binding("down", "move(1, 0)", show=False),
+    Binding("left", "move(0, -1)", show=False),
+    Binding("right", "move(0, 1)", show=False),
+]
+EDIT_BINDING = Binding("enter", "edit", "Edit", show=False)
 
 
 class TypedAhead(Message):
@@ -42,9 +53,32 @@ class EditorKeys:
     then until the widget loses the focus (the prompt took it) or the screen
     says no prompt came (`typing_done`), every key and paste is passed on as
     TypedAhead, never to a binding: `14in` typed fast edits the cell, it does
-    not open Input Data on the `i`."""
+    not open Input Data on the `i`.
+
+    The widget says what editing its cursor's cell asks for
+    (`edit_request`: its EditRequested message); Enter, a click on the chosen
+    cell and typing all ask with it.  A click chooses the cell under it
+    (`cell_at`, `chosen`, `choose`); a second click on it, or a double
+    click, edits it."""
 
     _typing_ahead = False
+
+    def edit_request(self, initial: str) -> Message:
+        """The message asking to edit the cell under the cursor, `initial`
+        being what was typed so far."""
+        raise NotImplementedError
+
+    def cell_at(self, x: int, y: int) -> object | None:
+        """The cell at (x, y) of the content; None off the cells."""
+        raise NotImplementedError
+
+    def chosen(self) -> object:
+        """The cell under the cursor, as `cell_at` names it."""
+        raise NotImplementedError
+
+    def choose(self, cell: object) -> None:
+        """Put the cursor on `cell` (one that `cell_at` gave)."""
+        raise NotImplementedError
 
     def request_edit(self, message: Message) -> None:
         self._typing_ahead = True
@@ -53,8 +87,11 @@ class EditorKeys:
     def typing_done(self) -> None:
         self._typing_ahead = False
 
+    def action_edit(self) -> None:
+        self.request_edit(self.edit_request(""))
+
     def start_typing(self, text: str) -> None:
-        raise NotImplementedError
+        self.request_edit(self.edit_request(text))
 
     def on_key(self, event: events.Key) -> None:
         if self._typing_ahead:
@@ -84,6 +121,22 @@ class EditorKeys:
             self.post_message(TypedAhead("paste", None, event.text))  # type: ignore[attr-defined]
         elif event.text.strip():
             self.start_typing(event.text.strip())
+
+    def on_click(self, event: events.Click) -> None:
+        offset = event.get_content_offset(self)  # type: ignore[arg-type]
+        cell = None if offset is None else self.cell_at(offset.x, offset.y)
+        if cell is None:
+            return
+        # Not while a prompt has the keys: the first click takes the focus back.
+        again = self.has_focus and (event.chain > 1 or cell == self.chosen())  # type: ignore[attr-defined]
+        self.choose(cell)
+        self.focus()  # type: ignore[attr-defined]
+        self.refresh()  # type: ignore[attr-defined]
+        if again:
+            self.action_edit()
+
+    def on_focus(self) -> None:
+        self.refresh()  # type: ignore[attr-defined]
 
     def on_blur(self) -> None:
         self._typing_ahead = False

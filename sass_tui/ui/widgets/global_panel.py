@@ -8,15 +8,13 @@ import math
 from dataclasses import dataclass
 
 from rich.text import Text
-from textual import events
-from textual.binding import Binding
 from textual.message import Message
 from textual.widget import Widget
 
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import GIRTH, STRENGTH
 from sass_tui.model.text import printable
-from sass_tui.ui.widgets.editor import EditorKeys
+from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 from sass_tui.ui.widgets.formats import (
     format_percentile,
 )
@@ -83,13 +81,7 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
         "globalpanel--cursor-blur",
         "globalpanel--readonly",
     }
-    BINDINGS = [
-        Binding("up", "move(-1, 0)", show=False),
-        Binding("down", "move(1, 0)", show=False),
-        Binding("left", "move(0, -1)", show=False),
-        Binding("right", "move(0, 1)", show=False),
-        Binding("enter", "edit", "Edit", show=False),
-    ]
+    BINDINGS = [*CURSOR_BINDINGS, EDIT_BINDING]
 
     class EditRequested(Message):
         def __init__(self, field: str, initial: str = "") -> None:
@@ -164,10 +156,8 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
             lines.append(line)
         return Text("\n", no_wrap=True).join(lines)
 
-    def on_click(self, event: events.Click) -> None:
-        offset = event.get_content_offset(self)
-        if offset is None:
-            return
+    def cell_at(self, x: int, y: int) -> GlobalCell | None:
+        """The cell whose label or value is at (x, y)."""
         for cell in GLOBAL_CELLS:
             start, span = self._slot_span(cell.slot)
             if cell.field == "population":
@@ -175,14 +165,16 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
             label_start = (
                 0 if cell.slot == 0 else start - self._label_b() if cell.slot == 2 else start
             )
-            if cell.row == offset.y and label_start <= offset.x < start + span:
-                again = self.has_focus and (event.chain > 1 or self.cursor == cell)
-                self.cursor = cell
-                self.focus()
-                self.refresh()
-                if again:  # a second click on the chosen value edits it
-                    self.action_edit()
-                return
+            if cell.row == y and label_start <= x < start + span:
+                return cell
+        return None
+
+    def chosen(self) -> GlobalCell:
+        return self.cursor
+
+    def choose(self, cell: object) -> None:
+        assert isinstance(cell, GlobalCell)
+        self.cursor = cell
 
     def action_move(self, rows: int, slots: int) -> None:
         here = self.cursor
@@ -199,11 +191,5 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
                 self.cursor = same_row[index]
         self.refresh()
 
-    def action_edit(self) -> None:
-        self.request_edit(self.EditRequested(self.cursor.field))
-
-    def start_typing(self, text: str) -> None:
-        self.request_edit(self.EditRequested(self.cursor.field, text))
-
-    def on_focus(self) -> None:
-        self.refresh()
+    def edit_request(self, initial: str) -> Message:
+        return self.EditRequested(self.cursor.field, initial)

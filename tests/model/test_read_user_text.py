@@ -1,0 +1,51 @@
+"""A population file and a strength file are read by one function
+(model/paths.py `read_user_text`): a regular file only (a FIFO would block
+forever), UTF-8 or else Latin-1, and the same words when one cannot be read."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from sass_tui.model import datasets
+from sass_tui.model.names import GIRTH
+from sass_tui.model.popfile import PopulationFileError, read_population_file
+from sass_tui.model.strength import StrengthFileError, read_strength_file
+
+
+def read_girth(path):
+    return read_population_file(path, GIRTH)
+
+
+READERS = [(read_girth, PopulationFileError), (read_strength_file, StrengthFileError)]
+
+
+@pytest.mark.parametrize(("read", "error"), READERS)
+def test_what_cannot_be_read_is_refused_alike(tmp_path, read, error):
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    with pytest.raises(error, match=f"^{fifo}: cannot read: not a regular file; give a data file$"):
+        read(fifo)
+    with pytest.raises(error, match=f"^{tmp_path}: cannot read: a directory; give a data file$"):
+        read(tmp_path)
+    missing = tmp_path / "missing.dat"
+    with pytest.raises(error, match=f"^{missing}: cannot read: no such file$"):
+        read(missing)
+
+
+def test_a_latin_1_population_file_is_read_as_latin_1(tmp_path):
+    shipped = datasets.path("girth.dat").read_bytes()
+    path = tmp_path / "montreal.dat"
+    path.write_bytes("C Équipe de Montréal\n".encode("latin-1") + shipped)
+    assert read_girth(path).title == "Équipe de Montréal"
+
+
+def test_a_latin_1_strength_file_is_read_as_latin_1(tmp_path):
+    shipped = datasets.path("strength.dat").read_text(encoding="utf-8")
+    path = tmp_path / "force.dat"
+    lines = shipped.split("\n")
+    title = next(k for k, line in enumerate(lines) if line.startswith("P"))
+    lines[title] = "P Données de Montréal"
+    path.write_bytes("\n".join(lines).encode("latin-1"))
+    assert read_strength_file(path).title == "Données de Montréal"
