@@ -631,9 +631,7 @@ class transaction:
 
 def row_counts(conn: Any) -> dict[str, int]:
     """The rows of each table of people, on either engine."""
-    from sass_tui.db.dialect import dialect_of
-
-    sqlite = dialect_of(conn) == "sqlite"
+    sqlite = isinstance(conn, sqlite3.Connection)
     return {
         t: conn.execute(f"SELECT count(*) FROM {t}").fetchone()[0]
         for t in PERSON_TABLES + ("person",)
