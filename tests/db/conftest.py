@@ -5,8 +5,8 @@ Both engines: a test that takes `engine_db` (a connection), `engine_target`
 `shared_target` runs twice, on SQLite and on PostgreSQL (the same answers on
 both is the contract; docs/architecture.md).  The PostgreSQL run skips, saying
 why, where no server can start (tests/_postgres.py's `why_not`).  Each test
-process imports the shipped data once per engine: SQLite's `shipped_db_file`
-(tests/conftest.py), PostgreSQL's template database (`sass db init`); a test
+process imports the shipped data once per engine (tests/conftest.py): SQLite's
+`shipped_db_file`, PostgreSQL's `postgres_template` (`sass db init`); a test
 that writes gets its own copy (`engine_target`: a file copy, `CREATE DATABASE
 ... TEMPLATE`), the read-only tests share one (`shared_target`, `engine_db`).
 
@@ -29,7 +29,6 @@ ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_FLAT = ROOT / "datasets" / "db"
 
 ENGINES = ("sqlite", "postgresql")
-_TEMPLATE = "sass_template"
 _copies = itertools.count()
 
 
@@ -85,18 +84,6 @@ def engine(request) -> str:
 
 
 @pytest.fixture(scope="session")
-def postgres_template(cluster) -> str:
-    """The shipped data in PostgreSQL, imported once per test process with `sass
-    db init`: the database every PostgreSQL test database is copied from (and
-    never connected to again: a template must have no sessions)."""
-    from sass_tui.cli import main
-
-    url = cluster.create_database(_TEMPLATE)
-    assert main(["db", "init", "--force", "--db", url]) == 0
-    return _TEMPLATE
-
-
-@pytest.fixture(scope="session")
 def shared_target(engine, request) -> str:
     """The address of the database the read-only tests of `engine` share."""
     if engine == "sqlite":
@@ -127,17 +114,23 @@ def _name_of(url: str) -> str:
     return url.rsplit("/", 1)[-1]
 
 
+@pytest.fixture(scope="session")
+def template_target(engine, request) -> str:
+    """The address to copy the default database of `engine` from (never open it:
+    PostgreSQL copies only a template nobody is connected to)."""
+    if engine == "sqlite":
+        return str(request.getfixturevalue("default_db_file"))
+    return str(request.getfixturevalue("cluster").url(request.getfixturevalue("postgres_template")))
+
+
 @pytest.fixture()
-def engine_target(engine, request, copy_database) -> Iterator[str]:
+def engine_target(engine, template_target, request, copy_database) -> Iterator[str]:
     """The address of a private copy of the default database on `engine` (the
     test may write to it), dropped after the test."""
-    if engine == "sqlite":
-        yield str(copy_database(str(request.getfixturevalue("default_db_file"))))
-        return
-    cluster = request.getfixturevalue("cluster")
-    url = copy_database(cluster.url(request.getfixturevalue("postgres_template")))
+    url = copy_database(template_target)
     yield url
-    cluster.drop_database(_name_of(url))
+    if engine == "postgresql":
+        request.getfixturevalue("cluster").drop_database(_name_of(url))
 
 
 def _opened(target: str) -> Iterator[object]:

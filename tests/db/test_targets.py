@@ -52,11 +52,11 @@ def sample() -> np.ndarray:
 
 
 @pytest.fixture(scope="module")
-def made(shared_target, copy_database, sample, tmp_path_factory) -> str:
+def made(template_target, copy_database, sample, tmp_path_factory) -> str:
     """A copy of the default database holding the target `civ`, on each engine:
     its address (the tests that write copy it again)."""
     folder = tmp_path_factory.mktemp("target")
-    db = copy_database(shared_target)
+    db = copy_database(template_target)
     csv_path = write_sample(folder / "civilian.csv", sample)
     assert main(["target", "civ", "--db", db, "--gender", "female", "--sample", str(csv_path)]) == 0
     return db
