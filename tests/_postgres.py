@@ -96,13 +96,23 @@ class Cluster:
     def url(self, database: str = "postgres") -> str:
         return f"postgresql://sass@127.0.0.1:{self.port}/{database}"
 
-    def create_database(self, name: str) -> str:
+    def create_database(self, name: str, template: str | None = None) -> str:
+        """A new database `name` (replacing one of that name): empty, or a copy
+        of the database `template` (a file copy on the server, fast; nobody
+        may be connected to `template` meanwhile)."""
+        import psycopg
+
+        copy = f' TEMPLATE "{template}"' if template else ""
+        with psycopg.connect(self.url(), autocommit=True) as conn:
+            conn.execute(f'DROP DATABASE IF EXISTS "{name}" WITH (FORCE)')
+            conn.execute(f'CREATE DATABASE "{name}"{copy}')
+        return self.url(name)
+
+    def drop_database(self, name: str) -> None:
         import psycopg
 
         with psycopg.connect(self.url(), autocommit=True) as conn:
             conn.execute(f'DROP DATABASE IF EXISTS "{name}" WITH (FORCE)')
-            conn.execute(f'CREATE DATABASE "{name}"')
-        return self.url(name)
 
     def remove(self) -> None:
         with contextlib.suppress(subprocess.SubprocessError, OSError):

@@ -102,14 +102,27 @@ def cluster():
 
 
 @pytest.fixture(scope="session")
-def initialised(tmp_path_factory, cluster) -> dict[str, str]:
-    """One database per engine after `sass db init`: {"sqlite": path, "postgresql": url}."""
+def postgres_template(cluster) -> str:
+    """The name of a PostgreSQL database after `sass db init`, made once per test
+    process, that others are copied from (`CREATE DATABASE ... TEMPLATE`: a
+    file copy, under a second where the import takes seconds).  Never connect
+    to it: PostgreSQL copies only a template nobody is connected to."""
+    from sass_tui.cli import main
+
+    name = "sass_template"
+    assert main(["db", "init", "--force", "--db", cluster.create_database(name)]) == 0
+    return name
+
+
+@pytest.fixture(scope="session")
+def initialised(tmp_path_factory, cluster, postgres_template) -> dict[str, str]:
+    """One database per engine after `sass db init`: {"sqlite": path, "postgresql": url}
+    (PostgreSQL's a copy of `postgres_template`)."""
     from sass_tui.cli import main
 
     sqlite_path = str(tmp_path_factory.mktemp("engines") / "sass.db")
-    url = cluster.create_database("initialised")
-    for target in (sqlite_path, url):
-        assert main(["db", "init", "--force", "--db", target]) == 0
+    assert main(["db", "init", "--force", "--db", sqlite_path]) == 0
+    url = cluster.create_database("initialised", postgres_template)
     return {"sqlite": sqlite_path, "postgresql": url}
 
 

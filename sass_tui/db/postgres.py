@@ -47,6 +47,7 @@ from sass_tui.db.query_tree import Dialect
 from sass_tui.db.schema import (
     PERSON_TABLES,
     SCHEMA_VERSION,
+    SQLITE_ONLY_TABLES,
     TARGET_TABLES,
     DatabaseError,
     connect,
@@ -62,7 +63,6 @@ CONNECT_TIMEOUT_S = 10
 T = TypeVar("T")
 # SQLite's declared types -> PostgreSQL's.
 _TYPES = {"INTEGER": "BIGINT", "REAL": "DOUBLE PRECISION", "TEXT": "TEXT", "BLOB": "BYTEA"}
-_SQLITE_ONLY = ("measure_packed",)
 
 
 def shown(url: str) -> str:
@@ -332,7 +332,7 @@ def postgres_ddl() -> list[str]:
             for (name,) in memory.execute(
                 "SELECT name FROM sqlite_master WHERE type = 'table' ORDER BY rowid"
             )
-            if name not in _SQLITE_ONLY
+            if name not in SQLITE_ONLY_TABLES
         ]
         out: list[str] = []
         indexes: list[str] = []
@@ -376,7 +376,7 @@ def create_schema(conn: PostgresConnection) -> None:
 
 def _tables_of_people() -> tuple[str, ...]:
     """The tables a person's rows are in, person last (deleted after its rows)."""
-    return tuple(t for t in PERSON_TABLES if t not in _SQLITE_ONLY) + ("person",)
+    return tuple(t for t in PERSON_TABLES if t not in SQLITE_ONLY_TABLES) + ("person",)
 
 
 def recreate_schema(conn: PostgresConnection) -> None:

@@ -16,6 +16,10 @@ from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect, row_counts
 from sass_tui.model.names import GIRTH, row_index
 
+pytestmark = pytest.mark.sqlite_only(
+    "an ANSUR II import into a SQLite file; a PostgreSQL import is staged through it in SQLite and copied (test_engines.py)"
+)
+
 SHARED = Path(__file__).resolve().parents[1].parent.parent / "shared"
 FILES = ("ANSUR_II_MALE_Public.csv", "ANSUR_II_FEMALE_Public.csv")
 

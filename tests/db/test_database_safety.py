@@ -25,6 +25,10 @@ from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import SCHEMA_VERSION, DatabaseError, connect, row_counts, transaction
 
+pytestmark = pytest.mark.sqlite_only(
+    "the SQLite file itself: its journal, locks, a foreign or damaged file"
+)
+
 ROOT = Path(__file__).resolve().parents[2]
 PERSON = "99907,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
 

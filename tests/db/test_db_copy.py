@@ -21,6 +21,8 @@ from sass_tui.db import accelerator
 from sass_tui.db.query import compile_query
 from sass_tui.db.schema import connect
 
+pytestmark = pytest.mark.sqlite_only("the DuckDB column copy of a SQLite file")
+
 QUERY = "gender = male AND girth.right_upper_arm.z > 28 cm AND stature > 170 cm"
 
 # `sass ARGS` in a new Python process whose copy threshold is 0; it prints

@@ -17,6 +17,10 @@ from sass_tui.db.population import population_of
 from sass_tui.db.progress import Cancelled, interruptible
 from sass_tui.db.schema import connect, row_counts
 
+pytestmark = pytest.mark.sqlite_only(
+    "SQLite's progress handler and the import functions' SQLite connection (PostgreSQL's cancel: test_engines_verbs.py)"
+)
+
 
 class CancelAfter:
     """A cancel that is set once it has been asked `n` times (deterministic:

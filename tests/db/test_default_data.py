@@ -1,4 +1,5 @@
-"""The default (synthetic) data set and the report's sample query on it."""
+"""The default (synthetic) data set and the report's sample query on it, on both
+engines (tests/db/conftest.py)."""
 
 from __future__ import annotations
 
@@ -43,9 +44,9 @@ def expected_ids(arm_cm: float, elbow_ftlb: float) -> set[int]:
 
 
 @pytest.mark.parametrize("arm, elbow", [(28, 20), (37, 45), (39, 30)])
-def test_sample_query_matches_direct_computation(default_db, arm, elbow):
+def test_sample_query_matches_direct_computation(engine_db, arm, elbow):
     query = run_query(
-        default_db,
+        engine_db,
         f"gender = male AND girth.right_upper_arm.z > {arm} cm "
         f"AND strength.elbow_flexion.max > {elbow} ft-lb AND source = synthetic",
     )
@@ -55,22 +56,22 @@ def test_sample_query_matches_direct_computation(default_db, arm, elbow):
     assert query.count() == len(expected)
 
 
-def test_sample_query_finds_people_and_no_women(default_db):
-    query = run_query(default_db, SAMPLE)
+def test_sample_query_finds_people_and_no_women(engine_db):
+    query = run_query(engine_db, SAMPLE)
     assert query.count() > 50
     assert all(p["gender"] == "male" for p in query.iter_all(page_size=7))
 
 
-def test_every_person_is_labelled_with_its_source(default_db):
-    sources = dict(default_db.execute("SELECT source, count(*) FROM person GROUP BY source"))
+def test_every_person_is_labelled_with_its_source(engine_db):
+    sources = dict(engine_db.execute("SELECT source, count(*) FROM person GROUP BY source"))
     synthetic = sum(1 for _ in _flat("person.db"))
     assert sources == {"synthetic": synthetic, "ansur2": 6068}
-    names = {n for (n,) in default_db.execute("SELECT name FROM person WHERE source = 'synthetic'")}
+    names = {n for (n,) in engine_db.execute("SELECT name FROM person WHERE source = 'synthetic'")}
     assert names == {r[1] for r in _flat("person.db")}
 
 
-def test_paging_never_loads_more_than_a_page(default_db):
-    query = run_query(default_db, "source = synthetic")
+def test_paging_never_loads_more_than_a_page(engine_db):
+    query = run_query(engine_db, "source = synthetic")
     total = query.count()
     assert total == 200
     first, second = query.page(0, 25), query.page(25, 25)
@@ -79,8 +80,8 @@ def test_paging_never_loads_more_than_a_page(default_db):
     assert len(query.page(190, 25)) == 10
 
 
-def test_fetch_individual_returns_every_group(default_db):
-    person = fetch_individual(default_db, 1)
+def test_fetch_individual_returns_every_group(engine_db):
+    person = fetch_individual(engine_db, 1)
     assert person.name == "SYNTH_M_001" and person.gender == "male"
     assert person.groups[GIRTH].shape == (25, 3)
     assert person.groups[JOINT_LIMITS].shape == (40, 3)
@@ -92,11 +93,11 @@ def test_fetch_individual_returns_every_group(default_db):
     assert person.experiments and person.elbow and len(person.shoulder) % 3 == 0
     assert person.strength["elbow_flexion_max"] == max(e["pstrgh"] for e in person.elbow)
     with pytest.raises(DatabaseError):
-        fetch_individual(default_db, 99999)
+        fetch_individual(engine_db, 99999)
 
 
-def test_cli_query_json(default_db_file, capsys):
-    assert main(["query", "--db", str(default_db_file), "--format", "json", SAMPLE]) == 0
+def test_cli_query_json(shared_target, capsys):
+    assert main(["query", "--db", shared_target, "--format", "json", SAMPLE]) == 0
     out = json.loads(capsys.readouterr().out)
     assert out["count"] == len(out["persons"]) == len(expected_ids(28, 20))
     assert set(out["persons"][0]) == {
@@ -111,13 +112,11 @@ def test_cli_query_json(default_db_file, capsys):
     }
 
 
-def test_cli_query_csv_and_table(default_db_file, capsys):
-    assert (
-        main(["query", "--db", str(default_db_file), "--format", "csv", "handedness = either"]) == 0
-    )
+def test_cli_query_csv_and_table(shared_target, capsys):
+    assert main(["query", "--db", shared_target, "--format", "csv", "handedness = either"]) == 0
     rows = list(csv.DictReader(capsys.readouterr().out.splitlines()))
     assert rows and all(r["handedness"] == "either" for r in rows)
-    assert main(["query", "--db", str(default_db_file), "gender = female AND age < 20"]) == 0
+    assert main(["query", "--db", shared_target, "gender = female AND age < 20"]) == 0
     assert capsys.readouterr().out.strip().endswith(("people", "person"))
 
 
@@ -145,13 +144,13 @@ def test_cli_query_missing_database_is_an_error(tmp_path, capsys):
     assert not (tmp_path / "none.db").exists()
 
 
-def test_bad_query_leaves_database_unchanged(default_db, default_db_file, capsys):
-    before = row_counts(default_db)
+def test_bad_query_leaves_database_unchanged(engine_db, shared_target, capsys):
+    before = row_counts(engine_db)
     for text in ("name = x'; DROP TABLE person; --", "gender = male'; DROP TABLE person; --"):
-        assert main(["query", "--db", str(default_db_file), text]) == 2
+        assert main(["query", "--db", shared_target, text]) == 2
         err = capsys.readouterr().err
         assert "column" in err and "^" in err
-    assert row_counts(default_db) == before
+    assert row_counts(engine_db) == before
 
 
 @pytest.mark.slow

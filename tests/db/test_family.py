@@ -1,5 +1,6 @@
 """`sass family` on the default database: files that read back, coverage that
-equals an independent count over the ANSUR II CSV."""
+equals an independent count over the ANSUR II CSV, on both engines
+(tests/db/conftest.py)."""
 
 from __future__ import annotations
 
@@ -11,9 +12,9 @@ import sys
 import numpy as np
 import pytest
 
+from sass_tui.db.dialect import mark_of
 from sass_tui.db.fit import FitError, load_family
 from sass_tui.db.query import run_query
-from sass_tui.db.schema import connect
 from sass_tui.model.accommodation import AccommodationError, chi2_quantile
 from sass_tui.model.figfile import read_fig
 
@@ -31,18 +32,16 @@ def _csv(ansur_dir, gender: str, columns: list[str]) -> np.ndarray:
     return np.array([[float(r[c]) / 10 for c in columns] for r in rows])
 
 
-@pytest.fixture(scope="module")
-def conn(default_db_file):
-    conn = connect(default_db_file)
-    yield conn
-    conn.close()
+@pytest.fixture()
+def conn(shared_db):
+    return shared_db
 
 
 @pytest.fixture(scope="module")
-def written(default_db_file, tmp_path_factory):
+def written(shared_target, tmp_path_factory):
     out = tmp_path_factory.mktemp("family") / "seat"
     done = _sass(
-        "family", "--db", str(default_db_file), "--gender", "male", "--measures",
+        "family", "--db", shared_target, "--gender", "male", "--measures",
         "stature,weightkg,hipbreadthsitting", "--coverage", "95", "-o", str(out),
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
@@ -91,7 +90,9 @@ def test_nearest_people_are_in_the_population(written, conn):
     for manikin in data["manikins"]:
         nearest = manikin["nearest"]
         assert nearest["id"] in ansur_men
-        name = conn.execute("SELECT name FROM person WHERE id_num = ?", (nearest["id"],))
+        name = conn.execute(
+            f"SELECT name FROM person WHERE id_num = {mark_of(conn)}", (nearest["id"],)
+        )
         assert name.fetchone()[0] == nearest["name"]
 
 
@@ -115,15 +116,15 @@ def test_distributed_family(conn):
     assert family.kind == "distributed"
 
 
-def test_bad_requests(conn, default_db_file, tmp_path):
+def test_bad_requests(conn, shared_target, tmp_path):
     with pytest.raises(AccommodationError, match="did you mean sittingheight"):
         load_family(conn, "male", ["stature", "sittinheight"], 0.9)
     with pytest.raises(FitError, match="no female people"):
         load_family(conn, "female", ["stature", "mass"], 0.9, population="gender = male")
-    done = _sass("family", "--db", str(default_db_file), "--gender", "male", "--measures",
+    done = _sass("family", "--db", shared_target, "--gender", "male", "--measures",
                  "stature", "-o", str(tmp_path / "x"))  # fmt: skip
     assert done.returncode == 2 and "2 to 6" in done.stderr
-    done = _sass("family", "--db", str(default_db_file), "--gender", "male", "--measures",
+    done = _sass("family", "--db", shared_target, "--gender", "male", "--measures",
                  "stature,massx", "-o", str(tmp_path / "x"))  # fmt: skip
     assert done.returncode == 2 and "sass family: error: unknown measurement" in done.stderr
     assert not (tmp_path / "x").exists()

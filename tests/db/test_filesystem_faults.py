@@ -22,6 +22,8 @@ from sass_tui.db.default import shipped_ansur_files
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.schema import connect
 
+pytestmark = pytest.mark.sqlite_only("file-system faults under a SQLite file")
+
 PERSON = "99907,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
 
 

@@ -1,4 +1,5 @@
-"""The fit test counts real people: every share equals a direct count over the ANSUR II CSV."""
+"""The fit test counts real people: every share equals a direct count over the ANSUR II CSV,
+on both engines (tests/db/conftest.py)."""
 
 from __future__ import annotations
 
@@ -14,9 +15,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from sass_tui.db.dialect import mark_of
 from sass_tui.db.fit import FitError, check_mix, fit_test
 from sass_tui.db.query import QueryError, compile_conjuncts, compile_query, run_query
-from sass_tui.db.schema import connect
 
 # Every person of the default database has a stature; the source term reaches the
 # synthetic people too (a query without one reaches only real people).
@@ -45,20 +46,19 @@ def ansur_columns(ansur_dir):
     return _read_csv(ansur_dir)
 
 
-@pytest.fixture(scope="session")
-def ansur_db_file(default_db_file) -> Path:
-    """The default database: the ANSUR II people and the synthetic people (with strengths)."""
-    return default_db_file
+@pytest.fixture()
+def ansur_db_file(shared_target) -> str:
+    """The default database (the ANSUR II people and the synthetic people, with
+    strengths) on each engine: its address."""
+    return shared_target
 
 
-@pytest.fixture(scope="session")
-def ansur_db(ansur_db_file):
-    conn = connect(ansur_db_file)
-    yield conn
-    conn.close()
+@pytest.fixture()
+def ansur_db(shared_db):
+    return shared_db
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture()
 def mixed_db(ansur_db):
     return ansur_db
 
@@ -293,7 +293,7 @@ def _sass(*args: str) -> subprocess.CompletedProcess:
 def test_cli_json_matches_the_engine(ansur_db_file, ansur_db):
     limits = "stature <= 190 cm AND mass <= 110 kg"
     done = _sass(
-        "fit", "--db", str(ansur_db_file), "--mix", "male=0.7,female=0.3", "--format", "json",
+        "fit", "--db", ansur_db_file, "--mix", "male=0.7,female=0.3", "--format", "json",
         limits,
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
@@ -304,15 +304,15 @@ def test_cli_json_matches_the_engine(ansur_db_file, ansur_db):
 
 
 def test_cli_table_and_errors(ansur_db_file):
-    done = _sass("fit", "--db", str(ansur_db_file), "--failing",
+    done = _sass("fit", "--db", ansur_db_file, "--failing",
                  "stature <= 190 cm AND mass <= 110 kg")  # fmt: skip
     assert done.returncode == 0, done.stderr
     assert "weighted" in done.stdout and "only limit" in done.stdout
     assert "people fail a limit" in done.stdout
-    bad = _sass("fit", "--db", str(ansur_db_file), "--population", "statur > 3", "mass < 3")
+    bad = _sass("fit", "--db", ansur_db_file, "--population", "statur > 3", "mass < 3")
     assert bad.returncode == 2
     assert "sass fit: error: --population" in bad.stderr and "Traceback" not in bad.stderr
-    bad = _sass("fit", "--db", str(ansur_db_file), "--mix", "male=1,x=2", "mass < 3")
+    bad = _sass("fit", "--db", ansur_db_file, "--mix", "male=1,x=2", "mass < 3")
     assert bad.returncode == 2 and "GENDER=WEIGHT" in bad.stderr
 
 
@@ -384,14 +384,15 @@ def test_limit_lines_read_numeric_comparisons_in_canonical_units():
     assert limit_lines("gender = female") == ()
 
 
-def test_limit_histograms_count_every_person_of_the_population(default_db):
+def test_limit_histograms_count_every_person_of_the_population(engine_db):
     from sass_tui.db.fit import limit_histograms
 
     (mass, stature) = limit_histograms(
-        default_db, "mass < 200 lb AND mass > 50 AND stature < 190 cm", "source = ansur2", bins=7
+        engine_db, "mass < 200 lb AND mass > 50 AND stature < 190 cm", "source = ansur2", bins=7
     )
     assert mass.field == "mass" and [x.op for x in mass.lines] == ["<", ">"]
     assert [x.value for x in mass.lines] == pytest.approx([90.718474, 50.0])
+    mark = mark_of(engine_db)
     for hist, column in ((mass, "mass"), (stature, "stature")):
         assert len(hist.edges) == 8
         for line in hist.lines:
@@ -399,8 +400,8 @@ def test_limit_histograms_count_every_person_of_the_population(default_db):
         for gender in ("male", "female"):
             values = [
                 v
-                for (v,) in default_db.execute(
-                    f"SELECT {column} FROM person WHERE source = 'ansur2' AND gender = ?",
+                for (v,) in engine_db.execute(
+                    f"SELECT {column} FROM person WHERE source = 'ansur2' AND gender = {mark}",
                     (gender,),
                 )
             ]

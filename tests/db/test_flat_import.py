@@ -13,6 +13,10 @@ from sass_tui.db.individual import fetch_individual
 from sass_tui.db.schema import connect, row_counts
 from sass_tui.model.names import GIRTH, row_index
 
+pytestmark = pytest.mark.sqlite_only(
+    "the import functions write a SQLite connection; a PostgreSQL import is staged through them in SQLite and copied (Database.import_flat, test_engines.py)"
+)
+
 DEFAULT_FLAT = Path(__file__).resolve().parents[2] / "datasets" / "db"
 PERSON = "7,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
 GIRTH_ROWS = (

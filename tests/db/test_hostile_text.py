@@ -2,7 +2,9 @@
 name or source, or an import's --source label holding a control character
 (ESC, BEL, C0/C1, DEL) is refused at import with file:line and the field, and
 nothing is stored; text already stored so is shown escaped by `sass person`
-and `sass query` (table, CSV, JSON)."""
+and `sass query` (table, CSV, JSON).  The imports write a SQLite connection
+(a PostgreSQL import is staged through them in SQLite); the escaped output is
+checked on both engines (tests/db/conftest.py)."""
 
 from __future__ import annotations
 
@@ -16,6 +18,7 @@ from hypothesis import strategies as st
 
 from sass_tui.cli import main
 from sass_tui.db.ansur import AnsurImportError, import_ansur
+from sass_tui.db.dialect import mark_of, writing
 from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_files
 from sass_tui.db.schema import connect, row_counts
 from sass_tui.model.text import control_character
@@ -120,28 +123,26 @@ def test_a_person_file_with_a_hostile_name_or_source_is_refused(tmp_path, person
     assert conn.execute("SELECT count(*) FROM person").fetchone() == (0,)
 
 
-def test_text_stored_before_is_shown_escaped_by_every_output(default_db_file, tmp_path, capsys):
-    db = tmp_path / "copy.db"
-    db.write_bytes(default_db_file.read_bytes())
-    conn = connect(db)
-    with conn:
+def test_text_stored_before_is_shown_escaped_by_every_output(engine_target, engine_db_copy, capsys):
+    """On both engines (tests/db/conftest.py)."""
+    conn, db, mark = engine_db_copy, engine_target, mark_of(engine_db_copy)
+    with writing(conn):
         (first,) = conn.execute(  # the one man under 18 of the survey
             "SELECT id_num FROM person WHERE source = 'ansur2' AND gender = 'male' AND age < 18"
         ).fetchone()
         conn.execute(
-            "UPDATE person SET name = ?, branch = ? WHERE id_num = ?",
+            f"UPDATE person SET name = {mark}, branch = {mark} WHERE id_num = {mark}",
             (f"X{RETITLE_AND_CLEAR}", f"Arms{RETITLE_AND_CLEAR}", first),
         )
-    conn.close()
     for fmt in ("table", "csv", "json"):
-        assert main(["query", "--db", str(db), "--format", fmt, "gender = male AND age < 18"]) == 0
+        assert main(["query", "--db", db, "--format", fmt, "gender = male AND age < 18"]) == 0
         out = capsys.readouterr().out
         assert "\x1b" not in out and "\x07" not in out, fmt
         if fmt == "json":
             assert json.loads(out)["persons"][0]["name"] == f"X{RETITLE_AND_CLEAR}"  # escaped, kept
         else:
             assert "X^[]0;pwned^G^[[2J" in out, fmt
-    assert main(["person", "--db", str(db), str(first)]) == 0
+    assert main(["person", "--db", db, str(first)]) == 0
     out = capsys.readouterr().out
     assert "\x1b" not in out and "X^[]0;pwned^G^[[2J" in out and "Arms^[]0;pwned" in out
 

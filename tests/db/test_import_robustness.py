@@ -19,6 +19,10 @@ from sass_tui.db.ansur import AnsurImportError, import_ansur, iter_ansur, read_a
 from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_files
 from sass_tui.db.schema import row_counts
 
+pytestmark = pytest.mark.sqlite_only(
+    "the import functions write a SQLite connection; a PostgreSQL import is staged through them in SQLite and copied (Database.import_ansur, test_engines.py)"
+)
+
 MALE = DATASETS / "ansur2" / "ANSUR_II_MALE_Public.csv.gz"
 
 

@@ -10,9 +10,9 @@ from sass_tui.db.query import QueryError, run_query
 MALES = "gender = male"
 
 
-def test_run_select_delete_and_a_new_query_keeps_the_selected(default_db):
-    lists = QueryLists(default_db)
-    males = run_query(default_db, MALES).ids()
+def test_run_select_delete_and_a_new_query_keeps_the_selected(engine_db):
+    lists = QueryLists(engine_db)
+    males = run_query(engine_db, MALES).ids()
     assert lists.run(MALES) == len(males) == lists.count(QUERY_LIST)
     assert [r["id"] for r in lists.page(QUERY_LIST, 0, 25)] == males[:25]
     assert [r["id"] for r in lists.page(QUERY_LIST, 25, 25)] == males[25:50]
@@ -23,7 +23,7 @@ def test_run_select_delete_and_a_new_query_keeps_the_selected(default_db):
     assert lists.delete_one(QUERY_LIST, males[1])
     assert lists.count(QUERY_LIST) == len(males) - 3
     # A new query replaces the query list; the selected people are not found again.
-    stature = run_query(default_db, "stature > 0").ids()
+    stature = run_query(engine_db, "stature > 0").ids()
     assert lists.run("stature > 0") == len(stature) - 2
     assert lists.count(SELECTED_LIST) == 2
     moved = lists.select_all()
@@ -32,8 +32,8 @@ def test_run_select_delete_and_a_new_query_keeps_the_selected(default_db):
     assert lists.selected_id(0) == males[3]  # selection order is kept
 
 
-def test_a_bad_query_leaves_the_lists_as_they_were(default_db):
-    lists = QueryLists(default_db)
+def test_a_bad_query_leaves_the_lists_as_they_were(engine_db):
+    lists = QueryLists(engine_db)
     found = lists.run(MALES)
     with pytest.raises(QueryError, match="column"):
         lists.run("gender = maybe")

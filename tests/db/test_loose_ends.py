@@ -1,6 +1,7 @@
 """Small command-line promises: `--mix` with one gender completes the other,
 `--version` prints to standard output, and no reader opens what is not a
-regular file (a FIFO or /dev/zero would block or never end)."""
+regular file (a FIFO or /dev/zero would block or never end).  The mix runs on
+both engines (tests/db/conftest.py); the readers' files are SQLite files."""
 
 from __future__ import annotations
 
@@ -21,9 +22,10 @@ def test_one_gender_of_the_mix_leaves_the_rest_to_the_other():
         check_mix({"male": 1.5})
 
 
-def test_fit_mix_male_alone_is_male_and_female_together(default_db_file, capsys):
+def test_fit_mix_male_alone_is_male_and_female_together(shared_target, capsys):
+    # on both engines (tests/db/conftest.py)
     limits = "stature <= 185 cm AND mass <= 100 kg"
-    base = ["fit", "--db", str(default_db_file), "--format", "json"]
+    base = ["fit", "--db", shared_target, "--format", "json"]
     assert main([*base, "--mix", "male=0.8", limits]) == 0
     alone = json.loads(capsys.readouterr().out)
     assert main([*base, "--mix", "male=0.8,female=0.2", limits]) == 0

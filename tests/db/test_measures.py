@@ -1,6 +1,7 @@
 """ANSUR II in the default database: the shipped files, the 93 measurements,
 the survey's attributes and the query language, checked against a direct
-computation over the published CSV files in ../shared (csv module only)."""
+computation over the published CSV files in ../shared (csv module only), on
+both engines (tests/db/conftest.py)."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import numpy as np
 import pytest
 from _paths import DATASETS
 
+from sass_tui.db.dialect import mark_of
 from sass_tui.db.query import QueryError, compile_query, field_names, run_query
 from sass_tui.db.values import load_values
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES
@@ -39,33 +41,39 @@ def test_shipped_files_are_the_published_ones(ansur_dir, name):
     assert gzip.decompress(shipped.read_bytes()) == (ansur_dir / name).read_bytes()
 
 
-def test_measure_table_has_one_column_per_measure(default_db):
-    columns = [row[1] for row in default_db.execute("PRAGMA table_info(measure)")]
+def test_measure_table_has_one_column_per_measure(engine_db):
+    columns = [d[0] for d in engine_db.execute("SELECT * FROM measure LIMIT 0").description]
     assert columns == ["id_num", *MEASURES]
 
 
-def _stored(conn, survey_row, column):
-    return conn.execute(
-        f"SELECT m.{column} FROM measure m JOIN person p ON p.id_num = m.id_num WHERE p.name = ?",
+def _stored(conn, survey_row, *columns):
+    """The person's stored values of these measure columns (one value for one column)."""
+    row = conn.execute(
+        f"SELECT {', '.join(f'm.{c}' for c in columns)} FROM measure m "
+        f"JOIN person p ON p.id_num = m.id_num WHERE p.name = {mark_of(conn)}",
         (survey_row["name"],),
-    ).fetchone()[0]
+    ).fetchone()
+    return row[0] if len(columns) == 1 else tuple(row)
 
 
-def test_every_measure_is_stored_in_canonical_units(default_db, survey):
+def test_every_measure_is_stored_in_canonical_units(engine_db, survey):
     for row in survey[:: len(survey) // 25]:
-        for name in MEASURES:
+        stored = _stored(engine_db, row, *MEASURES)
+        for name, value in zip(MEASURES, stored, strict=True):
             published = float(row[name])
             expected = published / 10 if name != "interpupillarybreadth" else published / 100
-            assert _stored(default_db, row, name) == pytest.approx(expected, abs=1e-9), name
+            assert value == pytest.approx(expected, abs=1e-9), name
 
 
-def test_tenth_units_convert(default_db, survey):
+def test_tenth_units_convert(engine_db, survey):
     """weightkg is published in 0.1 kg, interpupillarybreadth in 0.1 mm."""
     first = survey[0]
     assert first["weightkg"] == "815" and first["interpupillarybreadth"] == "685"
-    assert _stored(default_db, first, "weightkg") == pytest.approx(81.5)
-    assert _stored(default_db, first, "interpupillarybreadth") == pytest.approx(6.85)
-    mass = default_db.execute("SELECT mass FROM person WHERE name = ?", (first["name"],))
+    assert _stored(engine_db, first, "weightkg") == pytest.approx(81.5)
+    assert _stored(engine_db, first, "interpupillarybreadth") == pytest.approx(6.85)
+    mass = engine_db.execute(
+        f"SELECT mass FROM person WHERE name = {mark_of(engine_db)}", (first["name"],)
+    )
     assert mass.fetchone()[0] == pytest.approx(81.5)
     weights = [float(r["weightkg"]) / 10 for r in survey]
     assert 35 < min(weights) and max(weights) < 150  # kg, not 0.1 kg or g
@@ -103,20 +111,20 @@ CASES = [
 
 
 @pytest.mark.parametrize("text, predicate", CASES, ids=[c[0] for c in CASES])
-def test_query_counts_match_the_csv(default_db, survey, text, predicate):
+def test_query_counts_match_the_csv(engine_db, survey, text, predicate):
     expected = _count(survey, predicate)
     assert expected > 0
-    assert run_query(default_db, f"source = ansur2 AND ({text})").count() == expected
+    assert run_query(engine_db, f"source = ansur2 AND ({text})").count() == expected
 
 
-def test_source_labels(default_db, survey):
-    assert run_query(default_db, "source = ansur2").count() == len(survey) == 6068
-    assert run_query(default_db, "source = 'ANSUR2'").count() == 6068
-    synthetic = run_query(default_db, "source = synthetic").count()
+def test_source_labels(engine_db, survey):
+    assert run_query(engine_db, "source = ansur2").count() == len(survey) == 6068
+    assert run_query(engine_db, "source = 'ANSUR2'").count() == 6068
+    synthetic = run_query(engine_db, "source = synthetic").count()
     assert synthetic == 200
     # without a source term a query reaches the real people only; any source term, everyone
-    assert run_query(default_db, "stature > 0 cm").count() == 6068
-    assert run_query(default_db, "stature > 0 cm AND source != none").count() == 6068 + synthetic
+    assert run_query(engine_db, "stature > 0 cm").count() == 6068
+    assert run_query(engine_db, "stature > 0 cm AND source != none").count() == 6068 + synthetic
 
 
 @pytest.mark.parametrize(
@@ -138,18 +146,18 @@ def test_query_errors_name_the_column(text, fragment, column):
     assert caught.value.column == column
 
 
-def test_quoted_words_are_accepted_for_choices(default_db):
+def test_quoted_words_are_accepted_for_choices(engine_db):
     assert (
-        run_query(default_db, "gender = 'FEMALE'").count()
-        == run_query(default_db, "gender = female").count()
+        run_query(engine_db, "gender = 'FEMALE'").count()
+        == run_query(engine_db, "gender = female").count()
     )
 
 
-def test_quoted_text_is_never_sql(default_db):
-    before = default_db.execute("SELECT count(*) FROM person").fetchone()[0]
-    query = run_query(default_db, "branch = 'x\"; DROP TABLE person; --'")
+def test_quoted_text_is_never_sql(engine_db):
+    before = engine_db.execute("SELECT count(*) FROM person").fetchone()[0]
+    query = run_query(engine_db, "branch = 'x\"; DROP TABLE person; --'")
     assert query.count() == 0
-    assert default_db.execute("SELECT count(*) FROM person").fetchone()[0] == before
+    assert engine_db.execute("SELECT count(*) FROM person").fetchone()[0] == before
 
 
 def test_field_names_cover_every_measure():
@@ -162,10 +170,10 @@ def test_field_names_cover_every_measure():
             compile_query(f"{name} > 0")
 
 
-def test_load_values_equals_the_csv(default_db, survey):
+def test_load_values_equals_the_csv(engine_db, survey):
     fields = ["stature", "mass", "age", *(f"measure.{m}" for m in MEASURES)]
     start = time.perf_counter()
-    values = load_values(default_db, fields, "source = ansur2")
+    values = load_values(engine_db, fields, "source = ansur2")
     elapsed = time.perf_counter() - start
     assert values.matrix.shape == (6068, len(fields))
     by_name = {r["name"]: r for r in survey}
@@ -181,9 +189,9 @@ def test_load_values_equals_the_csv(default_db, survey):
     assert elapsed < 5  # a sanity bound; the speed is measured in benchmarks/
 
 
-def test_load_values_of_unmeasured_people_are_nan(default_db):
+def test_load_values_of_unmeasured_people_are_nan(engine_db):
     values = load_values(
-        default_db,
+        engine_db,
         ["measure.sittingheight", "girth.right_upper_arm.z", "center_of_mass.right_foot.x"],
         "source = synthetic",
     )
@@ -193,24 +201,26 @@ def test_load_values_of_unmeasured_people_are_nan(default_db):
     assert not np.isnan(values.matrix[:, 2]).all()
 
 
-def test_load_values_follow_changes_made_behind_the_packed_rows(default_db):
-    """An UPDATE of measure by plain SQL must not leave load_values stale."""
-    first = default_db.execute("SELECT min(id_num) FROM measure").fetchone()[0]
-    default_db.execute("UPDATE measure SET sittingheight = 12.5 WHERE id_num = ?", (first,))
-    values = load_values(
-        default_db, ["measure.sittingheight", "measure.stature"], "source = ansur2"
+def test_load_values_follow_changes_made_behind_the_packed_rows(engine_db_copy):
+    """An UPDATE of measure by plain SQL must not leave load_values stale (on
+    SQLite, behind its packed rows)."""
+    conn = engine_db_copy
+    first = conn.execute("SELECT min(id_num) FROM measure").fetchone()[0]
+    conn.execute(
+        f"UPDATE measure SET sittingheight = 12.5 WHERE id_num = {mark_of(conn)}", (first,)
     )
+    values = load_values(conn, ["measure.sittingheight", "measure.stature"], "source = ansur2")
     index = list(values.ids).index(first)
     assert values.matrix[index, 0] == 12.5
     assert values.matrix[index, 1] > 140
 
 
-def test_load_values_refuses_text_fields_and_unknown_names(default_db):
+def test_load_values_refuses_text_fields_and_unknown_names(engine_db):
     with pytest.raises(QueryError, match="words, not numbers"):
-        load_values(default_db, ["branch"])
+        load_values(engine_db, ["branch"])
     with pytest.raises(QueryError, match="did you mean sittingheight"):
-        load_values(default_db, ["measure.sitingheight"])
-    empty = load_values(default_db, ["stature"], "stature > 1000 cm")
+        load_values(engine_db, ["measure.sitingheight"])
+    empty = load_values(engine_db, ["stature"], "stature > 1000 cm")
     assert empty.matrix.shape == (0, 1)
 
 
@@ -255,10 +265,10 @@ QUERY_WORDS = st.sampled_from(
     max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
 )
 @given(words=st.lists(QUERY_WORDS, min_size=1, max_size=9))
-def test_query_words_compile_or_fail_cleanly(default_db, words):
+def test_query_words_compile_or_fail_cleanly(engine_db, words):
     text = " ".join(words)
     try:
-        query = run_query(default_db, text)
+        query = run_query(engine_db, text)
     except QueryError as exc:
         assert exc.column is None or 1 <= exc.column <= len(text) + 1
         return
@@ -269,7 +279,7 @@ def test_query_words_compile_or_fail_cleanly(default_db, words):
     max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
 )
 @given(value=st.text(max_size=20).filter(lambda t: "'" not in t))
-def test_any_quoted_text_is_a_parameter(default_db, value):
+def test_any_quoted_text_is_a_parameter(value):
     try:
         compiled = compile_query(f"branch = '{value}'")
     except QueryError:
@@ -278,7 +288,7 @@ def test_any_quoted_text_is_a_parameter(default_db, value):
     assert "'" not in compiled.where and '"' not in compiled.where  # no literal in the SQL
 
 
-def test_deep_and_long_queries_are_refused_with_a_message(default_db):
+def test_deep_and_long_queries_are_refused_with_a_message(engine_db):
     deep = "(" * 247 + "age > 1" + ")" * 247
     with pytest.raises(QueryError, match="nested more than 50 deep") as caught:
         compile_query(deep)
@@ -287,5 +297,5 @@ def test_deep_and_long_queries_are_refused_with_a_message(default_db):
     with pytest.raises(QueryError, match="more than 200 comparisons"):
         compile_query(long)
     fine = " OR ".join(f"age = {k}" for k in range(200))
-    assert run_query(default_db, "(" * 50 + fine + ")" * 50).count() > 0
+    assert run_query(engine_db, "(" * 50 + fine + ")" * 50).count() > 0
     assert compile_query("branch = '((((((((((((((((((((((((((((((((((((((((((((((((((((('")

@@ -1,6 +1,7 @@
 """`sass person` (the headless Disp. Indv.) against the published CSV, and
 `sass population` (populations from a selection) against medians computed
-independently with plain SQL and the statistics module."""
+independently with plain SQL and the statistics module, on both engines
+(tests/db/conftest.py)."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
+from sass_tui.db.dialect import ids_in
 from sass_tui.db.population import MIN_PEOPLE, PopulationError, parse_id_list, population_of
 from sass_tui.db.schema import QUERY_TABLES
 from sass_tui.model.measures import MEASURES
@@ -52,10 +54,10 @@ def _json(capsys, *argv) -> dict:
     return json.loads(capsys.readouterr().out)
 
 
-def test_person_json_gives_the_survey_values(default_db_file, survey, capsys):
+def test_person_json_gives_the_survey_values(shared_target, survey, capsys):
     names = ["ANSUR II M 10027", "ANSUR II F 10037", "ANSUR II M 29452"]
     names = [n for n in names if n in survey][:2] + [next(n for n in survey if " F " in n)]
-    out = _json(capsys, "person", "--db", str(default_db_file), "--format", "json", *names)
+    out = _json(capsys, "person", "--db", shared_target, "--format", "json", *names)
     assert [p["name"] for p in out["persons"]] == names
     for person in out["persons"]:
         row = survey[person["name"]]
@@ -80,8 +82,8 @@ def test_person_json_gives_the_survey_values(default_db_file, survey, capsys):
         assert not unmeasured & set(person["values"])
 
 
-def test_person_by_id_and_the_unmeasured(default_db_file, capsys):
-    out = _json(capsys, "person", "--db", str(default_db_file), "--format", "json", "1")
+def test_person_by_id_and_the_unmeasured(shared_target, capsys):
+    out = _json(capsys, "person", "--db", shared_target, "--format", "json", "1")
     person = out["persons"][0]
     assert person["name"] == "SYNTH_M_001" and person["source"] == "synthetic"
     assert person["measures"] == {}
@@ -90,11 +92,11 @@ def test_person_by_id_and_the_unmeasured(default_db_file, capsys):
     assert person["values"]["strength.elbow_flexion.max"] > 0
 
 
-def test_person_table_and_errors(default_db_file, capsys):
-    assert main(["person", "--db", str(default_db_file), "ansur ii m 10027", "2"]) == 0
+def test_person_table_and_errors(shared_target, capsys):
+    assert main(["person", "--db", shared_target, "ansur ii m 10027", "2"]) == 0
     out = capsys.readouterr().out
     assert "ANSUR II M 10027" in out and "SYNTH_M_002" in out and "sittingheight" in out
-    assert main(["person", "--db", str(default_db_file), "nobody at all"]) == 2
+    assert main(["person", "--db", shared_target, "nobody at all"]) == 2
     assert "no person with id or name 'nobody at all'" in capsys.readouterr().err
 
 
@@ -113,14 +115,12 @@ def _medians_by_sql(conn, table: str, axis: str) -> tuple[float, int]:
     return (statistics.median(values) if values else float("nan")), len(values)
 
 
-def test_population_file_50th_are_the_medians(default_db, default_db_file, tmp_path, capsys):
+def test_population_file_50th_are_the_medians(engine_db, shared_target, tmp_path, capsys):
     target = tmp_path / "young.dat"
-    assert (
-        main(["population", "--db", str(default_db_file), "--query", QUERY, "-o", str(target)]) == 0
-    )
+    assert main(["population", "--db", shared_target, "--query", QUERY, "-o", str(target)]) == 0
     said = capsys.readouterr().out
     assert "young.dat" in said and "young-cmass.dat" in said
-    women = default_db.execute(
+    women = engine_db.execute(
         "SELECT count(*) FROM person WHERE gender = 'female' AND age < 25 "
         "AND source != 'synthetic'"  # a query reaches real people only
     ).fetchone()[0]
@@ -136,7 +136,7 @@ def test_population_file_50th_are_the_medians(default_db, default_db_file, tmp_p
         for r, row in enumerate(ROWS[group]):
             table = QUERY_TABLES[table_group][row.name]
             for a, axis in enumerate("xyz"):
-                median, n = _medians_by_sql(default_db, table, axis)
+                median, n = _medians_by_sql(engine_db, table, axis)
                 if n >= MIN_PEOPLE:
                     assert stats[r, a, 1] == pytest.approx(median, abs=1e-4), (row.name, axis)
                     checked += 1
@@ -149,12 +149,12 @@ def test_population_file_50th_are_the_medians(default_db, default_db_file, tmp_p
     assert fig.is_file()
 
 
-def test_population_5th_and_95th(default_db):
-    result = population_of(default_db, "gender = male AND source = ansur2", date="2026-01-01")
+def test_population_5th_and_95th(engine_db):
+    result = population_of(engine_db, "gender = male AND source = ansur2", date="2026-01-01")
     stats = result.groups[GIRTH].stats("male")
     arm = [
         v
-        for (v,) in default_db.execute(
+        for (v,) in engine_db.execute(
             "SELECT q.z FROM person p JOIN q_girth_right_upper_arm q ON q.id_num = p.id_num "
             "WHERE p.gender = 'male' AND p.source = 'ansur2'"
         )
@@ -168,60 +168,60 @@ def test_population_5th_and_95th(default_db):
     assert "2026-01-01" in result.groups[GIRTH].title and "4082 men" in result.groups[GIRTH].title
 
 
-def test_a_gender_with_too_few_people_is_refused(default_db, default_db_file, tmp_path, capsys):
+def test_a_gender_with_too_few_people_is_refused(engine_db, shared_target, tmp_path, capsys):
     with pytest.raises(PopulationError, match=r"only 1 woman; .* at least 20"):
-        population_of(default_db, "gender = female AND age < 18")
-    men = default_db.execute(
+        population_of(engine_db, "gender = female AND age < 18")
+    men = engine_db.execute(
         "SELECT count(*) FROM person WHERE gender = 'male' AND age < 19"
     ).fetchone()[0]
     assert men >= MIN_PEOPLE
     with pytest.raises(PopulationError, match=r"only 1 woman;"):  # the men alone would do
-        population_of(default_db, "age < 19 AND (gender = male OR age < 18)")
-    argv = ["population", "--db", str(default_db_file), "--query", "age < 18"]
+        population_of(engine_db, "age < 19 AND (gender = male OR age < 18)")
+    argv = ["population", "--db", shared_target, "--query", "age < 18"]
     assert main([*argv, "-o", str(tmp_path / "x.dat")]) == 2
     assert "only 1 man and 1 woman" in capsys.readouterr().err
     target = tmp_path / "none.dat"
     with pytest.raises(PopulationError, match="selects nobody"):
-        population_of(default_db, "stature > 500 cm")
+        population_of(engine_db, "stature > 500 cm")
     assert not target.exists()
 
 
-def test_population_of_a_list_of_ids_is_exactly_those_people(default_db):
+def test_population_of_a_list_of_ids_is_exactly_those_people(engine_db):
     """The selected list's path: every third young woman's id (not what any
     query selects); the 50th are the medians of exactly those people."""
     ids = [
         r[0]
-        for r in default_db.execute(
+        for r in engine_db.execute(
             "SELECT id_num FROM person WHERE gender = 'female' AND age < 25 ORDER BY id_num"
         )
     ][::3]
     assert len(ids) >= MIN_PEOPLE
-    result = population_of(default_db, ids=list(reversed(ids)), date="2026-01-01")
+    result = population_of(engine_db, ids=list(reversed(ids)), date="2026-01-01")
     assert result.counts == {"female": len(ids)}
     stats = result.groups[GIRTH].stats("female")
-    marks = ", ".join("?" * len(ids))
+    listed, marks = ids_in(engine_db, "id_num", ids)
     r = [row.name for row in ROWS[GIRTH]].index("right_upper_arm")
     arm = [
         v
-        for (v,) in default_db.execute(
-            f"SELECT z FROM q_girth_right_upper_arm WHERE id_num IN ({marks})", ids
+        for (v,) in engine_db.execute(
+            f"SELECT z FROM q_girth_right_upper_arm WHERE {listed}", (marks,)
         )
     ]
     assert len(arm) == len(ids)
     assert stats[r, 2, 1] == pytest.approx(statistics.median(arm))
     assert f"selected list of {len(ids):,} people" in result.groups[GIRTH].title
     # a query narrows the list: only the people of the list it selects
-    both = population_of(default_db, "age < 22", ids=ids)
-    (n,) = default_db.execute(
-        f"SELECT count(*) FROM person WHERE age < 22 AND id_num IN ({marks}) "
+    both = population_of(engine_db, "age < 22", ids=ids)
+    (n,) = engine_db.execute(
+        f"SELECT count(*) FROM person WHERE age < 22 AND {listed} "
         "AND source != 'synthetic'",  # a query reaches real people only
-        ids,
+        (marks,),
     ).fetchone()
     assert both.counts == {"female": n}
     with pytest.raises(PopulationError, match=r"selected list of 5 people selects only 5 women"):
-        population_of(default_db, ids=ids[:5])
+        population_of(engine_db, ids=ids[:5])
     with pytest.raises(PopulationError, match="selects nobody"):
-        population_of(default_db, ids=[])
+        population_of(engine_db, ids=[])
 
 
 # --- `sass population --ids`: the selected list's population, from the shell -----
@@ -236,17 +236,17 @@ def _young_women_ids(conn) -> list[int]:
     ][::3]
 
 
-def test_population_from_a_file_of_ids(default_db, default_db_file, tmp_path, capsys):
+def test_population_from_a_file_of_ids(engine_db, shared_target, tmp_path, capsys):
     """Every third young woman, listed one id a line with a comment, a blank
     line, a repeat and two ids nobody has: the file's 50th are those people's
     medians, the title names the list, and the absent ids are reported."""
-    ids = _young_women_ids(default_db)
+    ids = _young_women_ids(engine_db)
     listing = tmp_path / "chosen.txt"
     listing.write_text(
         "# chosen by hand\n" + "\n".join(map(str, ids)) + f"\n\n{ids[0]}\n999999991\n999999992\n"
     )
     target = tmp_path / "chosen.dat"
-    argv = ["population", "--db", str(default_db_file), "--ids", str(listing)]
+    argv = ["population", "--db", shared_target, "--ids", str(listing)]
     assert main([*argv, "-o", str(target)]) == 0
     said = capsys.readouterr()
     assert f"2 of the {len(ids) + 2} listed ids are not in the database: 999999991, 999999992" in (
@@ -256,29 +256,29 @@ def test_population_from_a_file_of_ids(default_db, default_db_file, tmp_path, ca
     data = read_population_file(target, GIRTH)
     assert f"the list {listing} of {len(ids) + 2:,} people" in data.title
     r = [row.name for row in ROWS[GIRTH]].index("right_upper_arm")
-    marks = ", ".join("?" * len(ids))
+    listed, marks = ids_in(engine_db, "id_num", ids)
     arm = [
         v
-        for (v,) in default_db.execute(
-            f"SELECT z FROM q_girth_right_upper_arm WHERE id_num IN ({marks})", ids
+        for (v,) in engine_db.execute(
+            f"SELECT z FROM q_girth_right_upper_arm WHERE {listed}", (marks,)
         )
     ]
     assert data.stats("female")[r, 2, 1] == pytest.approx(statistics.median(arm), abs=1e-4)
 
 
 def test_population_from_sass_query_csv_on_standard_input(
-    default_db_file, tmp_path, capsys, monkeypatch
+    shared_target, tmp_path, capsys, monkeypatch
 ):
     """`sass query --format csv ... | sass population --ids - --query ...`: the
     listing's first column is read (its header skipped), the query narrows it."""
-    assert main(["query", "--db", str(default_db_file), "--format", "csv", "gender = female"]) == 0
+    assert main(["query", "--db", shared_target, "--format", "csv", "gender = female"]) == 0
     listing = capsys.readouterr().out
     monkeypatch.setattr("sys.stdin", __import__("io").StringIO(listing))
     target = tmp_path / "young.dat"
-    argv = ["population", "--db", str(default_db_file), "--ids", "-", "--query", "age < 25"]
+    argv = ["population", "--db", shared_target, "--ids", "-", "--query", "age < 25"]
     assert main([*argv, "-o", str(target)]) == 0
     by_query = tmp_path / "by_query.dat"
-    argv = ["population", "--db", str(default_db_file), "--query", "gender = female AND age < 25"]
+    argv = ["population", "--db", shared_target, "--query", "gender = female AND age < 25"]
     assert main([*argv, "-o", str(by_query)]) == 0
     capsys.readouterr()
     listed = read_population_file(target, GIRTH).stats("female")
@@ -287,8 +287,8 @@ def test_population_from_sass_query_csv_on_standard_input(
     assert "on standard input" in read_population_file(target, GIRTH).title
 
 
-def test_population_ids_errors_say_where(default_db_file, tmp_path, capsys):
-    base = ["population", "--db", str(default_db_file), "-o", str(tmp_path / "x.dat")]
+def test_population_ids_errors_say_where(shared_target, tmp_path, capsys):
+    base = ["population", "--db", shared_target, "-o", str(tmp_path / "x.dat")]
     assert main(base) == 2
     assert "give --query QUERY, --ids FILE or both" in capsys.readouterr().err
     bad = tmp_path / "bad.txt"

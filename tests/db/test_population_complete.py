@@ -2,7 +2,8 @@
 every girth and center-of-mass cell (the people's own values where they have
 them, else the report's scaled by their stature), says which in comments,
 always writes the center-of-mass file, and `sass fig` reads both.  Expected
-values come from the published CSV in ../shared."""
+values come from the published CSV in ../shared.  On both engines
+(tests/db/conftest.py)."""
 
 from __future__ import annotations
 
@@ -27,8 +28,8 @@ def women(ansur_dir) -> list[dict[str, str]]:
         return list(csv.DictReader(handle))
 
 
-def _make(db: Path, target: Path, *options: str) -> tuple[Path, Path]:
-    assert main(["population", "--db", str(db), *options, "-o", str(target)]) == 0
+def _make(db: str, target: Path, *options: str) -> tuple[Path, Path]:
+    assert main(["population", "--db", db, *options, "-o", str(target)]) == 0
     cmass = target.with_name(f"{target.stem}-cmass.dat")
     assert target.is_file() and cmass.is_file()  # the center-of-mass file, always
     return target, cmass
@@ -58,9 +59,9 @@ def _figure(tmp_path: Path, girth: Path, cmass: Path, *gender: str) -> None:
     assert "nan" not in text.lower() and "999" not in text
 
 
-def test_a_query_over_real_women_makes_a_complete_figure(default_db_file, tmp_path, women):
+def test_a_query_over_real_women_makes_a_complete_figure(shared_target, tmp_path, women):
     girth, cmass = _make(
-        default_db_file, tmp_path / "young.dat", "--query", "gender = female AND age < 25"
+        shared_target, tmp_path / "young.dat", "--query", "gender = female AND age < 25"
     )
     _complete(girth, GIRTH, {"female"})
     _complete(cmass, CENTER_OF_MASS, {"female"})
@@ -85,10 +86,10 @@ def test_a_query_over_real_women_makes_a_complete_figure(default_db_file, tmp_pa
     assert cm[arm, 2] == pytest.approx(cm_report[arm, 2] * own / stature, rel=1e-4)
 
 
-def test_a_list_of_25_ids_makes_a_complete_figure(default_db, default_db_file, tmp_path):
+def test_a_list_of_25_ids_makes_a_complete_figure(engine_db, shared_target, tmp_path):
     ids = [
         i
-        for (i,) in default_db.execute(
+        for (i,) in engine_db.execute(
             "SELECT id_num FROM person WHERE source = 'ansur2' AND gender = 'male' "
             "ORDER BY id_num LIMIT 25"
         )
@@ -96,15 +97,15 @@ def test_a_list_of_25_ids_makes_a_complete_figure(default_db, default_db_file, t
     assert len(ids) == 25 >= MIN_PEOPLE
     listed = tmp_path / "chosen.txt"
     listed.write_text("".join(f"{i}\n" for i in ids))
-    girth, cmass = _make(default_db_file, tmp_path / "chosen.dat", "--ids", str(listed))
+    girth, cmass = _make(shared_target, tmp_path / "chosen.dat", "--ids", str(listed))
     _complete(girth, GIRTH, {"male"})
     _complete(cmass, CENTER_OF_MASS, {"male"})
     assert "C Right Hand: x model, y people (25), z people (25)" in girth.read_text()
     _figure(tmp_path, girth, cmass)
 
 
-def test_the_whole_survey_makes_a_complete_figure_of_each_gender(default_db_file, tmp_path):
-    girth, cmass = _make(default_db_file, tmp_path / "all.dat", "--query", "source = ansur2")
+def test_the_whole_survey_makes_a_complete_figure_of_each_gender(shared_target, tmp_path):
+    girth, cmass = _make(shared_target, tmp_path / "all.dat", "--query", "source = ansur2")
     _complete(girth, GIRTH, {"male", "female"})
     _complete(cmass, CENTER_OF_MASS, {"male", "female"})
     for gender in ("male", "female"):
@@ -112,11 +113,11 @@ def test_the_whole_survey_makes_a_complete_figure_of_each_gender(default_db_file
     assert "(4082 men and 1986 women" in girth.read_text()
 
 
-def test_the_model_keeps_each_cells_order(default_db_file, tmp_path):
+def test_the_model_keeps_each_cells_order(shared_target, tmp_path):
     """Report cells whose values barely differ (the eyes) are not reordered by
     the scaling: no 5th-above-50th warning is added by the model."""
     girth, _cmass = _make(
-        default_db_file, tmp_path / "tall.dat", "--query", "gender = male AND stature > 185 cm"
+        shared_target, tmp_path / "tall.dat", "--query", "gender = male AND stature > 185 cm"
     )
     data = read_population_file(girth, GIRTH)
     assert not [w for w in data.warnings if "Eye" in w]

@@ -13,6 +13,10 @@ import pytest
 
 from sass_tui.cli import main
 
+pytestmark = pytest.mark.sqlite_only(
+    "a database of women imported into a SQLite file; predict on both engines: test_engines_verbs.py"
+)
+
 WOMEN = "ANSUR_II_FEMALE_Public.csv"
 
 

@@ -1,6 +1,7 @@
 """A query's depth and size are bounded with a message that points at the
 token (unbounded, 247 nested parentheses raised RecursionError, an OR of
-1,000 terms SQLite's "Expression tree is too large")."""
+1,000 terms SQLite's "Expression tree is too large").  The queries at the
+limits run on both engines (tests/db/conftest.py)."""
 
 from __future__ import annotations
 
@@ -25,18 +26,18 @@ def test_deep_nesting_is_refused_at_the_parenthesis():
     assert info.value.column == MAX_NESTING + 1
 
 
-def test_nesting_at_the_limit_runs(default_db):
+def test_nesting_at_the_limit_runs(engine_db):
     text = "(" * MAX_NESTING + "stature > 170 cm" + ")" * MAX_NESTING
     # The parentheses change nothing: the count is the table's own (person.stature is
     # in cm), over the real people a query without a source term reaches (db/scope.py).
     real = "source != 'synthetic'"
-    (expected,) = default_db.execute(
+    (expected,) = engine_db.execute(
         f"SELECT count(*) FROM person WHERE stature > 170 AND {real}"
     ).fetchone()
     assert (
-        0 < expected < default_db.execute(f"SELECT count(*) FROM person WHERE {real}").fetchone()[0]
+        0 < expected < engine_db.execute(f"SELECT count(*) FROM person WHERE {real}").fetchone()[0]
     )
-    assert Query(default_db, compile_query(text)).count() == expected
+    assert Query(engine_db, compile_query(text)).count() == expected
 
 
 def test_a_thousand_ors_are_refused_at_the_first_extra_comparison():
@@ -48,15 +49,16 @@ def test_a_thousand_ors_are_refused_at_the_first_extra_comparison():
     assert info.value.column == len(extra) + len("stature ") + 1
 
 
-def test_the_largest_query_allowed_runs_in_sqlite(default_db):
+def test_the_largest_query_allowed_runs(engine_db):
     # MAX_COMPARISONS terms, each inside MAX_NESTING - 1 parentheses, mixing
-    # AND and OR: SQLite's expression depth limit is not reached.
+    # AND and OR: neither SQLite's expression depth limit nor PostgreSQL's
+    # max_stack_depth is reached.
     one = "(" * (MAX_NESTING - 1) + "stature > 1 cm AND mass > 1 kg" + ")" * (MAX_NESTING - 1)
     text = " OR ".join([one] * (MAX_COMPARISONS // 2))
-    assert Query(default_db, compile_query(text)).count() > 0
+    assert Query(engine_db, compile_query(text)).count() > 0
 
 
-def test_too_many_joined_tables_are_refused_at_the_field(default_db):
+def test_too_many_joined_tables_are_refused_at_the_field(engine_db):
     fields = [f"girth.{r}.x" for r in QUERY_TABLES["girth"]]
     fields += [f"joint_limit.{r}.x" for r in QUERY_TABLES["joint_limits"]]
     fields += [f"center_of_mass.{r}.x" for r in QUERY_TABLES["center_of_mass"]]
@@ -74,11 +76,11 @@ def test_too_many_joined_tables_are_refused_at_the_field(default_db):
         for table in QUERY_TABLES[group].values()
     ][:MAX_JOINED_TABLES]
     union = " UNION ".join(f"SELECT id_num FROM {table} WHERE x > 1" for table in tables)
-    (expected,) = default_db.execute(
+    (expected,) = engine_db.execute(
         f"SELECT count(*) FROM person WHERE source = 'synthetic' AND id_num IN ({union})"
     ).fetchone()
     assert expected > 0
-    assert Query(default_db, compile_query(allowed)).count() == expected
+    assert Query(engine_db, compile_query(allowed)).count() == expected
 
 
 @pytest.mark.parametrize("number", ["1e400", "-1e309", "1e16"])

@@ -4,13 +4,13 @@ from that tree: nothing in sass_tui/db parses generated SQL back."""
 from __future__ import annotations
 
 import ast
-import sqlite3
 from pathlib import Path
 
 import pytest
-from hypothesis import given, settings
+from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from sass_tui.db.dialect import dialect_of
 from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
 from sass_tui.db.query_tree import And, Comparison, Or, names_field, to_sql
 from sass_tui.db.scope import REAL_PEOPLE
@@ -95,17 +95,20 @@ def queries(draw, depth: int = 0) -> str:
     return f"{field} {draw(st.sampled_from(['=', '!=']))} {draw(st.sampled_from(WORDS[field]))}"
 
 
-@settings(max_examples=150, deadline=None)
+@settings(
+    max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture]
+)
 @given(queries())
-def test_any_query_compiles_to_sql_sqlite_runs(default_db_file, text):
-    # Every tree's SQLite text is valid SQL with one parameter per comparison.
+def test_any_query_compiles_to_sql_each_engine_runs(shared_db, text):
+    # Every tree's SQL, in the engine's dialect, is valid SQL with one parameter
+    # per comparison (on both engines: tests/db/conftest.py).
     try:
         compiled = compile_query(text)
     except QueryError:
         return
     assert len(compiled.params) == sum(1 for _ in compiled.tree.comparisons())
-    with sqlite3.connect(f"file:{default_db_file}?mode=ro", uri=True) as conn:
-        conn.execute(
-            f"SELECT count(*) FROM {compiled.from_clause()} WHERE {compiled.where}",
-            compiled.params,
-        ).fetchone()
+    where, params = compiled.sql(dialect_of(shared_db))
+    assert params == compiled.params
+    shared_db.execute(
+        f"SELECT count(*) FROM {compiled.from_clause()} WHERE {where}", params
+    ).fetchone()

@@ -13,6 +13,8 @@ from big_flat_files import write_big_flat_files
 from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.schema import connect
 
+pytestmark = pytest.mark.sqlite_only("SQLite's read-only open (mode=ro) of a file")
+
 
 def digest(path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()

@@ -35,6 +35,8 @@ from sass_tui.db.schema import (
 from sass_tui.model.strength import MOTION_NAMES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS, STRENGTH_TYPES
 
+pytestmark = pytest.mark.sqlite_only("the DuckDB column copy of a SQLite file")
+
 PEOPLE = 3000
 
 

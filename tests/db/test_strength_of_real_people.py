@@ -4,7 +4,7 @@ through Anderson et al. 2007, marked as predicted.
 
 The person's numbers are read here from the independent copy of ANSUR II
 (tests/_paths.ANSUR), the model's coefficients typed from the paper's
-Table 3 (knee extension)."""
+Table 3 (knee extension).  On both engines (tests/db/conftest.py)."""
 
 from __future__ import annotations
 
@@ -50,7 +50,7 @@ def people() -> list[dict[str, str]]:
     return chosen
 
 
-def test_real_people_get_predicted_strength_from_their_own_body(default_db_file, capsys):
+def test_real_people_get_predicted_strength_from_their_own_body(shared_target, capsys):
     for person in people():
         mass, stature, age = (
             int(person["weightkg"]) / 10,
@@ -59,7 +59,7 @@ def test_real_people_get_predicted_strength_from_their_own_body(default_db_file,
         )
         c1, c2, c3 = KNEE_EXTENSION[(person["Gender"], group_of(age))]
         expected = c1 * mass * 9.81 * stature * math.cos(c2 * (math.radians(60) - c3))
-        argv = ["strength", "--db", str(default_db_file), "--unit", "N-m", "--format", "json"]
+        argv = ["strength", "--db", shared_target, "--unit", "N-m", "--format", "json"]
         assert main([*argv, "knee_extension", "knee_y=60", "--person", person["name"]]) == 0
         answer = json.loads(capsys.readouterr().out)
         assert answer["value"] == pytest.approx(expected, rel=0.005), person["name"]
@@ -68,15 +68,15 @@ def test_real_people_get_predicted_strength_from_their_own_body(default_db_file,
         assert f"predicted for {person['name']}" in answer["source"]
 
 
-def test_person_refuses_what_it_takes_from_the_person(default_db_file, capsys):
-    argv = ["strength", "--db", str(default_db_file), "knee_extension", "--person", "17"]
+def test_person_refuses_what_it_takes_from_the_person(shared_target, capsys):
+    argv = ["strength", "--db", shared_target, "knee_extension", "--person", "17"]
     assert main([*argv, "--mass", "80"]) == 2
     assert "--mass cannot be given with it" in capsys.readouterr().err
     assert main([*argv[:-1], "nobody"]) == 2
     assert "no person with id or name 'nobody'" in capsys.readouterr().err
 
 
-def test_a_fit_test_takes_a_strength_limit_on_real_people(default_db_file, capsys):
+def test_a_fit_test_takes_a_strength_limit_on_real_people(shared_target, capsys):
     """`sass fit --strength`: counted here over the independent ANSUR II copy."""
     if not ANSUR.is_dir():
         pytest.skip(f"the independent ANSUR II copy is not at {ANSUR}")
@@ -95,7 +95,7 @@ def test_a_fit_test_takes_a_strength_limit_on_real_people(default_db_file, capsy
             n += 1
             fit += stature <= 1900 and torque >= 150
         expected[gender.lower()] = (n, fit)
-    argv = ["fit", "--db", str(default_db_file), "--format", "json", "--strength"]
+    argv = ["fit", "--db", shared_target, "--format", "json", "--strength"]
     assert main([*argv, "knee_extension >= 150 N-m at knee_y=60", "stature <= 190 cm"]) == 0
     result = json.loads(capsys.readouterr().out)
     got = {g: (v["n"], v["fit"]) for g, v in result["accommodated"].items() if g != "weighted"}

@@ -2,19 +2,21 @@
 a generated sample of heavier, shorter civilian-like women, and `fit`,
 `population`, `query --count` and `family` answer for the weighted people.
 Each weighted answer is checked against the sample's own figures, computed
-here with numpy; the answers without --target are checked to stay as they were."""
+here with numpy; the answers without --target are checked to stay as they were.
+On both engines (tests/db/conftest.py)."""
 
 from __future__ import annotations
 
 import json
 import shutil
-import sqlite3
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from sass_tui.cli import main
+from sass_tui.db.addresses import is_url
+from sass_tui.db.database import Database
 from sass_tui.model.names import GLOBAL, row_index
 from sass_tui.model.popfile import read_population_file
 
@@ -50,16 +52,13 @@ def sample() -> np.ndarray:
 
 
 @pytest.fixture(scope="module")
-def made(default_db_file, sample, tmp_path_factory):
-    """A copy of the default database holding the target `civ`."""
+def made(template_target, copy_database, sample, tmp_path_factory) -> str:
+    """A copy of the default database holding the target `civ`, on each engine:
+    its address (the tests that write copy it again)."""
     folder = tmp_path_factory.mktemp("target")
-    db = folder / "sass.db"
-    shutil.copyfile(default_db_file, db)
+    db = copy_database(template_target)
     csv_path = write_sample(folder / "civilian.csv", sample)
-    assert (
-        main(["target", "civ", "--db", str(db), "--gender", "female", "--sample", str(csv_path)])
-        == 0
-    )
+    assert main(["target", "civ", "--db", db, "--gender", "female", "--sample", str(csv_path)]) == 0
     return db
 
 
@@ -69,15 +68,17 @@ def run_json(capsys, *argv: str) -> dict:
     return json.loads(capsys.readouterr().out)
 
 
-def stored_targets(db: Path) -> list[tuple]:
-    conn = sqlite3.connect(db)
+def stored_targets(db: str) -> list[tuple]:
+    opened = Database.open(db)
     try:
-        return (
-            conn.execute("SELECT name FROM target").fetchall()
-            + conn.execute("SELECT DISTINCT target FROM target_weight").fetchall()
-        )
+        with opened.connection() as conn:
+            return [
+                tuple(row)
+                for sql in ("SELECT name FROM target", "SELECT DISTINCT target FROM target_weight")
+                for row in conn.execute(sql).fetchall()
+            ]
     finally:
-        conn.close()
+        opened.close()
 
 
 @pytest.mark.parametrize(("q", "r"), [(50, 50), (90, 90), (70, 35), (30, 80)])
@@ -87,9 +88,7 @@ def test_the_weighted_share_is_the_samples(made, sample, capsys, q, r):
     stature, mass = np.percentile(sample[:, 0], q), np.percentile(sample[:, 1], r)
     own = 100 * np.mean((sample[:, 0] <= stature) & (sample[:, 1] <= mass))
     limits = f"stature <= {stature:.4f} cm AND mass <= {mass:.4f} kg"
-    result = run_json(
-        capsys, "fit", "--db", str(made), "--target", "civ", "--format", "json", limits
-    )
+    result = run_json(capsys, "fit", "--db", made, "--target", "civ", "--format", "json", limits)
     assert result["target"]["name"] == "civ"
     assert abs(result["target"]["percent"] - own) <= 3.0
     assert 0 < result["target"]["effective_n"] < result["accommodated"]["female"]["n"]
@@ -100,7 +99,7 @@ def test_the_weighted_share_is_the_samples(made, sample, capsys, q, r):
 
 def test_the_weighted_population_has_the_samples_median(made, sample, tmp_path, capsys):
     out = tmp_path / "civ.dat"
-    assert main(["population", "--db", str(made), "--target", "civ", "-o", str(out)]) == 0
+    assert main(["population", "--db", made, "--target", "civ", "-o", str(out)]) == 0
     assert "target civ" in capsys.readouterr().out
     stats = read_population_file(tmp_path / "civ-global.dat", GLOBAL)
     assert "target civ" in stats.title
@@ -131,12 +130,11 @@ def test_the_weighted_count(made, sample, capsys):
     stature = float(np.percentile(sample[:, 0], 25))
     capsys.readouterr()
     assert (
-        main(["query", "--db", str(made), "--count", "--target", "civ", f"stature <= {stature} cm"])
-        == 0
+        main(["query", "--db", made, "--count", "--target", "civ", f"stature <= {stature} cm"]) == 0
     )
     raw, weighted = capsys.readouterr().out.splitlines()
     capsys.readouterr()
-    assert main(["query", "--db", str(made), "--count", f"stature <= {stature} cm"]) == 0
+    assert main(["query", "--db", made, "--count", f"stature <= {stature} cm"]) == 0
     assert capsys.readouterr().out.strip() == raw
     share = float(weighted.split("(")[1].split(" %")[0])
     assert abs(share - 25.0) <= 1.5
@@ -145,7 +143,7 @@ def test_the_weighted_count(made, sample, capsys):
 
 def test_the_weighted_family(made, sample, tmp_path, capsys):
     capsys.readouterr()
-    argv = ["family", "--db", str(made), "--gender", "female", "--measures", "stature,mass"]
+    argv = ["family", "--db", made, "--gender", "female", "--measures", "stature,mass"]
     assert main([*argv, "--target", "civ", "-o", str(tmp_path / "w")]) == 0
     assert "weighted: target civ" in capsys.readouterr().out
     weighted = json.loads((tmp_path / "w" / "family.json").read_text(encoding="utf-8"))
@@ -160,19 +158,17 @@ def test_the_weighted_family(made, sample, tmp_path, capsys):
     assert center["mass"] == pytest.approx(sample[:, 1].mean(), abs=0.05)
 
 
-def test_answers_without_target_are_unchanged(default_db_file, made, tmp_path, capsys):
+def test_answers_without_target_are_unchanged(shared_target, made, tmp_path, capsys):
     """fit, population and query --count give the same answer on a database
     holding a target as on one without, and no weighted word."""
     limits = "stature <= 165 cm AND mass <= 80 kg"
     outputs = []
-    for db in (default_db_file, made):
+    for db in (shared_target, made):
         capsys.readouterr()
-        out = tmp_path / f"{db.stem}-{len(outputs)}.dat"
-        assert main(["fit", "--db", str(db), "--format", "json", limits]) == 0
-        assert main(["query", "--db", str(db), "--count", "gender = female AND mass > 70 kg"]) == 0
-        assert (
-            main(["population", "--db", str(db), "--query", "gender = female", "-o", str(out)]) == 0
-        )
+        out = tmp_path / f"answers-{len(outputs)}.dat"
+        assert main(["fit", "--db", db, "--format", "json", limits]) == 0
+        assert main(["query", "--db", db, "--count", "gender = female AND mass > 70 kg"]) == 0
+        assert main(["population", "--db", db, "--query", "gender = female", "-o", str(out)]) == 0
         text = capsys.readouterr().out.replace(out.stem, "X")
         files = sorted(p.name.replace(out.stem, "X") for p in tmp_path.glob(f"{out.stem}*"))
         outputs.append((text, files, out.read_text(encoding="utf-8")))
@@ -182,22 +178,21 @@ def test_answers_without_target_are_unchanged(default_db_file, made, tmp_path, c
     assert "X-global.dat" not in outputs[0][1]
 
 
-def test_list_replace_and_drop(made, sample, tmp_path, capsys):
-    db = tmp_path / "sass.db"
-    shutil.copyfile(made, db)
+def test_list_replace_and_drop(made, copy_database, sample, tmp_path, capsys):
+    db = copy_database(made)
     csv_path = write_sample(tmp_path / "other.csv", civilian_women(200, seed=3))
-    argv = ["target", "civ", "--db", str(db), "--gender", "female", "--sample", str(csv_path)]
+    argv = ["target", "civ", "--db", db, "--gender", "female", "--sample", str(csv_path)]
     capsys.readouterr()
     assert main(argv) == 2  # not a terminal: no question, a refusal
     assert "give --force" in capsys.readouterr().err
-    assert main(["target", "--db", str(db), "--list"]) == 0
+    assert main(["target", "--db", db, "--list"]) == 0
     assert "3000 rows" in capsys.readouterr().out
     assert main([*argv, "--force"]) == 0
-    assert main(["target", "--db", str(db), "--list"]) == 0
+    assert main(["target", "--db", db, "--list"]) == 0
     assert "200 rows of" in capsys.readouterr().out
-    assert main(["target", "--db", str(db), "--drop", "civ"]) == 0
+    assert main(["target", "--db", db, "--drop", "civ"]) == 0
     assert stored_targets(db) == []
-    assert main(["fit", "--db", str(db), "--target", "civ", "stature < 170 cm"]) == 2
+    assert main(["fit", "--db", db, "--target", "civ", "stature < 170 cm"]) == 2
     assert "no target named 'civ'" in capsys.readouterr().err
 
 
@@ -214,23 +209,37 @@ def test_list_replace_and_drop(made, sample, tmp_path, capsys):
         ),
     ],
 )
-def test_bad_samples_store_nothing(default_db_file, tmp_path, capsys, lines, says):
-    db = tmp_path / "sass.db"
-    shutil.copyfile(default_db_file, db)
+def test_bad_samples_store_nothing(engine_target, tmp_path, capsys, lines, says):
+    db = engine_target
     csv_path = tmp_path / "bad.csv"
     csv_path.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    before = db.read_bytes()
+    before = _state(db)
     capsys.readouterr()
-    assert (
-        main(["target", "t", "--db", str(db), "--gender", "female", "--sample", str(csv_path)]) == 2
-    )
+    assert main(["target", "t", "--db", db, "--gender", "female", "--sample", str(csv_path)]) == 2
     err = capsys.readouterr().err
     assert says in err and "Traceback" not in err
     assert str(csv_path) in err or "--by" in err
     assert stored_targets(db) == []
-    assert db.read_bytes() == before
+    assert _state(db) == before
 
 
+def _state(db: str) -> object:
+    """What a refusal must leave as it was: a SQLite file's bytes, a PostgreSQL
+    database's row counts."""
+    if not is_url(db):
+        return Path(db).read_bytes()
+    opened = Database.open(db)
+    try:
+        with opened.connection() as conn:
+            tables = [t for (t,) in conn.execute(
+                "SELECT table_name FROM information_schema.tables WHERE table_schema = 'public'"
+            )]  # fmt: skip
+            return {t: conn.execute(f"SELECT count(*) FROM {t}").fetchone()[0] for t in tables}
+    finally:
+        opened.close()
+
+
+@pytest.mark.sqlite_only("people are deleted by SQLite's schema.delete_people alone")
 def test_people_deleted_since_drop_out_of_the_sums(made, tmp_path):
     from sass_tui.db.schema import connect, delete_people, transaction
     from sass_tui.db.targets import load_target, weighted_count
