@@ -133,7 +133,7 @@ def test_four_imports_at_once_and_four_readers(cluster, ansur_dir, tmp_path):
     The survey is the first 300 women of the ANSUR II file: each import is
     still one chunk (db/ansur.py's CHUNK_ROWS) stored in one transaction of
     several COPYs, as with the whole file (1,986 women), which took 20 s of
-    CPU, most of it the readers counting while the imports ran; now 10 s."""
+    CPU, most of it the readers counting while the imports ran; now 6 s."""
     url = cluster.create_database("load")
     assert main(["db", "init", "--force", "--db", url]) == 0
     female = tmp_path / "ANSUR_II_FEMALE_Public.csv"
