@@ -15,13 +15,14 @@ from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal
 from textual.message import Message
-from textual.widgets import DataTable, Footer, Label
+from textual.widgets import DataTable, Label
 from textual_plotext import PlotextPlot
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.vocabulary import GENDERS
 from sass_tui.ui.base import SassScreen
+from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
 from sass_tui.ui.widgets import MessageLine
 from sass_tui.ui.widgets.message_line import CANCELLED

@@ -14,7 +14,6 @@ from __future__ import annotations
 import copy
 
 from textual.binding import Binding
-from textual.widgets import Footer
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
@@ -22,6 +21,7 @@ from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 from sass_tui.model.outline import Outline, figure_outline
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.figure_view import FigureView
+from sass_tui.ui.footer import Footer
 from sass_tui.ui.widgets import MessageLine
 
 # The overlays `o` cycles through: None, or the population's percentile.

@@ -15,13 +15,14 @@ from textual import work
 from textual.binding import Binding
 from textual.containers import ScrollableContainer
 from textual.message import Message
-from textual.widgets import Footer, Static
+from textual.widgets import Static
 from textual_plotext import PlotextPlot
 
 from sass_tui.db.fit import LimitHistogram
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.lists import DB_ERRORS, QueryLists
 from sass_tui.ui.base import SassScreen
+from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
 from sass_tui.ui.target_picker import pick_target, weighted_words
 from sass_tui.ui.widgets import MessageLine

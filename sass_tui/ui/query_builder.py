@@ -28,7 +28,7 @@ from textual.binding import Binding
 from textual.containers import Vertical
 from textual.message import Message
 from textual.screen import ModalScreen
-from textual.widgets import Footer, Input, OptionList
+from textual.widgets import Input, OptionList
 from textual.widgets.option_list import Option
 
 from sass_tui.db.query import QueryError, compile_query
@@ -38,6 +38,7 @@ from sass_tui.model.strength import MOTIONS
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 from sass_tui.model.vocabulary import STRENGTH_TYPES
 from sass_tui.ui.base import SassScreen
+from sass_tui.ui.footer import Footer
 from sass_tui.ui.widgets import MessageLine
 
 PREVIOUS = "Previous Menu"

@@ -19,10 +19,10 @@ from pathlib import Path
 from textual import events, work
 from textual.binding import Binding
 from textual.containers import Horizontal
-from textual.widgets import Footer
 
 from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.model.text import printable
+from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import QUERY_BAR_AFTER, Work, WorkBar
 from sass_tui.ui.query_base import WAIT
 from sass_tui.ui.query_builder import QueryBuilder, QueryBuilderScreen

@@ -19,7 +19,6 @@ from textual import events
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, Vertical
-from textual.widgets import Footer
 
 from sass_tui.model.names import (
     CENTER_OF_MASS,
@@ -30,6 +29,7 @@ from sass_tui.model.names import (
 )
 from sass_tui.model.units import DISPLAY, other_unit
 from sass_tui.ui.commands import COMMANDS
+from sass_tui.ui.footer import Footer
 from sass_tui.ui.spreadsheet_edit import EditCommands
 from sass_tui.ui.spreadsheet_files import FileCommands
 from sass_tui.ui.spreadsheet_people import PeopleCommands

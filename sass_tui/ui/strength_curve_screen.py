@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from rich.text import Text
 from textual.binding import Binding
-from textual.widgets import Footer, Static
+from textual.widgets import Static
 from textual_plotext import PlotextPlot
 
 from sass_tui.model.errors import SassError
@@ -30,6 +30,7 @@ from sass_tui.model.published_strength import (
 )
 from sass_tui.model.units import parse_quantity
 from sass_tui.ui.base import SassScreen
+from sass_tui.ui.footer import Footer
 from sass_tui.ui.widgets import MessageLine
 
 
