@@ -17,6 +17,8 @@ from __future__ import annotations
 from textual.app import ComposeResult
 from textual.widgets import Footer as TextualFooter
 
+from sass_tui.ui.textual_api import footer_bindings_ready
+
 # What the footer is built from (Footer.compose): each active binding with
 # whether it is enabled and its tooltip, in the order the screen gives them,
 # and the footer's own settings that compose reads.
@@ -40,7 +42,7 @@ class Footer(TextualFooter):
         )
 
     def compose(self) -> ComposeResult:
-        self._built_from = self._shown() if self._bindings_ready else None
+        self._built_from = self._shown() if footer_bindings_ready(self) else None
         yield from super().compose()
 
     async def recompose(self) -> None:

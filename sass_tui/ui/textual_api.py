@@ -9,12 +9,17 @@ every screen's bindings, shown or not (ui/palette.py).  Both read Textual's
 `DOMNode._bindings` (an instance's map) and `DOMNode._merge_bindings()` (a
 class's), here only; tests/ui/test_textual_api.py fails, naming what moved,
 when a Textual release renames or reshapes either.
+
+The footer (ui/footer.py) skips a rebuild that would draw the same keys; it
+asks whether Textual's `Footer` has its bindings yet (`Footer._bindings_ready`,
+set once the screen first publishes them), also here only.
 """
 
 from __future__ import annotations
 
 from textual.binding import BindingsMap
 from textual.dom import DOMNode
+from textual.widgets import Footer
 
 
 def bindings_of(node: DOMNode) -> BindingsMap:
@@ -26,3 +31,9 @@ def bindings_of(node: DOMNode) -> BindingsMap:
 def class_bindings(node_class: type[DOMNode]) -> BindingsMap:
     """The keys an instance of `node_class` starts with."""
     return node_class._merge_bindings()
+
+
+def footer_bindings_ready(footer: Footer) -> bool:
+    """Whether Textual's footer has been given its screen's bindings (before
+    that its compose draws no keys)."""
+    return bool(footer._bindings_ready)

@@ -47,3 +47,16 @@ def test_a_node_s_bindings_are_those_it_has_now(drive, app_at):
             assert set(now.key_to_bindings) == set(expected)
 
     drive(scenario())
+
+
+def test_the_footer_says_when_it_has_its_bindings(drive, app_at):
+    from sass_tui.ui.footer import Footer
+
+    async def scenario():
+        async with app_at((100, 37)) as (app, pilot):
+            footer = app.screen.query_one(Footer)
+            assert hasattr(footer, "_bindings_ready"), MOVED.format(what="Footer._bindings_ready")
+            await pilot.pause()
+            assert textual_api.footer_bindings_ready(footer) is True
+
+    drive(scenario())
