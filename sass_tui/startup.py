@@ -124,10 +124,12 @@ PATHS: tuple[StartupPath, ...] = (
         ("query", "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "dataclasses", "inspect",
          "pickle", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
-         "sass_tui.model.prediction", "sass_tui.db.accelerator"),
+         "sass_tui.model.prediction", "sass_tui.db.accelerator", "sass_tui.db.postgres",
+         "json"),
         "`sass query` <= 5x `python -c pass` (benchmarks/cli_ratios.py): the generated"
         " parser, the unit table (not pint), SQLite and the table writer; argparse's help"
-        " formatter without shutil; no column copy below its size",
+        " formatter without shutil; no column copy below its size; json only for --format"
+        " json (1.1 ms), the PostgreSQL module only for an address",
         needs_db=True,
     ),
     StartupPath(
@@ -135,7 +137,8 @@ PATHS: tuple[StartupPath, ...] = (
         ("query", "--format", "csv", "stature > 70 in"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "dataclasses", "inspect",
          "pickle", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
-         "sass_tui.model.prediction", "sass_tui.db.accelerator"),
+         "sass_tui.model.prediction", "sass_tui.db.accelerator", "sass_tui.db.postgres",
+         "json"),
         "as `sass query`: \"70 in\" is converted from the unit table, and csv is the writer",
         needs_db=True,
     ),

@@ -3,12 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import json
-import math
 import sys
 from collections.abc import Iterable
 from itertools import islice
-from json.encoder import encode_basestring_ascii as quote
 from operator import itemgetter
 from typing import TextIO
 
@@ -189,6 +186,11 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
     function, when the numbers are all finite numbers (their sum is finite;
     None or a text raises TypeError); otherwise by the encoder, person by
     person (benchmarks/query_formats.py)."""
+    # deferred: json, math — only --format json writes JSON; off sass query (sass_tui/startup.py)
+    import json
+    import math
+    from json.encoder import encode_basestring_ascii as quote
+
     # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import PERSON_FIELDS
 
@@ -216,6 +218,9 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
 
 def _finite(person: dict) -> dict:
     """The person for JSON, which has no Infinity or NaN: refuse one stored so."""
+    # deferred: math — only --format json writes JSON; off sass query (sass_tui/startup.py)
+    import math
+
     # deferred: db.query, model.text — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import QueryError
     from sass_tui.model.text import printable

@@ -96,11 +96,11 @@ class Database:
         progress: Progress | None = None,
     ) -> Database:
         """The database `target` names (see configured_target)."""
-        # deferred: db.postgres — off sass db init (sass_tui/startup.py)
-        from sass_tui.db.postgres import connect_postgres
-
         target = configured_target(target)
         if is_url(target):
+            # deferred: db.postgres — off sass query, sass db init (sass_tui/startup.py)
+            from sass_tui.db.postgres import connect_postgres
+
             return cls(connect_postgres(str(target), create=create), target)
         with engine_errors():
             return cls(open_database(target, create=create, progress=progress), target)
@@ -108,10 +108,10 @@ class Database:
     @property
     def name(self) -> str:
         """The database as shown to a user (a PostgreSQL address without its password)."""
-        # deferred: db.postgres — off sass db init (sass_tui/startup.py)
-        from sass_tui.db.postgres import shown
-
         if is_url(self.target):
+            # deferred: db.postgres — off sass query, sass db init (sass_tui/startup.py)
+            from sass_tui.db.postgres import shown
+
             return shown(str(self.target))
         if self.dialect == "sqlite":
             for _seq, name, file in self._conn.execute("PRAGMA database_list"):
