@@ -105,11 +105,21 @@ LAST_STORE = {
 }
 
 
+@pytest.mark.parametrize(
+    "open_importer",
+    [
+        pytest.param(lambda target: (db := Database.open(target), db.import_flat), id="Database"),
+        pytest.param(
+            lambda target: (lists := QueryLists.open(target), lists.import_files), id="QueryLists"
+        ),
+    ],
+)
 def test_a_cancel_while_the_people_are_stored_stores_nothing(
-    engine, engine_target, engine_db_copy, tmp_path, monkeypatch
+    engine, engine_target, engine_db_copy, tmp_path, monkeypatch, open_importer
 ):
     """The user presses Escape as the last rows go in, before the commit: the
-    import is cancelled and nothing is stored, on either engine."""
+    import is cancelled and nothing is stored, on either engine, through the
+    Database service (the CLI) and the query screen's lists (Input DB)."""
     before = _state(engine_db_copy)
     cancel = threading.Event()
     module, name = LAST_STORE[engine].rsplit(".", 1)
@@ -122,11 +132,9 @@ def test_a_cancel_while_the_people_are_stored_stores_nothing(
 
     monkeypatch.setattr(LAST_STORE[engine], storing)
     files = write_big_flat_files(tmp_path / "big", people=20)
-    with (
-        closing(Database.open(engine_target)) as db,
-        pytest.raises(Cancelled, match="the import was cancelled"),
-    ):
-        db.import_flat(files, None, cancel)
+    opened, import_files = open_importer(engine_target)
+    with closing(opened), pytest.raises(Cancelled, match="the import was cancelled"):
+        import_files(files, None, cancel)
     assert cancel.is_set()
     assert _state(engine_db_copy) == before
 
