@@ -229,6 +229,7 @@ class Database:
                     lambda staging: import_ansur(
                         staging, files, progress, label=label, cancel=cancel
                     ),
+                    cancel=cancel,
                 )
             return import_ansur(conn, files, progress, label=label, cancel=cancel)
 
@@ -245,7 +246,9 @@ class Database:
                 from sass_tui.db.postgres import import_staged
 
                 return import_staged(
-                    conn, lambda staging: import_flat_files(staging, files, progress, cancel)
+                    conn,
+                    lambda staging: import_flat_files(staging, files, progress, cancel),
+                    cancel=cancel,
                 )
             return import_flat_files(conn, files, progress, cancel)
 

@@ -347,7 +347,9 @@ class QueryLists:
             from sass_tui.db.postgres import import_staged
 
             return import_staged(
-                self._conn, lambda staging: import_flat_files(staging, files, progress, cancel)
+                self._conn,
+                lambda staging: import_flat_files(staging, files, progress, cancel),
+                cancel=cancel,
             )
         return import_flat_files(self._conn, files, progress, cancel)
 
@@ -371,7 +373,7 @@ class QueryLists:
             # deferred: db.postgres — only import_ansur() needs it; importing db.lists does not load it
             from sass_tui.db.postgres import import_staged
 
-            return import_staged(self._conn, load)
+            return import_staged(self._conn, load, cancel=cancel)
         return load(self._conn)
 
     @_serialised

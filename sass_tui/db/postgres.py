@@ -43,6 +43,7 @@ from pathlib import Path
 from typing import Any, TypeVar
 from urllib.parse import urlsplit, urlunsplit
 
+from sass_tui.db.progress import Cancel, interruptible
 from sass_tui.db.query_tree import Dialect
 from sass_tui.db.schema import (
     PERSON_TABLES,
@@ -399,10 +400,14 @@ def import_staged(
     *,
     replace_all: bool = False,
     staging_file: Path | None = None,
+    cancel: Cancel | None = None,
 ) -> T:
     """`stage` imports into a private SQLite file (its parsing and checks, its
     errors); then its people are copied into PostgreSQL in one transaction.
-    `replace_all`: everyone stored before goes (`sass db init`)."""
+    `replace_all`: everyone stored before goes (`sass db init`).  `cancel`
+    (handed to `stage` too) also stops the copy, up to its commit, with
+    Cancelled and the transaction rolled back: nothing stored, as a cancel
+    of SQLite's import (db/progress.py's interruptible)."""
     # deferred: tempfile — off sass query, sass query --count, sass person … (sass_tui/startup.py)
     import tempfile
 
@@ -414,9 +419,10 @@ def import_staged(
             result = stage(staging)
             with conn.transaction():
                 conn.execute("SELECT pg_advisory_xact_lock(%s)", (WRITE_LOCK,))
-                if replace_all:
-                    recreate_schema(conn)
-                copy_people(staging, conn)
+                with interruptible(conn, cancel, "the import"):
+                    if replace_all:
+                        recreate_schema(conn)
+                    copy_people(staging, conn)
         finally:
             staging.close()
     return result

@@ -64,12 +64,11 @@ class Steps:
 
 
 @contextmanager
-def interruptible(
-    conn: sqlite3.Connection, cancel: Cancel | None, what: str = "the work"
-) -> Iterator[None]:
+def interruptible(conn: Any, cancel: Cancel | None, what: str = "the work") -> Iterator[None]:
     """Abort a running statement once `cancel` is set; raises Cancelled instead
     of SQLite's "interrupted" or PostgreSQL's "canceling statement" (the
-    caller's transaction rolls back)."""
+    caller's transaction rolls back).  `conn`: sqlite3's connection or
+    db/postgres.py's PostgresConnection (which imports this module)."""
     if cancel is None:
         yield
         return

@@ -1,24 +1,29 @@
-"""ANSUR II import and queries, checked against direct computations over the CSV."""
+"""ANSUR II import and queries, checked against direct computations over the CSV.
+
+Both engines: the test copy of ANSUR II is imported through the Database
+service into a new database of each engine (`ansur_target`; on PostgreSQL
+staged in SQLite and copied, db/postgres.py), and the same counts, ids and
+values are asked of both."""
 
 from __future__ import annotations
 
 import csv
 import math
+from collections.abc import Iterator
+from contextlib import closing
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.ansur import AnsurImportError, ellipse_axes, import_ansur
+from sass_tui.db.ansur import AnsurImportError, ellipse_axes
+from sass_tui.db.database import Database
+from sass_tui.db.dialect import mark_of
 from sass_tui.db.individual import fetch_individual
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import connect, row_counts
+from sass_tui.db.schema import row_counts
 from sass_tui.model.names import GIRTH, row_index
-
-pytestmark = pytest.mark.sqlite_only(
-    "an ANSUR II import into a SQLite file; a PostgreSQL import is staged through it in SQLite and copied (test_engines.py)"
-)
 
 SHARED = Path(__file__).resolve().parents[1].parent.parent / "shared"
 FILES = ("ANSUR_II_MALE_Public.csv", "ANSUR_II_FEMALE_Public.csv")
@@ -33,12 +38,24 @@ def ansur_files() -> list[Path]:
 
 
 @pytest.fixture(scope="session")
-def ansur_db(ansur_files, tmp_path_factory):
-    path = tmp_path_factory.mktemp("ansur") / "ansur.db"
-    conn = connect(path, create=True)
-    counts = import_ansur(conn, ansur_files)
-    yield conn, counts, path
-    conn.close()
+def ansur_target(engine, ansur_files, tmp_path_factory, request) -> tuple[str, dict[str, int]]:
+    """A new database of `engine` holding ANSUR II alone, imported once per test
+    process through the Database service: its address and the import's counts."""
+    if engine == "sqlite":
+        target = str(tmp_path_factory.mktemp("ansur") / "ansur.db")
+    else:
+        target = request.getfixturevalue("cluster").create_database("sass_ansur")
+    with closing(Database.open(target, create=True)) as db:
+        counts = db.import_ansur(ansur_files, label="ansur2")
+    return target, counts
+
+
+@pytest.fixture()
+def ansur_db(ansur_target) -> Iterator[tuple[Database, Any, dict[str, int]]]:
+    """The ANSUR II database (read only): the Database, its connection, the import's counts."""
+    target, counts = ansur_target
+    with closing(Database.open(target)) as db, db.connection() as conn:
+        yield db, conn, counts
 
 
 @pytest.fixture(scope="session")
@@ -52,7 +69,7 @@ def csv_rows(ansur_files) -> list[dict]:
 
 
 def test_counts(ansur_db):
-    conn, counts, _ = ansur_db
+    _db, conn, counts = ansur_db
     assert counts == {"male": 4082, "female": 1986}
     assert dict(conn.execute("SELECT gender, count(*) FROM person GROUP BY gender")) == counts
 
@@ -103,18 +120,19 @@ CASES = [
 
 
 @pytest.mark.parametrize("text, predicate", [c for c in CASES if c[1]])
-def test_query_counts_match_csv(ansur_db, csv_rows, text, predicate):
-    conn, _, _ = ansur_db
+def test_query_counts_match_csv(ansur_target, csv_rows, text, predicate):
     expected = sum(1 for r in csv_rows if predicate(r))
     assert 0 < expected < len(csv_rows)
-    assert run_query(conn, text).count() == expected
+    with closing(Database.open(ansur_target[0])) as db:
+        assert db.count(text) == expected
 
 
 def test_derivations(ansur_db, csv_rows):
-    conn, _, _ = ansur_db
+    _db, conn, _ = ansur_db
     first = csv_rows[0]
     pid = conn.execute(
-        "SELECT id_num FROM person WHERE source_key = ?", (f"ANSUR II:male:{first['subjectid']}",)
+        f"SELECT id_num FROM person WHERE source_key = {mark_of(conn)}",
+        (f"ANSUR II:male:{first['subjectid']}",),
     ).fetchone()[0]
     person = fetch_individual(conn, pid)
     girth = person.groups[GIRTH]
@@ -138,19 +156,23 @@ def test_ellipse_axes_ratio():
 
 
 @pytest.mark.slow
-def test_reimport_does_not_duplicate(ansur_files, tmp_path):
-    conn = connect(tmp_path / "x.db", create=True)
-    import_ansur(conn, ansur_files[1:])
-    first = row_counts(conn)
-    ids = [r[0] for r in conn.execute("SELECT id_num FROM person ORDER BY id_num LIMIT 5")]
-    import_ansur(conn, ansur_files[1:])
-    assert row_counts(conn) == first
-    assert [r[0] for r in conn.execute("SELECT id_num FROM person ORDER BY id_num LIMIT 5")] == ids
+def test_reimport_does_not_duplicate(engine_target, engine_db_copy, ansur_files):
+    """The women imported under a new label, then again: the second import
+    replaces them under the same ids."""
+    conn = engine_db_copy
+    before = row_counts(conn)
+    ids = "SELECT id_num FROM person WHERE source = 'again' ORDER BY id_num"
+    with closing(Database.open(engine_target)) as db:
+        assert db.import_ansur(ansur_files[1:], label="again") == {"male": 0, "female": 1986}
+        first = row_counts(conn), conn.execute(ids).fetchall()
+        assert first[0]["person"] == before["person"] + 1986 == before["person"] + len(first[1])
+        db.import_ansur(ansur_files[1:], label="again")
+    assert (row_counts(conn), conn.execute(ids).fetchall()) == first
 
 
 @pytest.mark.slow
-def test_missing_column_rejected(ansur_db, ansur_files, tmp_path):
-    conn, _, path = ansur_db
+def test_missing_column_rejected(engine_target, engine_db_copy, ansur_files, tmp_path):
+    conn = engine_db_copy
     text = ansur_files[1].read_text(encoding="cp1252").splitlines()
     header = text[0].split(",")
     k = [h.lower() for h in header].index("acromionradialelength")
@@ -158,14 +180,19 @@ def test_missing_column_rejected(ansur_db, ansur_files, tmp_path):
     bad = tmp_path / "broken.csv"
     bad.write_text("\n".join(broken) + "\n", encoding="cp1252")
     before = row_counts(conn)
-    with pytest.raises(
-        AnsurImportError, match=r"broken.csv:1: missing column acromionradialelength"
+    with (
+        closing(Database.open(engine_target)) as db,
+        pytest.raises(
+            AnsurImportError, match=r"broken.csv:1: missing column acromionradialelength"
+        ),
     ):
-        import_ansur(conn, [ansur_files[0], bad])
+        db.import_ansur([ansur_files[0], bad], label="broken")
     assert row_counts(conn) == before
 
 
-def test_cli_import_ansur(ansur_files, tmp_path, capsys):
-    db = tmp_path / "cli.db"
-    assert main(["db", "import-ansur", "--db", str(db), str(ansur_files[1])]) == 0
+def test_cli_import_ansur(engine_target, engine_db_copy, ansur_files, capsys):
+    argv = ["db", "import-ansur", "--db", engine_target, "--source", "cli", str(ansur_files[1])]
+    assert main(argv) == 0
     assert "imported 0 men and 1986 women" in capsys.readouterr().out
+    stored = "SELECT gender, count(*) FROM person WHERE source = 'cli' GROUP BY gender"
+    assert engine_db_copy.execute(stored).fetchall() == [("female", 1986)]

@@ -1,25 +1,28 @@
 """Progress and cancel of the long database work: every function
-reports (done, total) and stops on a cancel with nothing written."""
+reports (done, total) and stops on a cancel with nothing written.
+
+Both engines: imports through the Database service into a private copy
+(`engine_target`; on PostgreSQL staged in SQLite and copied, db/postgres.py),
+the query lists, populations, fit tests and families over the shared
+database.  SQLite only: the default file's first build and SQLite's
+progress handler (PostgreSQL's statement cancel: test_engines_verbs.py)."""
 
 from __future__ import annotations
 
 import threading
+from contextlib import closing
 
 import pytest
 from big_flat_files import write_big_flat_files
 
-from sass_tui.db.ansur import import_ansur
+from sass_tui.db.database import Database
 from sass_tui.db.default import create_default_database, shipped_ansur_files
+from sass_tui.db.dialect import dialect_of
 from sass_tui.db.fit import fit_test, load_family
-from sass_tui.db.flatfile import import_flat_files
 from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.population import population_of
 from sass_tui.db.progress import Cancelled, interruptible
 from sass_tui.db.schema import connect, row_counts
-
-pytestmark = pytest.mark.sqlite_only(
-    "SQLite's progress handler and the import functions' SQLite connection (PostgreSQL's cancel: test_engines_verbs.py)"
-)
 
 
 class CancelAfter:
@@ -36,6 +39,9 @@ class CancelAfter:
 
 
 def _state(conn):
+    """The rows of every table of people, and on SQLite its file's integrity."""
+    if dialect_of(conn) != "sqlite":
+        return row_counts(conn), "ok"
     return row_counts(conn), conn.execute("PRAGMA integrity_check").fetchone()[0]
 
 
@@ -49,9 +55,13 @@ def _checked(reports: list[tuple[int, int]]) -> None:
 
 
 @pytest.mark.slow
-def test_flat_import_reports_lines_and_a_cancel_stores_nothing(default_db, tmp_path):
+def test_flat_import_reports_lines_and_a_cancel_stores_nothing(
+    engine_target, engine_db_copy, tmp_path
+):
+    conn = engine_db_copy
     files = write_big_flat_files(tmp_path / "big", people=1500)
-    before = _state(default_db)
+    db = Database.open(engine_target)
+    before = _state(conn)
     reports: list[tuple[int, int]] = []
     cancel = threading.Event()
 
@@ -60,28 +70,79 @@ def test_flat_import_reports_lines_and_a_cancel_stores_nothing(default_db, tmp_p
         if len(reports) == 3:
             cancel.set()  # the user presses Escape while it reads
 
-    with pytest.raises(Cancelled, match="the import was cancelled; nothing was written"):
-        import_flat_files(default_db, files, progress, cancel)
+    with (
+        closing(db),
+        pytest.raises(Cancelled, match="the import was cancelled; nothing was written"),
+    ):
+        db.import_flat(files, progress, cancel)
     assert len(reports) == 3
-    assert _state(default_db) == before
+    assert _state(conn) == before
     # cancelled while storing (the SQLite statement is interrupted): rolled back
-    with pytest.raises(Cancelled):
-        import_flat_files(default_db, files, None, CancelAfter(1500 * 26 // 500 + 3))
-    assert _state(default_db) == before
+    with closing(Database.open(engine_target)) as db, pytest.raises(Cancelled):
+        db.import_flat(files, None, CancelAfter(1500 * 26 // 500 + 3))
+    assert _state(conn) == before
     reports.clear()
-    assert import_flat_files(default_db, files, lambda d, t: reports.append((d, t))) == 1500
+    with closing(Database.open(engine_target)) as db:
+        assert db.import_flat(files, lambda d, t: reports.append((d, t))) == 1500
     _checked(reports)
     assert reports[-1][1] == 1500 + 1500 * 25  # every line of both files
-    assert _state(default_db)[0]["person"] == before[0]["person"] + 1500
+    assert _state(conn)[0]["person"] == before[0]["person"] + 1500
 
 
-def test_ansur_import_cancelled_is_rolled_back(default_db):
-    before = _state(default_db)
-    with pytest.raises(Cancelled):
-        import_ansur(default_db, shipped_ansur_files(), label="again", cancel=CancelAfter(2))
-    assert _state(default_db) == before
+def test_ansur_import_cancelled_is_rolled_back(engine_target, engine_db_copy):
+    before = _state(engine_db_copy)
+    with closing(Database.open(engine_target)) as db, pytest.raises(Cancelled):
+        db.import_ansur(shipped_ansur_files(), label="again", cancel=CancelAfter(2))
+    assert _state(engine_db_copy) == before
 
 
+# Where each engine stores an import's people last, before its commit: SQLite's
+# import writes them (db/flatfile.py); PostgreSQL's copies the staged people
+# (db/postgres.py's import_staged).
+LAST_STORE = {
+    "sqlite": "sass_tui.db.flatfile.store_people",
+    "postgresql": "sass_tui.db.postgres.copy_people",
+}
+
+
+@pytest.mark.parametrize(
+    "open_importer",
+    [
+        pytest.param(lambda target: (db := Database.open(target), db.import_flat), id="Database"),
+        pytest.param(
+            lambda target: (lists := QueryLists.open(target), lists.import_files), id="QueryLists"
+        ),
+    ],
+)
+def test_a_cancel_while_the_people_are_stored_stores_nothing(
+    engine, engine_target, engine_db_copy, tmp_path, monkeypatch, open_importer
+):
+    """The user presses Escape as the last rows go in, before the commit: the
+    import is cancelled and nothing is stored, on either engine, through the
+    Database service (the CLI) and the query screen's lists (Input DB)."""
+    before = _state(engine_db_copy)
+    cancel = threading.Event()
+    module, name = LAST_STORE[engine].rsplit(".", 1)
+    store = getattr(__import__(module, fromlist=[name]), name)
+
+    def storing(*args, **kwargs):
+        stored = store(*args, **kwargs)
+        cancel.set()
+        return stored
+
+    monkeypatch.setattr(LAST_STORE[engine], storing)
+    files = write_big_flat_files(tmp_path / "big", people=20)
+    opened, import_files = open_importer(engine_target)
+    with closing(opened), pytest.raises(Cancelled, match="the import was cancelled"):
+        import_files(files, None, cancel)
+    assert cancel.is_set()
+    assert _state(engine_db_copy) == before
+
+
+@pytest.mark.sqlite_only(
+    "the default database is a SQLite file built on first use; PostgreSQL's is made by "
+    "`sass db init` (one transaction: tests/db/test_engines.py)"
+)
 def test_default_database_build_cancelled_leaves_no_people(tmp_path):
     path = tmp_path / "new.db"
     with pytest.raises(Cancelled):
@@ -90,11 +151,9 @@ def test_default_database_build_cancelled_leaves_no_people(tmp_path):
         assert conn.execute("SELECT count(*) FROM person").fetchone()[0] == 0
 
 
-def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(
-    default_db_file, tmp_path, monkeypatch
-):
+def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(shared_target, monkeypatch):
     monkeypatch.setattr("sass_tui.db.lists.RUN_CHUNK", 2000)  # several ranges of the people
-    lists = QueryLists.open(default_db_file)
+    lists = QueryLists.open(shared_target)
     try:
         assert lists.run("gender = female") > 0
         lists.select_one(lists.page(QUERY_LIST, 0, 1)[0]["id"])
@@ -118,21 +177,24 @@ def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(
         lists.close()
 
 
-def test_population_fit_and_family_report_and_cancel(default_db):
+def test_population_fit_and_family_report_and_cancel(engine_db):
     reports: list[tuple[int, int]] = []
-    population_of(default_db, "gender = female AND age < 25", progress=lambda *r: reports.append(r))
+    population_of(engine_db, "gender = female AND age < 25", progress=lambda *r: reports.append(r))
     _checked(reports)
     with pytest.raises(Cancelled, match="making the population was cancelled"):
-        population_of(default_db, "gender = female AND age < 25", cancel=CancelAfter(10))
+        population_of(engine_db, "gender = female AND age < 25", cancel=CancelAfter(10))
     reports.clear()
-    fit_test(default_db, "stature < 190 cm", progress=lambda *r: reports.append(r))
+    fit_test(engine_db, "stature < 190 cm", progress=lambda *r: reports.append(r))
     assert reports == [(0, 3), (1, 3), (2, 3), (3, 3)]
     with pytest.raises(Cancelled, match="the fit test was cancelled"):
-        fit_test(default_db, "stature < 190 cm", cancel=CancelAfter(1))
+        fit_test(engine_db, "stature < 190 cm", cancel=CancelAfter(1))
     with pytest.raises(Cancelled, match="the family was cancelled"):
-        load_family(default_db, "male", ["stature", "mass"], 0.9, cancel=CancelAfter(2))
+        load_family(engine_db, "male", ["stature", "mass"], 0.9, cancel=CancelAfter(2))
 
 
+@pytest.mark.sqlite_only(
+    "SQLite's progress handler (PostgreSQL's statement cancel: test_engines_verbs.py)"
+)
 def test_interruptible_stops_a_long_statement(default_db):
     long = (
         "WITH RECURSIVE n(i) AS (SELECT 1 UNION ALL SELECT i + 1 FROM n WHERE i < 100000000) "

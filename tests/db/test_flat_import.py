@@ -1,21 +1,23 @@
-"""Legacy flat-file import: one transaction, file:line errors, nothing half-stored."""
+"""Legacy flat-file import: one transaction, file:line errors, nothing half-stored.
+
+Both engines: the import goes through the Database service (`Database.import_flat`)
+or the CLI with the engine's address, into a private copy of the default database
+(`engine_target`; on PostgreSQL staged in SQLite and copied, db/postgres.py)."""
 
 from __future__ import annotations
 
 import shutil
+from contextlib import closing
 from pathlib import Path
 
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_files, legacy_name
+from sass_tui.db.database import Database
+from sass_tui.db.flatfile import FlatFileError, FlatFiles, legacy_name
 from sass_tui.db.individual import fetch_individual
-from sass_tui.db.schema import connect, row_counts
+from sass_tui.db.schema import row_counts
 from sass_tui.model.names import GIRTH, row_index
-
-pytestmark = pytest.mark.sqlite_only(
-    "the import functions write a SQLite connection; a PostgreSQL import is staged through them in SQLite and copied (Database.import_flat, test_engines.py)"
-)
 
 DEFAULT_FLAT = Path(__file__).resolve().parents[2] / "datasets" / "db"
 PERSON = "7,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
@@ -44,13 +46,14 @@ def test_legacy_names():
     assert legacy_name("BOTTOM_HEAD") == "bottom_head"
 
 
-def test_import_and_fetch(default_db, tmp_path):
+def test_import_and_fetch(engine_target, engine_db_copy, tmp_path):
     strength = {
         "strgh-par.db": "7,1,right,isometric,0,0,0,deg,ft-lb,deg/s\n",
         "elbow-strgh.db": "7,1,90,0,0,0,0,0,0,30.0,999.0\n",
     }
-    assert import_flat_files(default_db, _files(tmp_path, strength=strength)) == 1
-    person = fetch_individual(default_db, 7)
+    with closing(Database.open(engine_target)) as db:
+        assert db.import_flat(_files(tmp_path, strength=strength)) == 1
+    person = fetch_individual(engine_db_copy, 7)
     assert person.name == "JANE_DOE" and person.handedness == "left"
     assert person.groups[GIRTH][row_index(GIRTH, "right_upper_arm")].tolist() == [
         10.16,
@@ -89,17 +92,22 @@ BAD = [
 
 
 @pytest.mark.parametrize("which, text, message", BAD)
-def test_bad_flat_file_rejects_whole_import(default_db, tmp_path, which, text, message):
-    before = row_counts(default_db)
+def test_bad_flat_file_rejects_whole_import(
+    engine_target, engine_db_copy, tmp_path, which, text, message
+):
+    before = row_counts(engine_db_copy)
     files = _files(tmp_path, **{which: text})
-    with pytest.raises(FlatFileError, match=message.replace("(", r"\(")):
-        import_flat_files(default_db, files)
-    assert row_counts(default_db) == before
+    with (
+        closing(Database.open(engine_target)) as db,
+        pytest.raises(FlatFileError, match=message.replace("(", r"\(")),
+    ):
+        db.import_flat(files)
+    assert row_counts(engine_db_copy) == before
 
 
-def test_database_error_mid_transaction_rolls_back(default_db, tmp_path):
+def test_database_error_mid_transaction_rolls_back(engine_target, engine_db_copy, tmp_path):
     """A strength row naming an experiment the parameter file lacks: nothing stored."""
-    before = row_counts(default_db)
+    before = row_counts(engine_db_copy)
     files = _files(
         tmp_path,
         strength={
@@ -107,19 +115,21 @@ def test_database_error_mid_transaction_rolls_back(default_db, tmp_path):
             "elbow-strgh.db": "7,2,90,0,0,0,0,0,0,30.0,20.0\n",
         },
     )
-    with pytest.raises(FlatFileError, match="elbow-strgh.db:1: experiment 2"):
-        import_flat_files(default_db, files)
-    assert row_counts(default_db) == before
+    with (
+        closing(Database.open(engine_target)) as db,
+        pytest.raises(FlatFileError, match="elbow-strgh.db:1: experiment 2"),
+    ):
+        db.import_flat(files)
+    assert row_counts(engine_db_copy) == before
 
 
-def test_cli_import_flat(tmp_path, capsys):
-    db = tmp_path / "new.db"
+def test_cli_import_flat(engine_target, engine_db_copy, tmp_path, capsys):
     _files(tmp_path)
     args = [
         "db",
         "import-flat",
         "--db",
-        str(db),
+        engine_target,
         "--person",
         str(tmp_path / "person.db"),
         "--girth",
@@ -131,20 +141,24 @@ def test_cli_import_flat(tmp_path, capsys):
     ]
     assert main(args) == 0
     assert "imported 1 people" in capsys.readouterr().out
+    assert fetch_individual(engine_db_copy, 7).name == "JANE_DOE"
     (tmp_path / "girth.db").write_text(GIRTH_ROWS + "7,NECK,1,1\n")
-    conn = connect(db)
-    before = row_counts(conn)
+    before = row_counts(engine_db_copy)
     assert main(args) == 2
-    assert "girth.db:5" in capsys.readouterr().err
-    assert row_counts(conn) == before
+    err = capsys.readouterr().err
+    assert "girth.db:5" in err and "Traceback" not in err
+    assert row_counts(engine_db_copy) == before
 
 
-def test_default_flat_files_round_trip(tmp_path):
-    """Re-importing the shipped files replaces, never duplicates."""
+def test_default_flat_files_round_trip(engine_target, engine_db_copy, tmp_path):
+    """Re-importing the shipped files replaces, never duplicates: the default
+    database holds them already (built from them, db/default.py), and one
+    import more leaves every count, id and name as it was."""
     shutil.copytree(DEFAULT_FLAT, tmp_path / "flat")
-    conn = connect(tmp_path / "x.db", create=True)
     files = FlatFiles.in_directory(tmp_path / "flat")
-    assert import_flat_files(conn, files) == 200
-    first = row_counts(conn)
-    import_flat_files(conn, files)
-    assert row_counts(conn) == first
+    ids = "SELECT id_num, name FROM person WHERE substr(name, 1, 6) = 'SYNTH_' ORDER BY id_num"
+    first = row_counts(engine_db_copy), engine_db_copy.execute(ids).fetchall()
+    assert len(first[1]) == 200
+    with closing(Database.open(engine_target)) as db:
+        assert db.import_flat(files) == 200
+    assert (row_counts(engine_db_copy), engine_db_copy.execute(ids).fetchall()) == first

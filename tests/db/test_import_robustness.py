@@ -2,12 +2,18 @@
 absurd values, ids that are not whole or too large, with file:line; UTF-8
 with a byte-order mark is read; duplicate ids name both lines; the ANSUR
 reader streams (memory bounded by a chunk); the database is unchanged after
-every refusal."""
+every refusal.
+
+Both engines where the database is written: the import goes through the
+Database service or the CLI with the engine's address (`engine_target`, a
+private copy; on PostgreSQL staged in SQLite and copied, db/postgres.py).  The
+readers' own tests (read_ansur, iter_ansur) touch no database."""
 
 from __future__ import annotations
 
 import gzip
 import math
+from contextlib import closing
 
 import pytest
 from _paths import DATASETS
@@ -15,13 +21,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
-from sass_tui.db.ansur import AnsurImportError, import_ansur, iter_ansur, read_ansur
-from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_files
+from sass_tui.db.ansur import AnsurImportError, iter_ansur, read_ansur
+from sass_tui.db.database import Database
+from sass_tui.db.flatfile import FlatFileError, FlatFiles
 from sass_tui.db.schema import row_counts
-
-pytestmark = pytest.mark.sqlite_only(
-    "the import functions write a SQLite connection; a PostgreSQL import is staged through them in SQLite and copied (Database.import_ansur, test_engines.py)"
-)
 
 MALE = DATASETS / "ansur2" / "ANSUR_II_MALE_Public.csv.gz"
 
@@ -70,21 +73,24 @@ BAD_VALUES = [
 
 @pytest.mark.parametrize("column, value, message", BAD_VALUES)
 def test_bad_values_are_refused_with_file_and_line(
-    default_db, tmp_path, male_lines, column, value, message
+    engine_target, engine_db_copy, tmp_path, male_lines, column, value, message
 ):
-    before = row_counts(default_db)
+    before = row_counts(engine_db_copy)
     path = _write(tmp_path, _with_value(male_lines, 7, column, value))
-    with pytest.raises(AnsurImportError) as caught:
-        import_ansur(default_db, [path])
+    with closing(Database.open(engine_target)) as db, pytest.raises(AnsurImportError) as caught:
+        db.import_ansur([path], label="ansur2")
     assert str(caught.value).startswith(f"{path}:8: ")
     assert message in str(caught.value)
-    assert row_counts(default_db) == before
+    assert row_counts(engine_db_copy) == before
 
 
-def test_a_byte_order_mark_is_read(default_db, tmp_path, male_lines):
+def test_a_byte_order_mark_is_read(engine_target, engine_db_copy, tmp_path, male_lines):
     path = _write(tmp_path, male_lines, bom=True)
-    counts = import_ansur(default_db, [path], label="bom-test")
+    with closing(Database.open(engine_target)) as db:
+        counts = db.import_ansur([path], label="bom-test")
     assert counts == {"male": 30, "female": 0}
+    stored = "SELECT count(*) FROM person WHERE source = 'bom-test' AND gender = 'male'"
+    assert engine_db_copy.execute(stored).fetchone()[0] == 30
     assert read_ansur(path).stature[0] == pytest.approx(float(male_lines[1].split(",")[75]) / 10)
 
 
@@ -96,13 +102,18 @@ def test_cp1252_text_is_still_read(tmp_path, male_lines):
     assert len(read_ansur(path)) == 30
 
 
-def test_duplicate_ids_name_both_lines(default_db, tmp_path, male_lines):
+def test_duplicate_ids_name_both_lines(engine_target, engine_db_copy, tmp_path, male_lines):
+    before = row_counts(engine_db_copy)
     first = male_lines[2].split(",")[0]
     path = _write(tmp_path, _with_value(male_lines, 20, "subjectid", first))
-    with pytest.raises(
-        AnsurImportError, match=rf":21: duplicate subject id {first} \(first on line 3\)"
+    with (
+        closing(Database.open(engine_target)) as db,
+        pytest.raises(
+            AnsurImportError, match=rf":21: duplicate subject id {first} \(first on line 3\)"
+        ),
     ):
-        import_ansur(default_db, [path])
+        db.import_ansur([path], label="dup")
+    assert row_counts(engine_db_copy) == before
 
 
 def test_rows_are_read_a_chunk_at_a_time(tmp_path, male_lines):
@@ -116,18 +127,23 @@ def test_rows_are_read_a_chunk_at_a_time(tmp_path, male_lines):
         list(chunks)
 
 
-def test_gzip_files_import(default_db, tmp_path, male_lines):
+def test_gzip_files_import(engine_target, engine_db_copy, tmp_path, male_lines):
     path = tmp_path / "few.csv.gz"
     path.write_bytes(gzip.compress(("\n".join(male_lines) + "\n").encode("cp1252")))
-    assert import_ansur(default_db, [path], label="gz") == {"male": 30, "female": 0}
+    with closing(Database.open(engine_target)) as db:
+        assert db.import_ansur([path], label="gz") == {"male": 30, "female": 0}
+    assert engine_db_copy.execute("SELECT count(*) FROM person WHERE source = 'gz'").fetchone() == (
+        30,
+    )
 
 
-def test_cli_reports_the_line(tmp_path, male_lines, capsys):
-    db = tmp_path / "new.db"
+def test_cli_reports_the_line(engine_target, engine_db_copy, tmp_path, male_lines, capsys):
+    before = row_counts(engine_db_copy)
     path = _write(tmp_path, _with_value(male_lines, 5, "weightkg", "1e309"))
-    assert main(["db", "import-ansur", "--db", str(db), str(path)]) == 2
+    assert main(["db", "import-ansur", "--db", engine_target, str(path)]) == 2
     err = capsys.readouterr().err
     assert f"{path}:6: column weightkg" in err and "Traceback" not in err
+    assert row_counts(engine_db_copy) == before
 
 
 @settings(
@@ -171,26 +187,35 @@ def _flat(tmp_path, person: str, bom: bool = False) -> FlatFiles:
         (PERSON.replace(",31,", ",-31,"), "person.db:1: age: '-31' is not plausible"),
     ],
 )
-def test_flat_files_refuse_absurd_values(default_db, tmp_path, person, message):
-    before = row_counts(default_db)
-    with pytest.raises(FlatFileError, match=message.replace("(", r"\(")):
-        import_flat_files(default_db, _flat(tmp_path, person))
-    assert row_counts(default_db) == before
+def test_flat_files_refuse_absurd_values(engine_target, engine_db_copy, tmp_path, person, message):
+    before = row_counts(engine_db_copy)
+    with (
+        closing(Database.open(engine_target)) as db,
+        pytest.raises(FlatFileError, match=message.replace("(", r"\(")),
+    ):
+        db.import_flat(_flat(tmp_path, person))
+    assert row_counts(engine_db_copy) == before
 
 
-def test_flat_files_with_a_byte_order_mark(default_db, tmp_path):
-    assert import_flat_files(default_db, _flat(tmp_path, PERSON, bom=True)) == 1
-    assert default_db.execute("SELECT name FROM person WHERE id_num = 7").fetchone() == (
+def test_flat_files_with_a_byte_order_mark(engine_target, engine_db_copy, tmp_path):
+    with closing(Database.open(engine_target)) as db:
+        assert db.import_flat(_flat(tmp_path, PERSON, bom=True)) == 1
+    assert engine_db_copy.execute("SELECT name FROM person WHERE id_num = 7").fetchone() == (
         "JANE_DOE",
     )
 
 
-def test_imports_after_a_large_id_still_work(default_db, tmp_path):
+def test_imports_after_a_large_id_still_work(engine_target, engine_db_copy, tmp_path):
     """The largest id accepted leaves room for the ids given after it."""
-    import_flat_files(default_db, _flat(tmp_path, "999999999999" + PERSON[1:]))
     male = gzip.decompress(MALE.read_bytes()).decode("cp1252").splitlines()[:3]
     path = _write(tmp_path, male)
-    assert import_ansur(default_db, [path], label="after") == {"male": 2, "female": 0}
+    with closing(Database.open(engine_target)) as db:
+        db.import_flat(_flat(tmp_path, "999999999999" + PERSON[1:]))
+        assert db.import_ansur([path], label="after") == {"male": 2, "female": 0}
+    ids = engine_db_copy.execute(
+        "SELECT id_num FROM person WHERE source = 'after' ORDER BY id_num"
+    ).fetchall()
+    assert ids == [(10**12,), (10**12 + 1,)]
 
 
 def test_a_missing_weight_column_is_refused(tmp_path, male_lines):
