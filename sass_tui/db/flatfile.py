@@ -47,6 +47,7 @@ from sass_tui.db.schema import (
     store_people,
     transaction,
 )
+from sass_tui.db.scope import source_label
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import PathError, regular_file
@@ -272,7 +273,7 @@ def _read_person(reader: _Reader) -> dict[str, list[Any]]:
             None if f[5] == "999.0" or not f[5] else reader.choice(f[5], HANDEDNESS, "handedness")
         )
         out["age"].append(reader.plausible(f[6], "age", 130.0, "years"))
-        out["source"].append(f[7])
+        out["source"].append(source_label(f[7]))
     if not seen:
         raise FlatFileError(f"{reader.path}:1: the person file holds no person")
     return out

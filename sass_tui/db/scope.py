@@ -28,6 +28,16 @@ DEMONSTRATION_SOURCE = "synthetic"
 REAL_PEOPLE = Comparison("(real people)", PERSON_TABLE, "source", "!=", DEMONSTRATION_SOURCE)
 
 
+def source_label(text: str) -> str:
+    """The label a person's source is stored under: a source whose first word
+    is "synthetic" (the shipped flat files say "SYNTHETIC (not a real person):
+    drawn by …") is the demonstration label, so that people imported from such
+    a file are out of a real answer as the default database's are."""
+    first = text.strip().split(None, 1)[0] if text.strip() else ""
+    word = "".join(ch for ch in first if ch.isalpha()).lower()
+    return DEMONSTRATION_SOURCE if word == DEMONSTRATION_SOURCE else text
+
+
 def real_only(expr: Expr | None) -> Expr:
     """`expr` (None: everyone) limited to real people, unless it names a
     `source` term (or is limited already): the scope is one more term of its
