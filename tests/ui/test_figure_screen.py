@@ -190,9 +190,12 @@ def test_every_edit_redraws_the_figure_panel(drive, app_at):
 
     async def scenario():
         async with app_at((120, 40)) as (app, pilot):
-            # The panel draws a frame after the first screen (two refreshes later).
+            # The panel draws a frame after the first screen (two refreshes later),
+            # and its canvas shows it one refresh after the outlines are made.
             await wait_until(
-                pilot, lambda: app.spreadsheet.figure_panel.outlines, "the panel never drew"
+                pilot,
+                lambda: app.spreadsheet.figure_panel.outlines and panel_rows(app, FILL),
+                "the panel never drew",
             )
             panel = app.spreadsheet.figure_panel
             assert panel is not None and panel.display
