@@ -70,6 +70,23 @@ def open_db(args: argparse.Namespace, create: bool = False):  # -> the db layer'
         return conn
 
 
+def whole_number(text: str, minimum: int = 0) -> int:
+    """An argparse type: a whole number of at least `minimum` (0: a count)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < minimum:
+        why = "is negative" if minimum == 0 else f"is not {minimum} or more"
+        raise argparse.ArgumentTypeError(f"{value} {why}")
+    return value
+
+
+def positive_number(text: str) -> int:
+    """An argparse type: a whole number of 1 or more."""
+    return whole_number(text, 1)
+
+
 def percentile(text: str) -> float:
     try:
         value = float(text)

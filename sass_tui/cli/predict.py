@@ -16,7 +16,7 @@ import json
 import sys
 from typing import TYPE_CHECKING, Any, TextIO
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_db, whole_number
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
 from sass_tui.model.vocabulary import GENDERS
@@ -69,7 +69,7 @@ def register(commands: SubParsers) -> None:
     predict.add_argument(
         "--nearest",
         metavar="K",
-        type=_count,
+        type=whole_number,
         default=0,
         help="also list the K real people nearest to the known values (standardized distance)",
     )
@@ -84,16 +84,6 @@ def register(commands: SubParsers) -> None:
         help="batch output: the input columns and F, F.low, F.high for every predicted field F",
     )
     predict.set_defaults(func=run)
-
-
-def _count(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"{value} is negative")
-    return value
 
 
 def run(args: argparse.Namespace) -> int:

@@ -14,7 +14,7 @@ from ipaddress import ip_address
 from pathlib import Path
 from urllib.parse import urlsplit
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option, open_db, positive_number
 from sass_tui.model.errors import SassError
 
 # secrets.token_urlsafe(32): 256 bits.  A token file's must have at least
@@ -78,7 +78,7 @@ def register(commands: SubParsers) -> None:
     )
     serve.add_argument(
         "--max-sessions",
-        type=_positive,
+        type=positive_number,
         default=DEFAULT_MAX_SESSIONS,
         metavar="N",
         help=f"at most N live sessions (default {DEFAULT_MAX_SESSIONS})",
@@ -88,16 +88,6 @@ def register(commands: SubParsers) -> None:
     )
     add_db_option(serve)
     serve.set_defaults(func=run)
-
-
-def _positive(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"{value} is not 1 or more")
-    return value
 
 
 def run(args: argparse.Namespace) -> int:

@@ -49,6 +49,7 @@ from sass_tui.db.schema import (
     PERSON_TABLES,
     SCHEMA_VERSION,
     SQLITE_ONLY_TABLES,
+    STORED_UNITS,
     TARGET_TABLES,
     DatabaseError,
     connect,
@@ -369,10 +370,7 @@ def create_schema(conn: PostgresConnection) -> None:
     for statement in postgres_ddl():
         conn.execute(statement)
     conn.execute("INSERT INTO meta VALUES ('schema_version', %s)", (SCHEMA_VERSION,))
-    conn.execute(
-        "INSERT INTO meta VALUES ('units', "
-        "'length cm, mass kg, angle deg, strength N-m, speed deg/s, age years')"
-    )
+    conn.execute("INSERT INTO meta VALUES ('units', %s)", (STORED_UNITS,))
 
 
 def _tables_of_people() -> tuple[str, ...]:

@@ -517,14 +517,15 @@ def create_schema(conn: sqlite3.Connection) -> None:
         _create_tables(conn)
 
 
+# The units every stored value is in, recorded in the meta table of either engine.
+STORED_UNITS = "length cm, mass kg, angle deg, strength N-m, speed deg/s, age years"
+
+
 def _create_tables(conn: sqlite3.Connection) -> None:
     for statement in schema_statements():
         conn.execute(statement)
     conn.execute("INSERT INTO meta VALUES ('schema_version', ?)", (SCHEMA_VERSION,))
-    conn.execute(
-        "INSERT INTO meta VALUES ('units', "
-        "'length cm, mass kg, angle deg, strength N-m, speed deg/s, age years')"
-    )
+    conn.execute("INSERT INTO meta VALUES ('units', ?)", (STORED_UNITS,))
 
 
 def recreate_schema(conn: sqlite3.Connection) -> None:

@@ -28,6 +28,7 @@ from sass_tui.model.published_strength import (
     GENDER_WORDS,
     PublishedStrengthError,
     ordinal,
+    read_published_text,
 )
 
 FILE_NAME = "hfds2003_grip.csv"
@@ -108,12 +109,7 @@ def default_path() -> Path:
 def read_hfds2003(path: str | None = None) -> GripTable:
     """The shipped grip table (or a file of the same layout)."""
     where = str(path or default_path())
-    try:
-        text = Path(where).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        reason = exc.strerror if isinstance(exc, OSError) else "not UTF-8 text"
-        raise PublishedStrengthError(f"{where}: cannot read: {reason or exc}") from None
-    return parse_hfds2003_text(text, where)
+    return parse_hfds2003_text(read_published_text(where), where)
 
 
 def _number(text: str, where: str, what: str) -> float:

@@ -109,12 +109,16 @@ def default_path() -> Path:
 def read_anderson2007(path: str | None = None) -> Anderson2007:
     """The shipped coefficients (or a file of the same layout)."""
     where = str(path or default_path())
+    return parse_anderson2007_text(read_published_text(where), where)
+
+
+def read_published_text(where: str) -> str:
+    """A published data set's file (UTF-8, as shipped in datasets/), or why not."""
     try:
-        text = Path(where).read_text(encoding="utf-8")
+        return Path(where).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
         reason = exc.strerror if isinstance(exc, OSError) else "not UTF-8 text"
         raise PublishedStrengthError(f"{where}: cannot read: {reason or exc}") from None
-    return parse_anderson2007_text(text, where)
 
 
 def parse_anderson2007_text(text: str, where: str = "<text>") -> Anderson2007:
