@@ -37,7 +37,12 @@ import numpy.typing as npt
 
 from sass_tui.db.dialect import dialect_of, ids_in
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
-from sass_tui.db.query import QueryError, compile_conjuncts, compile_query, parser, real_people_only
+from sass_tui.db.query import (
+    compile_conjuncts,
+    compile_query,
+    parse_query,
+    real_people_only,
+)
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import GENDERS
@@ -475,23 +480,12 @@ class LimitHistogram:
 def limit_lines(limits: str) -> tuple[LimitLine, ...]:
     """The comparisons of `limits` on numeric fields, in the order written
     (word and text fields, e.g. gender or branch, have no place on an axis)."""
-    # deferred: db.values — off sass fit (sass_tui/startup.py)
-    from sass_tui.db.values import numeric_field
-
-    compile_query(limits)
     out: list[LimitLine] = []
-    for node in parser().parse(limits).iter_subtrees_topdown():
-        if node.data != "comparison":
-            continue
-        names, op = node.children[0], node.children[1]
-        field = ".".join(str(n) for n in names.children)
-        try:
-            numeric_field(field)
-        except QueryError:
-            continue
-        # The compiler's own reading of the value: its unit converted to the field's.
-        term = compile_query(limits[node.meta.start_pos : node.meta.end_pos])
-        out.append(LimitLine(field, str(op), float(term.params[0])))  # type: ignore[arg-type]
+    for term in parse_query(limits).comparisons():
+        # A word or text field's value is a word; a numeric field's is a number,
+        # already converted to the field's stored unit by the query's compiler.
+        if not isinstance(term.value, str):
+            out.append(LimitLine(term.field, term.op, term.value))
     return tuple(out)
 
 

@@ -31,25 +31,18 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator
-from functools import lru_cache
 from typing import Any, NamedTuple, NoReturn, Protocol
 
-# The parser is lark's stand-alone LALR module generated from GRAMMAR by
-# scripts/make_query_parser.py: importing it costs a third of importing lark
-# and building the grammar in every process (docs/performance.md).
-from sass_tui.db._query_parser import (
-    Lark,
-    Lark_StandAlone,
-    Token,
-    Transformer,
-    Tree,
+from lark import Token, Transformer, Tree, v_args
+from lark.exceptions import (
     UnexpectedCharacters,
     UnexpectedEOF,
     UnexpectedInput,
     UnexpectedToken,
     VisitError,
-    v_args,
 )
+
+from sass_tui.db.query_grammar import parser
 from sass_tui.db.query_tree import (
     PERSON_TABLE,
     And,
@@ -139,13 +132,6 @@ class QueryError(ValueError, SassError):
         if not self.column:
             return self.text
         return f"{self.text}\n{' ' * (self.column - 1)}^"
-
-
-@lru_cache(maxsize=1)
-def parser() -> Lark:
-    """The LALR parser of GRAMMAR (positions kept for error columns)."""
-    standalone: Lark = Lark_StandAlone()
-    return standalone
 
 
 class CompiledQuery(NamedTuple):  # not a dataclass: see model.names.Row
@@ -243,9 +229,7 @@ class _TreeBuilder(Transformer[Token, Expr]):
             return Comparison(field, table, column, sql_op, value_text, nocase=True)
         if words is not None:
             if kind == "text":
-                # lark's stand-alone generator defines _T three times, so mypy reads this
-                # classmethod's cls as a Lark's: the generated module's own typing slip.
-                token = Token.new_borrow_pos("NAME", _unquote(token), token)  # type: ignore[misc]
+                token = Token.new_borrow_pos("NAME", _unquote(token), token)
             if kind not in ("word", "text") or token.lower() not in words:
                 self._fail(
                     f"{'.'.join(names)} is one of {', '.join(words)}, not {str(token)!r}", token
@@ -413,7 +397,7 @@ def _check_size(text: str) -> None:
         column += 1
 
 
-def _parsed(text: str) -> Expr:
+def parse_query(text: str) -> Expr:
     """The query's tree as the user wrote it (no scope added); raises QueryError
     pointing at the bad token."""
     if not text.strip():
@@ -451,7 +435,7 @@ def _parsed(text: str) -> Expr:
 def compile_query(text: str) -> CompiledQuery:
     """Parse and check a query; raises QueryError pointing at the bad token.
     A query that names no `source` reaches real people only (db/scope.py)."""
-    return _compiled(text, real_only(_parsed(text)))
+    return _compiled(text, real_only(parse_query(text)))
 
 
 def _compiled(text: str, expr: Expr, alias_of: dict[str, str] | None = None) -> CompiledQuery:
@@ -473,7 +457,7 @@ def real_people_only(compiled: CompiledQuery) -> CompiledQuery:
 def names_source(text: str) -> bool:
     """Whether the query names a `source` term (then it is not limited to real
     people: db/scope.py).  The query must compile."""
-    return names_field(_parsed(text), "source")
+    return names_field(parse_query(text), "source")
 
 
 _TOKEN_WORDS = {
