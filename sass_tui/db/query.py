@@ -52,6 +52,7 @@ from sass_tui.db.query_tree import (
     Or,
     aliases,
     names_field,
+    negation,
     placeholder,
     to_sql,
 )
@@ -162,8 +163,9 @@ class CompiledQuery(NamedTuple):  # not a dataclass: see model.names.Row
         return names_field(self.tree, name)
 
 
-# What the builder makes of a value: (kind, token, unit).
-_Value = tuple[str, Token, "Token | None"]
+# What the builder makes of a value: (kind, first token, its parts).  A number's
+# parts are (number, unit or None) pairs: `6 ft 2 in` is two, `180 cm` one.
+_Value = tuple[str, Token, tuple[tuple[Token, "Token | None"], ...]]
 
 
 class _TreeBuilder(Transformer[Token, Expr]):
@@ -194,33 +196,67 @@ class _TreeBuilder(Transformer[Token, Expr]):
     def and_expr(self, items: list[Expr]) -> Expr:
         return And(tuple(items))
 
+    @v_args(inline=True)
+    def negation(self, term: Expr) -> Expr:
+        return negation(term)
+
     def field(self, names: list[Token]) -> list[Token]:
         self._field_token = names[0]  # for _count_table's error: the field being resolved
         return list(names)
 
-    @v_args(inline=True)
-    def number(self, value: Token, unit: Token | None = None) -> _Value:
-        return ("number", value, unit)
+    def number(self, tokens: list[Token]) -> _Value:
+        parts: list[tuple[Token, Token | None]] = []
+        for token in tokens:
+            if token.type == "NUMBER":
+                parts.append((token, None))
+            else:
+                parts[-1] = (parts[-1][0], token)
+        return ("number", tokens[0], tuple(parts))
 
     @v_args(inline=True)
     def word(self, value: Token) -> _Value:
-        return ("word", value, None)
+        return ("word", value, ())
 
     @v_args(inline=True)
     def quoted(self, value: Token) -> _Value:
-        return ("text", value, None)
+        return ("text", value, ())
 
     @v_args(inline=True)
     def comparison(self, names: list[Token], op: Token, value: _Value) -> Comparison:
+        return self._comparison(names, _OPERATORS[str(op)], op, value)
+
+    @v_args(inline=True)
+    def between(self, names: list[Token], low: _Value, high: _Value) -> Expr:
+        """`field BETWEEN low AND high`: `field >= low AND field <= high`, as SQL defines it."""
+        for kind, token, _parts in (low, high):
+            if kind != "number":
+                self._fail(
+                    f"BETWEEN takes two numbers, not {str(token)!r}; for words write "
+                    f"{'.'.join(names)} = ... OR {'.'.join(names)} = ...",
+                    token,
+                )
+        lowest = self._comparison(names, ">=", None, low)
+        highest = self._comparison(names, "<=", None, high)
+        if isinstance(lowest.value, float) and isinstance(highest.value, float):
+            if lowest.value > highest.value:
+                self._fail(
+                    f"BETWEEN {_value_text(low)} AND {_value_text(high)} selects nobody; "
+                    "write the smaller value first",
+                    low[1],
+                )
+        return And((lowest, highest))
+
+    def _comparison(
+        self, names: list[Token], sql_op: str, op: Token | None, value: _Value
+    ) -> Comparison:
         table, column, unit, words = self._resolve(names)
         field = ".".join(str(n).lower() for n in names)
-        sql_op = _OPERATORS[str(op)]
-        kind, token, unit_token = value
+        kind, token, parts = value
         if words is TEXT:
             if kind not in ("word", "text"):
                 self._fail(
                     f"{'.'.join(names)} needs a text value in quotes, e.g. 'Combat Arms', "
-                    f"not {str(token)!r}",
+                    f"not {_value_text(value)!r}",
                     token,
                 )
             if sql_op not in ("=", "!="):
@@ -232,26 +268,35 @@ class _TreeBuilder(Transformer[Token, Expr]):
                 token = Token.new_borrow_pos("NAME", _unquote(token), token)
             if kind not in ("word", "text") or token.lower() not in words:
                 self._fail(
-                    f"{'.'.join(names)} is one of {', '.join(words)}, not {str(token)!r}", token
+                    f"{'.'.join(names)} is one of {', '.join(words)}, not {_value_text(value)!r}",
+                    token,
                 )
             if sql_op not in ("=", "!="):
                 self._fail(f"{'.'.join(names)} can only be compared with = or !=", op)
             return Comparison(field, table, column, sql_op, token.lower())
         if kind != "number":
             self._fail(f"{'.'.join(names)} needs a number, not {str(token)!r}", token)
-        number = float(token)
-        if not math.isfinite(number) or abs(number) > LARGEST_NUMBER:
-            self._fail(f"{str(token)!r} is not a usable number", token)
-        if unit_token is not None:
-            if not unit:
+        total = 0.0
+        for number_token, unit_token in parts:
+            number = float(number_token)
+            if not math.isfinite(number) or abs(number) > LARGEST_NUMBER:
+                self._fail(f"{str(number_token)!r} is not a usable number", number_token)
+            if unit_token is None and len(parts) > 1:
                 self._fail(
-                    f"{'.'.join(names)} takes no unit, found {str(unit_token)!r}", unit_token
+                    f"each number of {_value_text(value)!r} needs its unit, e.g. 6 ft 2 in",
+                    number_token,
                 )
-            try:
-                number = convert(number, unit_name(str(unit_token)), unit)
-            except UnitError as exc:
-                self._fail(f"{exc}", unit_token)
-        return Comparison(field, table, column, sql_op, number)
+            if unit_token is not None:
+                if not unit:
+                    self._fail(
+                        f"{'.'.join(names)} takes no unit, found {str(unit_token)!r}", unit_token
+                    )
+                try:
+                    number = convert(number, unit_name(str(unit_token)), unit)
+                except UnitError as exc:
+                    self._fail(f"{exc}", unit_token)
+            total += number
+        return Comparison(field, table, column, sql_op, total)
 
     def _resolve(self, names: list[Token]) -> FieldInfo:
         try:
@@ -271,6 +316,14 @@ class _FieldError(Exception):
 
 def _unquote(token: Token | str) -> str:
     return str(token)[1:-1]
+
+
+def _value_text(value: _Value) -> str:
+    """A number with its units as written (`6 ft 2 in`), or the word or quoted text."""
+    kind, token, parts = value
+    if kind != "number":
+        return str(token)
+    return " ".join(f"{n} {u}" if u is not None else str(n) for n, u in parts)
 
 
 FieldInfo = tuple[str, str, "str | None", "tuple[str, ...] | None"]
@@ -297,12 +350,15 @@ def resolve_field(names: list[str]) -> FieldInfo:
             raise _FieldError(f"unknown measurement {names[1]!r}{hint}", 1)
         return MEASURE_TABLE, name, MEASURE_UNITS[name], None
     if head not in _GROUPS:
-        raise _FieldError(
-            f"unknown field {names[0]!r}; expected one of "
-            f"{', '.join(_GLOBAL_FIELDS)}, measure.NAME or girth.SEGMENT.x|y|z, "
-            "joint_limit.JOINT.x|y|z, center_of_mass.SEGMENT.x|y|z, strength.MOTION.max",
-            0,
+        close = suggest_field(head)
+        expected = (
+            f"did you mean {' or '.join(close)}? (sass query --fields lists every field)"
+            if close
+            else f"expected one of {', '.join(_GLOBAL_FIELDS)}, measure.NAME or "
+            "girth.SEGMENT.x|y|z, joint_limit.JOINT.x|y|z, center_of_mass.SEGMENT.x|y|z, "
+            "strength.MOTION.max"
         )
+        raise _FieldError(f"unknown field {names[0]!r}; {expected}", 0)
     group, rows, unit, what = _GROUPS[head]
     if len(names) != 3:
         shape = (
@@ -320,6 +376,29 @@ def resolve_field(names: list[str]) -> FieldInfo:
             f"expected {' or '.join(expected_axes)} after {head}.{row}, found {names[2]!r}", 2
         )
     return QUERY_TABLES[group][row], axis, unit, None
+
+
+# Words people use for a field under another name.
+_FIELD_SYNONYMS = {
+    "weight": "mass",
+    "bodyweight": "mass",
+    "height": "stature",
+    "sex": "gender",
+    "hand": "handedness",
+    "race": "dodrace",
+}
+
+
+def suggest_field(name: str) -> list[str]:
+    """Fields a user may have meant by the unknown `name`: its synonym (`weight`
+    -> `mass`), names close to it, or the measurement of that name."""
+    word = name.lower()
+    if word in _FIELD_SYNONYMS:
+        return [_FIELD_SYNONYMS[word]]
+    if word in MEASURE_UNITS:
+        return [f"{MEASURE_TABLE}.{word}"]
+    close = suggest(word, names=(*_GLOBAL_FIELDS, MEASURE_TABLE, *_GROUPS))
+    return close or [f"{MEASURE_TABLE}.{m}" for m in suggest(word)]
 
 
 def field_names() -> list[tuple[str, str]]:
@@ -364,6 +443,7 @@ def _check_size(text: str) -> None:
         )
     depth = 0
     comparisons = 0
+    negations = 0  # each NOT is one level more of the tree, as a parenthesis is
     quote: str | None = None  # brackets and operators inside quoted text do not count
     column = 0
     while column < len(text):
@@ -381,20 +461,40 @@ def _check_size(text: str) -> None:
                 )
         elif char == ")":
             depth -= 1
+        elif char.isalpha() or char == "_":
+            end = column
+            while end < len(text) and (text[end].isalnum() or text[end] in "_."):
+                end += 1
+            word = text[column:end].lower()
+            if word == "not":
+                negations += 1
+                if negations > MAX_NESTING:
+                    raise QueryError(
+                        f"NOT more than {MAX_NESTING} times in one query", text, column + 1
+                    )
+            elif word == "between":  # one BETWEEN is two comparisons (>= and <=)
+                comparisons += 2
+                _check_comparisons(comparisons, text, column)
+            column = end
+            continue
         else:
             length = _operator_at(text, column)
             if length:
                 comparisons += 1
-                if comparisons > MAX_COMPARISONS:
-                    raise QueryError(
-                        f"more than {MAX_COMPARISONS} comparisons in one query; "
-                        "split it or use a range (e.g. stature > 170 cm AND stature < 180 cm)",
-                        text,
-                        column + 1,
-                    )
+                _check_comparisons(comparisons, text, column)
                 column += length
                 continue
         column += 1
+
+
+def _check_comparisons(comparisons: int, text: str, column: int) -> None:
+    if comparisons > MAX_COMPARISONS:
+        raise QueryError(
+            f"more than {MAX_COMPARISONS} comparisons in one query; "
+            "split it or use a range (e.g. stature BETWEEN 170 cm AND 180 cm)",
+            text,
+            column + 1,
+        )
 
 
 def parse_query(text: str) -> Expr:
@@ -463,6 +563,8 @@ def names_source(text: str) -> bool:
 _TOKEN_WORDS = {
     "_AND": "AND",
     "_OR": "OR",
+    "_NOT": "NOT",
+    "_BETWEEN": "BETWEEN",
     "OP": "a comparison (< > <= >= = !=)",
     "NAME": "a name",
     "NUMBER": "a number",

@@ -26,16 +26,22 @@ from sass_tui.model.atomic import write_bytes_atomic
 GRAMMAR = r"""
 ?start: or_expr
 ?or_expr: and_expr (_OR and_expr)*
-?and_expr: atom (_AND atom)*
+?and_expr: not_expr (_AND not_expr)*
+?not_expr: _NOT not_expr -> negation
+         | atom
 ?atom: "(" or_expr ")"
      | comparison
+     | between
 comparison: field OP value
+between: field _BETWEEN value _AND value
 field: NAME ("." NAME)*
-value: NUMBER UNIT?   -> number
-     | NAME           -> word
-     | STRING         -> quoted
+value: NUMBER (UNIT NUMBER)* UNIT?   -> number
+     | NAME                          -> word
+     | STRING                        -> quoted
 _OR.3: /or\b/i
 _AND.3: /and\b/i
+_NOT.3: /not\b/i
+_BETWEEN.3: /between\b/i
 OP: "<=" | ">=" | "!=" | "<>" | "<" | ">" | "=" | "≤" | "≥" | "≠"
 NAME.2: /[A-Za-z_][A-Za-z0-9_]*/
 STRING: /'[^']*'|"[^"]*"/

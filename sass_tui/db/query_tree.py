@@ -12,6 +12,17 @@ Null semantics are SQL's in every dialect: a comparison with a missing value
 is unknown, which a WHERE reads as false; `!=` on free text keeps people
 without a value (`source != ansur2` finds the people of every other source,
 including those with none), as the SQLite compiler always did.
+
+NOT is not a node: `negation` pushes it down to the comparisons (De Morgan's
+laws, which hold in SQL's three-valued logic) and turns each operator into
+its opposite (`NOT stature > 180` is `stature <= 180`).  On a value that is
+there that is exactly SQL's NOT; on a missing value both are unknown, so
+nobody without a stature is in either answer, as SQL's `NOT (...)` would
+have it.  Free text's `NOT branch = 'Combat Arms'` is `branch != 'Combat
+Arms'`, so it keeps the people without a branch as `!=` does.  Every
+engine's SQL, the real-people scope (db/scope.py) and the DuckDB copy then
+read NOT without knowing it.  BETWEEN is the pair `>=` and `<=` (SQL's own
+definition of `x BETWEEN a AND b`).
 """
 
 from __future__ import annotations
@@ -24,6 +35,8 @@ DIALECTS: tuple[Dialect, ...] = ("sqlite", "postgresql", "duckdb")
 PERSON_TABLE = "person"
 # The comparison operators of the tree: the grammar's spellings (<>, ≤, ≥, ≠) are mapped here.
 OPERATORS = ("<", ">", "<=", ">=", "=", "!=")
+# Each operator's opposite: `NOT x op v` holds exactly when `x OPPOSITE[op] v` does.
+OPPOSITE = {"<": ">=", ">=": "<", ">": "<=", "<=": ">", "=": "!=", "!=": "="}
 
 
 class _Node:
@@ -102,6 +115,16 @@ class Or(_Terms):
 
 
 Expr = Comparison | And | Or
+
+
+def negation(expr: Expr) -> Expr:
+    """NOT `expr`, as comparisons joined by AND and OR (see the module's docstring)."""
+    if isinstance(expr, Comparison):
+        return Comparison(
+            expr.field, expr.table, expr.column, OPPOSITE[expr.op], expr.value, expr.nocase
+        )
+    negated = tuple(negation(term) for term in expr.terms)
+    return Or(negated) if isinstance(expr, And) else And(negated)
 
 
 def names_field(expr: Expr, name: str) -> bool:
