@@ -28,12 +28,29 @@ def register(commands: SubParsers) -> None:
         help="with --count: also the weighted count and share of a target population (sass target)",
     )
     query.add_argument(
-        "query", metavar="QUERY", help='e.g. "gender = male AND girth.right_upper_arm.z > 28 cm"'
+        "--fields",
+        action="store_true",
+        help="list every field a query can name, with its unit and what it is "
+        "(docs/query-language.md), and nothing else",
+    )
+    query.add_argument(
+        "query",
+        metavar="QUERY",
+        nargs="?",
+        help='e.g. "gender = male AND stature BETWEEN 160 cm AND 180 cm" (docs/query-language.md)',
     )
     query.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.fields:
+        _list_fields(args.format)
+        return 0
+    if args.query is None:
+        # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
+        from sass_tui.db.query import QueryError
+
+        raise QueryError('give a QUERY, e.g. "stature > 180 cm", or --fields to list the fields')
     # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import compile_query
 
@@ -97,6 +114,36 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
         found = _write_table(out, rows)
     if not found:
         _say_who_else(conn, args.query)
+
+
+def _list_fields(form: str) -> None:
+    """Every field with its unit and description (db/query_fields.py)."""
+    # deferred: db.query_fields — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.db.query_fields import field_reference
+
+    fields = field_reference()
+    out = sys.stdout
+    if form == "csv":
+        # deferred: csv — off sass query, sass query --count (sass_tui/startup.py)
+        import csv
+
+        writer = csv.writer(out, lineterminator="\n")
+        writer.writerow(("field", "unit", "description"))
+        writer.writerows(fields)
+    elif form == "json":
+        # deferred: json — only --format json writes JSON; off sass query (sass_tui/startup.py)
+        import json
+
+        listed = [dict(zip(("field", "unit", "description"), f)) for f in fields]
+        out.write(json.dumps({"fields": listed}, indent=1) + "\n")
+    else:
+        width = max(len(f.name) for f in fields)
+        unit_width = max(len(f.unit) for f in fields)
+        out.write(f"{'field':<{width}}  {'unit':<{unit_width}}  description\n")
+        out.writelines(
+            f"{f.name:<{width}}  {f.unit:<{unit_width}}  {f.description}\n" for f in fields
+        )
+        out.write(f"{len(fields)} fields\n")
 
 
 def _weighted_count(conn, query: str, name: str) -> None:
