@@ -75,18 +75,13 @@ def register(commands: SubParsers) -> None:
 def run(args: argparse.Namespace) -> int:
     # deferred: db.fit, db.query, model.accommodation, model.figure — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.fit import load_family
-    from sass_tui.db.query import QueryError, compile_query
+    from sass_tui.db.query import parse_option
     from sass_tui.model.accommodation import measure_field, write_family
     from sass_tui.model.figure import Figure
 
     for name in args.measures:
         measure_field(name)  # a typo is reported before the database is opened
-    try:
-        compile_query(args.population)
-    except QueryError as exc:
-        error = QueryError(f"--population: {exc}", exc.text)
-        error.column = exc.column
-        raise error from None
+    population = parse_option(args.population, "--population")  # parsed once, passed on
     conn = open_db(args)
     weighted_to = None
     if args.target is not None:
@@ -100,7 +95,7 @@ def run(args: argparse.Namespace) -> int:
         args.measures,
         args.coverage / 100.0,
         args.kind,
-        args.population,
+        population,
         weighted_to=weighted_to,
     )
     written = write_family(family, args.output, Figure.default(args.gender))

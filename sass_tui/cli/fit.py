@@ -86,16 +86,13 @@ def register(commands: SubParsers) -> None:
 def run(args: argparse.Namespace) -> int:
     # deferred: db.fit, db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.fit import check_mix, fit_test
-    from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
+    from sass_tui.db.query import compile_conjuncts, parse, parse_option
 
     # Check everything before opening the database: a bad query touches nothing.
-    compile_conjuncts(args.limits)
-    try:
-        compile_query(args.population)
-    except QueryError as exc:
-        error = QueryError(f"--population: {exc}", exc.text)
-        error.column = exc.column
-        raise error from None
+    # Each query is parsed here once and passed on parsed.
+    limits = parse(args.limits)
+    compile_conjuncts(limits)  # an OR at the top level is refused here too
+    population = parse_option(args.population, "--population")
     check_mix(args.mix)
     strength = [parse_strength_limit(text) for text in args.strength]
     conn = open_db(args)
@@ -107,8 +104,8 @@ def run(args: argparse.Namespace) -> int:
         target = load_target(conn, args.target)
     result = fit_test(
         conn,
-        args.limits,
-        args.population,
+        limits,
+        population,
         args.mix,
         failing=args.failing,
         target=target,

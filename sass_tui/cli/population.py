@@ -57,7 +57,7 @@ def run(args: argparse.Namespace) -> int:
         population_of,
     )
     from sass_tui.db.population_files import write_population_files
-    from sass_tui.db.query import compile_query
+    from sass_tui.db.query import parse
 
     if args.query is None and args.ids is None and args.target is None:
         print(
@@ -65,8 +65,8 @@ def run(args: argparse.Namespace) -> int:
             file=sys.stderr,
         )
         return 2
-    if args.query is not None:
-        compile_query(args.query)  # a bad query touches nothing
+    # Parsed once, passed on; a bad query touches nothing.
+    selection = None if args.query is None else parse(args.query)
     ids = _read_ids(args.ids) if args.ids is not None else None
     conn = open_db(args)
     try:
@@ -79,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
             target = load_target(conn, args.target)
         result = population_of(
             conn,
-            args.query,
+            selection,
             ids=ids,
             title=args.title,
             ids_from="the list on standard input" if args.ids == "-" else f"the list {args.ids}",

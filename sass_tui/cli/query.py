@@ -67,12 +67,12 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
 
     if args.count:
         if args.target is not None:
-            _weighted_count(conn, args.query, args.target)
+            _weighted_count(conn, query.compiled, args.target)
             return
         found = query.count()
         print(found)
         if not found:
-            _say_who_else(conn, args.query)
+            _say_who_else(conn, query.compiled, found)
         return
     if args.target is not None:
         # deferred: model.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
@@ -113,7 +113,7 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
     else:
         found = _write_table(out, rows)
     if not found:
-        _say_who_else(conn, args.query)
+        _say_who_else(conn, query.compiled, found)
 
 
 def _list_fields(form: str) -> None:
@@ -146,7 +146,7 @@ def _list_fields(form: str) -> None:
         out.write(f"{len(fields)} fields\n")
 
 
-def _weighted_count(conn, query: str, name: str) -> None:
+def _weighted_count(conn, query, name: str) -> None:  # query: db.query.CompiledQuery
     """The raw count, and beside it the target's weighted count and share."""
     # deferred: db.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
     from sass_tui.db.targets import load_target, weighted_count
@@ -161,12 +161,12 @@ def _weighted_count(conn, query: str, name: str) -> None:
     )
 
 
-def _say_who_else(conn, text: str) -> None:  # conn: sqlite3.Connection
+def _say_who_else(conn, query, found: int) -> None:  # query: db.query.CompiledQuery
     """A query that found no real person: the demonstration people it would find."""
     # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import demonstration_hint
 
-    hint = demonstration_hint(conn, text)
+    hint = demonstration_hint(conn, query, found)
     if hint:
         print(hint, file=sys.stderr)
 

@@ -124,19 +124,14 @@ def by_fields(text: str) -> list[str]:
 
 def _make(args: argparse.Namespace) -> int:
     # deferred: db.query, db.targets, model.target_sample — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import QueryError, compile_query
+    from sass_tui.db.query import parse_option
     from sass_tui.db.targets import check_name, make_target, store_target, target_exists
     from sass_tui.model.target_sample import SampleError, read_sample
 
     # Everything that needs no database first: a bad input touches nothing.
     check_name(args.name)
     fields = by_fields(args.by)
-    try:
-        compile_query(args.population)
-    except QueryError as exc:
-        error = QueryError(f"--population: {exc}", exc.text)
-        error.column = exc.column
-        raise error from None
+    population = parse_option(args.population, "--population")  # parsed once, passed on
     path = regular_file(args.sample)
     try:
         text = path.read_text(encoding="utf-8")
@@ -149,7 +144,7 @@ def _make(args: argparse.Namespace) -> int:
             print("nothing changed", file=sys.stderr)
             return 1
         target, weights, weighting = make_target(
-            conn, args.name, args.gender, sample, args.sample, args.population
+            conn, args.name, args.gender, sample, args.sample, population
         )
         store_target(conn, weights, replace=True)
     finally:

@@ -38,9 +38,11 @@ import numpy.typing as npt
 from sass_tui.db.dialect import dialect_of, ids_in
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import (
+    ParsedQuery,
     compile_conjuncts,
-    compile_query,
+    joined,
     parse_query,
+    parsed,
     real_people_only,
 )
 from sass_tui.model.accommodation import Family, build_family, measure_field
@@ -197,8 +199,8 @@ def check_mix(mix: dict[str, float] | None) -> dict[str, float]:
 
 def fit_test(
     conn: sqlite3.Connection,
-    limits: str,
-    population: str = DEFAULT_POPULATION,
+    limits: str | ParsedQuery,
+    population: str | ParsedQuery = DEFAULT_POPULATION,
     mix: dict[str, float] | None = None,
     failing: bool = False,
     progress: Progress | None = None,
@@ -212,19 +214,22 @@ def fit_test(
     share is given too (`FitResult.target`). `strength_limits` are limits on each
     person's strength predicted from their own gender, age, mass and stature
     (docs/strength.md), after the query's."""
+    # Each query parsed once; a query's errors point into its own text.
+    limit_query = parsed(limits)
+    people_query = parsed(population)
     if target is not None:
         base = target.target.base_query
-        population = (
-            base if population == target.target.population else f"({population}) AND {base}"
+        people_query = (
+            parsed(base)
+            if people_query.text == target.target.population
+            else joined(people_query, base, text=f"({people_query.text}) AND {base}")
         )
     steps = Steps(progress, cancel, "the fit test")
     steps(0, 3)
     weights = check_mix(mix)
-    compile_conjuncts(limits)  # errors point into the limits' own text
-    compile_query(population)
     # One compilation of both, so the population's terms share the limits' joins
     # and its WHERE runs inline (a subquery for it costs half as much again).
-    people, *terms = compile_conjuncts(f"({population}) AND {limits}")
+    people, *terms = compile_conjuncts(limit_query, first=people_query)
     # The population's term is compiled as a part, unscoped: real people unless it names a source.
     people = real_people_only(people)
     # The body a strength limit predicts from, only when there is one.
@@ -243,7 +248,7 @@ def fit_test(
         rows = conn.execute(sql, params).fetchall()
     steps(1, 3)
     if not rows:
-        raise FitError(f"the population {population!r} selects nobody")
+        raise FitError(f"the population {people_query.text!r} selects nobody")
     ids = np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows))
     gender = np.array([r[1] for r in rows], dtype=object)
     # (people, limits): 1.0 passes, 0.0 fails, NaN not measured.
@@ -261,7 +266,7 @@ def fit_test(
         passes = np.hstack([passes, np.array(predicted, dtype=float)])
         texts += tuple(f"{limit.text} (predicted)" for limit in strength_limits)
     steps(2, 3)
-    result = _summarise(conn, texts, population, weights, ids, gender, passes, failing)
+    result = _summarise(conn, texts, people_query.text, weights, ids, gender, passes, failing)
     if target is not None:
         result = replace(result, target=_target_share(target, ids, passes))
     steps(3, 3)
@@ -396,7 +401,7 @@ def load_family(
     measures: Sequence[str],
     target: float,
     kind: str = "boundary",
-    population: str = DEFAULT_POPULATION,
+    population: str | ParsedQuery = DEFAULT_POPULATION,
     predictor: Predictor | None = None,
     progress: Progress | None = None,
     cancel: Cancel | None = None,
@@ -416,20 +421,20 @@ def load_family(
     if gender not in GENDERS:
         raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
     fields = [measure_field(m) for m in measures]
-    compile_query(population)  # its own error, before the combined query's
+    people_query = parsed(population)  # its own error, before the combined query's
     if weighted_to is not None:
         made = weighted_to.target
         if made.gender != gender:
             raise FitError(f"the target {made.name} is of {made.gender} people, not {gender}")
-        if population != made.population:
-            population = f"({population}) AND ({made.population})"
+        if people_query.text != made.population:
+            people_query = joined(people_query, made.population)
     steps = Steps(progress, cancel, "the family")
     steps(0, 3)
     with interruptible(conn, cancel, "the family"):
-        values = load_values(conn, fields, f"({population}) AND gender = {gender}")
+        values = load_values(conn, fields, joined(people_query, f"gender = {gender}"))
     steps(1, 3)
     if len(values) == 0:
-        raise FitError(f"the population {population!r} has no {gender} people")
+        raise FitError(f"the population {people_query.text!r} has no {gender} people")
     with interruptible(conn, cancel, "the family"):
         model = predictor if predictor is not None else open_predictor(conn)
     steps(2, 3)

@@ -35,7 +35,7 @@ from sass_tui.db.database import engine_errors
 from sass_tui.db.dialect import dialect_of, mark_of
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
-from sass_tui.db.query import LIST_FIELDS, compile_query, demonstration_hint
+from sass_tui.db.query import LIST_FIELDS, CompiledQuery, compile_query, demonstration_hint
 from sass_tui.db.schema import DatabaseError, connect, transaction
 from sass_tui.model.errors import SassError
 
@@ -110,6 +110,9 @@ class QueryLists:
         self._lock = threading.Lock()
         self._owner: int | None = None  # the thread holding _lock
         self.last_query: str | None = None
+        # The last query compiled: the count, the hint and the weighted count of
+        # one run of the query screen parse its text once.
+        self._compiled: CompiledQuery | None = None
         # What a server restart took (PostgreSQL), to be told once (take_lost).
         self._lost: str | None = None
         self.dialect = dialect_of(conn)
@@ -217,7 +220,7 @@ class QueryLists:
         # deferred: db.accelerator — numpy only on a large database
         from sass_tui.db import accelerator
 
-        compiled = compile_query(text)
+        compiled = self._compile(text)
         where, params = compiled.sql(self.dialect)
         sql = (
             f"INSERT INTO query_list (id_num) SELECT p.id_num FROM {compiled.from_clause()} "
@@ -477,10 +480,16 @@ class QueryLists:
         # deferred: db.targets — only weighted_count() needs it; importing db.lists does not load it
         from sass_tui.db.targets import load_target, weighted_count
 
-        return weighted_count(self._conn, query, load_target(self._conn, target))
+        return weighted_count(self._conn, self._compile(query), load_target(self._conn, target))
 
     @_serialised
     def demonstration_hint(self, text: str) -> str | None:
         """For a query that found no real person: the demonstration people it
         would find (db/query.py's demonstration_hint)."""
-        return demonstration_hint(self._conn, text)
+        return demonstration_hint(self._conn, self._compile(text))
+
+    def _compile(self, text: str) -> CompiledQuery:
+        """`text` compiled, or the last query compiled if it is the same text."""
+        if self._compiled is None or self._compiled.text != text:
+            self._compiled = compile_query(text)
+        return self._compiled

@@ -34,6 +34,7 @@ import numpy as np
 
 from sass_tui.db.dialect import ids_in
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
+from sass_tui.db.query import ParsedQuery, joined, parsed
 from sass_tui.db.schema import CENTER_OF_MASS_NAMES, GIRTH_NAMES
 from sass_tui.db.values import load_values
 from sass_tui.model import datasets
@@ -82,7 +83,7 @@ def group_fields(word: str, rows: Sequence[str]) -> list[str]:
 
 def population_of(
     conn: sqlite3.Connection,
-    query: str | None = None,
+    query: str | ParsedQuery | None = None,
     *,
     ids: Sequence[int] | None = None,
     title: str | None = None,
@@ -102,10 +103,16 @@ def population_of(
     With a `target` (sass_tui/db/targets.py) the people are the target's (of
     `query`/`ids` if given), and the percentiles are weighted empirical
     percentiles (`model.targets.weighted_percentile`); the title says so."""
+    # Parsed once; the files' titles say its text.
+    selection = None if query is None else parsed(query)
     if target is not None:
         base = target.target.base_query
-        query = base if query is None else f"({query}) AND {base}"
-    if query is None and ids is None:
+        selection = (
+            parsed(base)
+            if selection is None
+            else joined(selection, base, text=f"({selection.text}) AND {base}")
+        )
+    if selection is None and ids is None:
         raise PopulationError("a population needs a query or a list of people")
     when = date or _dt.date.today().isoformat()
     fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)] + ["stature"]
@@ -113,9 +120,9 @@ def population_of(
     total = len(fields) * len(GENDERS) + 1
     steps(0, total)
     with interruptible(conn, cancel, "making the population"):
-        values = load_values(conn, fields, query, ids=ids)
+        values = load_values(conn, fields, selection, ids=ids)
     steps(1, total)
-    what = _selection_words(query, ids, ids_from)
+    what = _selection_words(None if selection is None else selection.text, ids, ids_from)
     genders = np.array(values.genders, dtype=object)
     counts: dict[str, int] = {g: int(np.sum(genders == g)) for g in GENDERS if np.any(genders == g)}
     if not counts:
@@ -170,7 +177,7 @@ def population_of(
     if target is not None:
         # Weighting moves stature and mass most: a weighted population carries its own
         # global statistics (the file `sass fig --global` reads).
-        whole = load_values(conn, [r.name for r in GLOBAL_ROWS], query, ids=ids)
+        whole = load_values(conn, [r.name for r in GLOBAL_ROWS], selection, ids=ids)
         data = PopulationData(
             group=GLOBAL, title=f"{heading} ({described}; sass query, {when})", path=""
         )

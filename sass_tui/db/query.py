@@ -62,7 +62,7 @@ from sass_tui.db.schema import (
     JOINT_LIMIT_NAMES,
     QUERY_TABLES,
 )
-from sass_tui.db.scope import demonstration_query, real_only
+from sass_tui.db.scope import demonstration_query, demonstration_tree, real_only
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, suggest
 from sass_tui.model.units import LARGEST_NUMBER, UnitError, convert, unit_name
@@ -497,9 +497,20 @@ def _check_comparisons(comparisons: int, text: str, column: int) -> None:
         )
 
 
-def parse_query(text: str) -> Expr:
-    """The query's tree as the user wrote it (no scope added); raises QueryError
-    pointing at the bad token."""
+class ParsedQuery(NamedTuple):  # not a dataclass: see model.names.Row
+    """A query parsed once: its text, its tree as written (no scope added),
+    and the terms its top-level AND joins, each with its text (one term, the
+    whole query, when it is not an AND); a command passes it on instead of
+    its text (compile_query, compile_conjuncts, names_source)."""
+
+    text: str
+    tree: Expr
+    terms: tuple[tuple[str, Expr], ...]
+    or_column: int | None  # the column of an OR at the top level: no terms to split
+
+
+def parse(text: str) -> ParsedQuery:
+    """Parse and check a query; raises QueryError pointing at the bad token."""
     if not text.strip():
         raise QueryError(
             "the query is empty; expected e.g. gender = male AND stature > 180 cm", text, 1
@@ -529,13 +540,63 @@ def parse_query(text: str) -> Expr:
         if isinstance(exc.orig_exc, QueryError):
             raise exc.orig_exc from None
         raise
-    return expr
+    whole_group = _parenthesised(text, tree.meta.start_pos)
+    if tree.data == "and_expr" and not whole_group and isinstance(expr, And):
+        # every child of an and_expr is a subtree (a comparison or a group), never a
+        # token, and the builder makes one term of each, in order
+        children = [t for t in tree.children if isinstance(t, Tree)]
+        terms = tuple((_term_text(text, child), term) for child, term in zip(children, expr.terms))
+        return ParsedQuery(text, expr, terms, None)
+    or_column = _first_or_column(text, tree) if tree.data == "or_expr" and not whole_group else None
+    return ParsedQuery(text, expr, ((_term_text(text, tree), expr),), or_column)
 
 
-def compile_query(text: str) -> CompiledQuery:
-    """Parse and check a query; raises QueryError pointing at the bad token.
-    A query that names no `source` reaches real people only (db/scope.py)."""
-    return _compiled(text, real_only(parse_query(text)))
+def _term_text(text: str, term: Tree[Token]) -> str:
+    label = text[term.meta.start_pos : term.meta.end_pos]
+    if term.data in ("or_expr", "and_expr"):  # only a parenthesised group is a tree here
+        label = f"({label})"
+    return " ".join(label.split())
+
+
+def parse_option(text: str, option: str) -> ParsedQuery:
+    """`parse` for the query a command-line option gives: its error names the
+    option (`--population: column 3: ...`)."""
+    try:
+        return parse(text)
+    except QueryError as exc:
+        error = QueryError(f"{option}: {exc}", exc.text)
+        error.column = exc.column
+        raise error from None
+
+
+def parsed(query: str | ParsedQuery) -> ParsedQuery:
+    """The query parsed, unless it is already."""
+    return query if isinstance(query, ParsedQuery) else parse(query)
+
+
+def joined(*queries: str | ParsedQuery, text: str | None = None) -> ParsedQuery:
+    """The queries joined by AND, the tree `(a) AND (b)` parses to, each
+    query parsed once (a population and a target's, a population and a
+    gender); `text` says it (default `(a) AND (b)`)."""
+    parts = [parsed(q) for q in queries]
+    if text is None:
+        text = " AND ".join(f"({part.text})" for part in parts)
+    terms = tuple((f"({' '.join(part.text.split())})", part.tree) for part in parts)
+    return ParsedQuery(text, And(tuple(part.tree for part in parts)), terms, None)
+
+
+def parse_query(text: str) -> Expr:
+    """The query's tree as the user wrote it (no scope added); raises QueryError
+    pointing at the bad token."""
+    return parse(text).tree
+
+
+def compile_query(query: str | ParsedQuery) -> CompiledQuery:
+    """Parse (unless it is parsed) and check a query; raises QueryError pointing
+    at the bad token.  A query that names no `source` reaches real people only
+    (db/scope.py)."""
+    once = parsed(query)
+    return _compiled(once.text, real_only(once.tree))
 
 
 def _compiled(text: str, expr: Expr, alias_of: dict[str, str] | None = None) -> CompiledQuery:
@@ -554,10 +615,10 @@ def real_people_only(compiled: CompiledQuery) -> CompiledQuery:
     return _compiled(compiled.text, real_only(compiled.tree), alias_of)
 
 
-def names_source(text: str) -> bool:
+def names_source(query: str | ParsedQuery) -> bool:
     """Whether the query names a `source` term (then it is not limited to real
     people: db/scope.py).  The query must compile."""
-    return names_field(parse_query(text), "source")
+    return names_field(parsed(query).tree, "source")
 
 
 _TOKEN_WORDS = {
@@ -680,30 +741,45 @@ class Query:
             last = rows[-1]["id"]
 
 
-def demonstration_hint(conn: Connection, text: str) -> str | None:
+def demonstration_hint(
+    conn: Connection, query: str | CompiledQuery, found: int | None = None
+) -> str | None:
     """For a query that found no real person: how many demonstration people it
-    would find, and the query that finds them (None: none, or it named a source)."""
-    if names_source(text) or Query(conn, compile_query(text)).count():
-        return None  # it names a source, or it finds real people (e.g. all already selected)
-    reach = demonstration_query(text)
-    found = Query(conn, compile_query(reach)).count()
-    if not found:
+    would find, and the query that finds them (None: none, or it named a
+    source).  `found`: the query's count, if the caller has it already."""
+    compiled = query if isinstance(query, CompiledQuery) else compile_query(query)
+    if compiled.names_field("source"):
+        return None  # it names a source: its answer is what it asked for
+    if found is None:
+        found = Query(conn, compiled).count()
+    if found:
+        return None  # it finds real people (e.g. all already selected)
+    text = compiled.text
+    reach = _compiled(demonstration_query(text), demonstration_tree(compiled.tree))
+    reached = Query(conn, reach).count()
+    if not reached:
         return None
     carry = (
         " (only they carry strength, joint-limit and center-of-mass values)"
         if any(word in text.lower() for word in ("strength", "joint_limit", "center_of_mass"))
         else ""
     )
-    people = "person matches" if found == 1 else "people match"
-    return f"no real person matches; {found} synthetic demonstration {people}{carry}: {reach}"
+    people = "person matches" if reached == 1 else "people match"
+    return (
+        f"no real person matches; {reached} synthetic demonstration {people}{carry}: {reach.text}"
+    )
 
 
-def run_query(conn: Connection, text: str) -> Query:
-    return Query(conn, compile_query(text))
+def run_query(conn: Connection, query: str | ParsedQuery) -> Query:
+    return Query(conn, compile_query(query))
 
 
-def compile_conjuncts(text: str) -> tuple[CompiledQuery, ...]:
-    """The terms a query's top-level AND joins, each compiled on its own.
+def compile_conjuncts(
+    query: str | ParsedQuery, first: ParsedQuery | None = None
+) -> tuple[CompiledQuery, ...]:
+    """The terms a query's top-level AND joins, each compiled on its own;
+    with `first`, that query is one more term before them (fit's population
+    before its limits: `(population) AND limits`, parsed once each).
 
     Every term shares one set of joined tables (each term's `tables` is the
     whole set), so the terms can be evaluated side by side in one SELECT.  A
@@ -711,33 +787,27 @@ def compile_conjuncts(text: str) -> tuple[CompiledQuery, ...]:
     is one range), and so is a query wholly in parentheses.  An OR at the top
     level has no terms to split: it is refused, pointing at the OR.
     """
-    compile_query(text)  # the full checks and their error messages
-    tree = parser().parse(text)
-    whole_group = _parenthesised(text, tree.meta.start_pos)
-    if tree.data == "or_expr" and not whole_group:
-        column = _first_or_column(text, tree)
+    once = parsed(query)
+    if once.or_column is not None:
         raise QueryError(
             "terms joined by OR at the top level cannot be split into separate terms; "
             "join the terms with AND, and put alternatives in parentheses to make them "
             "one term, e.g. (stature < 190 cm OR mass < 100 kg) AND gender = male",
-            text,
-            column,
+            once.text,
+            once.or_column,
         )
-    # every child of an and_expr is a subtree (a comparison or a group), never a token
-    terms: list[Tree[Token]] = (
-        [t for t in tree.children if isinstance(t, Tree)]
-        if tree.data == "and_expr" and not whole_group
-        else [tree]
-    )
-    builder = _TreeBuilder(text)
-    built: list[tuple[str, Expr]] = []
-    for term in terms:
-        label = text[term.meta.start_pos : term.meta.end_pos]
-        if term.data in ("or_expr", "and_expr"):  # only a parenthesised group is a tree here
-            label = f"({label})"
-        built.append((" ".join(label.split()), builder.transform(term)))
+    built = list(once.terms)
+    if first is not None:
+        label = " ".join(first.text.split())
+        built.insert(0, (f"({label})" if isinstance(first.tree, And | Or) else label, first.tree))
     # One alias per table over all the terms, so they can share one FROM clause.
     alias_of = aliases(And(tuple(expr for _, expr in built)))
+    if len(alias_of) - 1 > MAX_JOINED_TABLES:
+        raise QueryError(
+            f"the population and the limits use more than {MAX_JOINED_TABLES} different "
+            "segments, joints and motions together; split them",
+            once.text,
+        )
     return tuple(_compiled(label, expr, alias_of) for label, expr in built)
 
 

@@ -53,3 +53,18 @@ def real_only(expr: Expr | None) -> Expr:
 def demonstration_query(text: str) -> str:
     """The query that reaches the demonstration people `text` would select."""
     return f"({text}) AND source = {DEMONSTRATION_SOURCE}"
+
+
+# `source = synthetic` as the query language compiles it (free text: no regard to case).
+DEMONSTRATION_PEOPLE = Comparison(
+    "source", PERSON_TABLE, "source", "=", DEMONSTRATION_SOURCE, nocase=True
+)
+
+
+def demonstration_tree(scoped: Expr) -> Expr:
+    """The tree of `demonstration_query` made from a query's scoped tree
+    (`real_only`'s) without parsing its text again."""
+    terms = scoped.terms if isinstance(scoped, And) else (scoped,)
+    kept = tuple(term for term in terms if term != REAL_PEOPLE)
+    asked = kept[0] if len(kept) == 1 else And(kept)
+    return And((asked, DEMONSTRATION_PEOPLE))

@@ -25,7 +25,7 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.db.dialect import mark_of, writing
-from sass_tui.db.query import compile_query, run_query
+from sass_tui.db.query import CompiledQuery, ParsedQuery, Query, compile_query, joined, parsed
 from sass_tui.model.target_sample import Sample
 from sass_tui.model.targets import TargetError, Weighting, calibrate
 from sass_tui.model.text import printable
@@ -120,7 +120,7 @@ def make_target(
     gender: str,
     sample: Sample,
     sample_name: str,
-    population: str = DEFAULT_POPULATION,
+    population: str | ParsedQuery = DEFAULT_POPULATION,
 ) -> tuple[Target, TargetWeights, Weighting]:
     """Compute a target (nothing stored: `store_target` stores it)."""
     # deferred: db.values — off sass target (sass_tui/startup.py)
@@ -129,10 +129,10 @@ def make_target(
     check_name(name)
     if gender not in GENDERS:
         raise TargetError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
-    compile_query(population)
-    values = load_values(conn, sample.fields, base_query(population, gender))
+    people = parsed(population)  # once: its errors first, then its people
+    values = load_values(conn, sample.fields, joined(people, f"gender = {gender}"))
     if len(values) == 0:
-        raise TargetError(f"the population {population!r} has no {gender} people")
+        raise TargetError(f"the population {people.text!r} has no {gender} people")
     weighting = calibrate(sample.fields, values.matrix, sample.matrix, where=sample_name)
     summary = {
         c.field: {
@@ -145,7 +145,7 @@ def make_target(
     target = Target(
         name=name,
         gender=gender,
-        population=population,
+        population=people.text,
         fields=tuple(sample.fields),
         sample=sample_name,
         sample_rows=weighting.sample_rows,
@@ -276,9 +276,11 @@ class WeightedCount:
         return 100.0 * self.weighted / self.total if self.total else 0.0
 
 
-def weighted_count(conn: sqlite3.Connection, query: str, weights: TargetWeights) -> WeightedCount:
+def weighted_count(
+    conn: sqlite3.Connection, query: str | CompiledQuery, weights: TargetWeights
+) -> WeightedCount:
     """How many people `query` selects, and the share of the target's weight they hold."""
-    result = run_query(conn, query)
+    result = Query(conn, query if isinstance(query, CompiledQuery) else compile_query(query))
     ids = np.array(sorted(result.ids()), dtype=np.int64)
     mine = weights.of(ids)
     return WeightedCount(

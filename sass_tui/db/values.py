@@ -24,6 +24,7 @@ from sass_tui.db.dialect import dialect_of, ids_in
 from sass_tui.db.query import (
     MEASURE_TABLE,
     TEXT,
+    ParsedQuery,
     QueryError,
     _FieldError,
     compile_query,
@@ -66,14 +67,15 @@ def numeric_field(field: str) -> tuple[str, str, str]:
 def load_values(
     conn: sqlite3.Connection,
     fields: Sequence[str],
-    where: str | None = None,
+    where: str | ParsedQuery | None = None,
     *,
     ids: Sequence[int] | None = None,
 ) -> Values:
     """Every selected person's values of `fields` (see the module's docstring)."""
     resolved = [numeric_field(f) for f in fields]
     dialect = dialect_of(conn)
-    compiled = compile_query(where) if where is not None and where.strip() else None
+    blank = where is None or (isinstance(where, str) and not where.strip())
+    compiled = None if where is None or blank else compile_query(where)
     aliases: dict[str, str] = {}
     joins = []
     columns = []
