@@ -65,7 +65,8 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "the first screen",
         (),
-        (*NEVER, *QUERY_PARSER, *ENGINES, *OTHER_SCREENS, "numpy", "textual_canvas", "textual_plotext",
+        (*NEVER, *QUERY_PARSER, *ENGINES, *OTHER_SCREENS, "numpy", "textual_canvas",
+         "textual_plotext",
          "textual_serve", "aiohttp", "xml.etree.ElementTree", "importlib.metadata",
          "sass_tui.ui.figure_screen"),
         "`sass` start-up <= 1.3x a bare Textual app (benchmarks/cli_ratios.py): the default"
@@ -75,7 +76,8 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "the first screen's next frame",
         (),
-        (*NEVER, *QUERY_PARSER, *ENGINES, *OTHER_SCREENS, "textual_plotext", "textual_serve", "aiohttp",
+        (*NEVER, *QUERY_PARSER, *ENGINES, *OTHER_SCREENS, "textual_plotext", "textual_serve",
+         "aiohttp",
          "xml.etree.ElementTree", "numpy.ma", "secrets"),
         "the figure panel and the strength sheet (numpy, textual-canvas) come one frame"
         " later; the query screen, the database, exports and the first edit's modules wait"
@@ -85,7 +87,8 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass --help",
         ("--help",),
-        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "sqlite3", "platformdirs",
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "sqlite3",
+         "platformdirs",
          "pickle", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
         "every verb's module is imported to list it: each imports at its top only what"
         " its parser needs",
@@ -100,7 +103,8 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass fig",
         ("fig", "-o", "X.fig"),
-        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
+         "platformdirs", "numpy.ma",
          "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
         "`sass fig -o X.fig` <= 1.6x `python -c 'import numpy'` (benchmarks/cli_ratios.py):"
         " the figure needs numpy and the model, no database and no temporary file's name",
@@ -108,40 +112,45 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass export hanim",
         ("export", "hanim", "-o", "X.x3d"),
-        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
+         "platformdirs", "numpy.ma",
          "secrets", "sass_tui.db", "sass_tui.ui"),
         "the X3D document needs the figure and xml.etree, no database",
     ),
     StartupPath(
         "sass export gltf",
         ("export", "gltf", "-o", "X.glb"),
-        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, "logging", "asyncio", "sqlite3", "platformdirs", "numpy.ma",
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, "logging", "asyncio", "sqlite3", "platformdirs",
+         "numpy.ma",
          "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
         "the glTF body needs the figure's humanoid, not the X3D writer nor a database",
     ),
     StartupPath(
         "sass strength",
         ("strength", "elbow_flexion"),
-        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
+         "platformdirs", "numpy.ma",
          "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
         "the strength of the default figure needs the strength file and the model only",
     ),
     StartupPath(
         "sass query",
         ("query", "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"),
-        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets", "platformdirs",
+         "xml.etree.ElementTree", "sass_tui.ui",
          "sass_tui.model.prediction", "sass_tui.db.accelerator", "sass_tui.db.postgres",
          "json"),
         "`sass query` <= 5x `python -c pass` (benchmarks/cli_ratios.py): lark's parser"
-        " from its cached tables, the unit table (not pint), SQLite and the table writer; argparse's help"
-        " formatter without shutil; no column copy below its size; json only for --format"
-        " json (1.1 ms), the PostgreSQL module only for an address",
+        " from its cached tables, the unit table (not pint), SQLite and the table writer;"
+        " argparse's help formatter without shutil; no column copy below its size; json"
+        " only for --format json (1.1 ms), the PostgreSQL module only for an address",
         needs_db=True,
     ),
     StartupPath(
         "sass query --format csv",
         ("query", "--format", "csv", "stature > 70 in"),
-        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets", "platformdirs",
+         "xml.etree.ElementTree", "sass_tui.ui",
          "sass_tui.model.prediction", "sass_tui.db.accelerator", "sass_tui.db.postgres",
          "json"),
         "as `sass query`: \"70 in\" is converted from the unit table, and csv is the writer",
@@ -159,7 +168,8 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass person",
         ("person", "1"),
-        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy.ma", "secrets", "platformdirs",
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy.ma", "secrets",
+         "platformdirs",
          "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
          "sass_tui.db.accelerator"),
         "one person's record: no query language, no prediction",
@@ -212,7 +222,8 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass db init",
         ("--db", "new.db", "db", "init"),
-        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, "logging", "asyncio", "tempfile", "importlib.metadata",
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, "logging", "asyncio", "tempfile",
+         "importlib.metadata",
          "numpy.ma", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
          "sass_tui.model.prediction"),
         "building the default database needs the shipped files and SQLite, no query",

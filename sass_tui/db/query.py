@@ -19,9 +19,18 @@ synthetic demonstration people left out: db/scope.py, added in
 `compile_query`); `source = synthetic`, or any `source` term, leaves the
 choice to the query.
 
-AND binds tighter than OR; parentheses group.  Values with a unit are
-converted to the stored unit; the SQL holds only `?` placeholders, never the
-user's text.  Errors name the offending token and its column.
+NOT binds tighter than AND, AND tighter than OR; parentheses group.
+`field BETWEEN a AND b` is `field >= a AND field <= b`; NOT is pushed down
+to the comparisons (db/query_tree.py's `negation`).  Values with a unit are
+converted to the stored unit, and several numbers each with its unit add up
+(`6 ft 2 in`); the SQL holds only `?` placeholders, never the user's text.
+Errors name the offending token and its column; an unknown field gets a
+"did you mean" (`weight` -> `mass`).  docs/query-language.md is the
+language's reference, `sass query --fields` (db/query_fields.py) its list of
+fields.
+
+A command parses a query once (`parse`: a ParsedQuery) and passes the
+parsed query on; `compile_query` and `compile_conjuncts` take it or a text.
 
 For the UI: `Query.count()` and `Query.page(offset, limit)` (or
 `page_after(last_id, limit)`) never load more than one page of people.

@@ -14,9 +14,12 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from sass_tui.cli import main
+from sass_tui.db import accelerator
 from sass_tui.db.dialect import dialect_of
 from sass_tui.db.query import QueryError, compile_query, parse_query, run_query
 from sass_tui.db.query_tree import And, Comparison, Or, negation, to_sql
+from sass_tui.db.schema import connect
 
 FILES = {"male": "ANSUR_II_MALE_Public.csv", "female": "ANSUR_II_FEMALE_Public.csv"}
 UNITS = pint.UnitRegistry()
@@ -243,3 +246,34 @@ def flattened(tree):
 def test_any_tree_written_out_parses_back_to_itself(case):
     text, tree = case
     assert flattened(parse_query(text)) == flattened(tree)
+
+
+# --- the DuckDB column copy (db/accelerator.py) reads them as SQLite does -------
+
+DUCKDB_QUERIES = [
+    "NOT (gender = male OR branch = 'Combat Arms') AND stature BETWEEN 5 ft 2 in AND 5 ft 8 in",
+    "measure.sittingheight BETWEEN 85 cm AND 95 cm AND NOT mass > 80 kg",
+]
+
+
+@pytest.mark.sqlite_only("the DuckDB column copy of a SQLite file")
+@pytest.mark.parametrize("text", DUCKDB_QUERIES)
+def test_the_duckdb_copy_counts_not_and_between_as_sqlite_does(
+    default_db_file, tmp_path, monkeypatch, capsys, text
+):
+    pytest.importorskip("duckdb")
+    path = tmp_path / "people.db"
+    path.write_bytes(default_db_file.read_bytes())
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    assert main(["db", "copy", "--db", str(path), text]) == 0
+    capsys.readouterr()
+    compiled = compile_query(text)
+    conn = connect(path)
+    try:
+        by_copy = accelerator.count(conn, compiled)
+        assert accelerator.last_answer == "copy"
+        sql = f"SELECT count(*) FROM {compiled.from_clause()} WHERE {compiled.where}"
+        assert by_copy == conn.execute(sql, compiled.params).fetchone()[0] > 0
+    finally:
+        conn.close()
