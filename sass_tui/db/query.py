@@ -378,7 +378,11 @@ def resolve_field(names: list[str]) -> FieldInfo:
         raise _FieldError(f"expected {shape}", 0)
     row, axis = names[1].lower(), names[2].lower()
     if row not in rows:
-        raise _FieldError(f"unknown {what} {names[1]!r}; expected one of {', '.join(rows)}", 1)
+        close = suggest(row, names=rows)
+        expected = (
+            f"did you mean {' or '.join(close)}?" if close else f"expected one of {', '.join(rows)}"
+        )
+        raise _FieldError(f"unknown {what} {names[1]!r}; {expected}", 1)
     expected_axes = ("max",) if head == "strength" else ("x", "y", "z")
     if axis not in expected_axes:
         raise _FieldError(

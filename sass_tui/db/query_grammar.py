@@ -73,7 +73,10 @@ def table_file() -> Path:
 def parser() -> Lark:
     """The LALR parser of GRAMMAR: its tables read from the cache file, or
     built and written there for the next process."""
-    path = table_file()
+    try:
+        path = table_file()
+    except RuntimeError:  # no home directory (Path.home) to keep the tables in
+        return Lark(GRAMMAR, **_OPTIONS)
     try:
         with open(path, "rb") as tables:
             loaded: Lark = Lark.load(tables)

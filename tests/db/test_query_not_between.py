@@ -122,6 +122,8 @@ def test_compound_units_add_up():
         ("statrue > 1 m", 1, "did you mean stature?"),
         ("sittingheight > 90 cm", 1, "did you mean measure.sittingheight?"),
         ("measure.sittinghieght > 90 cm", 9, "did you mean sittingheight?"),
+        ("girth.rigth_upper_arm.z > 28 cm", 7, "did you mean right_upper_arm or"),
+        ("strength.elbow_flex.max > 1", 10, "did you mean elbow_flexion or elbow_extension?"),
         ("stature BETWEEN 180 cm AND 160 cm", 17, "selects nobody; write the smaller"),
         ("gender BETWEEN male AND female", 16, "BETWEEN takes two numbers, not 'male'"),
         ("stature > 6 ft 2", 16, "each number of '6 ft 2' needs its unit"),

@@ -120,6 +120,16 @@ def test_a_cache_path_that_is_a_file_only_costs_the_build(own_cache):
     assert outcome(parser(), SAMPLES[2]) == outcome(reference(), SAMPLES[2])
 
 
+def test_without_a_home_directory_the_parser_is_built(own_cache, monkeypatch):
+    monkeypatch.delenv("XDG_CACHE_HOME")
+
+    def no_home() -> None:
+        raise RuntimeError("Could not determine home directory.")
+
+    monkeypatch.setattr(query_grammar.Path, "home", staticmethod(no_home))
+    assert outcome(parser(), SAMPLES[0]) == outcome(reference(), SAMPLES[0])
+
+
 @settings(max_examples=200, deadline=None)
 @given(st.text(alphabet="ab.=<>!()'\" 0123456789cmANDORNTBWEand_", max_size=40))
 def test_any_text_parses_as_lark_built_afresh_does(text):
