@@ -17,7 +17,13 @@ from hypothesis import strategies as st
 from sass_tui.cli import main
 from sass_tui.db import accelerator
 from sass_tui.db.dialect import dialect_of
-from sass_tui.db.query import QueryError, compile_query, parse_query, run_query
+from sass_tui.db.query import (
+    QueryError,
+    compile_conjuncts,
+    compile_query,
+    parse_query,
+    run_query,
+)
 from sass_tui.db.query_tree import And, Comparison, Or, negation, to_sql
 from sass_tui.db.schema import connect
 
@@ -279,3 +285,24 @@ def test_the_duckdb_copy_counts_not_and_between_as_sqlite_does(
         assert by_copy == conn.execute(sql, compiled.params).fetchone()[0] > 0
     finally:
         conn.close()
+
+
+# --- any string of the language's words compiles or is refused saying where ------
+
+WORDS = [
+    *("NOT", "not", "BETWEEN", "AND", "OR", "(", ")", "=", "<", ">=", "!=", "≤"),
+    *("stature", "gender", "branch", "age", "measure.sittingheight", "girth.neck.z"),
+    *("1", "2.5", "-3", "1e400", "6", "ft", "in", "cm", "kg", "years", "'x'", "male"),
+]
+
+
+@pytest.mark.slow
+@settings(max_examples=400, deadline=None)
+@given(st.lists(st.sampled_from(WORDS), max_size=14))
+def test_any_string_of_words_compiles_or_is_refused_with_its_column(words):
+    text = " ".join(words)
+    for compile_text in (compile_query, compile_conjuncts):
+        try:
+            compile_text(text)
+        except QueryError as exc:
+            assert exc.column is None or 1 <= exc.column <= len(text) + 1, (text, str(exc))
