@@ -22,6 +22,7 @@ from textual.screen import Screen
 
 from sass_tui.ui.textual_api import bindings_of
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
+from sass_tui.ui.widgets.editor import run_own_binding
 
 if TYPE_CHECKING:  # app.py imports the screens: at run time this would be a cycle
     from sass_tui.ui.app import SassApp
@@ -121,11 +122,14 @@ class SassScreen(Screen):
                 line.type_ahead(event.key, event.character)
             return  # the prompt's own keys (Enter, Escape) are the answer's bindings
         node: DOMNode | None = self.focused
-        while node is not None and node is not self:
-            if event.key in bindings_of(node).key_to_bindings:
-                return  # a widget's own binding comes first (the app runs it)
+        ran = False
+        while node is not None and node is not self and not ran:
+            # A widget's own binding comes first, run here and now rather
+            # than by the app after the key has bubbled up: "Down Enter" in
+            # one read must move the list's cursor before the screen's Enter.
+            ran = await run_own_binding(node, event.key)
             node = node.parent
-        if await self._run_binding(event.key):
+        if ran or await self._run_binding(event.key):
             event.stop()
             event.prevent_default()
 
