@@ -99,16 +99,16 @@ class Journal:
         self._entries.clear()
         self._undone.clear()
 
-    def mark_saved(self) -> None:
-        """What is applied now is what the worksheet file holds."""
-        self._saved = self._applied()
+    def mark_saved(self, state: frozenset[int] | None = None) -> None:
+        """The worksheet file holds `state` (None: what is applied now)."""
+        self._saved = self.applied() if state is None else state
 
     def unsaved(self) -> bool:
         """Edits applied, or undone, since the worksheet was last saved
         (or, never saved, since the start)."""
-        return self._applied() != self._saved
+        return self.applied() != self._saved
 
-    def _applied(self) -> frozenset[int]:
+    def applied(self) -> frozenset[int]:
         return frozenset(entry.number for entry in self._entries)
 
 
@@ -272,8 +272,13 @@ class Session:
         """Edits since the worksheet was last saved or opened (quit asks)."""
         return self._journal.unsaved()
 
-    def mark_saved(self) -> None:
-        self._journal.mark_saved()
+    def edit_state(self) -> frozenset[int]:
+        """What is applied now, for `mark_saved` once a save has been written."""
+        return self._journal.applied()
+
+    def mark_saved(self, state: frozenset[int] | None = None) -> None:
+        """The worksheet file holds `state` (None: what is applied now)."""
+        self._journal.mark_saved(state)
 
     def _edit_figure(self, what: str, edit: Callable[[Figure], T]) -> T:
         figure = self.figure

@@ -38,6 +38,7 @@ from sass_tui.model.vocabulary import (
     GENDERS,
     HANDEDNESS,
     JOINT_AXES,
+    MOTION_NAMES,
     STRENGTH_TYPES,
 )
 
@@ -350,7 +351,7 @@ class _Reader:
     def strength(self, value: object) -> StrengthSettings:
         data = self.mapping(value, "strength")
         factor = self.finite(data.get("non_dominant_factor"), "strength.non_dominant_factor")
-        rows = self.sequence(data.get("angles"), "strength.angles")
+        rows = self.sequence(data.get("angles"), "strength.angles", len(MOTION_NAMES))
         angles = [
             [self.finite(a, f"strength.angles[{r}][{c}]") for c, a in enumerate(row)]
             for r, row in enumerate(
@@ -368,13 +369,9 @@ class _Reader:
         )
 
 
-def apply_strength(settings: StrengthSettings, sheet: StrengthSheet, name: str) -> None:
-    """Set a strength sheet as the worksheet saved it (its file read again)."""
-    if len(settings.angles) != len(sheet.angles):
-        raise WorksheetError(
-            f"{name}: strength.angles: expected {len(sheet.angles)} rows for "
-            f"{settings.path}, not {len(settings.angles)}"
-        )
+def apply_strength(settings: StrengthSettings, sheet: StrengthSheet) -> None:
+    """Set a strength sheet as the worksheet saved it (its file read again;
+    the reader checked the angles' shape: a row per motion, MOTION_NAMES)."""
     sheet.side, sheet.unit = settings.side, settings.unit
     sheet.percentile = settings.percentile
     sheet.non_dominant_factor = settings.non_dominant_factor

@@ -169,10 +169,10 @@ class SassScreen(Screen):
     def action_help(self) -> None:
         """List every key of this screen, what it runs and what that does."""
         # deferred: ui.palette — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.palette import HelpScreen, screen_commands
+        from sass_tui.ui.palette import HelpScreen, help_commands
 
         title = f"Keys of {type(self).__name__.removesuffix('Screen') or 'this'} screen"
-        self.app.push_screen(HelpScreen(screen_commands(self), title))
+        self.app.push_screen(HelpScreen(help_commands(self), title))
 
     def why_not(self, action: str) -> str | None:
         """Why a command's key does nothing here (its slot shows another

@@ -88,7 +88,7 @@ def open_into(text: str, name: str = "w.json") -> Session:
     session.open_worksheet(
         worksheet.figure,
         strength,
-        lambda sheet: apply_strength(worksheet.strength, sheet, name),
+        lambda sheet: apply_strength(worksheet.strength, sheet),
     )
     return session
 
@@ -157,6 +157,7 @@ def test_edits_since_the_last_save_are_what_is_unsaved():
         ),
         (lambda d: d["figure"].update(mass=True), "figure.mass: expected a number, not true"),
         (lambda d: d["strength"].update(side="up"), "strength.side: expected"),
+        (lambda d: d["strength"]["angles"].pop(), "strength.angles: expected a list of 14"),
     ],
 )
 def test_a_bad_field_is_named_and_nothing_opens(change, expected):

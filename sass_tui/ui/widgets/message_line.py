@@ -93,6 +93,10 @@ class MessageLine(Horizontal):
         for name in ("info", "error", "warning", "prompt"):
             label.set_class(name == kind, f"-{name}")
 
+    def showing(self, text: str) -> bool:
+        """Whether the line shows `text` now (a question still on the screen)."""
+        return str(self.query_one("#message", Label).render()) == printable_lines(text)
+
     def say(self, text: str) -> None:
         self.show(text, "info")
 
