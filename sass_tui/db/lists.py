@@ -458,10 +458,12 @@ class QueryLists:
         page_size: int,
         progress: Progress | None = None,
         cancel: Cancel | None = None,
+        sort: tuple[str, bool] | None = None,
     ) -> tuple[int, list[dict[str, Any]]]:
-        """run(text), then the query list's first page, with nobody in between."""
+        """run(text), then the query list's first page (sorted by `sort`), with
+        nobody in between."""
         count = self.run(text, progress, cancel)
-        return count, self.page(QUERY_LIST, 0, page_size)
+        return count, self.page(QUERY_LIST, 0, page_size, sort)
 
     @_serialised
     def fetch_person(self, id_num: int) -> Individual:
