@@ -20,9 +20,11 @@ from textual.binding import Binding
 from textual.dom import DOMNode
 from textual.screen import Screen
 
+from sass_tui.model.paths import complete_path
 from sass_tui.ui.textual_api import bindings_of
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
 from sass_tui.ui.widgets.editor import run_own_binding
+from sass_tui.ui.widgets.message_line import Completer
 
 if TYPE_CHECKING:  # app.py imports the screens: at run time this would be a cycle
     from sass_tui.ui.app import SassApp
@@ -66,8 +68,9 @@ class SassScreen(Screen):
         initial: str = "",
         on_cancel: Callable[[], None] | None = None,
         kind: str = "prompt",
+        complete: Completer | None = None,
     ) -> None:
-        self.message_line.ask(prompt, on_answer, initial, on_cancel, kind)
+        self.message_line.ask(prompt, on_answer, initial, on_cancel, kind, complete)
 
     def converse(self, questions: Coroutine[Any, Any, None]) -> None:
         """Run a command that asks several questions in turn: `questions` is
@@ -107,9 +110,16 @@ class SassScreen(Screen):
         self.app.push_screen(screen, chosen.set_result)
         return await chosen
 
-    async def answer_to(self, prompt: str, initial: str = "") -> str | None:
+    async def answer_to(
+        self, prompt: str, initial: str = "", complete: Completer | None = None
+    ) -> str | None:
         """Ask and wait, in `converse`: the answer, None when cancelled (Escape)."""
-        return await self.message_line.answer_to(prompt, initial)
+        return await self.message_line.answer_to(prompt, initial, complete=complete)
+
+    def complete_file(self, text: str) -> list[str]:
+        """Tab at a file name's prompt: the names it may go on to (inside a
+        served session's directory, as `user_path` takes them)."""
+        return complete_path(text, self.sass_app.workdir)
 
     async def on_key(self, event: events.Key) -> None:
         line = self.message_line

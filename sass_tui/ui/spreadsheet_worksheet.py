@@ -72,7 +72,7 @@ class WorksheetCommands(FileCommands):
 
         current = self.sass_app.worksheet_path
         default = str(current) if current is not None else DEFAULT_NAME
-        name = await self.answer_to(f"Save worksheet as [{default}]:")
+        name = await self.answer_to(f"Save worksheet as [{default}]:", complete=self.complete_file)
         if name is None:
             self.say(CANCELLED)
             return
@@ -114,7 +114,7 @@ class WorksheetCommands(FileCommands):
         """Open a saved worksheet in place of the sheet shown."""
         unsaved = " (the edits since the last save are replaced)"
         prompt = "Open worksheet file" + (unsaved if self.session.unsaved_edits() else "") + ":"
-        self.ask(prompt, self._open_from)
+        self.ask(prompt, self._open_from, complete=self.complete_file)
 
     def _open_from(self, text: str) -> None:
         if not text.strip():
