@@ -16,7 +16,9 @@ from _screen import message, settle, wait_until
 from textual import events
 
 from sass_tui.model.names import GIRTH
-from sass_tui.ui.widgets import DataSheet
+from sass_tui.model.strength import JOINT_AXIS_LABELS, MOTIONS
+from sass_tui.ui.more_menu import MORE_CHOICES, MoreMenu
+from sass_tui.ui.widgets import DataSheet, GlobalPanel
 
 LARGE = (120, 40)
 
@@ -102,3 +104,52 @@ def test_down_then_an_edit_in_one_tmux_write_edits_the_cell_below(tmp_path):
         )
     finally:
         subprocess.run(["tmux", "-L", socket, "kill-server"], capture_output=True)
+
+
+@pytest.mark.parametrize("then", [ENTER, SEVEN], ids=["enter", "digit"])
+def test_down_then_an_edit_in_one_read_on_the_global_panel(drive, app_at, then):
+    async def scenario():
+        async with app_at(LARGE) as (app, pilot):
+            panel = app.query_one(GlobalPanel)
+            panel.select("mass")
+            panel.focus()
+            await pilot.pause()
+            one_read(app, DOWN, then)
+            await wait_until(pilot, lambda: app.message_line.prompting, "no prompt")
+            assert message(app).startswith("Stature"), message(app)
+            assert app.query_one("#answer").value == ("7" if then == SEVEN else "")
+
+    drive(scenario())
+
+
+@pytest.mark.parametrize("then", [ENTER, SEVEN], ids=["enter", "digit"])
+def test_down_then_an_edit_in_one_read_on_the_strength_page(drive, app_at, then):
+    async def scenario():
+        async with app_at(LARGE) as (app, pilot):
+            await pilot.press("s")
+            await wait_until(pilot, lambda: app.strength_page.display, "no strength page")
+            page = app.strength_page
+            row, column = page.cursor_row, page.cursor_column
+            one_read(app, DOWN, then)
+            await wait_until(pilot, lambda: app.message_line.prompting, "no prompt")
+            below = MOTIONS[row + 1].label.lower()
+            assert f"{below}, {JOINT_AXIS_LABELS[column].lower()} angle" in message(app)
+            assert (page.cursor_row, page.cursor_column) == (row + 1, column)
+            assert app.query_one("#answer").value == ("7" if then == SEVEN else "")
+
+    drive(scenario())
+
+
+def test_down_then_enter_in_one_read_in_a_pop_up_menu(drive, app_at):
+    """The More Menu (Disp. More's choices): Down Enter chooses the second item."""
+
+    async def scenario():
+        async with app_at(LARGE) as (app, pilot):
+            chosen = []
+            app.push_screen(MoreMenu(), chosen.append)
+            await pilot.pause()
+            one_read(app, DOWN, ENTER)
+            await wait_until(pilot, lambda: chosen, "nothing chosen")
+            assert chosen == [MORE_CHOICES[1]]
+
+    drive(scenario())
