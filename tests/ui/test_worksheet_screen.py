@@ -8,6 +8,7 @@ import math
 
 import pytest
 from _screen import message, paste, settle, wait_until
+from test_palette import choose_in_palette
 
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import AXES_OF, CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
@@ -154,5 +155,18 @@ def test_ctrl_s_saves_again_to_the_same_file(drive, app_at, tmp_path):
             assert message(app) == f"Saved the worksheet to {path}."
             assert json.loads(path.read_text())["groups"]["girth"]["values"][0][0] == 7.0
             assert not app.session.unsaved_edits()
+
+    drive(scenario())
+
+
+def test_the_palette_runs_save_as_and_open(drive, app_at):
+    async def scenario():
+        async with app_at(LARGE) as (app, pilot):
+            await choose_in_palette(pilot, "save worksheet as")
+            assert message(app).startswith("Save worksheet as [worksheet.sass.json]:")
+            await pilot.press("escape")
+            await settle(pilot)
+            await choose_in_palette(pilot, "open worksheet")
+            assert message(app).startswith("Open worksheet file:")
 
     drive(scenario())
