@@ -9,8 +9,11 @@ import csv
 
 import pytest
 from _screen import message, open_query_screen, paste, settle, wait_until
+from hypothesis import given
+from hypothesis import strategies as st
 from textual import events
 
+from sass_tui.db.lists import SORT_COLUMNS
 from sass_tui.ui.message_log import MessageLog
 from sass_tui.ui.person_screen import PersonScreen
 from sass_tui.ui.query_list import ListSheet
@@ -180,3 +183,13 @@ def test_message_log_on_the_query_screen_snapshot(snap_compare, new_app, db):
         await pilot.pause()
 
     assert snap_compare(new_app(db=True), run_before=run_before, terminal_size=NARROW)
+
+
+@given(st.text(max_size=20))
+def test_any_sort_text_is_a_column_the_lists_sort_by_or_a_sort_error(text):
+    try:
+        sort = sort_column(text)
+    except SortError as exc:
+        assert "\n" not in str(exc) and "sort by one of" in str(exc)
+        return
+    assert sort is None or (sort[0] in SORT_COLUMNS and isinstance(sort[1], bool))
