@@ -31,11 +31,21 @@ class WorksheetSaved(Message):
 
 
 class WorksheetRead(Message):
-    def __init__(self, path: Path, worksheet: Worksheet, strength: StrengthData | None) -> None:
+    """A worksheet read; `strength` its strength file read again (None: it
+    names none, or `strength_problem` says why it could not be read)."""
+
+    def __init__(
+        self,
+        path: Path,
+        worksheet: Worksheet,
+        strength: StrengthData | None,
+        strength_problem: str = "",
+    ) -> None:
         super().__init__()
         self.path = path
         self.worksheet = worksheet
         self.strength = strength
+        self.strength_problem = strength_problem
 
 
 def open_worksheet(session: Session, worksheet: Worksheet, strength: StrengthData | None) -> None:
@@ -134,21 +144,31 @@ class WorksheetCommands(FileCommands):
 
         try:
             worksheet = read_worksheet(path)
-            settings = worksheet.strength
-            strength = None if settings is None else read_strength_file(settings.path)
         except (SassError, OSError) as exc:
             self.post_message(WorkerSaid(f"{exc}; the sheet is unchanged.", "error"))
             return
-        self.post_message(WorksheetRead(path, worksheet, strength))
+        # The strength file is named, not held, by the worksheet: one moved
+        # since leaves the strength page as it is, and the sheet opens.
+        settings, strength, problem = worksheet.strength, None, ""
+        if settings is not None:
+            try:
+                strength = read_strength_file(settings.path)
+            except (SassError, OSError) as exc:
+                problem = f" Its strength file is not read ({exc}); the strength page is unchanged."
+        self.post_message(WorksheetRead(path, worksheet, strength, problem))
 
     def on_worksheet_read(self, event: WorksheetRead) -> None:
         open_worksheet(self.session, event.worksheet, event.strength)
         self.sass_app.worksheet_path = event.path
         self._warning_index = 0
         self.refresh_screen()
-        self.say(
+        opened = (
             f"Opened the worksheet {event.path} (saved by sass {event.worksheet.sass_version})."
         )
+        if event.strength_problem:
+            self.complain(opened + event.strength_problem)
+        else:
+            self.say(opened)
 
     # --- redo ---------------------------------------------------------------------
     def action_redo(self) -> None:

@@ -170,3 +170,29 @@ def test_the_palette_runs_save_as_and_open(drive, app_at):
             assert message(app).startswith("Open worksheet file:")
 
     drive(scenario())
+
+
+@pytest.mark.slow
+def test_a_worksheet_whose_strength_file_moved_opens_and_says_so(drive, app_at, tmp_path):
+    path = tmp_path / "day.sass.json"
+    moved = tmp_path / "gone.dat"
+
+    async def scenario():
+        async with app_at(LARGE) as (app, pilot):
+            await edit_every_group(app, pilot)
+            await save_as(pilot, path)
+            saved = cells(app.figure)
+            document = json.loads(path.read_text())
+            document["strength"]["file"] = str(moved)
+            path.write_text(json.dumps(document))
+            sheet = app.strength_sheet
+            await pilot.press("O")
+            await paste(pilot, str(path))
+            await pilot.press("enter")
+            await settle(pilot)
+            assert message(app).startswith(f"Opened the worksheet {path}")
+            assert f"Its strength file is not read ({moved}: cannot read" in message(app)
+            assert cells(app.figure) == saved
+            assert app.strength_sheet is sheet  # the strength page as it was
+
+    drive(scenario())
