@@ -5,14 +5,11 @@ Enter or the digit after it asks for its edit."""
 
 from __future__ import annotations
 
-import os
 import shutil
-import subprocess
-import sys
-import time
 
 import pytest
 from _screen import message, settle, wait_until
+from _tmux import sass_in_tmux
 from textual import events
 
 from sass_tui.model.names import GIRTH
@@ -62,48 +59,23 @@ def test_down_then_an_edit_in_one_read_edits_the_cell_below(drive, app_at, then)
 def test_down_then_an_edit_in_one_tmux_write_edits_the_cell_below(tmp_path):
     """`sass` in a real terminal (tmux's pane): `send-keys Down Enter` and
     `send-keys Down 7` each write their keys to the terminal at once."""
-    socket = f"sass-key-order-{os.getpid()}"
-
-    def tmux(*args: str) -> str:
-        done = subprocess.run(["tmux", "-L", socket, *args], capture_output=True, text=True)
-        assert done.returncode == 0, done.stderr
-        return done.stdout
-
-    def pane() -> str:
-        return tmux("capture-pane", "-p", "-t", "day")
-
-    def wait_for(condition, what: str) -> None:
-        deadline = time.monotonic() + 30
-        while time.monotonic() < deadline:
-            if condition(pane()):
-                return
-            time.sleep(0.02)  # polling the pane for the condition, not a fixed wait
-        raise AssertionError(f"{what}; the pane:\n{pane()}")
-
-    environment = {**os.environ, "XDG_CONFIG_HOME": str(tmp_path), "TERM": "xterm-256color"}
-    command = [sys.executable, "-m", "sass_tui"]
-    subprocess.run(
-        ["tmux", "-L", socket, "-f", os.devnull, "new-session", "-d", "-s", "day",
-         "-x", "120", "-y", "40", *command],
-        check=True, env=environment, cwd=tmp_path,
-    )  # fmt: skip
-    try:
-        wait_for(lambda text: "Bottom Head" in text and "q Quit" in text, "no first screen")
-        tmux("send-keys", "-t", "day", "Down", "Enter")
-        wait_for(lambda text: "Neck x value" in text, "Down Enter did not edit Neck")
-        tmux("send-keys", "-t", "day", "Escape")
-        wait_for(lambda text: "Neck x value" not in text, "Escape did not cancel")
-        tmux("send-keys", "-t", "day", "Down", "7")
-        wait_for(lambda text: "Center Torso x value" in text, "Down 7 did not edit the row below")
-        tmux("send-keys", "-t", "day", "Enter")
-        wait_for(
+    with sass_in_tmux(tmp_path) as pane:
+        pane.wait_for(lambda text: "Bottom Head" in text and "q Quit" in text, "no first screen")
+        pane.send("Down", "Enter")
+        pane.wait_for(lambda text: "Neck x value" in text, "Down Enter did not edit Neck")
+        pane.send("Escape")
+        pane.wait_for(lambda text: "Neck x value" not in text, "Escape did not cancel")
+        pane.send("Down", "7")
+        pane.wait_for(
+            lambda text: "Center Torso x value" in text, "Down 7 did not edit the row below"
+        )
+        pane.send("Enter")
+        pane.wait_for(
             lambda text: any(
                 line.split()[:3] == ["Center", "Torso", "7.00"] for line in text.splitlines()
             ),
             "the Center Torso row does not show 7.00",
         )
-    finally:
-        subprocess.run(["tmux", "-L", socket, "kill-server"], capture_output=True)
 
 
 @pytest.mark.parametrize("then", [ENTER, SEVEN], ids=["enter", "digit"])

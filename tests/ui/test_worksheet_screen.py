@@ -5,9 +5,11 @@ from __future__ import annotations
 
 import json
 import math
+import shutil
 
 import pytest
 from _screen import message, paste, settle, wait_until
+from _tmux import sass_in_tmux
 from test_palette import choose_in_palette
 
 from sass_tui.model.figure import Figure
@@ -196,3 +198,28 @@ def test_a_worksheet_whose_strength_file_moved_opens_and_says_so(drive, app_at, 
             assert app.strength_sheet is sheet  # the strength page as it was
 
     drive(scenario())
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(shutil.which("tmux") is None, reason="tmux is not installed")
+def test_saved_quit_and_opened_with_sass_open_in_a_real_terminal(tmp_path):
+    """The whole day in a tmux pane: a value typed, ctrl+s and a name, q
+    (nothing to ask about), then `sass --open FILE` shows the value."""
+    path = tmp_path / "day.sass.json"
+    with sass_in_tmux(tmp_path) as pane:
+        pane.wait_for(lambda text: "Bottom Head" in text and "q Quit" in text, "no first screen")
+        pane.send("Down", "7")
+        pane.send("Enter")
+        pane.wait_for(lambda text: "Neck" in text and "7.00" in text, "no 7.00 in the Neck row")
+        pane.send("C-s")
+        pane.wait_for(lambda text: "Save worksheet as" in text, "ctrl+s asked nothing")
+        pane.send(path.name, "Enter")
+        pane.wait_for(lambda text: "Saved the worksheet to" in text, "not saved")
+        pane.send("q")
+        pane.wait_for_exit("q did not quit at once")
+    assert json.loads(path.read_text())["groups"]["girth"]["values"][1][0] == 7.0
+    with sass_in_tmux(tmp_path, "--open", path.name) as pane:
+        pane.wait_for(
+            lambda text: any(line.split()[:2] == ["Neck", "7.00"] for line in text.splitlines()),
+            "sass --open does not show Neck x = 7.00",
+        )
