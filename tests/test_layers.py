@@ -106,7 +106,7 @@ def test_plain_sass_opens_the_tui_without_building_the_parser():
     # verb's module is imported nor its parser built.
     code = (
         "import sys\nimport sass_tui.ui.app as app\n"
-        "app.run_app = lambda db: print('tui', db) or 0\n"
+        "app.run_app = lambda db, worksheet=None: print('tui', db) or 0\n"
         "from sass_tui.cli import VERBS, main\n"
         "status = main([])\n"
         "print(status, ','.join(v for v in VERBS if 'sass_tui.cli.' + v in sys.modules))\n"
@@ -122,7 +122,7 @@ def test_the_tui_holds_the_collector_until_its_first_screen_is_drawn():
         "import asyncio, gc\n"
         "import sass_tui.ui.app as app\n"
         "seen = []\n"
-        "app.run_app = lambda db: seen.append(gc.isenabled()) or 0\n"
+        "app.run_app = lambda db, worksheet=None: seen.append(gc.isenabled()) or 0\n"
         "from sass_tui.cli import main\n"
         "main([])\n"
         "seen.append(gc.isenabled())  # on again once the TUI has ended\n"

@@ -58,6 +58,11 @@ def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     parser.add_argument(
         "--version", action=_VersionAction, nargs=0, help="print the version and exit"
     )
+    parser.add_argument(
+        "--open",
+        metavar="FILE",
+        help="open the spreadsheet on a worksheet saved with Save (ctrl+s) or Save As (S)",
+    )
     commands = cast(SubParsers, parser.add_subparsers(dest="command", metavar="COMMAND"))
     chosen = None if argv is None else _verb_named(argv)
     for name in VERBS:
@@ -185,11 +190,11 @@ def main(argv: list[str] | None = None) -> int:
     parser = build_parser(words)
     args = parser.parse_args(words)
     if args.command is None:
-        return run_tui(args.db)
+        return run_tui(args.db, args.open)
     return run_verb(args)
 
 
-def run_tui(db: str | None) -> int:
+def run_tui(db: str | None, worksheet: str | None = None) -> int:
     # Starting creates ~77,000 objects that live as long as the app (modules,
     # classes, CSS rules, widgets); the cyclic collector would walk them some
     # 200 times before the first screen (50-85 ms, docs/performance.md).  It
@@ -200,7 +205,7 @@ def run_tui(db: str | None) -> int:
         from sass_tui.ui.app import run_app
 
         try:
-            return run_app(db)
+            return run_app(db, worksheet)
         except SassError as exc:  # e.g. --db '~nosuchuser/x.db'
             print(f"sass: error: {exc}", file=sys.stderr)
             return 2

@@ -88,6 +88,35 @@ _SELECT = (
 )
 
 
+# The columns a list may be sorted by (the query screen's sort): each list
+# column's key and its SQL.  A sorted list puts the people with no value last
+# on both engines (SQLite sorts NULL first, PostgreSQL last) and keeps its own
+# order among equals.
+SORT_COLUMNS = {
+    "name": "p.name",
+    "source": "p.source",
+    "gender": "p.gender",
+    "age": "p.age",
+    "mass": "p.mass",
+    "stature": "p.stature",
+    "branch": "p.branch",
+    "handedness": "p.handedness",
+    "strength_type": "sq.strength_type",
+    "motion_speed": "sq.motion_speed",
+    "training_level": "sq.training_level",
+    "fatigue_level": "sq.fatigue_level",
+}
+
+
+def order_by(which: str, sort: tuple[str, bool] | None) -> str:
+    """The ORDER BY of a list: its own order, or `sort` (column key,
+    descending) first; a key not in SORT_COLUMNS is a bug (KeyError)."""
+    if sort is None:
+        return _ORDER[which]
+    column = SORT_COLUMNS[sort[0]]
+    return f"({column} IS NULL), {column}{' DESC' if sort[1] else ''}, {_ORDER[which]}"
+
+
 def list_tables(dialect: str) -> tuple[str, str]:
     """The CREATE statements of the lists' TEMP tables; seq numbers the selected
     people in the order they were selected."""
@@ -275,16 +304,56 @@ class QueryLists:
 
     # --- reading -----------------------------------------------------------------
     @_serialised
-    def page(self, which: str, offset: int, limit: int = 25) -> list[dict[str, Any]]:
+    def page(
+        self, which: str, offset: int, limit: int = 25, sort: tuple[str, bool] | None = None
+    ) -> list[dict[str, Any]]:
+        """One page of a list, in its own order or sorted by `sort` (a
+        SORT_COLUMNS key, descending)."""
         sql = (
             f"SELECT {_SELECT} FROM {_TABLES[which]} l JOIN person p ON p.id_num = l.id_num "
             f"LEFT JOIN strength_q sq ON sq.id_num = l.id_num "
-            f"ORDER BY {_ORDER[which]} LIMIT {self._mark} OFFSET {self._mark}"
+            f"ORDER BY {order_by(which, sort)} LIMIT {self._mark} OFFSET {self._mark}"
         )
         return [
             dict(zip(LIST_FIELDS, row))
             for row in self._conn.execute(sql, (int(limit), int(offset)))
         ]
+
+    @_serialised
+    def position(self, which: str, key: str, sort: tuple[str, bool] | None = None) -> int | None:
+        """Where in a list (0-based, in the order shown) the person `key`
+        names is: a database id, else a name in any case, else the first name
+        that starts with it.  None: nobody in the list."""
+        m = self._mark
+        numbered = (
+            f"SELECT l.id_num, lower(p.name) AS name, "
+            f"ROW_NUMBER() OVER (ORDER BY {order_by(which, sort)}) - 1 AS place "
+            f"FROM {_TABLES[which]} l JOIN person p ON p.id_num = l.id_num "
+            f"LEFT JOIN strength_q sq ON sq.id_num = l.id_num"
+        )
+        text = " ".join(key.split()).lower()
+        escaped = text.replace("\\", "\\\\").replace("%", "\\%").replace("_", "\\_")
+        for condition, parameter in (
+            (f"id_num = {m}", int(text) if text.isdigit() else -1),
+            (f"name = {m}", text),
+            (f"name LIKE {m} ESCAPE '\\'", escaped + "%"),
+        ):
+            row = self._conn.execute(
+                f"SELECT place FROM ({numbered}) t WHERE {condition} ORDER BY place LIMIT 1",
+                (parameter,),
+            ).fetchone()
+            if row is not None:
+                return int(row[0])
+        return None
+
+    @_serialised
+    def person_record(self, id_num: int) -> dict[str, object]:
+        """Everything stored about the person `id_num` (db/individual.py's
+        person_record: what `sass person` prints)."""
+        # deferred: db.individual — only person_record() needs it; importing db.lists does not load it
+        from sass_tui.db.individual import person_record
+
+        return person_record(self._conn, id_num)
 
     @_serialised
     def selected_id(self, index: int) -> int | None:
@@ -392,10 +461,12 @@ class QueryLists:
         page_size: int,
         progress: Progress | None = None,
         cancel: Cancel | None = None,
+        sort: tuple[str, bool] | None = None,
     ) -> tuple[int, list[dict[str, Any]]]:
-        """run(text), then the query list's first page, with nobody in between."""
+        """run(text), then the query list's first page (sorted by `sort`), with
+        nobody in between."""
         count = self.run(text, progress, cancel)
-        return count, self.page(QUERY_LIST, 0, page_size)
+        return count, self.page(QUERY_LIST, 0, page_size, sort)
 
     @_serialised
     def fetch_person(self, id_num: int) -> Individual:

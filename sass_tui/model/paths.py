@@ -8,6 +8,7 @@ server user's other files.
 
 from __future__ import annotations
 
+import os
 import stat
 from pathlib import Path
 
@@ -58,6 +59,36 @@ def inside(workdir: Path, text: str | Path) -> Path:
     if not path.is_relative_to(root):
         raise PathError(f"{name}: a symbolic link leads out of {workdir}; refused")
     return path
+
+
+# Completions listed at most: a directory of thousands is not read whole.
+MAX_COMPLETIONS = 200
+
+
+def complete_path(text: str, workdir: Path | None = None) -> list[str]:
+    """The names a file name typed so far may go on to, as typed (a `~`
+    kept as `~`), directories ending in `/`, sorted; hidden files only once
+    a `.` is typed.  In a served session (`workdir`) only names inside it.
+    Nothing (never an error) where the directory cannot be read."""
+    if workdir is not None and (text.startswith("~") or Path(text).is_absolute()):
+        return []
+    head, slash, start = text.rpartition("/")
+    folder_text = head + slash
+    if workdir is not None and ".." in Path(folder_text).parts:
+        return []
+    try:
+        folder = user_path(folder_text, workdir) if folder_text else (workdir or Path("."))
+        entries = []
+        with os.scandir(folder) as found:
+            for entry in found:
+                if entry.name.startswith(start) and (start.startswith(".") or entry.name[0] != "."):
+                    end = "/" if entry.is_dir() else ""
+                    entries.append(f"{folder_text}{entry.name}{end}")
+                    if len(entries) > MAX_COMPLETIONS:
+                        break
+    except (OSError, PathError):
+        return []
+    return sorted(entries)
 
 
 def regular_file(text: str | Path, workdir: Path | None = None) -> Path:

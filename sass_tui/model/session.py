@@ -11,12 +11,16 @@ imports no Textual.
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, TypeVar
 
 from sass_tui.model.figure import Figure
+from sass_tui.model.names import AXES, GROUP_TITLES, ROWS
 from sass_tui.model.popfile import PopulationData
+from sass_tui.model.units import GROUP_UNITS
+from sass_tui.model.vocabulary import JOINT_AXES
 
 if TYPE_CHECKING:  # numpy-heavy: the TUI makes its strength sheet after the first screen
     from sass_tui.model.strength import StrengthData, StrengthRow, StrengthSheet
@@ -27,41 +31,92 @@ T = TypeVar("T")
 
 @dataclass(frozen=True)
 class JournalEntry:
-    """One accepted edit: what it changed (`target`) and how to go back."""
+    """One accepted edit: what it changed (`target`), what it was (`what`,
+    for the message line: "Undone: Neck x = 7 cm"), how to go back and
+    how to do it again (redo)."""
 
     target: object
+    what: str
     restore: Callable[[], None]
+    reapply: Callable[[], None]
+    number: int
 
 
 class Journal:
-    """The undo journal: the last JOURNAL_LENGTH accepted edits, newest last.
-    Only the edits of what is shown (`live`: the figure, the strength sheet)
-    are undone; the others wait until theirs is shown again."""
+    """The undo journal: the last JOURNAL_LENGTH accepted edits, newest last,
+    and the edits undone since the last new edit (redo).  Only the edits of
+    what is shown (`live`: the figure, the strength sheet) are undone or
+    redone; the others wait until theirs is shown again."""
 
     def __init__(self) -> None:
         self._entries: list[JournalEntry] = []
+        self._undone: list[JournalEntry] = []
+        self._numbered = 0
+        self._saved: frozenset[int] = frozenset()
 
-    def record(self, target: object, restore: Callable[[], None]) -> None:
-        self._entries.append(JournalEntry(target, restore))
+    def record(
+        self,
+        target: object,
+        what: str,
+        restore: Callable[[], None],
+        reapply: Callable[[], None],
+    ) -> None:
+        self._numbered += 1
+        self._entries.append(JournalEntry(target, what, restore, reapply, self._numbered))
         del self._entries[:-JOURNAL_LENGTH]
+        self._undone.clear()  # a new edit: what was undone cannot be redone over it
 
     def can_undo(self, live: tuple[object, ...]) -> bool:
         return any(_among(entry.target, live) for entry in self._entries)
 
-    def undo(self, live: tuple[object, ...]) -> bool:
-        """Undo the newest edit of one of `live`; False when there is none."""
-        for position in range(len(self._entries) - 1, -1, -1):
-            entry = self._entries[position]
-            if _among(entry.target, live):
-                del self._entries[position]
-                entry.restore()
-                return True
-        return False
+    def undo(self, live: tuple[object, ...]) -> str | None:
+        """Undo the newest edit of one of `live`: what it was; None when
+        there is none."""
+        entry = _take_newest(self._entries, live)
+        if entry is None:
+            return None
+        entry.restore()
+        self._undone.append(entry)
+        return entry.what
+
+    def redo(self, live: tuple[object, ...]) -> str | None:
+        """Do again the edit undone last of one of `live`: what it was;
+        None when there is none."""
+        entry = _take_newest(self._undone, live)
+        if entry is None:
+            return None
+        entry.reapply()
+        self._entries.append(entry)
+        return entry.what
 
     def drop(self, targets: Iterable[object]) -> None:
         """Forget the edits of what is gone (a person left, a sheet replaced)."""
         gone = tuple(t for t in targets if t is not None)
         self._entries = [e for e in self._entries if not _among(e.target, gone)]
+        self._undone = [e for e in self._undone if not _among(e.target, gone)]
+
+    def clear(self) -> None:
+        self._entries.clear()
+        self._undone.clear()
+
+    def mark_saved(self, state: frozenset[int] | None = None) -> None:
+        """The worksheet file holds `state` (None: what is applied now)."""
+        self._saved = self.applied() if state is None else state
+
+    def unsaved(self) -> bool:
+        """Edits applied, or undone, since the worksheet was last saved
+        (or, never saved, since the start)."""
+        return self.applied() != self._saved
+
+    def applied(self) -> frozenset[int]:
+        return frozenset(entry.number for entry in self._entries)
+
+
+def _take_newest(entries: list[JournalEntry], live: tuple[object, ...]) -> JournalEntry | None:
+    for position in range(len(entries) - 1, -1, -1):
+        if _among(entries[position].target, live):
+            return entries.pop(position)
+    return None
 
 
 def _among(target: object, targets: tuple[object, ...]) -> bool:
@@ -203,12 +258,29 @@ class Session:
         # The sheet as it stands: an entry for it exists only once it is made.
         return self._journal.can_undo((self.figure, self.strength_sheets.made()))
 
-    def undo(self) -> bool:
-        """Undo the newest edit of what is shown (figure or strength angle).
-        False when there is none."""
+    def undo(self) -> str | None:
+        """Undo the newest edit of what is shown (figure or strength angle):
+        what it was, for the message line; None when there is none."""
         return self._journal.undo((self.figure, self.strength_sheets.made()))
 
-    def _edit_figure(self, edit: Callable[[Figure], T]) -> T:
+    def redo(self) -> str | None:
+        """Do again the edit undone last (of what is shown): what it was;
+        None when there is none (or a new edit came after the undo)."""
+        return self._journal.redo((self.figure, self.strength_sheets.made()))
+
+    def unsaved_edits(self) -> bool:
+        """Edits since the worksheet was last saved or opened (quit asks)."""
+        return self._journal.unsaved()
+
+    def edit_state(self) -> frozenset[int]:
+        """What is applied now, for `mark_saved` once a save has been written."""
+        return self._journal.applied()
+
+    def mark_saved(self, state: frozenset[int] | None = None) -> None:
+        """The worksheet file holds `state` (None: what is applied now)."""
+        self._journal.mark_saved(state)
+
+    def _edit_figure(self, what: str, edit: Callable[[Figure], T]) -> T:
         figure = self.figure
         before = figure.snapshot()
         try:
@@ -216,48 +288,73 @@ class Session:
         except BaseException:
             figure.restore(before)
             raise
-        self._journal.record(figure, lambda: figure.restore(before))
+        after = figure.snapshot()
+        # Each restore takes its own copy: the snapshot stays as it was
+        # taken, however often the edit is undone and redone.
+        self._journal.record(
+            figure,
+            what,
+            lambda: figure.restore(_fresh(before)),
+            lambda: figure.restore(_fresh(after)),
+        )
         return result
 
     # --- figure edits ------------------------------------------------------------
     def set_figure_type(self, figure_type: str) -> None:
-        self._edit_figure(lambda f: f.set_figure_type(figure_type))
+        self._edit_figure(f"figure type {figure_type}", lambda f: f.set_figure_type(figure_type))
 
     def set_gender(self, gender: str) -> None:
-        self._edit_figure(lambda f: f.set_gender(gender))
+        self._edit_figure(f"gender {gender}", lambda f: f.set_gender(gender))
 
     def set_mass(self, kg: float) -> None:
-        self._edit_figure(lambda f: f.set_mass(kg))
+        self._edit_figure(f"mass {kg:g} kg", lambda f: f.set_mass(kg))
 
     def set_mass_percentile(self, p: float) -> None:
-        self._edit_figure(lambda f: f.set_mass_percentile(p))
+        self._edit_figure(f"mass percentile {p:g}", lambda f: f.set_mass_percentile(p))
 
     def set_stature(self, cm: float) -> None:
-        self._edit_figure(lambda f: f.set_stature(cm))
+        self._edit_figure(f"stature {cm:g} cm", lambda f: f.set_stature(cm))
 
     def set_stature_percentile(self, p: float) -> None:
-        self._edit_figure(lambda f: f.set_stature_percentile(p))
+        self._edit_figure(f"stature percentile {p:g}", lambda f: f.set_stature_percentile(p))
 
     def set_strength_parameter(self, name: str, value: str | float) -> None:
-        self._edit_figure(lambda f: f.set_strength_parameter(name, value))
+        self._edit_figure(
+            f"{name.replace('_', ' ')} {value}",
+            lambda f: f.set_strength_parameter(name, value),
+        )
 
     def set_group_percentile(self, group: str, p: float) -> None:
-        self._edit_figure(lambda f: f.set_group_percentile(group, p))
+        self._edit_figure(
+            f"{GROUP_TITLES[group]} percentile {p:g}",
+            lambda f: f.set_group_percentile(group, p),
+        )
 
     def set_value(self, group: str, row: int, axis: int, value: float) -> None:
-        self._edit_figure(lambda f: f.set_value(group, row, axis, value))
+        self._edit_figure(
+            f"{_cell_name(group, row, axis)} value {value:g} {GROUP_UNITS[group][0]}",
+            lambda f: f.set_value(group, row, axis, value),
+        )
 
     def set_cell_percentile(self, group: str, row: int, axis: int, p: float) -> None:
-        self._edit_figure(lambda f: f.set_cell_percentile(group, row, axis, p))
+        self._edit_figure(
+            f"{_cell_name(group, row, axis)} percentile {p:g}",
+            lambda f: f.set_cell_percentile(group, row, axis, p),
+        )
 
     def load_group(self, group: str, data: PopulationData) -> None:
         """Input Data for a group: undoable like any edit."""
-        self._edit_figure(lambda f: f.load_group(group, data))
+        self._edit_figure(
+            f"Input Data {GROUP_TITLES[group]} ({data.title or data.path})",
+            lambda f: f.load_group(group, data),
+        )
         self.warnings = list(data.warnings)
 
     def load_global(self, data: PopulationData) -> None:
         """Stature and mass statistics from a global file: undoable like any edit."""
-        self._edit_figure(lambda f: f.load_global(data))
+        self._edit_figure(
+            f"global statistics ({data.title or data.path})", lambda f: f.load_global(data)
+        )
         self.warnings = list(data.warnings)
 
     def set_unit(self, group: str, unit: str) -> None:
@@ -269,11 +366,16 @@ class Session:
         sheet = self.strength_sheets.require()
         old = float(sheet.angles[row, column])
         result = sheet.set_angle(row, column, text)
+        new = float(sheet.angles[row, column])
 
         def restore() -> None:
             sheet.angles[row, column] = old
 
-        self._journal.record(sheet, restore)
+        def reapply() -> None:
+            sheet.angles[row, column] = new
+
+        what = f"{result.label}: {JOINT_AXES[column].replace('_', ' ')} {new:g} deg"
+        self._journal.record(sheet, what, restore, reapply)
         return result
 
     def load_strength(self, data: StrengthData) -> StrengthSheet:
@@ -283,6 +385,28 @@ class Session:
         self._journal.drop([old])
         self.warnings = list(data.warnings)
         return sheet
+
+    # --- the worksheet file ------------------------------------------------------
+    def open_worksheet(
+        self,
+        figure: Figure,
+        strength: StrengthData | None = None,
+        angles: Callable[[StrengthSheet], None] | None = None,
+    ) -> None:
+        """A worksheet opened (model/worksheet.py): its figure is the
+        population figure; `strength` (its file, read again) the strength
+        sheet, which `angles` then sets as saved.  Not an edit: the journal
+        starts afresh, and what is open is what the file holds."""
+        self._leave_person()
+        self.person = None
+        self.population = figure
+        if strength is not None:
+            sheet = self.load_strength(strength)
+            if angles is not None:
+                angles(sheet)
+        self.strength_sheets.follow(self.figure)
+        self._journal.clear()
+        self._journal.mark_saved()
 
     # --- the person shown ----------------------------------------------------------------
     def show_person(
@@ -305,3 +429,12 @@ class Session:
 
     def _leave_person(self) -> None:
         self._journal.drop([self.strength_sheets.show_population(), self.person])
+
+
+def _fresh(snapshot: dict[str, object]) -> dict[str, object]:
+    """A snapshot to restore, its groups copied (Figure.snapshot's rule)."""
+    return {k: copy.deepcopy(v) if k == "groups" else v for k, v in snapshot.items()}
+
+
+def _cell_name(group: str, row: int, axis: int) -> str:
+    return f"{ROWS[group][row].label} {AXES[axis]}"

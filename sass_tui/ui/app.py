@@ -20,11 +20,13 @@ from sass_tui.model.figure import Figure
 from sass_tui.model.paths import regular_file, user_path
 from sass_tui.model.session import Session
 from sass_tui.ui.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
+from sass_tui.ui.widgets import MessageLine
 
 if TYPE_CHECKING:  # the database costs start-up time: imported when first used
     from sass_tui.db.individual import Individual
     from sass_tui.db.lists import QueryLists
     from sass_tui.model.strength import StrengthSheet
+    from sass_tui.model.worksheet import StrengthSettings
     from sass_tui.ui.query_messages import DatabaseOpened
 
 
@@ -44,7 +46,10 @@ class SassApp(App):
         db_path: str | Path | None = None,
         workdir: Path | None = None,
         read_only: bool = False,
+        worksheet: str | Path | None = None,
     ) -> None:
+        """`worksheet`: a worksheet file to open (`sass --open FILE`), read
+        now: WorksheetError (a SassError) when it cannot be opened."""
         super().__init__()
         # None = $SASS_DB or the user's data directory, created on first Query;
         # a PostgreSQL address (postgresql://...) stays text.
@@ -58,6 +63,11 @@ class SassApp(App):
         # file name typed at a prompt stays in, and a database it must not change.
         self.workdir = workdir
         self.read_only = read_only
+        # The worksheet file Save writes (None: Save asks for a name).
+        self.worksheet_path: Path | None = None
+        self._opened_strength: StrengthSettings | None = None
+        if worksheet is not None:
+            figure, strength_path = self._read_worksheet(worksheet)
         figure = figure or Figure.default()
         self._strength_error = STRENGTH_NOT_LOADED
         # The strength sheet (numpy, ~10 ms) is made once the first screen is
@@ -104,32 +114,57 @@ class SassApp(App):
         # deferred: model.strength — off the first screen (sass_tui/startup.py)
         from sass_tui.model.strength import StrengthError, StrengthSheet, read_strength_file
 
+        # deferred: model.worksheet — off the first screen (sass_tui/startup.py)
+        from sass_tui.model.worksheet import apply_strength
+
         try:
             sheet = StrengthSheet(read_strength_file(path), figure)
         except (SassError, OSError) as exc:
             self._strength_error = f"Strength data is not loaded ({exc}); SASS runs without it."
             return None
+        if self._opened_strength is not None:
+            apply_strength(self._opened_strength, sheet)
         try:
             sheet.rows()  # fits the equations now rather than on the first 's'
         except StrengthError:
             pass  # no data for this gender: the page says so when shown
         return sheet
 
+    def _read_worksheet(self, name: str | Path) -> tuple[Figure, str | None]:
+        """The figure of the worksheet `sass --open` names, and its strength
+        file (its settings are set on the sheet when it is made)."""
+        # deferred: model.worksheet — off the first screen (sass_tui/startup.py)
+        from sass_tui.model.worksheet import read_worksheet
+
+        path = self.regular_file(str(name))
+        worksheet = read_worksheet(path)
+        self.worksheet_path = path
+        self._opened_strength = worksheet.strength
+        strength = worksheet.strength
+        return worksheet.figure, None if strength is None else strength.path
+
     # --- quitting -------------------------------------------------------------
-    QUIT_AGAIN_S = 3.0  # a second q within this long quits
+    QUIT_AGAIN = "There are edits since the last save (ctrl+s saves): press q again to quit."
+    QUIT_AGAIN_S = 5.0  # where no message line shows the question: the notice's time
 
     async def action_quit(self) -> None:
-        """Quit; with edits that would be lost, only on a second q."""
+        """Quit; with edits since the last save, only on a second q while the
+        question is still shown."""
         now = time.monotonic()
-        if not self.session.can_undo() or now - self._quit_asked_at < self.QUIT_AGAIN_S:
+        line = self.screen.query(MessageLine).first() if self.screen.query(MessageLine) else None
+        asked = (
+            line.showing(self.QUIT_AGAIN)
+            if line is not None
+            else now - self._quit_asked_at < self.QUIT_AGAIN_S
+        )
+        if not self.session.unsaved_edits() or asked:
             self.exit()
             return
         self._quit_asked_at = now
-        say = getattr(self.screen, "say", None)
-        if say is not None:
-            say("There are edits that would be lost: press q again to quit.")
+        if line is not None:
+            line.say(self.QUIT_AGAIN)
         else:
-            self.notify("There are edits that would be lost: press q again to quit.")
+            self.notify(self.QUIT_AGAIN, timeout=self.QUIT_AGAIN_S)
 
     def get_default_screen(self) -> SpreadsheetScreen:
         return SpreadsheetScreen(self.session)
@@ -225,17 +260,23 @@ def _screen_commands_provider():
     return ScreenCommands
 
 
-def make_app(db_path: str | Path | None = None) -> SassApp:
+def make_app(db_path: str | Path | None = None, worksheet: str | None = None) -> SassApp:
     """The app `sass` runs: a served session's (`sass serve`) when its
     environment says so (model/served.py)."""
     # deferred: model.served — off the first screen, the first screen's next frame (sass_tui/startup.py)
     from sass_tui.model.served import served_read_only, served_workdir
 
-    return SassApp(db_path=db_path, workdir=served_workdir(), read_only=served_read_only())
+    return SassApp(
+        db_path=db_path,
+        workdir=served_workdir(),
+        read_only=served_read_only(),
+        worksheet=worksheet,
+    )
 
 
-def run_app(db_path: str | Path | None = None, **run_options) -> int:
-    """Run the TUI; the exit status is the app's (non-zero after a crash)."""
-    app = make_app(db_path)
+def run_app(db_path: str | Path | None = None, worksheet: str | None = None, **run_options) -> int:
+    """Run the TUI (`worksheet`: `sass --open FILE`); the exit status is the
+    app's (non-zero after a crash)."""
+    app = make_app(db_path, worksheet)
     app.run(**run_options)
     return app.return_code or 0

@@ -20,8 +20,11 @@ from textual.binding import Binding
 from textual.dom import DOMNode
 from textual.screen import Screen
 
+from sass_tui.model.paths import complete_path
 from sass_tui.ui.textual_api import bindings_of
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
+from sass_tui.ui.widgets.editor import run_own_binding
+from sass_tui.ui.widgets.message_line import Completer
 
 if TYPE_CHECKING:  # app.py imports the screens: at run time this would be a cycle
     from sass_tui.ui.app import SassApp
@@ -65,8 +68,9 @@ class SassScreen(Screen):
         initial: str = "",
         on_cancel: Callable[[], None] | None = None,
         kind: str = "prompt",
+        complete: Completer | None = None,
     ) -> None:
-        self.message_line.ask(prompt, on_answer, initial, on_cancel, kind)
+        self.message_line.ask(prompt, on_answer, initial, on_cancel, kind, complete)
 
     def converse(self, questions: Coroutine[Any, Any, None]) -> None:
         """Run a command that asks several questions in turn: `questions` is
@@ -106,9 +110,16 @@ class SassScreen(Screen):
         self.app.push_screen(screen, chosen.set_result)
         return await chosen
 
-    async def answer_to(self, prompt: str, initial: str = "") -> str | None:
+    async def answer_to(
+        self, prompt: str, initial: str = "", complete: Completer | None = None
+    ) -> str | None:
         """Ask and wait, in `converse`: the answer, None when cancelled (Escape)."""
-        return await self.message_line.answer_to(prompt, initial)
+        return await self.message_line.answer_to(prompt, initial, complete=complete)
+
+    def complete_file(self, text: str) -> list[str]:
+        """Tab at a file name's prompt: the names it may go on to (inside a
+        served session's directory, as `user_path` takes them)."""
+        return complete_path(text, self.sass_app.workdir)
 
     async def on_key(self, event: events.Key) -> None:
         line = self.message_line
@@ -121,11 +132,14 @@ class SassScreen(Screen):
                 line.type_ahead(event.key, event.character)
             return  # the prompt's own keys (Enter, Escape) are the answer's bindings
         node: DOMNode | None = self.focused
-        while node is not None and node is not self:
-            if event.key in bindings_of(node).key_to_bindings:
-                return  # a widget's own binding comes first (the app runs it)
+        ran = False
+        while node is not None and node is not self and not ran:
+            # A widget's own binding comes first, run here and now rather
+            # than by the app after the key has bubbled up: "Down Enter" in
+            # one read must move the list's cursor before the screen's Enter.
+            ran = await run_own_binding(node, event.key)
             node = node.parent
-        if await self._run_binding(event.key):
+        if ran or await self._run_binding(event.key):
             event.stop()
             event.prevent_default()
 
@@ -165,10 +179,10 @@ class SassScreen(Screen):
     def action_help(self) -> None:
         """List every key of this screen, what it runs and what that does."""
         # deferred: ui.palette — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.palette import HelpScreen, screen_commands
+        from sass_tui.ui.palette import HelpScreen, help_commands
 
         title = f"Keys of {type(self).__name__.removesuffix('Screen') or 'this'} screen"
-        self.app.push_screen(HelpScreen(screen_commands(self), title))
+        self.app.push_screen(HelpScreen(help_commands(self), title))
 
     def why_not(self, action: str) -> str | None:
         """Why a command's key does nothing here (its slot shows another

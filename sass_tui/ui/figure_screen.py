@@ -142,7 +142,9 @@ class FigureScreen(SassScreen):
 
     def action_undo(self) -> None:
         """Undo the newest edit and draw the figure as it is then."""
-        if self.session.undo():
-            self.redraw()
-        else:
+        what = self.session.undo()
+        if what is None:
             self.say("Nothing to undo.")
+            return
+        self.redraw()
+        self.say(f"Undone: {what}.")

@@ -37,7 +37,13 @@ from sass_tui.ui.textual_api import bindings_of, class_bindings
 from sass_tui.ui.widgets import CommandMenu
 
 # Keys Textual shows better than their names.
-KEY_NAMES = {"question_mark": "?", "escape": "Esc", "pagedown": "PgDn", "pageup": "PgUp"}
+KEY_NAMES = {
+    "question_mark": "?",
+    "escape": "Esc",
+    "pagedown": "PgDn",
+    "pageup": "PgUp",
+    "enter": "Enter",
+}
 
 
 @dataclass(frozen=True)
@@ -135,6 +141,18 @@ def screen_commands(screen) -> list[ScreenCommand]:
         for spec in menu.commands:
             labels[spec.action] = spec.label(menu.context)
     return _commands(screen, bindings_of(screen), labels)
+
+
+def help_commands(screen) -> list[ScreenCommand]:
+    """What F1 lists: the keys of the screen's sheet first (its `SHEET_KEYS`:
+    the arrows, Enter, digits, Escape, undo, which no binding of the
+    screen's names), then every binding of the screen not among them."""
+    own = [
+        ScreenCommand(action, name, keys, help_text, True)
+        for action, name, keys, help_text in getattr(screen, "SHEET_KEYS", ())
+    ]
+    listed = {command.action for command in own}
+    return own + [c for c in screen_commands(screen) if c.action not in listed]
 
 
 def class_commands(screen_class: type[Screen], app) -> list[ScreenCommand]:
@@ -309,7 +327,10 @@ class HelpScreen(ModalScreen[None]):
         with Vertical() as box:
             box.border_title = self.help_title
             yield DataTable(id="help-table", cursor_type="row", zebra_stripes=True)
-            yield Static("ctrl+p: search and run these commands.  Esc: close.", id="help-hint")
+            yield Static(
+                "↑ ↓ PgUp PgDn scroll.  ctrl+p: search and run these commands.  Esc: close.",
+                id="help-hint",
+            )
 
     def on_mount(self) -> None:
         self._fill(self.size.width)
@@ -340,3 +361,22 @@ class HelpScreen(ModalScreen[None]):
         table.add_column("What it does", width=help_width)
         for key, command in zip(keys, self.commands, strict=True):
             table.add_row(Text(key), Text(command.name), Text(command.help), height=None)
+        self.call_after_refresh(self._say_more)
+
+    def _say_more(self) -> None:
+        """The box's lower border says that the list goes on below, and how
+        far down it is: F1's list is longer than a small terminal."""
+        table = self.query_one(DataTable)
+        box = self.query_one(Vertical)
+        if table.max_scroll_y <= 0:
+            box.border_subtitle = ""
+            return
+        shown = table.scrollable_content_region.height
+        first = int(table.scroll_y)
+        box.border_subtitle = (
+            f"lines {first + 1}-{min(first + shown, table.virtual_size.height)} of "
+            f"{table.virtual_size.height}; ↓ PgDn more"
+        )
+
+    def on_data_table_row_highlighted(self) -> None:
+        self.call_after_refresh(self._say_more)

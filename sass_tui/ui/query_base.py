@@ -50,6 +50,8 @@ class QueryScreenBase(SassScreen):
         self.selected_from: list[str] = []
         self.work: Work | None = None  # the long work under way
         self.target: str | None = None  # the target population answers are weighted to
+        # The list's sort (a SORT_COLUMNS key, largest first); None: its own order.
+        self.sort: tuple[str, bool] | None = None
 
     @property
     def sheet(self) -> ListSheet:
@@ -192,7 +194,7 @@ class QueryScreenBase(SassScreen):
             total = lists.count(self.which)
             size = self.sheet.page_size
             first = max(0, min(first, (max(total, 1) - 1) // size * size))
-            self.sheet.show_rows(lists.page(self.which, first, size), first, total)
+            self.sheet.show_rows(lists.page(self.which, first, size, self.sort), first, total)
 
     def refresh_screen(self) -> None:
         lists = self.lists

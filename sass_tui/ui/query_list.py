@@ -89,6 +89,8 @@ class ListSheet(Widget, can_focus=True):
         self.first = 0  # list position of rows[0]
         self.total = 0
         self.cursor = 0
+        # The sort shown in the header (a column key, largest first); None: none.
+        self.sort: tuple[str, bool] | None = None
 
     # Set by the screen from the terminal's height, not from this widget's
     # layout: the page size must not depend on when the layout ran.
@@ -122,7 +124,10 @@ class ListSheet(Widget, can_focus=True):
             for title, key, width, align in LIST_COLUMNS
         ]
         top = Text(no_wrap=True, overflow="crop")
-        for title, _, width, align in columns:
+        for title, key, width, align in columns:
+            if self.sort is not None and self.sort[0] == key:
+                # The column's first word and the way: "Stature ▼" fits its width.
+                title = f"{title.split()[0]} {'▼' if self.sort[1] else '▲'}"
             top.append(f"{title:{align}{width - 1}} "[:width], header)
         pages = max(1, -(-self.total // self.page_size))
         page = self.first // self.page_size + 1

@@ -30,6 +30,7 @@ from sass_tui.ui.query_commands import QUERY_COMMANDS, QueryCommandMenu
 from sass_tui.ui.query_input_db import InputDbCommands
 from sass_tui.ui.query_list import LIST_TITLES, ListSheet, SummaryPanel
 from sass_tui.ui.query_messages import QueryFinished
+from sass_tui.ui.query_people import PeopleCommands
 from sass_tui.ui.query_population import PopulationCommands
 from sass_tui.ui.widgets import MenuItem, MessageLine
 
@@ -42,7 +43,7 @@ NO_DATA = "No data satisfied the query."
 LIST_FIXED_LINES = 6 + 1 + ListSheet.HEADER_LINES + 1 + 1
 
 
-class QueryScreen(InputDbCommands, PopulationCommands):
+class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
     CSS_PATH = Path(__file__).with_name("query.tcss")
     BINDINGS = [
         # The footer at 80 columns: d a s l e b m f q; the menu shows the rest.
@@ -59,7 +60,23 @@ class QueryScreen(InputDbCommands, PopulationCommands):
         Binding("escape", "cancel_work", "Cancel work", show=False),
         Binding("pagedown", "next_page", show=False),
         Binding("pageup", "previous_page", show=False),
+        Binding("enter", "show_person", "Person", show=False, tooltip="Every value of the person"),
+        Binding("slash", "free_query", "Query", show=False, tooltip="Type a query"),
+        Binding("o", "sort", "Sort", show=False, tooltip="Sort the list"),
+        Binding("j", "jump", "Jump", show=False, tooltip="Jump to a person"),
+        Binding("L", "message_log", "Log", show=False, tooltip="Message log"),
     ]
+
+    # F1 lists these first (ui/palette.py help_commands): the list's own keys.
+    SHEET_KEYS = (
+        ("move", "Move", ("↑ ↓",), "Move the cursor over the list."),
+        (
+            "cancel_work",
+            "Cancel",
+            ("escape",),
+            "Cancel the answer being typed, or the work under way.",
+        ),
+    )
 
     COMMAND_SPECS = QUERY_COMMANDS  # the menu's: the palette names these commands by them
 
@@ -244,14 +261,20 @@ class QueryScreen(InputDbCommands, PopulationCommands):
     def start_query(self, text: str) -> None:
         work = self.begin_work("Query", show_after=QUERY_BAR_AFTER)
         self.say(WAIT)
-        self.run_query(self.lists, text, self.sheet.page_size, work, self.target)
+        self.run_query(self.lists, text, self.sheet.page_size, work, self.target, self.sort)
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def run_query(
-        self, lists: QueryLists, text: str, page_size: int, work: Work, target: str | None = None
+        self,
+        lists: QueryLists,
+        text: str,
+        page_size: int,
+        work: Work,
+        target: str | None = None,
+        sort: tuple[str, bool] | None = None,
     ) -> None:
         try:
-            count, rows = lists.run_first_page(text, page_size, work.report, work.cancel)
+            count, rows = lists.run_first_page(text, page_size, work.report, work.cancel, sort)
             hint = "" if count else lists.demonstration_hint(text) or ""
             weighted = ""
             if target:

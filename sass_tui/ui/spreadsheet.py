@@ -31,8 +31,8 @@ from sass_tui.model.units import DISPLAY, other_unit
 from sass_tui.ui.commands import COMMANDS
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.spreadsheet_edit import EditCommands
-from sass_tui.ui.spreadsheet_files import FileCommands
 from sass_tui.ui.spreadsheet_people import PeopleCommands
+from sass_tui.ui.spreadsheet_worksheet import WorksheetCommands
 from sass_tui.ui.strength_page import StrengthPage
 from sass_tui.ui.widgets import (
     CommandMenu,
@@ -58,7 +58,7 @@ FIXED_LINES = 1 + 6 + 1 + DataSheet.HEADER_LINES + 1 + 1
 FIGURE_PANEL_MIN_WIDTH = 120
 
 
-class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
+class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands):
     """Figure 4: group bar, global data | command menu, data section, message line."""
 
     # The footer at 80 columns (beside ctrl+p): n p f d|o u w b q, and r on
@@ -74,6 +74,11 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
         Binding("pageup", "previous_page", show=False),
         Binding("u", "undo", "Undo"),
         Binding("ctrl+z", "undo", show=False),
+        Binding("U", "redo", show=False, tooltip="Redo"),
+        Binding("ctrl+y", "redo", show=False),
+        Binding("ctrl+s", "save", show=False, tooltip="Save worksheet"),
+        Binding("S", "save_as", show=False, tooltip="Save worksheet as"),
+        Binding("O", "open_worksheet", show=False, tooltip="Open worksheet"),
         Binding("w", "next_warning", "Warn", tooltip="Warnings"),
         Binding("l", "message_log", show=False),
         Binding("b", "see_figure", "Draw", tooltip="See figure"),
@@ -88,6 +93,22 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
     ]
 
     COMMAND_SPECS = COMMANDS  # the menu's: the palette names these commands by them
+
+    # F1 lists these first (ui/palette.py help_commands): the sheet's own keys,
+    # which its widgets take, not the screen's bindings.
+    SHEET_KEYS = (
+        ("move", "Move", ("↑ ↓ ← →", "Home", "End"), "Move the cursor over the cells."),
+        ("edit", "Edit", ("enter",), "Edit the cell under the cursor on the message line."),
+        (
+            "type",
+            "Type a value",
+            ("0-9 . - +",),
+            "Start a new value for the cell under the cursor (14in, 0.5 rad); Enter keeps it.",
+        ),
+        ("cancel", "Cancel", ("escape",), "Cancel the value being typed; nothing changes."),
+        ("undo", "Undo", ("u", "ctrl+z"), "Undo the newest edit and say what it was."),
+        ("redo", "Redo", ("U", "ctrl+y"), "Do again the edit undone last."),
+    )
 
     # --- layout ---------------------------------------------------------------
     def compose(self) -> ComposeResult:
@@ -259,11 +280,12 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
 
     def action_undo(self) -> None:
         """Undo the newest edit, whether of the figure or of a strength angle."""
-        if self.session.undo():
-            self.refresh_screen()
-            self.say("Undone.")
-        else:
+        what = self.session.undo()
+        if what is None:
             self.say("Nothing to undo.")
+            return
+        self.refresh_screen()
+        self.say(f"Undone: {what} (U redoes it).")
 
     def action_message_log(self) -> None:
         """List the messages shown so far."""

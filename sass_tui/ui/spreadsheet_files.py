@@ -9,6 +9,7 @@ from pathlib import Path
 
 from textual import work
 
+from sass_tui.model.datasets import SHIPPED_POPULATION, shipped_population
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
     GIRTH,
@@ -26,6 +27,12 @@ from sass_tui.ui.spreadsheet_base import (
 )
 from sass_tui.ui.widgets.message_line import CANCELLED
 
+# The strength data sets Input Data takes by name on the strength page
+# (docs/strength.md): model/published_strength.py's EXAMPLE_DATA_SET and
+# DATA_SET, model/published_grip.py's GRIP_DATA_SET, which the first screen
+# does not import.
+STRENGTH_DATA_SETS = ("example", "anderson2007", "hfds2003")
+
 
 def _slug(name: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("_") or "person"
@@ -36,18 +43,32 @@ class FileCommands(SheetScreenBase):
     def action_input_data(self) -> None:
         """Read a population (or strength) file into the group shown."""
         if self.data_group == STRENGTH:
-            self.ask(
-                "Strength data file: (or a data set: example, anderson2007, hfds2003)",
-                self._input_data_from,
+            names: tuple[str, ...] = STRENGTH_DATA_SETS
+            prompt = f"Strength data file: (Tab completes; or a data set: {', '.join(names)})"
+        else:
+            names = (SHIPPED_POPULATION,)
+            prompt = (
+                f"{GROUP_TITLES[self.data_group]} population file: "
+                f"(Tab completes; or the shipped data set: {SHIPPED_POPULATION})"
             )
-            return
-        self.ask(f"{GROUP_TITLES[self.data_group]} population file:", self._input_data_from)
+
+        def complete(text: str) -> list[str]:
+            typed = text.strip().lower()
+            shipped = [name for name in names if typed and name.startswith(typed)]
+            return shipped + self.complete_file(text)
+
+        self.ask(prompt, self._input_data_from, complete=complete)
 
     def _input_data_from(self, text: str) -> None:
         if not text.strip():
             self.say("No file given; nothing loaded.")
             return
         if self.data_group == STRENGTH and self._strength_data_set(text.strip().lower()):
+            return
+        shipped = shipped_population(text, self.data_group)
+        if shipped is not None:
+            self.say(f"Reading the shipped data set {text.strip().lower()} ({shipped.name}) ...")
+            self.read_data_file(shipped, self.data_group)
             return
         # Refused here, before any worker opens it: a FIFO would block it forever.
         path = self.sass_app.regular_file(text.strip())
@@ -155,7 +176,7 @@ class FileCommands(SheetScreenBase):
         """Create Figure's questions: the file name, whether to include
         strength (when it is loaded), and y/N before a file is replaced."""
         default = self._default_name(".fig")
-        name = await self.answer_to(f"Figure file name [{default}]:")
+        name = await self.answer_to(f"Figure file name [{default}]:", complete=self.complete_file)
         if name is None:
             self.say(CANCELLED)
             return
@@ -232,7 +253,7 @@ class FileCommands(SheetScreenBase):
         from sass_tui.model.hanim import not_in_humanoid_note, render_hanim
 
         default = self._default_name(".x3d")
-        name = await self.answer_to(f"HAnim file name [{default}]:")
+        name = await self.answer_to(f"HAnim file name [{default}]:", complete=self.complete_file)
         if name is None:
             self.say(CANCELLED)
             return

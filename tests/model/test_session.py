@@ -99,3 +99,26 @@ def test_a_person_edits_apart_from_the_population(default_figure):
     assert session.strength_sheet.figure is population
     assert session.undo() and population.mass_percentile == 50
     assert not session.undo()
+
+
+def test_undo_says_what_it_undid_and_redo_does_it_again(default_figure):
+    session = fresh_session(default_figure, strength=True)
+    session.set_value(GIRTH, ARM, 2, 31.0)
+    session.set_mass(70)
+    session.set_angle(0, 0, 40)
+    assert session.undo() == "Shoulder abduction: shoulder x 40 deg"
+    assert session.strength_sheet.angles[0, 0] != 40
+    assert session.redo() == "Shoulder abduction: shoulder x 40 deg"
+    assert session.strength_sheet.angles[0, 0] == 40
+    assert session.undo() == "Shoulder abduction: shoulder x 40 deg"
+    assert session.undo() == "mass 70 kg"
+    assert session.undo() == "Right Upper Arm z value 31 cm"
+    assert session.figure.groups[GIRTH].values[ARM, 2] != 31.0
+    assert session.redo() == "Right Upper Arm z value 31 cm"
+    assert session.figure.groups[GIRTH].values[ARM, 2] == 31.0
+    # Undone and redone again, the snapshot is still the one taken.
+    assert session.undo() and session.redo()
+    assert session.figure.groups[GIRTH].values[ARM, 2] == 31.0
+    session.set_mass(80)  # a new edit: nothing left to redo
+    assert session.redo() is None
+    assert session.figure.mass == 80

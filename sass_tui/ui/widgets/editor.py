@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from textual import events
 from textual.binding import Binding
+from textual.dom import DOMNode
 from textual.message import Message
 
 from sass_tui.ui.textual_api import bindings_of
@@ -22,6 +23,16 @@ CURSOR_BINDINGS = [
     Binding("right", "move(0, 1)", show=False),
 ]
 EDIT_BINDING = Binding("enter", "edit", "Edit", show=False)
+
+
+async def run_own_binding(node: DOMNode, key: str) -> bool:
+    """Run `node`'s own binding for `key` at once, in the order the keys
+    came; False when it has none that applies (Textual would then look
+    further up, as it does for a binding it runs itself)."""
+    for binding in bindings_of(node).key_to_bindings.get(key, ()):
+        if await node.app.run_action(binding.action, node):
+            return True
+    return False
 
 
 class TypedAhead(Message):
@@ -93,7 +104,7 @@ class EditorKeys:
     def start_typing(self, text: str) -> None:
         self.request_edit(self.edit_request(text))
 
-    def on_key(self, event: events.Key) -> None:
+    async def on_key(self, event: events.Key) -> None:
         if self._typing_ahead:
             event.stop()
             event.prevent_default()
@@ -108,8 +119,14 @@ class EditorKeys:
             event.stop()
             event.prevent_default()
             self.start_typing("")
+        elif await run_own_binding(self, event.key):  # type: ignore[arg-type]
+            # Its arrows, now: left to the app after the key has bubbled up,
+            # the move would land after an Enter or a digit of the same read
+            # had asked to edit the cell the cursor was leaving.
+            event.stop()
+            event.prevent_default()
         elif event.key not in bindings_of(self).key_to_bindings:  # type: ignore[arg-type]
-            # Not this widget's (its arrows are): the screen's, in this order.
+            # Not this widget's: the screen's, in this order.
             event.stop()
             event.prevent_default()
             self.post_message(ScreenKey(event.key, event.character))  # type: ignore[attr-defined]

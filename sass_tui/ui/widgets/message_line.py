@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import asyncio
+import os
 from collections.abc import AsyncIterator, Callable
 from contextlib import asynccontextmanager
 
@@ -18,13 +19,23 @@ from sass_tui.ui.widgets.formats import printable_lines
 
 
 class AnswerInput(Input):
-    BINDINGS = [Binding("escape", "cancel", "Cancel", show=False)]
+    BINDINGS = [
+        Binding("escape", "cancel", "Cancel", show=False),
+        Binding("tab", "complete", "Complete", show=False),
+    ]
 
     class Cancelled(Message):
         pass
 
+    class CompletionAsked(Message):
+        pass
+
     def action_cancel(self) -> None:
         self.post_message(self.Cancelled())
+
+    def action_complete(self) -> None:
+        """Tab: complete the answer (a file name, a data set's name)."""
+        self.post_message(self.CompletionAsked())
 
     def submit(self) -> None:
         """Enter, from code that cannot await: what Input.action_submit (a
@@ -33,6 +44,10 @@ class AnswerInput(Input):
 
 
 Handler = Callable[[str], None]
+# What a prompt's answer may go on to (Tab), given what is typed so far.
+Completer = Callable[[str], list[str]]
+# Completions named after the prompt at most.
+COMPLETIONS_SHOWN = 6
 HISTORY_LENGTH = 200
 # What a user may cause in an answer: shown on the message line, never a
 # traceback; anything else is a bug and shows as one.
@@ -61,6 +76,8 @@ class MessageLine(Horizontal):
         self._on_answer: Handler | None = None
         self._on_cancel: Callable[[], None] | None = None
         self._focus_after: Widget | None = None
+        self._prompt = ""
+        self._complete: Completer | None = None
         # A conversation's state: the question awaited, and answers given
         # before the next question was asked (an Enter typed ahead).
         self._held = False
@@ -93,6 +110,10 @@ class MessageLine(Horizontal):
         for name in ("info", "error", "warning", "prompt"):
             label.set_class(name == kind, f"-{name}")
 
+    def showing(self, text: str) -> bool:
+        """Whether the line shows `text` now (a question still on the screen)."""
+        return str(self.query_one("#message", Label).render()) == printable_lines(text)
+
     def say(self, text: str) -> None:
         self.show(text, "info")
 
@@ -112,14 +133,19 @@ class MessageLine(Horizontal):
         initial: str = "",
         on_cancel: Callable[[], None] | None = None,
         kind: str = "prompt",
+        complete: Completer | None = None,
     ) -> None:
+        """`complete`: what Tab completes the answer from (None: nothing)."""
         self._on_answer, self._on_cancel = on_answer, on_cancel
-        self._open(prompt, initial, kind)
+        self._open(prompt, initial, kind, complete)
 
-    def _open(self, prompt: str, initial: str, kind: str) -> None:
+    def _open(
+        self, prompt: str, initial: str, kind: str, complete: Completer | None = None
+    ) -> None:
         focused = self.screen.focused
         if focused is not None and focused is not self.answer:
             self._focus_after = focused
+        self._prompt, self._complete = prompt, complete
         self.show(prompt + " ", kind)
         answer = self.answer
         if not (self._held and answer.value):  # what was typed ahead stays
@@ -157,14 +183,20 @@ class MessageLine(Horizontal):
                 self._close()
                 self.post_message(self.Answered())
 
-    async def answer_to(self, prompt: str, initial: str = "", kind: str = "prompt") -> str | None:
+    async def answer_to(
+        self,
+        prompt: str,
+        initial: str = "",
+        kind: str = "prompt",
+        complete: Completer | None = None,
+    ) -> str | None:
         """Ask inside `conversation()` and wait: the answer, or None when
-        cancelled (Escape)."""
+        cancelled (Escape).  `complete`: what Tab completes it from."""
         if self._early:  # answered before it was asked
             return self._early.pop(0)
         future: asyncio.Future[str | None] = asyncio.get_running_loop().create_future()
         self._future = future
-        self._open(prompt, initial, kind)
+        self._open(prompt, initial, kind, complete)
         try:
             return await future
         finally:
@@ -230,6 +262,30 @@ class MessageLine(Horizontal):
         if on_answer is not None:
             self._run(lambda: on_answer(event.value))
         self.post_message(self.Answered())
+
+    def on_answer_input_completion_asked(self, event: AnswerInput.CompletionAsked) -> None:
+        """Tab: the answer goes on as far as every completion agrees; the
+        completions, when more than one, are named after the prompt."""
+        event.stop()
+        complete = self._complete
+        if complete is None or not self.answer.display:
+            return
+        answer = self.answer
+        found = complete(answer.value)
+        start = os.path.commonprefix(found) if found else ""
+        if len(start) > len(answer.value):
+            answer.value = start
+            answer.cursor_position = len(start)
+        if len(found) == 1 and found[0] == answer.value:
+            self.show(self._prompt + " ", "prompt")
+            return
+        names = [
+            name.rstrip("/").rpartition("/")[2] + ("/" if name.endswith("/") else "")
+            for name in found
+        ]
+        more = " ..." if len(names) > COMPLETIONS_SHOWN else ""
+        listed = ", ".join(names[:COMPLETIONS_SHOWN]) + more if names else "no match"
+        self.show(f"{self._prompt} [{listed}] ", "prompt")
 
     def on_answer_input_cancelled(self, event: AnswerInput.Cancelled) -> None:
         event.stop()
