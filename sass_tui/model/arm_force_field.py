@@ -251,7 +251,8 @@ def arm_local(posture: Posture, side: str, direction: npt.ArrayLike) -> ArmLocal
     mirror = np.array([1.0, 1.0, -1.0 if side == "left" else 1.0])
 
     def local(joint: str) -> npt.NDArray[np.float64]:
-        return np.dot(posture[joint] - shoulder, axes.T) * mirror
+        placed: npt.NDArray[np.float64] = (posture[joint] - shoulder) @ axes.T * mirror
+        return placed
 
     hand = local(f"{s}_metacarpophalangeal_3")
     if np.linalg.norm(hand) < SMALLEST_REACH_M:
