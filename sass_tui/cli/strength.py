@@ -36,6 +36,7 @@ from sass_tui.model.published_strength import (
     CITATION,
     DATA_SET,
     EXAMPLE_DATA_SET,
+    GENDER_WORDS,
     LOWER_LIMB_AXES,
     LOWER_LIMB_MOTIONS,
     MOTION_AXIS,
@@ -43,6 +44,7 @@ from sass_tui.model.published_strength import (
     Subject,
     lower_limb_curve,
     lower_limb_motion,
+    lower_limb_percent_capable,
     lower_limb_strength,
     ordinal,
     text_plot,
@@ -57,6 +59,8 @@ from sass_tui.model.vocabulary import (
     STRENGTH_TYPES,
 )
 
+# The Arm Force Field's motion (cli/strength_arm.py).
+ARM_FORCE = "arm_force"
 # Joint torques and the grips' forces (HFDS 2003 prints newtons), defaults first.
 TORQUE_UNITS = ("ft-lb", "N-m")
 FORCE_UNITS = ("N", "lbf")
@@ -76,7 +80,7 @@ def register(commands: SubParsers) -> None:
     parser.add_argument(
         "motion",
         metavar="MOTION",
-        help=", ".join((*MOTION_NAMES, *LOWER_LIMB_MOTIONS, *GRIP_MOTIONS)),
+        help=", ".join((*MOTION_NAMES, *LOWER_LIMB_MOTIONS, *GRIP_MOTIONS, ARM_FORCE)),
     )
     parser.add_argument(
         "angles",
@@ -84,7 +88,32 @@ def register(commands: SubParsers) -> None:
         metavar="JOINT_AXIS=ANGLE",
         help=f"{', '.join((*JOINT_AXES, *LOWER_LIMB_AXES))}; e.g. shoulder_x=30 or "
         "'elbow_y=1.5 rad' (deg without a unit); hip_y, knee_y and ankle_y are degrees "
-        "of flexion from standing (hip and knee flexion, ankle dorsiflexion positive)",
+        "of flexion from standing (hip and knee flexion, ankle dorsiflexion positive); "
+        f"for {ARM_FORCE}: the figure's posture, both arms or left_/right_ before the joint",
+    )
+    parser.add_argument(
+        "--posture",
+        metavar="FILE.json",
+        help=f"{ARM_FORCE}: HAnim joint centres in metres (+x left, +y up, +z forward): "
+        "l_/r_metacarpophalangeal_3, l_/r_radiocarpal, l_/r_elbow, l_/r_shoulder, vc7, vl5",
+    )
+    parser.add_argument(
+        "--direction",
+        metavar="DIR",
+        help=f"{ARM_FORCE}: the hand force's direction: up, down, forward, back, left, right "
+        "or X,Y,Z on HAnim's axes (a vector with negative parts as --direction=-0.2,-0.3,0.9)",
+    )
+    parser.add_argument(
+        "--load",
+        metavar="LOAD",
+        help=f"{ARM_FORCE}: a hand force, e.g. 60N or '15 lbf' (N without a unit); hip, knee "
+        "and ankle: a torque, e.g. '120 N-m'; prints the percent capable of it",
+    )
+    parser.add_argument(
+        "--capable",
+        type=float,
+        metavar="PERCENT",
+        help=f"{ARM_FORCE}: the force this percent of people can exert (default 75)",
     )
     parser.add_argument(
         "--strength-data",
@@ -153,9 +182,17 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.motion.strip().lower().replace(" ", "_") == ARM_FORCE:
+        # deferred: cli.strength_arm (numpy, model.hanim) — off sass --help, sass --version (sass_tui/startup.py)
+        from sass_tui.cli.strength_arm import run_arm_force
+
+        return run_arm_force(args)
     # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import StrengthError
 
+    for option in ("posture", "direction", "capable"):
+        if getattr(args, option) is not None:
+            raise StrengthError(f"--{option} is for {ARM_FORCE} (the Arm Force Field)")
     motion = lower_limb_motion(args.motion)
     grip = grip_motion(args.motion)
     if args.strength_data is not None:
@@ -304,6 +341,12 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
         angle = min(max(peak, lower), upper)
     answer = lower_limb_strength(motion, subject, angle, speed, args.percentile)
     check_angle(figure, args.side, axis, answer.angle)
+    load = None if args.load is None else parse_quantity(args.load, "N_m")
+    share = (
+        None
+        if load is None
+        else lower_limb_percent_capable(motion, subject, load, answer.angle, speed)
+    )
     unit = unit_name(args.unit)
     value = float(convert(answer.torque, "N_m", unit))
     how = "isometric" if speed == 0 else f"{args.strength_type} at {speed:g} deg/s"
@@ -333,6 +376,8 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
                     "stature_m": figure.stature / 100.0,
                     "percentile": args.percentile,
                     "peak_angle": answer.peak_angle,
+                    "load_N_m": None if load is None else round(load, 2),
+                    "percent_capable": None if share is None else round(share, 1),
                     "source": source,
                     "person": args.person,
                     "predicted": args.person is not None,
@@ -347,6 +392,12 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
         f"{figure.mass:g} kg, {figure.stature / 100.0:g} m, "
         f"{args.percentile:g}th percentile) at {axis}={answer.angle:.4g}"
     )
+    if share is not None and load is not None:
+        print(
+            f"percent capable of {float(convert(load, 'N_m', unit)):.2f} {DISPLAY[unit]} at "
+            f"{axis}={answer.angle:.4g}: {share:.1f} % of {GENDER_WORDS[args.gender]} "
+            f"{answer.group} (C1's spread, {CITATION} Table 3)"
+        )
     print(f"source: {source}")
     if args.plot:
         lower, upper = shown[0][0], shown[-1][0]
@@ -369,6 +420,11 @@ def _example(args: argparse.Namespace) -> int:
         read_strength_file,
     )
 
+    if args.load is not None:
+        raise StrengthError(
+            "--load: the example data have no spread of people; percent capable is given "
+            "for arm_force and the hip, knee and ankle motions"
+        )
     data = read_strength_file(args.file)
     figure = _figure(args)
     for name in STRENGTH_PARAMETERS:
@@ -452,6 +508,7 @@ def _grip(args: argparse.Namespace, motion: str | None) -> int:
             ("--mass", args.mass is not None),
             ("--stature", args.stature is not None),
             ("--plot", args.plot),
+            ("--load", args.load is not None),
             ("--file", args.file is not None),
             ("--factor", bool(args.factor)),
             ("--training-level", bool(args.training_level)),

@@ -25,6 +25,7 @@ from sass_tui.model.published_strength import (
     PublishedStrengthError,
     Subject,
     age_group,
+    lower_limb_percent_capable,
     lower_limb_strength,
     parse_strength_limit,
     read_anderson2007,
@@ -220,3 +221,35 @@ def test_cli_plot_as_json_gives_the_curve_over_the_joint_limits(capsys):
     for angle, torque in curve[::10]:
         expected = c1 * 70 * 9.81 * 1.7 * max(0.0, math.cos(c2 * (math.radians(angle) - c3)))
         assert torque == pytest.approx(expected, rel=0.005, abs=1e-3)
+
+
+@pytest.mark.parametrize("torque", [60.0, 120.0, 150.0, 200.0])
+def test_knee_extension_percent_capable_at_the_peak_is_one_minus_phi(torque):
+    # Table 3, knee extension, women 18-25: C1 mean 0.159, SD 0.028; C3 1.274 rad.
+    mass, stature = 62.0, 1.64
+    expected = 100 * (1 - NormalDist().cdf((torque / (mass * 9.81 * stature) - 0.159) / 0.028))
+    subject = Subject("female", 22, mass, stature)
+    got = lower_limb_percent_capable("knee_extension", subject, torque)
+    assert got == pytest.approx(expected, abs=1e-6)
+    # and at the peak angle given in degrees, as the CLI gives it
+    at_peak = lower_limb_percent_capable("knee_extension", subject, torque, math.degrees(1.274))
+    assert at_peak == pytest.approx(expected, abs=1e-6)
+
+
+def test_percent_capable_is_the_percentile_read_backwards():
+    subject = Subject("male", 60, 80.0, 1.78)
+    for percentile in (5.0, 50.0, 90.0):
+        torque = lower_limb_strength("hip_extension", subject, 30, 0, percentile).torque
+        share = lower_limb_percent_capable("hip_extension", subject, torque, 30)
+        assert share == pytest.approx(100 - percentile, abs=1e-6)
+
+
+def test_cli_load_gives_percent_capable(capsys):
+    argv = ["strength", "knee_extension", "--gender", "female", "--mass", "62", "--stature"]
+    assert main([*argv, "164", "--age", "22", "--load", "120 N-m", "--format", "json"]) == 0
+    answer = json.loads(capsys.readouterr().out)
+    expected = 100 * (1 - NormalDist().cdf((120 / (62 * 9.81 * 1.64) - 0.159) / 0.028))
+    assert answer["percent_capable"] == pytest.approx(expected, abs=0.05)
+    assert answer["load_N_m"] == 120.0
+    assert main(["strength", "elbow_flexion", "--load", "20"]) == 2
+    assert "the example data have no spread of people" in capsys.readouterr().err
