@@ -30,7 +30,7 @@ from sass_tui.model.arm_force_field import (
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS
 from sass_tui.model.posture import parse_angles, pose_figure, read_posture_file
-from sass_tui.model.published_strength import ordinal, text_plot
+from sass_tui.model.published_strength import text_plot
 from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
 
 FORCE_UNITS = ("N", "lbf")
@@ -132,13 +132,13 @@ def run_arm_force(args: argparse.Namespace) -> int:
         return f"{float(convert(value, 'N', unit)):.{FORCE_DECIMALS}f} {shown}"
 
     print(
-        f"{args.side} hand, force {args.direction.strip()}: {ordinal(capable)} percent capable "
-        f"{force(strength)} (mean {force(answer.mean)} at zero gravity, SD {force(answer.sd)}; "
+        f"{args.side} hand, force {args.direction.strip()}: {force(strength)} for "
+        f"{capable:g} % capable (mean {force(answer.mean)} at zero gravity, SD {force(answer.sd)}; "
         f"arm's weight {force(answer.gravity)} along the force)"
     )
     if share is not None and load is not None:
         print(f"percent capable of {force(load)}: {share:.{PERCENT_DECIMALS}f} %")
-    forward, up, lateral = answer.hand
+    forward, up, lateral = (round(v, PLACE_DECIMALS) + 0.0 for v in answer.hand)
     print(
         f"hand {forward:.{PLACE_DECIMALS}f} m forward, {up:.{PLACE_DECIMALS}f} m up, "
         f"{lateral:.{PLACE_DECIMALS}f} m lateral of the shoulder ({where})"
@@ -174,7 +174,7 @@ def _json(
     where: str,
 ) -> dict[str, object]:
     def n(value: float) -> float:
-        return round(value, FORCE_DECIMALS)
+        return round(value, FORCE_DECIMALS) + 0.0  # no -0.0
 
     return {
         "motion": "arm_force",
@@ -190,9 +190,9 @@ def _json(
         "load_N": None if load is None else n(load),
         "percent_capable": None if share is None else round(share, PERCENT_DECIMALS),
         "hand_m": {
-            "forward": round(answer.hand[0], PLACE_DECIMALS),
-            "up": round(answer.hand[1], PLACE_DECIMALS),
-            "lateral": round(answer.hand[2], PLACE_DECIMALS),
+            "forward": round(answer.hand[0], PLACE_DECIMALS) + 0.0,
+            "up": round(answer.hand[1], PLACE_DECIMALS) + 0.0,
+            "lateral": round(answer.hand[2], PLACE_DECIMALS) + 0.0,
         },
         "posture": where,
         "person": args.person,

@@ -16,11 +16,13 @@ import json
 import math
 from statistics import NormalDist
 
+import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
+from sass_tui.model.percent_capable import lower_limb_capable
 from sass_tui.model.published_strength import (
     PublishedStrengthError,
     Subject,
@@ -253,3 +255,17 @@ def test_cli_load_gives_percent_capable(capsys):
     assert answer["load_N_m"] == 120.0
     assert main(["strength", "elbow_flexion", "--load", "20"]) == 2
     assert "the example data have no spread of people" in capsys.readouterr().err
+
+
+def test_many_people_at_once_agree_with_one_at_a_time():
+    people = [("female", 22, 62.0, 1.64), ("male", 60, 85.0, 1.80), ("female", 80, 58.0, 1.55)]
+    genders, ages, masses, statures = zip(*people)
+    many = lower_limb_capable("knee_extension", genders, ages, masses, statures, 120.0, 60.0)
+    for (gender, age, mass, stature), got in zip(people, many):
+        one = lower_limb_percent_capable(
+            "knee_extension", Subject(gender, age, mass, stature), 120.0, 60.0
+        )
+        assert 100 * got == pytest.approx(one, abs=1e-9)
+    unknown = lower_limb_capable("knee_extension", ["male"] * 3, [17, 30, 30], [80, 0, 80],
+                                 [1.8, 1.8, float("nan")], 100.0)  # fmt: skip
+    assert np.isnan(unknown).all()
