@@ -167,7 +167,8 @@ def test_fig_names_the_source_of_every_strength_section(tmp_path):
     from sass_tui.model.figfile import read_fig
 
     out = tmp_path / "m.fig"
-    assert main(["fig", "-o", str(out), "--mass", "75", "--stature", "175"]) == 0
+    argv = ["fig", "-o", str(out), "--mass", "75", "--stature", "175"]
+    assert main([*argv, "--strength-data", "example"]) == 0
     text = out.read_text()
     assert "source: example data (invented, for the report's worked examples) */" in text
     assert (
