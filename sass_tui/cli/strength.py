@@ -59,6 +59,11 @@ from sass_tui.model.vocabulary import (
     STRENGTH_TYPES,
 )
 
+# JSON numbers to the data's precision: Table 3's coefficients carry three
+# significant digits (a torque to 0.01 N-m or ft-lb), angles to 0.1 deg, the
+# grips' forces are printed to 0.1 N.
+TORQUE_DECIMALS = 2
+ANGLE_DECIMALS = 1
 # The Arm Force Field's motion (cli/strength_arm.py).
 ARM_FORCE = "arm_force"
 # Joint torques and the grips' forces (HFDS 2003 prints newtons), defaults first.
@@ -151,7 +156,8 @@ def register(commands: SubParsers) -> None:
     parser.add_argument(
         "--unit",
         choices=(*TORQUE_UNITS, *FORCE_UNITS),
-        help="torque: ft-lb (default) or N-m; grip force: N (default) or lbf",
+        help="default the source's unit: N-m (Anderson et al. 2007), ft-lb (the example "
+        "data), N (the grips, arm_force); else ft-lb or N-m for a torque, N or lbf for a force",
     )
     parser.add_argument(
         "--percentile",
@@ -217,7 +223,9 @@ def run(args: argparse.Namespace) -> int:
     if args.unit is not None and args.unit not in units:
         what = "a grip force" if data_set == GRIP_DATA_SET else "a joint torque"
         raise StrengthError(f"--unit {args.unit}: {what} is given in {' or '.join(units)}")
-    args.unit = args.unit or units[0]
+    # Each answer in its source's unit unless --unit: the example data's (the
+    # report's) ft-lb, Anderson et al. 2007's N-m, HFDS 2003's N.
+    args.unit = args.unit or {DATA_SET: "N-m", EXAMPLE_DATA_SET: "ft-lb"}.get(data_set, units[0])
     if data_set == GRIP_DATA_SET:
         return _grip(args, grip)
     if args.percentile is None:
@@ -365,23 +373,27 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
                 {
                     "motion": motion,
                     "side": args.side,
-                    "value": round(value, 4),
+                    "value": round(value, TORQUE_DECIMALS),
                     "unit": DISPLAY[unit],
-                    "angles": {axis: answer.angle},
+                    "angles": {axis: round(answer.angle, ANGLE_DECIMALS)},
                     "strength_type": args.strength_type,
                     "motion_speed": speed,
                     "gender": args.gender,
                     "age_group": answer.group,
-                    "mass_kg": figure.mass,
-                    "stature_m": figure.stature / 100.0,
+                    "mass_kg": round(figure.mass, 1),
+                    "stature_m": round(figure.stature / 100.0, 3),
                     "percentile": args.percentile,
-                    "peak_angle": answer.peak_angle,
+                    "peak_angle": round(answer.peak_angle, ANGLE_DECIMALS),
                     "load_N_m": None if load is None else round(load, 2),
                     "percent_capable": None if share is None else round(share, 1),
                     "source": source,
                     "person": args.person,
                     "predicted": args.person is not None,
-                    "curve": [[round(x, 4), round(y, 4)] for x, y in shown] if args.plot else None,
+                    "curve": [
+                        [round(x, ANGLE_DECIMALS), round(y, TORQUE_DECIMALS)] for x, y in shown
+                    ]
+                    if args.plot
+                    else None,
                 }
             )
         )
@@ -458,7 +470,7 @@ def _example(args: argparse.Namespace) -> int:
                 {
                     "motion": MOTION_NAMES[index],
                     "side": row.side,
-                    "value": round(row.value, 4),
+                    "value": round(row.value, TORQUE_DECIMALS),
                     "unit": row.unit,
                     "angles": dict(zip(JOINT_AXES, row.angles)),
                     "how": row.source,
@@ -542,7 +554,7 @@ def _grip(args: argparse.Namespace, motion: str | None) -> int:
                     "motion": motion,
                     "side": args.side,
                     "sided": answer.sided,
-                    "value": round(value, 4),
+                    "value": round(value, 1),
                     "unit": DISPLAY[unit],
                     "force_N": answer.force,
                     "printed": printed,

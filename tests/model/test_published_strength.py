@@ -105,13 +105,20 @@ def test_ages_outside_18_to_100_are_refused_with_the_groups_listed(age):
 def test_cli_answers_name_their_source(capsys):
     assert main(["strength", "knee_extension", "--mass", "75", "--stature", "175"]) == 0
     out = capsys.readouterr().out
-    assert "209.87 N-m" not in out  # the default unit is ft-lb
+    assert "209.87 N-m" in out  # in the source's unit: N-m
+    assert main(["strength", "knee_extension", "--unit", "ft-lb", "--mass", "75"]) == 0
+    assert " ft-lb " in capsys.readouterr().out
     assert "source: Anderson et al. 2007, young men, mean" in out
     assert main(["strength", "knee_extension", "--unit", "N-m", "--mass", "75"]) == 0
     assert main(["strength", "--format", "json", "--unit", "N-m", "knee_extension"]) == 0
     answer = json.loads(capsys.readouterr().out.splitlines()[-1])
     assert answer["source"] == "Anderson et al. 2007, young men, mean"
-    assert answer["value"] == pytest.approx(0.163 * answer["mass_kg"] * 9.81 * answer["stature_m"])
+    assert answer["value"] == pytest.approx(
+        0.163 * answer["mass_kg"] * 9.81 * answer["stature_m"], abs=0.01
+    )
+    # to the data's precision
+    assert answer["angles"]["knee_y"] == 64.9 and answer["peak_angle"] == 64.9
+    assert answer["value"] == round(answer["value"], 2)
     assert main(["strength", "shoulder_abduction", "shoulder_x=30"]) == 0
     assert "source: example data (invented, for the report's worked examples)" in (
         capsys.readouterr().out
