@@ -43,18 +43,20 @@ def lower_limb_capable(
     age: npt.ArrayLike,
     mass: npt.ArrayLike,
     stature_m: npt.ArrayLike,
-    torque: float,
+    torque: npt.ArrayLike,
     angle: float | None = None,
     speed: float = 0.0,
     data: Anderson2007 | None = None,
 ) -> FloatArray:
-    """Each person's probability (0-1) of exerting `torque` N-m in `motion` at
+    """Each person's probability (0-1) of exerting `torque` N-m (one for all,
+    or one each) in `motion` at
     `angle` deg (None: the peak) and concentric `speed` deg/s; NaN where the
     model cannot say (gender, age outside 18-100, mass or stature missing)."""
     data = data or read_anderson2007()
     genders = np.asarray(gender, dtype=object)
     ages, masses, statures = (np.asarray(v, dtype=float) for v in (age, mass, stature_m))
     out = np.full(genders.shape, np.nan)
+    torques = np.broadcast_to(np.asarray(torque, dtype=float), genders.shape)
     known = (
         np.isfinite(ages)
         & (ages >= MIN_AGE)
@@ -78,9 +80,9 @@ def lower_limb_capable(
             per_c1 = unit.torque / unit.c1
             key = (motion, sex, group)
             if per_c1 <= 0:
-                out[mine] = 0.0 if torque > 0 else 1.0
+                out[mine] = np.where(torques[mine] > 0, 0.0, 1.0)
                 continue
-            needed = torque / (per_c1 * masses[mine] * statures[mine])
+            needed = torques[mine] / (per_c1 * masses[mine] * statures[mine])
             out[mine] = normal_survival((needed - data.mean[key].c1) / data.sd[key].c1)
     return out
 
