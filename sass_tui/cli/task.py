@@ -17,6 +17,7 @@ import argparse
 import json
 
 from sass_tui.cli.options import SubParsers, add_db_option
+from sass_tui.model.published_strength import GENDER_WORDS
 from sass_tui.model.vocabulary import GENDERS
 
 LOAD_HELP = "the load on the {side} hand, e.g. 60N or '15 lbf' (N without a unit)"
@@ -67,9 +68,6 @@ def register(commands: SubParsers) -> None:
     task.add_argument("--format", choices=("text", "json"), default="text", help="output form")
     add_db_option(task)
     task.set_defaults(func=run)
-
-
-GENDER_WORDS = {"female": "women", "male": "men"}
 
 
 def run(args: argparse.Namespace) -> int:

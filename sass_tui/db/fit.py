@@ -303,9 +303,7 @@ def _summarise(
     met = np.nan_to_num(passes, nan=1.0)
     fits = met.prod(axis=1)
     fails = passes < 0.5  # NaN compares False: only a failure (or a likely one)
-    alone = [
-        (1.0 - met[:, k]) * np.delete(met, k, axis=1).prod(axis=1) for k in range(len(limits))
-    ]
+    alone = [(1.0 - met[:, k]) * np.delete(met, k, axis=1).prod(axis=1) for k in range(len(limits))]
     genders: dict[str, GenderShare] = {}
     limit_percent: list[dict[str, float | None]] = [{} for _ in limits]
     for g in GENDERS:

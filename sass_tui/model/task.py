@@ -28,7 +28,14 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 import numpy.typing as npt
 
-from sass_tui.model.arm_force_field import ArmForce, ArmForceError, arm_force, check_direction
+from sass_tui.model.arm_force_field import (
+    DIRECTIONS,
+    ArmForce,
+    ArmForceError,
+    arm_force,
+    check_direction,
+    parse_direction,
+)
 from sass_tui.model.figure import Figure
 from sass_tui.model.hanim import LOA1
 from sass_tui.model.percent_capable import lower_limb_capable, normal_survival
@@ -41,6 +48,7 @@ from sass_tui.model.published_strength import (
 from sass_tui.model.published_strength import (
     CITATION as ANDERSON,
 )
+from sass_tui.model.units import parse_quantity
 
 GRAVITY = 9.81
 DOWN = np.array([0.0, -1.0, 0.0])
@@ -82,6 +90,18 @@ def hand_load(side: str, force: float, direction: npt.ArrayLike) -> HandLoad:
     if not (math.isfinite(force) and force >= 0):
         raise TaskError(f"--{side}-load {force!r} N: expected a force of 0 or more")
     return HandLoad(side, float(force), check_direction(direction, f"--{side}-direction"))
+
+
+def parse_hand_load(side: str, text: str) -> HandLoad:
+    """'60 N down', '60N', '15 lbf up', '40 N 0,-1,0.2': the force (N without
+    a unit), then the direction it acts in (default down: a weight held)."""
+    words = text.split()
+    if not words:
+        raise TaskError(f"the {side} hand: expected a force and a direction, e.g. 60 N down")
+    direction = "down"
+    if len(words) > 1 and (words[-1].lower() in DIRECTIONS or "," in words[-1]):
+        direction = words.pop()
+    return hand_load(side, parse_quantity(" ".join(words), "N"), parse_direction(direction))
 
 
 @dataclass(frozen=True)

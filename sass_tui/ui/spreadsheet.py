@@ -79,6 +79,7 @@ class SpreadsheetScreen(EditCommands, FileCommands, PeopleCommands):
         Binding("b", "see_figure", "Draw", tooltip="See figure"),
         Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         Binding("t", "strength_curve", show=False),
+        Binding("T", "task", show=False),
         *(
             Binding(spec.key, spec.action, spec.footer)
             for spec in COMMANDS
