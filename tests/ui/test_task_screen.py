@@ -12,7 +12,6 @@ from textual.widgets import Static
 from sass_tui.model.arm_force_field import arm_force
 from sass_tui.model.figure import Figure
 from sass_tui.model.posture import parse_angles, pose_figure
-from sass_tui.model.task import TaskError, parse_hand_load
 from sass_tui.ui.task_screen import TaskScreen
 
 SIZE = (110, 44)
@@ -80,23 +79,6 @@ def test_the_task_panel_answers_and_follows_new_loads(app_at, drive):
             )
 
     drive(scenario())
-
-
-@pytest.mark.parametrize(
-    "text, force, direction",
-    [("60 N down", 60.0, (0, -1, 0)), ("60N", 60.0, (0, -1, 0)), ("15 lbf up", 66.72, (0, 1, 0)),
-     ("40 N 0,0,2", 40.0, (0, 0, 1))],
-)  # fmt: skip
-def test_a_hand_load_is_a_force_then_its_direction(text, force, direction):
-    load = parse_hand_load("left", text)
-    assert load.force == pytest.approx(force, abs=0.01)
-    assert tuple(load.direction) == pytest.approx(direction)
-
-
-@pytest.mark.parametrize("text", ["", "abc", "60 N sideways", "-3 N", "nan N"])
-def test_a_bad_hand_load_is_refused(text):
-    with pytest.raises(TaskError if text in ("", "-3 N") else Exception, match="."):
-        parse_hand_load("left", text)
 
 
 @pytest.mark.slow
