@@ -183,6 +183,13 @@ def register(commands: SubParsers) -> None:
     parser.add_argument(
         "--factor", default="", help="non-dominant limb scaling factor (default 1/1.116)"
     )
+    parser.add_argument(
+        "--assumed-modifiers",
+        action="store_true",
+        help="the example data: apply the isokinetic decay (--strength-type, --motion-speed) "
+        "and the training gain (--training-level), which have no published source for these "
+        "motions (off unless asked for; labelled when on)",
+    )
     parser.add_argument("--file", metavar="F", help="strength file (default datasets/strength.dat)")
     parser.set_defaults(func=run)
 
@@ -423,9 +430,12 @@ def _example(args: argparse.Namespace) -> int:
     """An arm motion from the example strength file (or --file)."""
     # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import (
+        ASSUMED_LABEL,
+        ASSUMED_MODIFIERS,
         EXTRAPOLATION_MARGIN_DEG,
         StrengthError,
         StrengthSheet,
+        assumed_modifiers_asked,
         motion_index,
         parse_joint_axis,
         parse_side_factor,
@@ -442,6 +452,13 @@ def _example(args: argparse.Namespace) -> int:
     for name in STRENGTH_PARAMETERS:
         figure.set_strength_parameter(name, getattr(args, name))
     sheet = StrengthSheet(data, figure)
+    if assumed_modifiers_asked(figure) and not args.assumed_modifiers:
+        raise StrengthError(
+            f"--strength-type {args.strength_type}, --training-level {args.training_level:g}: "
+            f"the {ASSUMED_MODIFIERS} have no published source for these motions; "
+            "--assumed-modifiers applies sass's assumptions, labelled (docs/model.md)"
+        )
+    sheet.assumed_modifiers = args.assumed_modifiers
     sheet.side = args.side
     sheet.non_dominant_factor = parse_side_factor(args.factor)
     sheet.set_percentile(args.percentile)
@@ -477,6 +494,7 @@ def _example(args: argparse.Namespace) -> int:
                     "extrapolated": row.extrapolated,
                     "gender": figure.gender,
                     "percentile": sheet.percentile,
+                    "assumed_modifiers": ASSUMED_LABEL if sheet.assumed_modifiers else None,
                     "source": data.source,
                 }
             )
@@ -495,6 +513,8 @@ def _example(args: argparse.Namespace) -> int:
         f"{figure.gender}, {sheet.percentile:g}th percentile) at {where}"
     )
     print(f"source: {data.source}")
+    if sheet.assumed_modifiers:
+        print(f"note: {ASSUMED_LABEL}")
     if data.test_data:
         print(f"note: {data.label}: values made for testing (docs/data-sources.md, Strength)")
     return 0

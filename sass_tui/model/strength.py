@@ -19,6 +19,8 @@ from sass_tui.model.figure import Figure
 from sass_tui.model.names import STRENGTH
 from sass_tui.model.percentile import check_percentile
 from sass_tui.model.strength_conditions import (
+    ASSUMED_LABEL,
+    ASSUMED_MODIFIERS,
     DEFAULT_NON_DOMINANT_FACTOR,
     ENDURANCE_POWER_MODEL,
     ISOKINETIC_DECAY_PER_DEG_S,
@@ -27,6 +29,7 @@ from sass_tui.model.strength_conditions import (
     MeasuredConditions,
     StrengthConditions,
     StrengthError,
+    assumed_modifiers_asked,
     check_angle,
     fatigue_factor,
     handedness_factor,
@@ -68,6 +71,9 @@ from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity, 
 from sass_tui.model.vocabulary import JOINT_AXES, MOTION_NAMES, SIDES
 
 __all__ = [
+    "ASSUMED_LABEL",
+    "ASSUMED_MODIFIERS",
+    "assumed_modifiers_asked",
     "DEFAULT_NON_DOMINANT_FACTOR",
     "ENDURANCE_POWER_MODEL",
     "EXTRAPOLATION_MARGIN_DEG",
@@ -153,6 +159,8 @@ class StrengthSheet:
         self.unit = GROUP_UNITS[STRENGTH][0]
         self.percentile = 50.0
         self.non_dominant_factor = DEFAULT_NON_DOMINANT_FACTOR
+        # the isokinetic decay and the training gain: off unless asked for
+        self.assumed_modifiers = False
         self.angles = self._default_angles()
 
     @classmethod
@@ -182,7 +190,8 @@ class StrengthSheet:
         measured value comes back unchanged)."""
         model = self.data.model(self.figure.gender, self.side)
         base, stored = model.evaluate(np.arange(len(MOTIONS)), self.angles, self.percentile)
-        factors = modifier_factors(self.figure, self.side, self.non_dominant_factor)
+        assumed = self.assumed_modifiers
+        factors = modifier_factors(self.figure, self.side, self.non_dominant_factor, assumed)
         if self.data.measured_at is not None:
             kind, speed, training, fatigue = self.data.measured_at
             measured = MeasuredConditions(
@@ -193,7 +202,7 @@ class StrengthSheet:
                 handedness=self.figure.handedness,
             )
             factors = factors / modifier_factors(
-                measured, model.section.side, self.non_dominant_factor
+                measured, model.section.side, self.non_dominant_factor, assumed
             )
         return base * factors, stored
 
@@ -218,12 +227,25 @@ class StrengthSheet:
 
     @property
     def title(self) -> str:
-        """What the page shows, for its title: the data's label and source."""
+        """What the page shows, for its title: the data's label and source,
+        and the assumed modifiers when on (or asked for and off)."""
         data = self.data
-        if data.source == data.label:
-            return f"Strength: {data.label}"
         # The source first: a narrow page crops the end of its title.
-        return f"Strength: {data.source}; {data.label}"
+        title = f"Strength: {data.label}"
+        if data.source != data.label:
+            title = f"Strength: {data.source}; {data.label}"
+        if self.assumed_modifiers:
+            return f"{title}; {ASSUMED_LABEL}"
+        if assumed_modifiers_asked(self.figure):
+            return f"{title}; {ASSUMED_MODIFIERS} off (no published source)"
+        return title
+
+    def toggle_assumed_modifiers(self) -> str:
+        """Turn the isokinetic decay and the training gain on or off; the message."""
+        self.assumed_modifiers = not self.assumed_modifiers
+        if self.assumed_modifiers:
+            return f"{ASSUMED_LABEL[0].upper()}{ASSUMED_LABEL[1:]}."
+        return f"{ASSUMED_MODIFIERS.capitalize()} off: no published source for these motions."
 
     def row(self, index: int) -> StrengthRow:
         return self.rows()[index]
@@ -300,7 +322,10 @@ def fig_section(sheet: StrengthSheet) -> tuple[str, list[tuple[str, float, str]]
     """The strength section for figfile.render_fig(extra_sections=[...]); its
     title says what the values are and where they come from (test data, or
     the file's title)."""
-    return (f"strength variables: {_label_and_source(sheet.data)}", sheet.fig_variables())
+    title = f"strength variables: {_label_and_source(sheet.data)}"
+    if sheet.assumed_modifiers:
+        title += f"; {ASSUMED_LABEL}"
+    return (title, sheet.fig_variables())
 
 
 def lower_limb_fig_section(

@@ -117,15 +117,32 @@ class MeasuredConditions:
     fatigue_level: float
 
 
+# The two modifiers without a solid source: the isokinetic decay (one
+# shoulder-flexion pair, used for every joint) and the training gain (an
+# assumption).  Off unless asked for, and labelled when on (docs/model.md).
+ASSUMED_MODIFIERS = "isokinetic decay and training gain"
+ASSUMED_LABEL = f"assumed modifiers on: {ASSUMED_MODIFIERS} (no published source for these motions)"
+
+
+def assumed_modifiers_asked(figure: StrengthConditions) -> bool:
+    """The figure's parameters ask for an assumed modifier (a speed, a training level)."""
+    return figure.strength_type != "isometric" or figure.training_level != 0
+
+
 def modifier_factors(
-    figure: StrengthConditions, side: str, non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR
+    figure: StrengthConditions,
+    side: str,
+    non_dominant_factor: float = DEFAULT_NON_DOMINANT_FACTOR,
+    assumed: bool = False,
 ) -> np.ndarray:
-    """The product of every modifier, one factor per motion (14,)."""
-    common = (
-        strength_type_factor(figure.strength_type, figure.motion_speed)
-        * handedness_factor(side, figure.handedness, non_dominant_factor)
-        * training_factor(figure.training_level)
-    )
+    """The product of every modifier, one factor per motion (14,).  The
+    isokinetic decay and the training gain only when `assumed` (they are
+    checked either way: a negative speed or level is refused)."""
+    kind = strength_type_factor(figure.strength_type, figure.motion_speed)
+    training = training_factor(figure.training_level)
+    common = handedness_factor(side, figure.handedness, non_dominant_factor)
+    if assumed:
+        common *= kind * training
     fatigue = {
         joint: fatigue_factor(figure.fatigue_level, joint) for joint in ENDURANCE_POWER_MODEL
     }

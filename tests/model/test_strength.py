@@ -90,6 +90,11 @@ def test_each_modifier_moves_every_value_by_its_documented_amount(male):
     figure.set_strength_parameter("motion_speed", 50)
     assert np.allclose(_values(male), base)  # isometric ignores speed
     figure.set_strength_parameter("strength_type", "isokinetic")
+    # no published source for the decay: off unless asked for, and the title says so
+    assert np.allclose(_values(male), base)
+    assert "isokinetic decay and training gain off" in male.title
+    male.assumed_modifiers = True
+    assert "assumed modifiers on" in male.title
     assert np.allclose(_values(male), base * 46.9 / 68.6)
     figure.set_strength_parameter("strength_type", "isotonic")
     assert np.allclose(_values(male), base * 46.9 / 68.6)

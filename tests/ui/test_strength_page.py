@@ -235,6 +235,13 @@ def test_global_strength_parameters_move_the_values(drive, app_at):
             await edit_global(pilot, "strength_type", "isokinetic")
             await edit_global(pilot, "motion_speed", "60")
             assert "Strength values recomputed." in message(app)
+            # the isokinetic decay has no published source: off, and said so, until asked for
+            assert row_value(app, "Shoulder abduction") == REPORT_VALUE
+            page = app.spreadsheet.strength_page
+            assert "isokinetic decay and training gain off" in str(page.border_title)
+            await pilot.press("M")
+            assert "Assumed modifiers on" in message(app)
+            assert "assumed modifiers on" in str(page.border_title)
             factor = strength_type_factor("isokinetic", 60.0)
             assert row_value(app, "Shoulder abduction") == round(REPORT_VALUE * factor, 2)
             await edit_global(pilot, "training_level", "2")
