@@ -370,10 +370,21 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
     if args.person is not None:
         source += f"; predicted for {args.person} from their own gender, age, mass and stature"
     shown: list[tuple[float, float]] = []
+    capable: list[tuple[float, float]] = []
     if args.plot:
         lower, upper = joint_limit_range(figure, args.side, axis)
         curve = lower_limb_curve(motion, subject, lower, upper, speed, args.percentile)
         shown = [(x, float(convert(y, "N_m", unit))) for x, y in curve]
+        if load is not None:
+            # percent capable against the torque, at the angle asked, to the 99.5th percentile
+            top = lower_limb_strength(motion, subject, answer.angle, speed, 99.5).torque
+            capable = [
+                (
+                    float(convert(top * i / 60, "N_m", unit)),
+                    lower_limb_percent_capable(motion, subject, top * i / 60, answer.angle, speed),
+                )
+                for i in range(61)
+            ]
     if args.format == "json":
         print(
             json.dumps(
@@ -392,6 +403,8 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
                     "percentile": args.percentile,
                     "peak_angle": round(answer.peak_angle, ANGLE_DECIMALS),
                     "load_N_m": None if load is None else round(load, 2),
+                    "capable_curve": [[round(x, TORQUE_DECIMALS), round(y, 1)] for x, y in capable]
+                    or None,
                     "percent_capable": None if share is None else round(share, 1),
                     "source": source,
                     "person": args.person,
@@ -422,6 +435,11 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
         lower, upper = shown[0][0], shown[-1][0]
         print(f"{motion.replace('_', ' ')} over {axis} {lower:g} to {upper:g} deg (joint limits):")
         for line in text_plot(shown, DISPLAY[unit], (answer.angle, value)):
+            print(line)
+    if capable and share is not None and load is not None:
+        print(f"percent capable against the torque at {axis}={answer.angle:.4g}:")
+        mark = (float(convert(load, "N_m", unit)), share)
+        for line in text_plot(capable, "%", mark, what="percent capable", across=DISPLAY[unit]):
             print(line)
     return 0
 

@@ -277,3 +277,18 @@ def test_many_people_at_once_agree_with_one_at_a_time():
     unknown = lower_limb_capable("knee_extension", ["male"] * 3, [17, 30, 30], [80, 0, 80],
                                  [1.8, 1.8, float("nan")], 100.0)  # fmt: skip
     assert np.isnan(unknown).all()
+
+
+def test_cli_plot_with_a_load_gives_the_curve_of_percent_capable(capsys):
+    argv = ["strength", "knee_extension", "--gender", "female", "--load", "120 N-m", "--plot"]
+    assert main([*argv, "--format", "json"]) == 0
+    answer = json.loads(capsys.readouterr().out)
+    curve = answer["capable_curve"]
+    assert curve[0] == [0.0, 100.0] and curve[-1][1] == pytest.approx(0.5, abs=0.05)
+    assert all(a[1] >= b[1] for a, b in zip(curve, curve[1:]))
+    # the load's share lies on the curve
+    below = max(p for p in curve if p[0] <= 120.0)
+    above = min(p for p in curve if p[0] >= 120.0)
+    assert below[1] >= answer["percent_capable"] >= above[1]
+    assert main(argv) == 0
+    assert "percent capable against the torque" in capsys.readouterr().out
