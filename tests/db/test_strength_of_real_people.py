@@ -119,5 +119,8 @@ def test_a_fit_test_takes_a_strength_limit_on_real_people(shared_target, capsys)
         assert got[gender][0] == n
         assert got[gender][1] == pytest.approx(fit, abs=0.02)
     assert result["limits"][-1] == "knee_extension >= 150 N-m at knee_y=60 (predicted)"
+    table = ["fit", "--db", shared_target, "--strength", "knee_extension >= 150 N-m"]
+    assert main([*table, "stature <= 190 cm"]) == 0
+    assert "fit and excluded are expected numbers of people" in capsys.readouterr().out
     assert main([*argv, "knee_extension >= 150 at hip_y=3", "stature <= 190 cm"]) == 2
     assert "expected 'at knee_y=ANGLE'" in capsys.readouterr().err
