@@ -409,14 +409,3 @@ def arm_force(
         hand=(float(arm.hand[0]), float(arm.hand[1]), float(arm.hand[2])),
         source=f"{CITATION}, {words}; arm's weight for {mass:g} kg",
     )
-
-
-def percent_capable_many(
-    loads: npt.ArrayLike, means: npt.ArrayLike, sds: npt.ArrayLike
-) -> npt.NDArray[np.float64]:
-    """percent_capable over arrays (one value per person)."""
-    z = (np.asarray(loads, float) - np.asarray(means, float)) / np.asarray(sds, float)
-    erf = np.vectorize(math.erf, otypes=[float])
-    cdf: npt.NDArray[np.float64] = 0.5 * (1.0 + erf(z / math.sqrt(2.0)))
-    share: npt.NDArray[np.float64] = 100.0 * (1.0 - cdf)
-    return share
