@@ -134,6 +134,14 @@ PATHS: tuple[StartupPath, ...] = (
         "the strength of the default figure needs the strength file and the model only",
     ),
     StartupPath(
+        "sass task",
+        ("task", "shoulder_y=60", "elbow_y=30", "--right-load", "50N"),
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",
+         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+        "a task for women and men needs the figure's humanoid, the Arm Force Field and"
+        " Anderson et al. 2007, no database (only --person and --target open one)",
+    ),
+    StartupPath(
         "sass query",
         ("query", "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets", "platformdirs",

@@ -29,6 +29,7 @@ VERBS = (
     "population",
     "predict",
     "fit",
+    "task",
     "family",
     "target",
     "db",

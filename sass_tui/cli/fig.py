@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
 from sass_tui.cli.options import (
     SubParsers,
@@ -12,6 +13,7 @@ from sass_tui.cli.options import (
     print_warnings,
 )
 from sass_tui.model.names import GIRTH
+from sass_tui.model.published_strength import EXAMPLE_DATA_SET, EXAMPLE_SOURCE
 
 
 def register(commands: SubParsers) -> None:
@@ -27,7 +29,15 @@ def register(commands: SubParsers) -> None:
     strength.add_argument(
         "--strength",
         metavar="F",
-        help="strength file for the strength variables (default datasets/strength.dat)",
+        help="a strength file (measured data) for the arm's strength variables; by default "
+        "the figure carries only published strength (Anderson et al. 2007's hip, knee and "
+        "ankle)",
+    )
+    strength.add_argument(
+        "--strength-data",
+        choices=(EXAMPLE_DATA_SET,),
+        help=f"{EXAMPLE_DATA_SET}: also the arm's strength from the invented example data "
+        "(datasets/strength.dat), said so in the file and on the terminal",
     )
     strength.add_argument("--no-strength", action="store_true", help="leave strength out")
     fig.set_defaults(func=run)
@@ -39,6 +49,7 @@ def run(args: argparse.Namespace) -> int:
 
     figure, warnings = figure_from_args(args)
     extra_sections = []
+    notes: list[str] = []
     if not args.no_strength:
         # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
         from sass_tui.model.strength import (
@@ -48,9 +59,17 @@ def run(args: argparse.Namespace) -> int:
             read_strength_file,
         )
 
-        strength = read_strength_file(args.strength)
-        warnings += strength.warnings
-        extra_sections.append(fig_section(StrengthSheet(strength, figure)))
+        # No invented strength unless asked for by name: the arm's lines come
+        # from a strength file the user gives, or the example data named.
+        if args.strength is not None or args.strength_data == EXAMPLE_DATA_SET:
+            strength = read_strength_file(args.strength)
+            warnings += strength.warnings
+            extra_sections.append(fig_section(StrengthSheet(strength, figure)))
+            if strength.source == EXAMPLE_SOURCE:
+                notes.append(
+                    f"the arm's strength variables are {EXAMPLE_SOURCE}, not measured "
+                    "strength (--strength-data example)"
+                )
         extra_sections.append(lower_limb_fig_section(figure))
     print_warnings(warnings)
     if args.output:
@@ -61,4 +80,6 @@ def run(args: argparse.Namespace) -> int:
         out = default_fig_name(figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
     write_fig(figure, out, extra_sections)
     print(f"wrote {out}")
+    for note in notes:
+        print(f"note: {note}", file=sys.stderr)
     return 0

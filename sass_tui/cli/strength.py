@@ -36,6 +36,7 @@ from sass_tui.model.published_strength import (
     CITATION,
     DATA_SET,
     EXAMPLE_DATA_SET,
+    GENDER_WORDS,
     LOWER_LIMB_AXES,
     LOWER_LIMB_MOTIONS,
     MOTION_AXIS,
@@ -43,6 +44,7 @@ from sass_tui.model.published_strength import (
     Subject,
     lower_limb_curve,
     lower_limb_motion,
+    lower_limb_percent_capable,
     lower_limb_strength,
     ordinal,
     text_plot,
@@ -57,6 +59,13 @@ from sass_tui.model.vocabulary import (
     STRENGTH_TYPES,
 )
 
+# JSON numbers to the data's precision: Table 3's coefficients carry three
+# significant digits (a torque to 0.01 N-m or ft-lb), angles to 0.1 deg, the
+# grips' forces are printed to 0.1 N.
+TORQUE_DECIMALS = 2
+ANGLE_DECIMALS = 1
+# The Arm Force Field's motion (cli/strength_arm.py).
+ARM_FORCE = "arm_force"
 # Joint torques and the grips' forces (HFDS 2003 prints newtons), defaults first.
 TORQUE_UNITS = ("ft-lb", "N-m")
 FORCE_UNITS = ("N", "lbf")
@@ -76,7 +85,7 @@ def register(commands: SubParsers) -> None:
     parser.add_argument(
         "motion",
         metavar="MOTION",
-        help=", ".join((*MOTION_NAMES, *LOWER_LIMB_MOTIONS, *GRIP_MOTIONS)),
+        help=", ".join((*MOTION_NAMES, *LOWER_LIMB_MOTIONS, *GRIP_MOTIONS, ARM_FORCE)),
     )
     parser.add_argument(
         "angles",
@@ -84,7 +93,32 @@ def register(commands: SubParsers) -> None:
         metavar="JOINT_AXIS=ANGLE",
         help=f"{', '.join((*JOINT_AXES, *LOWER_LIMB_AXES))}; e.g. shoulder_x=30 or "
         "'elbow_y=1.5 rad' (deg without a unit); hip_y, knee_y and ankle_y are degrees "
-        "of flexion from standing (hip and knee flexion, ankle dorsiflexion positive)",
+        "of flexion from standing (hip and knee flexion, ankle dorsiflexion positive); "
+        f"for {ARM_FORCE}: the figure's posture, both arms or left_/right_ before the joint",
+    )
+    parser.add_argument(
+        "--posture",
+        metavar="FILE.json",
+        help=f"{ARM_FORCE}: HAnim joint centres in metres (+x left, +y up, +z forward): "
+        "l_/r_metacarpophalangeal_3, l_/r_radiocarpal, l_/r_elbow, l_/r_shoulder, vc7, vl5",
+    )
+    parser.add_argument(
+        "--direction",
+        metavar="DIR",
+        help=f"{ARM_FORCE}: the hand force's direction: up, down, forward, back, left, right "
+        "or X,Y,Z on HAnim's axes (a vector with negative parts as --direction=-0.2,-0.3,0.9)",
+    )
+    parser.add_argument(
+        "--load",
+        metavar="LOAD",
+        help=f"{ARM_FORCE}: a hand force, e.g. 60N or '15 lbf' (N without a unit); hip, knee "
+        "and ankle: a torque, e.g. '120 N-m'; prints the percent capable of it",
+    )
+    parser.add_argument(
+        "--capable",
+        type=float,
+        metavar="PERCENT",
+        help=f"{ARM_FORCE}: the force this percent of people can exert (default 75)",
     )
     parser.add_argument(
         "--strength-data",
@@ -122,7 +156,8 @@ def register(commands: SubParsers) -> None:
     parser.add_argument(
         "--unit",
         choices=(*TORQUE_UNITS, *FORCE_UNITS),
-        help="torque: ft-lb (default) or N-m; grip force: N (default) or lbf",
+        help="default the source's unit: N-m (Anderson et al. 2007), ft-lb (the example "
+        "data), N (the grips, arm_force); else ft-lb or N-m for a torque, N or lbf for a force",
     )
     parser.add_argument(
         "--percentile",
@@ -148,14 +183,29 @@ def register(commands: SubParsers) -> None:
     parser.add_argument(
         "--factor", default="", help="non-dominant limb scaling factor (default 1/1.116)"
     )
+    parser.add_argument(
+        "--assumed-modifiers",
+        action="store_true",
+        help="the example data: apply the isokinetic decay (--strength-type, --motion-speed) "
+        "and the training gain (--training-level), which have no published source for these "
+        "motions (off unless asked for; labelled when on)",
+    )
     parser.add_argument("--file", metavar="F", help="strength file (default datasets/strength.dat)")
     parser.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.motion.strip().lower().replace(" ", "_") == ARM_FORCE:
+        # deferred: cli.strength_arm (numpy, model.hanim) — off sass --help, sass --version (sass_tui/startup.py)
+        from sass_tui.cli.strength_arm import run_arm_force
+
+        return run_arm_force(args)
     # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import StrengthError
 
+    for option in ("posture", "direction", "capable"):
+        if getattr(args, option) is not None:
+            raise StrengthError(f"--{option} is for {ARM_FORCE} (the Arm Force Field)")
     motion = lower_limb_motion(args.motion)
     grip = grip_motion(args.motion)
     if args.strength_data is not None:
@@ -180,7 +230,9 @@ def run(args: argparse.Namespace) -> int:
     if args.unit is not None and args.unit not in units:
         what = "a grip force" if data_set == GRIP_DATA_SET else "a joint torque"
         raise StrengthError(f"--unit {args.unit}: {what} is given in {' or '.join(units)}")
-    args.unit = args.unit or units[0]
+    # Each answer in its source's unit unless --unit: the example data's (the
+    # report's) ft-lb, Anderson et al. 2007's N-m, HFDS 2003's N.
+    args.unit = args.unit or {DATA_SET: "N-m", EXAMPLE_DATA_SET: "ft-lb"}.get(data_set, units[0])
     if data_set == GRIP_DATA_SET:
         return _grip(args, grip)
     if args.percentile is None:
@@ -304,6 +356,12 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
         angle = min(max(peak, lower), upper)
     answer = lower_limb_strength(motion, subject, angle, speed, args.percentile)
     check_angle(figure, args.side, axis, answer.angle)
+    load = None if args.load is None else parse_quantity(args.load, "N_m")
+    share = (
+        None
+        if load is None
+        else lower_limb_percent_capable(motion, subject, load, answer.angle, speed)
+    )
     unit = unit_name(args.unit)
     value = float(convert(answer.torque, "N_m", unit))
     how = "isometric" if speed == 0 else f"{args.strength_type} at {speed:g} deg/s"
@@ -312,31 +370,50 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
     if args.person is not None:
         source += f"; predicted for {args.person} from their own gender, age, mass and stature"
     shown: list[tuple[float, float]] = []
+    capable: list[tuple[float, float]] = []
     if args.plot:
         lower, upper = joint_limit_range(figure, args.side, axis)
         curve = lower_limb_curve(motion, subject, lower, upper, speed, args.percentile)
         shown = [(x, float(convert(y, "N_m", unit))) for x, y in curve]
+        if load is not None:
+            # percent capable against the torque, at the angle asked, to the 99.5th percentile
+            top = lower_limb_strength(motion, subject, answer.angle, speed, 99.5).torque
+            capable = [
+                (
+                    float(convert(top * i / 60, "N_m", unit)),
+                    lower_limb_percent_capable(motion, subject, top * i / 60, answer.angle, speed),
+                )
+                for i in range(61)
+            ]
     if args.format == "json":
         print(
             json.dumps(
                 {
                     "motion": motion,
                     "side": args.side,
-                    "value": round(value, 4),
+                    "value": round(value, TORQUE_DECIMALS),
                     "unit": DISPLAY[unit],
-                    "angles": {axis: answer.angle},
+                    "angles": {axis: round(answer.angle, ANGLE_DECIMALS)},
                     "strength_type": args.strength_type,
                     "motion_speed": speed,
                     "gender": args.gender,
                     "age_group": answer.group,
-                    "mass_kg": figure.mass,
-                    "stature_m": figure.stature / 100.0,
+                    "mass_kg": round(figure.mass, 1),
+                    "stature_m": round(figure.stature / 100.0, 3),
                     "percentile": args.percentile,
-                    "peak_angle": answer.peak_angle,
+                    "peak_angle": round(answer.peak_angle, ANGLE_DECIMALS),
+                    "load_N_m": None if load is None else round(load, 2),
+                    "capable_curve": [[round(x, TORQUE_DECIMALS), round(y, 1)] for x, y in capable]
+                    or None,
+                    "percent_capable": None if share is None else round(share, 1),
                     "source": source,
                     "person": args.person,
                     "predicted": args.person is not None,
-                    "curve": [[round(x, 4), round(y, 4)] for x, y in shown] if args.plot else None,
+                    "curve": [
+                        [round(x, ANGLE_DECIMALS), round(y, TORQUE_DECIMALS)] for x, y in shown
+                    ]
+                    if args.plot
+                    else None,
                 }
             )
         )
@@ -347,11 +424,22 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
         f"{figure.mass:g} kg, {figure.stature / 100.0:g} m, "
         f"{args.percentile:g}th percentile) at {axis}={answer.angle:.4g}"
     )
+    if share is not None and load is not None:
+        print(
+            f"percent capable of {float(convert(load, 'N_m', unit)):.2f} {DISPLAY[unit]} at "
+            f"{axis}={answer.angle:.4g}: {share:.1f} % of {GENDER_WORDS[args.gender]} "
+            f"{answer.group} (C1's spread, {CITATION} Table 3)"
+        )
     print(f"source: {source}")
     if args.plot:
         lower, upper = shown[0][0], shown[-1][0]
         print(f"{motion.replace('_', ' ')} over {axis} {lower:g} to {upper:g} deg (joint limits):")
         for line in text_plot(shown, DISPLAY[unit], (answer.angle, value)):
+            print(line)
+    if capable and share is not None and load is not None:
+        print(f"percent capable against the torque at {axis}={answer.angle:.4g}:")
+        mark = (float(convert(load, "N_m", unit)), share)
+        for line in text_plot(capable, "%", mark, what="percent capable", across=DISPLAY[unit]):
             print(line)
     return 0
 
@@ -360,20 +448,35 @@ def _example(args: argparse.Namespace) -> int:
     """An arm motion from the example strength file (or --file)."""
     # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.strength import (
+        ASSUMED_LABEL,
+        ASSUMED_MODIFIERS,
         EXTRAPOLATION_MARGIN_DEG,
         StrengthError,
         StrengthSheet,
+        assumed_modifiers_asked,
         motion_index,
         parse_joint_axis,
         parse_side_factor,
         read_strength_file,
     )
 
+    if args.load is not None:
+        raise StrengthError(
+            "--load: the example data have no spread of people; percent capable is given "
+            "for arm_force and the hip, knee and ankle motions"
+        )
     data = read_strength_file(args.file)
     figure = _figure(args)
     for name in STRENGTH_PARAMETERS:
         figure.set_strength_parameter(name, getattr(args, name))
     sheet = StrengthSheet(data, figure)
+    if assumed_modifiers_asked(figure) and not args.assumed_modifiers:
+        raise StrengthError(
+            f"--strength-type {args.strength_type}, --training-level {args.training_level:g}: "
+            f"the {ASSUMED_MODIFIERS} have no published source for these motions; "
+            "--assumed-modifiers applies sass's assumptions, labelled (docs/model.md)"
+        )
+    sheet.assumed_modifiers = args.assumed_modifiers
     sheet.side = args.side
     sheet.non_dominant_factor = parse_side_factor(args.factor)
     sheet.set_percentile(args.percentile)
@@ -402,13 +505,14 @@ def _example(args: argparse.Namespace) -> int:
                 {
                     "motion": MOTION_NAMES[index],
                     "side": row.side,
-                    "value": round(row.value, 4),
+                    "value": round(row.value, TORQUE_DECIMALS),
                     "unit": row.unit,
                     "angles": dict(zip(JOINT_AXES, row.angles)),
                     "how": row.source,
                     "extrapolated": row.extrapolated,
                     "gender": figure.gender,
                     "percentile": sheet.percentile,
+                    "assumed_modifiers": ASSUMED_LABEL if sheet.assumed_modifiers else None,
                     "source": data.source,
                 }
             )
@@ -427,6 +531,8 @@ def _example(args: argparse.Namespace) -> int:
         f"{figure.gender}, {sheet.percentile:g}th percentile) at {where}"
     )
     print(f"source: {data.source}")
+    if sheet.assumed_modifiers:
+        print(f"note: {ASSUMED_LABEL}")
     if data.test_data:
         print(f"note: {data.label}: values made for testing (docs/data-sources.md, Strength)")
     return 0
@@ -452,6 +558,7 @@ def _grip(args: argparse.Namespace, motion: str | None) -> int:
             ("--mass", args.mass is not None),
             ("--stature", args.stature is not None),
             ("--plot", args.plot),
+            ("--load", args.load is not None),
             ("--file", args.file is not None),
             ("--factor", bool(args.factor)),
             ("--training-level", bool(args.training_level)),
@@ -485,7 +592,7 @@ def _grip(args: argparse.Namespace, motion: str | None) -> int:
                     "motion": motion,
                     "side": args.side,
                     "sided": answer.sided,
-                    "value": round(value, 4),
+                    "value": round(value, 1),
                     "unit": DISPLAY[unit],
                     "force_N": answer.force,
                     "printed": printed,

@@ -7,7 +7,10 @@ query, by default the ANSUR II people.  One SELECT evaluates every limit for
 every person of the population: each limit is 1 (passes), 0 (fails) or NULL
 (the person lacks a value the limit reads, e.g. strength for ANSUR II people).
 
-Shares are counted, never modelled:
+Shares are counted, never modelled, but for a strength limit (`sass fit
+--strength`): there each person has a probability of meeting it, from the
+published spread of strength (model/percent_capable.py), and the counts and
+shares below are the expected ones (the mean of each person's probability):
 - A person lacking any limited value is "not measured" and left out of every
   share (never counted as fitting); each limit reports how many people of the
   population lack its value.
@@ -47,6 +50,7 @@ from sass_tui.db.query import (
 )
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
+from sass_tui.model.percent_capable import strength_limit_probability
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -67,7 +71,7 @@ class GenderShare:
 
     gender: str
     n: int
-    fit: int
+    fit: float  # people accommodated: a whole number, or expected with strength limits
     not_measured: int
     percent: float | None  # None when n == 0
     naive_percent: float | None
@@ -76,8 +80,8 @@ class GenderShare:
 @dataclass(frozen=True)
 class LimitShare:
     limit: str
-    excluded: int  # measured people failing this limit
-    only_limit: int  # measured people failing this limit and no other
+    excluded: float  # measured people failing this limit (expected, for a strength limit)
+    only_limit: float  # measured people failing this limit and no other
     not_measured: int  # population people lacking the value(s) it reads
     percent: dict[str, float | None]  # its own share per gender (measured people)
 
@@ -251,19 +255,19 @@ def fit_test(
         raise FitError(f"the population {people_query.text!r} selects nobody")
     ids = np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows))
     gender = np.array([r[1] for r in rows], dtype=object)
-    # (people, limits): 1.0 passes, 0.0 fails, NaN not measured.
+    # (people, limits): 1.0 passes, 0.0 fails, NaN not measured; a strength
+    # limit's column is each person's probability of meeting it (docs/strength.md).
     first = 5 if strength_limits else 2
     passes = np.array([r[first:] for r in rows], dtype=float).reshape(len(rows), len(terms))
     texts = tuple(t.text for t in terms)
     if strength_limits:
-        predicted = [
-            [
-                limit.passes(r[1], *(math.nan if v is None else float(v) for v in r[2:5]))
-                for limit in strength_limits
-            ]
-            for r in rows
+        body_of = [
+            np.array([math.nan if r[i] is None else float(r[i]) for r in rows]) for i in (2, 3, 4)
         ]
-        passes = np.hstack([passes, np.array(predicted, dtype=float)])
+        predicted = [
+            strength_limit_probability(limit, gender, *body_of) for limit in strength_limits
+        ]
+        passes = np.hstack([passes, np.column_stack(predicted)])
         texts += tuple(f"{limit.text} (predicted)" for limit in strength_limits)
     steps(2, 3)
     result = _summarise(conn, texts, people_query.text, weights, ids, gender, passes, failing)
@@ -281,12 +285,12 @@ def _target_share(
 
     w = target.of(ids)
     measured = ~np.isnan(passes).any(axis=1)
-    fits = measured & (passes == 1.0).all(axis=1)
+    fits = np.where(measured, np.nan_to_num(passes, nan=1.0).prod(axis=1), 0.0)
     total = float(w[measured].sum())
     return TargetShare(
         name=target.target.name,
         words=target.target.words(),
-        percent=100.0 * float(w[fits].sum()) / total if total > 0 else None,
+        percent=100.0 * float((w * fits).sum()) / total if total > 0 else None,
         effective_n=kish_effective_n(w[measured]),
     )
 
@@ -303,8 +307,13 @@ def _summarise(
 ) -> FitResult:
     unmeasured = np.isnan(passes)
     measured = ~unmeasured.any(axis=1)
-    fails = passes == 0.0  # NaN compares False: only a definite failure
-    fail_count = fails.sum(axis=1)
+    # Each limit's probability of being met: 1 or 0 for a measured value, a
+    # person's predicted probability for a strength limit; the expected counts
+    # are whole numbers where every limit is measured.
+    met = np.nan_to_num(passes, nan=1.0)
+    fits = met.prod(axis=1)
+    fails = passes < 0.5  # NaN compares False: only a failure (or a likely one)
+    alone = [(1.0 - met[:, k]) * np.delete(met, k, axis=1).prod(axis=1) for k in range(len(limits))]
     genders: dict[str, GenderShare] = {}
     limit_percent: list[dict[str, float | None]] = [{} for _ in limits]
     for g in GENDERS:
@@ -313,11 +322,8 @@ def _summarise(
             continue
         counted = mine & measured
         n = int(counted.sum())
-        fit = int((counted & (fail_count == 0)).sum())
-        own = [
-            100.0 * float((counted & ~fails[:, k]).sum()) / n if n else None
-            for k in range(len(limits))
-        ]
+        fit = _count(float(fits[counted].sum()))
+        own = [100.0 * float(met[counted, k].sum()) / n if n else None for k in range(len(limits))]
         for k, share in enumerate(own):
             limit_percent[k][g] = share
         naive = 100.0 * math.prod(s / 100.0 for s in own if s is not None) if n else None
@@ -337,8 +343,8 @@ def _summarise(
     by_limit = tuple(
         LimitShare(
             limit=limit,
-            excluded=int((measured & fails[:, k]).sum()),
-            only_limit=int((measured & fails[:, k] & (fail_count == 1)).sum()),
+            excluded=_count(float((1.0 - met[measured, k]).sum())),
+            only_limit=_count(float(alone[k][measured].sum())),
             not_measured=int(unmeasured[:, k].sum()),
             percent=limit_percent[k],
         )
@@ -355,6 +361,12 @@ def _summarise(
         by_limit=by_limit,
         failing=failing,
     )
+
+
+def _count(expected: float) -> float:
+    """An expected number of people: whole (an int) when it is one, else to 0.01."""
+    whole = round(expected)
+    return whole if abs(expected - whole) < 1e-9 else round(expected, 2)
 
 
 def _weighted(mix: dict[str, float], percent: dict[str, float | None]) -> float | None:

@@ -39,8 +39,13 @@ def format_table(result: FitResult) -> str:
     lines += [
         "",
         "naive = the product of each limit's own share (what univariate percentiles suggest)",
-        "",
     ]
+    if any(limit.endswith("(predicted)") for limit in result.limits):
+        lines.append(
+            "a (predicted) strength limit: each person's probability of meeting it, so fit "
+            "and excluded are expected numbers of people (docs/strength.md)"
+        )
+    lines.append("")
     width = max(len("limit"), *(len(b.limit) for b in result.by_limit))
     lines.append(
         f"{'limit':<{width}} {'excluded':>9} {'only limit':>11} {'not measured':>13}"

@@ -313,6 +313,30 @@ def lower_limb_strength(
     )
 
 
+def lower_limb_percent_capable(
+    motion: str,
+    subject: Subject,
+    torque: float,
+    angle: float | None = None,
+    speed: float = 0.0,
+    data: Anderson2007 | None = None,
+) -> float:
+    """The share (%) of the subject's group able to exert `torque` N-m: C1
+    normal with Table 3's mean and SD (docs/strength.md, "Percentiles"), the
+    curve's shape at its means, so 100 (1 - Phi((T / (m g h shape) - C1) / SD))."""
+    if not math.isfinite(torque) or torque < 0:
+        raise PublishedStrengthError(f"load {torque:g} N-m: expected a torque of 0 or more")
+    data = data or read_anderson2007()
+    mean_c1 = lower_limb_strength(motion, subject, angle, speed, 50.0, data)
+    key = (motion, subject.gender, mean_c1.group)
+    # the torque per unit of C1 at this angle and speed
+    per_c1 = mean_c1.torque / mean_c1.c1
+    if per_c1 <= 0:
+        return 0.0 if torque > 0 else 100.0
+    z = (torque / per_c1 - data.mean[key].c1) / data.sd[key].c1
+    return 100.0 * (1.0 - _STANDARD.cdf(z))
+
+
 def lower_limb_curve(
     motion: str,
     subject: Subject,
@@ -341,9 +365,12 @@ def text_plot(
     mark: tuple[float, float] | None = None,
     width: int = 61,
     height: int = 12,
+    what: str = "torque",
+    across: str = "deg",
 ) -> list[str]:
-    """A torque-angle curve as lines of plain text (no colour, no terminal
-    codes): torque up, angle across, `*` the curve, `o` the asked angle."""
+    """A curve as lines of plain text (no colour, no terminal codes): `what`
+    (torque) up, `across` (the angle, deg) across, `*` the curve, `o` the
+    point asked about."""
     xs = [x for x, _ in curve]
     ys = [y for _, y in curve]
     top = max(ys + ([mark[1]] if mark else [])) or 1.0
@@ -368,9 +395,9 @@ def text_plot(
         tick = f"{value:.0f}" if i in (0, height // 2, height - 1) else ""
         lines.append(f"{tick:>{label}} |{''.join(row)}")
     lines.append(f"{'':>{label}} +{'-' * width}")
-    left, right = f"{lo:g}", f"{hi:g} deg"
+    left, right = f"{lo:g}", f"{hi:.4g} {across}"
     lines.append(f"{'':>{label}}  {left}{right:>{width - len(left)}}")
-    lines.insert(0, f"{'':>{label}}  torque ({unit})")
+    lines.insert(0, f"{'':>{label}}  {what} ({unit})")
     return lines
 
 

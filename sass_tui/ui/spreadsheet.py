@@ -84,6 +84,8 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands):
         Binding("b", "see_figure", "Draw", tooltip="See figure"),
         Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         Binding("t", "strength_curve", show=False),
+        Binding("T", "task", show=False),
+        Binding("M", "assumed_modifiers", show=False),
         *(
             Binding(spec.key, spec.action, spec.footer)
             for spec in COMMANDS
@@ -295,6 +297,15 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands):
         self.app.push_screen(MessageLog(self.message_line.history))
 
     # --- Right -> Left -------------------------------------------------------------------
+    def action_assumed_modifiers(self) -> None:
+        """Strength page: the isokinetic decay and training gain on or off (no published source)."""
+        strength = self.session.strength_sheet
+        if not (self.data_group == STRENGTH and strength is not None):
+            self.say("The assumed modifiers apply to the Strength group (press s).")
+            return
+        self.say(strength.toggle_assumed_modifiers())
+        self.refresh_screen()
+
     def action_switch_side(self) -> None:
         """Show the other side's strength (right or left limb)."""
         strength = self.session.strength_sheet

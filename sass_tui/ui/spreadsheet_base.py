@@ -198,6 +198,13 @@ class SheetScreenBase(SassScreen):
         widget.typing_done()
         return True
 
+    def action_task(self) -> None:
+        """Task: a posture and loads on the hands; the joints' moments and who can do it."""
+        # deferred: ui.task_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)
+        from sass_tui.ui.task_screen import TaskScreen
+
+        self.app.push_screen(TaskScreen(self.session.figure))
+
     def action_strength_curve(self) -> None:
         """Strength curves: hip, knee and ankle torque over the joint's range."""
         # deferred: ui.strength_curve_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)

@@ -182,22 +182,33 @@ class FileCommands(SheetScreenBase):
             return
         path = self.sass_app.user_path(name.strip() or default)
         sections = []
+        example = ""
         strength = self.session.strength_sheet
         if strength is not None:
-            answer = await self.answer_to("Include strength in the figure? (Y/n)")
+            answer = await self.answer_to(
+                "Include strength in the figure? (Y/n; 'example' adds the invented arm data)"
+            )
             if answer is None:
                 self.say(CANCELLED)
                 return
             word = answer.strip().lower()
-            if word in ("", "y", "yes"):
+            if word in ("", "y", "yes", "example"):
                 # deferred: model.strength — off the first screen (sass_tui/startup.py)
                 from sass_tui.model.strength import fig_section, lower_limb_fig_section
 
-                sections = [fig_section(strength), lower_limb_fig_section(self.figure)]
+                # No invented strength unless asked for by name (docs/strength.md):
+                # the arm's lines are measured data's, or the example data's on 'example'.
+                sections = [lower_limb_fig_section(self.figure)]
+                if not strength.data.test_data or word == "example":
+                    sections.insert(0, fig_section(strength))
+                if strength.data.test_data and word == "example":
+                    example = " Its arm strength is the example data (invented), not measured."
             elif word not in ("n", "no"):
-                raise AnswerError(f"expected y or n, got {answer.strip()!r}; nothing written")
+                raise AnswerError(
+                    f"expected y, n or example, got {answer.strip()!r}; nothing written"
+                )
         if await self._may_write(path):
-            self._write_figure(path, sections)
+            self._write_figure(path, sections, example)
 
     async def _may_write(self, path: Path) -> bool:
         """A new file may be written; an existing one only after the user says y."""
@@ -212,7 +223,7 @@ class FileCommands(SheetScreenBase):
         self.say(f"Not written; {path} kept as it was.")
         return False
 
-    def _write_figure(self, path: Path, sections: list) -> None:
+    def _write_figure(self, path: Path, sections: list, said: str = "") -> None:
         """Rendered here, on the UI thread: the worker gets the text, never the
         figure the user may be editing meanwhile."""
         # deferred: model.figfile — off the first screen (sass_tui/startup.py)
@@ -226,7 +237,7 @@ class FileCommands(SheetScreenBase):
             if filled
             else ""
         )
-        self.write_text(path, text, f"Wrote {path}.{note}")
+        self.write_text(path, text, f"Wrote {path}.{note}{said}")
 
     @work(thread=True, group="write", exit_on_error=False)
     def write_text(self, path: Path, text: str, done: str) -> None:

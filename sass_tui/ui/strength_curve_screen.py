@@ -5,7 +5,8 @@ joint's range (its joint limits), drawn with textual-plotext.
 Opened from the spreadsheet (`t`).  The figure's gender, mass, stature and
 joint limits are read when the screen opens and at each redraw; the age
 (the paper's age group), the percentile and the concentric speed are this
-screen's own (`a`, `c`, `v`), `n`/`p` step through the six motions.  The
+screen's own (`a`, `c`, `v`), `n`/`p` step through the six motions; `l`
+asks for a torque and draws percent capable against the torque instead.  The
 source of the numbers is on the title line, as on every strength answer.
 """
 
@@ -26,6 +27,7 @@ from sass_tui.model.published_strength import (
     Subject,
     age_group,
     lower_limb_curve,
+    lower_limb_percent_capable,
     lower_limb_strength,
 )
 from sass_tui.model.units import parse_quantity
@@ -47,6 +49,7 @@ class StrengthCurveScreen(SassScreen):
         Binding("a", "age", "Age"),
         Binding("c", "percentile", "Pctl", tooltip="Percentile"),
         Binding("v", "speed", "Speed"),
+        Binding("l", "load", "Load", tooltip="Percent capable of a torque"),
     ]
 
     def __init__(self, session, side: str = "right", percentile: float = 50.0) -> None:
@@ -63,6 +66,10 @@ class StrengthCurveScreen(SassScreen):
         # What was last handed to plotext: (angles, torques), for the tests.
         self.plotted: tuple[list[float], list[float]] = ([], [])
         self.source = ""
+        # A torque (N-m) asked about: the plot is then percent capable against
+        # the torque at the motion's peak angle within the joint limits.
+        self.load: float | None = None
+        self.capable: float | None = None
 
     def compose(self):
         yield Static("", id="curve-title")
@@ -114,13 +121,17 @@ class StrengthCurveScreen(SassScreen):
             self.source += (
                 f"; predicted for {self.person} from their own gender, age, mass and stature"
             )
-        plot.plot(angles, torques, marker="braille")
-        plot.xlim(lower, upper)
-        plot.ylim(0, max(torques + [1.0]) * 1.05)
-        plot.xlabel(f"{axis} (deg of flexion from standing)")
-        plot.ylabel("torque (N-m)")
         top = max(torques)
         at = angles[torques.index(top)]
+        if self.load is not None:
+            self._plot_capable(plot, motion, subject, at)
+        else:
+            self.capable = None
+            plot.plot(angles, torques, marker="braille")
+            plot.xlim(lower, upper)
+            plot.ylim(0, max(torques + [1.0]) * 1.05)
+            plot.xlabel(f"{axis} (deg of flexion from standing)")
+            plot.ylabel("torque (N-m)")
         how = "isometric" if self.speed == 0 else f"concentric at {self.speed:g} deg/s"
         age = "age not given" if self.age is None else f"age {self.age:g}"
         self.query_one("#curve-title", Static).update(
@@ -140,6 +151,42 @@ class StrengthCurveScreen(SassScreen):
             )
         )
         widget.refresh()
+
+    def _plot_capable(self, plot, motion: str, subject: Subject, angle: float) -> None:
+        """Percent capable against the torque at `angle` (C1's published spread)."""
+        assert self.load is not None
+        most = lower_limb_strength(motion, subject, angle, self.speed, 99.5).torque
+        torques = [most * i / 60 for i in range(61)]
+        shares = [
+            lower_limb_percent_capable(motion, subject, x, angle, self.speed) for x in torques
+        ]
+        self.capable = lower_limb_percent_capable(motion, subject, self.load, angle, self.speed)
+        self.plotted = (torques, shares)
+        plot.plot(torques, shares, marker="braille")
+        plot.vline(self.load)
+        plot.ylim(0, 100)
+        plot.xlabel(
+            f"torque (N-m) at {angle:.0f} deg; {self.load:g} N-m: {self.capable:.1f} % capable"
+        )
+        plot.ylabel("percent capable (%)")
+
+    def action_load(self) -> None:
+        """Percent capable of a torque (N-m; RETURN = the torque curve again)."""
+
+        def answer(text: str) -> None:
+            if not text.strip():
+                self.load = None
+            else:
+                value = parse_quantity(text, "N_m")
+                if not value >= 0:
+                    raise PublishedStrengthError(f"torque {text.strip()!r}: expected 0 or more")
+                self.load = value
+            self.draw()
+            if self.capable is not None:
+                self.say(f"{self.capable:.1f} % capable of {self.load:g} N-m at the peak angle.")
+
+        shown = "" if self.load is None else f"{self.load:g}"
+        self.ask("Torque to exert (N-m; RETURN = the torque curve):", answer, shown)
 
     def action_back(self) -> None:
         """Back to the spreadsheet."""

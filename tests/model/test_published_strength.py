@@ -16,15 +16,18 @@ import json
 import math
 from statistics import NormalDist
 
+import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
+from sass_tui.model.percent_capable import lower_limb_capable
 from sass_tui.model.published_strength import (
     PublishedStrengthError,
     Subject,
     age_group,
+    lower_limb_percent_capable,
     lower_limb_strength,
     parse_strength_limit,
     read_anderson2007,
@@ -102,13 +105,20 @@ def test_ages_outside_18_to_100_are_refused_with_the_groups_listed(age):
 def test_cli_answers_name_their_source(capsys):
     assert main(["strength", "knee_extension", "--mass", "75", "--stature", "175"]) == 0
     out = capsys.readouterr().out
-    assert "209.87 N-m" not in out  # the default unit is ft-lb
+    assert "209.87 N-m" in out  # in the source's unit: N-m
+    assert main(["strength", "knee_extension", "--unit", "ft-lb", "--mass", "75"]) == 0
+    assert " ft-lb " in capsys.readouterr().out
     assert "source: Anderson et al. 2007, young men, mean" in out
     assert main(["strength", "knee_extension", "--unit", "N-m", "--mass", "75"]) == 0
     assert main(["strength", "--format", "json", "--unit", "N-m", "knee_extension"]) == 0
     answer = json.loads(capsys.readouterr().out.splitlines()[-1])
     assert answer["source"] == "Anderson et al. 2007, young men, mean"
-    assert answer["value"] == pytest.approx(0.163 * answer["mass_kg"] * 9.81 * answer["stature_m"])
+    assert answer["value"] == pytest.approx(
+        0.163 * answer["mass_kg"] * 9.81 * answer["stature_m"], abs=0.01
+    )
+    # to the data's precision
+    assert answer["angles"]["knee_y"] == 64.9 and answer["peak_angle"] == 64.9
+    assert answer["value"] == round(answer["value"], 2)
     assert main(["strength", "shoulder_abduction", "shoulder_x=30"]) == 0
     assert "source: example data (invented, for the report's worked examples)" in (
         capsys.readouterr().out
@@ -164,7 +174,8 @@ def test_fig_names_the_source_of_every_strength_section(tmp_path):
     from sass_tui.model.figfile import read_fig
 
     out = tmp_path / "m.fig"
-    assert main(["fig", "-o", str(out), "--mass", "75", "--stature", "175"]) == 0
+    argv = ["fig", "-o", str(out), "--mass", "75", "--stature", "175"]
+    assert main([*argv, "--strength-data", "example"]) == 0
     text = out.read_text()
     assert "source: example data (invented, for the report's worked examples) */" in text
     assert (
@@ -220,3 +231,64 @@ def test_cli_plot_as_json_gives_the_curve_over_the_joint_limits(capsys):
     for angle, torque in curve[::10]:
         expected = c1 * 70 * 9.81 * 1.7 * max(0.0, math.cos(c2 * (math.radians(angle) - c3)))
         assert torque == pytest.approx(expected, rel=0.005, abs=1e-3)
+
+
+@pytest.mark.parametrize("torque", [60.0, 120.0, 150.0, 200.0])
+def test_knee_extension_percent_capable_at_the_peak_is_one_minus_phi(torque):
+    # Table 3, knee extension, women 18-25: C1 mean 0.159, SD 0.028; C3 1.274 rad.
+    mass, stature = 62.0, 1.64
+    expected = 100 * (1 - NormalDist().cdf((torque / (mass * 9.81 * stature) - 0.159) / 0.028))
+    subject = Subject("female", 22, mass, stature)
+    got = lower_limb_percent_capable("knee_extension", subject, torque)
+    assert got == pytest.approx(expected, abs=1e-6)
+    # and at the peak angle given in degrees, as the CLI gives it
+    at_peak = lower_limb_percent_capable("knee_extension", subject, torque, math.degrees(1.274))
+    assert at_peak == pytest.approx(expected, abs=1e-6)
+
+
+def test_percent_capable_is_the_percentile_read_backwards():
+    subject = Subject("male", 60, 80.0, 1.78)
+    for percentile in (5.0, 50.0, 90.0):
+        torque = lower_limb_strength("hip_extension", subject, 30, 0, percentile).torque
+        share = lower_limb_percent_capable("hip_extension", subject, torque, 30)
+        assert share == pytest.approx(100 - percentile, abs=1e-6)
+
+
+def test_cli_load_gives_percent_capable(capsys):
+    argv = ["strength", "knee_extension", "--gender", "female", "--mass", "62", "--stature"]
+    assert main([*argv, "164", "--age", "22", "--load", "120 N-m", "--format", "json"]) == 0
+    answer = json.loads(capsys.readouterr().out)
+    expected = 100 * (1 - NormalDist().cdf((120 / (62 * 9.81 * 1.64) - 0.159) / 0.028))
+    assert answer["percent_capable"] == pytest.approx(expected, abs=0.05)
+    assert answer["load_N_m"] == 120.0
+    assert main(["strength", "elbow_flexion", "--load", "20"]) == 2
+    assert "the example data have no spread of people" in capsys.readouterr().err
+
+
+def test_many_people_at_once_agree_with_one_at_a_time():
+    people = [("female", 22, 62.0, 1.64), ("male", 60, 85.0, 1.80), ("female", 80, 58.0, 1.55)]
+    genders, ages, masses, statures = zip(*people)
+    many = lower_limb_capable("knee_extension", genders, ages, masses, statures, 120.0, 60.0)
+    for (gender, age, mass, stature), got in zip(people, many):
+        one = lower_limb_percent_capable(
+            "knee_extension", Subject(gender, age, mass, stature), 120.0, 60.0
+        )
+        assert 100 * got == pytest.approx(one, abs=1e-9)
+    unknown = lower_limb_capable("knee_extension", ["male"] * 3, [17, 30, 30], [80, 0, 80],
+                                 [1.8, 1.8, float("nan")], 100.0)  # fmt: skip
+    assert np.isnan(unknown).all()
+
+
+def test_cli_plot_with_a_load_gives_the_curve_of_percent_capable(capsys):
+    argv = ["strength", "knee_extension", "--gender", "female", "--load", "120 N-m", "--plot"]
+    assert main([*argv, "--format", "json"]) == 0
+    answer = json.loads(capsys.readouterr().out)
+    curve = answer["capable_curve"]
+    assert curve[0] == [0.0, 100.0] and curve[-1][1] == pytest.approx(0.5, abs=0.05)
+    assert all(a[1] >= b[1] for a, b in zip(curve, curve[1:]))
+    # the load's share lies on the curve
+    below = max(p for p in curve if p[0] <= 120.0)
+    above = min(p for p in curve if p[0] >= 120.0)
+    assert below[1] >= answer["percent_capable"] >= above[1]
+    assert main(argv) == 0
+    assert "percent capable against the torque" in capsys.readouterr().out

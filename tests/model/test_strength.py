@@ -90,6 +90,11 @@ def test_each_modifier_moves_every_value_by_its_documented_amount(male):
     figure.set_strength_parameter("motion_speed", 50)
     assert np.allclose(_values(male), base)  # isometric ignores speed
     figure.set_strength_parameter("strength_type", "isokinetic")
+    # no published source for the decay: off unless asked for, and the title says so
+    assert np.allclose(_values(male), base)
+    assert "isokinetic decay and training gain off" in male.title
+    male.assumed_modifiers = True
+    assert "assumed modifiers on" in male.title
     assert np.allclose(_values(male), base * 46.9 / 68.6)
     figure.set_strength_parameter("strength_type", "isotonic")
     assert np.allclose(_values(male), base * 46.9 / 68.6)
@@ -245,9 +250,24 @@ def test_cli_strength_refuses_an_angle_beyond_the_limit(capsys):
     assert "unknown joint axis 'elbow'" in capsys.readouterr().err
 
 
-def test_fig_includes_strength_unless_told_not_to(tmp_path, capsys):
+def test_fig_carries_no_invented_strength_by_default(tmp_path, capsys):
+    plain = tmp_path / "plain.fig"
+    assert main(["fig", "-o", str(plain)]) == 0
+    text = plain.read_text()
+    assert "TEST DATA" not in text and "example data" not in text
+    names = [n for n in read_fig(plain).variables if n.endswith("_strength")]
+    # only the published hip, knee and ankle (Anderson et al. 2007)
+    assert len(names) == 12 and all(n.split("_")[1] in ("hip", "knee", "ankle") for n in names)
+    assert "note:" not in capsys.readouterr().err
+
+
+def test_fig_includes_the_example_strength_only_by_name(tmp_path, capsys):
     out = tmp_path / "with.fig"
-    assert main(["fig", "-o", str(out)]) == 0
+    assert main(["fig", "--strength-data", "example", "-o", str(out)]) == 0
+    assert (
+        "note: the arm's strength variables are example data (invented, for the report's "
+        "worked examples), not measured strength" in capsys.readouterr().err
+    )
     variables = read_fig(out).variables
     assert variables["right_shoulder_abduction_strength"] == (24.38, "Nm")
     assert variables["left_shoulder_abduction_strength"][0] == pytest.approx(
@@ -273,7 +293,7 @@ def test_every_output_of_the_shipped_test_data_says_so(tmp_path, capsys, data, m
     assert main(["strength", "shoulder_abduction"]) == 0
     assert "test data" in capsys.readouterr().out.lower()
     out = tmp_path / "m.fig"
-    assert main(["fig", "-o", str(out)]) == 0
+    assert main(["fig", "-o", str(out), "--strength-data", "example"]) == 0
     assert (
         "/* strength variables: TEST DATA, not measured strength (strength.dat); "
         "source: example data (invented, for the report's worked examples) */"

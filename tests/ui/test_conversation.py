@@ -56,8 +56,8 @@ def test_escape_and_a_refused_answer_end_the_questions(app_at, drive, tmp_path, 
             await until(pilot, lambda: message(app) == CANCELLED)
             assert not app.spreadsheet.message_line.prompting
             await pilot.press("f", *"x.fig", "enter", *"maybe", "enter")
-            await until(pilot, lambda: "expected y or n" in message(app))
-            assert message(app) == "expected y or n, got 'maybe'; nothing written"
+            await until(pilot, lambda: "expected y, n or example" in message(app))
+            assert message(app) == "expected y, n or example, got 'maybe'; nothing written"
             assert not app.spreadsheet.message_line.prompting
             assert isinstance(app.focused, DataSheet)
 

@@ -4,6 +4,7 @@ and ankle torque over the joint's range, with its source on the title line."""
 from __future__ import annotations
 
 import math
+from statistics import NormalDist
 
 import pytest
 from textual.widgets import Static
@@ -112,5 +113,29 @@ def test_a_real_persons_curve_uses_their_own_age_and_is_marked_predicted(app_at,
             # Table 3, knee extension, women 55-65: C1 0.128 (peak C3 = 65.4 deg)
             expected = 0.128 * person.mass * 9.81 * person.stature / 100
             assert max(screen.plotted[1]) == pytest.approx(expected, rel=0.005)
+
+    drive(scenario())
+
+
+def test_l_draws_percent_capable_against_the_torque(app_at, drive):
+    async def scenario():
+        async with app_at((100, 30), young_man()) as (app, pilot):
+            await pilot.press("t")
+            await pilot.pause()
+            screen = app.screen
+            angles, torques = screen.plotted
+            peak = angles[torques.index(max(torques))]
+            await pilot.press("l")
+            await type_answer(pilot, "150")
+            # Table 3, knee extension, young men: C1 0.163, SD 0.040, C2 1.258, C3 1.133
+            shape = 75 * 9.81 * 1.75 * math.cos(1.258 * (math.radians(peak) - 1.133))
+            expected = 100 * (1 - NormalDist().cdf((150 / shape - 0.163) / 0.040))
+            assert screen.capable == pytest.approx(expected, abs=0.01)
+            load, shares = screen.plotted
+            assert load[0] == 0.0 and shares[0] == pytest.approx(100.0, abs=0.01)
+            assert all(a >= b for a, b in zip(shares, shares[1:]))
+            await pilot.press("l")
+            await type_answer(pilot, "")
+            assert screen.load is None and screen.plotted[0][0] == 0.0  # angles again
 
     drive(scenario())

@@ -235,6 +235,13 @@ def test_global_strength_parameters_move_the_values(drive, app_at):
             await edit_global(pilot, "strength_type", "isokinetic")
             await edit_global(pilot, "motion_speed", "60")
             assert "Strength values recomputed." in message(app)
+            # the isokinetic decay has no published source: off, and said so, until asked for
+            assert row_value(app, "Shoulder abduction") == REPORT_VALUE
+            page = app.spreadsheet.strength_page
+            assert "isokinetic decay and training gain off" in str(page.border_title)
+            await pilot.press("M")
+            assert "Assumed modifiers on" in message(app)
+            assert "assumed modifiers on" in str(page.border_title)
             factor = strength_type_factor("isokinetic", 60.0)
             assert row_value(app, "Shoulder abduction") == round(REPORT_VALUE * factor, 2)
             await edit_global(pilot, "training_level", "2")
@@ -308,17 +315,30 @@ def test_create_figure_with_and_without_strength(drive, app_at, tmp_path, monkey
     async def scenario():
         async with app_at(SIZE) as (app, pilot):
             await pilot.press("f", "enter")
-            assert "Include strength in the figure? (Y/n)" in message(app)
+            assert "Include strength in the figure? (Y/n; 'example'" in message(app)
             await pilot.press("enter")
             await app.workers.wait_for_complete()
             await pilot.pause()
             assert "Wrote MALE50.FIG" in message(app)
-            with_strength = read_fig(tmp_path / "MALE50.FIG").variables
+            # Enter: only published strength, no invented arm strength
+            published = read_fig(tmp_path / "MALE50.FIG").variables
+            assert "right_shoulder_abduction_strength" not in published
+            assert "right_knee_extension_strength" in published
+            assert "TEST DATA" not in (tmp_path / "MALE50.FIG").read_text()
+            # the example data only by name, and said so
+            await pilot.press("f")
+            await paste(pilot, "example.fig")
+            await pilot.press("enter", *"example", "enter")
+            await app.workers.wait_for_complete()
+            await pilot.pause()
+            assert "Its arm strength is the example data (invented)" in message(app)
+            with_strength = read_fig(tmp_path / "example.fig").variables
             value, unit = with_strength["right_shoulder_abduction_strength"]
             assert (value, unit) == (24.38, "Nm")
             assert with_strength["left_shoulder_abduction_strength"][0] == pytest.approx(
                 24.38 * DEFAULT_NON_DOMINANT_FACTOR, abs=0.01
             )
+            assert "source: example data (invented" in (tmp_path / "example.fig").read_text()
             await pilot.press("f")
             await paste(pilot, "plain.fig")
             await pilot.press("enter", "n", "enter")
@@ -331,7 +351,7 @@ def test_create_figure_with_and_without_strength(drive, app_at, tmp_path, monkey
             await pilot.press("f")
             await paste(pilot, "maybe.fig")
             await pilot.press("enter", *"perhaps", "enter")
-            assert "expected y or n" in message(app)
+            assert "expected y, n or example" in message(app)
             assert not (tmp_path / "maybe.fig").exists()
 
     drive(scenario())

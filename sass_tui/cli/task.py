@@ -1,0 +1,180 @@
+"""`sass task`: can the people a product is for do it?  A posture, the loads
+on the hands and a population -> the static moments at the wrists, elbows,
+shoulders, trunk, hips, knees and ankles, and the percent capable where a
+published model covers the joint (the Arm Force Field for each loaded hand,
+Anderson et al. 2007 for hips, knees and ankles), the limiting one named
+(model/task.py, docs/strength.md "A task").
+
+    sass task shoulder_y=60 elbow_y=30 --right-load 100N
+    sass task knee_y=60 hip_y=70 shoulder_y=45 --left-load 60N --right-load 60N
+    sass task shoulder_y=90 elbow_y=0 --right-load "15 lbf" --person "ANSUR II F 10037"
+    sass task shoulder_y=90 --right-load 50N --target nasa-women
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from sass_tui.cli.options import SubParsers, add_db_option
+from sass_tui.model.published_strength import GENDER_WORDS
+from sass_tui.model.vocabulary import GENDERS
+
+LOAD_HELP = "the load on the {side} hand, e.g. 60N or '15 lbf' (N without a unit)"
+DIRECTION_HELP = (
+    "the direction the load on the {side} hand acts: up, down (default: a weight held), "
+    "forward, back, left, right or X,Y,Z on HAnim's axes; the hand exerts the opposite"
+)
+
+
+def register(commands: SubParsers) -> None:
+    task = commands.add_parser(
+        "task",
+        help="a task's joint moments and the percent capable of doing it",
+        description="The static moments of a posture with loads on the hands, from the "
+        "figure's own segment masses, and the share of women and men (or a person, or a "
+        "target population) able to exert them where a published model covers the joint: "
+        "the Arm Force Field (La Delfa & Potvin 2017) for each loaded hand, Anderson et al. "
+        "2007 for hips, knees and ankles.  The trunk and the wrists have no published model "
+        "in sass: their moments are given and said to be uncovered (docs/strength.md).",
+    )
+    task.add_argument(
+        "angles",
+        nargs="*",
+        metavar="JOINT=ANGLE",
+        help="the posture: shoulder_x/y/z, elbow_y, wrist_x/y/z, hip_y, knee_y, ankle_y "
+        "(deg; both sides, or left_/right_ before the joint); standing if none",
+    )
+    for side in ("left", "right"):
+        task.add_argument(f"--{side}-load", metavar="FORCE", help=LOAD_HELP.format(side=side))
+        task.add_argument(
+            f"--{side}-direction",
+            metavar="DIR",
+            default="down",
+            help=DIRECTION_HELP.format(side=side),
+        )
+    who = task.add_mutually_exclusive_group()
+    who.add_argument("--gender", choices=GENDERS, help="one gender (default: women and men)")
+    who.add_argument("--person", metavar="ID", help="a real person of the database (id or name)")
+    who.add_argument(
+        "--target",
+        metavar="NAME",
+        help="a target population (sass target): its people, each scaled to their own size, "
+        "weighted",
+    )
+    task.add_argument("--age", type=float, help="years, picks Anderson et al. 2007's age group")
+    task.add_argument("--mass", help="the figure's body mass, e.g. 70 or '154 lb' (kg)")
+    task.add_argument("--stature", help="the figure's stature, e.g. 165 or '65 in' (cm)")
+    task.add_argument("--format", choices=("text", "json"), default="text", help="output form")
+    add_db_option(task)
+    task.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    # deferred: model.task, model.posture, model.units — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.model.arm_force_field import parse_direction
+    from sass_tui.model.posture import parse_angles
+    from sass_tui.model.task import TaskError, assess_task, hand_load, task_json, task_text
+    from sass_tui.model.units import parse_quantity
+
+    angles = parse_angles(args.angles)
+    loads = [
+        hand_load(side, parse_quantity(text, "N"), parse_direction(direction))
+        for side, text, direction in (
+            ("left", args.left_load, args.left_direction),
+            ("right", args.right_load, args.right_direction),
+        )
+        if text is not None
+    ]
+    if not loads:
+        raise TaskError("a task needs a load on a hand: --left-load or --right-load")
+    if args.target is not None:
+        answer = _target_answer(args, angles, loads)
+    else:
+        answer = assess_task(_references(args), angles, loads)
+    if args.format == "json":
+        print(json.dumps(task_json(answer, args.angles)))
+    else:
+        for line in task_text(answer, args.angles):
+            print(line)
+    return 0
+
+
+def _figure(args: argparse.Namespace, gender: str):  # -> Figure
+    # deferred: model.figure, model.units — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.model.figure import Figure
+    from sass_tui.model.units import parse_quantity
+
+    figure = Figure.default(gender)
+    if args.mass is not None:
+        figure.set_mass(parse_quantity(args.mass, "kg"))
+    if args.stature is not None:
+        figure.set_stature(parse_quantity(args.stature, "cm"))
+    return figure
+
+
+def _refuse_own_body(args: argparse.Namespace, who: str) -> None:
+    # deferred: model.task — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.model.task import TaskError
+
+    given = [
+        option
+        for option, value in (
+            ("--mass", args.mass),
+            ("--stature", args.stature),
+            ("--age", args.age),
+        )
+        if value is not None
+    ]
+    if given:
+        raise TaskError(f"{who} takes each person's own body; leave out {', '.join(given)}")
+
+
+def _references(args: argparse.Namespace) -> list:  # -> list[model.task.Reference]
+    # deferred: model.task — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.model.task import Reference
+
+    if args.person is None:
+        genders = [args.gender] if args.gender else ["female", "male"]
+        return [Reference(GENDER_WORDS[g], _figure(args, g), args.age) for g in genders]
+    _refuse_own_body(args, "--person")
+    # deferred: db.individual — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.cli.options import open_db, person_figure
+    from sass_tui.db.individual import find_person, person_record
+
+    conn = open_db(args)
+    try:
+        record = person_record(conn, find_person(conn, args.person))
+    finally:
+        conn.close()
+    figure = person_figure(args, _figure(args, str(record["gender"])))
+    age = record["age"]
+    return [Reference(str(figure.person), figure, None if age is None else float(age))]  # type: ignore[arg-type]
+
+
+def _target_answer(args: argparse.Namespace, angles, loads):  # -> model.task.TaskAnswer
+    """A target population's people, each scaled to their own size, weighted."""
+    _refuse_own_body(args, "--target")
+    # deferred: db.targets, db.values, model.task — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.cli.options import open_db
+    from sass_tui.db.targets import load_target
+    from sass_tui.db.values import load_values
+    from sass_tui.model.task import Population, assess_population
+
+    conn = open_db(args)
+    try:
+        target = load_target(conn, args.target)
+        values = load_values(conn, ["age", "mass", "stature"], target.target.base_query)
+    finally:
+        conn.close()
+    age, mass, stature = values.matrix.T
+    people = Population(
+        words=f"{target.target.name} (weighted)",
+        gender=target.target.gender,
+        ages=age,
+        masses=mass,
+        statures=stature / 100.0,
+        weights=target.of(values.ids),
+        note=target.target.words(),
+    )
+    return assess_population(_figure(args, people.gender), people, angles, loads)

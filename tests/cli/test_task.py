@@ -1,0 +1,123 @@
+"""`sass task` (cli/task.py, model/task.py): the moments of a posture with
+loads on the hands, from the figure's own segment masses and centres of
+mass, and who can do it.  The shoulder's moment is computed here by hand
+from the HAnim export's segments (`sass export hanim`) and the .fig's palm."""
+
+from __future__ import annotations
+
+import json
+import re
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from sass_tui.cli import main
+from sass_tui.model.arm_force_field import arm_force
+from sass_tui.model.figure import Figure
+from sass_tui.model.posture import parse_angles, pose_figure
+
+G = 9.81
+
+
+def hanim_parts(path):
+    """name -> (mass kg, centre of mass or joint centre [x, y, z] m)."""
+    parts = {}
+    for element in ET.parse(path).iter():
+        tag = element.tag.split("}")[-1]
+        if tag == "HAnimSegment" and element.get("mass"):
+            com = [float(v) for v in element.get("centerOfMass").split()]
+            parts[element.get("name")] = (float(element.get("mass")), com)
+        elif tag == "HAnimJoint" and element.get("center"):
+            parts[element.get("name")] = (0.0, [float(v) for v in element.get("center").split()])
+    return parts
+
+
+@pytest.fixture(scope="module")
+def female(tmp_path_factory):
+    where = tmp_path_factory.mktemp("female")
+    assert main(["export", "hanim", "--gender", "female", "-o", str(where / "f.x3d")]) == 0
+    assert main(["fig", "--gender", "female", "--no-strength", "-o", str(where / "f.fig")]) == 0
+    palm = re.search(r"lhandz = ([\d.]+)cm;", (where / "f.fig").read_text())
+    return hanim_parts(where / "f.x3d"), float(palm.group(1)) / 100.0
+
+
+def task(capsys, *argv):
+    assert main(["task", *argv, "--format", "json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def moment_of(answer, joint):
+    return next(m for m in answer["moments_N_m"] if m["joint"] == joint)
+
+
+def test_arm_held_forward_with_a_load_shoulder_moment_by_hand(female, capsys):
+    parts, palm = female
+    shoulder_y = parts["l_shoulder"][1][1]
+    wrist_y = parts["l_radiocarpal"][1][1]
+    # Held forward (shoulder flexed 90 deg, elbow straight): each centre of
+    # mass as far forward of the shoulder as it hung below it.
+    by_hand = sum(
+        parts[s][0] * G * (shoulder_y - parts[s][1][1])
+        for s in ("l_upperarm", "l_forearm", "l_carpal")
+    )
+    reach = shoulder_y - wrist_y + palm  # to the third knuckle, the grip centre
+    by_hand += 50.0 * reach
+    answer = task(capsys, "left_shoulder_y=90", "left_elbow_y=0", "--left-load", "50N",
+                  "--gender", "female")  # fmt: skip
+    shoulder = moment_of(answer, "left shoulder")
+    assert shoulder["moment"][0] == pytest.approx(by_hand, abs=0.06)
+    assert shoulder["moment"][1] == pytest.approx(0.0, abs=0.06)
+    assert shoulder["moment"][2] == pytest.approx(0.0, abs=0.06)
+    assert shoulder["from_loads"][0] == pytest.approx(50.0 * reach, abs=0.06)
+    elbow_y = parts["l_elbow"][1][1]
+    elbow_by_hand = sum(
+        parts[s][0] * G * (elbow_y - parts[s][1][1]) for s in ("l_forearm", "l_carpal")
+    ) + 50.0 * (elbow_y - wrist_y + palm)
+    assert moment_of(answer, "left elbow")["moment"][0] == pytest.approx(elbow_by_hand, abs=0.06)
+    # the unloaded right arm hangs: no moment at its shoulder
+    assert moment_of(answer, "right shoulder")["size"] == pytest.approx(0.0, abs=0.06)
+
+
+def test_the_loaded_hand_is_the_arm_force_field_against_the_load(capsys):
+    answer = task(capsys, "shoulder_y=90", "elbow_y=0", "--right-load", "60N", "--gender", "male")
+    body = pose_figure(Figure.default("male"), parse_angles(["shoulder_y=90", "elbow_y=0"]))
+    expected = arm_force(body.points, "right", (0, 1, 0), "male", body.body_mass)
+    hand = next(c for c in answer["capable"] if c["what"] == "right hand")
+    assert hand["percent"]["men"] == pytest.approx(expected.percent_capable(60.0), abs=0.05)
+    assert hand["source"].startswith("La Delfa & Potvin 2017")
+    assert answer["limiting"]["men"] in {c["what"] for c in answer["capable"]}
+    assert set(answer["not_covered"]) == {"left wrist", "right wrist", "trunk (L5/S1)"}
+
+
+def test_women_and_men_by_default_and_the_limiting_joint_named(capsys):
+    assert main(["task", "shoulder_y=60", "elbow_y=30", "--right-load", "100N"]) == 0
+    out = capsys.readouterr().out
+    assert "women" in out and "men" in out
+    assert "limiting for women: right hand" in out
+    assert "not covered: left wrist, right wrist, trunk (L5/S1): no published model" in out
+
+
+def test_a_forward_lean_needs_hip_extension(capsys):
+    # a load held far forward: the body above the hips tips forward
+    answer = task(capsys, "shoulder_y=90", "elbow_y=0", "--left-load", "100N",
+                  "--right-load", "100N", "--gender", "female")  # fmt: skip
+    hip = next(c for c in answer["capable"] if c["what"] == "left hip")
+    assert hip["motion"] == "hip_extension" and hip["demand"] > 0
+    assert hip["source"] == "Anderson et al. 2007"
+
+
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (["shoulder_y=90"], "a task needs a load on a hand"),
+        (["--left-load", "abc"], "expected a number"),
+        (["--left-load", "10", "--left-direction=0,0,0"], "the zero vector has no direction"),
+        (["--left-load", "-5"], "--left-load -5.0 N: expected a force of 0 or more"),
+        (["knee_q=10", "--left-load", "10"], "unknown joint 'knee_q'"),
+        (["--left-load", "10", "--person", "1", "--mass", "70"], "leave out --mass"),
+    ],
+)
+def test_bad_tasks_say_what_is_wrong(capsys, argv, message):
+    assert main(["task", *argv]) == 2
+    err = capsys.readouterr().err
+    assert message in err and "Traceback" not in err

@@ -1,0 +1,97 @@
+"""`sass task` for a real person (--person) and for a target population
+(--target: each person scaled to their own size, weighted).  The target's
+share is checked against the generated sample it is weighted to, computed
+here with numpy.  On both engines (tests/db/conftest.py)."""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from statistics import NormalDist
+
+import numpy as np
+import pytest
+
+from sass_tui.cli import main
+from sass_tui.db.database import Database
+from sass_tui.db.targets import load_target
+from sass_tui.db.values import load_values
+from sass_tui.model.arm_force_field import arm_force
+from sass_tui.model.figure import Figure
+from sass_tui.model.posture import parse_angles, pose_figure
+from tests._paths import ANSUR
+from tests.db.test_targets import civilian_women, write_sample
+
+POSTURE = ["shoulder_y=90", "elbow_y=0"]
+
+
+@pytest.fixture(scope="module")
+def sample() -> np.ndarray:
+    return civilian_women(3000)
+
+
+@pytest.fixture(scope="module")
+def with_target(template_target, copy_database, sample, tmp_path_factory) -> str:
+    folder = tmp_path_factory.mktemp("task-target")
+    db = copy_database(template_target)
+    csv_path = write_sample(folder / "civilian.csv", sample)
+    assert main(["target", "civ", "--db", db, "--gender", "female", "--sample", str(csv_path)]) == 0
+    return db
+
+
+def test_a_target_population_is_weighted_to_its_sample(with_target, sample, capsys):
+    argv = ["task", *POSTURE, "--db", with_target, "--right-load", "70N", "--target", "civ"]
+    assert main([*argv, "--format", "json"]) == 0
+    answer = json.loads(capsys.readouterr().out)
+    (population,) = answer["limiting"]
+    hand = next(c for c in answer["capable"] if c["what"] == "right hand")
+    # the sample's own women: the figure's arm force, the arm's weight by each one's mass
+    figure = Figure.default("female")
+    body = pose_figure(figure, parse_angles(POSTURE))
+    arm = arm_force(body.points, "right", (0, 1, 0), "female", body.body_mass)
+    gravity = arm.gravity * sample[:, 1] / body.body_mass
+    z = (70.0 - gravity - arm.mean) / arm.sd
+    own = 100 * np.mean([0.5 * (1 - math.erf(v / math.sqrt(2))) for v in z])
+    assert hand["percent"][population] == pytest.approx(own, abs=1.0)
+    assert "target civ" in " ".join(answer["notes"])
+
+
+def test_a_real_person_does_the_task_with_her_own_body(shared_target, capsys):
+    if not ANSUR.is_dir():
+        pytest.skip(f"the independent ANSUR II copy is not at {ANSUR}")
+    with open(ANSUR / "ANSUR_II_FEMALE_Public.csv", encoding="latin-1", newline="") as handle:
+        row = next(csv.DictReader(handle))
+    name = f"ANSUR II F {row.get('subjectid') or row['SubjectId']}"
+    argv = ["task", *POSTURE, "--db", shared_target, "--right-load", "40N", "--person", name]
+    assert main([*argv, "--format", "json"]) == 0
+    answer = json.loads(capsys.readouterr().out)
+    assert list(answer["limiting"]) == [name]
+    assert f"{int(row['weightkg']) / 10:.1f} kg" in answer["figure"]
+    assert name in answer["figure"]
+
+
+def test_a_fit_tests_strength_limit_is_weighted_by_the_target(with_target, capsys):
+    """`sass fit --target --strength`: the target's share is the weighted mean
+    of each person's probability (Table 3: knee extension C1 and its SD)."""
+    opened = Database.open(with_target)
+    try:
+        with opened.connection() as conn:
+            weights = load_target(conn, "civ")
+            values = load_values(conn, ["age", "mass", "stature"], weights.target.base_query)
+    finally:
+        opened.close()
+    table3 = {"18-25": (0.159, 1.187, 1.274, 0.028), "55-65": (0.128, 1.286, 1.141, 0.016),
+              "over-65": (0.124, 1.347, 1.140, 0.018)}  # fmt: skip
+    total = capable = 0.0
+    for (age, mass, stature), w in zip(values.matrix, weights.of(values.ids)):
+        if not 18 <= age <= 100 or w == 0:
+            continue
+        c1, c2, c3, sd = table3["18-25" if age <= 40 else "55-65" if age <= 65 else "over-65"]
+        shape = mass * 9.81 * stature / 100 * math.cos(c2 * (math.radians(60) - c3))
+        total += w
+        capable += w * (1 - NormalDist().cdf((120 / shape - c1) / sd))
+    argv = ["fit", "--db", with_target, "--target", "civ", "--format", "json", "--strength"]
+    assert main([*argv, "knee_extension >= 120 N-m at knee_y=60", "stature <= 250 cm"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["target"]["percent"] == pytest.approx(100 * capable / total, abs=0.01)

@@ -1,0 +1,118 @@
+"""The figure in a posture (model/posture.py): the hand placed on the
+figure's own HAnim humanoid (model/hanim.py), and the posture file."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from sass_tui.model.figure import Figure
+from sass_tui.model.hanim import build_humanoid
+from sass_tui.model.names import GIRTH, row_index
+from sass_tui.model.posture import PostureError, parse_angles, pose_figure, read_posture_file
+from sass_tui.model.strength_conditions import StrengthError
+
+
+@pytest.fixture(scope="module")
+def figure():
+    return Figure.default("female")
+
+
+def palm(figure, side):
+    return figure.output_values(GIRTH)[0][row_index(GIRTH, f"{side}_hand"), 2] / 100.0
+
+
+def test_standing_the_hand_hangs_below_the_wrist_by_the_palm(figure):
+    humanoid = build_humanoid(figure)
+    body = pose_figure(figure)
+    for s, side in (("l", "left"), ("r", "right")):
+        wrist = humanoid.centers[f"{s}_radiocarpal"]
+        assert body.points[f"{s}_radiocarpal"] == pytest.approx(wrist)
+        knuckle = body.points[f"{s}_metacarpophalangeal_3"]
+        assert knuckle == pytest.approx(wrist - [0, palm(figure, side), 0])
+
+
+def test_arms_held_forward_reach_the_segment_lengths_at_shoulder_height(figure):
+    humanoid = build_humanoid(figure)
+    body = pose_figure(figure, parse_angles(["shoulder_y=90", "elbow_y=0"]))
+    for s, side in (("l", "left"), ("r", "right")):
+        shoulder = humanoid.centers[f"{s}_shoulder"]
+        reach = shoulder[1] - humanoid.centers[f"{s}_radiocarpal"][1] + palm(figure, side)
+        hand = body.points[f"{s}_metacarpophalangeal_3"]
+        assert hand == pytest.approx(shoulder + [0, 0, reach], abs=1e-9)
+
+
+def test_abduction_flexion_and_one_side(figure):
+    humanoid = build_humanoid(figure)
+    body = pose_figure(figure, parse_angles(["left_shoulder_x=90", "right_elbow_y=90"]))
+    shoulder, elbow = humanoid.centers["l_shoulder"], humanoid.centers["l_elbow"]
+    upper = shoulder[1] - elbow[1]
+    # the left arm out to the body's left (+x), level with the shoulder
+    assert body.points["l_elbow"] == pytest.approx(shoulder + [upper, 0, 0], abs=1e-9)
+    # the right forearm forward (+z) from the hanging elbow
+    wrist = body.points["r_radiocarpal"]
+    assert wrist[1] == pytest.approx(humanoid.centers["r_elbow"][1], abs=1e-9)
+    assert wrist[2] > 0.2
+
+
+def test_segments_move_with_their_joint_and_keep_their_mass(figure):
+    humanoid = build_humanoid(figure)
+    body = pose_figure(figure, parse_angles(["shoulder_y=90", "elbow_y=0"]))
+    for segment in ("l_upperarm", "l_forearm", "l_carpal", "l5", "r_thigh"):
+        assert body.masses[segment] == pytest.approx(humanoid.segments[segment].mass)
+    shoulder = humanoid.centers["l_shoulder"]
+    standing = humanoid.segments["l_upperarm"].center_of_mass - shoulder
+    turned = body.centers_of_mass["l_upperarm"] - shoulder
+    # a quarter turn forward about the shoulder: down becomes forward
+    assert turned == pytest.approx([standing[0], -standing[2], -standing[1]], abs=1e-9)
+    assert body.centers_of_mass["l5"] == pytest.approx(humanoid.segments["l5"].center_of_mass)
+
+
+@pytest.mark.parametrize(
+    "items, message",
+    [
+        (["shoulder_q=30"], "unknown joint 'shoulder_q'"),
+        (["elbow=30"], "unknown joint 'elbow'"),
+        (["shoulder_y"], "expected JOINT=ANGLE"),
+        (["shoulder_y=nan"], "shoulder_y=nan"),
+        (["elbow_y=abc"], "elbow_y=abc"),
+    ],
+)
+def test_bad_angles_name_the_joint(items, message):
+    with pytest.raises(PostureError, match=message):
+        parse_angles(items)
+
+
+def test_an_angle_beyond_the_joint_limit_is_refused(figure):
+    with pytest.raises(StrengthError, match="left elbow y 200 deg is above the left elbow upper"):
+        pose_figure(figure, parse_angles(["left_elbow_y=200"]))
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.lists(st.text(max_size=20), max_size=3))
+def test_any_angle_text_parses_or_is_refused_clearly(items):
+    try:
+        angles = parse_angles(items)
+    except PostureError as exc:
+        assert str(exc)
+    else:
+        assert all(math.isfinite(v) for v in angles.values())
+
+
+def test_a_posture_file_reads_back_and_bad_ones_say_where(tmp_path):
+    body = pose_figure(Figure.default("male"), parse_angles(["shoulder_y=45"]))
+    good = tmp_path / "reach.json"
+    good.write_text(json.dumps({k: v.tolist() for k, v in body.points.items()}))
+    read = read_posture_file(good)
+    assert all(np.array_equal(read[k], body.points[k]) for k in body.points)
+    broken = tmp_path / "broken.json"
+    broken.write_text('{"vc7": [0, 1,\n')
+    with pytest.raises(PostureError, match=r"broken.json:2: not JSON"):
+        read_posture_file(broken)
+    with pytest.raises(PostureError, match="cannot read"):
+        read_posture_file(tmp_path / "missing.json")
