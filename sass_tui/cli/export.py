@@ -45,8 +45,8 @@ def register(commands: SubParsers) -> None:
 
 
 def run_hanim(args: argparse.Namespace) -> int:
-    # deferred: model.hanim — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.hanim import export_hanim
+    # deferred: model.hanim_x3d — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.model.hanim_x3d import export_hanim
 
     figure, warnings = figure_from_args(args)
     print_warnings(warnings)
@@ -71,7 +71,7 @@ def run_gltf(args: argparse.Namespace) -> int:
 
 def _note(figure: Figure) -> None:
     """What of the figure the humanoid (HAnim and glTF alike) leaves out."""
-    # deferred: model.hanim — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: model.hanim_x3d — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.hanim import not_in_humanoid_note
 
     note = not_in_humanoid_note(figure).strip()

@@ -29,7 +29,8 @@ import numpy as np
 
 from sass_tui.model.atomic import write_bytes_atomic
 from sass_tui.model.errors import SassError
-from sass_tui.model.hanim import LOA1, SEGMENT_OF, SKIN, build_humanoid
+from sass_tui.model.hanim import LOA1, SEGMENT_OF, build_humanoid
+from sass_tui.model.hanim_x3d import SKIN
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS
 
 if TYPE_CHECKING:

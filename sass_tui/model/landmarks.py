@@ -39,6 +39,9 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
+# Appendix L.1: the anklebone lies 0.2516 foot lengths in front of the heel.
+HEEL_BEHIND_ANKLE = 0.2516
+
 # The ANSUR II measurements (the survey's column names, canonical unit cm)
 # that place a person's landmarks; db/individual.py reads exactly these.
 LANDMARK_MEASURES: tuple[str, ...] = (

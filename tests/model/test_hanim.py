@@ -15,7 +15,8 @@ import pytest
 from sass_tui.cli import main
 from sass_tui.model.figfile import FigureIncompleteError
 from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import export_hanim, rotation_matrix
+from sass_tui.model.hanim import rotation_matrix
+from sass_tui.model.hanim_x3d import export_hanim
 from sass_tui.model.names import JOINT_LIMITS, MASS_FRACTIONS, row_index
 
 # ISO/IEC 19775-1 (X3D 4.0) HAnimHumanoid field defaults the export relies on.
@@ -586,7 +587,8 @@ def test_the_segment_dimensions_the_humanoid_leaves_out_are_exactly_those_listed
     # Every girth cell changed by 10 %: the ones in NOT_IN_HUMANOID leave the
     # export as it was (the joints stand at the stature's landmarks; LOA-1
     # has no clavicle or eye), every other one changes it.
-    from sass_tui.model.hanim import NOT_IN_HUMANOID, render_hanim
+    from sass_tui.model.hanim import NOT_IN_HUMANOID
+    from sass_tui.model.hanim_x3d import render_hanim
     from sass_tui.model.names import GIRTH, ROWS
 
     before = render_hanim(Figure.default())
