@@ -71,7 +71,7 @@ def run_gltf(args: argparse.Namespace) -> int:
 
 def _note(figure: Figure) -> None:
     """What of the figure the humanoid (HAnim and glTF alike) leaves out."""
-    # deferred: model.hanim_x3d — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: model.hanim — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.hanim import not_in_humanoid_note
 
     note = not_in_humanoid_note(figure).strip()

@@ -410,7 +410,7 @@ def test_a_figure_that_cannot_bend_90_degrees_is_not_seated(tmp_path):
 )
 def test_any_percentile_figure_is_its_stature_tall_with_normal_weights(gender, percentile):
     from sass_tui.model.figure import Figure
-    from sass_tui.model.gltf import body_mesh, render_gltf
+    from sass_tui.model.gltf import body_mesh, figure_surface, render_gltf
     from sass_tui.model.hanim import build_humanoid
 
     figure = Figure.default(gender)
@@ -418,7 +418,8 @@ def test_any_percentile_figure_is_its_stature_tall_with_normal_weights(gender, p
         figure.set_group_percentile(group, percentile)
     figure.set_mass_percentile(percentile)
     figure.set_stature_percentile(percentile)
-    mesh = body_mesh(build_humanoid(figure))
+    humanoid = build_humanoid(figure)
+    mesh = body_mesh(humanoid, figure_surface(figure, humanoid))
     assert mesh.positions[:, 1].min() == pytest.approx(0.0, abs=1e-6)
     assert mesh.positions[:, 1].max() == pytest.approx(figure.stature / 100, abs=0.005)
     assert np.allclose(mesh.weights.sum(axis=1, dtype=np.float32), 1.0, atol=1e-6)
