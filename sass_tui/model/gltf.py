@@ -28,10 +28,9 @@ from urllib.parse import quote
 import numpy as np
 
 from sass_tui.model.atomic import write_bytes_atomic
-from sass_tui.model.body_measures import figure_measures
-from sass_tui.model.body_surface import BodySurface, body_surface, skin_weights, vertex_normals
+from sass_tui.model.body_surface import body_mesh, figure_surface
 from sass_tui.model.errors import SassError
-from sass_tui.model.hanim import LOA1, build_humanoid, humanoid_stature
+from sass_tui.model.hanim import LOA1, build_humanoid
 from sass_tui.model.hanim_x3d import SKIN
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS
 
@@ -275,13 +274,6 @@ def render_gltf(figure: Figure, pose: str = "standing") -> GltfDocument:
     return GltfDocument(humanoid.name, document, bytes(packer.data))
 
 
-def figure_surface(figure: Figure, humanoid: Humanoid) -> BodySurface:
-    """The figure's body surface around its humanoid: through its own
-    measurements, else those sass predict gives its stature and mass."""
-    stature = humanoid_stature(figure)
-    return body_surface(humanoid, figure_measures(figure, stature), stature / 100.0)
-
-
 def _pose_rotations(humanoid: Humanoid, pose: str) -> dict[str, np.ndarray]:
     """Node rotations (quaternions x, y, z, w) of the pose; none standing."""
     if pose == "standing":
@@ -370,46 +362,6 @@ def sass_version() -> str:
 
 
 # --- the mesh ------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class BodyMesh:
-    positions: np.ndarray  # (n, 3) float32, m
-    normals: np.ndarray  # (n, 3) float32, unit
-    joints: np.ndarray  # (n, 4) uint8, indices into LOA1's joints
-    weights: np.ndarray  # (n, 4) float32, each row adds up to 1
-    triangles: np.ndarray  # (m, 3) counter-clockwise seen from outside
-
-
-def body_mesh(humanoid: Humanoid, surface: BodySurface) -> BodyMesh:
-    """The body's surface (model/body_surface.py: closed parts lofted through
-    the figure's measurements) with each vertex's four heaviest joints."""
-    positions, normals, triangles, owners = [], [], [], []
-    count = 0
-    for part in surface.parts:
-        positions.append(part.vertices)
-        normals.append(vertex_normals(part.vertices, part.triangles))
-        triangles.append(part.triangles + count)
-        owners.append(part.owners)
-        count += len(part.vertices)
-    points = np.vstack(positions)
-    w = skin_weights(humanoid, points, np.concatenate(owners))
-    order = np.argsort(-w, axis=1)[:, :4]
-    top = np.take_along_axis(w, order, axis=1)
-    top /= top.sum(axis=1, keepdims=True)
-    # slots with no weight name joint 0, as the spec's examples do
-    order = np.where(top > 0, order, 0)
-    weight = top.astype(np.float32)
-    # float32 rows must add up to 1 to the validator's tolerance: the heaviest
-    # slot takes up what rounding left
-    weight[:, 0] = np.float32(1.0) - weight[:, 1:].sum(axis=1, dtype=np.float32)
-    return BodyMesh(
-        points.astype(np.float32),
-        np.vstack(normals).astype(np.float32),
-        order.astype(np.uint8),
-        weight,
-        np.vstack(triangles).astype(np.uint32),
-    )
 
 
 # --- packing -------------------------------------------------------------------

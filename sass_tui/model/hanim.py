@@ -117,6 +117,12 @@ NOT_IN_HUMANOID: tuple[tuple[str, int], ...] = (
         for part in ("clavicle", "eye")
         for axis in range(3)
     ),
+    # the neck's and the fingers' depth and width and the toes' width shaped
+    # only the solids the body's surface replaced (model/body_surface.py)
+    ("neck", 0),
+    ("neck", 1),
+    *((f"{side}_knuckles", axis) for side in ("right", "left") for axis in (0, 1)),
+    *((f"{side}_ball_of_foot", 1) for side in ("right", "left")),
 )
 
 # The centre of the humeral head lies below the acromion's tip by about the

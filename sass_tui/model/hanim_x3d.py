@@ -10,7 +10,10 @@ from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from sass_tui.model.atomic import write_text_atomic
+from sass_tui.model.body_surface import BodyMesh, body_mesh, figure_surface
 from sass_tui.model.hanim import LOA1, HAnimError, Humanoid, Site, build_humanoid
 from sass_tui.model.names import GIRTH
 
@@ -41,10 +44,14 @@ def _mfstring(values: list[str]) -> str:
 SKIN = {"male": "0.80 0.62 0.50", "female": "0.86 0.66 0.58"}
 
 
-def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
+def humanoid_element(humanoid: Humanoid, gender: str, mesh: BodyMesh | None = None) -> ET.Element:
     """The HAnimHumanoid node.  DEF names follow the HAnim convention the x3d
     package checks: the humanoid's name, '_', the node's name ('male_50_l_hip');
-    humanoids with different names can share a scene."""
+    humanoids with different names can share a scene.  With the body's `mesh`
+    (model/body_surface.py, the glTF body's) the humanoid wears it as its skin
+    (ISO/IEC 19774-1 clause 6.3: skinCoord, skinNormal, skin, and each joint's
+    skinCoordIndex and skinCoordWeight); without it, each segment holds the
+    boxes and ellipsoids of its solids."""
     # deferred: xml.etree.ElementTree — the X3D document only: not the TUI's drawing
     import xml.etree.ElementTree as ET
 
@@ -68,10 +75,13 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
     sites_by_segment: dict[str, list[Site]] = {}
     for site in humanoid.sites:
         sites_by_segment.setdefault(site.segment, []).append(site)
-    for joint, segment_name, parent in LOA1:
+    skin = _skin_of_joints(mesh) if mesh is not None else {}
+    for number, (joint, segment_name, parent) in enumerate(LOA1):
         attrs = {"DEF": f"{prefix}{joint}", "name": joint, "center": _vec(humanoid.centers[joint])}
         if parent is None:
             attrs["containerField"] = "skeleton"
+        if number in skin:
+            attrs["skinCoordIndex"], attrs["skinCoordWeight"] = skin[number]
         limits = humanoid.limits.get(joint)
         if limits is not None:
             attrs["limitOrientation"] = _vec(limits.orientation)
@@ -91,7 +101,7 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
                 "momentsOfInertia": _vec(segment.inertia.ravel()),
             },
         )
-        for kind, centre, size in segment.shapes:
+        for kind, centre, size in segment.shapes if mesh is None else ():
             if kind == "ellipsoid":
                 transform = ET.SubElement(
                     seg, "Transform", {"translation": _vec(centre), "scale": _vec(size / 2)}
@@ -121,6 +131,8 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
                     "rotation": _vec(site.rotation),
                 },
             )
+    if mesh is not None:
+        _add_skin(root, mesh, prefix, SKIN.get(gender, SKIN["male"]))
     for joint, _, _ in LOA1:
         ET.SubElement(root, "HAnimJoint", {"USE": f"{prefix}{joint}", "containerField": "joints"})
     for _, segment_name, _ in LOA1:
@@ -130,6 +142,54 @@ def humanoid_element(humanoid: Humanoid, gender: str) -> ET.Element:
     for site in humanoid.sites:
         ET.SubElement(root, "HAnimSite", {"USE": f"{prefix}{site.name}", "containerField": "sites"})
     return root
+
+
+def _numbers(values: np.ndarray, decimals: int) -> str:
+    """Many numbers at once (the skin's coordinates), `decimals` after the point."""
+    if not np.isfinite(values).all():
+        raise HAnimError("cannot write the humanoid: a skin coordinate is not a number")
+    return " ".join(f"{v:.{decimals}f}" for v in values.ravel().tolist())
+
+
+def _skin_of_joints(mesh: BodyMesh) -> dict[int, tuple[str, str]]:
+    """Per joint (LOA1 order): the skin's vertices it moves and their weights."""
+    out: dict[int, tuple[str, str]] = {}
+    for joint in range(len(LOA1)):
+        rows, slots = np.nonzero((mesh.joints == joint) & (mesh.weights > 0))
+        if len(rows):
+            order = np.argsort(rows, kind="stable")
+            weights = mesh.weights[rows[order], slots[order]].astype(float)
+            out[joint] = (" ".join(map(str, rows[order].tolist())), _numbers(weights, 5))
+    return out
+
+
+def _add_skin(root: ET.Element, mesh: BodyMesh, prefix: str, colour: str) -> None:
+    """The skin's coordinates and normals (bound to the joints through their
+    skinCoordIndex), and the one Shape drawing them."""
+    # deferred: xml.etree.ElementTree — the X3D document only: not the TUI's drawing
+    import xml.etree.ElementTree as ET
+
+    coord, normal = f"{prefix}skin_coord", f"{prefix}skin_normal"
+    ET.SubElement(
+        root,
+        "Coordinate",
+        {"DEF": coord, "containerField": "skinCoord", "point": _numbers(mesh.positions, 5)},
+    )
+    ET.SubElement(
+        root,
+        "Normal",
+        {"DEF": normal, "containerField": "skinNormal", "vector": _numbers(mesh.normals, 4)},
+    )
+    shape = ET.SubElement(root, "Shape", {"containerField": "skin"})
+    appearance = ET.SubElement(shape, "Appearance", {"DEF": f"{prefix}skin_appearance"})
+    ET.SubElement(appearance, "Material", {"diffuseColor": colour})
+    triangles = ET.SubElement(
+        shape,
+        "IndexedTriangleSet",
+        {"index": " ".join(map(str, mesh.triangles.ravel().tolist())), "solid": "true"},
+    )
+    ET.SubElement(triangles, "Coordinate", {"USE": coord})
+    ET.SubElement(triangles, "Normal", {"USE": normal})
 
 
 def scene_document(humanoids: list[tuple[ET.Element, float]], title: str, height: float) -> str:
@@ -206,10 +266,12 @@ def figure_title(figure: Figure) -> str:
 
 
 def render_hanim(figure: Figure) -> str:
+    """The figure's humanoid wearing its body (model/body_surface.py) as its skin."""
     humanoid = build_humanoid(figure)
+    mesh = body_mesh(humanoid, figure_surface(figure, humanoid))
     height = float(humanoid.sites[0].translation[1])  # skull vertex
     return scene_document(
-        [(humanoid_element(humanoid, figure.gender), 0.0)], figure_title(figure), height
+        [(humanoid_element(humanoid, figure.gender, mesh), 0.0)], figure_title(figure), height
     )
 
 
