@@ -216,9 +216,8 @@ def trunk_sections(m: BodyMeasures, humanoid: Humanoid, stature: float) -> list[
     sections.append(_level("axilla", axilla, chest.a, A["axilla_depth"] * chest.b, chest.n))
     acromion = max(m.m("acromialheight"), axilla + 0.02)
     shoulder_a = m.m("biacromialbreadth") / 2
-    sections.append(
-        _level("shoulder", acromion, shoulder_a, A["shoulder_depth"] * chest_depth / 2, 3.0)
-    )
+    shoulder_b = A["shoulder_depth"] * chest_depth / 2
+    sections.append(_level("shoulder", acromion, shoulder_a, shoulder_b, 2.5))
     # the neck: its base at the cervicale, its girth halfway up to the chin
     tragion = float(humanoid.centers["skullbase"][1])
     chin = tragion - A["chin_below_tragion"] * m.m("mentonsellionlength")
@@ -226,6 +225,17 @@ def trunk_sections(m: BodyMeasures, humanoid: Humanoid, stature: float) -> list[
     chin = max(chin, base_y + 0.04)
     base_a, base_b = _ellipse(m.m("neckcircumferencebase"), A["neck_depth"])
     sections.append(_level("neck_base", base_y, base_a, base_b, 2.0))
+    # the trapezius slopes from the shoulders up to the neck's base
+    for k, share in ((0.35, 0.75), (0.7, 0.4)):
+        sections.append(
+            _level(
+                f"trapezius_{k:g}",
+                acromion + k * (base_y - acromion),
+                share * shoulder_a + (1 - share) * base_a,
+                share * shoulder_b + (1 - share) * base_b,
+                2.3,
+            )
+        )
     neck_a, neck_b = _ellipse(m.m("neckcircumference"), A["neck_depth"])
     sections.append(_level("neck", (base_y + chin) / 2, neck_a, neck_b, 2.0))
     # the head: chin, cheeks, tragion, its widest girth, then a dome to the vertex
@@ -352,7 +362,7 @@ def arm_sections(m: BodyMeasures, humanoid: Humanoid, side: str) -> list[Section
     biceps, forearm = m.m("bicepscircumferenceflexed"), m.m("forearmcircumferenceflexed")
     wrist_a, wrist_b = _ellipse(m.m("wristcircumference"), A["wrist_thickness"])
     return [
-        _round_section("shoulder", at(top), biceps),
+        _round_section("shoulder", at(top), 1.1 * biceps),  # the deltoid, over the joint
         _round_section("biceps", at((top + elbow_y) / 2), biceps),
         _round_section("elbow", at(elbow_y), 0.95 * min(biceps, forearm)),
         _round_section("forearm", at(elbow_y - A["forearm_down"] * (elbow_y - wrist_y)), forearm),
@@ -508,7 +518,14 @@ def body_surface(humanoid: Humanoid, measures: BodyMeasures, stature: float) -> 
             _part(
                 f"{s}_arm",
                 arm,
-                arm[0].centre + 0.6 * arm[0].a * _Y,
+                # the deltoid's top covers the trunk's shoulder up to the acromion
+                np.array(
+                    [
+                        arm[0].centre[0],
+                        max(measures.m("acromialheight"), y(f"{s}_shoulder") + arm[0].a) + 0.01,
+                        0.0,
+                    ]
+                ),
                 arm[-1].centre - 0.02 * _Y,
                 (1, [(elbow, f"{s}_shoulder"), (wrist, f"{s}_elbow"), (-1.0, f"{s}_radiocarpal")]),
             )
