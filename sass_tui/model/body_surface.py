@@ -44,9 +44,9 @@ if TYPE_CHECKING:
 
 # Points around each cross-section (a multiple of 4: the extremes of the
 # width and the depth are points of the section, so a cut measures them).
-AROUND = 48
+AROUND = 32
 # The greatest distance (m) between neighbouring rings of a part.
-RING_SPACING = 0.015
+RING_SPACING = 0.02
 # Superellipse exponents: 2 is an ellipse; the solver keeps n in this range.
 _N_MIN, _N_MAX = 1.2, 12.0
 
@@ -124,11 +124,13 @@ class BodySurface:
 # --- sections ------------------------------------------------------------------
 
 
+_ANGLES = np.linspace(0.0, 2 * math.pi, AROUND, endpoint=False)
+_COS, _SIN = np.cos(_ANGLES), np.sin(_ANGLES)
+
+
 def _unit_superellipse(n: float) -> tuple[np.ndarray, np.ndarray]:
-    w = np.linspace(0.0, 2 * math.pi, AROUND, endpoint=False)
-    c, s = np.cos(w), np.sin(w)
     power = 2.0 / n
-    return np.sign(c) * np.abs(c) ** power, np.sign(s) * np.abs(s) ** power
+    return np.sign(_COS) * np.abs(_COS) ** power, np.sign(_SIN) * np.abs(_SIN) ** power
 
 
 def perimeter(a: float, b: float, n: float) -> float:
@@ -141,7 +143,7 @@ def perimeter(a: float, b: float, n: float) -> float:
 
 def _solve(lower: float, upper: float, f: Callable[[float], float], target: float) -> float:
     """Bisection for f(x) = target on [lower, upper], f increasing."""
-    for _ in range(60):
+    for _ in range(40):
         middle = (lower + upper) / 2
         if f(middle) < target:
             lower = middle
@@ -406,19 +408,22 @@ def loft(
     vertices = np.vstack([first_cap[None, :], *rings, last_cap[None, :]])
     count = len(rings)
     first, last = 0, 1 + count * AROUND
-    faces: list[list[int]] = []
-    for k in range(AROUND):
-        k1 = (k + 1) % AROUND
-        faces.append([first, 1 + k1, 1 + k])
-        top = 1 + (count - 1) * AROUND
-        faces.append([last, top + k, top + k1])
-    for r in range(count - 1):
-        a, b = 1 + r * AROUND, 1 + (r + 1) * AROUND
-        for k in range(AROUND):
-            k1 = (k + 1) % AROUND
-            faces.append([a + k, a + k1, b + k1])
-            faces.append([a + k, b + k1, b + k])
-    triangles = np.array(faces, dtype=np.int64)
+    k = np.arange(AROUND)
+    k1 = (k + 1) % AROUND
+    top = 1 + (count - 1) * AROUND
+    caps = [
+        np.column_stack([np.full(AROUND, first), 1 + k1, 1 + k]),
+        np.column_stack([np.full(AROUND, last), top + k, top + k1]),
+    ]
+    # ring r's point k is 1 + r * AROUND + k; each quad between rings a, b:
+    # (a+k, a+k1, b+k1) and (a+k, b+k1, b+k)
+    a = 1 + np.arange(count - 1)[:, None] * AROUND
+    b = a + AROUND
+    quads = [
+        np.stack([a + k, a + k1, b + k1], axis=-1).reshape(-1, 3),
+        np.stack([a + k, b + k1, b + k], axis=-1).reshape(-1, 3),
+    ]
+    triangles = np.vstack([*caps, *quads]).astype(np.int64)
     if signed_volume(vertices, triangles) < 0:
         triangles = triangles[:, ::-1].copy()
     return vertices, triangles
