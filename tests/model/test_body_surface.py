@@ -248,3 +248,38 @@ def test_every_part_is_closed_and_the_limbs_reach_into_the_trunk(people):
             limb = np.abs(_cut(positions, tri, height)[:, 0])
             body = np.abs(_cut(positions, trunk, height)[:, 0])
             assert limb.min() < body.max(), (name, highest)
+
+
+@pytest.mark.slow
+def test_a_percentile_figure_has_the_girths_sass_predict_gives_it(tmp_path, shipped_db_file):
+    """A figure with no measurements of its own (the male 95th percentile):
+    its chest, waist and buttock cuts have the circumferences `sass predict`
+    gives its stature and mass (the predictor fitted on the default
+    database, asked here), within 3 %; the file says they were predicted."""
+    from sass_tui.db.default import open_database
+    from sass_tui.db.predict import open_predictor
+
+    glb = tmp_path / "m95.glb"
+    assert main(["export", "gltf", "--gender", "male", "--percentile", "95", "-o", str(glb)]) == 0
+    positions, triangles = _read(glb)
+    extras = pygltflib.GLTF2().load(str(glb)).scenes[0].extras
+    stature, mass = extras["stature"]["m"] * 100, extras["mass"]["kg"]
+    conn = open_database(shipped_db_file)
+    try:
+        prediction = open_predictor(conn, cache=False).predict(
+            "male", {"stature": stature, "mass": mass}
+        )
+    finally:
+        conn.close()
+    parts = _parts(positions, triangles)
+    top = positions[:, 1].argmax()
+    trunk = next(tri for tri in parts if top in tri)
+    for height, girth in (
+        ("chestheight", "chestcircumference"),
+        ("waistheightomphalion", "waistcircumference"),
+        ("buttockheight", "buttockcircumference"),
+    ):
+        at = prediction.value(f"measure.{height}") / 100
+        expected = prediction.value(f"measure.{girth}") / 100
+        assert _hull_perimeter(_cut(positions, trunk, at)) == pytest.approx(expected, rel=0.03)
+        assert extras["bodyMeasures"][girth]["source"].startswith("predicted from stature and mass")
