@@ -178,5 +178,12 @@ def body_measures(
 
 def figure_measures(figure: Figure, stature_cm: float) -> BodyMeasures:
     """The measurements of `figure` standing `stature_cm` tall: a person's own
-    (figure.landmarks), else predicted from the stature and the figure's mass."""
-    return body_measures(figure.gender, stature_cm, figure.output_mass(), figure.landmarks)
+    (figure.landmarks); a predicted person's as sass predict gave them
+    (figure.predicted_measures, from all their known values); else predicted
+    from the stature and the figure's mass."""
+    measures = body_measures(figure.gender, stature_cm, figure.output_mass(), figure.landmarks)
+    source = f"sass predict: {figure.person}"
+    for name, value in figure.predicted_measures.items():
+        if measures.sources.get(name) == PREDICTED and math.isfinite(value) and value > 0:
+            measures.values[name], measures.sources[name] = float(value), source
+    return measures

@@ -8,6 +8,8 @@ with the person's row of the ANSUR II CSV."""
 from __future__ import annotations
 
 import csv
+import json
+import shutil
 
 import numpy as np
 import pytest
@@ -283,3 +285,34 @@ def test_a_percentile_figure_has_the_girths_sass_predict_gives_it(tmp_path, ship
         expected = prediction.value(f"measure.{girth}") / 100
         assert _hull_perimeter(_cut(positions, trunk, at)) == pytest.approx(expected, rel=0.03)
         assert extras["bodyMeasures"][girth]["source"].startswith("predicted from stature and mass")
+
+
+@pytest.mark.slow
+def test_a_predicted_person_s_body_has_what_sass_predict_printed(tmp_path, shipped_db_file, capsys):
+    """`sass predict ... -o P.glb` with a known chest circumference: the body's
+    chest is that circumference and its waist the one sass predict prints
+    (its JSON, the same run's numbers), within 3 %; the file names the
+    prediction as their source."""
+    known = ["--known", "stature=178cm", "--known", "mass=80kg"]
+    known += ["--known", "measure.chestcircumference=112cm"]
+    db = tmp_path / "sass.db"  # sass predict caches its fit beside the database
+    shutil.copyfile(shipped_db_file, db)
+    args = ["--db", str(db), "predict", "--gender", "male", *known]
+    assert main([*args, "--format", "json"]) == 0
+    printed = json.loads(capsys.readouterr().out)["predicted"]
+    glb = tmp_path / "P.glb"
+    assert main([*args, "-o", str(glb)]) == 0
+    positions, triangles = _read(glb)
+    extras = pygltflib.GLTF2().load(str(glb)).scenes[0].extras
+    parts = _parts(positions, triangles)
+    top = positions[:, 1].argmax()
+    trunk = next(tri for tri in parts if top in tri)
+
+    def value(name: str) -> float:
+        return float(printed[f"measure.{name}"]["value"]) / 100
+
+    chest = _hull_perimeter(_cut(positions, trunk, value("chestheight")))
+    assert chest == pytest.approx(1.12, rel=0.03)
+    waist = _hull_perimeter(_cut(positions, trunk, value("waistheightomphalion")))
+    assert waist == pytest.approx(value("waistcircumference"), rel=0.03)
+    assert extras["bodyMeasures"]["waistcircumference"]["source"].startswith("sass predict: ")
