@@ -542,6 +542,7 @@ def test_a_file_that_cannot_be_written_is_named_and_nothing_is_left(tmp_path, ca
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.slow
 def test_the_seated_body_bends_smoothly_without_tearing(tmp_path):
     """Seated (hips and knees at 90 degrees), skinned here from the file: no
     edge of the surface stretches to more than three times its standing

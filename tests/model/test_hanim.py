@@ -640,6 +640,7 @@ def test_edits_the_humanoid_leaves_out_are_named():
     assert edits_not_in_humanoid(person) == []
 
 
+@pytest.mark.slow
 def test_the_skin_is_the_gltf_body_bound_to_the_same_joints(tmp_path):
     """The humanoid wears the glTF body's surface as its HAnim skin (clause
     6.3): the same vertices (read back from the .glb with pygltflib), every
