@@ -316,3 +316,27 @@ def test_a_predicted_person_s_body_has_what_sass_predict_printed(tmp_path, shipp
     waist = _hull_perimeter(_cut(positions, trunk, value("waistheightomphalion")))
     assert waist == pytest.approx(value("waistcircumference"), rel=0.03)
     assert extras["bodyMeasures"]["waistcircumference"]["source"].startswith("sass predict: ")
+
+
+@pytest.mark.slow
+def test_hands_and_feet_have_the_person_s_lengths_and_breadths(people):
+    """The left foot from heel to toe tip is the foot length and as wide as
+    the foot breadth; the left hand reaches a hand length below the wrist
+    height and is as broad as the hand breadth (front to back: the palms
+    face the thighs): each within 5 mm of the CSV."""
+    for name, row, (positions, triangles) in people:
+        left = [
+            positions[np.unique(tri)]
+            for tri in _parts(positions, triangles)
+            if positions[tri[0, 0], 0] > 0.03
+        ]
+        # the foot lies on the floor; the hand is the short part above it
+        (points,) = [p for p in left if p[:, 1].mean() < 0.1]
+        assert np.ptp(points[:, 2]) == pytest.approx(_mm(row, "footlength"), abs=0.005), name
+        breadth = np.ptp(points[:, 0])
+        assert breadth == pytest.approx(_mm(row, "footbreadthhorizontal"), abs=0.005), name
+        wrist = _mm(row, "wristheight")
+        (points,) = [p for p in left if p[:, 1].mean() > 0.3 and np.ptp(p[:, 1]) < 0.3]
+        tip = wrist - _mm(row, "handlength")
+        assert points[:, 1].min() == pytest.approx(tip, abs=0.005), name
+        assert np.ptp(points[:, 2]) == pytest.approx(_mm(row, "handbreadth"), abs=0.005), name
