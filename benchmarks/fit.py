@@ -30,7 +30,7 @@ from sass_tui.db.schema import connect
 from sass_tui.model.accommodation import write_family
 from sass_tui.model.figfile import write_fig
 from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import export_hanim
+from sass_tui.model.hanim_x3d import export_hanim
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from scripts.default_database import add_db_option, default_database

@@ -70,7 +70,7 @@ for (const [i, [url, x]] of files.entries()) {
 }
 // three quarters from the front, a little above the waist
 const camera = new THREE.PerspectiveCamera(30, WIDTH / HEIGHT, 0.1, 50);
-camera.position.set(1.3, tallest * 0.62, 4.3);
+camera.position.set(1.3 * DISTANCE / 4.3, tallest * 0.62, DISTANCE);
 camera.lookAt(0, tallest * 0.49, 0);
 renderer.render(scene, camera);
 document.title = "rendered";
@@ -79,6 +79,20 @@ document.title = "rendered";
 
 
 def main(out: Path = ROOT / "docs" / "gltf-figures.png") -> int:
+    with tempfile.TemporaryDirectory() as tmp:
+        files = []
+        for gender, percentile in ROW:
+            path = Path(tmp) / f"{gender}{percentile:02.0f}.glb"
+            export_gltf(figure_at(gender, percentile), path)
+            files.append(path)
+        return screenshot(files, out)
+
+
+def screenshot(
+    files: list[Path], out: Path, size: tuple[int, int] = SIZE, distance: float = 4.3
+) -> int:
+    """Chromium's picture of three.js showing the .glb `files` in a row,
+    SPACING apart, from `distance` metres in front."""
     chromium = shutil.which("chromium")
     if chromium is None or not (THREE / "build" / "three.module.js").exists():
         print("needs Debian's chromium and three.js (npm ci --prefix node)", file=sys.stderr)
@@ -86,15 +100,16 @@ def main(out: Path = ROOT / "docs" / "gltf-figures.png") -> int:
     with tempfile.TemporaryDirectory() as tmp:
         site = Path(tmp)
         (site / "three").symlink_to(THREE)
-        files = []
-        for i, (gender, percentile) in enumerate(ROW):
-            name = f"{gender}{percentile:02.0f}.glb"
-            export_gltf(figure_at(gender, percentile), site / name)
-            files.append([f"/{name}", (i - (len(ROW) - 1) / 2) * SPACING])
+        placed = []
+        for i, glb in enumerate(files):
+            name = f"{i}.glb"
+            shutil.copyfile(glb, site / name)
+            placed.append([f"/{name}", (i - (len(files) - 1) / 2) * SPACING])
         page = (
-            PAGE.replace("FILES", repr(files))
-            .replace("WIDTH", str(SIZE[0]))
-            .replace("HEIGHT", str(SIZE[1]))
+            PAGE.replace("FILES", repr(placed))
+            .replace("WIDTH", str(size[0]))
+            .replace("HEIGHT", str(size[1]))
+            .replace("DISTANCE", repr(distance))
         )
         (site / "index.html").write_text(page, encoding="utf-8")
         handler = functools.partial(QuietHandler, directory=str(site))
@@ -106,7 +121,7 @@ def main(out: Path = ROOT / "docs" / "gltf-figures.png") -> int:
                     chromium,
                     *CHROMIUM_FLAGS,
                     f"--user-data-dir={site / 'profile'}",
-                    f"--window-size={SIZE[0]},{SIZE[1]}",
+                    f"--window-size={size[0]},{size[1]}",
                     "--hide-scrollbars",
                     "--virtual-time-budget=20000",
                     f"--screenshot={out}",

@@ -9,8 +9,10 @@ import sys
 import tempfile
 from pathlib import Path
 
+from sass_tui.model.body_surface import body_mesh, figure_surface
 from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import build_humanoid, humanoid_element, scene_document
+from sass_tui.model.hanim import build_humanoid
+from sass_tui.model.hanim_x3d import humanoid_element, scene_document
 
 ROW = (("female", 5.0), ("male", 50.0), ("male", 95.0))
 SPACING = 0.75  # metres between the figures' origins
@@ -28,9 +30,13 @@ def figure_at(gender: str, percentile: float) -> Figure:
 def main(out: Path = Path(__file__).resolve().parents[1] / "docs" / "hanim-figures.png") -> int:
     elements, tallest = [], 0.0
     for i, (gender, percentile) in enumerate(ROW):
-        humanoid = build_humanoid(figure_at(gender, percentile))
+        figure = figure_at(gender, percentile)
+        humanoid = build_humanoid(figure)
         tallest = max(tallest, float(humanoid.sites[0].translation[1]))
-        element = humanoid_element(humanoid, gender)
+        # the humanoid in its skin, as sass export hanim writes it
+        element = humanoid_element(
+            humanoid, gender, body_mesh(humanoid, figure_surface(figure, humanoid))
+        )
         elements.append((element, (i - 1) * SPACING))
     text = scene_document(elements, "SASS HAnim: 5th female, 50th male, 95th male", tallest)
     with tempfile.TemporaryDirectory() as tmp:

@@ -45,8 +45,8 @@ def register(commands: SubParsers) -> None:
 
 
 def run_hanim(args: argparse.Namespace) -> int:
-    # deferred: model.hanim — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.hanim import export_hanim
+    # deferred: model.hanim_x3d — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.model.hanim_x3d import export_hanim
 
     figure, warnings = figure_from_args(args)
     print_warnings(warnings)

@@ -206,8 +206,8 @@ def write_prediction_figure(prediction: Prediction, path: str) -> str:
 
         return ", ".join(str(p) for p in export_gltf(figure, path))
     if path.lower().endswith(".x3d"):
-        # deferred: model.hanim — off sass --help, sass predict, sass --version (sass_tui/startup.py)
-        from sass_tui.model.hanim import export_hanim
+        # deferred: model.hanim_x3d — off sass --help, sass predict, sass --version (sass_tui/startup.py)
+        from sass_tui.model.hanim_x3d import export_hanim
 
         return str(export_hanim(figure, path))
     # deferred: model.figfile — off sass --help, sass predict, sass --version (sass_tui/startup.py)

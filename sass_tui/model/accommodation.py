@@ -53,7 +53,7 @@ from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.figfile import write_fig
 from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import export_hanim
+from sass_tui.model.hanim_x3d import export_hanim
 from sass_tui.model.measures import MEASURES, suggest
 from sass_tui.model.prediction import ALIASES, Prediction, Predictor
 

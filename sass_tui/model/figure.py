@@ -159,6 +159,10 @@ class Figure:
     # (model/landmarks.py: survey names, cm); empty for a population figure,
     # which is placed from its stature.
     landmarks: dict[str, float] = field(default_factory=dict)
+    # A predicted person's body measurements as sass predict gives them
+    # (ANSUR II names, cm; model/body_measures.py shapes the body from them);
+    # empty for anyone else.
+    predicted_measures: dict[str, float] = field(default_factory=dict)
     # Girth rows whose length (z) was set here by hand: a person's .fig keeps
     # them as set instead of the length between their joints
     # (figfile.person_joint_lengths).  Replaced, never changed in place, so

@@ -5,8 +5,8 @@ the segments and gives their masses, so a figure exported as glTF and as HAnim
 agree joint by joint (one placement model; docs/gltf.md).  This module only
 turns the `Humanoid` into glTF 2.0 (Khronos, ISO/IEC 12113): a skeleton of
 nodes named with the ISO 19774 joint names, the HAnim sites as empty nodes,
-and one skinned mesh of smooth solids (superellipsoids) filling the segments'
-boxes and ellipsoids.  Written by hand with numpy, json and struct: glTF is a
+and one skinned mesh: the body's surface lofted through the figure's own
+measurements (model/body_surface.py; the HAnim skin is the same surface).  Written by hand with numpy, json and struct: glTF is a
 JSON document and a little-endian binary buffer (glTF 2.0 spec, sections 3.6
 "Binary data storage" and 4.4 "GLB file format").
 
@@ -28,8 +28,10 @@ from urllib.parse import quote
 import numpy as np
 
 from sass_tui.model.atomic import write_bytes_atomic
+from sass_tui.model.body_surface import body_mesh, figure_surface
 from sass_tui.model.errors import SassError
-from sass_tui.model.hanim import LOA1, SEGMENT_OF, SKIN, build_humanoid
+from sass_tui.model.hanim import LOA1, build_humanoid
+from sass_tui.model.hanim_x3d import SKIN
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS
 
 if TYPE_CHECKING:
@@ -47,18 +49,6 @@ SEATED_FLEXION = math.pi / 2
 _FLOAT, _UNSIGNED_BYTE, _UNSIGNED_SHORT, _UNSIGNED_INT = 5126, 5121, 5123, 5125
 _ARRAY_BUFFER, _ELEMENT_ARRAY_BUFFER = 34962, 34963
 _GLB_MAGIC, _GLB_JSON, _GLB_BIN = 0x46546C67, 0x4E4F534A, 0x004E4942
-
-# Rings along and points around each solid: enough rings that a knee bent
-# 90 degrees bends smoothly over the blend zone (_BLEND below).
-_RINGS, _AROUND = 24, 24
-# A limb's solid reaches past its joints by this share of its thinner
-# half-width, so that the rounded ends of neighbouring segments overlap
-# (joined at the joints) instead of meeting in a notch.
-_OVERLAP = 0.35
-# Half the width of the zone over which a vertex passes from one joint to the
-# next (linear blend skinning), as a share of the thinner half-width of the
-# segment below the joint.
-_BLEND = 0.6
 
 
 class GltfError(ValueError, SassError):
@@ -203,7 +193,8 @@ def render_gltf(figure: Figure, pose: str = "standing") -> GltfDocument:
         if children[joint]:
             nodes[index[joint]]["children"] = children[joint]
 
-    mesh = body_mesh(humanoid)
+    surface = figure_surface(figure, humanoid)
+    mesh = body_mesh(humanoid, surface)
     packer = _Packer()
     inverse_bind = np.zeros((len(joints), 4, 4), dtype=np.float32)
     for i, joint in enumerate(joints):
@@ -270,7 +261,16 @@ def render_gltf(figure: Figure, pose: str = "standing") -> GltfDocument:
         "accessors": packer.accessors,
         "bufferViews": packer.views,
     }
-    document["scenes"][0]["extras"] = figure_extras(figure, humanoid, pose)
+    extras = figure_extras(figure, humanoid, pose)
+    extras["provenance"]["bodySurface"] = (
+        "lofted through the ANSUR II measurements below (docs/gltf.md, The surface)"
+    )
+    measures = surface.measures
+    extras["bodyMeasures"] = {
+        name: {"cm": _round(value), "source": measures.sources[name]}
+        for name, value in measures.values.items()
+    }
+    document["scenes"][0]["extras"] = extras
     return GltfDocument(humanoid.name, document, bytes(packer.data))
 
 
@@ -362,214 +362,6 @@ def sass_version() -> str:
 
 
 # --- the mesh ------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class BodyMesh:
-    positions: np.ndarray  # (n, 3) float32, m
-    normals: np.ndarray  # (n, 3) float32, unit
-    joints: np.ndarray  # (n, 4) uint8, indices into LOA1's joints
-    weights: np.ndarray  # (n, 4) float32, each row adds up to 1
-    triangles: np.ndarray  # (m, 3) counter-clockwise seen from outside
-
-
-# How round each solid is: superellipsoid exponents (eps_around, eps_along):
-# 1 is an ellipse, towards 0 a rectangle.  Limbs are elliptic in section with
-# flattish ends; the trunk, hands and feet squarer.
-def _roundness(segment: str, kind: str, first: bool) -> tuple[float, float]:
-    if kind == "ellipsoid":
-        return (1.0, 1.0)
-    if segment in ("pelvis", "l5") and first:
-        return (0.7, 0.4)
-    if segment.endswith(("_talus", "_tarsal_proximal_phalanx_2")):
-        return (0.5, 0.35)
-    if segment.endswith("_carpal"):
-        return (0.8, 0.5)
-    return (1.0, 0.45)
-
-
-def body_mesh(humanoid: Humanoid) -> BodyMesh:
-    """One solid per segment shape (hanim.Segment.shapes: box or ellipsoid,
-    centre, size), each a superellipsoid filling its box, stretched past the
-    joints it spans so that neighbours overlap; every vertex weighted to its
-    segment's joint, blended with the next joint near a joint (_boundaries)."""
-    joints = [joint for joint, _, _ in LOA1]
-    index = {joint: i for i, joint in enumerate(joints)}
-    boundaries = _boundaries(humanoid)
-    faces = _faces()
-    positions, normals, slots, weights, triangles = [], [], [], [], []
-    count = 0
-    for joint, segment_name, _ in LOA1:
-        segment = humanoid.segments[segment_name]
-        for number, (kind, centre, size) in enumerate(segment.shapes):
-            low, high = _reach(segment_name, number, np.asarray(size, dtype=float))
-            eps = _roundness(segment_name, kind, number == 0)
-            points = np.asarray(centre, dtype=float) + _superellipsoid_points(
-                np.asarray(size, dtype=float), low, high, eps
-            )
-            w = _weights(points, joint, boundaries, index)
-            positions.append(points)
-            normals.append(_vertex_normals(points, faces))
-            order = np.argsort(-w, axis=1)[:, :4]
-            top = np.take_along_axis(w, order, axis=1)
-            top /= top.sum(axis=1, keepdims=True)
-            # slots with no weight name joint 0, as the spec's examples do
-            order = np.where(top > 0, order, 0)
-            slots.append(order.astype(np.uint8))
-            weights.append(top)
-            triangles.append(faces + count)
-            count += len(points)
-    weight = np.vstack(weights).astype(np.float32)
-    # float32 rows must add up to 1 to the validator's tolerance: the heaviest
-    # slot takes up what rounding left
-    weight[:, 0] = np.float32(1.0) - weight[:, 1:].sum(axis=1, dtype=np.float32)
-    return BodyMesh(
-        np.vstack(positions).astype(np.float32),
-        np.vstack(normals).astype(np.float32),
-        np.vstack(slots),
-        weight,
-        np.vstack(triangles).astype(np.uint32),
-    )
-
-
-def _reach(segment: str, number: int, size: np.ndarray) -> tuple[float, float]:
-    """How far (m) a solid reaches below and above its box along Y: limbs and
-    trunk past the joints at their ends; never below the sole, above the
-    vertex or past the fingertips, which are measured."""
-    overlap = _OVERLAP * min(size[0], size[2]) / 2
-    if segment == "skull" or segment.endswith(("_talus", "_tarsal_proximal_phalanx_2")):
-        return (0.0, 0.0)
-    if segment.endswith("_carpal") and number == 1:  # the fingers: the tip is the dactylion
-        return (0.0, overlap)
-    return (overlap, overlap)
-
-
-def _faces() -> np.ndarray:
-    """The triangles of a solid (_superellipsoid_points: the south pole,
-    rings of _AROUND points, the north pole), counter-clockwise from outside."""
-    rings = _RINGS - 1
-    faces: list[list[int]] = []
-    south, north = 0, 1 + rings * _AROUND
-    # A ring runs from +X towards +Z: clockwise seen from above (+Y), so a
-    # face outward counter-clockwise (glTF 3.7.2.1, front faces) goes k+1 -> k
-    # on the ring below and k -> k+1 on the ring above.
-    for k in range(_AROUND):
-        k1 = (k + 1) % _AROUND
-        faces.append([south, 1 + k, 1 + k1])
-        last = 1 + (rings - 1) * _AROUND
-        faces.append([north, last + k1, last + k])
-    for r in range(rings - 1):
-        a, b = 1 + r * _AROUND, 1 + (r + 1) * _AROUND
-        for k in range(_AROUND):
-            k1 = (k + 1) % _AROUND
-            faces.append([a + k, b + k1, a + k1])
-            faces.append([a + k, b + k, b + k1])
-    return np.array(faces, dtype=np.int64)
-
-
-def _signed_power(values: np.ndarray, exponent: float) -> np.ndarray:
-    result: np.ndarray = np.sign(values) * np.abs(values) ** exponent
-    return result
-
-
-def _superellipsoid_points(
-    size: np.ndarray, low: float, high: float, eps: tuple[float, float]
-) -> np.ndarray:
-    """Points (relative to the box's centre) of the superellipsoid
-    (|x/a|^(2/e1) + |z/b|^(2/e1))^(e1/e2) + |y/c|^(2/e2) = 1 filling a box of
-    `size` stretched by `low`/`high` along Y.  Rings at y = c sin(t), t even,
-    so the rounded ends get more rings than the straight middle."""
-    around, along = eps
-    half = size / 2
-    bottom, top = -half[1] - low, half[1] + high
-    mid, c = (top + bottom) / 2, (top - bottom) / 2
-    t = np.linspace(-math.pi / 2, math.pi / 2, _RINGS + 1)[1:-1]
-    u = np.sin(t)
-    # the section's scale at height u: from the implicit equation above
-    scale = np.clip(1 - np.abs(u) ** (2 / along), 0.0, 1.0) ** (along / 2)
-    w = np.linspace(0.0, 2 * math.pi, _AROUND, endpoint=False)
-    cx, cz = _signed_power(np.cos(w), around), _signed_power(np.sin(w), around)
-    ring = np.empty((len(u), _AROUND, 3))
-    ring[:, :, 0] = scale[:, None] * half[0] * cx[None, :]
-    ring[:, :, 1] = (mid + c * u)[:, None]
-    ring[:, :, 2] = scale[:, None] * half[2] * cz[None, :]
-    return np.vstack([[0.0, bottom, 0.0], ring.reshape(-1, 3), [0.0, top, 0.0]])
-
-
-def _vertex_normals(points: np.ndarray, faces: np.ndarray) -> np.ndarray:
-    a, b, c = (points[faces[:, i]] for i in range(3))
-    face = np.cross(b - a, c - a)
-    normals = np.zeros_like(points)
-    for i in range(3):
-        np.add.at(normals, faces[:, i], face)
-    length = np.linalg.norm(normals, axis=1, keepdims=True)
-    result: np.ndarray = normals / np.where(length > 0, length, 1.0)
-    return result
-
-
-# (parent joint, child joint, centre, direction from the parent's segment
-#  into the child's, blend half-width (m), blend the parent's solid too)
-Boundary = tuple[str, str, np.ndarray, np.ndarray, float, bool]
-
-
-def _boundaries(humanoid: Humanoid) -> list[Boundary]:
-    """Where a vertex passes from one joint's influence to the next: along
-    the limbs and the spine both neighbours blend; at the hips and shoulders,
-    which sit off the trunk's axis, only the limb's top does."""
-    up, down, forward = np.array([0.0, 1, 0]), np.array([0.0, -1, 0]), np.array([0.0, 0, 1])
-    chain: list[tuple[str, str, np.ndarray, bool]] = [
-        ("sacroiliac", "vl5", up, True),
-        ("vl5", "skullbase", up, True),
-    ]
-    for s in ("l", "r"):
-        chain += [
-            ("sacroiliac", f"{s}_hip", down, False),
-            (f"{s}_hip", f"{s}_knee", down, True),
-            (f"{s}_knee", f"{s}_talocrural", down, True),
-            (f"{s}_talocrural", f"{s}_metatarsophalangeal_2", forward, True),
-            ("vl5", f"{s}_shoulder", down, False),
-            (f"{s}_shoulder", f"{s}_elbow", down, True),
-            (f"{s}_elbow", f"{s}_radiocarpal", down, True),
-        ]
-    out: list[Boundary] = []
-    for parent, child, direction, both in chain:
-        shapes = humanoid.segments[SEGMENT_OF[child]].shapes
-        size = np.asarray(shapes[0][2], dtype=float)
-        across = [size[i] for i in range(3) if direction[i] == 0]
-        width = max(_BLEND * min(across) / 2, 0.01)
-        centre = np.asarray(humanoid.centers[child], dtype=float)
-        out.append((parent, child, centre, direction, width, both))
-    return out
-
-
-def _weights(
-    points: np.ndarray, joint: str, boundaries: list[Boundary], index: dict[str, int]
-) -> np.ndarray:
-    """Each point's weight on every joint (n, joints): 1 on its own segment's
-    joint, shared linearly with the neighbour over a boundary's blend zone
-    (half each at the joint centre)."""
-    w = np.zeros((len(points), len(index)))
-    own = np.ones(len(points))
-    for parent, child, centre, direction, width, both in boundaries:
-        if joint == child:
-            # the proximal end: the part above the joint goes with the parent
-            s = (points - centre) @ direction
-            share = np.clip(0.5 - s / (2 * width), 0.0, 1.0)
-            w[:, index[parent]] += share
-            own -= share
-        elif joint == parent and both:
-            s = (points - centre) @ direction
-            share = np.clip(0.5 + s / (2 * width), 0.0, 1.0)
-            w[:, index[child]] += share
-            own -= share
-    # a short segment with both ends in their blend zones: scale the shares
-    over = own < 0
-    if over.any():
-        given = 1 - own[over]
-        w[over] /= given[:, None]
-        own[over] = 0.0
-    w[:, index[joint]] += own
-    return w
 
 
 # --- packing -------------------------------------------------------------------

@@ -39,9 +39,15 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 
+from sass_tui.model.body_measures import SURFACE_MEASURES
+
+# Appendix L.1: the anklebone lies 0.2516 foot lengths in front of the heel.
+HEEL_BEHIND_ANKLE = 0.2516
+
 # The ANSUR II measurements (the survey's column names, canonical unit cm)
-# that place a person's landmarks; db/individual.py reads exactly these.
-LANDMARK_MEASURES: tuple[str, ...] = (
+# that place a person's landmarks and shape their body's surface
+# (model/body_measures.py); db/individual.py reads exactly these.
+_PLACING: tuple[str, ...] = (
     "stature",
     "tragiontopofhead",
     "cervicaleheight",
@@ -59,6 +65,10 @@ LANDMARK_MEASURES: tuple[str, ...] = (
     "tibialheight",
     "lateralmalleolusheight",
     "bimalleolarbreadth",
+)
+LANDMARK_MEASURES: tuple[str, ...] = (
+    *_PLACING,
+    *(name for name in SURFACE_MEASURES if name not in _PLACING),
 )
 
 # Rab, Petuskey & Bagley (2002): the shoulder centre below the acromion, as a

@@ -54,6 +54,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 import numpy as np
 import numpy.typing as npt
 
+from sass_tui.model.body_measures import SURFACE_MEASURES
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES
 from sass_tui.model.names import (
@@ -306,7 +307,7 @@ class Prediction:
         of mass from the prediction, percentiles against `base`'s population,
         joint limits and any cell without a prediction from that population at
         output.  `base` is left unchanged, so Disp. Pop. returns to it."""
-        return base.for_person(
+        figure = base.for_person(
             self.label(),
             self.gender,
             {
@@ -317,6 +318,14 @@ class Prediction:
             mass=self.mass,
             stature=self.stature,
         )
+        # the body's surface goes through the measurements predicted here
+        # (model/body_measures.py), known ones included
+        figure.predicted_measures = {
+            name: value
+            for name in SURFACE_MEASURES
+            if math.isfinite(value := self.value(f"measure.{name}"))
+        }
+        return figure
 
     def label(self) -> str:
         """'predicted from stature 180 cm, mass 85 kg' (the population label of the figure)."""

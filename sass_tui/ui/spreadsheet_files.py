@@ -260,8 +260,9 @@ class FileCommands(SheetScreenBase):
     async def _export_hanim(self) -> None:
         """Export HAnim's questions: the file name, and y/N before a file is
         replaced."""
-        # deferred: model.hanim — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.hanim import not_in_humanoid_note, render_hanim
+        # deferred: model.hanim, model.hanim_x3d — off the first screen (sass_tui/startup.py)
+        from sass_tui.model.hanim import not_in_humanoid_note
+        from sass_tui.model.hanim_x3d import render_hanim
 
         default = self._default_name(".x3d")
         name = await self.answer_to(f"HAnim file name [{default}]:", complete=self.complete_file)

@@ -15,7 +15,8 @@ import pytest
 from sass_tui.cli import main
 from sass_tui.model.figfile import FigureIncompleteError
 from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import export_hanim, rotation_matrix
+from sass_tui.model.hanim import rotation_matrix
+from sass_tui.model.hanim_x3d import export_hanim
 from sass_tui.model.names import JOINT_LIMITS, MASS_FRACTIONS, row_index
 
 # ISO/IEC 19775-1 (X3D 4.0) HAnimHumanoid field defaults the export relies on.
@@ -117,13 +118,11 @@ def test_feet_on_the_ground_and_joints_at_the_landmarks(male50, ansur_dir):
     script = runpy.run_path(str(ROOT / "scripts" / "hanim_landmarks.py"))
     fractions = script["landmark_fractions"](ansur_dir)["male"]
     stature = figure.stature / 100
-    # the soles of the foot boxes touch Y = 0, nothing is below it
-    talus = [s for s in root.iter("HAnimSegment") if s.get("name", "").endswith("_talus")]
-    for segment in talus:
-        transform = segment.find("Transform")
-        centre = _floats(transform.get("translation"))
-        size = _floats(transform.find("Shape/Box").get("size"))
-        assert centre[1] - size[1] / 2 == pytest.approx(0, abs=1e-6)
+    # the soles of the skin touch Y = 0, nothing is below it; its top is the vertex
+    (coordinate,) = [c for c in root.iter("Coordinate") if c.get("point")]
+    skin = _floats(coordinate.get("point")).reshape(-1, 3)
+    assert skin[:, 1].min() == pytest.approx(0, abs=1e-5)
+    assert skin[:, 1].max() == pytest.approx(stature, abs=1e-5)
 
     def height(joint):
         return _floats(joints[joint].get("center"))[1]
@@ -416,6 +415,7 @@ def test_axis_angle_round_trips_every_axis_aligned_rotation():
 
 _CONTAINER = {"Appearance": "appearance", "Material": "material", "Box": "geometry"}
 _CONTAINER["Sphere"] = "geometry"
+_CONTAINER.update({"IndexedTriangleSet": "geometry", "Coordinate": "coord", "Normal": "normal"})
 
 
 def _x3d_value(kind: str, text: str):
@@ -434,6 +434,9 @@ def _x3d_value(kind: str, text: str):
         return text == "true"
     if kind.startswith("SF"):
         return tuple(numbers)
+    if kind in ("MFVec3f", "MFVec2f"):
+        width = int(kind[-2])
+        return [tuple(numbers[i : i + width]) for i in range(0, len(numbers), width)]
     return numbers
 
 
@@ -586,7 +589,8 @@ def test_the_segment_dimensions_the_humanoid_leaves_out_are_exactly_those_listed
     # Every girth cell changed by 10 %: the ones in NOT_IN_HUMANOID leave the
     # export as it was (the joints stand at the stature's landmarks; LOA-1
     # has no clavicle or eye), every other one changes it.
-    from sass_tui.model.hanim import NOT_IN_HUMANOID, render_hanim
+    from sass_tui.model.hanim import NOT_IN_HUMANOID
+    from sass_tui.model.hanim_x3d import render_hanim
     from sass_tui.model.names import GIRTH, ROWS
 
     before = render_hanim(Figure.default())
@@ -634,3 +638,42 @@ def test_edits_the_humanoid_leaves_out_are_named():
     groups[GIRTH][row_index(GIRTH, "neck"), 2] = 9.0
     person = figure.for_person("P", "male", groups, stature=175.0)
     assert edits_not_in_humanoid(person) == []
+
+
+@pytest.mark.slow
+def test_the_skin_is_the_gltf_body_bound_to_the_same_joints(tmp_path):
+    """The humanoid wears the glTF body's surface as its HAnim skin (clause
+    6.3): the same vertices (read back from the .glb with pygltflib), every
+    vertex's joint weights adding up to 1, and the joints that move a vertex
+    those of its glTF JOINTS_0 slots."""
+    pygltflib = pytest.importorskip("pygltflib")
+    figure, _, root = _export(tmp_path, "skin.x3d", "female", 50)
+    glb = tmp_path / "skin.glb"
+    assert main(["export", "gltf", "--gender", "female", "-o", str(glb)]) == 0
+    gltf = pygltflib.GLTF2().load(str(glb))
+    blob = gltf.binary_blob()
+    attributes = gltf.meshes[0].primitives[0].attributes
+
+    def accessor(index, dtype, width):
+        acc = gltf.accessors[index]
+        start = gltf.bufferViews[acc.bufferView].byteOffset or 0
+        return np.frombuffer(blob, dtype, acc.count * width, start).reshape(acc.count, width)
+
+    positions = accessor(attributes.POSITION, "<f4", 3)
+    slots = accessor(attributes.JOINTS_0, "u1", 4)
+    (coordinate,) = [c for c in root.iter("Coordinate") if c.get("point")]
+    skin = _floats(coordinate.get("point")).reshape(-1, 3)
+    assert skin.shape == positions.shape
+    assert np.abs(skin - positions).max() < 1e-5
+    order = [j.get("name") for j in root.iter("HAnimJoint") if j.get("name")]
+    weights = np.zeros((len(skin), len(order)))
+    for number, joint in enumerate(order):
+        element = _joints(root)[joint]
+        if element.get("skinCoordIndex"):
+            index = _floats(element.get("skinCoordIndex")).astype(int)
+            weights[index, number] = _floats(element.get("skinCoordWeight"))
+    assert np.allclose(weights.sum(axis=1), 1.0, atol=1e-4)
+    gltf_names = [gltf.nodes[j].name for j in gltf.skins[0].joints]
+    for vertex in range(0, len(skin), 97):
+        moving = {order[j] for j in np.nonzero(weights[vertex] > 0)[0]}
+        assert moving <= {gltf_names[j] for j in slots[vertex]}

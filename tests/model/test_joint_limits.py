@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 
 from sass_tui.model.figfile import joint_limit_variable, parse_fig, render_fig
 from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import render_hanim
+from sass_tui.model.hanim_x3d import render_hanim
 from sass_tui.model.names import AXES, JOINT_LIMITS, ROWS
 from sass_tui.model.percentile import value_at
 from sass_tui.model.strength import StrengthError, check_angle
