@@ -2,7 +2,10 @@
 the weights (the method: sass_tui/model/targets.py, docs/target-populations.md).
 
 A target's base population is `(<population>) AND gender = <gender>`, by
-default the ANSUR II people (`source = ansur2`) of that gender.  Its weights
+default the ANSUR II people (`source = ansur2`) of that gender; a target of
+both genders (`BOTH`, the shipped `nhanes-2017-2020`) is the population's
+people of either, each gender calibrated to the sample's rows of that gender
+and carrying that gender's share of the sample's weight.  Its weights
 have mean 1 over the base people that have every `--by` value; the others
 weigh 0.  A weighted count is therefore in people: the base people a
 target's weights stand for.  Tables: `target` and `target_weight` (schema 5,
@@ -27,12 +30,14 @@ import numpy.typing as npt
 from sass_tui.db.dialect import mark_of, writing
 from sass_tui.db.query import compile_query, run_query
 from sass_tui.model.target_sample import Sample
-from sass_tui.model.targets import TargetError, Weighting, calibrate
+from sass_tui.model.targets import TargetError, Weighting, calibrate, kish_effective_n
 from sass_tui.model.text import printable
 from sass_tui.model.vocabulary import GENDERS
 
 DEFAULT_POPULATION = "source = ansur2"  # the real people (= db.fit.DEFAULT_POPULATION)
 MAX_NAME = 64
+BOTH = "both"  # a target of both genders
+WEIGHTED_BY = "weighted_by"  # the summary's key of the sample's survey weight column
 
 
 class TargetExistsError(TargetError):
@@ -53,8 +58,25 @@ class Target:
     sample_rows: int
     people: int  # base people with every --by value (they carry the weight)
     effective_n: float  # Kish
-    summary: dict[str, Any]  # field -> {"target"|"weighted"|"unweighted": [mean, sd, p5, p50, p95]}
+    # gender -> field -> {"target"|"weighted"|"unweighted": [mean, sd, p5, p50, p95],
+    # "outside_share": share}; a target stored before both genders: field -> {...}
+    summary: dict[str, Any]
     created: str
+    weighted_by: str | None = None  # the sample's survey weight column
+
+    @property
+    def genders(self) -> tuple[str, ...]:
+        return tuple(GENDERS) if self.gender == BOTH else (self.gender,)
+
+    def outside_share(self, gender: str, field: str) -> float | None:
+        """The share of the target's `gender` weight beyond every person's
+        `field` (None: the target was not made over `field`, or before sass
+        said it)."""
+        of_gender = self.summary.get(gender)
+        if not isinstance(of_gender, dict):  # the summary of an older sass: one gender's
+            of_gender = self.summary if gender == self.gender else {}
+        share = of_gender.get(field, {}).get("outside_share")
+        return None if share is None else float(share)
 
     @property
     def base_query(self) -> str:
@@ -66,9 +88,11 @@ class Target:
 
     def words(self) -> str:
         """How a weighted answer names its target, on screen and in files."""
+        who = "both genders" if self.gender == BOTH else self.gender
+        survey = f" with its weights {self.weighted_by}" if self.weighted_by else ""
         return (
-            f"target {self.name} ({self.gender}, weighted by {', '.join(self.fields)} "
-            f"to {self.sample}; effective n {self.effective_n:.0f} of {self.people})"
+            f"target {self.name} ({who}, weighted by {', '.join(self.fields)} "
+            f"to {self.sample}{survey}; effective n {self.effective_n:.0f} of {self.people})"
         )
 
     def to_json(self) -> dict[str, Any]:
@@ -81,6 +105,7 @@ class Target:
             "sample_rows": self.sample_rows,
             "people": self.people,
             "effective_n": round(self.effective_n, 2),
+            "weighted_by": self.weighted_by,
         }
 
 
@@ -100,7 +125,7 @@ class TargetWeights:
 
 
 def base_query(population: str, gender: str) -> str:
-    return f"({population}) AND gender = {gender}"
+    return f"({population})" if gender == BOTH else f"({population}) AND gender = {gender}"
 
 
 def check_name(name: str) -> str:
@@ -121,42 +146,92 @@ def make_target(
     sample: Sample,
     sample_name: str,
     population: str = DEFAULT_POPULATION,
-) -> tuple[Target, TargetWeights, Weighting]:
-    """Compute a target (nothing stored: `store_target` stores it)."""
+    *,
+    within_range: bool = False,
+) -> tuple[Target, TargetWeights, dict[str, Weighting]]:
+    """Compute a target (nothing stored: `store_target` stores it); `gender`
+    BOTH calibrates each gender to its own rows of the sample (which must
+    say each row's gender)."""
     # deferred: db.values — off sass target (sass_tui/startup.py)
     from sass_tui.db.values import load_values
 
     check_name(name)
-    if gender not in GENDERS:
-        raise TargetError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
+    if gender not in (*GENDERS, BOTH):
+        raise TargetError(f"gender must be {', '.join(GENDERS)} or {BOTH}, not {gender!r}")
+    if gender == BOTH and sample.genders is None:
+        raise TargetError(
+            f"{sample_name}: no gender column; a target of both genders needs each row's gender",
+            where=sample_name,
+        )
     compile_query(population)
-    values = load_values(conn, sample.fields, base_query(population, gender))
-    if len(values) == 0:
-        raise TargetError(f"the population {population!r} has no {gender} people")
-    weighting = calibrate(sample.fields, values.matrix, sample.matrix, where=sample_name)
-    summary = {
-        c.field: {
-            "target": c.target.as_list(),
-            "weighted": c.weighted.as_list(),
-            "unweighted": c.unweighted.as_list(),
+    genders = tuple(GENDERS) if gender == BOTH else (gender,)
+    shares = _gender_shares(sample, genders)
+    weightings: dict[str, Weighting] = {}
+    parts: list[tuple[npt.NDArray[np.int64], npt.NDArray[np.float64]]] = []
+    for g in genders:
+        values = load_values(conn, sample.fields, base_query(population, g))
+        if len(values) == 0:
+            raise TargetError(f"the population {population!r} has no {g} people")
+        rows = sample.of_gender(g) if gender == BOTH else sample
+        where = f"{sample_name} ({g} rows)" if gender == BOTH else sample_name
+        weighting = calibrate(
+            sample.fields,
+            values.matrix,
+            rows.matrix,
+            where=where,
+            sample_weights=rows.weights,
+            within_range=within_range,
+        )
+        weightings[g] = weighting
+        used = weighting.used
+        parts.append((values.ids[used], weighting.weights[used] * shares[g]))
+    people = sum(len(ids) for ids, _ in parts)
+    # Each gender's weights have mean 1 over its people; scaled by its share of
+    # the sample's weight and by people / its people, all have mean 1 together.
+    ids = np.concatenate([ids for ids, _ in parts])
+    weights = np.concatenate([w * people / len(w) for _, w in parts])
+    order = np.argsort(ids, kind="stable")
+    summary: dict[str, Any] = {
+        g: {
+            c.field: {
+                "target": c.target.as_list(),
+                "weighted": c.weighted.as_list(),
+                "unweighted": c.unweighted.as_list(),
+                "outside_share": c.outside_share,
+            }
+            for c in w.checks
         }
-        for c in weighting.checks
+        for g, w in weightings.items()
     }
+    summary[WEIGHTED_BY] = sample.weighted_by
     target = Target(
         name=name,
         gender=gender,
         population=population,
         fields=tuple(sample.fields),
         sample=sample_name,
-        sample_rows=weighting.sample_rows,
-        people=weighting.people,
-        effective_n=weighting.effective_n,
+        sample_rows=sum(w.sample_rows for w in weightings.values()),
+        people=people,
+        effective_n=kish_effective_n(weights),
         summary=summary,
         created=_dt.datetime.now(_dt.UTC).isoformat(timespec="seconds"),
+        weighted_by=sample.weighted_by,
     )
-    used = weighting.used
-    weights = TargetWeights(target, values.ids[used], weighting.weights[used])
-    return target, weights, weighting
+    return target, TargetWeights(target, ids[order], weights[order]), weightings
+
+
+def _gender_shares(sample: Sample, genders: tuple[str, ...]) -> dict[str, float]:
+    """Each gender's share of the sample's weight (1 for a one-gender target)."""
+    if len(genders) == 1 or sample.genders is None:
+        return {g: 1.0 for g in genders}
+    of = np.array(sample.genders, dtype=object)
+    w = sample.row_weights
+    total = float(w.sum())
+    shares = {g: float(w[of == g].sum()) / total for g in genders}
+    empty = [g for g, share in shares.items() if share <= 0]
+    if empty:
+        raise TargetError(f"the sample has no {empty[0]} rows; a target of both genders needs both")
+    return shares
 
 
 def store_target(conn: sqlite3.Connection, weights: TargetWeights, *, replace: bool) -> None:
@@ -235,6 +310,7 @@ def _target(row: Sequence[Any]) -> Target:
         effective_n=float(effective_n),
         summary=json.loads(summary),
         created=created,
+        weighted_by=json.loads(summary).get(WEIGHTED_BY),
     )
 
 
