@@ -14,7 +14,7 @@ import argparse
 import sys
 from typing import TYPE_CHECKING, TextIO
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import VIRTUAL_PREFIX, SubParsers, add_db_option, open_db
 from sass_tui.model.datasets import NHANES, NHANES_NAME, NHANES_WEIGHT, shipped_text
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
@@ -82,6 +82,13 @@ def register(commands: SubParsers) -> None:
         help="match only the sample's rows inside the people's range of every --by "
         "measurement (the report's 'outside' column says how much lies beyond)",
     )
+    target.add_argument(
+        "--virtual",
+        action="store_true",
+        help="also store the virtual population NAME: one VIRTUAL person per sample row, "
+        "its own stature, mass, age and gender, every other measure predicted from the "
+        "real people (docs/target-populations.md); reached with --virtual NAME",
+    )
     target.add_argument("--force", action="store_true", help="replace a target of that name")
     target.add_argument("--list", action="store_true", help="list the stored targets")
     target.add_argument("--drop", metavar="NAME", help="delete a stored target")
@@ -97,11 +104,16 @@ def run(args: argparse.Namespace) -> int:
             if args.list:
                 _list(conn, sys.stdout)
             else:
-                # deferred: db.targets — off sass --help, sass --version (sass_tui/startup.py)
+                # deferred: db.targets, db.virtual — off sass --help, sass --version, sass target (sass_tui/startup.py)
                 from sass_tui.db.targets import drop_target
+                from sass_tui.db.virtual import drop_virtual
 
-                drop_target(conn, args.drop)
-                print(f"dropped target {args.drop}")
+                if args.drop.startswith(VIRTUAL_PREFIX):
+                    people = drop_virtual(conn, args.drop)
+                    print(f"dropped virtual population {args.drop} and its {people} virtual people")
+                else:
+                    drop_target(conn, args.drop)
+                    print(f"dropped target {args.drop}")
         finally:
             conn.close()
         return 0
@@ -182,10 +194,26 @@ def _make(args: argparse.Namespace) -> int:
             args.population,
             within_range=args.within_range,
         )
+        population = None
+        if args.virtual:
+            # deferred: db.virtual — off sass target (sass_tui/startup.py)
+            from sass_tui.db.virtual import make_virtual, store_virtual
+
+            population = make_virtual(conn, args.name, sample, args.sample, gender)
         store_target(conn, weights, replace=True)
+        if population is not None:
+            store_virtual(conn, population)
     finally:
         conn.close()
     _report(target, weightings, sample.incomplete, sys.stdout)
+    if population is not None:
+        beyond = ", ".join(f"{n} {g}" for g, n in population.beyond.items())
+        print(
+            f"virtual population {args.name}: {len(population.people)} VIRTUAL people (their own "
+            f"stature, mass, age and gender; every other measure predicted from the real "
+            f"people); beyond the range the prediction was fitted on: {beyond}; "
+            f"effective n {population.target.effective_n:.0f} (sass fit --virtual {args.name})"
+        )
     return 0
 
 
@@ -266,15 +294,20 @@ def _report(target: Target, weightings: dict[str, Weighting], incomplete: int, o
 
 def _list(conn, out: TextIO) -> None:  # conn: the database layer's connection
     # deferred: db.targets — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.targets import list_targets
+    from sass_tui.db.targets import SHIPPED, list_targets
 
     targets = list_targets(conn)
+    stored = {t.name for t in targets}
+    for name in SHIPPED:
+        if name not in stored:
+            out.write(f"{name}  shipped (NHANES 2017-March 2020 adults): made on first use\n")
     if not targets:
         out.write("no targets (make one with `sass target NAME --gender G --sample FILE.csv`)\n")
         return
     for t in targets:
+        kind = "VIRTUAL population (predicted people), " if t.is_virtual else ""
         out.write(
-            f"{t.name}  {t.gender}, by {', '.join(t.fields)}, {t.sample_rows} rows of "
+            f"{t.name}  {kind}{t.gender}, by {', '.join(t.fields)}, {t.sample_rows} rows of "
             f"{t.sample}{' weighted by ' + t.weighted_by if t.weighted_by else ''}; effective n {t.effective_n:.0f} of {t.people} "
             f"({t.percent_effective:.1f} %); {t.created}\n"
         )

@@ -256,7 +256,10 @@ def fit_test(
         passes = np.hstack([passes, np.array(predicted, dtype=float)])
         texts += tuple(f"{limit.text} (predicted)" for limit in strength_limits)
     steps(2, 3)
-    result = _summarise(conn, texts, population, weights, ids, gender, passes, failing)
+    # A virtual population's people stand for their survey's: each gender's
+    # shares are weighted by them (a real target's are given beside, unweighted).
+    virtual = target.of(ids) if target is not None and target.target.is_virtual else None
+    result = _summarise(conn, texts, population, weights, ids, gender, passes, failing, virtual)
     if target is not None:
         result = replace(result, target=_target_share(target, ids, passes))
     steps(3, 3)
@@ -290,7 +293,9 @@ def _summarise(
     gender: npt.NDArray[Any],
     passes: npt.NDArray[np.float64],
     want_failing: bool,
+    person_weights: npt.NDArray[np.float64] | None = None,
 ) -> FitResult:
+    w = np.ones(len(ids)) if person_weights is None else person_weights
     unmeasured = np.isnan(passes)
     measured = ~unmeasured.any(axis=1)
     fails = passes == 0.0  # NaN compares False: only a definite failure
@@ -304,8 +309,9 @@ def _summarise(
         counted = mine & measured
         n = int(counted.sum())
         fit = int((counted & (fail_count == 0)).sum())
+        weight = float(w[counted].sum())
         own = [
-            100.0 * float((counted & ~fails[:, k]).sum()) / n if n else None
+            100.0 * float(w[counted & ~fails[:, k]].sum()) / weight if n else None
             for k in range(len(limits))
         ]
         for k, share in enumerate(own):
@@ -316,7 +322,7 @@ def _summarise(
             n=n,
             fit=fit,
             not_measured=int((mine & ~measured).sum()),
-            percent=100.0 * fit / n if n else None,
+            percent=100.0 * float(w[counted & (fail_count == 0)].sum()) / weight if n else None,
             naive_percent=naive,
         )
     used = {g: w for g, w in weights.items() if g in genders and genders[g].n > 0 and w > 0}
@@ -414,7 +420,7 @@ def load_family(
     compile_query(population)  # its own error, before the combined query's
     if weighted_to is not None:
         made = weighted_to.target
-        if made.gender != gender:
+        if gender not in made.genders:
             raise FitError(f"the target {made.name} is of {made.gender} people, not {gender}")
         if population != made.population:
             population = f"({population}) AND ({made.population})"

@@ -29,6 +29,8 @@ import numpy.typing as npt
 
 from sass_tui.db.dialect import mark_of, writing
 from sass_tui.db.query import compile_query, run_query
+from sass_tui.db.scope import VIRTUAL_PREFIX
+from sass_tui.model.datasets import NHANES_NAME
 from sass_tui.model.target_sample import Sample
 from sass_tui.model.targets import TargetError, Weighting, calibrate, kish_effective_n
 from sass_tui.model.text import printable
@@ -37,6 +39,8 @@ from sass_tui.model.vocabulary import GENDERS
 DEFAULT_POPULATION = "source = ansur2"  # the real people (= db.fit.DEFAULT_POPULATION)
 MAX_NAME = 64
 BOTH = "both"  # a target of both genders
+# The shipped target and virtual population (db/shipped.py): made on first use.
+SHIPPED = (NHANES_NAME, f"{VIRTUAL_PREFIX}{NHANES_NAME}")
 WEIGHTED_BY = "weighted_by"  # the summary's key of the sample's survey weight column
 
 
@@ -86,8 +90,23 @@ class Target:
     def percent_effective(self) -> float:
         return 100.0 * self.effective_n / self.people if self.people else 0.0
 
+    @property
+    def is_virtual(self) -> bool:
+        """A virtual population (db/virtual.py): its people are predicted, not measured."""
+        return self.name.startswith(VIRTUAL_PREFIX)
+
     def words(self) -> str:
         """How a weighted answer names its target, on screen and in files."""
+        if self.is_virtual:
+            virtual = self.summary.get("virtual", {})
+            beyond = sum(virtual.get("beyond", {}).values())
+            return (
+                f"VIRTUAL people, not measured: {self.name.removeprefix(VIRTUAL_PREFIX)} "
+                f"({self.people} virtual people with {self.sample}'s own stature and mass, every "
+                f"other measure predicted from the real people; {beyond} beyond the range the "
+                f"prediction was fitted on; weighted by {self.weighted_by or 'nothing'}; "
+                f"effective n {self.effective_n:.0f})"
+            )
         who = "both genders" if self.gender == BOTH else self.gender
         survey = f" with its weights {self.weighted_by}" if self.weighted_by else ""
         return (
@@ -237,37 +256,43 @@ def _gender_shares(sample: Sample, genders: tuple[str, ...]) -> dict[str, float]
 def store_target(conn: sqlite3.Connection, weights: TargetWeights, *, replace: bool) -> None:
     """Store a made target; TargetExistsError unless `replace` when its name is taken."""
     target = weights.target
-    m = mark_of(conn)
     with writing(conn):
         if target_exists(conn, target.name):
             if not replace:
                 raise TargetExistsError(
                     f"a target named {target.name!r} exists; give --force to replace it"
                 )
-            _delete(conn, target.name)
-        conn.execute(
-            f"INSERT INTO target VALUES ({', '.join([m] * 10)})",
-            (
-                target.name,
-                target.gender,
-                target.population,
-                json.dumps(list(target.fields)),
-                target.sample,
-                target.sample_rows,
-                target.people,
-                target.effective_n,
-                json.dumps(target.summary),
-                target.created,
-            ),
-        )
-        conn.executemany(
-            f"INSERT INTO target_weight VALUES ({m}, {m}, {m})",
-            zip(
-                [target.name] * len(weights.ids),
-                weights.ids.tolist(),
-                weights.weights.tolist(),
-            ),
-        )
+        insert_target(conn, weights)
+
+
+def insert_target(conn: sqlite3.Connection, weights: TargetWeights) -> None:
+    """Store a made target in the caller's transaction, replacing one of its name."""
+    target = weights.target
+    m = mark_of(conn)
+    _delete(conn, target.name)
+    conn.execute(
+        f"INSERT INTO target VALUES ({', '.join([m] * 10)})",
+        (
+            target.name,
+            target.gender,
+            target.population,
+            json.dumps(list(target.fields)),
+            target.sample,
+            target.sample_rows,
+            target.people,
+            target.effective_n,
+            json.dumps(target.summary),
+            target.created,
+        ),
+    )
+    conn.executemany(
+        f"INSERT INTO target_weight VALUES ({m}, {m}, {m})",
+        zip(
+            [target.name] * len(weights.ids),
+            weights.ids.tolist(),
+            weights.weights.tolist(),
+        ),
+    )
 
 
 def target_exists(conn: sqlite3.Connection, name: str) -> bool:
