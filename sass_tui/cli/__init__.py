@@ -31,6 +31,7 @@ VERBS = (
     "fit",
     "family",
     "target",
+    "stats",
     "db",
     "serve",
 )

@@ -19,6 +19,7 @@ POSTGRES_COMMANDS = (
     "fig",
     "export",
     "strength",
+    "stats",
 )
 POSTGRES_VERBS = (
     "`sass` (the spreadsheet), "
