@@ -103,7 +103,7 @@ def run(args: argparse.Namespace) -> int:
     # deferred: db.query, db.shipped, db.stats, model.accommodation — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import QueryError, compile_query
     from sass_tui.db.shipped import load_weights
-    from sass_tui.db.stats import EVERY_MEASURE, check_unit, stats_table
+    from sass_tui.db.stats import EVERY_MEASURE, check_unit, format_stats, stats_table
     from sass_tui.model.accommodation import measure_field
 
     # Everything that needs no database first: a bad input touches nothing.
@@ -138,7 +138,7 @@ def run(args: argparse.Namespace) -> int:
     elif args.format == "csv":
         write_csv(table, sys.stdout)
     else:
-        sys.stdout.write(table_text(table))
+        sys.stdout.write(format_stats(table))
     return 0
 
 
@@ -146,7 +146,7 @@ def _number(value: float | None, digits: int = 2) -> float | None:
     return None if value is None or not math.isfinite(value) else round(value, digits)
 
 
-def _key(p: float) -> str:
+def _key(p: float) -> str:  # = db.stats.percentile_key (no database import on `sass --help`)
     return f"{p:g}"
 
 
@@ -170,34 +170,6 @@ def table_json(table: StatsTable) -> dict[str, Any]:
             for m in table.measures
         },
     }
-
-
-def table_text(table: StatsTable) -> str:
-    keys = [_key(p) for p in (table.measures[0].percentiles if table.measures else {})]
-    lines = []
-    if table.virtual:
-        lines.append(f"VIRTUAL people (predicted, not measured): {table.population}")
-    elif table.weighted_by:
-        lines.append(f"weighted: {table.population}")
-    lines.append(
-        f"{table.n} people selected by: {table.query}; effective n {table.effective_n:.0f}"
-    )
-    head = f"{'measure':<32} {'unit':<4} {'n':>6} {'mean':>8} {'SD':>7}" + "".join(
-        f" {'p' + k:>8}" for k in keys
-    )
-    with_outside = any(m.outside_share is not None for m in table.measures)
-    lines.append(head + (f" {'outside':>8}" if with_outside else ""))
-    for m in table.measures:
-        row = (
-            f"{m.field.removeprefix('measure.'):<32} {m.unit:<4} {m.n:>6} {m.mean:8.2f} {m.sd:7.2f}"
-        )
-        row += "".join(f" {v:8.2f}" for v in m.percentiles.values())
-        if with_outside:
-            row += f" {100 * m.outside_share:7.1f}%" if m.outside_share is not None else f" {'':>8}"
-        lines.append(row)
-    if with_outside:
-        lines.append("outside: the share of the target's weight beyond every person weighted")
-    return "\n".join(lines) + "\n"
 
 
 def write_csv(table: StatsTable, out: TextIO) -> None:

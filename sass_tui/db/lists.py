@@ -43,6 +43,7 @@ if TYPE_CHECKING:
     from sass_tui.db.fit import FitResult, LimitHistogram
     from sass_tui.db.individual import Individual
     from sass_tui.db.population import SelectionPopulation
+    from sass_tui.db.stats import StatsTable
     from sass_tui.db.targets import TargetWeights, WeightedCount
 
 # What the database may answer a user's request with (QueryError, DatabaseError
@@ -455,6 +456,21 @@ class QueryLists:
             cancel=cancel,
             target=self._target(target),
         )
+
+    @_serialised
+    def stats(
+        self,
+        query: str | None,
+        target: str | None = None,
+        cancel: Cancel | None = None,
+    ) -> StatsTable:
+        """The percentile table of every measure over the query's people
+        (db/stats.py), weighted to a target or a virtual population by name."""
+        # deferred: db.stats — only stats() needs it; importing db.lists does not load it
+        from sass_tui.db.stats import EVERY_MEASURE, stats_table
+
+        with interruptible(self._conn, cancel, "the table"):
+            return stats_table(self._conn, list(EVERY_MEASURE), query, weights=self._target(target))
 
     # --- target populations and the real-people scope ----------------------
     def _target(self, name: str | None) -> TargetWeights | None:

@@ -193,3 +193,37 @@ def _outside(
             return None
         share += outside * mine / total
     return share
+
+
+def percentile_key(p: float) -> str:
+    """How a percentile is named in a table and in JSON: 5, 50, 2.5."""
+    return f"{p:g}"
+
+
+def format_stats(table: StatsTable) -> str:
+    """The table as `sass stats` prints it and the Stats screen shows it."""
+    keys = [percentile_key(p) for p in (table.measures[0].percentiles if table.measures else {})]
+    lines = []
+    if table.virtual:
+        lines.append(f"VIRTUAL people (predicted, not measured): {table.population}")
+    elif table.weighted_by:
+        lines.append(f"weighted: {table.population}")
+    lines.append(
+        f"{table.n} people selected by: {table.query}; effective n {table.effective_n:.0f}"
+    )
+    head = f"{'measure':<32} {'unit':<4} {'n':>6} {'mean':>8} {'SD':>7}" + "".join(
+        f" {'p' + k:>8}" for k in keys
+    )
+    with_outside = any(m.outside_share is not None for m in table.measures)
+    lines.append(head + (f" {'outside':>8}" if with_outside else ""))
+    for m in table.measures:
+        row = (
+            f"{m.field.removeprefix('measure.'):<32} {m.unit:<4} {m.n:>6} {m.mean:8.2f} {m.sd:7.2f}"
+        )
+        row += "".join(f" {v:8.2f}" for v in m.percentiles.values())
+        if with_outside:
+            row += f" {100 * m.outside_share:7.1f}%" if m.outside_share is not None else f" {'':>8}"
+        lines.append(row)
+    if with_outside:
+        lines.append("outside: the share of the target's weight beyond every person weighted")
+    return "\n".join(lines) + "\n"
