@@ -49,7 +49,7 @@ def _num(value: object) -> str:
 
 def _table(record: dict, out) -> None:  # out: TextIO
     # deferred: db.scope, model.measures, model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.scope import DEMONSTRATION_SOURCE
+    from sass_tui.db.scope import DEMONSTRATION_SOURCE, VIRTUAL_PREFIX
     from sass_tui.model.measures import MEASURE_UNITS
     from sass_tui.model.text import printable
 
@@ -58,6 +58,8 @@ def _table(record: dict, out) -> None:  # out: TextIO
     demonstration = (
         ", a synthetic demonstration person, not a real one"
         if source.lower() == DEMONSTRATION_SOURCE
+        else ", a VIRTUAL person: stature, mass and age a survey's, the rest predicted"
+        if source.lower().startswith(VIRTUAL_PREFIX)
         else ""
     )
     # Names, sources and survey fields come from files: shown escaped (model/text.py).
