@@ -127,3 +127,18 @@ def test_virtual_people_never_count_as_real(shipped, capsys):
     listed = capsys.readouterr().out
     assert "virtual:nhanes-2017-2020  VIRTUAL population" in listed
     assert "nhanes-2017-2020  both, by stature, mass" in listed
+
+
+@pytest.mark.slow
+def test_predict_learns_from_the_virtual_people(shipped, capsys):
+    """`predict --virtual`: the regression is fitted on the virtual women (as
+    many as NHANES's with a stature and a mass), not on the soldiers."""
+    argv = ["predict", "--db", shipped, "--gender", "female", "--format", "json"]
+    known = ["--known", "stature=160cm", "--known", "mass=150kg"]
+    capsys.readouterr()
+    assert main([*argv, *known, "--virtual", "nhanes-2017-2020"]) == 0
+    virtual = json.loads(capsys.readouterr().out)
+    assert main([*argv, *known]) == 0
+    real = json.loads(capsys.readouterr().out)
+    assert "virtual:nhanes-2017-2020" in virtual["model"]["population"]
+    assert virtual["model"]["n"] == len(nhanes("2", "BMXHT")[0]) and real["model"]["n"] == 1986
