@@ -298,16 +298,16 @@ def _list(conn, out: TextIO) -> None:  # conn: the database layer's connection
 
     targets = list_targets(conn)
     stored = {t.name for t in targets}
+    if not targets:
+        out.write("no targets (make one with `sass target NAME --gender G --sample FILE.csv`)\n")
+    for t in targets:
+        kind = "VIRTUAL population (predicted people), " if t.is_virtual else ""
+        survey = f" weighted by {t.weighted_by}" if t.weighted_by else ""
+        out.write(
+            f"{t.name}  {kind}{t.gender}, by {', '.join(t.fields)}, {t.sample_rows} rows of "
+            f"{t.sample}{survey}; effective n {t.effective_n:.0f} of {t.people} "
+            f"({t.percent_effective:.1f} %); {t.created}\n"
+        )
     for name in SHIPPED:
         if name not in stored:
             out.write(f"{name}  shipped (NHANES 2017-March 2020 adults): made on first use\n")
-    if not targets:
-        out.write("no targets (make one with `sass target NAME --gender G --sample FILE.csv`)\n")
-        return
-    for t in targets:
-        kind = "VIRTUAL population (predicted people), " if t.is_virtual else ""
-        out.write(
-            f"{t.name}  {kind}{t.gender}, by {', '.join(t.fields)}, {t.sample_rows} rows of "
-            f"{t.sample}{' weighted by ' + t.weighted_by if t.weighted_by else ''}; effective n {t.effective_n:.0f} of {t.people} "
-            f"({t.percent_effective:.1f} %); {t.created}\n"
-        )
