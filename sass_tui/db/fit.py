@@ -92,13 +92,14 @@ class TargetShare:
     words: str  # how the answer names its target (Target.words)
     percent: float | None
     effective_n: float  # Kish, over the measured people of the target
+    virtual: bool = False  # a virtual population's people: the per-gender shares are weighted
 
     def to_json(self) -> dict[str, Any]:
         return {
             "name": self.name,
             "percent": _round(self.percent),
             "effective_n": round(self.effective_n, 2),
-        }
+        } | ({"virtual": True, "people": self.words} if self.virtual else {})
 
 
 @dataclass(frozen=True)
@@ -281,6 +282,7 @@ def _target_share(
         words=target.target.words(),
         percent=100.0 * float(w[fits].sum()) / total if total > 0 else None,
         effective_n=kish_effective_n(w[measured]),
+        virtual=target.target.is_virtual,
     )
 
 

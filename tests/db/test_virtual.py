@@ -99,6 +99,8 @@ def test_fit_virtual_gives_nhanes_weighted_shares(shipped, capsys, gender, code)
         result = json.loads(capsys.readouterr().out)
         assert result["accommodated"][gender]["percent"] == pytest.approx(own, abs=0.3)
         assert result["target"]["name"] == "virtual:nhanes-2017-2020"
+        assert result["target"]["virtual"] is True
+        assert result["target"]["people"].startswith("VIRTUAL people, not measured")
 
 
 @pytest.mark.slow
