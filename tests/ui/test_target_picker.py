@@ -37,6 +37,7 @@ def targeted_db(db, tmp_path):
     return db
 
 
+@pytest.mark.slow
 def test_the_query_screen_and_fit_test_weighted_to_a_target(app_at, drive, targeted_db):
     with connect(targeted_db) as conn:
         weights = load_target(conn, "civ")
