@@ -228,6 +228,16 @@ PATHS: tuple[StartupPath, ...] = (
         needs_db=True,
     ),
     StartupPath(
+        "sass stats",
+        ("stats", "stature", "mass", "--gender", "female"),
+        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "importlib.metadata", "numpy.ma",
+         "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
+         "sass_tui.db.accelerator"),
+        "the table reads the people's values and weights, no TUI, no other engine (the "
+        "shipped virtual population's maker, db/virtual.py, brings the prediction's tempfile)",
+        needs_db=True,
+    ),
+    StartupPath(
         "sass db init",
         ("--db", "new.db", "db", "init"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, "logging", "asyncio", "tempfile",

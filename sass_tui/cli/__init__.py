@@ -32,6 +32,7 @@ VERBS = (
     "task",
     "family",
     "target",
+    "stats",
     "db",
     "serve",
 )

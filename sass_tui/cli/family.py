@@ -5,7 +5,13 @@ from __future__ import annotations
 import argparse
 import sys
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    open_db,
+    weighting_name,
+)
 from sass_tui.model.vocabulary import GENDERS
 
 DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.fit.DEFAULT_POPULATION (no import here)
@@ -68,6 +74,7 @@ def register(commands: SubParsers) -> None:
         help="the people of a target population (sass target), weighted: the ellipsoid "
         "and the coverage of the weighted people",
     )
+    add_virtual_option(family)
     family.add_argument("-o", "--output", metavar="DIR", required=True, help="output directory")
     family.set_defaults(func=run)
 
@@ -82,13 +89,17 @@ def run(args: argparse.Namespace) -> int:
     for name in args.measures:
         measure_field(name)  # a typo is reported before the database is opened
     population = parse_option(args.population, "--population")  # parsed once, passed on
+    weighting = weighting_name(args)
     conn = open_db(args)
     weighted_to = None
-    if args.target is not None:
-        # deferred: db.targets — off sass --help, sass family, sass --version (sass_tui/startup.py)
-        from sass_tui.db.targets import load_target
+    if weighting is not None:
+        # deferred: db.shipped — off sass --help, sass family, sass --version (sass_tui/startup.py)
+        from sass_tui.db.shipped import load_weights
 
-        weighted_to = load_target(conn, args.target)
+        weighted_to = load_weights(conn, weighting)
+        if weighted_to.target.is_virtual and args.population == DEFAULT_POPULATION:
+            # its virtual people
+            population = parse_option(weighted_to.target.population, weighting)
     family = load_family(
         conn,
         args.gender,

@@ -7,7 +7,13 @@ import json
 import sys
 from typing import TYPE_CHECKING
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    open_db,
+    weighting_name,
+)
 from sass_tui.model.published_strength import parse_strength_limit
 from sass_tui.model.vocabulary import GENDERS
 
@@ -64,6 +70,7 @@ def register(commands: SubParsers) -> None:
         help="test the people of a target population (sass target), weighted; "
         "the unweighted figures beside",
     )
+    add_virtual_option(fit)
     fit.add_argument("--format", choices=("table", "json"), default="table")
     fit.add_argument(
         "--strength",
@@ -95,13 +102,16 @@ def run(args: argparse.Namespace) -> int:
     population = parse_option(args.population, "--population")
     check_mix(args.mix)
     strength = [parse_strength_limit(text) for text in args.strength]
+    weighting = weighting_name(args)
     conn = open_db(args)
     target = None
-    if args.target is not None:
-        # deferred: db.targets — off sass --help, sass fit, sass --version (sass_tui/startup.py)
-        from sass_tui.db.targets import load_target
+    if weighting is not None:
+        # deferred: db.shipped — off sass --help, sass fit, sass --version (sass_tui/startup.py)
+        from sass_tui.db.shipped import load_weights
 
-        target = load_target(conn, args.target)
+        target = load_weights(conn, weighting)
+        if target.target.is_virtual and args.population == DEFAULT_POPULATION:
+            args.population = target.target.population  # its virtual people, not the soldiers
     result = fit_test(
         conn,
         limits,

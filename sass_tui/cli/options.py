@@ -6,6 +6,7 @@ import argparse
 import sys
 from typing import TYPE_CHECKING, TypeAlias
 
+from sass_tui.model.errors import SassError
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS
 
 if TYPE_CHECKING:
@@ -68,6 +69,36 @@ def open_db(args: argparse.Namespace, create: bool = False):  # -> the db layer'
     db = open_database(args, create=create)
     with db.connection() as conn:
         return conn
+
+
+class WeightingArgumentError(ValueError, SassError):
+    """--target and --virtual together."""
+
+    def __init__(self, message: str = "", *, where: str | None = None) -> None:
+        SassError.__init__(self, message, where=where)
+
+
+# = sass_tui.db.scope.VIRTUAL_PREFIX (no database import on `sass --help`)
+VIRTUAL_PREFIX = "virtual:"
+
+
+def add_virtual_option(parser: argparse.ArgumentParser) -> None:
+    """`--virtual NAME`: the people of a virtual population, weighted by its survey weights."""
+    parser.add_argument(
+        "--virtual",
+        metavar="NAME",
+        help="the VIRTUAL people of a virtual population (sass target NAME --virtual; shipped: "
+        "nhanes-2017-2020), weighted by their survey's weights; never mixed with real people",
+    )
+
+
+def weighting_name(args: argparse.Namespace) -> str | None:
+    """The stored weights `--target NAME` or `--virtual NAME` asks for (a
+    virtual population's are stored as the target `virtual:NAME`)."""
+    target, virtual = getattr(args, "target", None), getattr(args, "virtual", None)
+    if target is not None and virtual is not None:
+        raise WeightingArgumentError("give --target NAME or --virtual NAME, not both")
+    return f"{VIRTUAL_PREFIX}{virtual}" if virtual is not None else target
 
 
 def whole_number(text: str, minimum: int = 0) -> int:

@@ -16,7 +16,13 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    open_db,
+    weighting_name,
+)
 from sass_tui.model.names import GROUP_TITLES
 from sass_tui.model.paths import regular_file
 
@@ -46,6 +52,7 @@ def register(commands: SubParsers) -> None:
         help="the people of a target population (sass target), weighted percentiles; "
         "also writes FILE-global.dat (stature and mass, for sass fig --global)",
     )
+    add_virtual_option(population)
     population.set_defaults(func=run)
 
 
@@ -59,7 +66,8 @@ def run(args: argparse.Namespace) -> int:
     from sass_tui.db.population_files import write_population_files
     from sass_tui.db.query import parse
 
-    if args.query is None and args.ids is None and args.target is None:
+    weighting = weighting_name(args)
+    if args.query is None and args.ids is None and weighting is None:
         print(
             "sass population: error: give --query QUERY, --ids FILE or both (or --target NAME)",
             file=sys.stderr,
@@ -72,11 +80,11 @@ def run(args: argparse.Namespace) -> int:
     try:
         absent = missing_ids(conn, ids) if ids is not None else []
         target = None
-        if args.target is not None:
-            # deferred: db.targets — off sass --help, sass population, sass --version (sass_tui/startup.py)
-            from sass_tui.db.targets import load_target
+        if weighting is not None:
+            # deferred: db.shipped — off sass --help, sass population, sass --version (sass_tui/startup.py)
+            from sass_tui.db.shipped import load_weights
 
-            target = load_target(conn, args.target)
+            target = load_weights(conn, weighting)
         result = population_of(
             conn,
             selection,

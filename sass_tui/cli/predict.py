@@ -16,7 +16,14 @@ import json
 import sys
 from typing import TYPE_CHECKING, Any, TextIO
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db, whole_number
+from sass_tui.cli.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    open_db,
+    weighting_name,
+    whole_number,
+)
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
 from sass_tui.model.vocabulary import GENDERS
@@ -58,6 +65,7 @@ def register(commands: SubParsers) -> None:
         "those of --gender are used), e.g. \"branch = 'Combat Arms'\"; default: every "
         "real person of the gender",
     )
+    add_virtual_option(predict)
     predict.add_argument("--format", choices=("table", "json", "csv"), default="table")
     predict.add_argument(
         "-o",
@@ -109,6 +117,15 @@ def run(args: argparse.Namespace) -> int:
     pairs = [pair for item in args.known for pair in split_known(item)]
     conn = open_db(args)
     try:
+        if args.virtual is not None:
+            # deferred: db.shipped — off sass --help, sass --version (sass_tui/startup.py)
+            from sass_tui.db.shipped import load_weights
+
+            # Learn from the virtual population's people (the shipped one made on first use).
+            virtual = load_weights(conn, weighting_name(args) or "").target.population
+            args.population = (
+                virtual if args.population is None else f"({args.population}) AND {virtual}"
+            )
         predictor = open_predictor(conn, population=args.population)
     finally:
         conn.close()

@@ -9,7 +9,13 @@ from itertools import islice
 from operator import itemgetter
 from typing import TextIO
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_database
+from sass_tui.cli.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    open_database,
+    weighting_name,
+)
 
 
 def register(commands: SubParsers) -> None:
@@ -27,6 +33,7 @@ def register(commands: SubParsers) -> None:
         metavar="NAME",
         help="with --count: also the weighted count and share of a target population (sass target)",
     )
+    add_virtual_option(query)
     query.add_argument(
         "--fields",
         action="store_true",
@@ -65,20 +72,21 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
     # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import PERSON_FIELDS
 
+    weighting = weighting_name(args)
     if args.count:
-        if args.target is not None:
-            _weighted_count(conn, query.compiled, args.target)
+        if weighting is not None:
+            _weighted_count(conn, query.compiled, weighting)
             return
         found = query.count()
         print(found)
         if not found:
             _say_who_else(conn, query.compiled, found)
         return
-    if args.target is not None:
+    if weighting is not None:
         # deferred: model.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
         from sass_tui.model.targets import TargetError
 
-        raise TargetError("--target weights a count: give --count too")
+        raise TargetError("--target and --virtual weight a count: give --count too")
     rows = query.person_rows()  # tuples in PERSON_FIELDS order
     out = sys.stdout
     if args.format == "csv":
@@ -148,11 +156,22 @@ def _list_fields(form: str) -> None:
 
 def _weighted_count(conn, query, name: str) -> None:  # query: db.query.CompiledQuery
     """The raw count, and beside it the target's weighted count and share."""
-    # deferred: db.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
-    from sass_tui.db.targets import load_target, weighted_count
+    # deferred: db.shipped, db.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
+    from sass_tui.db.query import compile_query
+    from sass_tui.db.shipped import load_weights
+    from sass_tui.db.targets import weighted_count
 
-    counted = weighted_count(conn, query, load_target(conn, name))
+    weights = load_weights(conn, name)
+    if weights.target.is_virtual:  # its virtual people, whom a query reaches only by name
+        query = compile_query(f"({query.text}) AND {weights.target.population}")
+    counted = weighted_count(conn, query, weights)
     target = counted.target
+    if target.is_virtual:
+        print(
+            f"{counted.count}\nweighted: {counted.weighted:.1f} of {counted.total:.0f} "
+            f"({counted.percent:.1f} %) of the {target.words()}"
+        )
+        return
     print(
         f"{counted.count}\nweighted: {counted.weighted:.1f} of {counted.total:.0f} "
         f"({counted.percent:.1f} %) of target {target.name} ({target.gender}, weighted by "

@@ -14,7 +14,8 @@ import argparse
 import sys
 from typing import TYPE_CHECKING, TextIO
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import VIRTUAL_PREFIX, SubParsers, add_db_option, open_db
+from sass_tui.model.datasets import NHANES, NHANES_NAME, NHANES_WEIGHT, shipped_text
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
 from sass_tui.model.vocabulary import GENDERS
@@ -45,12 +46,23 @@ def register(commands: SubParsers) -> None:
     )
     add_db_option(target)
     target.add_argument("name", metavar="NAME", nargs="?", help="the target's name")
-    target.add_argument("--gender", choices=GENDERS)
+    target.add_argument(
+        "--gender",
+        choices=GENDERS,
+        help="the gender to weight (default: both, each to the sample's rows of its gender)",
+    )
     target.add_argument(
         "--sample",
         metavar="FILE.csv",
         help="one person a row; columns stature, mass, measure.<name>, units in the header "
-        "(stature[cm], mass[lb]) or on the values",
+        "(stature[cm], mass[lb]) or on the values; gender, age; a .csv.gz file is read "
+        f"decompressed; {NHANES_NAME!r} is the shipped NHANES 2017-March 2020 adults",
+    )
+    target.add_argument(
+        "--weight",
+        metavar="COLUMN",
+        help="the sample's survey weight column: each row stands for that many people "
+        f"(the shipped {NHANES_NAME}: {NHANES_WEIGHT})",
     )
     target.add_argument(
         "--by",
@@ -63,6 +75,19 @@ def register(commands: SubParsers) -> None:
         metavar="QUERY",
         default=DEFAULT_POPULATION,
         help=f"the people to weight (default: {DEFAULT_POPULATION!r}, of --gender)",
+    )
+    target.add_argument(
+        "--within-range",
+        action="store_true",
+        help="match only the sample's rows inside the people's range of every --by "
+        "measurement (the report's 'outside' column says how much lies beyond)",
+    )
+    target.add_argument(
+        "--virtual",
+        action="store_true",
+        help="also store the virtual population NAME: one VIRTUAL person per sample row, "
+        "its own stature, mass, age and gender, every other measure predicted from the "
+        "real people (docs/target-populations.md); reached with --virtual NAME",
     )
     target.add_argument("--force", action="store_true", help="replace a target of that name")
     target.add_argument("--list", action="store_true", help="list the stored targets")
@@ -79,18 +104,21 @@ def run(args: argparse.Namespace) -> int:
             if args.list:
                 _list(conn, sys.stdout)
             else:
-                # deferred: db.targets — off sass --help, sass --version (sass_tui/startup.py)
+                # deferred: db.targets, db.virtual — off sass --help, sass --version, sass target (sass_tui/startup.py)
                 from sass_tui.db.targets import drop_target
+                from sass_tui.db.virtual import drop_virtual
 
-                drop_target(conn, args.drop)
-                print(f"dropped target {args.drop}")
+                if args.drop.startswith(VIRTUAL_PREFIX):
+                    people = drop_virtual(conn, args.drop)
+                    print(f"dropped virtual population {args.drop} and its {people} virtual people")
+                else:
+                    drop_target(conn, args.drop)
+                    print(f"dropped target {args.drop}")
         finally:
             conn.close()
         return 0
-    if not args.name or not args.sample or not args.gender:
-        raise TargetArgumentError(
-            "give NAME, --gender and --sample FILE.csv (or --list, or --drop NAME)"
-        )
+    if not args.name or not args.sample:
+        raise TargetArgumentError("give NAME and --sample FILE.csv (or --list, or --drop NAME)")
     return _make(args)
 
 
@@ -125,32 +153,86 @@ def by_fields(text: str) -> list[str]:
 def _make(args: argparse.Namespace) -> int:
     # deferred: db.query, db.targets, model.target_sample — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.query import parse_option
-    from sass_tui.db.targets import check_name, make_target, store_target, target_exists
-    from sass_tui.model.target_sample import SampleError, read_sample
+    from sass_tui.db.targets import BOTH, check_name, make_target, store_target, target_exists
+    from sass_tui.model.target_sample import read_sample
 
     # Everything that needs no database first: a bad input touches nothing.
     check_name(args.name)
     fields = by_fields(args.by)
     population = parse_option(args.population, "--population")  # parsed once, passed on
-    path = regular_file(args.sample)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError as exc:
-        raise SampleError(f"{args.sample}: not UTF-8 text ({exc.reason})") from None
-    sample = read_sample(text, fields, args.sample)
+    gender = args.gender or BOTH
+    sample = read_sample(
+        sample_text(args.sample),
+        fields,
+        args.sample,
+        weight=args.weight,
+        gender=args.gender,
+        need_gender=args.gender is None,
+    )
+    for column in sample.unused_weights:
+        print(
+            f"warning: {args.sample}: column {column!r} looks like a survey weight and is not "
+            f"used: every row counts once (give --weight {column} to use it)",
+            file=sys.stderr,
+        )
     conn = open_db(args)
     try:
         if target_exists(conn, args.name) and not args.force and not _replace(args.name):
             print("nothing changed", file=sys.stderr)
             return 1
-        target, weights, weighting = make_target(
-            conn, args.name, args.gender, sample, args.sample, population
+        target, weights, weightings = make_target(
+            conn,
+            args.name,
+            gender,
+            sample,
+            args.sample,
+            population,
+            within_range=args.within_range,
         )
+        virtual = None
+        if args.virtual:
+            # deferred: db.virtual — off sass target (sass_tui/startup.py)
+            from sass_tui.db.virtual import make_virtual, store_virtual
+
+            virtual = make_virtual(conn, args.name, sample, args.sample, gender)
         store_target(conn, weights, replace=True)
+        if virtual is not None:
+            store_virtual(conn, virtual)
     finally:
         conn.close()
-    _report(target, weighting, sample.incomplete, sys.stdout)
+    _report(target, weightings, sample.incomplete, sys.stdout)
+    if virtual is not None:
+        beyond = ", ".join(f"{n} {g}" for g, n in virtual.beyond.items())
+        print(
+            f"virtual population {args.name}: {len(virtual.people)} VIRTUAL people (their own "
+            f"stature, mass, age and gender; every other measure predicted from the real "
+            f"people); beyond the range the prediction was fitted on: {beyond}; "
+            f"effective n {virtual.target.effective_n:.0f} (sass fit --virtual {args.name})"
+        )
     return 0
+
+
+def sample_text(name: str) -> str:
+    """The text of a sample: the shipped NHANES adults by name, a .gz file
+    decompressed, else the file."""
+    # deferred: gzip — off sass --help, sass --version (sass_tui/startup.py)
+    import gzip
+
+    # deferred: model.target_sample — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.model.target_sample import SampleError
+
+    if name == NHANES_NAME:
+        return shipped_text(NHANES)
+    path = regular_file(name)
+    try:
+        data = path.read_bytes()
+        if name.endswith(".gz"):
+            data = gzip.decompress(data)
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise SampleError(f"{name}: not UTF-8 text ({exc.reason})") from None
+    except (gzip.BadGzipFile, EOFError) as exc:
+        raise SampleError(f"{name}: not a gzip file ({exc})") from None
 
 
 def _replace(name: str) -> bool:
@@ -164,44 +246,63 @@ def _replace(name: str) -> bool:
     return sys.stdin.readline().strip().lower() in ("y", "yes")
 
 
-def _report(target: Target, weighting: Weighting, incomplete: int, out: TextIO) -> None:
+def _report(target: Target, weightings: dict[str, Weighting], incomplete: int, out: TextIO) -> None:
+    survey = f" (each row weighted by its {target.weighted_by})" if target.weighted_by else ""
+    who = "male and female" if len(weightings) > 1 else target.gender
     out.write(
-        f"target {target.name}: {target.people} {target.gender} people of "
-        f"{target.population!r} weighted to {target.sample_rows} rows of {target.sample}"
+        f"target {target.name}: {target.people} {who} people of "
+        f"{target.population!r} weighted to {target.sample_rows} rows of {target.sample}{survey}"
         + (f" ({incomplete} rows lacking a --by value left out)" if incomplete else "")
         + "\n"
     )
-    out.write(f"{'':<24} {'':<10} {'mean':>8} {'SD':>7} {'5th':>8} {'50th':>8} {'95th':>8}\n")
-    for check in weighting.checks:
-        for word, summary in (
-            ("target", check.target),
-            ("weighted", check.weighted),
-            ("unweighted", check.unweighted),
-        ):
-            field = check.field.removeprefix("measure.") if word == "target" else ""
-            m, sd, p5, p50, p95 = summary.as_list()
-            out.write(
-                f"{field:<24} {word:<10} {m:8.2f} {sd:7.2f} {p5:8.2f} {p50:8.2f} {p95:8.2f}\n"
-            )
+    for gender, weighting in weightings.items():
+        if len(weightings) > 1:
+            out.write(f"{gender}: {weighting.people} people, {weighting.sample_rows} sample rows\n")
+        out.write(
+            f"{'':<24} {'':<10} {'mean':>8} {'SD':>7} {'5th':>8} {'50th':>8} {'95th':>8} "
+            f"{'outside':>8}\n"
+        )
+        for check in weighting.checks:
+            for word, summary in (
+                ("target", check.target),
+                ("weighted", check.weighted),
+                ("unweighted", check.unweighted),
+            ):
+                field = check.field.removeprefix("measure.") if word == "target" else ""
+                outside = f"{100 * check.outside_share:7.1f}%" if word == "target" else ""
+                m, sd, p5, p50, p95 = summary.as_list()
+                out.write(
+                    f"{field:<24} {word:<10} {m:8.2f} {sd:7.2f} {p5:8.2f} {p50:8.2f} {p95:8.2f} "
+                    f"{outside:>8}".rstrip()
+                    + "\n"
+                )
+        for warning in weighting.warnings():
+            prefix = f"{gender}: " if len(weightings) > 1 else ""
+            print(f"warning: {prefix}{warning}", file=sys.stderr)
     out.write(
+        "outside: the share of the target's weight beyond every person's value "
+        "(weighting cannot reach it)\n"
         f"effective sample size (Kish): {target.effective_n:.0f} of {target.people} people "
         f"({target.percent_effective:.1f} %)\n"
     )
-    for warning in weighting.warnings():
-        print(f"warning: {warning}", file=sys.stderr)
 
 
 def _list(conn, out: TextIO) -> None:  # conn: the database layer's connection
     # deferred: db.targets — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.targets import list_targets
+    from sass_tui.db.targets import SHIPPED, list_targets
 
     targets = list_targets(conn)
+    stored = {t.name for t in targets}
     if not targets:
         out.write("no targets (make one with `sass target NAME --gender G --sample FILE.csv`)\n")
-        return
     for t in targets:
+        kind = "VIRTUAL population (predicted people), " if t.is_virtual else ""
+        survey = f" weighted by {t.weighted_by}" if t.weighted_by else ""
         out.write(
-            f"{t.name}  {t.gender}, by {', '.join(t.fields)}, {t.sample_rows} rows of "
-            f"{t.sample}; effective n {t.effective_n:.0f} of {t.people} "
+            f"{t.name}  {kind}{t.gender}, by {', '.join(t.fields)}, {t.sample_rows} rows of "
+            f"{t.sample}{survey}; effective n {t.effective_n:.0f} of {t.people} "
             f"({t.percent_effective:.1f} %); {t.created}\n"
         )
+    for name in SHIPPED:
+        if name not in stored:
+            out.write(f"{name}  shipped (NHANES 2017-March 2020 adults): made on first use\n")

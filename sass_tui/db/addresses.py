@@ -20,6 +20,7 @@ POSTGRES_COMMANDS = (
     "export",
     "strength",
     "task",
+    "stats",
 )
 POSTGRES_VERBS = (
     "`sass` (the spreadsheet), "

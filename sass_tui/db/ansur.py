@@ -420,6 +420,18 @@ def _subject_ids(chunk: _Chunk, column: int, seen: dict[int, int]) -> list[int]:
     return out
 
 
+def derived_girth(measures: np.ndarray) -> np.ndarray:
+    """The girth relation (people, rows, x/y/z/mass) of people with the 93
+    ANSUR II measures (people, MEASURES; cm, kg), derived as report §10.1
+    prescribes (_derive): ANSUR II people and virtual people alike."""
+    n = len(measures)
+    by_name = {name: measures[:, j] for j, name in enumerate(MEASURES)}
+    girth = np.empty((n, len(GIRTH_NAMES), 4))
+    girth[:, :, :3] = _derive(by_name, n)
+    girth[:, :, 3] = by_name["weightkg"][:, None] * girth_mass_fractions()[None, :]
+    return girth
+
+
 def _batch(
     path: Path, chunk: _Chunk, column: dict[str, int], seen: dict[int, int], label: str
 ) -> PeopleBatch:
@@ -438,9 +450,7 @@ def _batch(
     chunk.check(age, "age", AGE_LIMITS, "years")
     by_name = {name: measures[:, j] for j, name in enumerate(MEASURES)}
     mass = by_name["weightkg"]
-    girth = np.empty((n, len(GIRTH_NAMES), 4))
-    girth[:, :, :3] = _derive(by_name, n)
-    girth[:, :, 3] = mass[:, None] * girth_mass_fractions()[None, :]
+    girth = derived_girth(measures)
     letter = {"male": "M", "female": "F"}
     if label == DEFAULT_LABEL:
         names = [f"ANSUR II {letter[g]} {s}" for g, s in zip(gender, subject)]

@@ -103,13 +103,14 @@ class TargetShare:
     words: str  # how the answer names its target (Target.words)
     percent: float | None
     effective_n: float  # Kish, over the measured people of the target
+    virtual: bool = False  # a virtual population's people: the per-gender shares are weighted
 
     def to_json(self) -> dict[str, Any]:
         return {
             "name": self.name,
             "percent": _round(self.percent),
             "effective_n": round(self.effective_n, 2),
-        }
+        } | ({"virtual": True, "people": self.words} if self.virtual else {})
 
 
 @dataclass(frozen=True)
@@ -270,7 +271,12 @@ def fit_test(
         passes = np.hstack([passes, np.column_stack(predicted)])
         texts += tuple(f"{limit.text} (predicted)" for limit in strength_limits)
     steps(2, 3)
-    result = _summarise(conn, texts, people_query.text, weights, ids, gender, passes, failing)
+    # A virtual population's people stand for their survey's: each gender's
+    # shares are weighted by them (a real target's are given beside, unweighted).
+    virtual = target.of(ids) if target is not None and target.target.is_virtual else None
+    result = _summarise(
+        conn, texts, people_query.text, weights, ids, gender, passes, failing, virtual
+    )
     if target is not None:
         result = replace(result, target=_target_share(target, ids, passes))
     steps(3, 3)
@@ -292,6 +298,7 @@ def _target_share(
         words=target.target.words(),
         percent=100.0 * float((w * fits).sum()) / total if total > 0 else None,
         effective_n=kish_effective_n(w[measured]),
+        virtual=target.target.is_virtual,
     )
 
 
@@ -304,7 +311,9 @@ def _summarise(
     gender: npt.NDArray[Any],
     passes: npt.NDArray[np.float64],
     want_failing: bool,
+    person_weights: npt.NDArray[np.float64] | None = None,
 ) -> FitResult:
+    w = np.ones(len(ids)) if person_weights is None else person_weights
     unmeasured = np.isnan(passes)
     measured = ~unmeasured.any(axis=1)
     # Each limit's probability of being met: 1 or 0 for a measured value, a
@@ -323,7 +332,11 @@ def _summarise(
         counted = mine & measured
         n = int(counted.sum())
         fit = _count(float(fits[counted].sum()))
-        own = [100.0 * float(met[counted, k].sum()) / n if n else None for k in range(len(limits))]
+        weight = float(w[counted].sum())
+        own = [
+            100.0 * float((w[counted] * met[counted, k]).sum()) / weight if n else None
+            for k in range(len(limits))
+        ]
         for k, share in enumerate(own):
             limit_percent[k][g] = share
         naive = 100.0 * math.prod(s / 100.0 for s in own if s is not None) if n else None
@@ -332,7 +345,7 @@ def _summarise(
             n=n,
             fit=fit,
             not_measured=int((mine & ~measured).sum()),
-            percent=100.0 * fit / n if n else None,
+            percent=100.0 * float((w[counted] * fits[counted]).sum()) / weight if n else None,
             naive_percent=naive,
         )
     used = {g: w for g, w in weights.items() if g in genders and genders[g].n > 0 and w > 0}
@@ -436,7 +449,7 @@ def load_family(
     people_query = parsed(population)  # its own error, before the combined query's
     if weighted_to is not None:
         made = weighted_to.target
-        if made.gender != gender:
+        if gender not in made.genders:
             raise FitError(f"the target {made.name} is of {made.gender} people, not {gender}")
         if people_query.text != made.population:
             people_query = joined(people_query, made.population)

@@ -36,6 +36,11 @@ def format_table(result: FitResult) -> str:
             f"{'target':<10} {'':>7} {'':>7} {_percent(result.target.percent):>13} "
             f"{'':>9}   (weighted: {result.target.words})"
         )
+        if result.target.virtual:
+            lines.append(
+                "VIRTUAL people: each gender's accommodated share is weighted by their "
+                "survey's weights; people and fit are counts"
+            )
     lines += [
         "",
         "naive = the product of each limit's own share (what univariate percentiles suggest)",

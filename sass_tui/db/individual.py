@@ -26,7 +26,7 @@ from sass_tui.db.schema import (
     DatabaseError,
     strength_summary,
 )
-from sass_tui.db.scope import DEMONSTRATION_SOURCE
+from sass_tui.db.scope import DEMONSTRATION_SOURCE, VIRTUAL_PREFIX
 from sass_tui.model.landmarks import LANDMARK_MEASURES
 from sass_tui.model.measures import MEASURES
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS
@@ -349,8 +349,12 @@ def person_figure(person: Individual, population: Figure) -> Figure:
     # The figure's name is its title (and its file's name): a demonstration
     # person is never taken for a real one (db/scope.py).
     synthetic = person.source.lower() == DEMONSTRATION_SOURCE
+    virtual = person.source.lower().startswith(VIRTUAL_PREFIX)
+    label = (
+        " (synthetic)" if synthetic else " (VIRTUAL: predicted, not measured)" if virtual else ""
+    )
     return population.for_person(
-        f"{person.name} (synthetic)" if synthetic else person.name,
+        f"{person.name}{label}",
         person.gender,
         {g: person.groups[g] for g in GROUPS},
         mass=person.mass,

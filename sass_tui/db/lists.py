@@ -43,6 +43,7 @@ if TYPE_CHECKING:
     from sass_tui.db.fit import FitResult, LimitHistogram
     from sass_tui.db.individual import Individual
     from sass_tui.db.population import SelectionPopulation
+    from sass_tui.db.stats import StatsTable
     from sass_tui.db.targets import TargetWeights, WeightedCount
 
 # What the database may answer a user's request with (QueryError, DatabaseError
@@ -530,28 +531,49 @@ class QueryLists:
             target=self._target(target),
         )
 
+    @_serialised
+    def stats(
+        self,
+        query: str | None,
+        target: str | None = None,
+        cancel: Cancel | None = None,
+    ) -> StatsTable:
+        """The percentile table of every measure over the query's people
+        (db/stats.py), weighted to a target or a virtual population by name."""
+        # deferred: db.stats — only stats() needs it; importing db.lists does not load it
+        from sass_tui.db.stats import EVERY_MEASURE, stats_table
+
+        with interruptible(self._conn, cancel, "the table"):
+            return stats_table(self._conn, list(EVERY_MEASURE), query, weights=self._target(target))
+
     # --- target populations and the real-people scope ----------------------
     def _target(self, name: str | None) -> TargetWeights | None:
-        # deferred: db.targets — only _target() needs it; importing db.lists does not load it
-        from sass_tui.db.targets import load_target
+        # deferred: db.shipped — only _target() needs it; importing db.lists does not load it
+        from sass_tui.db.shipped import load_weights
 
-        return None if not name else load_target(self._conn, name)
+        return None if not name else load_weights(self._conn, name)
 
     @_serialised
     def target_names(self) -> list[str]:
-        """The names of the target populations stored (`sass target`)."""
+        """The names of the target populations and virtual populations
+        (`virtual:NAME`) stored (`sass target`), and the shipped ones not made yet."""
         # deferred: db.targets — only target_names() needs it; importing db.lists does not load it
-        from sass_tui.db.targets import list_targets
+        from sass_tui.db.targets import SHIPPED, list_targets
 
-        return [t.name for t in list_targets(self._conn)]
+        stored = [t.name for t in list_targets(self._conn)]
+        return stored + [name for name in SHIPPED if name not in stored]
 
     @_serialised
     def weighted_count(self, query: str, target: str) -> WeightedCount:
         """The query's people weighted to the target `target` (db/targets.py)."""
-        # deferred: db.targets — only weighted_count() needs it; importing db.lists does not load it
-        from sass_tui.db.targets import load_target, weighted_count
+        # deferred: db.shipped, db.targets — only weighted_count() needs it; importing db.lists does not load it
+        from sass_tui.db.shipped import load_weights
+        from sass_tui.db.targets import weighted_count
 
-        return weighted_count(self._conn, self._compile(query), load_target(self._conn, target))
+        weights = load_weights(self._conn, target)
+        if weights.target.is_virtual:  # its virtual people, whom a query reaches only by name
+            query = f"({query}) AND {weights.target.population}"
+        return weighted_count(self._conn, self._compile(query), weights)
 
     @_serialised
     def demonstration_hint(self, text: str) -> str | None:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from sass_tui.db.scope import DEMONSTRATION_SOURCE
+from sass_tui.db.scope import DEMONSTRATION_SOURCE, VIRTUAL_PREFIX
 from sass_tui.model.measures import MEASURE_UNITS
 from sass_tui.model.text import printable
 
@@ -27,6 +27,8 @@ def person_lines(record: dict[str, Any]) -> list[str]:
     demonstration = (
         ", a synthetic demonstration person, not a real one"
         if source.lower() == DEMONSTRATION_SOURCE
+        else ", a VIRTUAL person: stature, mass and age a survey's, the rest predicted"
+        if source.lower().startswith(VIRTUAL_PREFIX)
         else ""
     )
     lines = [

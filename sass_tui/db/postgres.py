@@ -435,6 +435,7 @@ def copy_people(staging: sqlite3.Connection, conn: PostgresConnection) -> int:
     staged = staging.execute("SELECT id_num, source_key FROM person ORDER BY id_num").fetchall()
     if not staged:
         return 0
+    _replace_virtual_people(staging, conn)
     keys = [key for _id, key in staged if key is not None]
     known = dict(
         conn.execute(
@@ -467,4 +468,46 @@ def copy_people(staging: sqlite3.Connection, conn: PostgresConnection) -> int:
                 yield values
 
         conn.copy_rows(table, columns, rows())
+    _copy_targets(staging, conn, new_id)
     return len(staged)
+
+
+def _replace_virtual_people(staging: sqlite3.Connection, conn: PostgresConnection) -> None:
+    """A virtual population staged (db/virtual.py) replaces every person of
+    its source: a smaller sample leaves none of the old ones behind."""
+    sources = [
+        row[0]
+        for row in staging.execute(
+            "SELECT DISTINCT source FROM person WHERE source LIKE 'virtual:%'"
+        ).fetchall()
+    ]
+    if not sources:
+        return
+    gone = [
+        int(row[0])
+        for row in conn.execute(
+            "SELECT id_num FROM person WHERE source = ANY(%s)", (sources,)
+        ).fetchall()
+    ]
+    for table in _tables_of_people():
+        conn.execute(f"DELETE FROM {table} WHERE id_num = ANY(%s)", (gone,))
+
+
+def _copy_targets(
+    staging: sqlite3.Connection, conn: PostgresConnection, new_id: dict[int, int]
+) -> None:
+    """The targets staged with their people (the shipped ones of `sass db
+    init`, a virtual population's weights), their ids as copied."""
+    for row in staging.execute("SELECT * FROM target").fetchall():
+        name = row[0]
+        conn.execute("DELETE FROM target_weight WHERE target = %s", (name,))
+        conn.execute("DELETE FROM target WHERE name = %s", (name,))
+        conn.execute(f"INSERT INTO target VALUES ({', '.join(['%s'] * len(row))})", tuple(row))
+        weights = staging.execute(
+            "SELECT target, id_num, weight FROM target_weight WHERE target = ?", (name,)
+        )
+        conn.copy_rows(
+            "target_weight",
+            ("target", "id_num", "weight"),
+            ((t, new_id[i], w) for t, i, w in weights if i in new_id),
+        )

@@ -1,12 +1,14 @@
 """Real people by default: which people a query reaches.
 
-The default database holds the 6,068 real people of ANSUR II and 200
+The default database holds the 6,068 real people of ANSUR II, 200
 synthetic demonstration people (`source = synthetic`, docs/data-sources.md),
 who exist only to show the strength, joint-limit and center-of-mass columns
-ANSUR II did not measure.  A count, a list, a population, a fit or a
+ANSUR II did not measure, and the virtual people of NHANES 2017-2020
+(`source = "virtual:nhanes-2017-2020"`, db/virtual.py), predicted from
+civilians' stature and mass.  A count, a list, a population, a fit or a
 prediction must not mix them into an answer about real people, so a query
-that names no `source` term reaches only the people whose source is not
-`synthetic`; any `source` term (`source = synthetic`, `source != ansur2`)
+that names no `source` term reaches only the people whose source is neither
+`synthetic` nor `virtual:...`; any `source` term (`source = synthetic`, `source != ansur2`)
 leaves the choice to the query.
 
 `real_only` is the one place that scope is added, on the query's tree
@@ -22,10 +24,14 @@ from __future__ import annotations
 from sass_tui.db.query_tree import PERSON_TABLE, And, Comparison, Expr, names_field
 
 DEMONSTRATION_SOURCE = "synthetic"
+# Virtual people (db/virtual.py) are stored under `virtual:<population>`: a
+# prediction from a civilian's stature and mass, never a person measured.
+VIRTUAL_PREFIX = "virtual:"
 # source is NOT NULL (db/schema.py) and the default database stores the label
 # in lower case, so a plain comparison.  Its field is not `source`: the user
 # did not name it, and a query that does is not scoped (names_field).
 REAL_PEOPLE = Comparison("(real people)", PERSON_TABLE, "source", "!=", DEMONSTRATION_SOURCE)
+NOT_VIRTUAL = Comparison("(real people)", PERSON_TABLE, "source", "NOT LIKE", f"{VIRTUAL_PREFIX}%")
 
 
 def source_label(text: str) -> str:
@@ -43,11 +49,22 @@ def real_only(expr: Expr | None) -> Expr:
     `source` term (or is limited already): the scope is one more term of its
     top-level AND."""
     if expr is None:
-        return REAL_PEOPLE
+        return And((REAL_PEOPLE, NOT_VIRTUAL))
     if names_field(expr, "source") or REAL_PEOPLE in expr.comparisons():
         return expr
     terms = expr.terms if isinstance(expr, And) else (expr,)
-    return And((*terms, REAL_PEOPLE))
+    return And((*terms, REAL_PEOPLE, NOT_VIRTUAL))
+
+
+def virtual_source(population: str) -> str:
+    """The source label of a virtual population's people."""
+    return f"{VIRTUAL_PREFIX}{population}"
+
+
+def virtual_query(population: str) -> str:
+    """The query term that reaches a virtual population's people (and only them)."""
+    label = virtual_source(population).replace('"', "")
+    return f'source = "{label}"'
 
 
 def demonstration_query(text: str) -> str:

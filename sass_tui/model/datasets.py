@@ -3,10 +3,15 @@ copied into the package as `sass_tui/datasets/` when a wheel is built."""
 
 from __future__ import annotations
 
+import gzip
 from pathlib import Path
 
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 
+# NHANES 2017-March 2020, the adults (scripts/make_nhanes.py, docs/data-sources.md).
+NHANES = "nhanes/nhanes_2017_2020_adults.csv.gz"
+NHANES_NAME = "nhanes-2017-2020"  # the shipped sample, target and virtual population
+NHANES_WEIGHT = "WTMECPRP"  # its examination sample weight column
 FILES = {GIRTH: "girth.dat", JOINT_LIMITS: "jntlmt.dat", CENTER_OF_MASS: "cmass.dat"}
 # The shipped population a group's Input Data takes by name: the report's
 # NASA crewmember trainees (the files above).
@@ -32,3 +37,9 @@ def shipped_population(name: str, group: str) -> Path | None:
     if name.strip().lower() == SHIPPED_POPULATION and group in FILES:
         return path(FILES[group])
     return None
+
+
+def shipped_text(name: str) -> str:
+    """A shipped text data set (a `.gz` one decompressed)."""
+    data = path(name).read_bytes()
+    return (gzip.decompress(data) if name.endswith(".gz") else data).decode("utf-8")

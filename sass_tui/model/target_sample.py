@@ -5,8 +5,14 @@ Columns are named like `sass predict --known`: `stature`, `mass`,
 (`stature[cm]`, `mass [lb]`, `stature[in]`) is the unit of the column's bare
 numbers, and a value may carry its own (`64 in`), as everywhere in sass
 (`sass_tui.model.units`).  Without either, values are in the field's
-canonical unit (cm; kg for mass).  Other columns (an id, age, a survey
-weight) are passed over; an empty cell is a value the person lacks.
+canonical unit (cm; kg for mass).  An empty cell is a value the person
+lacks.  Three more columns are read when there: `gender` (male or female:
+a target of one gender keeps that gender's rows, a target of both needs
+it), `age` (years; a virtual person keeps it) and the survey weight that
+`--weight COLUMN` names (NHANES's WTMECPRP: each row stands for that many
+people, so an oversampled group counts its share, not its rows).  Other
+columns (an id, a code) are passed over; a column named like a survey
+weight that no `--weight` names is reported (`Sample.unused_weights`).
 Every error names the file, the line and the column.
 """
 
@@ -14,6 +20,7 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -23,8 +30,17 @@ import numpy.typing as npt
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.units import UnitError, convert, parse_quantity, unit_name
+from sass_tui.model.vocabulary import GENDERS
 
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[([^\[\]]*)\])?\s*$")
+# A survey's weight column: NHANES's WT... (WTMECPRP, WTINT2YR), or a name
+# that says it (survey_weight, sample weight, final_wt); not a body weight.
+_SURVEY_WEIGHT = re.compile(
+    r"^(wt[a-z0-9_]*|.*\b(survey|sample|sampling|design|final|exam|person|case)[ _]?"
+    r"(weight|wt)s?|(weight|wt)[ _]?(survey|sample|sampling|design|final))$"
+)
+GENDER_WORDS = {"male": "male", "m": "male", "female": "female", "f": "female"}
+MAX_AGE = 130.0
 
 
 class SampleError(ValueError, SassError):
@@ -38,8 +54,42 @@ class SampleError(ValueError, SassError):
 class Sample:
     fields: tuple[str, ...]  # the --by fields, in their order
     matrix: npt.NDArray[np.float64]  # (rows with every field, fields), canonical units
-    rows: int  # data rows in the file
+    rows: int  # data rows in the file (of the gender asked for)
     incomplete: int  # rows lacking a value of some field (left out)
+    # Of the complete rows: the survey weight (1 without --weight), the
+    # gender (None without a gender column) and the age (NaN: none).
+    weights: npt.NDArray[np.float64] | None = None
+    genders: tuple[str, ...] | None = None
+    ages: npt.NDArray[np.float64] | None = None
+    weighted_by: str | None = None  # the --weight column
+    unused_weights: tuple[str, ...] = ()  # columns named like a survey weight, not used
+
+    @property
+    def row_weights(self) -> npt.NDArray[np.float64]:
+        """Each complete row's weight (1 each without a weight column)."""
+        return np.ones(len(self.matrix)) if self.weights is None else self.weights
+
+    def of_gender(self, gender: str) -> Sample:
+        """The rows of one gender (the sample must have a gender column)."""
+        if self.genders is None:
+            return self
+        keep = np.array([g == gender for g in self.genders], dtype=bool)
+        return Sample(
+            self.fields,
+            self.matrix[keep],
+            int(keep.sum()),
+            0,
+            None if self.weights is None else self.weights[keep],
+            tuple(g for g, k in zip(self.genders, keep) if k),
+            None if self.ages is None else self.ages[keep],
+            self.weighted_by,
+            self.unused_weights,
+        )
+
+
+def is_survey_weight(name: str) -> bool:
+    """A column name like a survey's weight (WTMECPRP, survey_weight)."""
+    return _SURVEY_WEIGHT.match(name.strip().lower()) is not None
 
 
 def is_weighting_field(field: str) -> bool:
@@ -58,9 +108,19 @@ def header_field(name: str) -> str | None:
     return measure_field(word)
 
 
-def read_sample(text: str, fields: Sequence[str], where: str) -> Sample:
+def read_sample(
+    text: str,
+    fields: Sequence[str],
+    where: str,
+    *,
+    weight: str | None = None,
+    gender: str | None = None,
+    need_gender: bool = False,
+) -> Sample:
     """The values of `fields` (query-language names) in the CSV `text` (the
-    file `where`).  SampleError says file:line and the column."""
+    file `where`): with `gender`, only that gender's rows when the sample has
+    a gender column; `need_gender`: the sample must have one.  `weight` names
+    the survey weight column.  SampleError says file:line and the column."""
     # deferred: model.prediction — off sass target (sass_tui/startup.py)
     from sass_tui.model.prediction import field_unit
 
@@ -102,6 +162,16 @@ def read_sample(text: str, fields: Sequence[str], where: str) -> Sample:
                 where=place,
             )
         columns[field] = (c, unit, cell)
+    lower = {cell.strip().lower(): c for c, cell in enumerate(header)}
+    weight_column = _weight_column(header, weight, where)
+    gender_column = lower.get("gender")
+    if gender_column is None and need_gender:
+        raise SampleError(
+            f"{where}:1: no gender column; a target of both genders (no --gender) needs "
+            "each row's gender: a column `gender` of male or female",
+            where=f"{where}:1",
+        )
+    age_column = lower.get("age")
     absent = [f for f in fields if f not in columns]
     if absent:
         have = ", ".join(repr(h) for h in header[:8]) + (", ..." if len(header) > 8 else "")
@@ -112,26 +182,112 @@ def read_sample(text: str, fields: Sequence[str], where: str) -> Sample:
             where=f"{where}:1",
         )
     values: list[list[float]] = []
+    weights: list[float] = []
+    genders: list[str] = []
+    ages: list[float] = []
     rows = 0
     try:
         for row in reader:
             line = reader.line_num
             if not any(cell.strip() for cell in row):
                 continue
-            rows += 1
             if len(row) != len(header):
                 raise SampleError(
                     f"{where}:{line}: expected {len(header)} fields, found {len(row)}",
                     where=f"{where}:{line}",
                 )
+            if gender_column is not None:
+                word = _gender(row, gender_column, header, where, line)
+                if gender is not None and word != gender:
+                    continue
+                genders.append(word)
+            rows += 1
             values.append([_cell(row, columns[f], f, field_unit(f), where, line) for f in fields])
+            if weight_column is not None:
+                weights.append(_weight(row, weight_column, header, where, line))
+            if age_column is not None:
+                ages.append(_age(row, age_column, header, where, line))
     except csv.Error as exc:
         raise SampleError(
             f"{where}:{reader.line_num}: {exc}", where=f"{where}:{reader.line_num}"
         ) from None
     matrix = np.array(values, dtype=float).reshape(len(values), len(fields))
     complete = ~np.isnan(matrix).any(axis=1)
-    return Sample(fields, matrix[complete], rows, int((~complete).sum()))
+    unused = tuple(
+        cell.strip()
+        for c, cell in enumerate(header)
+        if c != weight_column and is_survey_weight(cell) and header_field(cell) is None
+    )
+    return Sample(
+        fields,
+        matrix[complete],
+        rows,
+        int((~complete).sum()),
+        np.array(weights)[complete] if weight_column is not None else None,
+        tuple(g for g, k in zip(genders, complete) if k) if gender_column is not None else None,
+        np.array(ages)[complete] if age_column is not None else None,
+        header[weight_column].strip() if weight_column is not None else None,
+        unused,
+    )
+
+
+def _weight_column(header: Sequence[str], weight: str | None, where: str) -> int | None:
+    if weight is None:
+        return None
+    for c, cell in enumerate(header):
+        if cell.strip().lower() == weight.strip().lower():
+            return c
+    have = ", ".join(repr(h) for h in header[:12]) + (", ..." if len(header) > 12 else "")
+    raise SampleError(
+        f"{where}:1: --weight {weight!r}: no such column (the header has {have})",
+        where=f"{where}:1",
+    )
+
+
+def _weight(row: list[str], c: int, header: Sequence[str], where: str, line: int) -> float:
+    text = row[c].strip()
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        place = f"{where}:{line}"
+        raise SampleError(
+            f"{place}: column {c + 1} {header[c]!r}: {text!r}: a survey weight must be a "
+            "number greater than 0",
+            where=place,
+        )
+    return value
+
+
+def _gender(row: list[str], c: int, header: Sequence[str], where: str, line: int) -> str:
+    text = row[c].strip()
+    word = GENDER_WORDS.get(text.lower())
+    if word is None:
+        place = f"{where}:{line}"
+        raise SampleError(
+            f"{place}: column {c + 1} {header[c]!r}: {text!r}: expected {' or '.join(GENDERS)}",
+            where=place,
+        )
+    return word
+
+
+def _age(row: list[str], c: int, header: Sequence[str], where: str, line: int) -> float:
+    text = row[c].strip()
+    if not text:
+        return math.nan
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and 0 <= value <= MAX_AGE):
+        place = f"{where}:{line}"
+        raise SampleError(
+            f"{place}: column {c + 1} {header[c]!r}: {text!r}: an age must be a number of "
+            f"years from 0 to {MAX_AGE:.0f}",
+            where=place,
+        )
+    return value
 
 
 def _cell(

@@ -55,6 +55,7 @@ CUT_PERCENTILES: Final = (10.0, 25.0, 50.0, 75.0, 90.0)
 JOINT_CUTS: Final = [1, 2, 3]  # of CUT_PERCENTILES: the quartiles, for each pair's joint shares
 SUMMARY_PERCENTILES: Final = (5.0, 50.0, 95.0)
 LOW_EFFECTIVE_SHARE: Final = 0.10  # warn below this Kish size / people
+OUTSIDE_WARNING: Final = 0.005  # warn when this share of the target lies beyond the people
 # Refuse below this Kish size: a handful of people standing for everybody.
 MIN_EFFECTIVE: Final = 30
 # The calibration is met when every weighted moment is within this of the
@@ -135,6 +136,9 @@ class MeasureCheck:
     target: Summary
     weighted: Summary
     unweighted: Summary
+    # The share of the target's weight beyond every person's value (below the
+    # lightest, above the heaviest): no weighting of the people reaches it.
+    outside_share: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -165,6 +169,12 @@ class Weighting:
                 "lies largely outside them, a few people carry most of the weight"
             )
         for check in self.checks:
+            if check.outside_share >= OUTSIDE_WARNING:
+                out.append(
+                    f"{check.field}: {100 * check.outside_share:.1f} % of the target's weight "
+                    "lies beyond every person's value; weighting cannot reach it (a virtual "
+                    "population can: sass target --virtual)"
+                )
             for word, goal, got in (
                 ("5th", check.target.p5, check.weighted.p5),
                 ("95th", check.target.p95, check.weighted.p95),
@@ -198,16 +208,45 @@ def _features(
     return np.column_stack(flat)
 
 
+def outside_share(people: FloatArray, sample: FloatArray, weights: FloatArray) -> float:
+    """The share of the sample's weight whose value lies outside the range of
+    `people` (NaN left out of both): the honest limit of weighting them."""
+    known = people[~np.isnan(people)]
+    keep = ~np.isnan(sample)
+    total = float(weights[keep].sum())
+    if len(known) == 0 or total <= 0:
+        return math.nan
+    beyond = keep & ((sample < known.min()) | (sample > known.max()))
+    return float(weights[beyond].sum()) / total
+
+
 def calibrate(
-    fields: Sequence[str], people: FloatArray, sample: FloatArray, *, where: str = "the sample"
+    fields: Sequence[str],
+    people: FloatArray,
+    sample: FloatArray,
+    *,
+    where: str = "the sample",
+    sample_weights: FloatArray | None = None,
+    within_range: bool = False,
 ) -> Weighting:
     """Weights for the rows of `people` (people x fields, NaN = not measured)
     that reproduce the joint moments and marginal shares of `sample` (rows x
-    fields, complete).  TargetError when the sample or the people are too few
-    or the target cannot be reached."""
+    fields, complete), each sample row counted by its `sample_weights` (a
+    survey's weights; None: equally).  `within_range`: match only the sample
+    rows inside the people's range of every field (the part weighting can
+    reach; `outside_share` says how much of each field is beyond).
+    TargetError when the sample or the people are too few or the target
+    cannot be reached."""
     fields = tuple(fields)
     people = np.asarray(people, dtype=float)
     sample = np.asarray(sample, dtype=float)
+    sw = np.ones(len(sample)) if sample_weights is None else np.asarray(sample_weights, float)
+    beyond = [outside_share(people[:, i], sample[:, i], sw) for i in range(len(fields))]
+    full = sample, sw
+    if within_range and len(sample) and np.isfinite(people).all(axis=1).any():
+        known = people[np.isfinite(people).all(axis=1)]
+        inside = ((sample >= known.min(axis=0)) & (sample <= known.max(axis=0))).all(axis=1)
+        sample, sw = sample[inside], sw[inside]
     if len(sample) < MIN_SAMPLE:
         raise TargetError(
             f"{where}: {len(sample)} rows have every one of {', '.join(fields)}; "
@@ -226,10 +265,13 @@ def calibrate(
         if s <= 0 or spread <= 0:
             who = "the people" if s <= 0 else where
             raise TargetError(f"{field}: every one of {who} has the same value", where=where)
-    cuts = [np.unique(np.percentile(sample[:, i], CUT_PERCENTILES)) for i in range(len(fields))]
+    cuts = [
+        np.unique(weighted_percentile(sample[:, i], sw, CUT_PERCENTILES))
+        for i in range(len(fields))
+    ]
     _reachable(fields, x, sample, cuts, where)
     g = _features(x, center, scale, cuts)
-    goal = _features(sample, center, scale, cuts).mean(axis=0)
+    goal = np.average(_features(sample, center, scale, cuts), axis=0, weights=sw)
     lam, iterations = _solve(g - goal, fields, where)
     exponent = (g - goal) @ lam
     w = np.exp(exponent - exponent.max())
@@ -247,13 +289,14 @@ def calibrate(
     checks = tuple(
         MeasureCheck(
             field,
-            Summary.of(sample[:, i]),
+            Summary.of(full[0][:, i], full[1]),
             Summary.of(x[:, i], w),
             Summary.of(x[:, i]),
+            beyond[i],
         )
         for i, field in enumerate(fields)
     )
-    return Weighting(fields, weights, used, len(sample), checks, iterations)
+    return Weighting(fields, weights, used, len(full[0]), checks, iterations)
 
 
 def _reachable(

@@ -105,6 +105,13 @@ SCREENS: tuple[ScreenRoute, ...] = (
         None,
         "on the query screen, run a query, then Fit Test (f)",
     ),
+    ScreenRoute(
+        "Stats",
+        "sass_tui.ui.stats_screen",
+        "StatsScreen",
+        None,
+        "on the query screen, run a query (or none: every real person), then Stats (S)",
+    ),
 )
 
 

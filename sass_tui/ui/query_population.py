@@ -159,3 +159,17 @@ class PopulationCommands(QueryScreenBase):
             answer,
             on_cancel=lambda: self.say("Fit Test cancelled."),
         )
+
+    # --- Stats ---------------------------------------------------------------
+    def action_stats(self) -> None:
+        """The percentile table of the last query's people (weighted to the target)."""
+        # deferred: ui.stats_screen — only action_stats() needs it; importing ui.query_population does not load it
+        from sass_tui.ui.stats_screen import StatsScreen
+
+        if self.running:
+            self.say(WAIT)
+            return
+        if self.lists is None:
+            self.say("The database is not open yet.")
+            return
+        self.app.push_screen(StatsScreen(self.lists, self.lists.last_query, self.target))

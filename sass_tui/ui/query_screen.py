@@ -54,6 +54,9 @@ class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
         Binding("b", "build", "Build", tooltip="Build query"),
         Binding("m", "make_population", "Make", tooltip="Make Population"),
         Binding("f", "fit_test", "Fit", tooltip="Fit Test"),
+        Binding(
+            "S", "stats", "Stats", show=False, tooltip="Percentile table of the query's people"
+        ),
         Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         Binding("t", "choose_target", "Target", show=False, tooltip="Target population"),
         Binding("q", "app.quit", "Quit"),

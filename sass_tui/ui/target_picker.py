@@ -16,6 +16,7 @@ from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
 from sass_tui.db.lists import DB_ERRORS, QueryLists
+from sass_tui.db.scope import VIRTUAL_PREFIX
 
 if TYPE_CHECKING:  # for the annotation only
     from sass_tui.ui.base import SassScreen
@@ -29,8 +30,16 @@ def target_names(lists: QueryLists) -> list[str]:
 
 
 def weighted_words(name: str | None) -> str:
-    """What a screen shows of its target: nothing, or that its answers are weighted."""
+    """What a screen shows of its target: nothing, or that its answers are
+    weighted (a virtual population's people said to be VIRTUAL)."""
+    if name and name.startswith(VIRTUAL_PREFIX):
+        return f", VIRTUAL people of {name.removeprefix(VIRTUAL_PREFIX)}, weighted"
     return f", weighted to target {name}" if name else ""
+
+
+def _shown(name: str) -> str:
+    """A target's name in the menu; a virtual population's labelled."""
+    return f"{name} (VIRTUAL people)" if name.startswith(VIRTUAL_PREFIX) else name
 
 
 class TargetPicker(ModalScreen[str | None]):
@@ -50,7 +59,7 @@ class TargetPicker(ModalScreen[str | None]):
             popup.border_title = "Target population"
             menu = OptionList(
                 Option(NO_TARGET, id="target-none"),
-                *(Option(name, id=f"target-{i}") for i, name in enumerate(self.names)),
+                *(Option(_shown(name), id=f"target-{i}") for i, name in enumerate(self.names)),
                 id="target-menu",
             )
             if self.current in self.names:

@@ -280,8 +280,9 @@ def test_conjuncts_are_the_and_terms(terms):
     # a parenthesised group (AND or OR) is one term
     assert [c.text for c in compiled] == terms
     whole = compile_query(text)
-    # the whole query also holds the real-people scope's one parameter (db/scope.py)
-    assert sum(len(c.params) for c in compiled) == len(whole.params) - 1
+    # the whole query also holds the real-people scope's two parameters (db/scope.py:
+    # not the demonstration people, not the virtual people)
+    assert sum(len(c.params) for c in compiled) == len(whole.params) - 2
 
 
 def _sass(*args: str) -> subprocess.CompletedProcess:

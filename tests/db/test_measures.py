@@ -284,7 +284,8 @@ def test_any_quoted_text_is_a_parameter(value):
         compiled = compile_query(f"branch = '{value}'")
     except QueryError:
         return  # e.g. characters the grammar does not take
-    assert compiled.params == (value, "synthetic")  # the value, then the real-people scope
+    # the value, then the real-people scope (no demonstration, no virtual people)
+    assert compiled.params == (value, "synthetic", "virtual:%")
     assert "'" not in compiled.where and '"' not in compiled.where  # no literal in the SQL
 
 

@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from sass_tui.db.dialect import dialect_of
 from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
 from sass_tui.db.query_tree import And, Comparison, Or, names_field, to_sql
-from sass_tui.db.scope import REAL_PEOPLE
+from sass_tui.db.scope import NOT_VIRTUAL, REAL_PEOPLE
 
 DB = Path(__file__).resolve().parents[2] / "sass_tui" / "db"
 
@@ -35,9 +35,10 @@ def test_the_report_sample_is_one_tree():
     )
     tree = compiled.tree
     assert isinstance(tree, And)
-    # The real-people scope (db/scope.py) is one more term of the same tree.
-    gender, girth, strength, scope = tree.terms
-    assert scope == REAL_PEOPLE
+    # The real-people scope (db/scope.py) is two more terms of the same tree:
+    # no demonstration people, no virtual people.
+    gender, girth, strength, scope, not_virtual = tree.terms
+    assert scope == REAL_PEOPLE and not_virtual == NOT_VIRTUAL
     assert gender == Comparison("gender", "person", "gender", "=", "male")
     assert isinstance(girth, Comparison) and girth.op == ">" and girth.column == "z"
     assert girth.value == pytest.approx(11 * 2.54)  # inches -> the stored cm
@@ -54,7 +55,7 @@ def test_source_named_anywhere():
 
 def test_dialects_differ_only_in_placeholders_and_case_folding():
     scoped = compile_query("branch != 'Combat Arms' OR (stature > 170 cm AND gender = male)").tree
-    assert isinstance(scoped, And) and scoped.terms[-1] == REAL_PEOPLE
+    assert isinstance(scoped, And) and scoped.terms[-2:] == (REAL_PEOPLE, NOT_VIRTUAL)
     tree = scoped.terms[0]
     assert isinstance(tree, Or)
     sqlite_sql, params = to_sql(tree, "sqlite")

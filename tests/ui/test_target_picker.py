@@ -12,7 +12,7 @@ from sass_tui.cli import main
 from sass_tui.db.fit import fit_test
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.schema import connect
-from sass_tui.db.targets import load_target, weighted_count
+from sass_tui.db.targets import SHIPPED, load_target, weighted_count
 from sass_tui.ui.fit_screen import FitScreen
 from sass_tui.ui.query_screen import QueryScreen
 from sass_tui.ui.target_picker import NO_TARGET, TargetPicker
@@ -37,6 +37,7 @@ def targeted_db(db, tmp_path):
     return db
 
 
+@pytest.mark.slow
 def test_the_query_screen_and_fit_test_weighted_to_a_target(app_at, drive, targeted_db):
     with connect(targeted_db) as conn:
         weights = load_target(conn, "civ")
@@ -52,7 +53,7 @@ def test_the_query_screen_and_fit_test_weighted_to_a_target(app_at, drive, targe
             await pilot.press("t")
             await pilot.pause()
             assert isinstance(app.screen, TargetPicker)
-            assert app.screen.names == ["civ"]
+            assert app.screen.names == ["civ", *SHIPPED]
             await pilot.press("down", "enter")
             await pilot.pause()
             assert app.screen is screen and screen.target == "civ"
@@ -80,15 +81,24 @@ def test_the_query_screen_and_fit_test_weighted_to_a_target(app_at, drive, targe
     drive(scenario())
 
 
-def test_no_targets_says_how_to_make_one(app_at, drive, db):
+@pytest.mark.slow
+def test_with_no_target_made_the_shipped_ones_are_offered(app_at, drive, db):
+    """The shipped target and virtual population (made on first use) are
+    offered before anybody made a target; the virtual one is labelled."""
+
     async def scenario():
         async with app_at(SIZE, db=db) as (app, pilot):
             await pilot.press("d")
             await settle(pilot)
             await pilot.press("t")
             await pilot.pause()
-            assert isinstance(app.screen, QueryScreen)
-            assert "sass target NAME" in app.screen.message_line.history[-1][1]
+            assert isinstance(app.screen, TargetPicker)
+            assert app.screen.names == list(SHIPPED)
+            menu = app.screen.query_one("#target-menu")
+            assert str(menu.get_option_at_index(2).prompt) == (
+                "virtual:nhanes-2017-2020 (VIRTUAL people)"
+            )
+            await pilot.press("escape")
 
     drive(scenario())
 

@@ -1,0 +1,146 @@
+"""Virtual populations (db/virtual.py, model/virtual.py): the shipped
+`nhanes-2017-2020`, made on first use, holds NHANES's own weighted stature
+and mass, a measure NHANES took that the prediction never saw agrees with
+it, and its people never count among real people.  Expected numbers are
+computed here from the published CSV (../shared/data/nhanes) by cumulative
+weight, not through sass.  On both engines (tests/db/conftest.py)."""
+
+from __future__ import annotations
+
+import csv
+import json
+
+import numpy as np
+import pytest
+
+from sass_tui.cli import main
+from sass_tui.db.database import Database
+from sass_tui.db.targets import load_target
+from sass_tui.db.values import load_values
+from tests._paths import SHARED
+
+NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
+SOURCE = 'source = "virtual:nhanes-2017-2020"'
+
+
+def nhanes(gender_code: str, *columns: str) -> tuple[np.ndarray, np.ndarray]:
+    """Adults 20+ of one gender with a height and a weight: the columns and WTMECPRP."""
+    lines = [
+        line
+        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
+        if not line.startswith("#")
+    ]
+    rows = [
+        r
+        for r in csv.DictReader(lines)
+        if r["RIAGENDR"] == gender_code
+        and r["RIDAGEYR"] != "NA"
+        and float(r["RIDAGEYR"]) >= 20
+        and r["BMXHT"] != "NA"
+        and r["BMXWT"] != "NA"
+    ]
+    values = np.array([[np.nan if r[c] == "NA" else float(r[c]) for c in columns] for r in rows])
+    return values, np.array([float(r["WTMECPRP"]) for r in rows])
+
+
+def by_cumulative_weight(values: np.ndarray, weights: np.ndarray, q: float) -> float:
+    """The smallest value whose cumulative weight share reaches q."""
+    keep = ~np.isnan(values)
+    values, weights = values[keep], weights[keep]
+    order = np.argsort(values)
+    share = np.cumsum(weights[order]) / weights.sum()
+    return float(values[order][np.searchsorted(share, q)])
+
+
+@pytest.fixture(scope="module")
+def shipped(template_target, copy_database) -> str:
+    """A copy of the default database whose first use of the shipped name made it."""
+    db = copy_database(template_target)
+    assert main(["query", "--db", db, "--count", "--virtual", "nhanes-2017-2020", "mass > 0"]) == 0
+    return db
+
+
+def virtual_values(db: str, fields: list[str], gender: str):
+    opened = Database.open(db)
+    try:
+        with opened.connection() as conn:
+            values = load_values(conn, fields, f"{SOURCE} AND gender = {gender}")
+            weights = load_target(conn, "virtual:nhanes-2017-2020").of(values.ids)
+            return values.matrix, weights
+    finally:
+        opened.close()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("gender", "code"), [("female", "2"), ("male", "1")])
+def test_the_virtual_people_are_nhanes_own_stature_and_mass(shipped, gender, code):
+    matrix, weights = virtual_values(shipped, ["stature", "mass"], gender)
+    expected, survey = nhanes(code, "BMXHT", "BMXWT")
+    assert len(matrix) == len(expected)
+    for j in range(2):
+        for q in (0.05, 0.50, 0.95):
+            own = by_cumulative_weight(expected[:, j], survey, q)
+            assert by_cumulative_weight(matrix[:, j], weights, q) == pytest.approx(own, abs=0.6)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("gender", "code"), [("female", "2"), ("male", "1")])
+def test_fit_virtual_gives_nhanes_weighted_shares(shipped, capsys, gender, code):
+    """`sass fit --virtual`'s accommodated.<gender>.percent for stature and
+    mass limits is NHANES's weighted share, computed from the file."""
+    (stature, mass), survey = (lambda v, w: (v.T, w))(*nhanes(code, "BMXHT", "BMXWT"))
+    for s_limit, m_limit in ((165.0, 80.0), (175.5, 101.3), (158.0, 120.8)):
+        inside = (stature <= s_limit) & (mass <= m_limit)
+        own = 100 * survey[inside].sum() / survey.sum()
+        capsys.readouterr()
+        limits = f"stature <= {s_limit} cm AND mass <= {m_limit} kg"
+        argv = ["fit", "--db", shipped, "--virtual", "nhanes-2017-2020", "--format", "json"]
+        assert main([*argv, limits]) == 0
+        result = json.loads(capsys.readouterr().out)
+        assert result["accommodated"][gender]["percent"] == pytest.approx(own, abs=0.3)
+        assert result["target"]["name"] == "virtual:nhanes-2017-2020"
+        assert result["target"]["virtual"] is True
+        assert result["target"]["people"].startswith("VIRTUAL people, not measured")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("gender", "code"), [("female", "2"), ("male", "1")])
+def test_a_measure_the_prediction_never_saw(shipped, gender, code):
+    """NHANES measured hip circumference (BMXHIP, at the buttocks' widest);
+    the virtual people's buttock circumference was predicted from stature and
+    mass alone, on ANSUR II soldiers.  Their weighted 5th/50th/95th agree
+    within 2.5 cm (docs/target-populations.md gives the numbers)."""
+    matrix, weights = virtual_values(shipped, ["measure.buttockcircumference"], gender)
+    hip, survey = nhanes(code, "BMXHIP")
+    for q in (0.05, 0.50, 0.95):
+        measured = by_cumulative_weight(hip[:, 0], survey, q)
+        predicted = by_cumulative_weight(matrix[:, 0], weights, q)
+        assert predicted == pytest.approx(measured, abs=2.5)
+
+
+@pytest.mark.slow
+def test_virtual_people_never_count_as_real(shipped, capsys):
+    capsys.readouterr()
+    assert main(["query", "--db", shipped, "--count", "mass > 0"]) == 0
+    assert capsys.readouterr().out.strip() == "6068"
+    assert main(["query", "--db", shipped, "--count", SOURCE]) == 0
+    assert capsys.readouterr().out.strip() == "8381"
+    assert main(["target", "--db", shipped, "--list"]) == 0
+    listed = capsys.readouterr().out
+    assert "virtual:nhanes-2017-2020  VIRTUAL population" in listed
+    assert "nhanes-2017-2020  both, by stature, mass" in listed
+
+
+@pytest.mark.slow
+def test_predict_learns_from_the_virtual_people(shipped, capsys):
+    """`predict --virtual`: the regression is fitted on the virtual women (as
+    many as NHANES's with a stature and a mass), not on the soldiers."""
+    argv = ["predict", "--db", shipped, "--gender", "female", "--format", "json"]
+    known = ["--known", "stature=160cm", "--known", "mass=150kg"]
+    capsys.readouterr()
+    assert main([*argv, *known, "--virtual", "nhanes-2017-2020"]) == 0
+    virtual = json.loads(capsys.readouterr().out)
+    assert main([*argv, *known]) == 0
+    real = json.loads(capsys.readouterr().out)
+    assert "virtual:nhanes-2017-2020" in virtual["model"]["population"]
+    assert virtual["model"]["n"] == len(nhanes("2", "BMXHT")[0]) and real["model"]["n"] == 1986
