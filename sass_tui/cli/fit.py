@@ -111,7 +111,8 @@ def run(args: argparse.Namespace) -> int:
 
         target = load_weights(conn, weighting)
         if target.target.is_virtual and args.population == DEFAULT_POPULATION:
-            args.population = target.target.population  # its virtual people, not the soldiers
+            # its virtual people, not the soldiers
+            population = parse_option(target.target.population, weighting)
     result = fit_test(
         conn,
         limits,
