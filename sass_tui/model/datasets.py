@@ -21,3 +21,8 @@ def directory() -> Path:
 
 def path(name: str) -> Path:
     return directory() / name
+
+
+def is_shipped(file: str | Path) -> bool:
+    """Whether `file` names one of the shipped data sets (the report's)."""
+    return bool(str(file)) and Path(file).resolve().parent == directory().resolve()

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from sass_tui.model.appendix_l import HEEL_BEHIND_ANKLE
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.figfile import FigureIncompleteError
@@ -121,8 +122,6 @@ NOT_IN_HUMANOID: tuple[tuple[str, int], ...] = (
 # The centre of the humeral head lies below the acromion's tip by about the
 # head's radius and the subacromial space (an assumption, docs/hanim.md).
 SHOULDER_BELOW_ACROMION = 0.04  # m
-# Appendix L.1: the anklebone lies 0.2516 foot lengths in front of the heel.
-HEEL_BEHIND_ANKLE = 0.2516
 
 # Segment masses and centres of mass: de Leva (1996), "Adjustments to
 # Zatsiorsky-Seluyanov's segment inertia parameters", J. Biomech. 29(9),
