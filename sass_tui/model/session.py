@@ -250,10 +250,21 @@ class Session:
     def set_cell_percentile(self, group: str, row: int, axis: int, p: float) -> None:
         self._edit_figure(lambda f: f.set_cell_percentile(group, row, axis, p))
 
-    def load_group(self, group: str, data: PopulationData) -> None:
-        """Input Data for a group: undoable like any edit."""
-        self._edit_figure(lambda f: f.load_group(group, data))
-        self.warnings = list(data.warnings)
+    def load_group(
+        self, group: str, data: PopulationData, stature_and_mass: PopulationData | None = None
+    ) -> None:
+        """Input Data for a group: undoable like any edit.  With
+        `stature_and_mass` (the people's own, `sass population` wrote them
+        beside its girth file) those are loaded in the same edit."""
+
+        def load(figure: Figure) -> None:
+            figure.load_group(group, data)
+            if stature_and_mass is not None:
+                figure.load_global(stature_and_mass)
+
+        self._edit_figure(load)
+        more = stature_and_mass.warnings if stature_and_mass is not None else []
+        self.warnings = [*data.warnings, *more]
 
     def load_global(self, data: PopulationData) -> None:
         """Stature and mass statistics from a global file: undoable like any edit."""
