@@ -188,6 +188,9 @@ class EditCommands(SheetScreenBase):
                 return
         current = global_text(self.figure, self.data_group, field, self.strength_percentile)
         hint = GLOBAL_HINTS.get(field, f"percentile of every {GROUP_TITLES[self.data_group]} row")
+        stats = self.figure.global_stats
+        if field in ("mass", "stature", "mass_percentile", "stature_percentile") and stats:
+            hint += f"; of {stats.title}"  # whose stature and mass the percentiles are
         label = field.replace("_", " ").capitalize()
         self.ask(
             f"{label} ({hint}) [{current}]:", lambda text: self._edit_global(field, text), initial

@@ -122,13 +122,14 @@ class FileCommands(SheetScreenBase):
         except SassError as exc:
             self.complain(f"{exc}; {GROUP_TITLES[group]} unchanged.")
             return
-        title = data.title
+        title, figure = data.title, self.figure
         if beside is not None:
-            figure = self.figure
             title += (
                 f"; Stature {figure.stature:.1f} cm and Mass {figure.mass:.1f} kg are the "
                 f"people's own, from {Path(beside.path).name} beside it"
             )
+        elif group == GIRTH and figure.global_stats and figure.global_stats.title != data.title:
+            title += f"; Stature and Mass stay those of {figure.global_stats.title}"
         self._say_loaded(GROUP_TITLES[group], data.path, title)
 
     def _say_loaded(self, what: str, path: str, title: str) -> None:

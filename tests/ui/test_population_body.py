@@ -84,6 +84,11 @@ def test_input_data_of_a_population_girth_file_loads_its_stature_and_mass(
             said = message(app)
             assert f"Stature {stature:.1f} cm and Mass {mass:.1f} kg are the people's own" in said
             assert "tall-global.dat" in said
+            app.screen.query_one(GlobalPanel).focus()  # the global data, at Gender still
+            await pilot.pause()
+            await pilot.press("down", "enter")  # Mass: whose its percentiles are
+            assert "Mass (kg, or e.g. 180 lb; of Population of gender = female" in message(app)
+            await pilot.press("escape")
             await pilot.press("u")  # one edit: the girth and its stature and mass
             await settle(pilot)
             assert (app.figure.stature, app.figure.mass) == before
