@@ -196,6 +196,12 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     else:
         session.set_stature_percentile(args.stature_percentile or args.percentile)
     session.set_figure_type(args.figure_type)
+    # A warning is about a file the user named: the shipped girth.dat's misprints
+    # are not news to one who passed only the shipped cmass.dat.
+    named = {data.path for data in files.values()}
+    if stature_and_mass is not None:
+        named.add(stature_and_mass.path)
+    warnings = [w for w in warnings if w.split(":", 1)[0] in named]
     if args.person is not None:
         return person_figure(args, session.figure), warnings
     return session.figure, warnings
