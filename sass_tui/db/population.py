@@ -18,8 +18,16 @@ population's (`datasets/global.dat`), percentile by percentile:
 
 A segment's dimensions grow in proportion to stature to a first
 approximation (geometric similarity, the assumption behind SASS's own
-scaling by percentile).  The file says, row by row in its comments, which
-cells are the people's and which the model's.  No Textual import here.
+scaling by percentile).  A center-of-mass cell appendix L.1 defines from
+segment lengths (lower leg, foot, a woman's head, neck, arms, upper legs and
+hands) is made by that rule from the population's own girth instead
+(`_apply_center_of_mass_rules`), so the files pass the rules their reader
+checks.  The file says, row by row in its comments, which cells are the
+people's and which the model's.
+
+With them comes the people's own stature and mass (the GLOBAL group,
+written as NAME-global.dat): the figure of a population is sized by its own
+people, not by the report's crew.  No Textual import here.
 """
 
 from __future__ import annotations
