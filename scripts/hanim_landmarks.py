@@ -103,6 +103,19 @@ def landmark_fractions(folder: Path = ANSUR) -> dict[str, dict[str, float]]:
     return out
 
 
+def biacromial_fractions(folder: Path = ANSUR) -> dict[str, float]:
+    """Mean biacromial breadth / stature per gender, to 4 decimals: the
+    breadth whose 17 % (Rab et al. 2002) puts a percentile figure's shoulder
+    centre below its acromion (landmarks.BIACROMIAL_FRACTION)."""
+    out = {}
+    for gender in FILES:
+        rows = read_csv(gender, folder)
+        stature = np.array([float(r["stature"]) for r in rows])
+        breadth = np.array([float(r["biacromialbreadth"]) for r in rows])
+        out[gender] = round(float(np.mean(breadth / stature)), 4)
+    return out
+
+
 def center_of_mass_share(humanoid: Humanoid, stature: float) -> float:
     """The humanoid's whole-body centre-of-mass height over `stature` (m)."""
     segments = humanoid.segments.values()
@@ -198,12 +211,19 @@ def main() -> int:
     args = parser.parse_args()
     sys.path.insert(0, str(ROOT))
     from sass_tui.model.hanim import LANDMARK_FRACTIONS
+    from sass_tui.model.landmarks import BIACROMIAL_FRACTION
 
     fractions = landmark_fractions()
     print("landmark / stature (ANSUR II means):")
     for gender, values in fractions.items():
         same = values == LANDMARK_FRACTIONS[gender]
         print(f"  {gender}: {values}  {'= hanim.LANDMARK_FRACTIONS' if same else 'DIFFERS'}")
+    breadths = biacromial_fractions()
+    same = breadths == BIACROMIAL_FRACTION
+    print(
+        f"biacromial breadth / stature: {breadths}  "
+        f"{'= landmarks.BIACROMIAL_FRACTION' if same else 'DIFFERS'}"
+    )
     result = measure(args.people)
     print(f"\n{result['people']} ANSUR II people exported from a database:")
     print("| site or joint | against the person's | mean abs. error | max |")

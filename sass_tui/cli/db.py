@@ -5,9 +5,13 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
 from sass_tui.cli.progress import progress_for
+
+if TYPE_CHECKING:
+    from sass_tui.db.replacing import Held
 
 
 def register(commands: SubParsers) -> None:
@@ -72,37 +76,26 @@ def register(commands: SubParsers) -> None:
 
 
 def run_init(args: argparse.Namespace) -> int:
-    # deferred: db.addresses, db.database, db.default, db.schema — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: db.addresses, db.database, db.default, db.replacing, db.schema — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import configured_target
-    from sass_tui.db.default import create_default_database, people_count
-    from sass_tui.db.schema import DatabaseError, connect, default_db_path
+    from sass_tui.db.default import create_default_database
+    from sass_tui.db.replacing import Held, keep_targets, what_init_replaces
+    from sass_tui.db.schema import connect, default_db_path
 
     target = configured_target(getattr(args, "db", None))
     if is_url(target):
         return _init_postgres(str(target), args.force)
     path = Path(target) if target else default_db_path()
-    if path.exists() and path.stat().st_size and not args.force:
+    held = Held({}, [])
+    if path.exists() and path.stat().st_size:
         conn = connect(path, rebuild=True)
         try:
-            held = people_count(conn) if _has_person_table(conn) else 0
+            held = what_init_replaces(conn)
         finally:
             conn.close()
-        if held:
-            question = (
-                f"{path} holds {held} people (imports included); "
-                "replace them with the default data set? [y/N] "
-            )
-            if not (sys.stdin.isatty() and sys.stderr.isatty()):
-                raise DatabaseError(
-                    f"{path} holds {held} people; `sass db init --force` replaces them "
-                    "(imports included)"
-                )
-            sys.stderr.write(question)
-            sys.stderr.flush()
-            if sys.stdin.readline().strip().lower() not in ("y", "yes"):
-                print("nothing changed", file=sys.stderr)
-                return 1
+    if held.count and not args.force and not _replace_confirmed(str(path), held):
+        return 1
     bar = progress_for(sys.stderr, "building")
     counts = create_default_database(path, progress=bar, replace=True)
     if bar:
@@ -118,37 +111,56 @@ def run_init(args: argparse.Namespace) -> int:
         f"created {path}: {counts.get('ansur2', 0)} ANSUR II people and "
         f"{counts.get('synthetic', 0)} synthetic people"
     )
+    if held.targets:
+        conn = connect(path)
+        try:
+            for line in keep_targets(conn, held):
+                print(line)
+        finally:
+            conn.close()
     return 0
+
+
+def _replace_confirmed(where: str, held: Held) -> bool:
+    """Say what replacing deletes, one line each (the people by source, the
+    stored targets), then ask; without a terminal to ask on, refuse saying
+    what `--force` would replace."""
+    # deferred: db.schema — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.db.schema import DatabaseError
+
+    lines = held.lines()
+    if not (sys.stdin.isatty() and sys.stderr.isatty()):
+        raise DatabaseError(
+            f"{where} holds {held.count} people; `sass db init --force` replaces them "
+            f"(imports included): {'; '.join(lines)}"
+        )
+    sys.stderr.write(f"{where} holds {held.count} people (imports included):\n")
+    sys.stderr.write("".join(f"  {line}\n" for line in lines))
+    sys.stderr.write("replace them with the default data set? [y/N] ")
+    sys.stderr.flush()
+    if sys.stdin.readline().strip().lower() in ("y", "yes"):
+        return True
+    print("nothing changed", file=sys.stderr)
+    return False
 
 
 def _init_postgres(url: str, force: bool) -> int:
     """`sass db init --db postgresql://...`: the schema and the default people,
-    in one transaction; asks (or needs --force) before replacing people."""
-    # deferred: db.database, db.postgres, db.schema — off sass --help, sass --version (sass_tui/startup.py)
+    in one transaction; asks (or needs --force) before replacing people, and
+    keeps the stored targets whose people are stored again."""
+    # deferred: db.database, db.postgres, db.replacing — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.database import Database, init_postgres
     from sass_tui.db.postgres import shown
-    from sass_tui.db.schema import DatabaseError
+    from sass_tui.db.replacing import keep_targets, what_init_replaces
 
-    if not force:
-        db = Database.open(url, create=True)
-        try:
-            held = db.people_count()
-        finally:
-            db.close()
-        if held:
-            if not (sys.stdin.isatty() and sys.stderr.isatty()):
-                raise DatabaseError(
-                    f"{shown(url)} holds {held} people; `sass db init --force` replaces them "
-                    "(imports included)"
-                )
-            sys.stderr.write(
-                f"{shown(url)} holds {held} people (imports included); "
-                "replace them with the default data set? [y/N] "
-            )
-            sys.stderr.flush()
-            if sys.stdin.readline().strip().lower() not in ("y", "yes"):
-                print("nothing changed", file=sys.stderr)
-                return 1
+    db = Database.open(url, create=True)
+    try:
+        with db.connection() as conn:
+            held = what_init_replaces(conn)
+    finally:
+        db.close()
+    if held.count and not force and not _replace_confirmed(shown(url), held):
+        return 1
     bar = progress_for(sys.stderr, "building")
     counts = init_postgres(url, bar, force=True)
     if bar:
@@ -157,15 +169,15 @@ def _init_postgres(url: str, force: bool) -> int:
         f"created the sass schema in {shown(url)}: {counts.get('ansur2', 0)} ANSUR II people "
         f"and {counts.get('synthetic', 0)} synthetic people"
     )
+    if held.targets:
+        db = Database.open(url)
+        try:
+            with db.connection() as conn:
+                for line in keep_targets(conn, held):
+                    print(line)
+        finally:
+            db.close()
     return 0
-
-
-def _has_person_table(conn) -> bool:  # sqlite3.Connection
-    return bool(
-        conn.execute(
-            "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'person'"
-        ).fetchone()
-    )
 
 
 def run_import_flat(args: argparse.Namespace) -> int:

@@ -162,7 +162,8 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
         "--global",
         dest="global_file",
         metavar="F",
-        help="stature and mass statistics file (e.g. sass population --target's FILE-global.dat)",
+        help="stature and mass statistics file (default: FILE-global.dat beside --girth FILE, "
+        "as sass population writes it)",
     )
 
 
@@ -172,7 +173,7 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     # deferred: model.figure, model.names, model.popfile, model.session, model.units — off sass serve (sass_tui/startup.py)
     from sass_tui.model.figure import Figure, FigureError
     from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
-    from sass_tui.model.popfile import read_population_file
+    from sass_tui.model.popfile import PopulationData, read_global_beside, read_population_file
     from sass_tui.model.session import Session
     from sass_tui.model.units import parse_quantity
 
@@ -200,10 +201,17 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     for group, data in files.items():
         session.load_group(group, data)
         warnings += [w for w in data.warnings if w not in warnings]
+    # The people's own stature and mass `sass population` wrote beside its girth file.
+    stature_and_mass: PopulationData | None
     if args.global_file:
-        data = read_population_file(args.global_file, GLOBAL)
-        session.load_global(data)
-        warnings += [w for w in data.warnings if w not in warnings]
+        stature_and_mass = read_population_file(args.global_file, GLOBAL)
+    else:
+        beside = read_global_beside(args.girth) if args.girth else None
+        # a gender the girth file lacks is said by the girth's own error
+        stature_and_mass = beside if beside and beside.has(session.figure.gender) else None
+    if stature_and_mass is not None:
+        session.load_global(stature_and_mass)
+        warnings += [w for w in stature_and_mass.warnings if w not in warnings]
     for group, option in (
         (GIRTH, args.girth_percentile),
         (JOINT_LIMITS, args.joint_limit_percentile),
@@ -219,6 +227,12 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     else:
         session.set_stature_percentile(args.stature_percentile or args.percentile)
     session.set_figure_type(args.figure_type)
+    # A warning is about a file the user named: the shipped girth.dat's misprints
+    # are not news to one who passed only the shipped cmass.dat.
+    named = {data.path for data in files.values()}
+    if stature_and_mass is not None:
+        named.add(stature_and_mass.path)
+    warnings = [w for w in warnings if w.split(":", 1)[0] in named]
     if args.person is not None:
         return person_figure(args, session.figure), warnings
     return session.figure, warnings

@@ -6,9 +6,10 @@ query --format csv` output; `-` reads standard input), as Make Population
 does with the query screen's selected list; with --query too, from the
 people of the list that the query selects.
 
-`-o young.dat` writes the girth file to young.dat and the center-of-mass
-file beside it as young-cmass.dat (`sass fig --girth young.dat --cmass
-young-cmass.dat`)."""
+`-o young.dat` writes the girth file to young.dat, the center-of-mass
+file beside it as young-cmass.dat and the people's own stature and mass as
+young-global.dat (`sass fig --girth young.dat --cmass young-cmass.dat` reads
+all three)."""
 
 from __future__ import annotations
 
@@ -43,14 +44,15 @@ def register(commands: SubParsers) -> None:
         "--output",
         required=True,
         metavar="FILE.dat",
-        help="girth file; the center-of-mass file is FILE-cmass.dat beside it",
+        help="girth file; FILE-cmass.dat (center of mass) and FILE-global.dat (the "
+        "people's stature and mass) beside it",
     )
     population.add_argument("--title", metavar="T", help="title (default: the query)")
     population.add_argument(
         "--target",
         metavar="NAME",
-        help="the people of a target population (sass target), weighted percentiles; "
-        "also writes FILE-global.dat (stature and mass, for sass fig --global)",
+        help="the people of a target population (sass target), weighted percentiles "
+        "(FILE-global.dat's stature and mass too)",
     )
     add_virtual_option(population)
     population.set_defaults(func=run)
@@ -104,7 +106,8 @@ def run(args: argparse.Namespace) -> int:
     for group, path in write_population_files(result, Path(args.output)).items():
         modelled = result.modelled.get(group, 0)
         model = (
-            f"; {modelled} cells the people lack from the report's, scaled by their stature"
+            f"; {modelled} cells the people lack from the report's, scaled by their stature "
+            "or by appendix L.1's rules"
             if modelled
             else ""
         )

@@ -18,8 +18,16 @@ population's (`datasets/global.dat`), percentile by percentile:
 
 A segment's dimensions grow in proportion to stature to a first
 approximation (geometric similarity, the assumption behind SASS's own
-scaling by percentile).  The file says, row by row in its comments, which
-cells are the people's and which the model's.  No Textual import here.
+scaling by percentile).  A center-of-mass cell appendix L.1 defines from
+segment lengths (lower leg, foot, a woman's head, neck, arms, upper legs and
+hands) is made by that rule from the population's own girth instead
+(`_apply_center_of_mass_rules`), so the files pass the rules their reader
+checks.  The file says, row by row in its comments, which cells are the
+people's and which the model's.
+
+With them comes the people's own stature and mass (the GLOBAL group,
+written as NAME-global.dat): the figure of a population is sized by its own
+people, not by the report's crew.  No Textual import here.
 """
 
 from __future__ import annotations
@@ -36,10 +44,26 @@ from sass_tui.db.dialect import ids_in
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import ParsedQuery, joined, parsed
 from sass_tui.db.schema import CENTER_OF_MASS_NAMES, GIRTH_NAMES
-from sass_tui.db.values import load_values
+from sass_tui.db.values import Values, load_values
 from sass_tui.model import datasets
+from sass_tui.model.appendix_l import (
+    FOOT_FRACTION,
+    HEEL_BEHIND_ANKLE,
+    LOWER_LEG_FRACTION,
+    SCALED_BY_LENGTH,
+    foot_center,
+    lower_leg_center,
+)
 from sass_tui.model.errors import SassError
-from sass_tui.model.names import AXES, CENTER_OF_MASS, GIRTH, GLOBAL, GLOBAL_ROWS, ROWS
+from sass_tui.model.names import (
+    AXES,
+    CENTER_OF_MASS,
+    GIRTH,
+    GLOBAL,
+    GLOBAL_ROWS,
+    ROWS,
+    row_index,
+)
 from sass_tui.model.popfile import PopulationData, read_population_file
 from sass_tui.model.text import printable
 from sass_tui.model.vocabulary import GENDERS
@@ -115,7 +139,8 @@ def population_of(
     if selection is None and ids is None:
         raise PopulationError("a population needs a query or a list of people")
     when = date or _dt.date.today().isoformat()
-    fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)] + ["stature"]
+    fields = [f for _g, word, rows in _GROUPS for f in group_fields(word, rows)]
+    fields += [row.name for row in GLOBAL_ROWS]  # stature, mass: the last columns
     steps = Steps(progress, cancel, "making the population")
     total = len(fields) * len(GENDERS) + 1
     steps(0, total)
@@ -153,17 +178,14 @@ def population_of(
         done[0] += 1
         steps(done[0], total)
 
-    statures = values.matrix[:, -1]
+    statures = values.matrix[:, -len(GLOBAL_ROWS) + row_index(GLOBAL, "stature")]
     scales = {g: _stature_scale(statures[genders == g], g) for g in counts}
+    file_title = f"{heading} ({described}; sass query, {when})"
     for group, _word, rows in _GROUPS:
         width = len(rows) * 3
         block = values.matrix[:, start : start + width]
         start += width
-        data = PopulationData(
-            group=group,
-            title=f"{heading} ({described}; sass query, {when})",
-            path="",
-        )
+        data = PopulationData(group=group, title=file_title, path="")
         modelled[group] = 0
         for gender in counts:
             people = block[genders == gender]
@@ -173,24 +195,103 @@ def population_of(
             modelled[group] += _fill_from_report(data, gender, stats, have, scales[gender])
             data.sections[gender] = stats
             data.lines[gender] = [0] * len(rows)
+            if group == CENTER_OF_MASS:
+                _apply_center_of_mass_rules(data, gender, have, groups[GIRTH])
         groups[group] = data
-    if target is not None:
-        # Weighting moves stature and mass most: a weighted population carries its own
-        # global statistics (the file `sass fig --global` reads).
-        whole = load_values(conn, [r.name for r in GLOBAL_ROWS], selection, ids=ids)
-        data = PopulationData(
-            group=GLOBAL, title=f"{heading} ({described}; sass query, {when})", path=""
-        )
-        for gender in counts:
-            mine = np.array(whole.genders, dtype=object) == gender
-            weights = target.of(whole.ids[mine])
-            data.sections[gender] = _percentiles(whole.matrix[mine], lambda: None, weights).reshape(
-                len(GLOBAL_ROWS), 1, 3
-            )
-            data.lines[gender] = [0] * len(GLOBAL_ROWS)
-        groups[GLOBAL] = data
+    groups[GLOBAL] = _own_stature_and_mass(values, genders, counts, target, file_title)
     steps(total, total)
     return SelectionPopulation(what.removeprefix("the query "), counts, groups, modelled)
+
+
+def _own_stature_and_mass(
+    values: Values,
+    genders: np.ndarray,
+    counts: dict[str, int],
+    target: TargetWeights | None,
+    title: str,
+) -> PopulationData:
+    """The people's own stature and mass, 5th/50th/95th per gender (weighted
+    with a target): what the population's figure is sized from (FILE-global.dat
+    beside the girth file, read with it by `sass fig --girth` and Make
+    Population).  A row too few of the people have (under MIN_PEOPLE) is
+    datasets/global.dat's, and its comment says so."""
+    columns = values.matrix[:, -len(GLOBAL_ROWS) :]
+    report = _report(GLOBAL)
+    data = PopulationData(group=GLOBAL, title=title, path="")
+    for gender in counts:
+        mine = genders == gender
+        weights = None if target is None else target.of(values.ids[mine])
+        stats = _percentiles(columns[mine], lambda: None, weights).reshape(len(GLOBAL_ROWS), 1, 3)
+        have = np.sum(~np.isnan(columns[mine]), axis=0)
+        notes = []
+        for r, row in enumerate(GLOBAL_ROWS):
+            if have[r] >= MIN_PEOPLE:
+                notes.append(f"{row.label}: the people's own ({int(have[r])} have it)")
+            else:
+                stats[r, 0] = report.stats(gender)[r, 0]
+                notes.append(
+                    f"{row.label}: datasets/global.dat's (only {int(have[r])} of the people have it)"
+                )
+        weighted = ", weighted to the target" if target is not None else ""
+        data.notes[gender] = [
+            f"The {_POSSESSIVE[gender]} own stature (cm) and mass (kg), 5th/50th/95th "
+            f"percentile{weighted}: the Stature and Mass of the population's figure."
+        ]
+        data.sections[gender] = stats
+        data.lines[gender] = [0] * len(GLOBAL_ROWS)
+        data.row_notes[gender] = notes
+    return data
+
+
+def _apply_center_of_mass_rules(
+    cmass: PopulationData, gender: str, have: np.ndarray, girth: PopulationData
+) -> None:
+    """The center-of-mass cells the people lack (all: ANSUR II measures no
+    center of mass) that appendix L.1 defines from segment lengths, made from
+    the population's own girth instead of the report's table scaled by
+    stature: the lower leg, the foot, and the women's segments scaled from
+    the men's by length (the population's own men where it has them, else
+    the report's).  The files then agree with the rules their reader checks
+    (popfile.check_center_of_mass_rules); each row's comment names the rule."""
+    stats = cmass.stats(gender)
+    lengths = girth.stats(gender)
+    com = {row.name: i for i, row in enumerate(ROWS[CENTER_OF_MASS])}
+    seg = {row.name: i for i, row in enumerate(ROWS[GIRTH])}
+    ruled: dict[tuple[int, int], str] = {}
+
+    def rule(row: str, axis: int, cell: Sequence[float], said: str) -> None:
+        if have[com[row], axis] < MIN_PEOPLE:
+            stats[com[row], axis] = cell
+            ruled[com[row], axis] = said
+
+    for side in ("right", "left"):
+        leg = lengths[seg[f"{side}_lower_leg"], 2]
+        rule(
+            f"{side}_lower_leg",
+            2,
+            [lower_leg_center(v) for v in leg],
+            f"L.1 {LOWER_LEG_FRACTION} x length",
+        )
+        foot, toes = lengths[seg[f"{side}_foot"], 0], lengths[seg[f"{side}_ball_of_foot"], 0]
+        rule(f"{side}_foot", 0, [foot_center(f, t) for f, t in zip(foot, toes)], "L.1 foot rule")
+    if gender == "female":
+        if cmass.has("male"):
+            men_com, men_len, men = cmass.stats("male"), girth.stats("male"), "the men's"
+        else:
+            men_com = _report(CENTER_OF_MASS).stats("male")
+            men_len, men = _report(GIRTH).stats("male"), "the report's men's"
+        for row, parts in SCALED_BY_LENGTH.items():
+            women = sum(lengths[seg[part], 2] for part in parts)
+            male = sum(men_len[seg[part], 2] for part in parts)
+            rule(row, 2, men_com[com[row], 2] * women / male, f"L.1 {men} x length ratio")
+    cmass.notes[gender].append(
+        "'L.1 ...' = appendix L.1's rule applied to the population's own girth values "
+        f"(lower leg {LOWER_LEG_FRACTION} x its length; foot {FOOT_FRACTION} (foot x + toes x) "
+        f"- {HEEL_BEHIND_ANKLE} foot x; a woman's segment = a man's x her length / his)."
+    )
+    notes = cmass.row_notes[gender]
+    for (r, a), said in ruled.items():
+        notes[r] = notes[r].replace(f"{AXES[a]} model", f"{AXES[a]} {said}")
 
 
 def _stature_scale(statures: np.ndarray, gender: str) -> tuple[np.ndarray, str]:

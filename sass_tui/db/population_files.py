@@ -1,6 +1,6 @@
 """Writing a selection's population (db/population.py) as files: the girth
 file where the user asked, the center-of-mass file beside it as
-NAME-cmass.dat.  One code path for `sass population` and the query screen's
+NAME-cmass.dat, the people's own stature and mass as NAME-global.dat.  One code path for `sass population` and the query screen's
 Make Population."""
 
 from __future__ import annotations
@@ -9,16 +9,9 @@ from pathlib import Path
 
 from sass_tui.db.population import SelectionPopulation
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL
-from sass_tui.model.popfile import write_population_file
+from sass_tui.model.popfile import cmass_path, global_path, write_population_file
 
-
-def cmass_path(girth_path: Path) -> Path:
-    return girth_path.with_name(f"{girth_path.stem}-cmass{girth_path.suffix or '.dat'}")
-
-
-def global_path(girth_path: Path) -> Path:
-    """A weighted population's stature and mass (`sass fig --global`)."""
-    return girth_path.with_name(f"{girth_path.stem}-global{girth_path.suffix or '.dat'}")
+__all__ = ["cmass_path", "global_path", "write_population_files"]
 
 
 def write_population_files(result: SelectionPopulation, target: Path) -> dict[str, Path]:

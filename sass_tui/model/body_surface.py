@@ -34,9 +34,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from sass_tui.model.appendix_l import HEEL_BEHIND_ANKLE
 from sass_tui.model.body_measures import BodyMeasures, figure_measures
 from sass_tui.model.hanim import LOA1, SEGMENT_OF, humanoid_stature
-from sass_tui.model.landmarks import HEEL_BEHIND_ANKLE
 
 if TYPE_CHECKING:
     from sass_tui.model.figure import Figure

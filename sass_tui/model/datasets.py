@@ -43,3 +43,8 @@ def shipped_text(name: str) -> str:
     """A shipped text data set (a `.gz` one decompressed)."""
     data = path(name).read_bytes()
     return (gzip.decompress(data) if name.endswith(".gz") else data).decode("utf-8")
+
+
+def is_shipped(file: str | Path) -> bool:
+    """Whether `file` names one of the shipped data sets (the report's)."""
+    return bool(str(file)) and Path(file).resolve().parent == directory().resolve()

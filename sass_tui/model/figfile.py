@@ -121,6 +121,17 @@ def center_of_mass_variables(figure: Figure) -> list[FigVariable]:
     return _axis_variables(figure, CENTER_OF_MASS, center_of_mass_variable, "cm")
 
 
+def _whose_stature_and_mass(figure: Figure) -> str:
+    """A population figure's stature and mass say whose statistics they come
+    from (a person's are the person's own)."""
+    if figure.person is not None or figure.global_stats is None:
+        return ""
+    return (
+        f" (mass percentile {figure.mass_percentile:g}, stature percentile "
+        f"{figure.stature_percentile:g} of {figure.global_stats.title})"
+    )
+
+
 def render_fig(figure: Figure, extra_sections: Sequence[FigSection] = ()) -> str:
     missing = figure.missing_groups()
     if missing:
@@ -135,7 +146,8 @@ def render_fig(figure: Figure, extra_sections: Sequence[FigSection] = ()) -> str
         f"/* percentiles: girth {groups[GIRTH].percentile:g}, joint limits "
         f"{groups[JOINT_LIMITS].percentile:g}, center of mass {groups[CENTER_OF_MASS].percentile:g}; "
         f"mass {figure.output_mass():.2f} kg, stature "
-        f"{'not measured' if math.isnan(figure.stature) else f'{figure.stature:.1f} cm'} */",
+        f"{'not measured' if math.isnan(figure.stature) else f'{figure.stature:.1f} cm'}"
+        f"{_whose_stature_and_mass(figure)} */",
     ]
     counts = []
     for group in (GIRTH, JOINT_LIMITS, CENTER_OF_MASS):

@@ -194,8 +194,15 @@ class Figure:
             self.population = data.title
         state.rescale(self.gender)
         girth, cmass = self.groups[GIRTH].source, self.groups[CENTER_OF_MASS].source
-        if group in (GIRTH, CENTER_OF_MASS) and girth is not None and cmass is not None:
-            # appendix L.1's rules tie the two files: say what they find on loading either
+        if (
+            group in (GIRTH, CENTER_OF_MASS)
+            and girth is not None
+            and cmass is not None
+            and datasets.is_shipped(girth.path) == datasets.is_shipped(cmass.path)
+        ):
+            # Appendix L.1's rules tie a center-of-mass file to the girth of its own
+            # population: the report's pair, or a pair of the user's.  One of each is
+            # two populations, and a warning would name a file the user did not load.
             data.warnings += [
                 w for w in check_center_of_mass_rules(cmass, girth) if w not in data.warnings
             ]

@@ -18,14 +18,16 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from sass_tui.model.appendix_l import HEEL_BEHIND_ANKLE
 from sass_tui.model.errors import SassError
 from sass_tui.model.figfile import FigureIncompleteError
 from sass_tui.model.hanim_mass import Segment, build_segments
 from sass_tui.model.landmarks import (
-    HEEL_BEHIND_ANKLE,
+    BIACROMIAL_FRACTION,
     HUMERAL_HEAD_RADIUS,
     half_breadths,
     measured_heights,
+    shoulder_below_acromion,
 )
 from sass_tui.model.names import (
     CENTER_OF_MASS,
@@ -74,7 +76,8 @@ SEGMENT_OF = {joint: segment for joint, segment, _ in LOA1}
 #   knee                lateral femoral epicondyle height (the flexion axis)
 #   hip                 trochanterion height (level with the femoral head)
 #   vl5                 iliocristale height (the iliac crest, at L4-L5)
-#   shoulder            acromion height less SHOULDER_BELOW_ACROMION
+#   shoulder            acromion height less 17 % of the biacromial breadth
+#                       (model/landmarks.py: Rab et al. 2002, for every figure)
 #   neck base (top of l5) cervicale height; skullbase: tragion height
 #   omphalion           the navel (waist height, omphalion): where de Leva's
 #                       lower trunk begins (segment masses, below)
@@ -125,9 +128,6 @@ NOT_IN_HUMANOID: tuple[tuple[str, int], ...] = (
     *((f"{side}_ball_of_foot", 1) for side in ("right", "left")),
 )
 
-# The centre of the humeral head lies below the acromion's tip by about the
-# head's radius and the subacromial space (an assumption, docs/hanim.md).
-SHOULDER_BELOW_ACROMION = 0.04  # m
 
 _X, _Y, _Z = np.eye(3)
 
@@ -246,11 +246,11 @@ def landmark_heights(
     there (model/landmarks.py); elsewhere the stature's share of it."""
     fractions = LANDMARK_FRACTIONS[gender]
     heights = {name: fraction * stature for name, fraction in fractions.items()}
-    heights["shoulder"] = heights["acromion"] - SHOULDER_BELOW_ACROMION
-    own = measured_heights(landmarks or {}, stature)
-    if "acromion" in own and "shoulder" not in own:
-        own["shoulder"] = own["acromion"] - SHOULDER_BELOW_ACROMION
-    heights.update(own)
+    heights.update(measured_heights(landmarks or {}, stature))
+    if "shoulder" not in heights:
+        # Rab's rule as for a person, on the stature's share of the biacromial breadth
+        breadth = BIACROMIAL_FRACTION[gender] * stature
+        heights["shoulder"] = heights["acromion"] - shoulder_below_acromion(breadth)
     heights["vertex"] = stature
     heights["ankle"] = heights["lateral_malleolus"]
     heights["knee"] = heights["femoral_epicondyle"]

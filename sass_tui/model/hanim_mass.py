@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from sass_tui.model.landmarks import HEEL_BEHIND_ANKLE
+from sass_tui.model.appendix_l import HEEL_BEHIND_ANKLE
 from sass_tui.model.names import CENTER_OF_MASS, ROWS
 
 if TYPE_CHECKING:

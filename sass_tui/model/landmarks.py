@@ -41,9 +41,6 @@ from collections.abc import Mapping
 
 from sass_tui.model.body_measures import SURFACE_MEASURES
 
-# Appendix L.1: the anklebone lies 0.2516 foot lengths in front of the heel.
-HEEL_BEHIND_ANKLE = 0.2516
-
 # The ANSUR II measurements (the survey's column names, canonical unit cm)
 # that place a person's landmarks and shape their body's surface
 # (model/body_measures.py); db/individual.py reads exactly these.
@@ -72,10 +69,25 @@ LANDMARK_MEASURES: tuple[str, ...] = (
 )
 
 # Rab, Petuskey & Bagley (2002): the shoulder centre below the acromion, as a
-# share of the distance between the two acromia.
+# share of the distance between the two acromia.  The one glenohumeral rule:
+# a real person's own biacromial breadth, a percentile figure's its stature's
+# share of it (BIACROMIAL_FRACTION).
 SHOULDER_BELOW_ACROMION_SHARE = 0.17
+# The mean biacromial breadth / stature of ANSUR II (Gordon et al. 2014; 4,082
+# men, 1,986 women): `python scripts/hanim_landmarks.py` computes and checks it.
+BIACROMIAL_FRACTION = {"male": 0.2368, "female": 0.2244}
 # Iannotti et al. (1992): the humeral head's mean radius of curvature (m).
+# Placing the shoulder centre this far medial of the acromion's edge is
+# sass's own assumption (the acromion overhangs the head's lateral surface),
+# not Rab's.
 HUMERAL_HEAD_RADIUS = 0.025
+
+
+def shoulder_below_acromion(biacromial_breadth: float) -> float:
+    """How far (m) the glenohumeral centre lies below the acromion: Rab et
+    al.'s 17 % of the distance between the acromia (m)."""
+    return SHOULDER_BELOW_ACROMION_SHARE * biacromial_breadth
+
 
 # landmark (as hanim.LANDMARK_FRACTIONS names it) -> the ANSUR II column of its height
 HEIGHT_COLUMNS: dict[str, str] = {
@@ -122,7 +134,7 @@ def measured_heights(landmarks: Mapping[str, float], stature: float) -> dict[str
     acromion = out.get("acromion")
     breadth = measured(landmarks, "biacromialbreadth")
     if acromion is not None and breadth is not None:
-        out["shoulder"] = acromion - SHOULDER_BELOW_ACROMION_SHARE * breadth
+        out["shoulder"] = acromion - shoulder_below_acromion(breadth)
     arm = measured(landmarks, "acromionradialelength")
     if acromion is not None and arm is not None:
         out["radiale"] = acromion - arm

@@ -92,9 +92,11 @@ def cell_percentile_of(v5: float, v50: float, v95: float, value: float) -> float
     """The percentile of one value against one cell's statistics (the inverse
     of cell_value_at).
 
-    Not clipped to 0.5-99.5: a real person can lie outside it.  NaN where it
-    is undefined: no stored value, or a degenerate row (all three equal) with
-    a value other than that one.  A degenerate row's own value is at the 50th.
+    Not clipped to 0.5-99.5: a real person can lie outside it (the sheet
+    shows `>99.5` or `<0.5`).  NaN where it is undefined: no stored value, or
+    a degenerate row (all three equal) with a value other than that one.  A
+    degenerate row's own value is at the 50th (the sheet shows no percentile
+    for it: `has_spread`).
     """
     # Exact at the stored percentiles (the 95th first, as a row whose 5th
     # and 95th are equal has always given).
@@ -118,6 +120,20 @@ def cell_percentile_of(v5: float, v50: float, v95: float, value: float) -> float
     else:
         return math.nan
     return _STANDARD.cdf(z) * 100.0
+
+
+def has_spread(v5: float, v50: float, v95: float) -> bool:
+    """Whether a cell's values differ by percentile: a cell whose 5th, 50th
+    and 95th are equal (the shipped eyes' 2.2/2.2/2.2, a center of mass on
+    the segment's axis) has no percentile to show."""
+    return not v5 == v50 == v95
+
+
+def plausible_range(v5: float, v50: float, v95: float) -> tuple[float, float]:
+    """The values of one cell's 0.5th and 99.5th percentiles, lower first:
+    a typed value outside them is accepted with a warning naming them."""
+    ends = cell_value_at(v5, v50, v95, MIN_PERCENTILE), cell_value_at(v5, v50, v95, MAX_PERCENTILE)
+    return min(ends), max(ends)
 
 
 def grid_at(cells: Callable[[int, int], Cell], rows: int, p: float) -> tuple[Grid, Grid]:

@@ -21,6 +21,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from sass_tui.model.appendix_l import (
+    FOOT_FRACTION,
+    HEEL_BEHIND_ANKLE,
+    LOWER_LEG_FRACTION,
+    SCALED_BY_LENGTH,
+    lower_leg_center,
+    toes_implied,
+)
 from sass_tui.model.errors import SassError
 from sass_tui.model.floats import divide, median
 from sass_tui.model.names import (
@@ -109,6 +117,25 @@ class PopulationData:
 
     def has(self, gender: str) -> bool:
         return gender in self.sections
+
+
+def cmass_path(girth_path: Path) -> Path:
+    """Where `sass population` and Make Population write the center-of-mass
+    file of a girth file: NAME-cmass.dat beside it."""
+    return girth_path.with_name(f"{girth_path.stem}-cmass{girth_path.suffix or '.dat'}")
+
+
+def global_path(girth_path: Path) -> Path:
+    """Where they write the people's own stature and mass: NAME-global.dat
+    beside the girth file (read with it by `sass fig --girth`, `sass export`
+    and Input Data)."""
+    return girth_path.with_name(f"{girth_path.stem}-global{girth_path.suffix or '.dat'}")
+
+
+def read_global_beside(girth_path: str | Path) -> PopulationData | None:
+    """The stature and mass file beside a girth file, if there is one."""
+    beside = global_path(Path(girth_path))
+    return read_population_file(beside, GLOBAL) if beside.is_file() else None
 
 
 def read_population_file(path: str | Path, group: str) -> PopulationData:
@@ -357,25 +384,6 @@ def _three(values: tuple[float, ...] | list[float]) -> str:
     return "/".join(f"{v:g}" for v in values)
 
 
-# Appendix L.1: the female center of mass scaled from the male by segment length.
-# (center-of-mass row, girth rows whose z lengths add up to the segment length)
-SCALED_BY_LENGTH = {
-    "bottom_head": ("bottom_head",),
-    "neck": ("neck",),
-    "right_upper_arm": ("right_upper_arm",),
-    "left_upper_arm": ("left_upper_arm",),
-    "right_lower_arm": ("right_lower_arm",),
-    "left_lower_arm": ("left_lower_arm",),
-    "right_upper_leg": ("right_upper_leg",),
-    "left_upper_leg": ("left_upper_leg",),
-    "right_hand": ("right_hand", "right_knuckles"),
-    "left_hand": ("left_hand", "left_knuckles"),
-}
-# L.1, both genders: lower leg center of mass 0.44 lowlegz from the knee; the
-# foot's 0.44 (footx + toesx) - 0.2516 footx in front of the anklebone.
-LOWER_LEG_FRACTION = 0.44
-FOOT_FRACTION = 0.44
-HEEL_BEHIND_ANKLE = 0.2516
 # A cell is suspect when it is this far off the rule AND off its own row's
 # agreement with the rule (a whole row off by the same factor is another
 # source of lengths, e.g. appendix F's arm lengths, not a misprint).
@@ -428,30 +436,27 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
             i = com_rows[f"{side}_lower_leg"]
             actual = cmass.cell(gender, i, 2)
             leg = girth.cell(gender, girth_rows[f"{side}_lower_leg"], 2)
-            expected = [LOWER_LEG_FRACTION * leg[k] for k in range(3)]
+            expected = [lower_leg_center(leg[k]) for k in range(3)]
             for k in range(3):
                 if abs(divide(actual[k], expected[k]) - 1) > RULE_TOLERANCE:
                     out.append(
                         f"{where(cmass, gender, i, CENTER_OF_MASS, 'z')}: the {percentiles[k]} "
-                        f"value {actual[k]:g} is not appendix L.1's 0.44 x lower leg length "
+                        f"value {actual[k]:g} is not appendix L.1's {LOWER_LEG_FRACTION} x lower leg length "
                         f"({expected[k]:.1f})"
                     )
             foot_x = girth.cell(gender, girth_rows[f"{side}_foot"], 0)
             toes_row = girth_rows[f"{side}_ball_of_foot"]
             toes_x = girth.cell(gender, toes_row, 0)
             foot_com = cmass.cell(gender, com_rows[f"{side}_foot"], 0)
-            implied = [
-                (foot_com[k] + HEEL_BEHIND_ANKLE * foot_x[k]) / FOOT_FRACTION - foot_x[k]
-                for k in range(3)
-            ]
+            implied = [toes_implied(foot_com[k], foot_x[k]) for k in range(3)]
             off = [
                 k for k in range(3) if abs(divide(toes_x[k], implied[k]) - 1) > IMPLIED_TOLERANCE
             ]
             if off:
                 out.append(
                     f"{where(girth, gender, toes_row, GIRTH, 'x')}: {_three(toes_x)}, but "
-                    f"appendix L.1's foot rule, center of mass = 0.44 (foot x + toes x) - "
-                    f"0.2516 foot x, with the foot's center of mass {_three(foot_com)} "
+                    f"appendix L.1's foot rule, center of mass = {FOOT_FRACTION} (foot x + toes x) - "
+                    f"{HEEL_BEHIND_ANKLE} foot x, with the foot's center of mass {_three(foot_com)} "
                     f"({cmass.path}) and foot x {_three(foot_x)} gives "
                     f"{'/'.join(f'{v:.1f}' for v in implied)}; a misprint? "
                     "(docs/model.md, suspected misprints)"

@@ -342,13 +342,21 @@ class Session:
             lambda f: f.set_cell_percentile(group, row, axis, p),
         )
 
-    def load_group(self, group: str, data: PopulationData) -> None:
-        """Input Data for a group: undoable like any edit."""
-        self._edit_figure(
-            f"Input Data {GROUP_TITLES[group]} ({data.title or data.path})",
-            lambda f: f.load_group(group, data),
-        )
-        self.warnings = list(data.warnings)
+    def load_group(
+        self, group: str, data: PopulationData, stature_and_mass: PopulationData | None = None
+    ) -> None:
+        """Input Data for a group: undoable like any edit.  With
+        `stature_and_mass` (the people's own, `sass population` wrote them
+        beside its girth file) those are loaded in the same edit."""
+
+        def load(figure: Figure) -> None:
+            figure.load_group(group, data)
+            if stature_and_mass is not None:
+                figure.load_global(stature_and_mass)
+
+        self._edit_figure(f"Input Data {GROUP_TITLES[group]} ({data.title or data.path})", load)
+        more = stature_and_mass.warnings if stature_and_mass is not None else []
+        self.warnings = [*data.warnings, *more]
 
     def load_global(self, data: PopulationData) -> None:
         """Stature and mass statistics from a global file: undoable like any edit."""

@@ -121,15 +121,18 @@ class PopulationCommands(QueryScreenBase):
         if len(genders) == 1 and session.population.gender != genders[0]:
             session.set_gender(genders[0])  # the only gender the population has
         for group, data in event.result.groups.items():
-            if group == GLOBAL:  # a weighted population's own stature and mass
+            if group == GLOBAL:  # the people's own stature and mass
                 session.load_global(replace(data, path=str(event.paths[group])))
             else:
                 session.load_group(group, replace(data, path=str(event.paths[group])))
         files = ", ".join(
             f"{GROUP_TITLES[group].lower()} {path}" for group, path in event.paths.items()
         )
+        figure = session.population
         self.say(
             f"Population of {people_words(event.result.counts)} written ({files}) and loaded: "
+            f"Stature {figure.stature:.1f} cm and Mass {figure.mass:.1f} kg are theirs "
+            f"(percentiles {figure.stature_percentile:g} and {figure.mass_percentile:g}); "
             "Create Figure now sizes this subpopulation; joint limits and strength keep "
             "the loaded population."
         )

@@ -54,10 +54,14 @@ def parse_percentile(text: str) -> float:
 
 
 class PopulationRead(Message):
-    def __init__(self, group: str, data: PopulationData) -> None:
+    def __init__(
+        self, group: str, data: PopulationData, stature_and_mass: PopulationData | None = None
+    ) -> None:
         super().__init__()
         self.group = group
         self.data = data
+        # the people's own stature and mass beside a girth file (NAME-global.dat)
+        self.stature_and_mass = stature_and_mass
 
 
 class StrengthRead(Message):

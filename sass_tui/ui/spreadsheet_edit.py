@@ -10,8 +10,16 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
     AXES,
     GIRTH,
+    GLOBAL,
     GROUP_TITLES,
     STRENGTH,
+    row_index,
+)
+from sass_tui.model.percentile import (
+    MAX_PERCENTILE,
+    MIN_PERCENTILE,
+    has_spread,
+    plausible_range,
 )
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity
 from sass_tui.model.vocabulary import STRENGTH_PARAMETERS
@@ -96,19 +104,29 @@ class EditCommands(SheetScreenBase):
         canonical = GROUP_UNITS[group][0]
         value, percentile = state.cell(row, axis)
         shown = convert(value, canonical, state.unit)
-        if math.isnan(percentile):
-            stats = source.cell(self.figure.gender, row, axis)
-            if stats[0] == stats[1] == stats[2]:
-                flat = convert(stats[1], canonical, state.unit)
-                where = (
-                    f"no percentile: the population's 5th, 50th and 95th are all "
-                    f"{format_value(flat, state.unit)} {DISPLAY[state.unit]}"
-                )
-            else:
-                where = "no percentile: the population's statistics give none for this value"
+        stats = source.cell(self.figure.gender, row, axis)
+        if not has_spread(*stats):
+            flat = convert(stats[1], canonical, state.unit)
+            where = (
+                f"no percentile: the population's 5th, 50th and 95th are all "
+                f"{format_value(flat, state.unit)} {DISPLAY[state.unit]}"
+            )
+        elif math.isnan(percentile):
+            where = "no percentile: the population's statistics give none for this value"
         else:
             where = f"{format_percentile(percentile)} percentile"
         said = f"{name} = {format_value(shown, state.unit)} {DISPLAY[state.unit]} ({where})."
+        kind = "info"
+        if (
+            has_spread(*stats)
+            and not math.isnan(percentile)
+            and not MIN_PERCENTILE <= percentile <= MAX_PERCENTILE
+        ):
+            low, high = (convert(v, canonical, state.unit) for v in plausible_range(*stats))
+            said += " " + _outside(
+                format_value(low, state.unit), format_value(high, state.unit), DISPLAY[state.unit]
+            )
+            kind = "warning"
         # deferred: model.hanim — off the first screen (sass_tui/startup.py)
         from sass_tui.model.hanim import NOT_IN_HUMANOID
 
@@ -118,7 +136,7 @@ class EditCommands(SheetScreenBase):
                 " It goes to a .fig; the figure view and Export HAnim stand the joints "
                 "at the stature's landmarks."
             )
-        self.say(said)
+        self.message_line.show(said, kind)
 
     def edit_angle(self, row: int, column: int, initial: str = "") -> None:
         """Prompt for a joint angle of the strength page (column 0-6)."""
@@ -170,6 +188,9 @@ class EditCommands(SheetScreenBase):
                 return
         current = global_text(self.figure, self.data_group, field, self.strength_percentile)
         hint = GLOBAL_HINTS.get(field, f"percentile of every {GROUP_TITLES[self.data_group]} row")
+        stats = self.figure.global_stats
+        if field in ("mass", "stature", "mass_percentile", "stature_percentile") and stats:
+            hint += f"; of {stats.title}"  # whose stature and mass the percentiles are
         label = field.replace("_", " ").capitalize()
         self.ask(
             f"{label} ({hint}) [{current}]:", lambda text: self._edit_global(field, text), initial
@@ -212,10 +233,45 @@ class EditCommands(SheetScreenBase):
             session.set_strength_parameter(field, text)
         shown = global_text(self.figure, self.data_group, field, self.strength_percentile)
         message = f"{label} = {shown}."
+        warning = self._implausible(field) or self._without_effect(field)
         if field == "gender":
             message += " Every group reloaded for this gender."
+        elif warning:
+            message += f" {warning}"
         elif field in STRENGTH_PARAMETERS and strength is None:
             message += " It changes strength only (strength data is not loaded)."
         elif field in STRENGTH_PARAMETERS:
             message += " Strength values recomputed."
-        self.say(message)
+        self.message_line.show(message, "warning" if warning else "info")
+
+    def _implausible(self, field: str) -> str:
+        """A typed mass or stature beyond the population's 0.5th-99.5th
+        percentile: accepted, and the range said ("" when inside)."""
+        figure = self.figure
+        if field not in ("mass", "stature") or figure.global_stats is None:
+            return ""
+        if MIN_PERCENTILE <= getattr(figure, f"{field}_percentile") <= MAX_PERCENTILE:
+            return ""
+        row = row_index(GLOBAL, field)
+        low, high = plausible_range(*figure.global_stats.cell(figure.gender, row, 0))
+        return _outside(f"{low:.1f}", f"{high:.1f}", "kg" if field == "mass" else "cm")
+
+    def _without_effect(self, field: str) -> str:
+        """A strength setting that changes nothing as the figure stands: a
+        motion speed for isometric strength (a held posture has no speed;
+        model/strength.py strength_type_factor)."""
+        figure = self.figure
+        speed_ignored = figure.strength_type == "isometric" and figure.motion_speed != 0
+        if field in ("motion_speed", "strength_type") and speed_ignored:
+            return (
+                f"Motion speed {figure.motion_speed:g} deg/s has no effect on isometric "
+                "strength (it applies to isokinetic and isotonic strength)."
+            )
+        return ""
+
+
+def _outside(low: str, high: str, unit: str) -> str:
+    return (
+        f"Warning: outside the population's 0.5th-99.5th percentile range, "
+        f"{low}-{high} {unit}; accepted."
+    )

@@ -17,7 +17,7 @@ from sass_tui.model.names import (
     GROUPS,
     STRENGTH,
 )
-from sass_tui.model.popfile import read_population_file
+from sass_tui.model.popfile import read_global_beside, read_population_file
 from sass_tui.ui.spreadsheet_base import (
     AnswerError,
     PopulationRead,
@@ -111,7 +111,9 @@ class FileCommands(SheetScreenBase):
 
                 self.post_message(StrengthRead(read_strength_file(path)))
             else:
-                self.post_message(PopulationRead(group, read_population_file(path, group)))
+                data = read_population_file(path, group)
+                beside = read_global_beside(path) if group == GIRTH else None
+                self.post_message(PopulationRead(group, data, beside))
         except SassError as exc:
             self.post_message(WorkerSaid(f"{exc}; {what} unchanged.", "error"))
         except OSError as exc:
@@ -133,12 +135,23 @@ class FileCommands(SheetScreenBase):
                 f"figure; {GROUP_TITLES[group]} unchanged."
             )
             return
+        beside = event.stature_and_mass
+        if beside is not None and not beside.has(gender):
+            beside = None  # a gender the girth file has and its stature file lacks
         try:
-            self.session.load_group(group, data)
+            self.session.load_group(group, data, beside)
         except SassError as exc:
             self.complain(f"{exc}; {GROUP_TITLES[group]} unchanged.")
             return
-        self._say_loaded(GROUP_TITLES[group], data.path, data.title)
+        title, figure = data.title, self.figure
+        if beside is not None:
+            title += (
+                f"; Stature {figure.stature:.1f} cm and Mass {figure.mass:.1f} kg are the "
+                f"people's own, from {Path(beside.path).name} beside it"
+            )
+        elif group == GIRTH and figure.global_stats and figure.global_stats.title != data.title:
+            title += f"; Stature and Mass stay those of {figure.global_stats.title}"
+        self._say_loaded(GROUP_TITLES[group], data.path, title)
 
     def _say_loaded(self, what: str, path: str, title: str) -> None:
         """A file just loaded (Input Data): the screen redrawn, what was

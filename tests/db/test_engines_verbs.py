@@ -163,7 +163,7 @@ def test_population_files_are_the_same_on_both_engines(
         assert printed["postgresql"] == printed["sqlite"]
     made = {engine: files_of(folder) for engine, folder in engine_dirs.items()}
     assert made["postgresql"] == made["sqlite"]
-    assert len(made["sqlite"]) == 4 * 2 + 1  # girth and cmass each, and the target's global
+    assert len(made["sqlite"]) == 4 * 3  # girth, center of mass, stature and mass each
 
 
 def close(a: object, b: object) -> bool:

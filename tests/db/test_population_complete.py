@@ -82,8 +82,19 @@ def test_a_query_over_real_women_makes_a_complete_figure(shared_target, tmp_path
     assert data.stats("female")[head, 2] == pytest.approx(report[head, 2] * own / stature, rel=1e-4)
     cm = read_population_file(cmass, CENTER_OF_MASS).stats("female")
     cm_report = read_population_file(datasets.path("cmass.dat"), CENTER_OF_MASS).stats("female")
-    arm = row_index(CENTER_OF_MASS, "right_upper_arm")
-    assert cm[arm, 2] == pytest.approx(cm_report[arm, 2] * own / stature, rel=1e-4)
+    torso = row_index(CENTER_OF_MASS, "center_torso")
+    assert cm[torso, 2] == pytest.approx(cm_report[torso, 2] * own / stature, rel=1e-4)
+    # a segment appendix L.1 scales from the men's by length: the report's men's
+    # center of mass x the women's own upper arm length / the report's men's
+    arm, arm_length = (
+        row_index(CENTER_OF_MASS, "right_upper_arm"),
+        row_index(GIRTH, "right_upper_arm"),
+    )
+    men = read_population_file(datasets.path("cmass.dat"), CENTER_OF_MASS).stats("male")
+    men_length = read_population_file(datasets.path("girth.dat"), GIRTH).stats("male")
+    assert cm[arm, 2] == pytest.approx(
+        men[arm, 2] * data.stats("female")[arm_length, 2] / men_length[arm_length, 2], rel=1e-4
+    )
 
 
 def test_a_list_of_25_ids_makes_a_complete_figure(engine_db, shared_target, tmp_path):

@@ -175,7 +175,8 @@ def test_answers_without_target_are_unchanged(shared_target, made, tmp_path, cap
     for before, after in zip(outputs[0], outputs[1]):
         assert before == after
     assert '"target"' not in outputs[0][0] and "weighted:" not in outputs[0][0]
-    assert "X-global.dat" not in outputs[0][1]
+    # the people's own stature and mass, unweighted, beside the girth file
+    assert "X-global.dat" in outputs[0][1] and "weighted" not in outputs[0][2]
 
 
 def test_list_replace_and_drop(made, copy_database, sample, tmp_path, capsys):

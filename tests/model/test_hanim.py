@@ -133,7 +133,11 @@ def test_feet_on_the_ground_and_joints_at_the_landmarks(male50, ansur_dir):
     assert height("r_knee") == pytest.approx(fractions["femoral_epicondyle"] * stature, abs=1e-5)
     assert height("r_hip") == pytest.approx(fractions["trochanterion"] * stature, abs=1e-5)
     assert height("vl5") == pytest.approx(fractions["iliocristale"] * stature, abs=1e-5)
-    assert height("r_shoulder") == pytest.approx(fractions["acromion"] * stature - 0.04, abs=1e-5)
+    # Rab et al. (2002): 17 % of the biacromial breadth (the stature's share) below the acromion
+    breadth = script["biacromial_fractions"](ansur_dir)["male"] * stature
+    assert height("r_shoulder") == pytest.approx(
+        fractions["acromion"] * stature - 0.17 * breadth, abs=1e-5
+    )
     assert height("skullbase") == pytest.approx(fractions["tragion"] * stature, abs=1e-5)
     sites = {s.get("name"): s for s in root.iter("HAnimSite") if s.get("name")}
     vertex = _floats(sites["skull_vertex_pt"].get("translation"))[1]

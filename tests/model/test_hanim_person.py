@@ -17,6 +17,7 @@ from sass_tui.db.schema import connect
 from sass_tui.model.figfile import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.hanim import build_humanoid, landmark_heights
+from sass_tui.model.landmarks import BIACROMIAL_FRACTION
 
 FILES = {"male": "ANSUR_II_MALE_Public.csv", "female": "ANSUR_II_FEMALE_Public.csv"}
 PEOPLE = 20  # of each gender, evenly spread through the file, and F 29390
@@ -232,3 +233,31 @@ def test_a_length_set_by_hand_reaches_the_fig_as_set(people):
     assert ROWS["girth"][row_index("girth", "right_upper_leg")].name in figure.hand_set_lengths
     figure.restore(snapshot)
     assert {name: value for name, value, _ in girth_variables(figure)}["ruplegz"] == joints
+
+
+def test_one_glenohumeral_rule_for_people_and_percentile_figures(ansur_dir):
+    """A person whose biacromial breadth is that of a percentile figure's
+    stature share has the percentile figure's shoulder height: one rule (Rab
+    et al. 2002, 17 % of the acromia's distance below the acromion) for both,
+    and with no breadth measured a person takes the stature's share too."""
+    import runpy
+
+    from _paths import ROOT
+
+    script = runpy.run_path(str(ROOT / "scripts" / "hanim_landmarks.py"))
+    share = script["biacromial_fractions"](ansur_dir)
+    assert share == BIACROMIAL_FRACTION  # the model's constant is the CSV's mean
+    for gender in ("male", "female"):
+        stature = 1.70
+        figure = landmark_heights(gender, stature)
+        acromion_cm = figure["acromion"] * 100
+        own = {"acromialheight": acromion_cm, "biacromialbreadth": share[gender] * stature * 100}
+        person = landmark_heights(gender, stature, own)
+        assert person["shoulder"] == pytest.approx(figure["shoulder"], abs=1e-9)
+        assert figure["acromion"] - figure["shoulder"] == pytest.approx(
+            0.17 * share[gender] * stature, abs=1e-9
+        )
+        unmeasured = landmark_heights(gender, stature, {"acromialheight": acromion_cm + 2})
+        assert unmeasured["acromion"] - unmeasured["shoulder"] == pytest.approx(
+            0.17 * share[gender] * stature, abs=1e-9
+        )

@@ -9,7 +9,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.model.names import GIRTH
-from sass_tui.model.percentile import Z95, PercentileError, percentile_of, value_at
+from sass_tui.model.percentile import (
+    Z95,
+    PercentileError,
+    has_spread,
+    percentile_of,
+    plausible_range,
+    value_at,
+)
 from sass_tui.model.popfile import read_population_file
 
 percentiles = st.floats(min_value=0.5, max_value=99.5, allow_nan=False)
@@ -69,3 +76,15 @@ def test_round_trip(v50, below, above, p, decreasing):
     sign = -1.0 if decreasing else 1.0
     stats = np.array([v50 - sign * below, v50, v50 + sign * above])
     assert float(percentile_of(stats, value_at(stats, p))) == pytest.approx(p, abs=1e-6)
+
+
+@settings(max_examples=100, deadline=None)
+@given(v50=values, below=spreads, above=spreads, decreasing=st.booleans())
+def test_the_plausible_range_is_the_05th_to_995th_percentile(v50, below, above, decreasing):
+    sign = -1.0 if decreasing else 1.0
+    stats = (v50 - sign * below, v50, v50 + sign * above)
+    low, high = plausible_range(*stats)
+    ends = sorted(float(value_at(np.array(stats), p)) for p in (0.5, 99.5))
+    assert (low, high) == pytest.approx(ends)
+    assert has_spread(*stats) == (below > 0 or above > 0)
+    assert not has_spread(2.2, 2.2, 2.2)

@@ -20,9 +20,9 @@ from sass_tui.model.prediction import (
     PredictionError,
     Predictor,
     UnknownFieldError,
-    Z,
     split_known,
 )
+from sass_tui.model.student_t import t_quantile
 
 
 @pytest.fixture(scope="session")
@@ -87,7 +87,8 @@ def test_the_prediction_is_least_squares_with_its_prediction_interval(values, pr
         residual = y - x @ b
         floor = 1e-8 * y.var(ddof=1)  # the model's floor, in this value's unit
         g, *_ = np.linalg.lstsq(design, np.log(residual**2 + floor), rcond=None)
-        spread = Z * math.sqrt(np.mean(residual**2 / np.exp(design @ g)))
+        quantile = t_quantile(0.95, n - k - 1)
+        spread = quantile * math.sqrt(np.mean(residual**2 / np.exp(design @ g)))
         leverage = 1.0 + x0 @ np.linalg.inv(x.T @ x) @ x0
         half = math.exp(design0 @ g / 2) * spread * math.sqrt(leverage * (n - 1) / (n - k - 1))
         estimate = prediction.values[target]

@@ -3,6 +3,8 @@ value and percentile for x, y and z, a page at a time."""
 
 from __future__ import annotations
 
+import math
+
 from rich.style import Style
 from rich.text import Text
 from textual import events
@@ -13,6 +15,7 @@ from textual.widget import Widget
 
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import AXES, GROUP_TITLES
+from sass_tui.model.percentile import has_spread
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert
 from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 from sass_tui.ui.widgets.formats import (
@@ -175,6 +178,8 @@ class DataSheet(EditorKeys, Widget, can_focus=True):
                     text = f"{shown:>{value_w - 1}} "
                     style = ""
                 else:
+                    if not has_spread(*state.cell_stats(figure.gender, index, column // 2)):
+                        percentile = math.nan  # no spread: every percentile is this value
                     text = f"{format_cell_percentile(value, percentile):>{pct_w - 1}} "
                     style = pct_style
                 if index == self.cursor_row and column == self.cursor_column:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+from sass_tui.model.percentile import MAX_PERCENTILE, MIN_PERCENTILE
 from sass_tui.model.text import printable
 
 DECIMALS = {"cm": 2, "in": 2, "deg": 1, "rad": 3}
@@ -18,8 +19,14 @@ def format_value(value: float, unit: str) -> str:
 
 
 def format_percentile(p: float) -> str:
+    """One decimal; beyond the 0.5th-99.5th percentile model's range (a real
+    person, a typed value) `>99.5` or `<0.5`, never a rounded `100.0`."""
     if p is None or math.isnan(p):
         return ""
+    if p > MAX_PERCENTILE:
+        return f">{MAX_PERCENTILE:g}"
+    if p < MIN_PERCENTILE:
+        return f"<{MIN_PERCENTILE:g}"
     return f"{p:.1f}"
 
 
