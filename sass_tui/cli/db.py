@@ -8,6 +8,14 @@ from pathlib import Path
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
 from sass_tui.cli.progress import progress_for
+from sass_tui.db import accelerator
+from sass_tui.db.addresses import is_url
+from sass_tui.db.database import Database, configured_target, init_postgres
+from sass_tui.db.default import create_default_database, people_count
+from sass_tui.db.flatfile import FlatFileError, FlatFiles
+from sass_tui.db.postgres import shown
+from sass_tui.db.schema import DatabaseError, connect, default_db_path
+from sass_tui.model.text import printable
 
 
 def register(commands: SubParsers) -> None:
@@ -72,12 +80,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run_init(args: argparse.Namespace) -> int:
-    # deferred: db.addresses, db.database, db.default, db.schema — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.addresses import is_url
-    from sass_tui.db.database import configured_target
-    from sass_tui.db.default import create_default_database, people_count
-    from sass_tui.db.schema import DatabaseError, connect, default_db_path
-
     target = configured_target(getattr(args, "db", None))
     if is_url(target):
         return _init_postgres(str(target), args.force)
@@ -110,8 +112,6 @@ def run_init(args: argparse.Namespace) -> int:
     # The old column copy follows another history: never read again, only
     # taking disk space.  None is built: the default people are fewer than
     # the copy's threshold (accelerator.MIN_PEOPLE), counted by SQLite.
-    # deferred: db.accelerator — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db import accelerator
 
     accelerator.forget(path.resolve())
     print(
@@ -124,11 +124,6 @@ def run_init(args: argparse.Namespace) -> int:
 def _init_postgres(url: str, force: bool) -> int:
     """`sass db init --db postgresql://...`: the schema and the default people,
     in one transaction; asks (or needs --force) before replacing people."""
-    # deferred: db.database, db.postgres, db.schema — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.database import Database, init_postgres
-    from sass_tui.db.postgres import shown
-    from sass_tui.db.schema import DatabaseError
-
     if not force:
         db = Database.open(url, create=True)
         try:
@@ -169,9 +164,6 @@ def _has_person_table(conn) -> bool:  # sqlite3.Connection
 
 
 def run_import_flat(args: argparse.Namespace) -> int:
-    # deferred: db.flatfile — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.flatfile import FlatFileError, FlatFiles
-
     if len(args.strength) > 4:
         raise FlatFileError("at most four strength files: strgh-par, shoulder, elbow, wrist")
     strength = dict(zip(("strength_par", "shoulder", "elbow", "wrist"), args.strength))
@@ -199,10 +191,7 @@ def run_import_ansur(args: argparse.Namespace) -> int:
 
 def run_copy(args: argparse.Namespace) -> int:
     # deferred: db.accelerator, db.query, db.schema, model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db import accelerator
     from sass_tui.db.query import QueryError, compile_query
-    from sass_tui.db.schema import DatabaseError
-    from sass_tui.model.text import printable
 
     wanted: set[tuple[str, str]] = set()
     for text in args.queries:  # before opening: a bad query touches nothing

@@ -6,6 +6,11 @@ import argparse
 import sys
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.db.fit import load_family
+from sass_tui.db.query import QueryError, compile_query
+from sass_tui.db.targets import load_target
+from sass_tui.model.accommodation import measure_field, write_family
+from sass_tui.model.figure import Figure
 from sass_tui.model.vocabulary import GENDERS
 
 DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.fit.DEFAULT_POPULATION (no import here)
@@ -73,12 +78,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: db.fit, db.query, model.accommodation, model.figure — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.fit import load_family
-    from sass_tui.db.query import QueryError, compile_query
-    from sass_tui.model.accommodation import measure_field, write_family
-    from sass_tui.model.figure import Figure
-
     for name in args.measures:
         measure_field(name)  # a typo is reported before the database is opened
     try:
@@ -90,9 +89,6 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     weighted_to = None
     if args.target is not None:
-        # deferred: db.targets — off sass --help, sass family, sass --version (sass_tui/startup.py)
-        from sass_tui.db.targets import load_target
-
         weighted_to = load_target(conn, args.target)
     family = load_family(
         conn,

@@ -11,7 +11,14 @@ from sass_tui.cli.options import (
     person_file_name,
     print_warnings,
 )
+from sass_tui.model.figfile import default_fig_name, write_fig
 from sass_tui.model.names import GIRTH
+from sass_tui.model.strength import (
+    StrengthSheet,
+    fig_section,
+    lower_limb_fig_section,
+    read_strength_file,
+)
 
 
 def register(commands: SubParsers) -> None:
@@ -34,20 +41,9 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: model.figfile — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.figfile import default_fig_name, write_fig
-
     figure, warnings = figure_from_args(args)
     extra_sections = []
     if not args.no_strength:
-        # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
-        from sass_tui.model.strength import (
-            StrengthSheet,
-            fig_section,
-            lower_limb_fig_section,
-            read_strength_file,
-        )
-
         strength = read_strength_file(args.strength)
         warnings += strength.warnings
         extra_sections.append(fig_section(StrengthSheet(strength, figure)))

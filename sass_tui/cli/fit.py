@@ -8,6 +8,10 @@ import sys
 from typing import TYPE_CHECKING
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.db.fit import check_mix, fit_test
+from sass_tui.db.fit_table import format_table
+from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
+from sass_tui.db.targets import load_target
 from sass_tui.model.published_strength import parse_strength_limit
 from sass_tui.model.vocabulary import GENDERS
 
@@ -84,10 +88,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: db.fit, db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.fit import check_mix, fit_test
-    from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
-
     # Check everything before opening the database: a bad query touches nothing.
     compile_conjuncts(args.limits)
     try:
@@ -101,9 +101,6 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     target = None
     if args.target is not None:
-        # deferred: db.targets — off sass --help, sass fit, sass --version (sass_tui/startup.py)
-        from sass_tui.db.targets import load_target
-
         target = load_target(conn, args.target)
     result = fit_test(
         conn,
@@ -118,8 +115,5 @@ def run(args: argparse.Namespace) -> int:
         json.dump(result.to_json(), sys.stdout, indent=1, allow_nan=False)
         sys.stdout.write("\n")
     else:
-        # deferred: db.fit_table — off sass --help, sass --version (sass_tui/startup.py)
-        from sass_tui.db.fit_table import format_table
-
         sys.stdout.write(format_table(result))
     return 0

@@ -6,6 +6,9 @@ import argparse
 import sys
 from typing import TYPE_CHECKING, TypeAlias
 
+from sass_tui.cli.progress import progress_for
+from sass_tui.model.paths import user_path
+from sass_tui.model.text import printable
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS
 
 if TYPE_CHECKING:
@@ -28,15 +31,11 @@ def add_db_option(parser: argparse.ArgumentParser) -> None:
 def open_database(args: argparse.Namespace, create: bool = False):  # -> db.database.Database
     """The Database `--db` (or $SASS_DB) names, or the default file (built on
     first use, with a progress bar on a terminal)."""
-    # deferred: cli.progress — off sass fig, sass strength, sass export hanim … (sass_tui/startup.py)
-    from sass_tui.cli.progress import progress_for
-
-    # deferred: db.addresses, db.database, db.default, db.schema, model.paths — off sass serve (sass_tui/startup.py)
+    # deferred: db.addresses, db.database, db.default, db.schema — off sass fig, sass strength, sass serve … (sass_tui/startup.py)
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import Database, configured_target
     from sass_tui.db.default import needs_building
     from sass_tui.db.schema import default_db_path
-    from sass_tui.model.paths import user_path
 
     target = configured_target(getattr(args, "db", None))
     bar = None
@@ -138,7 +137,7 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
 def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     """Build the figure the options describe, through a Session as the TUI
     does (each edit checked the same way); returns it and the load warnings."""
-    # deferred: model.figure, model.names, model.popfile, model.session, model.units — off sass serve (sass_tui/startup.py)
+    # deferred: model.figure, model.names, model.popfile, model.session, model.units — off sass query (sass_tui/startup.py)
     from sass_tui.model.figure import Figure, FigureError
     from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
     from sass_tui.model.popfile import read_population_file
@@ -216,8 +215,5 @@ def person_file_name(name: str, suffix: str) -> str:
 
 
 def print_warnings(warnings: list[str]) -> None:
-    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.text import printable
-
     for warning in warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)

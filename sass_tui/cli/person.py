@@ -10,6 +10,9 @@ import json
 import sys
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
+from sass_tui.db.scope import DEMONSTRATION_SOURCE
+from sass_tui.model.measures import MEASURE_UNITS
+from sass_tui.model.text import printable
 
 
 def register(commands: SubParsers) -> None:
@@ -48,11 +51,6 @@ def _num(value: object) -> str:
 
 
 def _table(record: dict, out) -> None:  # out: TextIO
-    # deferred: db.scope, model.measures, model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.scope import DEMONSTRATION_SOURCE
-    from sass_tui.model.measures import MEASURE_UNITS
-    from sass_tui.model.text import printable
-
     values: dict[str, object] = record["values"]
     source = str(record["source"])
     demonstration = (

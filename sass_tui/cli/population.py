@@ -17,6 +17,15 @@ import sys
 from pathlib import Path
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.db.population import (
+    missing_ids,
+    parse_id_list,
+    people_words,
+    population_of,
+)
+from sass_tui.db.population_files import write_population_files
+from sass_tui.db.query import compile_query
+from sass_tui.db.targets import load_target
 from sass_tui.model.names import GROUP_TITLES
 from sass_tui.model.paths import regular_file
 
@@ -50,15 +59,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: db.population, db.population_files, db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.population import (
-        missing_ids,
-        people_words,
-        population_of,
-    )
-    from sass_tui.db.population_files import write_population_files
-    from sass_tui.db.query import compile_query
-
     if args.query is None and args.ids is None and args.target is None:
         print(
             "sass population: error: give --query QUERY, --ids FILE or both (or --target NAME)",
@@ -73,9 +73,6 @@ def run(args: argparse.Namespace) -> int:
         absent = missing_ids(conn, ids) if ids is not None else []
         target = None
         if args.target is not None:
-            # deferred: db.targets — off sass --help, sass population, sass --version (sass_tui/startup.py)
-            from sass_tui.db.targets import load_target
-
             target = load_target(conn, args.target)
         result = population_of(
             conn,
@@ -106,9 +103,6 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _read_ids(name: str) -> list[int]:
-    # deferred: db.population — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.population import parse_id_list
-
     if name == "-":
         return parse_id_list(sys.stdin.read(), "standard input")
     path = regular_file(name)  # not a FIFO, which would block the read

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import csv
 import sys
 from collections.abc import Iterable
 from itertools import islice
@@ -10,6 +11,8 @@ from operator import itemgetter
 from typing import TextIO
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
+from sass_tui.db.query import PERSON_FIELDS, QueryError, compile_query, demonstration_hint
+from sass_tui.model.text import is_printable, is_printable_lines, printable
 
 
 def register(commands: SubParsers) -> None:
@@ -34,9 +37,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import compile_query
-
     compiled = compile_query(args.query)  # before opening: a bad query touches nothing
     db = open_database(args)
     with db.connection() as conn:  # engine errors (a server gone mid-listing) as messages
@@ -45,9 +45,6 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Query
-    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import PERSON_FIELDS
-
     if args.count:
         if args.target is not None:
             _weighted_count(conn, args.query, args.target)
@@ -65,12 +62,6 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
     rows = query.person_rows()  # tuples in PERSON_FIELDS order
     out = sys.stdout
     if args.format == "csv":
-        # deferred: csv — off sass query, sass query --count (sass_tui/startup.py)
-        import csv
-
-        # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
-        from sass_tui.model.text import is_printable, printable
-
         # Names and sources come from files and the CSV may go to a terminal: a
         # control character is written escaped.  One check over a chunk's names
         # and sources joined; only when it fails is each text made printable.
@@ -116,9 +107,6 @@ def _weighted_count(conn, query: str, name: str) -> None:
 
 def _say_who_else(conn, text: str) -> None:  # conn: sqlite3.Connection
     """A query that found no real person: the demonstration people it would find."""
-    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import demonstration_hint
-
     hint = demonstration_hint(conn, text)
     if hint:
         print(hint, file=sys.stderr)
@@ -149,9 +137,6 @@ def _table_lines(rows: list[tuple]) -> str:
     stored, with one format per row, and checked once; only a chunk that holds
     a control character, a missing value or a value of another type is made
     again with every text through printable() (docs/performance.md)."""
-    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.text import is_printable_lines, printable
-
     if not any(None in row for row in rows):
         try:
             text = "".join([_LINE % row for row in rows])
@@ -191,9 +176,6 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
     import math
     from json.encoder import encode_basestring_ascii as quote
 
-    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import PERSON_FIELDS
-
     try:
         finite = all(math.isfinite(sum(map(itemgetter(k), rows))) for k in (3, 4, 6))
         lines = (
@@ -220,10 +202,6 @@ def _finite(person: dict) -> dict:
     """The person for JSON, which has no Infinity or NaN: refuse one stored so."""
     # deferred: math — only --format json writes JSON; off sass query (sass_tui/startup.py)
     import math
-
-    # deferred: db.query, model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import QueryError
-    from sass_tui.model.text import printable
 
     for key, value in person.items():
         if isinstance(value, float) and not math.isfinite(value):

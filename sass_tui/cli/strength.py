@@ -20,6 +20,7 @@ import argparse
 import json
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS
 from sass_tui.model.published_grip import (
     CITATION as GRIP_CITATION,
@@ -47,6 +48,18 @@ from sass_tui.model.published_strength import (
     ordinal,
     text_plot,
 )
+from sass_tui.model.strength import (
+    EXTRAPOLATION_MARGIN_DEG,
+    StrengthError,
+    StrengthSheet,
+    check_angle,
+    joint_limit_range,
+    motion_index,
+    parse_joint_axis,
+    parse_side_factor,
+    read_strength_file,
+)
+from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
 from sass_tui.model.vocabulary import (
     GENDERS,
     HANDEDNESS,
@@ -153,9 +166,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.strength import StrengthError
-
     motion = lower_limb_motion(args.motion)
     grip = grip_motion(args.motion)
     if args.strength_data is not None:
@@ -237,10 +247,6 @@ def _take_person(args: argparse.Namespace) -> None:
 
 def _figure(args: argparse.Namespace):  # -> Figure
     """The figure whose mass, stature and joint limits the answer uses."""
-    # deferred: model.figure, model.units — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.units import parse_quantity
-
     figure = Figure.default(args.gender)
     figure.set_group_percentile(JOINT_LIMITS, args.joint_limit_percentile)
     if args.mass is not None:
@@ -251,9 +257,6 @@ def _figure(args: argparse.Namespace):  # -> Figure
 
 
 def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
-    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.strength import StrengthError
-
     out = []
     for item in args.angles:
         axis, sep, value = item.partition("=")
@@ -265,10 +268,6 @@ def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
 
 def _published(args: argparse.Namespace, motion: str | None) -> int:
     """A hip, knee or ankle motion from Anderson et al. 2007."""
-    # deferred: model.strength, model.units — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.strength import check_angle, joint_limit_range
-    from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
-
     if motion is None:
         raise PublishedStrengthError(
             f"{args.motion.strip()!r}: {CITATION} covers {', '.join(LOWER_LIMB_MOTIONS)}"
@@ -358,17 +357,6 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
 
 def _example(args: argparse.Namespace) -> int:
     """An arm motion from the example strength file (or --file)."""
-    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.strength import (
-        EXTRAPOLATION_MARGIN_DEG,
-        StrengthError,
-        StrengthSheet,
-        motion_index,
-        parse_joint_axis,
-        parse_side_factor,
-        read_strength_file,
-    )
-
     data = read_strength_file(args.file)
     figure = _figure(args)
     for name in STRENGTH_PARAMETERS:
@@ -434,9 +422,6 @@ def _example(args: argparse.Namespace) -> int:
 
 def _grip(args: argparse.Namespace, motion: str | None) -> int:
     """A hand or thumb-finger grip force from FAA HFDS 2003 exhibit 14.5.2.1."""
-    # deferred: model.units — only a grip's answer converts here; the lookups convert in model.strength
-    from sass_tui.model.units import DISPLAY, convert, unit_name
-
     if motion is None:
         raise PublishedStrengthError(
             f"{args.motion.strip()!r}: {GRIP_CITATION} as shipped covers {', '.join(GRIP_MOTIONS)} "

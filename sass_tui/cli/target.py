@@ -15,8 +15,19 @@ import sys
 from typing import TYPE_CHECKING, TextIO
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.db.query import QueryError, compile_query
+from sass_tui.db.targets import (
+    TargetExistsError,
+    check_name,
+    drop_target,
+    list_targets,
+    make_target,
+    store_target,
+    target_exists,
+)
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
+from sass_tui.model.target_sample import SampleError, is_weighting_field, read_sample
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -79,9 +90,6 @@ def run(args: argparse.Namespace) -> int:
             if args.list:
                 _list(conn, sys.stdout)
             else:
-                # deferred: db.targets — off sass --help, sass --version (sass_tui/startup.py)
-                from sass_tui.db.targets import drop_target
-
                 drop_target(conn, args.drop)
                 print(f"dropped target {args.drop}")
         finally:
@@ -98,7 +106,6 @@ def by_fields(text: str) -> list[str]:
     """`--by stature,mass,sittingheight` -> query-language fields."""
     # deferred: model.accommodation, model.target_sample — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.model.accommodation import measure_field
-    from sass_tui.model.target_sample import is_weighting_field
 
     fields: list[str] = []
     for name in (n.strip() for n in text.split(",")):
@@ -123,11 +130,6 @@ def by_fields(text: str) -> list[str]:
 
 
 def _make(args: argparse.Namespace) -> int:
-    # deferred: db.query, db.targets, model.target_sample — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import QueryError, compile_query
-    from sass_tui.db.targets import check_name, make_target, store_target, target_exists
-    from sass_tui.model.target_sample import SampleError, read_sample
-
     # Everything that needs no database first: a bad input touches nothing.
     check_name(args.name)
     fields = by_fields(args.by)
@@ -159,9 +161,6 @@ def _make(args: argparse.Namespace) -> int:
 
 
 def _replace(name: str) -> bool:
-    # deferred: db.targets — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.targets import TargetExistsError
-
     if not (sys.stdin.isatty() and sys.stderr.isatty()):
         raise TargetExistsError(f"a target named {name!r} exists; give --force to replace it")
     sys.stderr.write(f"a target named {name!r} exists; replace it? [y/N] ")
@@ -197,9 +196,6 @@ def _report(target: Target, weighting: Weighting, incomplete: int, out: TextIO) 
 
 
 def _list(conn, out: TextIO) -> None:  # conn: the database layer's connection
-    # deferred: db.targets — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.targets import list_targets
-
     targets = list_targets(conn)
     if not targets:
         out.write("no targets (make one with `sass target NAME --gender G --sample FILE.csv`)\n")

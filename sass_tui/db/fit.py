@@ -36,10 +36,13 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.db.dialect import dialect_of, ids_in
+from sass_tui.db.predict import open_predictor
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import QueryError, compile_conjuncts, compile_query, parser, real_people_only
+from sass_tui.db.values import load_values, numeric_field
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
+from sass_tui.model.targets import kish_effective_n
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -266,9 +269,6 @@ def fit_test(
 def _target_share(
     target: TargetWeights, ids: npt.NDArray[np.int64], passes: npt.NDArray[np.float64]
 ) -> TargetShare:
-    # deferred: model.targets — off sass fit, sass family (sass_tui/startup.py)
-    from sass_tui.model.targets import kish_effective_n
-
     w = target.of(ids)
     measured = ~np.isnan(passes).any(axis=1)
     fits = measured & (passes == 1.0).all(axis=1)
@@ -404,10 +404,6 @@ def load_family(
     `progress(steps done, 3)`: the people read, the model, the family built;
     `cancel` stops it with Cancelled between them (it writes nothing).
     `weighted_to` (a target population of `gender`): the target's people, weighted."""
-    # deferred: db.predict, db.values — off sass fit (sass_tui/startup.py)
-    from sass_tui.db.predict import open_predictor
-    from sass_tui.db.values import load_values
-
     if gender not in GENDERS:
         raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
     fields = [measure_field(m) for m in measures]
@@ -433,9 +429,6 @@ def load_family(
         gender, fields, values.ids, values.names, values.matrix, target, model, kind, weights
     )
     if weighted_to is not None and weights is not None:
-        # deferred: model.targets — off sass fit, sass family (sass_tui/startup.py)
-        from sass_tui.model.targets import kish_effective_n
-
         used = ~np.isnan(values.matrix).any(axis=1)
         family = replace(
             family,
@@ -475,9 +468,6 @@ class LimitHistogram:
 def limit_lines(limits: str) -> tuple[LimitLine, ...]:
     """The comparisons of `limits` on numeric fields, in the order written
     (word and text fields, e.g. gender or branch, have no place on an axis)."""
-    # deferred: db.values — off sass fit (sass_tui/startup.py)
-    from sass_tui.db.values import numeric_field
-
     compile_query(limits)
     out: list[LimitLine] = []
     for node in parser().parse(limits).iter_subtrees_topdown():
@@ -505,9 +495,6 @@ def limit_histograms(
     """One histogram per limited numeric field (in the order the limits name
     them) of the people `population` selects, with each limit's value inside
     the binned range so that it can be drawn on it."""
-    # deferred: db.values — off sass fit (sass_tui/startup.py)
-    from sass_tui.db.values import load_values
-
     lines = limit_lines(limits)
     fields = list(dict.fromkeys(line.field for line in lines))
     if not fields:

@@ -31,12 +31,20 @@ from functools import wraps
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ParamSpec, TypeVar
 
+from sass_tui.db import accelerator
+from sass_tui.db.addresses import is_url
+from sass_tui.db.ansur import import_ansur
 from sass_tui.db.database import engine_errors
 from sass_tui.db.dialect import dialect_of, mark_of
+from sass_tui.db.fit import fit_test, limit_histograms
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
+from sass_tui.db.individual import fetch_individual
+from sass_tui.db.population import population_of
+from sass_tui.db.postgres import connect_postgres, import_staged
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import LIST_FIELDS, compile_query, demonstration_hint
 from sass_tui.db.schema import DatabaseError, connect, transaction
+from sass_tui.db.targets import list_targets, load_target, weighted_count
 from sass_tui.model.errors import SassError
 
 if TYPE_CHECKING:
@@ -155,13 +163,7 @@ class QueryLists:
         it names (`postgresql://...`).  `read_only`: any change to the database
         is refused (SQLite's read-only mode; PostgreSQL's read-only session,
         also when $SASS_READ_ONLY says so: db/postgres.py)."""
-        # deferred: db.addresses — only open() needs it; importing db.lists does not load it
-        from sass_tui.db.addresses import is_url
-
         if is_url(target):
-            # deferred: db.postgres — only open() needs it; importing db.lists does not load it
-            from sass_tui.db.postgres import connect_postgres
-
             return cls(
                 connect_postgres(
                     str(target),
@@ -214,9 +216,6 @@ class QueryLists:
         about RUN_CHUNK people: `progress(people searched, people in the
         database)` after each, and `cancel` stops it with Cancelled (between
         ranges or inside one), the lists as they were."""
-        # deferred: db.accelerator — numpy only on a large database
-        from sass_tui.db import accelerator
-
         compiled = compile_query(text)
         where, params = compiled.sql(self.dialect)
         sql = (
@@ -343,9 +342,6 @@ class QueryLists:
     ) -> int:
         """Load flat files (one transaction: a failure or a cancel stores nothing)."""
         if self.dialect == "postgresql":
-            # deferred: db.postgres — only import_files() needs it; importing db.lists does not load it
-            from sass_tui.db.postgres import import_staged
-
             return import_staged(
                 self._conn,
                 lambda staging: import_flat_files(staging, files, progress, cancel),
@@ -363,16 +359,11 @@ class QueryLists:
     ) -> int:
         """Load an ANSUR II format file under the source `label` (one
         transaction: a failure or a cancel stores nothing); returns how many."""
-        # deferred: db.ansur — only import_ansur() needs it; importing db.lists does not load it
-        from sass_tui.db.ansur import import_ansur
 
         def load(conn: sqlite3.Connection) -> int:
             return sum(import_ansur(conn, [path], progress, label=label, cancel=cancel).values())
 
         if self.dialect == "postgresql":
-            # deferred: db.postgres — only import_ansur() needs it; importing db.lists does not load it
-            from sass_tui.db.postgres import import_staged
-
             return import_staged(self._conn, load, cancel=cancel)
         return load(self._conn)
 
@@ -397,17 +388,11 @@ class QueryLists:
     @_serialised
     def fetch_person(self, id_num: int) -> Individual:
         """The person `id_num` (e.g. a row of the query list), read whole."""
-        # deferred: db.individual — only fetch_person() needs it; importing db.lists does not load it
-        from sass_tui.db.individual import fetch_individual
-
         return fetch_individual(self._conn, id_num)
 
     @_serialised
     def fetch_selected(self, index: int) -> Individual:
         """Person `index` (0-based) of the selected list, read whole."""
-        # deferred: db.individual — only fetch_selected() needs it; importing db.lists does not load it
-        from sass_tui.db.individual import fetch_individual
-
         id_num = self.selected_id(index)
         if id_num is None:
             raise DatabaseError(f"there is no person {index + 1} in the selected list")
@@ -424,9 +409,6 @@ class QueryLists:
     ) -> tuple[FitResult, tuple[LimitHistogram, ...]]:
         """The fit test of `limits` over `population` and its histograms
         (db/fit.py); with a `target`'s name, weighted to it too (db/targets.py)."""
-        # deferred: db.fit — only fit_test() needs it; importing db.lists does not load it
-        from sass_tui.db.fit import fit_test, limit_histograms
-
         weights = self._target(target)
         result = fit_test(
             self._conn, limits, population, progress=progress, cancel=cancel, target=weights
@@ -444,9 +426,6 @@ class QueryLists:
     ) -> SelectionPopulation:
         """The population file of these people (db/population.py); with a
         `target`'s name, their weighted percentiles (db/targets.py)."""
-        # deferred: db.population — only population_of() needs it; importing db.lists does not load it
-        from sass_tui.db.population import population_of
-
         return population_of(
             self._conn,
             ids=ids,
@@ -458,25 +437,16 @@ class QueryLists:
 
     # --- target populations and the real-people scope ----------------------
     def _target(self, name: str | None) -> TargetWeights | None:
-        # deferred: db.targets — only _target() needs it; importing db.lists does not load it
-        from sass_tui.db.targets import load_target
-
         return None if not name else load_target(self._conn, name)
 
     @_serialised
     def target_names(self) -> list[str]:
         """The names of the target populations stored (`sass target`)."""
-        # deferred: db.targets — only target_names() needs it; importing db.lists does not load it
-        from sass_tui.db.targets import list_targets
-
         return [t.name for t in list_targets(self._conn)]
 
     @_serialised
     def weighted_count(self, query: str, target: str) -> WeightedCount:
         """The query's people weighted to the target `target` (db/targets.py)."""
-        # deferred: db.targets — only weighted_count() needs it; importing db.lists does not load it
-        from sass_tui.db.targets import load_target, weighted_count
-
         return weighted_count(self._conn, query, load_target(self._conn, target))
 
     @_serialised

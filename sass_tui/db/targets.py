@@ -26,6 +26,7 @@ import numpy.typing as npt
 
 from sass_tui.db.dialect import mark_of, writing
 from sass_tui.db.query import compile_query, run_query
+from sass_tui.db.values import load_values
 from sass_tui.model.target_sample import Sample
 from sass_tui.model.targets import TargetError, Weighting, calibrate
 from sass_tui.model.text import printable
@@ -123,9 +124,6 @@ def make_target(
     population: str = DEFAULT_POPULATION,
 ) -> tuple[Target, TargetWeights, Weighting]:
     """Compute a target (nothing stored: `store_target` stores it)."""
-    # deferred: db.values — off sass target (sass_tui/startup.py)
-    from sass_tui.db.values import load_values
-
     check_name(name)
     if gender not in GENDERS:
         raise TargetError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
