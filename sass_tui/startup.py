@@ -80,8 +80,9 @@ PATHS: tuple[StartupPath, ...] = (
         ("--help",),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "sqlite3", "platformdirs",
          "pickle", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
-        "every verb's module is imported to list it: each imports at its top only what"
-        " its parser needs",
+        "the verbs are listed from the light table in sass_tui/cli/__init__.py: no verb's"
+        " module is imported (each imports what it needs at its top;"
+        " tests/cli/test_verbs.py)",
     ),
     StartupPath(
         "sass --version",

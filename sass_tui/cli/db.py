@@ -35,10 +35,10 @@ def register(commands: SubParsers) -> None:
     init.set_defaults(func=run_init)
     flat = actions.add_parser("import-flat", help="import legacy flat files (report figure 12)")
     add_db_option(flat)
-    flat.add_argument("--person", required=True, metavar="F")
-    flat.add_argument("--girth", required=True, metavar="F")
-    flat.add_argument("--jntlmt", required=True, metavar="F")
-    flat.add_argument("--cmass", required=True, metavar="F")
+    flat.add_argument("--person", required=True, metavar="F", help="the person flat file")
+    flat.add_argument("--girth", required=True, metavar="F", help="the girth flat file")
+    flat.add_argument("--jntlmt", required=True, metavar="F", help="the joint-limit flat file")
+    flat.add_argument("--cmass", required=True, metavar="F", help="the center-of-mass flat file")
     flat.add_argument(
         "strength",
         nargs="*",

@@ -45,7 +45,9 @@ def register(commands: SubParsers) -> None:
         "of the real people the family covers.",
     )
     add_db_option(family)
-    family.add_argument("--gender", choices=GENDERS, required=True)
+    family.add_argument(
+        "--gender", choices=GENDERS, required=True, help="the gender of the people covered"
+    )
     family.add_argument(
         "--measures",
         type=measures_argument,
@@ -60,7 +62,13 @@ def register(commands: SubParsers) -> None:
         metavar="PERCENT",
         help="target coverage in percent (default 90)",
     )
-    family.add_argument("--kind", choices=("boundary", "distributed"), default="boundary")
+    family.add_argument(
+        "--kind",
+        choices=("boundary", "distributed"),
+        default="boundary",
+        help="figures on the ellipsoid's surface, or also on an inner shell at half its "
+        "radius (default boundary)",
+    )
     family.add_argument(
         "--population",
         metavar="QUERY",

@@ -68,7 +68,9 @@ def register(commands: SubParsers) -> None:
         help="test the people of a target population (sass target), weighted; "
         "the unweighted figures beside",
     )
-    fit.add_argument("--format", choices=("table", "json"), default="table")
+    fit.add_argument(
+        "--format", choices=("table", "json"), default="table", help="output format (default table)"
+    )
     fit.add_argument(
         "--strength",
         action="append",

@@ -113,16 +113,39 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
         default=50.0,
         help="percentile of every group, mass and stature (default 50)",
     )
-    parser.add_argument("--girth-percentile", type=percentile)
-    parser.add_argument("--joint-limit-percentile", type=percentile)
-    parser.add_argument("--cmass-percentile", type=percentile)
+    parser.add_argument(
+        "--girth-percentile",
+        type=percentile,
+        help="percentile of the girth group (default --percentile)",
+    )
+    parser.add_argument(
+        "--joint-limit-percentile",
+        type=percentile,
+        help="percentile of the joint-limit group (default --percentile)",
+    )
+    parser.add_argument(
+        "--cmass-percentile",
+        type=percentile,
+        help="percentile of the center-of-mass group (default --percentile)",
+    )
     mass = parser.add_mutually_exclusive_group()
     mass.add_argument("--mass", help="total mass, e.g. 80 or '176 lb' (kg if no unit)")
-    mass.add_argument("--mass-percentile", type=percentile)
+    mass.add_argument(
+        "--mass-percentile",
+        type=percentile,
+        help="percentile of the total mass (default --percentile)",
+    )
     stature = parser.add_mutually_exclusive_group()
     stature.add_argument("--stature", help="stature, e.g. 175 or '70 in' (cm if no unit)")
-    stature.add_argument("--stature-percentile", type=percentile)
-    parser.add_argument("--figure-type", choices=FIGURE_TYPES, default="skinny")
+    stature.add_argument(
+        "--stature-percentile", type=percentile, help="percentile of stature (default --percentile)"
+    )
+    parser.add_argument(
+        "--figure-type",
+        choices=FIGURE_TYPES,
+        default="skinny",
+        help="the JACK body model the .fig is for (report figure 2; default skinny)",
+    )
     parser.add_argument("--girth", metavar="F", help="girth population file")
     parser.add_argument("--jntlmt", metavar="F", help="joint-limit population file")
     parser.add_argument("--cmass", metavar="F", help="center-of-mass population file")

@@ -18,7 +18,9 @@ from sass_tui.model.text import printable
 def register(commands: SubParsers) -> None:
     person = commands.add_parser("person", help="show people of the database, every value")
     add_db_option(person)
-    person.add_argument("--format", choices=("table", "json"), default="table")
+    person.add_argument(
+        "--format", choices=("table", "json"), default="table", help="output format (default table)"
+    )
     person.add_argument(
         "ids",
         nargs="+",

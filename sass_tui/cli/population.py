@@ -35,7 +35,11 @@ def register(commands: SubParsers) -> None:
         "population", help="make population files from the people a query selects"
     )
     add_db_option(population)
-    population.add_argument("--query", metavar="QUERY")
+    population.add_argument(
+        "--query",
+        metavar="QUERY",
+        help="the people this query selects (with --ids: of those people)",
+    )
     population.add_argument(
         "--ids",
         metavar="FILE",

@@ -53,7 +53,9 @@ def register(commands: SubParsers) -> None:
         "in cm and kg unless they carry a unit.",
     )
     add_db_option(predict)
-    predict.add_argument("--gender", choices=GENDERS, required=True)
+    predict.add_argument(
+        "--gender", choices=GENDERS, required=True, help="the person's gender: the people fitted"
+    )
     predict.add_argument(
         "--known",
         metavar="NAME=VALUE",
@@ -68,7 +70,12 @@ def register(commands: SubParsers) -> None:
         "those of --gender are used), e.g. \"branch = 'Combat Arms'\"; default: every "
         "real person of the gender",
     )
-    predict.add_argument("--format", choices=("table", "json", "csv"), default="table")
+    predict.add_argument(
+        "--format",
+        choices=("table", "json", "csv"),
+        default="table",
+        help="output format (default table)",
+    )
     predict.add_argument(
         "-o",
         dest="figure",

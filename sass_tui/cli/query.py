@@ -18,7 +18,12 @@ from sass_tui.model.text import is_printable, is_printable_lines, printable
 def register(commands: SubParsers) -> None:
     query = commands.add_parser("query", help="query the anthropometric database")
     add_db_option(query)
-    query.add_argument("--format", choices=("table", "csv", "json"), default="table")
+    query.add_argument(
+        "--format",
+        choices=("table", "csv", "json"),
+        default="table",
+        help="output format (default table)",
+    )
     query.add_argument(
         "--count",
         action="store_true",

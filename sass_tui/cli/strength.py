@@ -122,7 +122,9 @@ def register(commands: SubParsers) -> None:
         action="store_true",
         help="also draw the torque-angle curve over the joint's range (hip, knee, ankle)",
     )
-    parser.add_argument("--format", choices=("text", "json"), default="text")
+    parser.add_argument(
+        "--format", choices=("text", "json"), default="text", help="output format (default text)"
+    )
     parser.add_argument(
         "--person",
         metavar="ID",
@@ -131,7 +133,9 @@ def register(commands: SubParsers) -> None:
     )
     add_db_option(parser)
     parser.add_argument("--gender", choices=GENDERS, help="default male")
-    parser.add_argument("--side", choices=SIDES, default="right")
+    parser.add_argument(
+        "--side", choices=SIDES, default="right", help="the body side of the joint (default right)"
+    )
     parser.add_argument(
         "--unit",
         choices=(*TORQUE_UNITS, *FORCE_UNITS),
@@ -148,10 +152,25 @@ def register(commands: SubParsers) -> None:
         default=50.0,
         help="percentile of the joint limits the angles must respect",
     )
-    parser.add_argument("--strength-type", choices=STRENGTH_TYPES, default="isometric")
+    parser.add_argument(
+        "--strength-type",
+        choices=STRENGTH_TYPES,
+        default="isometric",
+        help="the kind of exertion (report section 12.2.1; default isometric)",
+    )
     parser.add_argument("--motion-speed", type=float, default=0.0, help="deg/s")
-    parser.add_argument("--handedness", choices=HANDEDNESS, default="right")
-    parser.add_argument("--training-level", type=float, default=0.0)
+    parser.add_argument(
+        "--handedness",
+        choices=HANDEDNESS,
+        default="right",
+        help="the figure's dominant hand (default right)",
+    )
+    parser.add_argument(
+        "--training-level",
+        type=float,
+        default=0.0,
+        help="level of strength training (report section 12.2.1; 0 = none)",
+    )
     parser.add_argument(
         "--fatigue-level",
         type=float,

@@ -56,7 +56,9 @@ def register(commands: SubParsers) -> None:
     )
     add_db_option(target)
     target.add_argument("name", metavar="NAME", nargs="?", help="the target's name")
-    target.add_argument("--gender", choices=GENDERS)
+    target.add_argument(
+        "--gender", choices=GENDERS, help="the gender of the people weighted (with NAME)"
+    )
     target.add_argument(
         "--sample",
         metavar="FILE.csv",
