@@ -23,7 +23,6 @@ connection or the lock.
 
 from __future__ import annotations
 
-import sqlite3
 import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -33,14 +32,13 @@ from typing import TYPE_CHECKING, Any, ParamSpec, TypeVar
 
 from sass_tui.db import accelerator
 from sass_tui.db.addresses import is_url
-from sass_tui.db.ansur import import_ansur
-from sass_tui.db.database import engine_errors
+from sass_tui.db.database import Database, engine_errors
 from sass_tui.db.dialect import dialect_of, mark_of
 from sass_tui.db.fit import fit_test, limit_histograms
-from sass_tui.db.flatfile import FlatFiles, import_flat_files
+from sass_tui.db.flatfile import FlatFiles
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.population import population_of
-from sass_tui.db.postgres import connect_postgres, import_staged
+from sass_tui.db.postgres import connect_postgres
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import LIST_FIELDS, compile_query, demonstration_hint
 from sass_tui.db.schema import DatabaseError, connect, transaction
@@ -113,6 +111,9 @@ class QueryLists:
     def __init__(self, conn: Any):
         # sqlite3's connection, or db/postgres.py's PostgresConnection
         self._conn: Any = conn
+        # The Database service over the same connection: what it does for the
+        # command line (the imports, staged on PostgreSQL) it does for the screens.
+        self._database = Database(conn, None)
         # Not reentrant: a screen's exclusive(wait=False) while its own thread
         # holds the lists is refused as well (tests hold them so).
         self._lock = threading.Lock()
@@ -341,13 +342,7 @@ class QueryLists:
         self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
     ) -> int:
         """Load flat files (one transaction: a failure or a cancel stores nothing)."""
-        if self.dialect == "postgresql":
-            return import_staged(
-                self._conn,
-                lambda staging: import_flat_files(staging, files, progress, cancel),
-                cancel=cancel,
-            )
-        return import_flat_files(self._conn, files, progress, cancel)
+        return self._database.import_flat(files, progress, cancel)
 
     @_serialised
     def import_ansur(
@@ -359,13 +354,8 @@ class QueryLists:
     ) -> int:
         """Load an ANSUR II format file under the source `label` (one
         transaction: a failure or a cancel stores nothing); returns how many."""
-
-        def load(conn: sqlite3.Connection) -> int:
-            return sum(import_ansur(conn, [path], progress, label=label, cancel=cancel).values())
-
-        if self.dialect == "postgresql":
-            return import_staged(self._conn, load, cancel=cancel)
-        return load(self._conn)
+        counts = self._database.import_ansur([path], label=label, progress=progress, cancel=cancel)
+        return sum(counts.values())
 
     @_serialised
     def selected_ids(self) -> list[int]:
