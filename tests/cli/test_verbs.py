@@ -9,6 +9,7 @@ import pkgutil
 import subprocess
 import sys
 from collections.abc import Iterator
+from pathlib import Path
 
 import pytest
 
@@ -74,3 +75,9 @@ def test_sass_help_imports_no_verb_module():
     assert done.returncode == 0, done.stderr
     assert done.stdout.splitlines()[-1] == "[]"
     assert all(verb.name in done.stdout for verb in VERBS)
+
+
+def test_every_verb_has_its_test_file_here():
+    # tests/cli mirrors sass_tui/cli: where a newcomer looks for a verb's tests.
+    here = Path(__file__).parent
+    assert [verb.name for verb in VERBS if not (here / f"test_{verb.module}.py").is_file()] == []
