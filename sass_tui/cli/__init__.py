@@ -240,7 +240,7 @@ def run_verb(args: argparse.Namespace) -> int:
     except Exception as exc:
         if "sass_tui.db.database" not in sys.modules:
             raise  # no database was opened: not an engine's error
-        # deferred: db.database — off sass fig, sass --help, sass strength … (sass_tui/startup.py)
+        # deferred: db.database — off sass fig, sass strength, sass export hanim … (sass_tui/startup.py)
         from sass_tui.db.database import engine_error
 
         error = engine_error(exc)

@@ -190,7 +190,7 @@ def run_import_ansur(args: argparse.Namespace) -> int:
 
 
 def run_copy(args: argparse.Namespace) -> int:
-    # deferred: db.accelerator, db.query, db.schema, model.text — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: db.query — off sass db init (sass_tui/startup.py)
     from sass_tui.db.query import QueryError, compile_query
 
     wanted: set[tuple[str, str]] = set()

@@ -55,7 +55,7 @@ def run_hanim(args: argparse.Namespace) -> int:
 
 
 def run_gltf(args: argparse.Namespace) -> int:
-    # deferred: model.gltf — off sass --help, sass export hanim, sass --version (sass_tui/startup.py)
+    # deferred: model.gltf — off sass export hanim (sass_tui/startup.py)
     from sass_tui.model.gltf import check_path, export_gltf
 
     path = check_path(user_path(args.output))  # refused before the database is opened

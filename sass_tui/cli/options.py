@@ -54,7 +54,7 @@ def open_db(args: argparse.Namespace, create: bool = False):  # -> the db layer'
     the db layer's functions that take one: a SQLite file, or a PostgreSQL
     database for the verbs of POSTGRES_COMMANDS (db/addresses.py; for the
     others an address is refused, saying which verbs serve it)."""
-    # deferred: db.addresses, db.database, db.schema — off sass fig, sass --help, sass strength … (sass_tui/startup.py)
+    # deferred: db.addresses, db.database, db.schema — off sass fig, sass strength, sass serve … (sass_tui/startup.py)
     from sass_tui.db.addresses import POSTGRES_COMMANDS, is_url, sqlite_only
     from sass_tui.db.database import configured_target
     from sass_tui.db.schema import DatabaseError

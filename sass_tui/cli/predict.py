@@ -207,7 +207,7 @@ def write_prediction_figure(prediction: Prediction, path: str) -> str:
     (the file says which)."""
     figure = prediction.figure(Figure.default(prediction.gender))
     if path.lower().endswith((".glb", ".gltf")):
-        # deferred: model.gltf — off sass --help, sass predict, sass --version (sass_tui/startup.py)
+        # deferred: model.gltf — off sass predict (sass_tui/startup.py)
         from sass_tui.model.gltf import export_gltf
 
         return ", ".join(str(p) for p in export_gltf(figure, path))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import math  # already imported by db.query: no start-up cost
 import sys
 from collections.abc import Iterable
 from itertools import islice
@@ -60,7 +61,7 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
             _say_who_else(conn, args.query)
         return
     if args.target is not None:
-        # deferred: model.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
+        # deferred: model.targets — off sass query, sass query --count (sass_tui/startup.py)
         from sass_tui.model.targets import TargetError
 
         raise TargetError("--target weights a count: give --count too")
@@ -97,7 +98,7 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
 
 def _weighted_count(conn, query: str, name: str) -> None:
     """The raw count, and beside it the target's weighted count and share."""
-    # deferred: db.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
+    # deferred: db.targets — off sass query, sass query --count (sass_tui/startup.py)
     from sass_tui.db.targets import load_target, weighted_count
 
     counted = weighted_count(conn, query, load_target(conn, name))
@@ -176,9 +177,8 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
     function, when the numbers are all finite numbers (their sum is finite;
     None or a text raises TypeError); otherwise by the encoder, person by
     person (benchmarks/query_formats.py)."""
-    # deferred: json, math — only --format json writes JSON; off sass query (sass_tui/startup.py)
+    # deferred: json — only --format json writes JSON; off sass query (sass_tui/startup.py)
     import json
-    import math
     from json.encoder import encode_basestring_ascii as quote
 
     try:
@@ -205,9 +205,6 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
 
 def _finite(person: dict) -> dict:
     """The person for JSON, which has no Infinity or NaN: refuse one stored so."""
-    # deferred: math — only --format json writes JSON; off sass query (sass_tui/startup.py)
-    import math
-
     for key, value in person.items():
         if isinstance(value, float) and not math.isfinite(value):
             raise QueryError(

@@ -98,7 +98,7 @@ def register(commands: SubParsers) -> None:
 def run(args: argparse.Namespace) -> int:
     if find_spec("textual_serve") is None:  # the [serve] extra is not installed
         raise ServeError("sass serve needs textual-serve: pip install 'sass-tui[serve]'")
-    # deferred: ui.serve — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: ui.serve — off sass serve (sass_tui/startup.py)
     from sass_tui.ui.serve import ServeOptions, serve
 
     loopback = is_loopback(args.host)
@@ -130,7 +130,7 @@ def run(args: argparse.Namespace) -> int:
     err = sys.stderr
     print(f"sass serve: web sessions read and write files in {workdir}", file=err)
     if db is not None:
-        # deferred: db.postgres — off sass --help, sass serve, sass --version (sass_tui/startup.py)
+        # deferred: db.postgres — off sass serve (sass_tui/startup.py)
         from sass_tui.db.postgres import shown
 
         named = shown(db) if isinstance(db, str) else db  # never the password
@@ -213,7 +213,7 @@ def served_workdir(name: str | None) -> Path:
     """--workdir (made if missing), or a new directory under the user's data
     directory; its real path, so that no link in it moves later."""
     if name is None:
-        # deferred: tempfile — off sass --help, sass serve (sass_tui/startup.py)
+        # deferred: tempfile — off sass serve (sass_tui/startup.py)
         import tempfile
 
         base = data_dir() / "serve"
@@ -251,7 +251,7 @@ def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | Non
         return str(target)
     if not read_only:
         return user_path(db).resolve() if db else None
-    # deferred: db.schema — off sass --help, sass serve, sass --version (sass_tui/startup.py)
+    # deferred: db.schema — off sass serve (sass_tui/startup.py)
     from sass_tui.db.schema import default_db_path
 
     open_db(args).close()

@@ -230,7 +230,7 @@ def run(args: argparse.Namespace) -> int:
 
 def _take_person(args: argparse.Namespace) -> None:
     """A database person's own gender, age, mass and stature into `args`."""
-    # deferred: db.individual — off sass --help, sass strength, sass --version (sass_tui/startup.py)
+    # deferred: db.individual — off sass strength (sass_tui/startup.py)
     from sass_tui.db.individual import find_person, person_record
 
     given = [

@@ -106,7 +106,7 @@ def run(args: argparse.Namespace) -> int:
 
 def by_fields(text: str) -> list[str]:
     """`--by stature,mass,sittingheight` -> query-language fields."""
-    # deferred: model.accommodation, model.target_sample — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: model.accommodation — off sass target (sass_tui/startup.py)
     from sass_tui.model.accommodation import measure_field
 
     fields: list[str] = []

@@ -80,7 +80,7 @@ def _serialised(method: Callable[P, R]) -> Callable[P, R]:
     return locked
 
 
-# People searched between two progress reports of a query (QueryLists.run).
+# People searched between two progress reports of a query (QueryLists.run_chunk).
 RUN_CHUNK = 20_000
 QUERY_LIST = "query"
 SELECTED_LIST = "selected"
@@ -111,6 +111,9 @@ class QueryLists:
     def __init__(self, conn: Any):
         # sqlite3's connection, or db/postgres.py's PostgresConnection
         self._conn: Any = conn
+        # People searched between two progress reports of a query (run); a
+        # test makes it smaller to see several reports on a small database.
+        self.run_chunk = RUN_CHUNK
         # The Database service over the same connection: what it does for the
         # command line (the imports, staged on PostgreSQL) it does for the screens.
         self._database = Database(conn, None)
@@ -214,7 +217,7 @@ class QueryLists:
         A bad query raises QueryError and leaves both lists as they were.
 
         With `progress` or `cancel` the people are searched in id ranges of
-        about RUN_CHUNK people: `progress(people searched, people in the
+        about `run_chunk` people: `progress(people searched, people in the
         database)` after each, and `cancel` stops it with Cancelled (between
         ranges or inside one), the lists as they were."""
         compiled = compile_query(text)
@@ -251,7 +254,7 @@ class QueryLists:
     def _run_in_ranges(
         self, sql: str, params: tuple[object, ...], steps: Steps, cancel: Cancel | None
     ) -> int:
-        """The query over id ranges, each about RUN_CHUNK people wide; the people
+        """The query over id ranges, each about `run_chunk` people wide; the people
         searched are estimated from the ids passed (exact at the end)."""
         low, high, total = self._conn.execute(
             "SELECT min(id_num), max(id_num), count(*) FROM person"
@@ -259,7 +262,7 @@ class QueryLists:
         steps(0, total)
         if not total:
             return 0
-        ranges = max(1, -(-total // RUN_CHUNK))
+        ranges = max(1, -(-total // self.run_chunk))
         span = high - low + 1
         cuts = [low + span * k // ranges for k in range(ranges)] + [high + 1]
         ranged = f"{sql} AND p.id_num >= {self._mark} AND p.id_num < {self._mark}"
