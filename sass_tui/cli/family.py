@@ -8,7 +8,6 @@ import sys
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.db.fit import load_family
 from sass_tui.db.query import QueryError, compile_query
-from sass_tui.db.targets import load_target
 from sass_tui.model.accommodation import measure_field, write_family
 from sass_tui.model.figure import Figure
 from sass_tui.model.vocabulary import GENDERS
@@ -97,6 +96,9 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     weighted_to = None
     if args.target is not None:
+        # deferred: db.targets — off sass family (sass_tui/startup.py)
+        from sass_tui.db.targets import load_target
+
         weighted_to = load_target(conn, args.target)
     family = load_family(
         conn,

@@ -11,7 +11,6 @@ from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.db.fit import check_mix, fit_test
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
-from sass_tui.db.targets import load_target
 from sass_tui.model.published_strength import parse_strength_limit
 from sass_tui.model.vocabulary import GENDERS
 
@@ -103,6 +102,9 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     target = None
     if args.target is not None:
+        # deferred: db.targets — off sass fit (sass_tui/startup.py)
+        from sass_tui.db.targets import load_target
+
         target = load_target(conn, args.target)
     result = fit_test(
         conn,

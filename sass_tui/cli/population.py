@@ -25,7 +25,6 @@ from sass_tui.db.population import (
 )
 from sass_tui.db.population_files import write_population_files
 from sass_tui.db.query import compile_query
-from sass_tui.db.targets import load_target
 from sass_tui.model.names import GROUP_TITLES
 from sass_tui.model.paths import regular_file
 
@@ -77,6 +76,9 @@ def run(args: argparse.Namespace) -> int:
         absent = missing_ids(conn, ids) if ids is not None else []
         target = None
         if args.target is not None:
+            # deferred: db.targets — off sass population (sass_tui/startup.py)
+            from sass_tui.db.targets import load_target
+
             target = load_target(conn, args.target)
         result = population_of(
             conn,

@@ -23,9 +23,6 @@ from sass_tui.cli.options import SubParsers, add_db_option, open_db, whole_numbe
 from sass_tui.db.predict import open_predictor
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
-from sass_tui.model.figfile import write_fig
-from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import export_hanim
 from sass_tui.model.paths import regular_file
 from sass_tui.model.prediction import MIN_PEOPLE, UnknownFieldError, field_unit, split_known
 from sass_tui.model.units import UnitError, parse_quantity
@@ -205,15 +202,17 @@ def write_prediction_figure(prediction: Prediction, path: str) -> str:
     """The predicted person as a .fig file, an HAnim .x3d humanoid or a glTF
     body; cells the model has no value for come from the default population
     (the file says which)."""
+    # deferred: model.figure, model.figfile, model.gltf, model.hanim — off sass predict (sass_tui/startup.py)
+    from sass_tui.model.figfile import write_fig
+    from sass_tui.model.figure import Figure
+    from sass_tui.model.gltf import export_gltf
+    from sass_tui.model.hanim import export_hanim
+
     figure = prediction.figure(Figure.default(prediction.gender))
     if path.lower().endswith((".glb", ".gltf")):
-        # deferred: model.gltf — off sass predict (sass_tui/startup.py)
-        from sass_tui.model.gltf import export_gltf
-
         return ", ".join(str(p) for p in export_gltf(figure, path))
     if path.lower().endswith(".x3d"):
         return str(export_hanim(figure, path))
-
     return str(write_fig(figure, path))
 
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import csv
 import math  # already imported by db.query: no start-up cost
 import sys
 from collections.abc import Iterable
@@ -68,6 +67,9 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
     rows = query.person_rows()  # tuples in PERSON_FIELDS order
     out = sys.stdout
     if args.format == "csv":
+        # deferred: csv — off sass query (sass_tui/startup.py)
+        import csv
+
         # Names and sources come from files and the CSV may go to a terminal: a
         # control character is written escaped.  One check over a chunk's names
         # and sources joined; only when it fails is each text made printable.

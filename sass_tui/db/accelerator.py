@@ -37,13 +37,11 @@ SQLite is fast, and neither numpy nor duckdb need be imported).
 
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 import sqlite3
 import struct
 import threading
-import uuid
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -214,6 +212,9 @@ def _read_column(conn: sqlite3.Connection, table: str, column: str, ids: Any) ->
 
 
 def _cache_folder(path: Path) -> Path:
+    # deferred: hashlib — off sass query --count (sass_tui/startup.py)
+    import hashlib
+
     base = CACHE_DIR
     if base is None:
         xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
@@ -239,6 +240,9 @@ def _build(
 ) -> None:
     """Read `want` from SQLite inside the caller's read transaction and write
     the copy (a new file renamed over the old: readers never see half a copy)."""
+    # deferred: uuid — off sass query --count, sass db init (sass_tui/startup.py)
+    import uuid
+
     # deferred: duckdb — off sass query --count, sass db init (sass_tui/startup.py)
     import duckdb
 

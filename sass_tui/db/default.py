@@ -31,7 +31,6 @@ from sass_tui.db.schema import (
     write_refused,
 )
 from sass_tui.db.scope import DEMONSTRATION_SOURCE
-from sass_tui.model import datasets
 
 ANSUR_FILES = ("ANSUR_II_MALE_Public.csv.gz", "ANSUR_II_FEMALE_Public.csv.gz")
 SYNTHETIC_LABEL = DEMONSTRATION_SOURCE  # what a query reaches only when it names it
@@ -106,6 +105,9 @@ def holds_people(conn: sqlite3.Connection) -> bool:
 
 
 def shipped_ansur_files() -> list[Path]:
+    # deferred: model.datasets — off sass query, sass query --count, sass person … (sass_tui/startup.py)
+    from sass_tui.model import datasets
+
     return [datasets.directory() / "ansur2" / name for name in ANSUR_FILES]
 
 
@@ -172,6 +174,7 @@ def fill_default(conn: sqlite3.Connection, progress: Progress | None = None) -> 
     # deferred: db.ansur, db.flatfile, model.datasets — off sass query, sass query --count, sass person … (sass_tui/startup.py)
     from sass_tui.db.ansur import DEFAULT_LABEL, store_ansur
     from sass_tui.db.flatfile import FlatFiles, read_flat_files
+    from sass_tui.model import datasets
 
     synthetic = read_flat_files(FlatFiles.in_directory(datasets.directory() / "db"))
     synthetic.source = [SYNTHETIC_LABEL] * len(synthetic)

@@ -36,7 +36,6 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.db.dialect import dialect_of, ids_in
-from sass_tui.db.predict import open_predictor
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import QueryError, compile_conjuncts, compile_query, parser, real_people_only
 from sass_tui.db.values import load_values, numeric_field
@@ -422,6 +421,9 @@ def load_family(
     if len(values) == 0:
         raise FitError(f"the population {population!r} has no {gender} people")
     with interruptible(conn, cancel, "the family"):
+        # deferred: db.predict — off sass fit (sass_tui/startup.py)
+        from sass_tui.db.predict import open_predictor
+
         model = predictor if predictor is not None else open_predictor(conn)
     steps(2, 3)
     weights = None if weighted_to is None else weighted_to.of(values.ids)

@@ -40,7 +40,6 @@ from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import AXES, CENTER_OF_MASS, GIRTH, GLOBAL, GLOBAL_ROWS, ROWS
 from sass_tui.model.popfile import PopulationData, read_population_file
-from sass_tui.model.targets import weighted_percentile
 from sass_tui.model.text import printable
 from sass_tui.model.vocabulary import GENDERS
 
@@ -273,6 +272,9 @@ def _percentiles(
         if weights is None:
             out[k] = np.percentile(column[present], PERCENTILES)
         else:
+            # deferred: model.targets — off sass population (sass_tui/startup.py)
+            from sass_tui.model.targets import weighted_percentile
+
             out[k] = weighted_percentile(column, weights, PERCENTILES)
     return out
 
