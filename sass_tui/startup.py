@@ -95,7 +95,8 @@ PATHS: tuple[StartupPath, ...] = (
         "sass fig",
         ("fig", "-o", "X.fig"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",
-         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui",
+         "sass_tui.model.landmarks"),
         "`sass fig -o X.fig` <= 1.6x `python -c 'import numpy'` (benchmarks/cli_ratios.py):"
         " the figure needs numpy and the model, no database and no temporary file's name",
     ),
@@ -117,7 +118,8 @@ PATHS: tuple[StartupPath, ...] = (
         "sass strength",
         ("strength", "elbow_flexion"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",
-         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui",
+         "sass_tui.model.atomic"),
         "the strength of the default figure needs the strength file and the model only",
     ),
     StartupPath(

@@ -19,7 +19,6 @@ import numpy as np
 
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
-from sass_tui.model.landmarks import joint_lengths, measured_heights
 from sass_tui.model.names import (
     AXES,
     CENTER_OF_MASS,
@@ -72,6 +71,8 @@ def person_joint_lengths(figure: Figure) -> dict[str, float]:
     figure and for a person without those measurements."""
     if not figure.landmarks or math.isnan(figure.stature):
         return {}
+    # deferred: model.landmarks — off sass fig (sass_tui/startup.py)
+    from sass_tui.model.landmarks import joint_lengths, measured_heights
 
     lengths = joint_lengths(measured_heights(figure.landmarks, figure.stature / 100.0))
     return {

@@ -21,7 +21,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.floats import divide, median
 from sass_tui.model.names import (
@@ -462,6 +461,9 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
 
 def write_population_file(data: PopulationData, path: str | Path) -> None:
     """Write statistics back in the same format (atomically)."""
+    # deferred: model.atomic — off the first screen, sass strength (sass_tui/startup.py)
+    from sass_tui.model.atomic import write_text_atomic
+
     lines = [f"C {data.title}"]
     for gender, stats in data.sections.items():
         lines += ["C", f"T {gender.upper()}"]
