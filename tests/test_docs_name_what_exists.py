@@ -10,6 +10,8 @@ import re
 from functools import cache
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
 CODE = ("sass_tui", "tests", "scripts", "benchmarks")
@@ -71,6 +73,11 @@ def _has(classes: dict[str, set[str]], name: str, attribute: str) -> bool:
     return any(base not in classes or _has(classes, base, attribute) for base in bases)
 
 
+@cache
+def _parsed(module: Path) -> ast.Module:
+    return ast.parse(module.read_text(encoding="utf-8"))
+
+
 def _module_has(dotted: str) -> bool:
     """sass_tui.db.lists (a module) or sass_tui.db.lists.QueryLists (a name it defines)."""
     parts = dotted.split(".")
@@ -81,7 +88,7 @@ def _module_has(dotted: str) -> bool:
             rest = parts[end:]
             if not rest:
                 return True
-            tree = ast.parse(module.read_text(encoding="utf-8"))
+            tree = _parsed(module)
             defined = {
                 getattr(node, "name", None) or getattr(node, "id", None)
                 for node in ast.walk(tree)
@@ -117,6 +124,7 @@ def missing(text: str) -> list[str]:
     return absent
 
 
+@pytest.mark.slow
 def test_every_path_module_and_function_the_docs_name_exists():
     assert DOCS[1:], "no docs/*.md found"
     absent = {
