@@ -1,6 +1,6 @@
 """pytest plugin for .ci/run's floor run: the suite on the oldest releases
 pyproject.toml allows (.ci/floor-constraints.txt).  The screen snapshots are
-drawn by the textual release the test extra pins, so at the floor they are
+drawn by the textual release the snapshots group pins (pyproject.toml), so at the floor they are
 skipped and every other test (behaviour) runs."""
 
 from __future__ import annotations

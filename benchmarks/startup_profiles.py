@@ -10,7 +10,7 @@ and exits it once the first screen is drawn.
 
     python benchmarks/startup_profiles.py [--runs 7]
 
-Needs py-spy (pip install -e '.[bench]'; it reads another process's memory,
+Needs py-spy (pip install --group bench; it reads another process's memory,
 so a container may need SYS_PTRACE) and tmux for the TUI path; a path whose
 tool is missing is skipped.  --speedscope DIR also writes each profile as a
 speedscope file (https://www.speedscope.app).

@@ -90,8 +90,9 @@ PATHS: tuple[StartupPath, ...] = (
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "sqlite3",
          "platformdirs",
          "pickle", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
-        "every verb's module is imported to list it: each imports at its top only what"
-        " its parser needs",
+        "the verbs are listed from the light table in sass_tui/cli/__init__.py: no verb's"
+        " module is imported (each imports what it needs at its top;"
+        " tests/cli/test_verbs.py)",
     ),
     StartupPath(
         "sass --version",
@@ -104,8 +105,8 @@ PATHS: tuple[StartupPath, ...] = (
         "sass fig",
         ("fig", "-o", "X.fig"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
-         "platformdirs", "numpy.ma",
-         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+         "platformdirs", "numpy.ma", "secrets", "xml.etree.ElementTree", "sass_tui.db",
+         "sass_tui.ui", "sass_tui.model.landmarks"),
         "`sass fig -o X.fig` <= 1.6x `python -c 'import numpy'` (benchmarks/cli_ratios.py):"
         " the figure needs numpy and the model, no database and no temporary file's name",
     ),
@@ -129,8 +130,8 @@ PATHS: tuple[StartupPath, ...] = (
         "sass strength",
         ("strength", "elbow_flexion"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
-         "platformdirs", "numpy.ma",
-         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+         "platformdirs", "numpy.ma", "secrets", "xml.etree.ElementTree", "sass_tui.db",
+         "sass_tui.ui", "sass_tui.model.atomic"),
         "the strength of the default figure needs the strength file and the model only",
     ),
     StartupPath(
@@ -147,7 +148,7 @@ PATHS: tuple[StartupPath, ...] = (
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets", "platformdirs",
          "xml.etree.ElementTree", "sass_tui.ui",
          "sass_tui.model.prediction", "sass_tui.db.accelerator", "sass_tui.db.postgres",
-         "json"),
+         "json", "csv", "sass_tui.model.datasets"),
         "`sass query` <= 5x `python -c pass` (benchmarks/cli_ratios.py): lark's parser"
         " from its cached tables, the unit table (not pint), SQLite and the table writer;"
         " argparse's help formatter without shutil; no column copy below its size; json"
@@ -168,7 +169,8 @@ PATHS: tuple[StartupPath, ...] = (
         "sass query --count",
         ("query", "--count", "gender = male"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets",
-         "platformdirs", "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction"),
+         "platformdirs", "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
+         "uuid"),
         "a count asks the column copy's module whether a copy exists; below its size"
         " SQLite counts, without duckdb or numpy",
         needs_db=True,
@@ -179,7 +181,7 @@ PATHS: tuple[StartupPath, ...] = (
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy.ma", "secrets",
          "platformdirs",
          "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
-         "sass_tui.db.accelerator"),
+         "sass_tui.db.accelerator", "sass_tui.model.datasets"),
         "one person's record: no query language, no prediction",
         needs_db=True,
     ),
@@ -188,7 +190,7 @@ PATHS: tuple[StartupPath, ...] = (
         ("population", "--query", "gender = male", "-o", "X.dat"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "secrets", "platformdirs",
          "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
-         "sass_tui.db.accelerator"),
+         "sass_tui.db.accelerator", "sass_tui.db.targets", "sass_tui.model.targets"),
         "the population files need the query, the people and numpy's statistics only",
         needs_db=True,
     ),
@@ -197,8 +199,10 @@ PATHS: tuple[StartupPath, ...] = (
         ("predict", "--gender", "male", "--known", "stature=180"),
         (*NEVER, *UI, *ENGINES, "asyncio", "importlib.metadata", "numpy.ma",
          "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
-         "sass_tui.db.accelerator"),
-        "the regression needs the people and numpy, not the exports' writers",
+         "sass_tui.db.accelerator", "sass_tui.model.figure", "sass_tui.model.figfile",
+         "sass_tui.model.hanim", "sass_tui.model.gltf"),
+        "the regression needs the people and numpy, not the figure nor the exports' writers"
+        " (only -o writes a figure)",
         needs_db=True,
     ),
     StartupPath(
@@ -206,7 +210,7 @@ PATHS: tuple[StartupPath, ...] = (
         ("fit", "stature <= 190 cm"),
         (*NEVER, *UI, *ENGINES, "asyncio", "importlib.metadata", "numpy.ma",
          "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
-         "sass_tui.db.accelerator"),
+         "sass_tui.db.accelerator", "sass_tui.db.targets", "sass_tui.db.predict"),
         "the fit test needs the query, the people and numpy only",
         needs_db=True,
     ),
@@ -214,7 +218,8 @@ PATHS: tuple[StartupPath, ...] = (
         "sass family",
         ("family", "--gender", "male", "--measures", "stature,mass", "-o", "family"),
         (*NEVER, *UI, *ENGINES, "asyncio", "importlib.metadata", "numpy.ma",
-         "secrets", "platformdirs", "sass_tui.ui", "sass_tui.db.accelerator"),
+         "secrets", "platformdirs", "sass_tui.ui", "sass_tui.db.accelerator",
+         "sass_tui.db.targets"),
         "the family needs the people, the prediction and the X3D writer, no TUI",
         needs_db=True,
     ),

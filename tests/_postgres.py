@@ -37,7 +37,7 @@ def why_not() -> str | None:
     try:
         import psycopg  # noqa: F401
     except ImportError:
-        return "psycopg is not installed (pip install -e '.[test]')"
+        return "psycopg is not installed (pip install -e '.[postgres]')"
     if server_bin() is None:
         return "no PostgreSQL server binaries (apt-get install postgresql)"
     if os.geteuid() == 0 and not shutil.which("runuser"):

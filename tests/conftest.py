@@ -1,11 +1,15 @@
 from __future__ import annotations
 
+import csv
 import gc
 import os
+import shutil
 from pathlib import Path
 
 import pytest
 from _paths import ANSUR, REPORT
+
+from sass_tui.cli import main
 
 
 @pytest.fixture(scope="session")
@@ -156,3 +160,17 @@ def pytest_terminal_summary(terminalreporter) -> None:
         terminalreporter.write_sep("-", f"over {SLOW_S:g} s without @pytest.mark.slow")
         for nodeid, duration in sorted(_unmarked_slow, key=lambda item: -item[1]):
             terminalreporter.write_line(f"{duration:6.2f}s {nodeid}")
+
+
+@pytest.fixture(scope="session")
+def person_db(shipped_db_file, tmp_path_factory, ansur_dir):
+    """The default database and three ANSUR II women (the first rows of the CSV)."""
+    folder = tmp_path_factory.mktemp("persondb")
+    db = folder / "people.db"
+    lines = (ansur_dir / "ANSUR_II_FEMALE_Public.csv").read_text(encoding="latin-1").splitlines()
+    small = folder / "ANSUR_II_FEMALE_Public.csv"
+    small.write_text("\n".join(lines[:4]) + "\n", encoding="latin-1")
+    shutil.copy(shipped_db_file, db)  # what `sass db init` builds
+    assert main(["--db", str(db), "db", "import-ansur", str(small)]) == 0
+    rows = list(csv.DictReader(lines[:4]))
+    return db, rows

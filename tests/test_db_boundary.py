@@ -51,3 +51,22 @@ def test_the_checks_see_what_they_look_for(tmp_path):
     imports = [n for n in ast.walk(tree) if isinstance(n, ast.Import | ast.ImportFrom)]
     reaches = [n for n in ast.walk(tree) if isinstance(n, ast.Attribute) and n.attr in REACHES]
     assert len(imports) == 2 and len(reaches) == 2
+
+
+def test_one_caller_decides_how_an_import_is_staged():
+    # PostgreSQL stages an import in a SQLite file and copies it in one
+    # transaction; whether to is decided once, in db/database.py's
+    # store_people, for the command line (Database) and the screens
+    # (QueryLists) alike; init_postgres is PostgreSQL's `sass db init` only.
+    callers = set()
+    for path in (Path(__file__).resolve().parent.parent / "sass_tui").rglob("*.py"):
+        for function in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(function, ast.FunctionDef):
+                for call in ast.walk(function):
+                    if (
+                        isinstance(call, ast.Call)
+                        and getattr(call.func, "id", getattr(call.func, "attr", None))
+                        == "import_staged"
+                    ):
+                        callers.add(f"{path.parent.name}/{path.name}:{function.name}")
+    assert callers == {"db/database.py:store_people", "db/database.py:init_postgres"}

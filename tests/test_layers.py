@@ -109,7 +109,7 @@ def test_plain_sass_opens_the_tui_without_building_the_parser():
         "app.run_app = lambda db, worksheet=None: print('tui', db) or 0\n"
         "from sass_tui.cli import VERBS, main\n"
         "status = main([])\n"
-        "print(status, ','.join(v for v in VERBS if 'sass_tui.cli.' + v in sys.modules))\n"
+        "print(status, ','.join(v.name for v in VERBS if 'sass_tui.cli.' + v.module in sys.modules))\n"
     )
     assert _run(code) == "tui None\n0"
 

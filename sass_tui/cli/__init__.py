@@ -1,9 +1,11 @@
 """The `sass` command line: one parser, one error edge, one module per verb.
 
-Each verb module has `register(commands)` (its arguments; imports nothing
-heavy) and sets `func` to a function of the parsed arguments that returns
-the exit status.  Only plain `sass` (the TUI) imports Textual, and only
-when run; numpy, sqlite3 and lark wait until a verb needs them.
+Each verb is a row of VERBS (its name and one-line help, all `sass --help`
+needs) and a module with `register(commands)` (its arguments) that sets
+`func` to a function of the parsed arguments returning the exit status.  Only
+the verb being run has its module imported, so a verb's module imports what
+it needs at its top.  Only plain `sass` (the TUI) imports Textual, and only
+when run.
 """
 
 from __future__ import annotations
@@ -13,42 +15,71 @@ import gc
 import os
 import sys
 from types import ModuleType
-from typing import Any, cast
+from typing import Any, NamedTuple, cast
 
 from sass_tui.cli.options import DB_HELP, SubParsers
 from sass_tui.model.errors import SassError
+from sass_tui.model.text import printable
 
-# The verbs in `sass --help`'s order, each the module sass_tui.cli.VERB,
-# imported when its parser is built or listed (a verb run imports only its own).
-VERBS = (
-    "fig",
-    "export",
-    "strength",
-    "query",
-    "person",
-    "population",
-    "predict",
-    "fit",
-    "task",
-    "family",
-    "target",
-    "stats",
-    "db",
-    "serve",
+
+class Verb(NamedTuple):
+    """One row of `sass --help`: what it lists, without importing the verb."""
+
+    name: str
+    help: str  # the one line `sass --help` shows (the verb's register() gives the same)
+    module: str  # sass_tui.cli.MODULE: register(commands) and the verb's code
+
+
+# The verbs in `sass --help`'s order.  A new verb is a module with
+# `register(commands)` and a row here: `sass --help` lists the rows without
+# importing any verb, and a command imports only the module of the verb it
+# runs (as git's and Click's lazy groups do), so a verb's module imports what
+# it needs at its top (tests/cli/test_verbs.py checks each row against its module).
+VERBS: tuple[Verb, ...] = (
+    Verb("fig", "write a PEABODY body description file (.fig)", "fig"),
+    Verb("export", "export the figure to another format", "export"),
+    Verb("strength", "print a strength at a joint configuration (stored or predicted)", "strength"),
+    Verb("query", "query the anthropometric database", "query"),
+    Verb("person", "show people of the database, every value", "person"),
+    Verb("population", "make population files from the people a query selects", "population"),
+    Verb(
+        "predict",
+        "predict every value of a person from the known ones (with 90 %% intervals)",
+        "predict",
+    ),
+    Verb("fit", "fit test: the share of a population that design limits accommodate", "fit"),
+    Verb("task", "a task's joint moments and the percent capable of doing it", "task"),
+    Verb(
+        "family",
+        "manikin family: boundary figures of a coverage ellipsoid, coverage counted",
+        "family",
+    ),
+    Verb(
+        "target", "make a target population: the real people weighted to match a sample", "target"
+    ),
+    Verb(
+        "stats",
+        "percentile table: n, effective n, mean, SD and percentiles of any measures",
+        "stats",
+    ),
+    Verb("db", "create the database or import data into it", "db"),
+    Verb("serve", "serve the spreadsheet to a web browser", "serve"),
 )
 
 
-def _verb_module(name: str) -> ModuleType:
-    module = f"sass_tui.cli.{name}"
-    __import__(module)
+def verb_module(verb: Verb) -> ModuleType:
+    """The verb's module, imported now (the only place a verb's module is imported)."""
+    module = f"sass_tui.cli.{verb.module}"
+    __import__(module)  # importlib.import_module's package costs a command its import
     return sys.modules[module]
 
 
 def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     """The parser; given the command line, only the verb it names is built
-    (with no verb, or before -h, every verb is listed with its help and none
-    built: `sass --help` is whole), since argparse costs start-up time for
-    every parser and option."""
+    (with no verb, or before -h, every verb is listed from VERBS with its help,
+    no verb's module imported: `sass --help` is whole), since argparse costs
+    start-up time for every parser and option.  With no command line every
+    verb is built (the tests' walk over every option)."""
     parser = _Parser(
         prog="sass",
         description="Spreadsheet Anthropometry Scaling System. "
@@ -67,11 +98,12 @@ def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
     )
     commands = cast(SubParsers, parser.add_subparsers(dest="command", metavar="COMMAND"))
     chosen = None if argv is None else _verb_named(argv)
-    for name in VERBS:
-        if argv is None or chosen == name:
-            _verb_module(name).register(commands)
-        elif chosen not in VERBS:  # sass --help, the TUI, or an unknown verb's error
-            _verb_module(name).register(_NamesOnly(commands))
+    names = {verb.name for verb in VERBS}
+    for verb in VERBS:
+        if argv is None or chosen == verb.name:
+            verb_module(verb).register(commands)
+        elif chosen not in names:  # sass --help, the TUI, or an unknown verb's error
+            commands.add_parser(verb.name, help=verb.help)
         # else another verb runs: this one is not built at all (each parser
         # argparse makes costs ~0.2 ms, most of it gettext looking for
         # translations).
@@ -130,25 +162,6 @@ class _Parser(argparse.ArgumentParser):
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         kwargs.setdefault("formatter_class", _HelpFormatter)
         super().__init__(*args, **kwargs)
-
-
-class _NamesOnly:
-    """Stands in for the subparsers of a verb not being run: the verb is listed
-    with its help, and the options it would add are not built."""
-
-    def __init__(self, commands: SubParsers) -> None:
-        self.commands = commands
-
-    def add_parser(self, name: str, help: str | None = None, **kwargs: object) -> _Sink:
-        self.commands.add_parser(name, help=help)
-        return _Sink()
-
-
-class _Sink:
-    """Takes any call a verb's register() makes on its parser, and does nothing."""
-
-    def __getattr__(self, _name: str) -> object:
-        return lambda *args, **kwargs: self
 
 
 class _VersionAction(argparse.Action):
@@ -217,9 +230,6 @@ def run_tui(db: str | None, worksheet: str | None = None) -> int:
 
 def run_verb(args: argparse.Namespace) -> int:
     """Run the chosen verb; every error a user can cause ends here as a message."""
-    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.text import printable
-
     try:
         status: int = args.func(args)
         return status
@@ -241,7 +251,7 @@ def run_verb(args: argparse.Namespace) -> int:
     except Exception as exc:
         if "sass_tui.db.database" not in sys.modules:
             raise  # no database was opened: not an engine's error
-        # deferred: db.database — off sass fig, sass --help, sass strength … (sass_tui/startup.py)
+        # deferred: db.database — off sass fig, sass strength, sass export hanim … (sass_tui/startup.py)
         from sass_tui.db.database import engine_error
 
         error = engine_error(exc)

@@ -5,13 +5,18 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
 from sass_tui.cli.progress import progress_for
-
-if TYPE_CHECKING:
-    from sass_tui.db.replacing import Held
+from sass_tui.db import accelerator
+from sass_tui.db.addresses import is_url
+from sass_tui.db.database import Database, configured_target, init_postgres
+from sass_tui.db.default import create_default_database
+from sass_tui.db.flatfile import FlatFileError, FlatFiles
+from sass_tui.db.postgres import shown
+from sass_tui.db.replacing import Held, keep_targets, what_init_replaces
+from sass_tui.db.schema import DatabaseError, connect, default_db_path
+from sass_tui.model.text import printable
 
 
 def register(commands: SubParsers) -> None:
@@ -31,10 +36,10 @@ def register(commands: SubParsers) -> None:
     init.set_defaults(func=run_init)
     flat = actions.add_parser("import-flat", help="import legacy flat files (report figure 12)")
     add_db_option(flat)
-    flat.add_argument("--person", required=True, metavar="F")
-    flat.add_argument("--girth", required=True, metavar="F")
-    flat.add_argument("--jntlmt", required=True, metavar="F")
-    flat.add_argument("--cmass", required=True, metavar="F")
+    flat.add_argument("--person", required=True, metavar="F", help="the person flat file")
+    flat.add_argument("--girth", required=True, metavar="F", help="the girth flat file")
+    flat.add_argument("--jntlmt", required=True, metavar="F", help="the joint-limit flat file")
+    flat.add_argument("--cmass", required=True, metavar="F", help="the center-of-mass flat file")
     flat.add_argument(
         "strength",
         nargs="*",
@@ -76,13 +81,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run_init(args: argparse.Namespace) -> int:
-    # deferred: db.addresses, db.database, db.default, db.replacing, db.schema — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.addresses import is_url
-    from sass_tui.db.database import configured_target
-    from sass_tui.db.default import create_default_database
-    from sass_tui.db.replacing import Held, keep_targets, what_init_replaces
-    from sass_tui.db.schema import connect, default_db_path
-
     target = configured_target(getattr(args, "db", None))
     if is_url(target):
         return _init_postgres(str(target), args.force)
@@ -103,8 +101,6 @@ def run_init(args: argparse.Namespace) -> int:
     # The old column copy follows another history: never read again, only
     # taking disk space.  None is built: the default people are fewer than
     # the copy's threshold (accelerator.MIN_PEOPLE), counted by SQLite.
-    # deferred: db.accelerator — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db import accelerator
 
     accelerator.forget(path.resolve())
     print(
@@ -125,9 +121,6 @@ def _replace_confirmed(where: str, held: Held) -> bool:
     """Say what replacing deletes, one line each (the people by source, the
     stored targets), then ask; without a terminal to ask on, refuse saying
     what `--force` would replace."""
-    # deferred: db.schema — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.schema import DatabaseError
-
     lines = held.lines()
     if not (sys.stdin.isatty() and sys.stderr.isatty()):
         raise DatabaseError(
@@ -148,11 +141,6 @@ def _init_postgres(url: str, force: bool) -> int:
     """`sass db init --db postgresql://...`: the schema and the default people,
     in one transaction; asks (or needs --force) before replacing people, and
     keeps the stored targets whose people are stored again."""
-    # deferred: db.database, db.postgres, db.replacing — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.database import Database, init_postgres
-    from sass_tui.db.postgres import shown
-    from sass_tui.db.replacing import keep_targets, what_init_replaces
-
     db = Database.open(url, create=True)
     try:
         with db.connection() as conn:
@@ -181,9 +169,6 @@ def _init_postgres(url: str, force: bool) -> int:
 
 
 def run_import_flat(args: argparse.Namespace) -> int:
-    # deferred: db.flatfile — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.flatfile import FlatFileError, FlatFiles
-
     if len(args.strength) > 4:
         raise FlatFileError("at most four strength files: strgh-par, shoulder, elbow, wrist")
     strength = dict(zip(("strength_par", "shoulder", "elbow", "wrist"), args.strength))
@@ -210,11 +195,8 @@ def run_import_ansur(args: argparse.Namespace) -> int:
 
 
 def run_copy(args: argparse.Namespace) -> int:
-    # deferred: db.accelerator, db.query, db.schema, model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db import accelerator
+    # deferred: db.query — off sass db init (sass_tui/startup.py)
     from sass_tui.db.query import QueryError, compile_query
-    from sass_tui.db.schema import DatabaseError
-    from sass_tui.model.text import printable
 
     wanted: set[tuple[str, str]] = set()
     for text in args.queries:  # before opening: a bad query touches nothing

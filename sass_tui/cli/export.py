@@ -8,6 +8,8 @@ import sys
 from typing import TYPE_CHECKING
 
 from sass_tui.cli.options import SubParsers, add_figure_options, figure_from_args, print_warnings
+from sass_tui.model.hanim import not_in_humanoid_note
+from sass_tui.model.hanim_x3d import export_hanim
 from sass_tui.model.paths import user_path
 
 if TYPE_CHECKING:
@@ -45,9 +47,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run_hanim(args: argparse.Namespace) -> int:
-    # deferred: model.hanim_x3d — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.hanim_x3d import export_hanim
-
     figure, warnings = figure_from_args(args)
     print_warnings(warnings)
     path = export_hanim(figure, user_path(args.output))
@@ -57,7 +56,7 @@ def run_hanim(args: argparse.Namespace) -> int:
 
 
 def run_gltf(args: argparse.Namespace) -> int:
-    # deferred: model.gltf — off sass --help, sass export hanim, sass --version (sass_tui/startup.py)
+    # deferred: model.gltf — off sass export hanim (sass_tui/startup.py)
     from sass_tui.model.gltf import check_path, export_gltf
 
     path = check_path(user_path(args.output))  # refused before the database is opened
@@ -71,9 +70,6 @@ def run_gltf(args: argparse.Namespace) -> int:
 
 def _note(figure: Figure) -> None:
     """What of the figure the humanoid (HAnim and glTF alike) leaves out."""
-    # deferred: model.hanim — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.hanim import not_in_humanoid_note
-
     note = not_in_humanoid_note(figure).strip()
     if note:
         print(f"note: {note.replace(' (Create Figure)', ' (sass fig)')}", file=sys.stderr)

@@ -12,6 +12,10 @@ from sass_tui.cli.options import (
     open_db,
     weighting_name,
 )
+from sass_tui.db.fit import load_family
+from sass_tui.db.query import parse_option
+from sass_tui.model.accommodation import measure_field, write_family
+from sass_tui.model.figure import Figure
 from sass_tui.model.vocabulary import GENDERS
 
 DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.fit.DEFAULT_POPULATION (no import here)
@@ -46,7 +50,9 @@ def register(commands: SubParsers) -> None:
         "of the real people the family covers.",
     )
     add_db_option(family)
-    family.add_argument("--gender", choices=GENDERS, required=True)
+    family.add_argument(
+        "--gender", choices=GENDERS, required=True, help="the gender of the people covered"
+    )
     family.add_argument(
         "--measures",
         type=measures_argument,
@@ -61,7 +67,13 @@ def register(commands: SubParsers) -> None:
         metavar="PERCENT",
         help="target coverage in percent (default 90)",
     )
-    family.add_argument("--kind", choices=("boundary", "distributed"), default="boundary")
+    family.add_argument(
+        "--kind",
+        choices=("boundary", "distributed"),
+        default="boundary",
+        help="figures on the ellipsoid's surface, or also on an inner shell at half its "
+        "radius (default boundary)",
+    )
     family.add_argument(
         "--population",
         metavar="QUERY",
@@ -80,12 +92,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: db.fit, db.query, model.accommodation, model.figure — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.fit import load_family
-    from sass_tui.db.query import parse_option
-    from sass_tui.model.accommodation import measure_field, write_family
-    from sass_tui.model.figure import Figure
-
     for name in args.measures:
         measure_field(name)  # a typo is reported before the database is opened
     population = parse_option(args.population, "--population")  # parsed once, passed on

@@ -12,8 +12,15 @@ from sass_tui.cli.options import (
     person_file_name,
     print_warnings,
 )
+from sass_tui.model.figfile import default_fig_name, write_fig
 from sass_tui.model.names import GIRTH
 from sass_tui.model.published_strength import EXAMPLE_DATA_SET, EXAMPLE_SOURCE
+from sass_tui.model.strength import (
+    StrengthSheet,
+    fig_section,
+    lower_limb_fig_section,
+    read_strength_file,
+)
 
 
 def register(commands: SubParsers) -> None:
@@ -44,21 +51,10 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: model.figfile — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.figfile import default_fig_name, write_fig
-
     figure, warnings = figure_from_args(args)
     extra_sections = []
     notes: list[str] = []
     if not args.no_strength:
-        # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
-        from sass_tui.model.strength import (
-            StrengthSheet,
-            fig_section,
-            lower_limb_fig_section,
-            read_strength_file,
-        )
-
         # No invented strength unless asked for by name: the arm's lines come
         # from a strength file the user gives, or the example data named.
         if args.strength is not None or args.strength_data == EXAMPLE_DATA_SET:

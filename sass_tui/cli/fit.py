@@ -14,6 +14,9 @@ from sass_tui.cli.options import (
     open_db,
     weighting_name,
 )
+from sass_tui.db.fit import check_mix, fit_test
+from sass_tui.db.fit_table import format_table
+from sass_tui.db.query import compile_conjuncts, parse, parse_option
 from sass_tui.model.published_strength import parse_strength_limit
 from sass_tui.model.vocabulary import GENDERS
 
@@ -71,7 +74,9 @@ def register(commands: SubParsers) -> None:
         "the unweighted figures beside",
     )
     add_virtual_option(fit)
-    fit.add_argument("--format", choices=("table", "json"), default="table")
+    fit.add_argument(
+        "--format", choices=("table", "json"), default="table", help="output format (default table)"
+    )
     fit.add_argument(
         "--strength",
         action="append",
@@ -91,10 +96,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: db.fit, db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.fit import check_mix, fit_test
-    from sass_tui.db.query import compile_conjuncts, parse, parse_option
-
     # Check everything before opening the database: a bad query touches nothing.
     # Each query is parsed here once and passed on parsed.
     limits = parse(args.limits)
@@ -126,8 +127,5 @@ def run(args: argparse.Namespace) -> int:
         json.dump(result.to_json(), sys.stdout, indent=1, allow_nan=False)
         sys.stdout.write("\n")
     else:
-        # deferred: db.fit_table — off sass --help, sass --version (sass_tui/startup.py)
-        from sass_tui.db.fit_table import format_table
-
         sys.stdout.write(format_table(result))
     return 0

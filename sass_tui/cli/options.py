@@ -6,7 +6,10 @@ import argparse
 import sys
 from typing import TYPE_CHECKING, TypeAlias
 
+from sass_tui.cli.progress import progress_for
 from sass_tui.model.errors import SassError
+from sass_tui.model.paths import user_path
+from sass_tui.model.text import printable
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS
 
 if TYPE_CHECKING:
@@ -29,15 +32,11 @@ def add_db_option(parser: argparse.ArgumentParser) -> None:
 def open_database(args: argparse.Namespace, create: bool = False):  # -> db.database.Database
     """The Database `--db` (or $SASS_DB) names, or the default file (built on
     first use, with a progress bar on a terminal)."""
-    # deferred: cli.progress — off sass fig, sass strength, sass export hanim … (sass_tui/startup.py)
-    from sass_tui.cli.progress import progress_for
-
-    # deferred: db.addresses, db.database, db.default, db.schema, model.paths — off sass serve (sass_tui/startup.py)
+    # deferred: db.addresses, db.database, db.default, db.schema — off sass fig, sass strength, sass serve … (sass_tui/startup.py)
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import Database, configured_target
     from sass_tui.db.default import needs_building
     from sass_tui.db.schema import default_db_path
-    from sass_tui.model.paths import user_path
 
     target = configured_target(getattr(args, "db", None))
     bar = None
@@ -56,7 +55,7 @@ def open_db(args: argparse.Namespace, create: bool = False):  # -> the db layer'
     the db layer's functions that take one: a SQLite file, or a PostgreSQL
     database for the verbs of POSTGRES_COMMANDS (db/addresses.py; for the
     others an address is refused, saying which verbs serve it)."""
-    # deferred: db.addresses, db.database, db.schema — off sass fig, sass --help, sass strength … (sass_tui/startup.py)
+    # deferred: db.addresses, db.database, db.schema — off sass fig, sass strength, sass serve … (sass_tui/startup.py)
     from sass_tui.db.addresses import POSTGRES_COMMANDS, is_url, sqlite_only
     from sass_tui.db.database import configured_target
     from sass_tui.db.schema import DatabaseError
@@ -145,16 +144,39 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
         default=50.0,
         help="percentile of every group, mass and stature (default 50)",
     )
-    parser.add_argument("--girth-percentile", type=percentile)
-    parser.add_argument("--joint-limit-percentile", type=percentile)
-    parser.add_argument("--cmass-percentile", type=percentile)
+    parser.add_argument(
+        "--girth-percentile",
+        type=percentile,
+        help="percentile of the girth group (default --percentile)",
+    )
+    parser.add_argument(
+        "--joint-limit-percentile",
+        type=percentile,
+        help="percentile of the joint-limit group (default --percentile)",
+    )
+    parser.add_argument(
+        "--cmass-percentile",
+        type=percentile,
+        help="percentile of the center-of-mass group (default --percentile)",
+    )
     mass = parser.add_mutually_exclusive_group()
     mass.add_argument("--mass", help="total mass, e.g. 80 or '176 lb' (kg if no unit)")
-    mass.add_argument("--mass-percentile", type=percentile)
+    mass.add_argument(
+        "--mass-percentile",
+        type=percentile,
+        help="percentile of the total mass (default --percentile)",
+    )
     stature = parser.add_mutually_exclusive_group()
     stature.add_argument("--stature", help="stature, e.g. 175 or '70 in' (cm if no unit)")
-    stature.add_argument("--stature-percentile", type=percentile)
-    parser.add_argument("--figure-type", choices=FIGURE_TYPES, default="skinny")
+    stature.add_argument(
+        "--stature-percentile", type=percentile, help="percentile of stature (default --percentile)"
+    )
+    parser.add_argument(
+        "--figure-type",
+        choices=FIGURE_TYPES,
+        default="skinny",
+        help="the JACK body model the .fig is for (report figure 2; default skinny)",
+    )
     parser.add_argument("--girth", metavar="F", help="girth population file")
     parser.add_argument("--jntlmt", metavar="F", help="joint-limit population file")
     parser.add_argument("--cmass", metavar="F", help="center-of-mass population file")
@@ -170,7 +192,7 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
 def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     """Build the figure the options describe, through a Session as the TUI
     does (each edit checked the same way); returns it and the load warnings."""
-    # deferred: model.figure, model.names, model.popfile, model.session, model.units — off sass serve (sass_tui/startup.py)
+    # deferred: model.figure, model.names, model.popfile, model.session, model.units — off sass query (sass_tui/startup.py)
     from sass_tui.model.figure import Figure, FigureError
     from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
     from sass_tui.model.popfile import PopulationData, read_global_beside, read_population_file
@@ -261,8 +283,5 @@ def person_file_name(name: str, suffix: str) -> str:
 
 
 def print_warnings(warnings: list[str]) -> None:
-    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.text import printable
-
     for warning in warnings:
         print(f"warning: {printable(warning)}", file=sys.stderr)

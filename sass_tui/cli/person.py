@@ -10,12 +10,15 @@ import json
 import sys
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_database
+from sass_tui.db.person_text import person_lines
 
 
 def register(commands: SubParsers) -> None:
     person = commands.add_parser("person", help="show people of the database, every value")
     add_db_option(person)
-    person.add_argument("--format", choices=("table", "json"), default="table")
+    person.add_argument(
+        "--format", choices=("table", "json"), default="table", help="output format (default table)"
+    )
     person.add_argument(
         "ids",
         nargs="+",
@@ -44,7 +47,4 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _table(record: dict, out) -> None:  # out: TextIO
-    # deferred: db.person_text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.person_text import person_lines
-
     out.write("".join(line + "\n" for line in person_lines(record)))

@@ -24,6 +24,14 @@ from sass_tui.cli.options import (
     open_db,
     weighting_name,
 )
+from sass_tui.db.population import (
+    missing_ids,
+    parse_id_list,
+    people_words,
+    population_of,
+)
+from sass_tui.db.population_files import write_population_files
+from sass_tui.db.query import parse
 from sass_tui.model.names import GROUP_TITLES
 from sass_tui.model.paths import regular_file
 
@@ -33,7 +41,11 @@ def register(commands: SubParsers) -> None:
         "population", help="make population files from the people a query selects"
     )
     add_db_option(population)
-    population.add_argument("--query", metavar="QUERY")
+    population.add_argument(
+        "--query",
+        metavar="QUERY",
+        help="the people this query selects (with --ids: of those people)",
+    )
     population.add_argument(
         "--ids",
         metavar="FILE",
@@ -59,15 +71,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: db.population, db.population_files, db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.population import (
-        missing_ids,
-        people_words,
-        population_of,
-    )
-    from sass_tui.db.population_files import write_population_files
-    from sass_tui.db.query import parse
-
     weighting = weighting_name(args)
     if args.query is None and args.ids is None and weighting is None:
         print(
@@ -117,9 +120,6 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _read_ids(name: str) -> list[int]:
-    # deferred: db.population — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.population import parse_id_list
-
     if name == "-":
         return parse_id_list(sys.stdin.read(), "standard input")
     path = regular_file(name)  # not a FIFO, which would block the read

@@ -11,10 +11,13 @@ PostgreSQL database (sass_tui/db/predict.py).
 from __future__ import annotations
 
 import argparse
+import csv
 import io
 import json
 import sys
 from typing import TYPE_CHECKING, Any, TextIO
+
+import numpy as np
 
 from sass_tui.cli.options import (
     SubParsers,
@@ -24,8 +27,12 @@ from sass_tui.cli.options import (
     weighting_name,
     whole_number,
 )
+from sass_tui.db.predict import open_predictor
+from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
+from sass_tui.model.prediction import MIN_PEOPLE, UnknownFieldError, field_unit, split_known
+from sass_tui.model.units import UnitError, parse_quantity
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -50,7 +57,9 @@ def register(commands: SubParsers) -> None:
         "in cm and kg unless they carry a unit.",
     )
     add_db_option(predict)
-    predict.add_argument("--gender", choices=GENDERS, required=True)
+    predict.add_argument(
+        "--gender", choices=GENDERS, required=True, help="the person's gender: the people fitted"
+    )
     predict.add_argument(
         "--known",
         metavar="NAME=VALUE",
@@ -66,7 +75,12 @@ def register(commands: SubParsers) -> None:
         "real person of the gender",
     )
     add_virtual_option(predict)
-    predict.add_argument("--format", choices=("table", "json", "csv"), default="table")
+    predict.add_argument(
+        "--format",
+        choices=("table", "json", "csv"),
+        default="table",
+        help="output format (default table)",
+    )
     predict.add_argument(
         "-o",
         dest="figure",
@@ -95,9 +109,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: db.predict — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.predict import open_predictor
-
     if args.input is not None:
         if args.known or args.figure or args.nearest:
             raise PredictArgumentError("--input takes neither --known, -o nor --nearest")
@@ -111,8 +122,6 @@ def run(args: argparse.Namespace) -> int:
         raise PredictArgumentError(
             f"-o {args.figure}: the file must end in .fig, .x3d, .glb or .gltf"
         )
-    # deferred: model.prediction — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.prediction import MIN_PEOPLE, split_known
 
     pairs = [pair for item in args.known for pair in split_known(item)]
     conn = open_db(args)
@@ -181,9 +190,6 @@ def prediction_json(
 
 
 def _write_csv(prediction: Prediction, out: TextIO) -> None:
-    # deferred: csv — off sass predict (sass_tui/startup.py)
-    import csv
-
     writer = csv.writer(out, lineterminator="\n")
     writer.writerow(["field", "value", "unit", "low", "high", "known"])
     for name, e in prediction.values.items():
@@ -213,23 +219,17 @@ def write_prediction_figure(prediction: Prediction, path: str) -> str:
     """The predicted person as a .fig file, an HAnim .x3d humanoid or a glTF
     body; cells the model has no value for come from the default population
     (the file says which)."""
-    # deferred: model.figure — off sass --help, sass predict, sass --version (sass_tui/startup.py)
+    # deferred: model.figure, model.figfile, model.gltf, model.hanim_x3d — off sass predict (sass_tui/startup.py)
+    from sass_tui.model.figfile import write_fig
     from sass_tui.model.figure import Figure
+    from sass_tui.model.gltf import export_gltf
+    from sass_tui.model.hanim_x3d import export_hanim
 
     figure = prediction.figure(Figure.default(prediction.gender))
     if path.lower().endswith((".glb", ".gltf")):
-        # deferred: model.gltf — off sass --help, sass predict, sass --version (sass_tui/startup.py)
-        from sass_tui.model.gltf import export_gltf
-
         return ", ".join(str(p) for p in export_gltf(figure, path))
     if path.lower().endswith(".x3d"):
-        # deferred: model.hanim_x3d — off sass --help, sass predict, sass --version (sass_tui/startup.py)
-        from sass_tui.model.hanim_x3d import export_hanim
-
         return str(export_hanim(figure, path))
-    # deferred: model.figfile — off sass --help, sass predict, sass --version (sass_tui/startup.py)
-    from sass_tui.model.figfile import write_fig
-
     return str(write_fig(figure, path))
 
 
@@ -241,17 +241,6 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
     through.  The output keeps the input columns as they were, an empty known
     cell filled with its prediction, and adds F, F.low, F.high for every
     predicted field F (F.low and F.high only, for a field that is an input column)."""
-    # deferred: csv — off sass predict (sass_tui/startup.py)
-    import csv
-
-    # deferred: numpy — off sass --help, sass --version (sass_tui/startup.py)
-    import numpy as np
-
-    # deferred: model.atomic, model.prediction, model.units — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.atomic import write_text_atomic
-    from sass_tui.model.prediction import UnknownFieldError, field_unit
-    from sass_tui.model.units import UnitError, parse_quantity
-
     try:
         with open(regular_file(source), encoding="utf-8-sig", newline="") as handle:
             rows = list(csv.reader(handle))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math  # already imported by db.query: no start-up cost
 import sys
 from collections.abc import Iterable
 from itertools import islice
@@ -16,12 +17,19 @@ from sass_tui.cli.options import (
     open_database,
     weighting_name,
 )
+from sass_tui.db.query import PERSON_FIELDS, QueryError, compile_query, demonstration_hint
+from sass_tui.model.text import is_printable, is_printable_lines, printable
 
 
 def register(commands: SubParsers) -> None:
     query = commands.add_parser("query", help="query the anthropometric database")
     add_db_option(query)
-    query.add_argument("--format", choices=("table", "csv", "json"), default="table")
+    query.add_argument(
+        "--format",
+        choices=("table", "csv", "json"),
+        default="table",
+        help="output format (default table)",
+    )
     query.add_argument(
         "--count",
         action="store_true",
@@ -54,13 +62,7 @@ def run(args: argparse.Namespace) -> int:
         _list_fields(args.format)
         return 0
     if args.query is None:
-        # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
-        from sass_tui.db.query import QueryError
-
         raise QueryError('give a QUERY, e.g. "stature > 180 cm", or --fields to list the fields')
-    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import compile_query
-
     compiled = compile_query(args.query)  # before opening: a bad query touches nothing
     db = open_database(args)
     with db.connection() as conn:  # engine errors (a server gone mid-listing) as messages
@@ -69,9 +71,6 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Query
-    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import PERSON_FIELDS
-
     weighting = weighting_name(args)
     if args.count:
         if weighting is not None:
@@ -83,18 +82,15 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
             _say_who_else(conn, query.compiled, found)
         return
     if weighting is not None:
-        # deferred: model.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
+        # deferred: model.targets — off sass query, sass query --count (sass_tui/startup.py)
         from sass_tui.model.targets import TargetError
 
         raise TargetError("--target and --virtual weight a count: give --count too")
     rows = query.person_rows()  # tuples in PERSON_FIELDS order
     out = sys.stdout
     if args.format == "csv":
-        # deferred: csv — off sass query, sass query --count (sass_tui/startup.py)
+        # deferred: csv — off sass query (sass_tui/startup.py)
         import csv
-
-        # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
-        from sass_tui.model.text import is_printable, printable
 
         # Names and sources come from files and the CSV may go to a terminal: a
         # control character is written escaped.  One check over a chunk's names
@@ -156,8 +152,7 @@ def _list_fields(form: str) -> None:
 
 def _weighted_count(conn, query, name: str) -> None:  # query: db.query.CompiledQuery
     """The raw count, and beside it the target's weighted count and share."""
-    # deferred: db.shipped, db.targets — off sass query, sass query --count, sass --help … (sass_tui/startup.py)
-    from sass_tui.db.query import compile_query
+    # deferred: db.shipped, db.targets — off sass query, sass query --count (sass_tui/startup.py)
     from sass_tui.db.shipped import load_weights
     from sass_tui.db.targets import weighted_count
 
@@ -182,9 +177,6 @@ def _weighted_count(conn, query, name: str) -> None:  # query: db.query.Compiled
 
 def _say_who_else(conn, query, found: int) -> None:  # query: db.query.CompiledQuery
     """A query that found no real person: the demonstration people it would find."""
-    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import demonstration_hint
-
     hint = demonstration_hint(conn, query, found)
     if hint:
         print(hint, file=sys.stderr)
@@ -215,9 +207,6 @@ def _table_lines(rows: list[tuple]) -> str:
     stored, with one format per row, and checked once; only a chunk that holds
     a control character, a missing value or a value of another type is made
     again with every text through printable() (docs/performance.md)."""
-    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.text import is_printable_lines, printable
-
     if not any(None in row for row in rows):
         try:
             text = "".join([_LINE % row for row in rows])
@@ -252,13 +241,9 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
     function, when the numbers are all finite numbers (their sum is finite;
     None or a text raises TypeError); otherwise by the encoder, person by
     person (benchmarks/query_formats.py)."""
-    # deferred: json, math — only --format json writes JSON; off sass query (sass_tui/startup.py)
+    # deferred: json — only --format json writes JSON; off sass query (sass_tui/startup.py)
     import json
-    import math
     from json.encoder import encode_basestring_ascii as quote
-
-    # deferred: db.query — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import PERSON_FIELDS
 
     try:
         finite = all(math.isfinite(sum(map(itemgetter(k), rows))) for k in (3, 4, 6))
@@ -284,13 +269,6 @@ def _write_json(out: TextIO, rows: list[tuple]) -> int:
 
 def _finite(person: dict) -> dict:
     """The person for JSON, which has no Infinity or NaN: refuse one stored so."""
-    # deferred: math — only --format json writes JSON; off sass query (sass_tui/startup.py)
-    import math
-
-    # deferred: db.query, model.text — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import QueryError
-    from sass_tui.model.text import printable
-
     for key, value in person.items():
         if isinstance(value, float) and not math.isfinite(value):
             raise QueryError(

@@ -8,14 +8,19 @@ working directory; then ui/serve.py serves.
 from __future__ import annotations
 
 import argparse
+import secrets
+import socket
+import ssl
 import sys
 import time
+from importlib.util import find_spec
 from ipaddress import ip_address
 from pathlib import Path
 from urllib.parse import urlsplit
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db, positive_number
 from sass_tui.model.errors import SassError
+from sass_tui.model.paths import data_dir, regular_file, user_path
 
 # secrets.token_urlsafe(32): 256 bits.  A token file's must have at least
 # 128 bits: 22 characters of the 64 a URL carries unquoted (6 bits each).
@@ -91,12 +96,9 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: importlib.util — off sass --help (sass_tui/startup.py)
-    from importlib.util import find_spec
-
     if find_spec("textual_serve") is None:  # the [serve] extra is not installed
         raise ServeError("sass serve needs textual-serve: pip install 'sass-tui[serve]'")
-    # deferred: ui.serve — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: ui.serve — off sass serve (sass_tui/startup.py)
     from sass_tui.ui.serve import ServeOptions, serve
 
     loopback = is_loopback(args.host)
@@ -128,7 +130,7 @@ def run(args: argparse.Namespace) -> int:
     err = sys.stderr
     print(f"sass serve: web sessions read and write files in {workdir}", file=err)
     if db is not None:
-        # deferred: db.postgres — off sass --help, sass serve, sass --version (sass_tui/startup.py)
+        # deferred: db.postgres — off sass serve (sass_tui/startup.py)
         from sass_tui.db.postgres import shown
 
         named = shown(db) if isinstance(db, str) else db  # never the password
@@ -151,9 +153,6 @@ def run(args: argparse.Namespace) -> int:
 
 def is_loopback(host: str) -> bool:
     """True when every address `host` names is this machine's loopback."""
-    # deferred: socket — off sass --help (sass_tui/startup.py)
-    import socket
-
     try:
         infos = socket.getaddrinfo(host, None)
     except (OSError, UnicodeError):
@@ -168,11 +167,6 @@ def tls_context(certfile: str | None, keyfile: str | None):  # -> ssl.SSLContext
         return None
     if certfile is None:
         raise ServeError("--keyfile needs --certfile (the certificate it belongs to)")
-    # deferred: ssl — off sass --help, sass --version (sass_tui/startup.py)
-    import ssl
-
-    # deferred: model.paths — off sass serve (sass_tui/startup.py)
-    from sass_tui.model.paths import regular_file
 
     cert = regular_file(certfile)
     key = regular_file(keyfile) if keyfile else None
@@ -194,17 +188,11 @@ def check_public_url(url: str) -> None:
 
 
 def new_token() -> str:
-    # deferred: secrets — off sass --help, sass serve, sass --version (sass_tui/startup.py)
-    import secrets
-
     return secrets.token_urlsafe(TOKEN_BYTES)
 
 
 def read_token(name: str) -> str:
     """The token in file `name` (its first line, spaces around it dropped)."""
-    # deferred: model.paths — off sass serve (sass_tui/startup.py)
-    from sass_tui.model.paths import regular_file
-
     path = regular_file(name)
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
@@ -225,18 +213,13 @@ def served_workdir(name: str | None) -> Path:
     """--workdir (made if missing), or a new directory under the user's data
     directory; its real path, so that no link in it moves later."""
     if name is None:
-        # deferred: tempfile — off sass --help, sass serve (sass_tui/startup.py)
+        # deferred: tempfile — off sass serve (sass_tui/startup.py)
         import tempfile
-
-        # deferred: model.paths — off sass serve (sass_tui/startup.py)
-        from sass_tui.model.paths import data_dir
 
         base = data_dir() / "serve"
         base.mkdir(parents=True, exist_ok=True)
         stamp = time.strftime("%Y%m%d-%H%M%S-")
         return Path(tempfile.mkdtemp(prefix=stamp, dir=base)).resolve()
-    # deferred: model.paths — off sass serve (sass_tui/startup.py)
-    from sass_tui.model.paths import user_path
 
     path = user_path(name)
     try:
@@ -256,7 +239,6 @@ def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | Non
     # deferred: db.addresses, db.database, db.schema, model.paths — off sass serve (sass_tui/startup.py)
     from sass_tui.db.addresses import is_url
     from sass_tui.db.database import configured_target
-    from sass_tui.model.paths import user_path
 
     db = getattr(args, "db", None)
     target = configured_target(db)
@@ -269,7 +251,7 @@ def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | Non
         return str(target)
     if not read_only:
         return user_path(db).resolve() if db else None
-    # deferred: db.schema — off sass --help, sass serve, sass --version (sass_tui/startup.py)
+    # deferred: db.schema — off sass serve (sass_tui/startup.py)
     from sass_tui.db.schema import default_db_path
 
     open_db(args).close()

@@ -20,6 +20,7 @@ import argparse
 import json
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS
 from sass_tui.model.published_grip import (
     CITATION as GRIP_CITATION,
@@ -49,6 +50,21 @@ from sass_tui.model.published_strength import (
     ordinal,
     text_plot,
 )
+from sass_tui.model.strength import (
+    ASSUMED_LABEL,
+    ASSUMED_MODIFIERS,
+    EXTRAPOLATION_MARGIN_DEG,
+    StrengthError,
+    StrengthSheet,
+    assumed_modifiers_asked,
+    check_angle,
+    joint_limit_range,
+    motion_index,
+    parse_joint_axis,
+    parse_side_factor,
+    read_strength_file,
+)
+from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
 from sass_tui.model.vocabulary import (
     GENDERS,
     HANDEDNESS,
@@ -143,7 +159,9 @@ def register(commands: SubParsers) -> None:
         action="store_true",
         help="also draw the torque-angle curve over the joint's range (hip, knee, ankle)",
     )
-    parser.add_argument("--format", choices=("text", "json"), default="text")
+    parser.add_argument(
+        "--format", choices=("text", "json"), default="text", help="output format (default text)"
+    )
     parser.add_argument(
         "--person",
         metavar="ID",
@@ -152,7 +170,9 @@ def register(commands: SubParsers) -> None:
     )
     add_db_option(parser)
     parser.add_argument("--gender", choices=GENDERS, help="default male")
-    parser.add_argument("--side", choices=SIDES, default="right")
+    parser.add_argument(
+        "--side", choices=SIDES, default="right", help="the body side of the joint (default right)"
+    )
     parser.add_argument(
         "--unit",
         choices=(*TORQUE_UNITS, *FORCE_UNITS),
@@ -170,10 +190,25 @@ def register(commands: SubParsers) -> None:
         default=50.0,
         help="percentile of the joint limits the angles must respect",
     )
-    parser.add_argument("--strength-type", choices=STRENGTH_TYPES, default="isometric")
+    parser.add_argument(
+        "--strength-type",
+        choices=STRENGTH_TYPES,
+        default="isometric",
+        help="the kind of exertion (report section 12.2.1; default isometric)",
+    )
     parser.add_argument("--motion-speed", type=float, default=0.0, help="deg/s")
-    parser.add_argument("--handedness", choices=HANDEDNESS, default="right")
-    parser.add_argument("--training-level", type=float, default=0.0)
+    parser.add_argument(
+        "--handedness",
+        choices=HANDEDNESS,
+        default="right",
+        help="the figure's dominant hand (default right)",
+    )
+    parser.add_argument(
+        "--training-level",
+        type=float,
+        default=0.0,
+        help="level of strength training (report section 12.2.1; 0 = none)",
+    )
     parser.add_argument(
         "--fatigue-level",
         type=float,
@@ -196,13 +231,10 @@ def register(commands: SubParsers) -> None:
 
 def run(args: argparse.Namespace) -> int:
     if args.motion.strip().lower().replace(" ", "_") == ARM_FORCE:
-        # deferred: cli.strength_arm (numpy, model.hanim) — off sass --help, sass --version (sass_tui/startup.py)
+        # deferred: cli.strength_arm (model.posture, model.hanim) — off sass strength (sass_tui/startup.py)
         from sass_tui.cli.strength_arm import run_arm_force
 
         return run_arm_force(args)
-    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.strength import StrengthError
-
     for option in ("posture", "direction", "capable"):
         if getattr(args, option) is not None:
             raise StrengthError(f"--{option} is for {ARM_FORCE} (the Arm Force Field)")
@@ -253,7 +285,7 @@ def run(args: argparse.Namespace) -> int:
 
 def _take_person(args: argparse.Namespace) -> None:
     """A database person's own gender, age, mass and stature into `args`."""
-    # deferred: db.individual — off sass --help, sass strength, sass --version (sass_tui/startup.py)
+    # deferred: db.individual — off sass strength (sass_tui/startup.py)
     from sass_tui.db.individual import find_person, person_record
 
     given = [
@@ -289,10 +321,6 @@ def _take_person(args: argparse.Namespace) -> None:
 
 def _figure(args: argparse.Namespace):  # -> Figure
     """The figure whose mass, stature and joint limits the answer uses."""
-    # deferred: model.figure, model.units — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.units import parse_quantity
-
     figure = Figure.default(args.gender)
     figure.set_group_percentile(JOINT_LIMITS, args.joint_limit_percentile)
     if args.mass is not None:
@@ -303,9 +331,6 @@ def _figure(args: argparse.Namespace):  # -> Figure
 
 
 def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
-    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.strength import StrengthError
-
     out = []
     for item in args.angles:
         axis, sep, value = item.partition("=")
@@ -317,10 +342,6 @@ def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
 
 def _published(args: argparse.Namespace, motion: str | None) -> int:
     """A hip, knee or ankle motion from Anderson et al. 2007."""
-    # deferred: model.strength, model.units — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.strength import check_angle, joint_limit_range
-    from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
-
     if motion is None:
         raise PublishedStrengthError(
             f"{args.motion.strip()!r}: {CITATION} covers {', '.join(LOWER_LIMB_MOTIONS)}"
@@ -446,20 +467,6 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
 
 def _example(args: argparse.Namespace) -> int:
     """An arm motion from the example strength file (or --file)."""
-    # deferred: model.strength — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.strength import (
-        ASSUMED_LABEL,
-        ASSUMED_MODIFIERS,
-        EXTRAPOLATION_MARGIN_DEG,
-        StrengthError,
-        StrengthSheet,
-        assumed_modifiers_asked,
-        motion_index,
-        parse_joint_axis,
-        parse_side_factor,
-        read_strength_file,
-    )
-
     if args.load is not None:
         raise StrengthError(
             "--load: the example data have no spread of people; percent capable is given "
@@ -540,9 +547,6 @@ def _example(args: argparse.Namespace) -> int:
 
 def _grip(args: argparse.Namespace, motion: str | None) -> int:
     """A hand or thumb-finger grip force from FAA HFDS 2003 exhibit 14.5.2.1."""
-    # deferred: model.units — only a grip's answer converts here; the lookups convert in model.strength
-    from sass_tui.model.units import DISPLAY, convert, unit_name
-
     if motion is None:
         raise PublishedStrengthError(
             f"{args.motion.strip()!r}: {GRIP_CITATION} as shipped covers {', '.join(GRIP_MOTIONS)} "

@@ -11,13 +11,27 @@ sample of the people a design is for (docs/target-populations.md).
 from __future__ import annotations
 
 import argparse
+import gzip
 import sys
 from typing import TYPE_CHECKING, TextIO
 
 from sass_tui.cli.options import VIRTUAL_PREFIX, SubParsers, add_db_option, open_db
+from sass_tui.db.query import parse_option
+from sass_tui.db.targets import (
+    BOTH,
+    SHIPPED,
+    TargetExistsError,
+    check_name,
+    drop_target,
+    list_targets,
+    make_target,
+    store_target,
+    target_exists,
+)
 from sass_tui.model.datasets import NHANES, NHANES_NAME, NHANES_WEIGHT, shipped_text
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import regular_file
+from sass_tui.model.target_sample import SampleError, is_weighting_field, read_sample
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -104,8 +118,7 @@ def run(args: argparse.Namespace) -> int:
             if args.list:
                 _list(conn, sys.stdout)
             else:
-                # deferred: db.targets, db.virtual — off sass --help, sass --version, sass target (sass_tui/startup.py)
-                from sass_tui.db.targets import drop_target
+                # deferred: db.virtual — off sass target (sass_tui/startup.py)
                 from sass_tui.db.virtual import drop_virtual
 
                 if args.drop.startswith(VIRTUAL_PREFIX):
@@ -124,9 +137,8 @@ def run(args: argparse.Namespace) -> int:
 
 def by_fields(text: str) -> list[str]:
     """`--by stature,mass,sittingheight` -> query-language fields."""
-    # deferred: model.accommodation, model.target_sample — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: model.accommodation — off sass target (sass_tui/startup.py)
     from sass_tui.model.accommodation import measure_field
-    from sass_tui.model.target_sample import is_weighting_field
 
     fields: list[str] = []
     for name in (n.strip() for n in text.split(",")):
@@ -151,11 +163,6 @@ def by_fields(text: str) -> list[str]:
 
 
 def _make(args: argparse.Namespace) -> int:
-    # deferred: db.query, db.targets, model.target_sample — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import parse_option
-    from sass_tui.db.targets import BOTH, check_name, make_target, store_target, target_exists
-    from sass_tui.model.target_sample import read_sample
-
     # Everything that needs no database first: a bad input touches nothing.
     check_name(args.name)
     fields = by_fields(args.by)
@@ -215,12 +222,6 @@ def _make(args: argparse.Namespace) -> int:
 def sample_text(name: str) -> str:
     """The text of a sample: the shipped NHANES adults by name, a .gz file
     decompressed, else the file."""
-    # deferred: gzip — off sass --help, sass --version (sass_tui/startup.py)
-    import gzip
-
-    # deferred: model.target_sample — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.target_sample import SampleError
-
     if name == NHANES_NAME:
         return shipped_text(NHANES)
     path = regular_file(name)
@@ -236,9 +237,6 @@ def sample_text(name: str) -> str:
 
 
 def _replace(name: str) -> bool:
-    # deferred: db.targets — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.targets import TargetExistsError
-
     if not (sys.stdin.isatty() and sys.stderr.isatty()):
         raise TargetExistsError(f"a target named {name!r} exists; give --force to replace it")
     sys.stderr.write(f"a target named {name!r} exists; replace it? [y/N] ")
@@ -288,9 +286,6 @@ def _report(target: Target, weightings: dict[str, Weighting], incomplete: int, o
 
 
 def _list(conn, out: TextIO) -> None:  # conn: the database layer's connection
-    # deferred: db.targets — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.targets import SHIPPED, list_targets
-
     targets = list_targets(conn)
     stored = {t.name for t in targets}
     if not targets:

@@ -40,6 +40,7 @@ from __future__ import annotations
 import json
 import os
 import sqlite3
+import struct
 import threading
 from dataclasses import dataclass
 from pathlib import Path
@@ -82,9 +83,6 @@ class Unsupported(Exception):
 def data_version(conn: sqlite3.Connection) -> tuple[int, ...]:
     """The key of the copy: header change counter, page count and schema cookie,
     with the file's size, mtime and inode.  Call inside a read transaction."""
-    # deferred: struct — off sass query --count (sass_tui/startup.py)
-    import struct
-
     path = database_path(conn)
     with open(path, "rb") as f:
         header = f.read(100)

@@ -14,10 +14,10 @@ from __future__ import annotations
 import os
 import sys
 import threading
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from sass_tui.db.addresses import is_url
 from sass_tui.db.default import fill_default, open_database
@@ -31,6 +31,8 @@ if TYPE_CHECKING:
     from sass_tui.db.values import Values
     from sass_tui.model.accommodation import Family
     from sass_tui.model.prediction import Predictor
+
+T = TypeVar("T")
 
 
 def configured_target(given: str | Path | None) -> str | Path | None:
@@ -220,18 +222,11 @@ class Database:
         from sass_tui.db.ansur import import_ansur
 
         with self.connection() as conn:
-            if self.dialect == "postgresql":
-                # deferred: db.postgres — off sass db init (sass_tui/startup.py)
-                from sass_tui.db.postgres import import_staged
-
-                return import_staged(
-                    conn,
-                    lambda staging: import_ansur(
-                        staging, files, progress, label=label, cancel=cancel
-                    ),
-                    cancel=cancel,
-                )
-            return import_ansur(conn, files, progress, label=label, cancel=cancel)
+            return store_people(
+                conn,
+                lambda storing: import_ansur(storing, files, progress, label=label, cancel=cancel),
+                cancel,
+            )
 
     def import_flat(
         self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
@@ -241,16 +236,25 @@ class Database:
         from sass_tui.db.flatfile import import_flat_files
 
         with self.connection() as conn:
-            if self.dialect == "postgresql":
-                # deferred: db.postgres — off sass db init (sass_tui/startup.py)
-                from sass_tui.db.postgres import import_staged
+            return store_people(
+                conn, lambda storing: import_flat_files(storing, files, progress, cancel), cancel
+            )
 
-                return import_staged(
-                    conn,
-                    lambda staging: import_flat_files(staging, files, progress, cancel),
-                    cancel=cancel,
-                )
-            return import_flat_files(conn, files, progress, cancel)
+
+def store_people(conn: Any, load: Callable[[Any], T], cancel: Cancel | None = None) -> T:
+    """The one place that decides how an import stores people, for the command
+    line and the screens alike (Database.import_ansur and import_flat, which
+    QueryLists's imports call): on SQLite `load` runs on the file's own
+    connection (its transaction is the import's); on PostgreSQL it runs on a
+    SQLite staging file whose people are then copied in one transaction
+    (db/postgres.py's import_staged), so a failure or a cancel stores nothing."""
+    # db/dialect.py's dialect_of, which imports db/postgres.py: off sass query.
+    if getattr(conn, "dialect", "sqlite") == "postgresql":
+        # deferred: db.postgres — off sass query, sass db init (sass_tui/startup.py)
+        from sass_tui.db.postgres import import_staged
+
+        return import_staged(conn, load, cancel=cancel)
+    return load(conn)
 
 
 def init_postgres(url: str, progress: Progress | None = None, *, force: bool) -> dict[str, int]:

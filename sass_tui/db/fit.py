@@ -48,9 +48,11 @@ from sass_tui.db.query import (
     parsed,
     real_people_only,
 )
+from sass_tui.db.values import load_values
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
 from sass_tui.model.percent_capable import strength_limit_probability
+from sass_tui.model.targets import kish_effective_n
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -286,9 +288,6 @@ def fit_test(
 def _target_share(
     target: TargetWeights, ids: npt.NDArray[np.int64], passes: npt.NDArray[np.float64]
 ) -> TargetShare:
-    # deferred: model.targets — off sass fit, sass family (sass_tui/startup.py)
-    from sass_tui.model.targets import kish_effective_n
-
     w = target.of(ids)
     measured = ~np.isnan(passes).any(axis=1)
     fits = np.where(measured, np.nan_to_num(passes, nan=1.0).prod(axis=1), 0.0)
@@ -439,10 +438,6 @@ def load_family(
     `progress(steps done, 3)`: the people read, the model, the family built;
     `cancel` stops it with Cancelled between them (it writes nothing).
     `weighted_to` (a target population of `gender`): the target's people, weighted."""
-    # deferred: db.predict, db.values — off sass fit (sass_tui/startup.py)
-    from sass_tui.db.predict import open_predictor
-    from sass_tui.db.values import load_values
-
     if gender not in GENDERS:
         raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
     fields = [measure_field(m) for m in measures]
@@ -461,6 +456,9 @@ def load_family(
     if len(values) == 0:
         raise FitError(f"the population {people_query.text!r} has no {gender} people")
     with interruptible(conn, cancel, "the family"):
+        # deferred: db.predict — off sass fit (sass_tui/startup.py)
+        from sass_tui.db.predict import open_predictor
+
         model = predictor if predictor is not None else open_predictor(conn)
     steps(2, 3)
     weights = None if weighted_to is None else weighted_to.of(values.ids)
@@ -468,9 +466,6 @@ def load_family(
         gender, fields, values.ids, values.names, values.matrix, target, model, kind, weights
     )
     if weighted_to is not None and weights is not None:
-        # deferred: model.targets — off sass fit, sass family (sass_tui/startup.py)
-        from sass_tui.model.targets import kish_effective_n
-
         used = ~np.isnan(values.matrix).any(axis=1)
         family = replace(
             family,
@@ -529,9 +524,6 @@ def limit_histograms(
     """One histogram per limited numeric field (in the order the limits name
     them) of the people `population` selects, with each limit's value inside
     the binned range so that it can be drawn on it."""
-    # deferred: db.values — off sass fit (sass_tui/startup.py)
-    from sass_tui.db.values import load_values
-
     lines = limit_lines(limits)
     fields = list(dict.fromkeys(line.field for line in lines))
     if not fields:

@@ -23,7 +23,6 @@ connection or the lock.
 
 from __future__ import annotations
 
-import sqlite3
 import threading
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -31,12 +30,20 @@ from functools import wraps
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ParamSpec, TypeVar
 
-from sass_tui.db.database import engine_errors
+from sass_tui.db import accelerator
+from sass_tui.db.addresses import is_url
+from sass_tui.db.database import Database, engine_errors
 from sass_tui.db.dialect import dialect_of, mark_of
-from sass_tui.db.flatfile import FlatFiles, import_flat_files
+from sass_tui.db.fit import fit_test, limit_histograms
+from sass_tui.db.flatfile import FlatFiles
+from sass_tui.db.individual import fetch_individual
+from sass_tui.db.population import population_of
+from sass_tui.db.postgres import connect_postgres
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import LIST_FIELDS, CompiledQuery, compile_query, demonstration_hint
 from sass_tui.db.schema import DatabaseError, connect, transaction
+from sass_tui.db.shipped import load_weights
+from sass_tui.db.targets import SHIPPED, list_targets, weighted_count
 from sass_tui.model.errors import SassError
 
 if TYPE_CHECKING:
@@ -75,7 +82,7 @@ def _serialised(method: Callable[P, R]) -> Callable[P, R]:
     return locked
 
 
-# People searched between two progress reports of a query (QueryLists.run).
+# People searched between two progress reports of a query (QueryLists.run_chunk).
 RUN_CHUNK = 20_000
 QUERY_LIST = "query"
 SELECTED_LIST = "selected"
@@ -135,6 +142,12 @@ class QueryLists:
     def __init__(self, conn: Any):
         # sqlite3's connection, or db/postgres.py's PostgresConnection
         self._conn: Any = conn
+        # People searched between two progress reports of a query (run); a
+        # test makes it smaller to see several reports on a small database.
+        self.run_chunk = RUN_CHUNK
+        # The Database service over the same connection: what it does for the
+        # command line (the imports, staged on PostgreSQL) it does for the screens.
+        self._database = Database(conn, None)
         # Not reentrant: a screen's exclusive(wait=False) while its own thread
         # holds the lists is refused as well (tests hold them so).
         self._lock = threading.Lock()
@@ -188,13 +201,7 @@ class QueryLists:
         it names (`postgresql://...`).  `read_only`: any change to the database
         is refused (SQLite's read-only mode; PostgreSQL's read-only session,
         also when $SASS_READ_ONLY says so: db/postgres.py)."""
-        # deferred: db.addresses — only open() needs it; importing db.lists does not load it
-        from sass_tui.db.addresses import is_url
-
         if is_url(target):
-            # deferred: db.postgres — only open() needs it; importing db.lists does not load it
-            from sass_tui.db.postgres import connect_postgres
-
             return cls(
                 connect_postgres(
                     str(target),
@@ -244,12 +251,9 @@ class QueryLists:
         A bad query raises QueryError and leaves both lists as they were.
 
         With `progress` or `cancel` the people are searched in id ranges of
-        about RUN_CHUNK people: `progress(people searched, people in the
+        about `run_chunk` people: `progress(people searched, people in the
         database)` after each, and `cancel` stops it with Cancelled (between
         ranges or inside one), the lists as they were."""
-        # deferred: db.accelerator — numpy only on a large database
-        from sass_tui.db import accelerator
-
         compiled = self._compile(text)
         where, params = compiled.sql(self.dialect)
         sql = (
@@ -284,7 +288,7 @@ class QueryLists:
     def _run_in_ranges(
         self, sql: str, params: tuple[object, ...], steps: Steps, cancel: Cancel | None
     ) -> int:
-        """The query over id ranges, each about RUN_CHUNK people wide; the people
+        """The query over id ranges, each about `run_chunk` people wide; the people
         searched are estimated from the ids passed (exact at the end)."""
         low, high, total = self._conn.execute(
             "SELECT min(id_num), max(id_num), count(*) FROM person"
@@ -292,7 +296,7 @@ class QueryLists:
         steps(0, total)
         if not total:
             return 0
-        ranges = max(1, -(-total // RUN_CHUNK))
+        ranges = max(1, -(-total // self.run_chunk))
         span = high - low + 1
         cuts = [low + span * k // ranges for k in range(ranges)] + [high + 1]
         ranged = f"{sql} AND p.id_num >= {self._mark} AND p.id_num < {self._mark}"
@@ -415,16 +419,7 @@ class QueryLists:
         self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
     ) -> int:
         """Load flat files (one transaction: a failure or a cancel stores nothing)."""
-        if self.dialect == "postgresql":
-            # deferred: db.postgres — only import_files() needs it; importing db.lists does not load it
-            from sass_tui.db.postgres import import_staged
-
-            return import_staged(
-                self._conn,
-                lambda staging: import_flat_files(staging, files, progress, cancel),
-                cancel=cancel,
-            )
-        return import_flat_files(self._conn, files, progress, cancel)
+        return self._database.import_flat(files, progress, cancel)
 
     @_serialised
     def import_ansur(
@@ -436,18 +431,8 @@ class QueryLists:
     ) -> int:
         """Load an ANSUR II format file under the source `label` (one
         transaction: a failure or a cancel stores nothing); returns how many."""
-        # deferred: db.ansur — only import_ansur() needs it; importing db.lists does not load it
-        from sass_tui.db.ansur import import_ansur
-
-        def load(conn: sqlite3.Connection) -> int:
-            return sum(import_ansur(conn, [path], progress, label=label, cancel=cancel).values())
-
-        if self.dialect == "postgresql":
-            # deferred: db.postgres — only import_ansur() needs it; importing db.lists does not load it
-            from sass_tui.db.postgres import import_staged
-
-            return import_staged(self._conn, load, cancel=cancel)
-        return load(self._conn)
+        counts = self._database.import_ansur([path], label=label, progress=progress, cancel=cancel)
+        return sum(counts.values())
 
     @_serialised
     def selected_ids(self) -> list[int]:
@@ -472,17 +457,11 @@ class QueryLists:
     @_serialised
     def fetch_person(self, id_num: int) -> Individual:
         """The person `id_num` (e.g. a row of the query list), read whole."""
-        # deferred: db.individual — only fetch_person() needs it; importing db.lists does not load it
-        from sass_tui.db.individual import fetch_individual
-
         return fetch_individual(self._conn, id_num)
 
     @_serialised
     def fetch_selected(self, index: int) -> Individual:
         """Person `index` (0-based) of the selected list, read whole."""
-        # deferred: db.individual — only fetch_selected() needs it; importing db.lists does not load it
-        from sass_tui.db.individual import fetch_individual
-
         id_num = self.selected_id(index)
         if id_num is None:
             raise DatabaseError(f"there is no person {index + 1} in the selected list")
@@ -499,9 +478,6 @@ class QueryLists:
     ) -> tuple[FitResult, tuple[LimitHistogram, ...]]:
         """The fit test of `limits` over `population` and its histograms
         (db/fit.py); with a `target`'s name, weighted to it too (db/targets.py)."""
-        # deferred: db.fit — only fit_test() needs it; importing db.lists does not load it
-        from sass_tui.db.fit import fit_test, limit_histograms
-
         weights = self._target(target)
         result = fit_test(
             self._conn, limits, population, progress=progress, cancel=cancel, target=weights
@@ -519,9 +495,6 @@ class QueryLists:
     ) -> SelectionPopulation:
         """The population file of these people (db/population.py); with a
         `target`'s name, their weighted percentiles (db/targets.py)."""
-        # deferred: db.population — only population_of() needs it; importing db.lists does not load it
-        from sass_tui.db.population import population_of
-
         return population_of(
             self._conn,
             ids=ids,
@@ -548,28 +521,18 @@ class QueryLists:
 
     # --- target populations and the real-people scope ----------------------
     def _target(self, name: str | None) -> TargetWeights | None:
-        # deferred: db.shipped — only _target() needs it; importing db.lists does not load it
-        from sass_tui.db.shipped import load_weights
-
         return None if not name else load_weights(self._conn, name)
 
     @_serialised
     def target_names(self) -> list[str]:
         """The names of the target populations and virtual populations
         (`virtual:NAME`) stored (`sass target`), and the shipped ones not made yet."""
-        # deferred: db.targets — only target_names() needs it; importing db.lists does not load it
-        from sass_tui.db.targets import SHIPPED, list_targets
-
         stored = [t.name for t in list_targets(self._conn)]
         return stored + [name for name in SHIPPED if name not in stored]
 
     @_serialised
     def weighted_count(self, query: str, target: str) -> WeightedCount:
         """The query's people weighted to the target `target` (db/targets.py)."""
-        # deferred: db.shipped, db.targets — only weighted_count() needs it; importing db.lists does not load it
-        from sass_tui.db.shipped import load_weights
-        from sass_tui.db.targets import weighted_count
-
         weights = load_weights(self._conn, target)
         if weights.target.is_virtual:  # its virtual people, whom a query reaches only by name
             query = f"({query}) AND {weights.target.population}"

@@ -30,6 +30,7 @@ import numpy.typing as npt
 from sass_tui.db.dialect import mark_of, writing
 from sass_tui.db.query import CompiledQuery, ParsedQuery, Query, compile_query, joined, parsed
 from sass_tui.db.scope import VIRTUAL_PREFIX
+from sass_tui.db.values import load_values
 from sass_tui.model.datasets import NHANES_NAME
 from sass_tui.model.target_sample import Sample
 from sass_tui.model.targets import TargetError, Weighting, calibrate, kish_effective_n
@@ -171,9 +172,6 @@ def make_target(
     """Compute a target (nothing stored: `store_target` stores it); `gender`
     BOTH calibrates each gender to its own rows of the sample (which must
     say each row's gender)."""
-    # deferred: db.values — off sass target (sass_tui/startup.py)
-    from sass_tui.db.values import load_values
-
     check_name(name)
     if gender not in (*GENDERS, BOTH):
         raise TargetError(f"gender must be {', '.join(GENDERS)} or {BOTH}, not {gender!r}")

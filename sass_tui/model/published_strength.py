@@ -31,6 +31,7 @@ from pathlib import Path
 from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
 from sass_tui.model.percentile import _STANDARD, check_percentile
+from sass_tui.model.units import parse_quantity
 
 FILE_NAME = "anderson2007.csv"
 DATA_SET = "anderson2007"
@@ -469,9 +470,6 @@ def parse_strength_limit(text: str) -> StrengthLimit:
     """'strength.knee_extension >= 150 N-m at knee_y=60' (the `strength.`
     prefix, the unit and the `at AXIS=ANGLE` part are optional; N-m without
     a unit)."""
-    # deferred: model.units — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.units import parse_quantity
-
     shape = "MOTION >= TORQUE [at AXIS=ANGLE], e.g. knee_extension >= 150 N-m at knee_y=60"
     body, _, where = text.strip().partition(" at ")
     operator = next((op for op in _LIMIT_OPERATORS if op in body), None)

@@ -19,6 +19,7 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.paths import regular_file, user_path
 from sass_tui.model.session import Session
+from sass_tui.ui.settings import load_settings, save_setting
 from sass_tui.ui.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
 from sass_tui.ui.widgets import MessageLine
 
@@ -84,9 +85,6 @@ class SassApp(App):
 
     # --- the theme, chosen in the palette ("Change theme"), remembered -----------
     def _restore_theme(self) -> None:
-        # deferred: ui.settings — off the first screen (sass_tui/startup.py)
-        from sass_tui.ui.settings import load_settings
-
         theme = load_settings().get("theme")
         if isinstance(theme, str) and theme in self.available_themes:
             self.theme = theme
@@ -95,8 +93,6 @@ class SassApp(App):
     def watch_theme(self, theme: str) -> None:
         if not getattr(self, "_theme_restored", False):
             return  # the default, or the one just read back
-        # deferred: ui.settings — off the first screen (sass_tui/startup.py)
-        from sass_tui.ui.settings import save_setting
 
         problem = save_setting("theme", theme)
         if problem:

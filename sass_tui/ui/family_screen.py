@@ -18,6 +18,9 @@ from textual.message import Message
 from textual.widgets import DataTable, Label
 from textual_plotext import PlotextPlot
 
+from sass_tui.db.database import Database
+from sass_tui.db.fit import DEFAULT_POPULATION
+from sass_tui.model.accommodation import measure_field, write_family
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.vocabulary import GENDERS
@@ -57,8 +60,6 @@ def parse_measures(text: str) -> list[str]:
     names = [name for name in names if name]
     if not 2 <= len(names) <= 6:
         raise FamilyAnswerError(f"give 2 to 6 measurements separated by commas, not {len(names)}")
-    # deferred: model.accommodation — only parse_measures() needs it; importing ui.family_screen does not load it
-    from sass_tui.model.accommodation import measure_field
 
     for name in names:
         measure_field(name)  # a typo is said now, before the database is opened
@@ -172,10 +173,6 @@ class FamilyScreen(SassScreen):
         coverage: float,
         work: Work,
     ) -> None:
-        # deferred: db.database, db.fit — only build_family() needs it; importing ui.family_screen does not load it
-        from sass_tui.db.database import Database
-        from sass_tui.db.fit import DEFAULT_POPULATION
-
         try:
             db = Database.open(db_path)
             try:
@@ -253,9 +250,6 @@ class FamilyScreen(SassScreen):
         )
 
     def _write_to(self, family: Family, directory: Path) -> None:
-        # deferred: model.accommodation — only _write_to() needs it; importing ui.family_screen does not load it
-        from sass_tui.model.accommodation import write_family
-
         written = write_family(family, directory, Figure.default(family.gender))
         self.say(
             f"Wrote {len(written.manikins)} manikins (.fig, .x3d) and family.json to {directory}."

@@ -17,7 +17,11 @@ from contextlib import AbstractContextManager
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from sass_tui.db.individual import person_figure
+from sass_tui.db.lists import DB_ERRORS
 from sass_tui.model.errors import SassError
+from sass_tui.model.gltf import POSES, bin_path, check_path, pose_of, render_gltf, write_gltf
+from sass_tui.model.hanim import build_humanoid, not_in_humanoid_note
 from sass_tui.ui.widgets.message_line import CANCELLED
 
 if TYPE_CHECKING:
@@ -34,10 +38,6 @@ def ask_gltf_export(screen: SassScreen, figure: Figure, default: str) -> None:
 async def _export(screen: SassScreen, figure: Figure, default: str) -> None:
     """Export glTF's questions: the file name, the pose, and y/N before a
     file is replaced."""
-    # deferred: model.gltf, model.hanim — only _export() needs it; importing ui.gltf_export does not load it
-    from sass_tui.model.gltf import POSES, bin_path, check_path, pose_of, render_gltf
-    from sass_tui.model.hanim import not_in_humanoid_note
-
     name = await screen.answer_to(f"glTF file name (.glb, or .gltf + .bin) [{default}]:")
     if name is None:
         screen.say(CANCELLED)
@@ -70,9 +70,6 @@ async def _export(screen: SassScreen, figure: Figure, default: str) -> None:
 
 def _write(screen: SassScreen, asset: GltfDocument, path: Path, done: str) -> None:
     def write() -> None:
-        # deferred: model.gltf — only write() needs it; importing ui.gltf_export does not load it
-        from sass_tui.model.gltf import write_gltf
-
         try:
             write_gltf(asset, path)
         except (SassError, OSError) as exc:
@@ -89,11 +86,6 @@ def export_list_person(
 ) -> None:
     """The query screen's Export glTF: the person of the list row `row`, read
     through the screen's `database()` (which refuses while a query runs)."""
-    # deferred: db.individual, db.lists, model.hanim — only export_list_person() needs it; importing ui.gltf_export does not load it
-    from sass_tui.db.individual import person_figure
-    from sass_tui.db.lists import DB_ERRORS
-    from sass_tui.model.hanim import build_humanoid
-
     if row is None:
         screen.say("The list is empty: no person to export.")
         return

@@ -9,8 +9,11 @@ from pathlib import Path
 
 from textual import work
 
+from sass_tui.db.addresses import is_url
 from sass_tui.db.database import configured_target
+from sass_tui.db.default import create_default_database, default_needs_building
 from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, DatabaseBusy, QueryLists
+from sass_tui.db.postgres import shown
 from sass_tui.db.progress import Cancelled
 from sass_tui.db.schema import default_db_path
 from sass_tui.ui.base import SassScreen
@@ -92,15 +95,8 @@ class QueryScreenBase(SassScreen):
 
     @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
     def _open_database(self, db_path: str | Path | None, work: Work) -> None:
-        # deferred: db.addresses, db.default — only _open_database() needs it; importing ui.query_base does not load it
-        from sass_tui.db.addresses import is_url
-        from sass_tui.db.default import create_default_database, default_needs_building
-
         target = configured_target(db_path)
         if is_url(target):  # a lab's PostgreSQL database (--db or $SASS_DB): never built here
-            # deferred: db.postgres — only _open_database() needs it; importing ui.query_base does not load it
-            from sass_tui.db.postgres import shown
-
             try:
                 lists = QueryLists.open(str(target), read_only=self.sass_app.read_only)
             except DB_ERRORS as exc:

@@ -7,6 +7,7 @@ from pathlib import Path
 
 from textual import work
 
+from sass_tui.db.ansur import DEFAULT_LABEL, looks_like_ansur
 from sass_tui.db.flatfile import FlatFiles
 from sass_tui.db.lists import DB_ERRORS, QueryLists
 from sass_tui.model.errors import SassError
@@ -78,9 +79,6 @@ class InputDbCommands(QueryScreenBase):
                 problem = f"{exc}."
                 continue
             if index == 0:
-                # deferred: db.ansur — only _input_db() needs it; importing ui.query_input_db does not load it
-                from sass_tui.db.ansur import looks_like_ansur
-
                 if looks_like_ansur(path):  # a survey file holds everything: no group files
                     await self._input_ansur(path)
                     return
@@ -89,9 +87,6 @@ class InputDbCommands(QueryScreenBase):
         self._import(chosen)
 
     async def _input_ansur(self, path: Path) -> None:
-        # deferred: db.ansur — only _input_ansur() needs it; importing ui.query_input_db does not load it
-        from sass_tui.db.ansur import DEFAULT_LABEL
-
         default = path.name.split(".")[0] or DEFAULT_LABEL
         text = await self.answer_to(
             f"{path.name} is an ANSUR II format file. Source label [{default}]:"

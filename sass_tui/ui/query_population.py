@@ -8,12 +8,17 @@ from pathlib import Path
 
 from textual import work
 
+from sass_tui.db.fit import DEFAULT_POPULATION
 from sass_tui.db.lists import DB_ERRORS, QueryLists
+from sass_tui.db.population import people_words
+from sass_tui.db.population_files import write_population_files
 from sass_tui.db.progress import Steps
 from sass_tui.model.names import GLOBAL, GROUP_TITLES
+from sass_tui.ui.fit_screen import FitScreen
 from sass_tui.ui.progress import Work
 from sass_tui.ui.query_base import WAIT, Busy, QueryScreenBase
 from sass_tui.ui.query_messages import PopulationMade
+from sass_tui.ui.target_picker import pick_target, weighted_words
 
 
 class PopulationCommands(QueryScreenBase):
@@ -24,9 +29,6 @@ class PopulationCommands(QueryScreenBase):
             self.converse(self._choose_target(lists))
 
     async def _choose_target(self, lists: QueryLists) -> None:
-        # deferred: ui.target_picker — only _choose_target() needs it; importing ui.query_population does not load it
-        from sass_tui.ui.target_picker import pick_target
-
         name = await pick_target(self, lists, self.target)
         if name is None:
             return
@@ -86,14 +88,8 @@ class PopulationCommands(QueryScreenBase):
         work: Work,
         weighted_to: str | None = None,
     ) -> None:
-        # deferred: db.population_files — only make_population() needs it; importing ui.query_population does not load it
-        from sass_tui.db.population_files import write_population_files
-
         try:
             if weighted_to:
-                # deferred: ui.target_picker — only make_population() needs it; importing ui.query_population does not load it
-                from sass_tui.ui.target_picker import weighted_words
-
                 title += weighted_words(weighted_to)
             result = lists.population_of(ids, title, work.report, work.cancel, target=weighted_to)
             Steps(cancel=work.cancel, what="making the population").check()  # last chance
@@ -104,9 +100,6 @@ class PopulationCommands(QueryScreenBase):
         self.post_message(PopulationMade(result, paths))
 
     def on_population_made(self, event: PopulationMade) -> None:
-        # deferred: db.population — only on_population_made() needs it; importing ui.query_population does not load it
-        from sass_tui.db.population import people_words
-
         event.stop()
         if self.end_work() and event.error:
             self.say("Make Population cancelled: nothing written or loaded.")
@@ -140,10 +133,6 @@ class PopulationCommands(QueryScreenBase):
     # --- Fit Test ------------------------------------------------------------
     def action_fit_test(self) -> None:
         """Test a population against the last query as design limits."""
-        # deferred: db.fit, ui.fit_screen — only action_fit_test() needs it; importing ui.query_population does not load it
-        from sass_tui.db.fit import DEFAULT_POPULATION
-        from sass_tui.ui.fit_screen import FitScreen
-
         if self.running:
             self.say(WAIT)
             return

@@ -23,6 +23,7 @@ from textual.containers import Horizontal
 from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.model.text import printable
 from sass_tui.ui.footer import Footer
+from sass_tui.ui.gltf_export import export_list_person
 from sass_tui.ui.progress import QUERY_BAR_AFTER, Work, WorkBar
 from sass_tui.ui.query_base import WAIT
 from sass_tui.ui.query_builder import QueryBuilder, QueryBuilderScreen
@@ -32,6 +33,7 @@ from sass_tui.ui.query_list import LIST_TITLES, ListSheet, SummaryPanel
 from sass_tui.ui.query_messages import QueryFinished
 from sass_tui.ui.query_people import PeopleCommands
 from sass_tui.ui.query_population import PopulationCommands
+from sass_tui.ui.target_picker import weighted_count_words
 from sass_tui.ui.widgets import MenuItem, MessageLine
 
 BUILD_PROMPT = "Press rightmouse to build query."
@@ -281,9 +283,6 @@ class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
             hint = "" if count else lists.demonstration_hint(text) or ""
             weighted = ""
             if target:
-                # deferred: ui.target_picker — only run_query() needs it; importing ui.query_screen does not load it
-                from sass_tui.ui.target_picker import weighted_count_words
-
                 weighted = weighted_count_words(lists, text, target)
         except DB_ERRORS as exc:
             self.post_message(QueryFinished(error=str(exc)))
@@ -314,7 +313,4 @@ class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
 
     def action_export_gltf(self) -> None:
         """Write the highlighted person as a glTF 2.0 body (.glb)."""
-        # deferred: ui.gltf_export — only action_export_gltf() needs it; importing ui.query_screen does not load it
-        from sass_tui.ui.gltf_export import export_list_person
-
         self._list_command(lambda: export_list_person(self, self._database, self.sheet.highlighted))

@@ -29,6 +29,7 @@ from sass_tui.model.names import (
 )
 from sass_tui.model.units import DISPLAY, other_unit
 from sass_tui.ui.commands import COMMANDS
+from sass_tui.ui.figure_view import FigureView
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.spreadsheet_edit import EditCommands
 from sass_tui.ui.spreadsheet_people import PeopleCommands
@@ -162,9 +163,6 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands):
         wide = width >= FIGURE_PANEL_MIN_WIDTH
         new, shown = False, panel is not None and panel.display
         if panel is None and wide:
-            # deferred: ui.figure_view — off the first screen (sass_tui/startup.py)
-            from sass_tui.ui.figure_view import FigureView
-
             panel = FigureView(canvas_focus=False, canvas_later=True, id="figure-panel")
             new = True
             self.query_one("#body", Horizontal).mount(panel)

@@ -30,6 +30,7 @@ from sass_tui.model.published_strength import (
     lower_limb_percent_capable,
     lower_limb_strength,
 )
+from sass_tui.model.strength import joint_limit_range
 from sass_tui.model.units import parse_quantity
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.footer import Footer
@@ -93,9 +94,6 @@ class StrengthCurveScreen(SassScreen):
         return Subject(figure.gender, age, figure.output_mass(), figure.stature / 100.0)
 
     def draw(self) -> None:
-        # deferred: model.strength — only draw() needs it; importing ui.strength_curve_screen does not load it
-        from sass_tui.model.strength import joint_limit_range
-
         motion = LOWER_LIMB_MOTIONS[self.motion]
         axis = MOTION_AXIS[motion]
         figure = self.session.figure

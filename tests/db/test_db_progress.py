@@ -151,9 +151,9 @@ def test_default_database_build_cancelled_leaves_no_people(tmp_path):
         assert conn.execute("SELECT count(*) FROM person").fetchone()[0] == 0
 
 
-def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(shared_target, monkeypatch):
-    monkeypatch.setattr("sass_tui.db.lists.RUN_CHUNK", 2000)  # several ranges of the people
+def test_query_reports_people_searched_and_a_cancel_keeps_the_lists(shared_target):
     lists = QueryLists.open(shared_target)
+    lists.run_chunk = 2000  # several ranges of the people
     try:
         assert lists.run("gender = female") > 0
         lists.select_one(lists.page(QUERY_LIST, 0, 1)[0]["id"])

@@ -159,7 +159,6 @@ def test_make_population_cancelled_writes_and_loads_nothing(
 def test_a_query_shows_people_searched_and_escape_keeps_the_lists(drive, app_at, db, monkeypatch):
     monkeypatch.setattr("sass_tui.ui.query_screen.QUERY_BAR_AFTER", 0.0)  # show it at once
     monkeypatch.setattr("sass_tui.ui.progress.MAX_UPDATES", 10**9)  # and every report
-    monkeypatch.setattr("sass_tui.db.lists.RUN_CHUNK", 5000)  # two ranges of the people
     held = HeldWork(monkeypatch, "Query")
     with connect(db) as conn:
         (people,) = conn.execute("SELECT count(*) FROM person").fetchone()
@@ -167,6 +166,7 @@ def test_a_query_shows_people_searched_and_escape_keeps_the_lists(drive, app_at,
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):
             screen = await open_query_screen(pilot)
+            screen.lists.run_chunk = 5000  # two ranges of the people
             screen.start_query("gender = male")
             bar = screen.query_one(WorkBar)
             await held.until_shown(pilot, bar)

@@ -19,9 +19,8 @@ from sass_tui.db.schema import connect, delete_people, transaction
 from sass_tui.model.figfile import read_fig
 from sass_tui.model.prediction import Predictor
 
-pytestmark = pytest.mark.sqlite_only(
-    "the fit cached beside the SQLite file; predict on both engines: test_engines_verbs.py"
-)
+# SQLite only: the fit is cached beside the SQLite file; predict on both
+# engines is tests/db/test_engines_verbs.py's.
 
 KNOWN = ["--known", "stature=175.5cm", "--known", "mass=82.2kg"]
 

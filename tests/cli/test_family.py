@@ -1,0 +1,47 @@
+"""`sass family`: a manikin family over ANSUR II men, its center the men's
+means computed from the CSV file directly."""
+
+from __future__ import annotations
+
+import csv
+import json
+
+import numpy as np
+import pytest
+
+from sass_tui.cli import main
+
+
+@pytest.mark.slow
+def test_the_center_manikin_is_the_mens_mean(people_db, ansur_dir, tmp_path, capsys):
+    out = tmp_path / "family"
+    argv = ["--db", str(people_db), "family", "--gender", "male"]
+    assert main([*argv, "--measures", "stature,mass", "-o", str(out)]) == 0
+    capsys.readouterr()
+    family = json.loads((out / "family.json").read_text(encoding="utf-8"))
+    men = list(csv.DictReader((ansur_dir / "ANSUR_II_MALE_Public.csv").open(encoding="latin-1")))
+    (center,) = (m for m in family["manikins"] if m["name"] == "center")
+    assert center["values"]["stature"] == pytest.approx(
+        np.mean([float(r["stature"]) for r in men]) / 10, abs=1e-3
+    )  # mm in the CSV
+    assert center["values"]["mass"] == pytest.approx(
+        np.mean([float(r["weightkg"]) for r in men]) / 10, abs=1e-3
+    )  # the CSV's weightkg is in tenths of a kg
+    assert family["coverage"]["people"] == len(men)
+    for manikin in family["manikins"]:
+        assert all((out / name).is_file() for name in manikin["files"])
+
+
+@pytest.mark.slow
+def test_a_distributed_family_adds_an_inner_shell(people_db, tmp_path, capsys):
+    names = {}
+    for kind in ("boundary", "distributed"):
+        out = tmp_path / kind
+        argv = ["--db", str(people_db), "family", "--gender", "female", "--kind", kind]
+        assert main([*argv, "--measures", "stature,mass", "-o", str(out)]) == 0
+        family = json.loads((out / "family.json").read_text(encoding="utf-8"))
+        names[kind] = {m["name"] for m in family["manikins"]}
+    inner = names["distributed"] - names["boundary"]
+    assert inner and all(name.endswith("_inner") for name in inner)
+    assert {name.removesuffix("_inner") for name in inner} <= names["boundary"]
+    capsys.readouterr()

@@ -1,0 +1,22 @@
+"""`sass target`: listing and dropping stored targets, and the options that
+do not go together."""
+
+from __future__ import annotations
+
+from sass_tui.cli import main
+
+
+def test_a_new_database_lists_no_target(people_db, capsys):
+    assert main(["--db", str(people_db), "target", "--list"]) == 0
+    assert capsys.readouterr().out.startswith("no targets")
+
+
+def test_dropping_a_target_that_is_not_stored_says_so(people_db, capsys):
+    assert main(["--db", str(people_db), "target", "--drop", "nosuch"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("sass target: error:") and "nosuch" in err
+
+
+def test_list_takes_no_other_argument(people_db, capsys):
+    assert main(["--db", str(people_db), "target", "--list", "NAME"]) == 2
+    assert "--list and --drop NAME take no other arguments" in capsys.readouterr().err

@@ -1,0 +1,83 @@
+"""The verb table of sass_tui/cli/__init__.py: `sass --help` lists every verb
+from it without importing one, each row agrees with its module, and every
+option of every verb says what it does."""
+
+from __future__ import annotations
+
+import argparse
+import pkgutil
+import subprocess
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+import sass_tui.cli
+from sass_tui.cli import VERBS, build_parser, verb_module
+
+# The modules of sass_tui/cli that are not verbs: what the verbs share.
+SHARED = {"options", "progress"}
+
+
+def _options(parser: argparse.ArgumentParser, words: str) -> Iterator[tuple[str, argparse.Action]]:
+    """Every action of a parser and of its sub-parsers, with the command that reaches it."""
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield from _options(sub, f"{words} {name}")
+        elif not isinstance(action, argparse._HelpAction):
+            yield words, action
+
+
+def _listed(parser: argparse.ArgumentParser) -> dict[str, str | None]:
+    (commands,) = (a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    return {choice.dest: choice.help for choice in commands._choices_actions}
+
+
+def test_every_option_of_every_verb_says_what_it_does():
+    parser = build_parser()  # every verb built
+    silent = [
+        f"{words} {'/'.join(action.option_strings) or action.dest}"
+        for words, action in _options(parser, "sass")
+        if not action.help or action.help == argparse.SUPPRESS
+    ]
+    assert silent == []
+    assert sum(1 for _ in _options(parser, "sass")) > 100  # the walk reaches the verbs' options
+
+
+def test_every_verb_module_has_a_row_and_every_row_a_module():
+    modules = {m.name for m in pkgutil.iter_modules(sass_tui.cli.__path__)} - SHARED
+    assert {verb.module for verb in VERBS} == modules
+    assert len({verb.name for verb in VERBS}) == len(VERBS)
+
+
+@pytest.mark.parametrize("verb", VERBS, ids=[verb.name for verb in VERBS])
+def test_a_row_lists_the_help_its_module_gives(verb):
+    # `sass --help` shows the row's line; `sass VERB --help` is built by the module.
+    from_row = _listed(build_parser(["--help"]))[verb.name]
+    from_module = _listed(build_parser([verb.name]))
+    assert from_module == {verb.name: from_row}
+    assert callable(verb_module(verb).register)
+
+
+def test_sass_help_imports_no_verb_module():
+    code = (
+        "import sys\n"
+        "from sass_tui.cli import VERBS, main\n"
+        "try:\n"
+        "    main(['--help'])\n"
+        "except SystemExit:\n"
+        "    pass\n"
+        "print(sorted(v.module for v in VERBS if 'sass_tui.cli.' + v.module in sys.modules))\n"
+    )
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == "[]"
+    assert all(verb.name in done.stdout for verb in VERBS)
+
+
+def test_every_verb_has_its_test_file_here():
+    # tests/cli mirrors sass_tui/cli: where a newcomer looks for a verb's tests.
+    here = Path(__file__).parent
+    assert [verb.name for verb in VERBS if not (here / f"test_{verb.module}.py").is_file()] == []
