@@ -181,7 +181,7 @@ PATHS: tuple[StartupPath, ...] = (
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy.ma", "secrets",
          "platformdirs",
          "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
-         "sass_tui.db.accelerator", "sass_tui.model.datasets"),
+         "sass_tui.db.accelerator"),
         "one person's record: no query language, no prediction",
         needs_db=True,
     ),
@@ -235,7 +235,7 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass stats",
         ("stats", "stature", "mass", "--gender", "female"),
-        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "importlib.metadata", "numpy.ma",
+        (*NEVER, *UI, *ENGINES, "asyncio", "importlib.metadata", "numpy.ma",
          "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
          "sass_tui.db.accelerator"),
         "the table reads the people's values and weights, no TUI, no other engine (the "

@@ -95,7 +95,12 @@ def register(commands: SubParsers) -> None:
     stats.add_argument(
         "--unit", metavar="UNIT", help="lengths (cm, mm, in) or mass (kg, lb) in this unit"
     )
-    stats.add_argument("--format", choices=("text", "json", "csv"), default="text")
+    stats.add_argument(
+        "--format",
+        choices=("text", "json", "csv"),
+        default="text",
+        help="output format (default text)",
+    )
     stats.set_defaults(func=run)
 
 

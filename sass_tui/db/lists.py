@@ -138,6 +138,23 @@ def list_tables(dialect: str) -> tuple[str, str]:
     )
 
 
+def lost_lists(counts: dict[str, int]) -> str | None:
+    """What a PostgreSQL server restart took from the lists holding `counts`
+    people (None: they held nobody)."""
+    held = [
+        f"the {name} list ({count} {'person' if count == 1 else 'people'})"
+        for name, count in (("query", counts[QUERY_LIST]), ("selected", counts[SELECTED_LIST]))
+        if count
+    ]
+    if not held:
+        return None
+    return (
+        "The PostgreSQL server restarted and sass connected again; "
+        + " and ".join(held)
+        + " went with the old connection."
+    )
+
+
 class QueryLists:
     def __init__(self, conn: Any):
         # sqlite3's connection, or db/postgres.py's PostgresConnection
@@ -164,31 +181,19 @@ class QueryLists:
         if self.dialect == "sqlite":
             conn.execute("PRAGMA temp_store = MEMORY")
         else:
-            conn.on_reconnect.append(self._lists_lost)
+
+            def lists_lost() -> None:
+                # The connection was opened again (a server restart): its TEMP
+                # tables were made again, empty; the people the lists held are gone.
+                self._lost = lost_lists(self._counts) or self._lost
+                self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
+
+            conn.on_reconnect.append(lists_lost)
         # A read-only PostgreSQL session made them before it became read-only
         # (PostgresConnection's temp_tables): no CREATE in a read-only transaction.
         if not getattr(conn, "read_only", False):
             for statement in list_tables(self.dialect):
                 conn.execute(statement)
-
-    def _lists_lost(self) -> None:
-        """The PostgreSQL connection was opened again (a server restart): its
-        TEMP tables were made again, empty; the people the lists held are gone."""
-        held = [
-            f"the {name} list ({count} {'person' if count == 1 else 'people'})"
-            for name, count in (
-                ("query", self._counts[QUERY_LIST]),
-                ("selected", self._counts[SELECTED_LIST]),
-            )
-            if count
-        ]
-        if held:
-            self._lost = (
-                "The PostgreSQL server restarted and sass connected again; "
-                + " and ".join(held)
-                + " went with the old connection."
-            )
-        self._counts = {QUERY_LIST: 0, SELECTED_LIST: 0}
 
     def take_lost(self) -> str | None:
         """What the last server restart took from the lists, once; else None."""

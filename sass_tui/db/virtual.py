@@ -28,6 +28,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import numpy.typing as npt
 
+from sass_tui.db import database
 from sass_tui.db.ansur import derived_girth
 from sass_tui.db.dialect import dialect_of, mark_of, writing
 from sass_tui.db.schema import (
@@ -36,7 +37,6 @@ from sass_tui.db.schema import (
     PeopleBatch,
     delete_people,
     store_people,
-    transaction,
 )
 from sass_tui.db.scope import virtual_query, virtual_source
 from sass_tui.db.targets import (
@@ -205,20 +205,15 @@ def store_virtual_in(conn: sqlite3.Connection, population: VirtualPopulation) ->
 
 
 def store_virtual(conn: sqlite3.Connection, population: VirtualPopulation) -> None:
-    """Store a virtual population in its own transaction, on either engine (on
-    PostgreSQL through a staging file, copied in one transaction)."""
-    if dialect_of(conn) == "sqlite":
-        with writing(conn):
-            store_virtual_in(conn, population)
-        return
-    # deferred: db.postgres — off sass db init (sass_tui/startup.py)
-    from sass_tui.db.postgres import import_staged
+    """Store a virtual population in its own transaction, on either engine
+    (db/database.py's store_people decides how: on PostgreSQL through a
+    staging file, copied in one transaction)."""
 
-    def stage(staging: sqlite3.Connection) -> None:
-        with transaction(staging):
-            store_virtual_in(staging, population)
+    def load(into: sqlite3.Connection) -> None:
+        with writing(into):
+            store_virtual_in(into, population)
 
-    import_staged(conn, stage)  # type: ignore[arg-type]
+    database.store_people(conn, load)
 
 
 def shipped_sample() -> Sample:

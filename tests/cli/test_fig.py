@@ -28,7 +28,7 @@ def test_a_percentile_and_a_stature_are_written_as_given(tmp_path, capsys):
     assert main(argv) == 0
     text = out.read_text(encoding="utf-8")
     # 70 in = 177.8 cm exactly (1 in = 2.54 cm), in the file's header comment.
-    assert "; female; figure type skinny */" in text and "stature 177.8 cm */" in text
+    assert "; female; figure type skinny */" in text and "stature 177.8 cm (" in text
     assert read_fig(out).variables, "the file reads back"
     capsys.readouterr()
 
