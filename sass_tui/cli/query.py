@@ -69,24 +69,25 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
         import csv
 
         # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
-        from sass_tui.model.text import is_printable, printable
+        from sass_tui.model.text import is_printable, may_start_a_formula
 
         # Names and sources come from files and the CSV may go to a terminal: a
-        # control character is written escaped.  One check over a chunk's names
-        # and sources joined; only when it fails is each text made printable.
+        # control character is written escaped.  The CSV is opened in
+        # spreadsheets too: a text cell that would start a formula (an import's
+        # source label `=HYPERLINK(...)`) is written as text.  One check over a
+        # chunk's texts joined; only when it fails is each text made safe.
         writer = csv.writer(out, lineterminator="\n")
         writer.writerow(PERSON_FIELDS)
         found = 0
         while chunk := rows.fetchmany(1000):
             try:
-                plain = is_printable("".join(map(itemgetter(1), chunk))) and is_printable(
-                    "".join(map(itemgetter(7), chunk))
-                )
-            except TypeError:  # a name stored as a number
+                texts = [row[k] for row in chunk for k in (1, 2, 5, 7)]
+                plain = is_printable("".join(texts)) and not may_start_a_formula(texts)
+            except TypeError:  # a name stored as a number, or no gender
                 plain = False
             if not plain:
                 chunk = [
-                    (i, printable(name), g, mass, stature, hand, age, printable(source))
+                    (i, _cell(name), _cell(g), mass, stature, _cell(hand), age, _cell(source))
                     for i, name, g, mass, stature, hand, age, source in chunk
                 ]
             writer.writerows(chunk)
@@ -97,6 +98,14 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
         found = _write_table(out, rows)
     if not found:
         _say_who_else(conn, args.query)
+
+
+def _cell(text: object) -> object:
+    """A text cell of the CSV: printable, and never a formula; None stays empty."""
+    # deferred: model.text — off sass --help, sass --version (sass_tui/startup.py)
+    from sass_tui.model.text import printable, spreadsheet_text
+
+    return text if text is None else spreadsheet_text(printable(text))
 
 
 def _weighted_count(conn, query: str, name: str) -> None:

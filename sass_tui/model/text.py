@@ -78,3 +78,23 @@ def control_character(text: str) -> str | None:
     if found is None:
         return None
     return f"a control character ({_escape(found)}) at character {found.start() + 1}"
+
+
+# The characters that make a spreadsheet (Excel, LibreOffice Calc, Google
+# Sheets) read a CSV cell as a formula, or a tab/carriage return that shifts
+# it into one: OWASP's "CSV Injection" page lists = + - @ TAB CR.
+FORMULA_STARTS = "=+-@\t\r"
+_FORMULA_START = re.compile("^[=+\\-@\t\r]", re.MULTILINE)
+
+
+def spreadsheet_text(text: str) -> str:
+    """`text` as a CSV cell a spreadsheet opens as text: one starting with a
+    formula character gets a leading apostrophe (OWASP's advice), which
+    spreadsheets take as "this cell is text"; the rest of the text is kept."""
+    return "'" + text if text[:1] in tuple(FORMULA_STARTS) else text
+
+
+def may_start_a_formula(texts: list[str]) -> bool:
+    """Whether any of `texts` starts with a formula character: one search
+    over them all joined (a text holding a newline may answer yes falsely)."""
+    return _FORMULA_START.search("\n".join(texts)) is not None
