@@ -18,7 +18,7 @@ from pathlib import Path
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.names import GROUP_TITLES
-from sass_tui.model.paths import regular_file
+from sass_tui.model.paths import LARGEST_ID_LIST, regular_file
 
 
 def register(commands: SubParsers) -> None:
@@ -111,7 +111,8 @@ def _read_ids(name: str) -> list[int]:
 
     if name == "-":
         return parse_id_list(sys.stdin.read(), "standard input")
-    path = regular_file(name)  # not a FIFO, which would block the read
+    # not a FIFO, which would block the read; a huge file is refused unread
+    path = regular_file(name, largest=LARGEST_ID_LIST, kind="a list of person ids")
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:

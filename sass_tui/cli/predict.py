@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db, whole_number
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import regular_file
+from sass_tui.model.paths import LARGEST_PEOPLE_TABLE, regular_file
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -236,10 +236,14 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
     from sass_tui.model.units import UnitError, parse_quantity
 
     try:
-        with open(regular_file(source), encoding="utf-8-sig", newline="") as handle:
-            rows = list(csv.reader(handle))
+        people_table = regular_file(source, largest=LARGEST_PEOPLE_TABLE, kind="a table of people")
+        with open(people_table, encoding="utf-8-sig", newline="") as handle:
+            reader = csv.reader(handle)
+            rows = list(reader)
     except UnicodeDecodeError as exc:
         raise PredictArgumentError(f"{source}: not UTF-8 text ({exc.reason})") from None
+    except csv.Error as exc:  # a field over csv's 131,072 characters, a NUL
+        raise PredictArgumentError(f"{source}:{reader.line_num}: not CSV ({exc})") from None
     if not rows:
         raise PredictArgumentError(f"{source}:1: the file is empty; expected a header row")
     header, body = rows[0], rows[1:]

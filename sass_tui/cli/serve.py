@@ -203,9 +203,9 @@ def new_token() -> str:
 def read_token(name: str) -> str:
     """The token in file `name` (its first line, spaces around it dropped)."""
     # deferred: model.paths — off sass serve (sass_tui/startup.py)
-    from sass_tui.model.paths import regular_file
+    from sass_tui.model.paths import LARGEST_TOKEN_FILE, regular_file
 
-    path = regular_file(name)
+    path = regular_file(name, largest=LARGEST_TOKEN_FILE, kind="a token file")
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
     except UnicodeDecodeError:

@@ -40,7 +40,7 @@ from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import AXES, CENTER_OF_MASS, GIRTH, GLOBAL, GLOBAL_ROWS, ROWS
 from sass_tui.model.popfile import PopulationData, read_population_file
-from sass_tui.model.text import printable
+from sass_tui.model.text import quoted
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -297,7 +297,7 @@ def parse_id_list(text: str, where: str) -> list[int]:
         digits = field.lstrip("0") or "0"
         if not (field.isascii() and field.isdigit() and len(digits) < 20 and int(digits) < 2**63):
             raise IdListError(
-                f"{where}:{number}: {printable(field)!r} is not a person id "
+                f"{where}:{number}: {quoted(field, escape=True)} is not a person id "
                 "(expected a whole number, one a line, or `sass query --format csv` output)"
             )
         ids[int(digits)] = None

@@ -32,7 +32,7 @@ from sass_tui.model.names import (
     center_of_mass_variable,
     joint_limit_variable,
 )
-from sass_tui.model.paths import regular_file
+from sass_tui.model.paths import LARGEST_TEXT_FILE, regular_file
 
 if TYPE_CHECKING:
     from lark import Lark, Token, Tree
@@ -277,7 +277,8 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
 
 
 def read_fig(path: str | Path) -> FigFile:
-    path = regular_file(path)  # a FIFO or a device would never end
+    # a FIFO or a device would never end; a huge file is refused unread
+    path = regular_file(path, largest=LARGEST_TEXT_FILE, kind="a .fig file")
     return parse_fig(path.read_text(encoding="utf-8"), str(path))
 
 

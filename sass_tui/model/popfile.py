@@ -36,6 +36,7 @@ from sass_tui.model.names import (
     normalise_label,
 )
 from sass_tui.model.paths import PathError, read_user_text
+from sass_tui.model.text import quoted
 from sass_tui.model.units import UnitError, finite_number
 from sass_tui.model.vocabulary import GENDERS
 
@@ -113,7 +114,7 @@ class PopulationData:
 
 def read_population_file(path: str | Path, group: str) -> PopulationData:
     try:
-        path, text = read_user_text(path)
+        path, text = read_user_text(path, "a population file")
     except PathError as exc:
         raise PopulationFileError(f"{path}: cannot read: {exc.reason}") from None
     return parse_population_text(text, group, str(path))
@@ -144,7 +145,7 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
             word = line[1:].strip().lower()
             if word not in GENDERS:
                 raise PopulationFileError(
-                    f"{where}: expected 'T MALE' or 'T FEMALE', found {line.strip()!r}"
+                    f"{where}: expected 'T MALE' or 'T FEMALE', found {quoted(line.strip())}"
                 )
             if word in raw:
                 raise PopulationFileError(f"{where}: a second 'T {word.upper()}' section")
@@ -212,12 +213,14 @@ def split_data_row(
         if end < 0:
             raise error(f"{where}: comment '/*' is not closed with '*/'")
         if line[end + 2 :].strip():
-            raise error(f"{where}: unexpected {line[end + 2 :].strip()!r} after the comment")
+            raise error(f"{where}: unexpected {quoted(line[end + 2 :].strip())} after the comment")
         numbers_text, label = line[:start], line[start + 2 : end].strip()
     tokens = [t for t in re.split(r"[,\s]+", numbers_text.strip()) if t]
     for col, token in enumerate(tokens, start=1):
         if not _NUMBER.match(token):
-            raise error(f"{where}: value {col} is {token!r}; expected a number (999 = no value)")
+            raise error(
+                f"{where}: value {col} is {quoted(token)}; expected a number (999 = no value)"
+            )
     if len(tokens) != width:
         raise error(
             f"{where}: {len(tokens)} numbers; expected {width} {layout} and a /* comment */"

@@ -45,6 +45,7 @@ from sass_tui.model.paths import PathError, read_user_text
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
 from sass_tui.model.published_strength import EXAMPLE_SOURCE
+from sass_tui.model.text import quoted
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert, parse_quantity, unit_name
 from sass_tui.model.vocabulary import GENDERS, JOINT_AXES, MOTION_NAMES, SIDES
 
@@ -193,7 +194,7 @@ def default_path() -> Path:
 def read_strength_file(path: str | Path | None = None) -> StrengthData:
     where = default_path() if path is None else path
     try:
-        read, text = read_user_text(where)
+        read, text = read_user_text(where, "a strength file")
     except PathError as exc:
         raise StrengthFileError(f"{where}: cannot read: {exc.reason}") from None
     return parse_strength_text(text, str(read))
@@ -239,7 +240,7 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
             word = line[1:].strip().lower()
             if word not in GENDERS:
                 raise StrengthFileError(
-                    f"{where}: expected 'G MALE' or 'G FEMALE', found {line.strip()!r}"
+                    f"{where}: expected 'G MALE' or 'G FEMALE', found {quoted(line.strip())}"
                 )
             gender, key = word, None
             continue
@@ -247,7 +248,7 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
             word = line[1:].strip().lower()
             if word not in SIDES:
                 raise StrengthFileError(
-                    f"{where}: expected 'L RIGHT' or 'L LEFT', found {line.strip()!r}"
+                    f"{where}: expected 'L RIGHT' or 'L LEFT', found {quoted(line.strip())}"
                 )
             if gender is None:
                 raise StrengthFileError(
