@@ -96,9 +96,6 @@ def run(args: argparse.Namespace) -> int:
 
     if find_spec("textual_serve") is None:  # the [serve] extra is not installed
         raise ServeError("sass serve needs textual-serve: pip install 'sass-tui[serve]'")
-    # deferred: ui.serve — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.ui.serve import ServeOptions, serve
-
     loopback = is_loopback(args.host)
     if not loopback and not args.allow_remote:
         raise ServeError(
@@ -112,6 +109,10 @@ def run(args: argparse.Namespace) -> int:
     token = read_token(args.token_file) if args.token_file else new_token()
     workdir = served_workdir(args.workdir)
     db = database_path(args, args.read_only)
+    # After the checks: ui/serve.py imports textual-serve and aiohttp.
+    # deferred: ui.serve — off sass --help, sass serve, sass --version (sass_tui/startup.py)
+    from sass_tui.ui.serve import ServeOptions, serve
+
     options = ServeOptions(
         host=args.host,
         port=args.port,
