@@ -67,7 +67,7 @@ def run(args: argparse.Namespace) -> int:
         return 2
     if args.query is not None:
         compile_query(args.query)  # a bad query touches nothing
-    ids = _read_ids(args.ids) if args.ids is not None else None
+    ids = read_id_file(args.ids) if args.ids is not None else None
     conn = open_db(args)
     try:
         absent = missing_ids(conn, ids) if ids is not None else []
@@ -105,7 +105,8 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _read_ids(name: str) -> list[int]:
+def read_id_file(name: str) -> list[int]:
+    """The person ids of file `name` (`-`: standard input), at most LARGEST_ID_LIST bytes."""
     # deferred: db.population — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.db.population import parse_id_list
 
