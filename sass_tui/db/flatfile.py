@@ -48,7 +48,7 @@ from sass_tui.db.schema import (
     transaction,
 )
 from sass_tui.db.scope import source_label
-from sass_tui.model.atomic import write_text_atomic
+from sass_tui.model.atomic import write_files_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import LARGEST_TABLE_FILE, PathError, regular_file
 from sass_tui.model.text import control_character, quoted
@@ -493,9 +493,10 @@ def write_flat_files(batch: PeopleBatch, directory: str | Path) -> list[Path]:
             lines[key].append(
                 f"{ids[i]},{exp}," + ",".join(v if isinstance(v, str) else _fmt(v) for v in rest)
             )
-    written = []
-    for key, name in FILE_NAMES.items():
-        if lines[key]:
-            write_text_atomic(directory / name, "\n".join(lines[key]) + "\n")
-            written.append(directory / name)
-    return written
+    files = {
+        directory / name: "\n".join(lines[key]) + "\n"
+        for key, name in FILE_NAMES.items()
+        if lines[key]
+    }
+    write_files_atomic(files)  # all or none
+    return list(files)

@@ -3,7 +3,7 @@ the empirical 5th, 50th and 95th percentile, per gender, of every girth and
 center-of-mass row, from the selected people's own values.
 
 The result is one PopulationData per group (report figure 7's format), ready
-for `popfile.write_population_file` or for loading into the spreadsheet.
+for `popfile.render_population_file` or for loading into the spreadsheet.
 
 Every cell has a value, so that any population of real people makes a
 figure.  A cell at least MIN_PEOPLE of the people have a value of is theirs

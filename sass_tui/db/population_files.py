@@ -8,8 +8,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from sass_tui.db.population import SelectionPopulation
+from sass_tui.model.atomic import write_files_atomic
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL
-from sass_tui.model.popfile import write_population_file
+from sass_tui.model.popfile import render_population_file
 
 
 def cmass_path(girth_path: Path) -> Path:
@@ -22,10 +23,12 @@ def global_path(girth_path: Path) -> Path:
 
 
 def write_population_files(result: SelectionPopulation, target: Path) -> dict[str, Path]:
-    """Write each group the population has; returns group -> the file written."""
+    """Write each group the population has, all or none (a full disk once left
+    a new girth file beside an old center-of-mass file); returns group -> the
+    file written."""
     paths = {GIRTH: target, CENTER_OF_MASS: cmass_path(target), GLOBAL: global_path(target)}
-    written: dict[str, Path] = {}
-    for group, data in result.groups.items():
-        write_population_file(data, paths[group])
-        written[group] = paths[group]
+    written = {group: paths[group] for group in result.groups}
+    write_files_atomic(
+        {written[group]: render_population_file(data) for group, data in result.groups.items()}
+    )
     return written

@@ -462,11 +462,8 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
     return out
 
 
-def write_population_file(data: PopulationData, path: str | Path) -> None:
-    """Write statistics back in the same format (atomically)."""
-    # deferred: model.atomic — off the first screen, sass strength (sass_tui/startup.py)
-    from sass_tui.model.atomic import write_text_atomic
-
+def render_population_file(data: PopulationData) -> str:
+    """The text of a population file of `data` (report §12.2.4)."""
     lines = [f"C {data.title}"]
     for gender, stats in data.sections.items():
         lines += ["C", f"T {gender.upper()}"]
@@ -477,4 +474,4 @@ def write_population_file(data: PopulationData, path: str | Path) -> None:
                 lines.append(f"C {row_notes[k]}")
             flat = [NO_VALUE if math.isnan(v) else v for cell in cells for v in cell]
             lines.append(" " + " ".join(f"{v:8g}" for v in flat) + f"  /* {row.label} */")
-    write_text_atomic(path, "\n".join(lines) + "\n")
+    return "\n".join(lines) + "\n"
