@@ -208,7 +208,7 @@ def motion_index(text: str) -> int:
     if key in MOTION_NAMES:
         return MOTION_NAMES.index(key)
     raise StrengthError(
-        f"unknown motion {text.strip()!r}; expected one of {', '.join(MOTION_NAMES)}"
+        f"unknown motion {quoted(text.strip())}; expected one of {', '.join(MOTION_NAMES)}"
     )
 
 
@@ -686,7 +686,7 @@ def parse_side_factor(text: str) -> float:
     try:
         factor = float(text)
     except ValueError:
-        raise StrengthError(f"scaling factor {text.strip()!r} is not a number") from None
+        raise StrengthError(f"scaling factor {quoted(text.strip())} is not a number") from None
     if not 0 < factor <= 2:
         raise StrengthError(f"scaling factor {factor:g} is outside 0-2")
     return factor
@@ -769,7 +769,7 @@ def parse_joint_axis(text: str) -> int:
     if key in JOINT_AXES:
         return JOINT_AXES.index(key)
     raise StrengthError(
-        f"unknown joint axis {text.strip()!r}; expected one of {', '.join(JOINT_AXES)}"
+        f"unknown joint axis {quoted(text.strip())}; expected one of {', '.join(JOINT_AXES)}"
     )
 
 

@@ -135,10 +135,25 @@ HUGE = 3_000_000
             "P x\nG MALE\nL " + "\x1b" * HUGE,
             StrengthFileError,
         ),
+        (
+            lambda t: parse_strength_text(t, "s.dat"),
+            "P t\nG MALE\nL RIGHT\n1 45 0 90 0 0 0 17 50 /* " + "shoulder" * (HUGE // 8) + " */",
+            StrengthFileError,
+        ),
         (lambda t: parse_id_list(t, "ids.txt"), "1\n" + "9" * HUGE, IdListError),
         (lambda t: parse_id_list(t, "ids.txt"), "1\n" + "\x1b[2J" * HUGE, IdListError),
     ],
-    ids=["T-line", "token", "digits", "after-comment", "G-line", "L-line", "id", "id-escapes"],
+    ids=[
+        "T-line",
+        "token",
+        "digits",
+        "after-comment",
+        "G-line",
+        "L-line",
+        "motion",
+        "id",
+        "id-escapes",
+    ],
 )
 def test_a_message_quotes_a_few_dozen_characters_of_a_huge_value(parse, text, error):
     with pytest.raises(error) as raised:
