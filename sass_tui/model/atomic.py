@@ -82,7 +82,7 @@ def write_files_atomic(files: Mapping[Path, bytes | str]) -> None:
     written: list[tuple[Path, Path]] = []  # (temporary, target)
     try:
         for path, mode, data in zip(targets, modes, files.values()):
-            _remove_stale_temporaries(path)
+            remove_stale_temporaries(path)
             tmp = temporary_name(path)
             try:
                 fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o600)
@@ -147,8 +147,9 @@ def _kind(mode: int) -> str:
     return "a special file"
 
 
-def _remove_stale_temporaries(path: Path) -> None:
-    """Remove temporaries of `path` left by a write that was killed.
+def remove_stale_temporaries(path: Path) -> None:
+    """Remove temporaries of `path` left by a write that was killed (a
+    database built aside too, db/default.py, and its journal).
 
     A temporary is stale when the process that made it (the PID in its name)
     is gone; a write still going in another process keeps its own.
