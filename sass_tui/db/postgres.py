@@ -36,6 +36,7 @@ here and only when a PostgreSQL address is given.
 
 from __future__ import annotations
 
+import os
 import sqlite3
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import ExitStack, contextmanager
@@ -55,6 +56,7 @@ from sass_tui.db.schema import (
     connect,
     schema_statements,
 )
+from sass_tui.model.atomic import process_alive
 from sass_tui.model.served import served_read_only
 
 # pg_advisory_xact_lock key of sass's writers: "SASS" in ASCII.
@@ -392,6 +394,31 @@ def people_count(conn: PostgresConnection) -> int:
 # --- imports -------------------------------------------------------------------
 
 
+# A staging folder is named for the process that made it, so that one a
+# killed import left behind (the people of a whole ANSUR II import, 23 MB)
+# is removed by the next import once that process is gone, as model/atomic.py
+# sweeps its temporaries.
+STAGING_PREFIX = "sass-staging-"
+
+
+def sweep_staging(folder: Path) -> list[Path]:
+    """Remove the staging folders in `folder` whose process is gone; returns them."""
+    # deferred: shutil — off sass query, sass query --count, sass person … (sass_tui/startup.py)
+    import shutil
+
+    swept: list[Path] = []
+    try:
+        entries = list(folder.glob(f"{STAGING_PREFIX}*-*"))
+    except OSError:
+        return swept
+    for entry in entries:
+        pid = entry.name[len(STAGING_PREFIX) :].split("-", 1)[0]
+        if pid.isdigit() and not process_alive(int(pid)) and entry.is_dir():
+            shutil.rmtree(entry, ignore_errors=True)
+            swept.append(entry)
+    return swept
+
+
 def import_staged(
     conn: PostgresConnection,
     stage: Callable[[sqlite3.Connection], T],
@@ -410,7 +437,8 @@ def import_staged(
     import tempfile
 
     conn.refuse_writes("an import")
-    with tempfile.TemporaryDirectory(prefix="sass-staging-") as folder:
+    sweep_staging(Path(tempfile.gettempdir()))
+    with tempfile.TemporaryDirectory(prefix=f"{STAGING_PREFIX}{os.getpid()}-") as folder:
         path = staging_file or Path(folder) / "staging.db"
         staging = connect(path, create=True)
         try:

@@ -163,7 +163,7 @@ def remove_stale_temporaries(path: Path) -> None:
         if not name.startswith(prefix):
             continue
         pid_text = name[len(prefix) :].split("-", 1)[0]
-        if pid_text.isdigit() and _process_alive(int(pid_text)):
+        if pid_text.isdigit() and process_alive(int(pid_text)):
             continue
         try:
             os.unlink(path.parent / name)
@@ -171,7 +171,9 @@ def remove_stale_temporaries(path: Path) -> None:
             pass
 
 
-def _process_alive(pid: int) -> bool:
+def process_alive(pid: int) -> bool:
+    """Whether process `pid` runs (this one does; a PID of another user's
+    process counts as running)."""
     if pid == os.getpid():
         return True
     try:
