@@ -115,6 +115,14 @@ def write_files_atomic(files: Mapping[Path, bytes | str]) -> None:
         raise
 
 
+def check_target(path: str | Path) -> None:
+    """Refuse, as a write would, a target that cannot be written: a
+    directory, a FIFO, a device, a missing directory.  A prompt asks this
+    before offering to overwrite (it offered to overwrite a directory, then
+    refused it)."""
+    _mode_for(Path(os.fspath(path)))
+
+
 def _mode_for(path: Path) -> int:
     """The mode the written file gets; refuses a target that is not a regular file."""
     parent = path.parent

@@ -33,6 +33,7 @@ from sass_tui.model.names import (
     joint_limit_variable,
 )
 from sass_tui.model.paths import LARGEST_TEXT_FILE, regular_file
+from sass_tui.model.text import quoted
 
 if TYPE_CHECKING:
     from lark import Lark, Token, Tree
@@ -242,7 +243,7 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
     try:
         tree = _parser().parse(text)
     except UnexpectedToken as exc:
-        found = "end of file" if exc.token.type == "$END" else repr(str(exc.token))
+        found = "end of file" if exc.token.type == "$END" else quoted(str(exc.token))
         expected = ", ".join(sorted(_describe(t) for t in exc.expected))
         raise FigParseError(
             f"{name}:{exc.line}:{exc.column}: found {found}; expected {expected}"

@@ -167,9 +167,29 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
         data.sections[gender], data.lines[gender] = _place_rows(
             entries, gender, group, lookup, name, section_line, data.warnings
         )
+    _refuse_negative_sizes(data, name)
     _check_rows(data, name)
     _check_cross_gender(data, name)
     return data
+
+
+def _refuse_negative_sizes(data: PopulationData, name: str) -> None:
+    """A segment size (girth file) is a length: a negative one is refused at
+    its line, as a typed cell's is (Figure.set_value); it went on into the
+    .fig as `botheadx = -25.00cm`.  Joint limits and centers of mass may be
+    negative."""
+    if data.group != GIRTH:
+        return
+    for gender in data.sections:
+        for i, row in enumerate(ROWS[GIRTH]):
+            for a, axis in enumerate(AXES):
+                cell = data.cell(gender, i, a)
+                if any(v < 0 for v in cell):  # NaN (999, no value) compares False
+                    raise PopulationFileError(
+                        f"{name}:{data.lines[gender][i]}: {row.label} {axis}: "
+                        f"{'/'.join(f'{v:g}' for v in cell)} cm; a segment size cannot "
+                        "be negative; nothing was loaded"
+                    )
 
 
 def _check_kind(entries: list[tuple[int, list[float], str]], group: str, name: str) -> None:

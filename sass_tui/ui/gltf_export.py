@@ -17,6 +17,7 @@ from contextlib import AbstractContextManager
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from sass_tui.model.atomic import OutputFileError, check_target
 from sass_tui.model.errors import SassError
 from sass_tui.ui.widgets.message_line import CANCELLED
 
@@ -56,6 +57,12 @@ async def _export(screen: SassScreen, figure: Figure, default: str) -> None:
         f"Exported the {pose} glTF body to {' and '.join(map(str, files))}."
         f"{not_in_humanoid_note(figure)}"
     )
+    try:
+        for file in files:  # a directory is refused before it is offered for overwrite
+            check_target(file)
+    except OutputFileError as exc:
+        screen.complain(f"{exc}; nothing written")
+        return
     existing = " and ".join(str(f) for f in files if f.exists())
     if existing:
         answer = await screen.answer_to(f"{existing} exists. Overwrite? (y/N)")
