@@ -440,7 +440,7 @@ def import_staged(
     sweep_staging(Path(tempfile.gettempdir()))
     with tempfile.TemporaryDirectory(prefix=f"{STAGING_PREFIX}{os.getpid()}-") as folder:
         path = staging_file or Path(folder) / "staging.db"
-        staging = connect(path, create=True)
+        staging = connect(path, create=True, read_only=False)  # a private file
         try:
             result = stage(staging)
             with conn.transaction():
