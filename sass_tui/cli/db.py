@@ -6,7 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_database
+from sass_tui.cli.options import SubParsers, add_db_option, open_database, warn_of_a_password
 from sass_tui.cli.progress import progress_for
 
 
@@ -78,6 +78,7 @@ def run_init(args: argparse.Namespace) -> int:
     from sass_tui.db.default import create_default_database, people_count
     from sass_tui.db.schema import DatabaseError, connect, default_db_path
 
+    warn_of_a_password(args)
     target = configured_target(getattr(args, "db", None))
     if is_url(target):
         return _init_postgres(str(target), args.force)

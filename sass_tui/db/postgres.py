@@ -88,7 +88,26 @@ def _driver() -> Any:
         raise DatabaseError(
             "a PostgreSQL database needs the psycopg driver: pip install 'sass-tui[postgres]'"
         ) from None
+    _quiet_copy_teardown()
     return psycopg
+
+
+def _quiet_copy_teardown() -> None:
+    """psycopg logs the error it meets while ending a COPY that another error
+    broke ("error ignored terminating <psycopg.Copy [BAD]>": a server gone,
+    a cancel) and raises the first; with no logging set up, Python printed
+    that line on the terminal before sass's own message about the first.
+    Only that record of psycopg's logger is dropped; its others go on."""
+    # deferred: logging — off sass query, sass query --count, sass person … (sass_tui/startup.py)
+    import logging
+
+    driver_log = logging.getLogger("psycopg")
+    if _drop_copy_teardown not in driver_log.filters:
+        driver_log.addFilter(_drop_copy_teardown)
+
+
+def _drop_copy_teardown(record: object) -> bool:
+    return not str(getattr(record, "msg", "")).startswith("error ignored terminating")
 
 
 # PostgreSQL's SQLSTATE for a change refused in a read-only transaction.
