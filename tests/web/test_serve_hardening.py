@@ -16,6 +16,7 @@ import re
 import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -77,6 +78,7 @@ def test_a_killed_session_closes_its_socket_and_frees_its_slot(one_session):
         try:
             (pid,) = served.children()
             os.kill(pid, signal.SIGKILL)  # a crash, or the OOM killer
+            killed = time.monotonic()
             said = b""
             async with asyncio.timeout(20):
                 while True:
@@ -85,6 +87,7 @@ def test_a_killed_session_closes_its_socket_and_frees_its_slot(one_session):
                         said += message.data
                     elif message.type != aiohttp.WSMsgType.TEXT:
                         break
+            print(f"the socket closed {time.monotonic() - killed:.2f} s after the kill")
             assert message.type in (aiohttp.WSMsgType.CLOSE, aiohttp.WSMsgType.CLOSED)
             assert socket.close_code == 1011
             assert b"this session's process ended (killed by signal 9)" in said
@@ -116,12 +119,14 @@ def test_the_sessions_die_with_a_killed_server(tmp_path):
             assert len(pids) == 2
             served.process.send_signal(signal.SIGKILL)  # no handler runs
             served.process.wait(10)
+            killed = time.monotonic()
             await asyncio.to_thread(
                 wait_until,
                 lambda: not any(Path(f"/proc/{pid}").exists() for pid in pids),
                 10,
                 "a session's process outlived its server",
             )
+            print(f"both sessions gone {time.monotonic() - killed:.2f} s after the server")
             for client, _, _ in clients:
                 await client.close()
 
