@@ -188,7 +188,7 @@ _JSON_PERSON = (
 )
 
 
-def _write_json(out: TextIO, rows) -> int:  # rows: a cursor
+def _write_json(out: TextIO, rows: Iterable[tuple]) -> int:
     """`{"persons": [...], "count": N}`, one person a line, streamed a chunk
     of rows at a time (every row held at once took 224 MB at 200,000 people,
     against 43 MB for CSV); the count comes last, once it is known.
@@ -199,7 +199,8 @@ def _write_json(out: TextIO, rows) -> int:  # rows: a cursor
     encoder, person by person (benchmarks/query_formats.py)."""
     out.write('{"persons": [')
     count = 0
-    while chunk := rows.fetchmany(1000):
+    remaining = iter(rows)
+    while chunk := list(islice(remaining, 1000)):
         out.write(("\n" if not count else ",\n") + _json_people(chunk))
         count += len(chunk)
     out.write(f'\n], "count": {count}}}\n' if count else f'], "count": {count}}}\n')
