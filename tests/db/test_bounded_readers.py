@@ -168,3 +168,22 @@ def test_quoted_cuts_and_counts():
     long = "z" * (QUOTE_LIMIT + 1)
     assert quoted(long) == f"'{'z' * QUOTE_LIMIT}…' ({QUOTE_LIMIT + 1} characters)"
     assert quoted("\x1b" * 100, escape=True).startswith("'^[^[")
+
+
+@pytest.mark.parametrize("column", ["stature", "Gender"])
+def test_an_ansur_field_of_100000_characters_is_quoted_short(column, tmp_path, capsys):
+    """csv lets a field grow to 131,072 characters: the message quotes 40."""
+    import gzip
+
+    from sass_tui.model import datasets
+
+    shipped = datasets.directory() / "ansur2" / "ANSUR_II_MALE_Public.csv.gz"
+    header, first = gzip.open(shipped, "rt", encoding="latin-1").read().split("\n")[:2]
+    cells = first.split(",")
+    cells[header.split(",").index(column)] = "x" * 100_000
+    survey = tmp_path / "survey.csv"
+    survey.write_text(f"{header}\n{','.join(cells)}\n", encoding="latin-1")
+    assert main(["db", "import-ansur", "--db", str(tmp_path / "new.db"), str(survey)]) == 2
+    said = capsys.readouterr().err
+    assert f"{survey}:2: column {column.lower()}" in said and "(100,000 characters)" in said
+    assert len(said) < LONGEST_MESSAGE
