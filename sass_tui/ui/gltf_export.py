@@ -59,7 +59,8 @@ async def _export(screen: SassScreen, figure: Figure, default: str) -> None:
     )
     try:
         for file in files:  # a directory is refused before it is offered for overwrite
-            check_target(file)
+            if file.exists():
+                check_target(file)
     except OutputFileError as exc:
         screen.complain(f"{exc}; nothing written")
         return

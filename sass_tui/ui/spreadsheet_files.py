@@ -184,13 +184,13 @@ class FileCommands(SheetScreenBase):
         # deferred: model.atomic — off the first screen (sass_tui/startup.py)
         from sass_tui.model.atomic import OutputFileError, check_target
 
+        if not path.exists():
+            return True
         try:
             check_target(path)
         except OutputFileError as exc:
             self.complain(f"{exc}; nothing written")
             return False
-        if not path.exists():
-            return True
         answer = await self.answer_to(f"{path} exists. Overwrite it? (y/N)")
         if answer is None:
             self.say(CANCELLED)
