@@ -18,7 +18,7 @@ from pathlib import Path
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db
 from sass_tui.model.names import GROUP_TITLES
-from sass_tui.model.paths import LARGEST_ID_LIST, regular_file
+from sass_tui.model.paths import LARGEST_ID_LIST, regular_file, size_text
 
 
 def register(commands: SubParsers) -> None:
@@ -108,10 +108,16 @@ def run(args: argparse.Namespace) -> int:
 def read_id_file(name: str) -> list[int]:
     """The person ids of file `name` (`-`: standard input), at most LARGEST_ID_LIST bytes."""
     # deferred: db.population — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.population import parse_id_list
+    from sass_tui.db.population import IdListError, parse_id_list
 
-    if name == "-":
-        return parse_id_list(sys.stdin.read(), "standard input")
+    if name == "-":  # a pipe has no size to check first: read one character past the limit
+        text = sys.stdin.read(LARGEST_ID_LIST + 1)
+        if len(text) > LARGEST_ID_LIST:
+            raise IdListError(
+                f"standard input: over {size_text(LARGEST_ID_LIST)}, too large for a list "
+                "of person ids; nothing was used"
+            )
+        return parse_id_list(text, "standard input")
     # not a FIFO, which would block the read; a huge file is refused unread
     path = regular_file(name, largest=LARGEST_ID_LIST, kind="a list of person ids")
     try:

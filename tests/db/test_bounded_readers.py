@@ -187,3 +187,31 @@ def test_an_ansur_field_of_100000_characters_is_quoted_short(column, tmp_path, c
     said = capsys.readouterr().err
     assert f"{survey}:2: column {column.lower()}" in said and "(100,000 characters)" in said
     assert len(said) < LONGEST_MESSAGE
+
+
+def test_ids_on_standard_input_are_bounded_too(default_db_file, tmp_path, monkeypatch, capsys):
+    """`--ids -` reads a pipe, which has no size to check first: it reads
+    one character past the limit and stops there."""
+    import io
+
+    from sass_tui.model.paths import LARGEST_ID_LIST
+
+    class Endless(io.TextIOBase):
+        """A pipe that never ends (`yes 1 | sass population --ids -`)."""
+
+        served = 0
+
+        def read(self, size: int | None = -1) -> str:
+            assert size is not None and size > 0, "an unbounded read of standard input"
+            self.served += size
+            return "1\n" * (size // 2) + "1" * (size % 2)
+
+    endless = Endless()
+    monkeypatch.setattr("sys.stdin", endless)
+    db = tmp_path / "s.db"
+    db.write_bytes(default_db_file.read_bytes())
+    out = tmp_path / "p.dat"
+    assert main(["population", "--db", str(db), "--ids", "-", "-o", str(out)]) == 2
+    said = capsys.readouterr().err
+    assert "standard input: over 32.0 MiB, too large for a list of person ids" in said
+    assert endless.served == LARGEST_ID_LIST + 1 and not out.exists()
