@@ -6,7 +6,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_database
+from sass_tui.cli.options import SubParsers, add_db_option, open_database, warn_of_a_password
 from sass_tui.cli.progress import progress_for
 from sass_tui.db import accelerator
 from sass_tui.db.addresses import is_url
@@ -81,6 +81,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run_init(args: argparse.Namespace) -> int:
+    warn_of_a_password(args)
     target = configured_target(getattr(args, "db", None))
     if is_url(target):
         return _init_postgres(str(target), args.force)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import sys
 from typing import TYPE_CHECKING, TypeAlias
+from urllib.parse import urlsplit
 
 from sass_tui.cli.progress import progress_for
 from sass_tui.model.errors import SassError
@@ -38,6 +39,7 @@ def open_database(args: argparse.Namespace, create: bool = False):  # -> db.data
     from sass_tui.db.default import needs_building
     from sass_tui.db.schema import default_db_path
 
+    warn_of_a_password(args)
     target = configured_target(getattr(args, "db", None))
     bar = None
     if target is None and needs_building(default_db_path()):
@@ -48,6 +50,22 @@ def open_database(args: argparse.Namespace, create: bool = False):  # -> db.data
     if bar:
         bar.finish()
     return db
+
+
+PASSWORD_IN_PS = (
+    "warning: the password in --db shows in `ps` to every user of this machine; "
+    "keep it in ~/.pgpass (or the file $PGPASSFILE names) or in $PGPASSWORD, "
+    "which the PostgreSQL driver reads, and give --db without it"
+)
+
+
+def warn_of_a_password(args: argparse.Namespace) -> None:
+    """Say so when `--db` on the command line carries a password (a
+    PostgreSQL address, postgresql://user:pw@host/db): the command line of a
+    process is every local user's to read; $SASS_DB is not."""
+    given = getattr(args, "db", None)
+    if isinstance(given, str) and "://" in given and urlsplit(given).password:
+        print(f"sass {getattr(args, 'command', '')}: {PASSWORD_IN_PS}", file=sys.stderr)
 
 
 def open_db(args: argparse.Namespace, create: bool = False):  # -> the db layer's connection

@@ -25,6 +25,7 @@ from sass_tui.cli.options import (
     weighting_name,
 )
 from sass_tui.db.population import (
+    IdListError,
     missing_ids,
     parse_id_list,
     people_words,
@@ -33,7 +34,7 @@ from sass_tui.db.population import (
 from sass_tui.db.population_files import write_population_files
 from sass_tui.db.query import parse
 from sass_tui.model.names import GROUP_TITLES
-from sass_tui.model.paths import regular_file
+from sass_tui.model.paths import LARGEST_ID_LIST, regular_file, size_text
 
 
 def register(commands: SubParsers) -> None:
@@ -80,7 +81,7 @@ def run(args: argparse.Namespace) -> int:
         return 2
     # Parsed once, passed on; a bad query touches nothing.
     selection = None if args.query is None else parse(args.query)
-    ids = _read_ids(args.ids) if args.ids is not None else None
+    ids = read_id_file(args.ids) if args.ids is not None else None
     conn = open_db(args)
     try:
         absent = missing_ids(conn, ids) if ids is not None else []
@@ -119,10 +120,18 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _read_ids(name: str) -> list[int]:
-    if name == "-":
-        return parse_id_list(sys.stdin.read(), "standard input")
-    path = regular_file(name)  # not a FIFO, which would block the read
+def read_id_file(name: str) -> list[int]:
+    """The person ids of file `name` (`-`: standard input), at most LARGEST_ID_LIST bytes."""
+    if name == "-":  # a pipe has no size to check first: read one character past the limit
+        text = sys.stdin.read(LARGEST_ID_LIST + 1)
+        if len(text) > LARGEST_ID_LIST:
+            raise IdListError(
+                f"standard input: over {size_text(LARGEST_ID_LIST)}, too large for a list "
+                "of person ids; nothing was used"
+            )
+        return parse_id_list(text, "standard input")
+    # not a FIFO, which would block the read; a huge file is refused unread
+    path = regular_file(name, largest=LARGEST_ID_LIST, kind="a list of person ids")
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:

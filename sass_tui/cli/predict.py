@@ -30,7 +30,7 @@ from sass_tui.cli.options import (
 from sass_tui.db.predict import open_predictor
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import regular_file
+from sass_tui.model.paths import LARGEST_PEOPLE_TABLE, regular_file
 from sass_tui.model.prediction import MIN_PEOPLE, UnknownFieldError, field_unit, split_known
 from sass_tui.model.units import UnitError, parse_quantity
 from sass_tui.model.vocabulary import GENDERS
@@ -242,10 +242,14 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
     cell filled with its prediction, and adds F, F.low, F.high for every
     predicted field F (F.low and F.high only, for a field that is an input column)."""
     try:
-        with open(regular_file(source), encoding="utf-8-sig", newline="") as handle:
-            rows = list(csv.reader(handle))
+        people_table = regular_file(source, largest=LARGEST_PEOPLE_TABLE, kind="a table of people")
+        with open(people_table, encoding="utf-8-sig", newline="") as handle:
+            reader = csv.reader(handle)
+            rows = list(reader)
     except UnicodeDecodeError as exc:
         raise PredictArgumentError(f"{source}: not UTF-8 text ({exc.reason})") from None
+    except csv.Error as exc:  # a field over csv's 131,072 characters, a NUL
+        raise PredictArgumentError(f"{source}:{reader.line_num}: not CSV ({exc})") from None
     if not rows:
         raise PredictArgumentError(f"{source}:1: the file is empty; expected a header row")
     header, body = rows[0], rows[1:]

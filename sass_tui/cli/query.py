@@ -18,7 +18,13 @@ from sass_tui.cli.options import (
     weighting_name,
 )
 from sass_tui.db.query import PERSON_FIELDS, QueryError, compile_query, demonstration_hint
-from sass_tui.model.text import is_printable, is_printable_lines, printable
+from sass_tui.model.text import (
+    is_printable,
+    is_printable_lines,
+    may_start_a_formula,
+    printable,
+    spreadsheet_text,
+)
 
 
 def register(commands: SubParsers) -> None:
@@ -93,27 +99,28 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
         import csv
 
         # Names and sources come from files and the CSV may go to a terminal: a
-        # control character is written escaped.  One check over a chunk's names
-        # and sources joined; only when it fails is each text made printable.
+        # control character is written escaped.  The CSV is opened in
+        # spreadsheets too: a text cell that would start a formula (an import's
+        # source label `=HYPERLINK(...)`) is written as text.  One check over a
+        # chunk's texts joined; only when it fails is each text made safe.
         writer = csv.writer(out, lineterminator="\n")
         writer.writerow(PERSON_FIELDS)
         found = 0
         while chunk := rows.fetchmany(1000):
             try:
-                plain = is_printable("".join(map(itemgetter(1), chunk))) and is_printable(
-                    "".join(map(itemgetter(7), chunk))
-                )
-            except TypeError:  # a name stored as a number
+                texts = [row[k] for row in chunk for k in (1, 2, 5, 7)]
+                plain = is_printable("".join(texts)) and not may_start_a_formula(texts)
+            except TypeError:  # a name stored as a number, or no gender
                 plain = False
             if not plain:
                 chunk = [
-                    (i, printable(name), g, mass, stature, hand, age, printable(source))
+                    (i, _cell(name), _cell(g), mass, stature, _cell(hand), age, _cell(source))
                     for i, name, g, mass, stature, hand, age, source in chunk
                 ]
             writer.writerows(chunk)
             found += len(chunk)
     elif args.format == "json":
-        found = _write_json(out, rows.fetchall())
+        found = _write_json(out, rows)
     else:
         found = _write_table(out, rows)
     if not found:
@@ -122,7 +129,7 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
 
 def _list_fields(form: str) -> None:
     """Every field with its unit and description (db/query_fields.py)."""
-    # deferred: db.query_fields — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: db.query_fields — only --fields lists the fields
     from sass_tui.db.query_fields import field_reference
 
     fields = field_reference()
@@ -148,6 +155,11 @@ def _list_fields(form: str) -> None:
             f"{f.name:<{width}}  {f.unit:<{unit_width}}  {f.description}\n" for f in fields
         )
         out.write(f"{len(fields)} fields\n")
+
+
+def _cell(text: object) -> object:
+    """A text cell of the CSV: printable, and never a formula; None stays empty."""
+    return text if text is None else spreadsheet_text(printable(text))
 
 
 def _weighted_count(conn, query, name: str) -> None:  # query: db.query.CompiledQuery
@@ -234,37 +246,45 @@ _JSON_PERSON = (
 )
 
 
-def _write_json(out: TextIO, rows: list[tuple]) -> int:
-    """`{"count": N, "persons": [...]}`, one person a line.  json.dump with
-    `indent` runs the pure-Python encoder (2.96 times the table's time); each
-    person is made here with one format, its texts quoted by json's own C
-    function, when the numbers are all finite numbers (their sum is finite;
-    None or a text raises TypeError); otherwise by the encoder, person by
-    person (benchmarks/query_formats.py)."""
+def _write_json(out: TextIO, rows: Iterable[tuple]) -> int:
+    """`{"persons": [...], "count": N}`, one person a line, streamed a chunk
+    of rows at a time (every row held at once took 224 MB at 200,000 people,
+    against 43 MB for CSV); the count comes last, once it is known.
+    json.dump with `indent` runs the pure-Python encoder (2.96 times the
+    table's time); each person is made here with one format, its texts
+    quoted by json's own C function, when the numbers are all finite numbers
+    (their sum is finite; None or a text raises TypeError); otherwise by the
+    encoder, person by person (benchmarks/query_formats.py)."""
+    out.write('{"persons": [')
+    count = 0
+    remaining = iter(rows)
+    while chunk := list(islice(remaining, 1000)):
+        out.write(("\n" if not count else ",\n") + _json_people(chunk))
+        count += len(chunk)
+    out.write(f'\n], "count": {count}}}\n' if count else f'], "count": {count}}}\n')
+    return count
+
+
+def _json_people(rows: list[tuple]) -> str:
+    """Some people of the JSON listing, one a line, joined by ",\n"."""
     # deferred: json — only --format json writes JSON; off sass query (sass_tui/startup.py)
     import json
     from json.encoder import encode_basestring_ascii as quote
 
     try:
         finite = all(math.isfinite(sum(map(itemgetter(k), rows))) for k in (3, 4, 6))
-        lines = (
-            ",\n".join(
+        if finite:
+            return ",\n".join(
                 [
                     _JSON_PERSON
                     % (id_num, quote(name), quote(g), mass, stature, quote(hand), age, quote(src))
                     for id_num, name, g, mass, stature, hand, age, src in rows
                 ]
             )
-            if finite
-            else None
-        )
     except TypeError:
-        lines = None
-    if lines is None:
-        encode = json.JSONEncoder(allow_nan=False).encode
-        lines = ",\n".join([encode(_finite(dict(zip(PERSON_FIELDS, row)))) for row in rows])
-    out.write(f'{{"count": {len(rows)}, "persons": [\n{lines}\n]}}\n')
-    return len(rows)
+        pass
+    encode = json.JSONEncoder(allow_nan=False).encode
+    return ",\n".join([encode(_finite(dict(zip(PERSON_FIELDS, row)))) for row in rows])
 
 
 def _finite(person: dict) -> dict:

@@ -20,7 +20,7 @@ from urllib.parse import urlsplit
 
 from sass_tui.cli.options import SubParsers, add_db_option, open_db, positive_number
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import data_dir, regular_file, user_path
+from sass_tui.model.paths import LARGEST_TOKEN_FILE, data_dir, regular_file, user_path
 
 # secrets.token_urlsafe(32): 256 bits.  A token file's must have at least
 # 128 bits: 22 characters of the 64 a URL carries unquoted (6 bits each).
@@ -98,9 +98,6 @@ def register(commands: SubParsers) -> None:
 def run(args: argparse.Namespace) -> int:
     if find_spec("textual_serve") is None:  # the [serve] extra is not installed
         raise ServeError("sass serve needs textual-serve: pip install 'sass-tui[serve]'")
-    # deferred: ui.serve — off sass serve (sass_tui/startup.py)
-    from sass_tui.ui.serve import ServeOptions, serve
-
     loopback = is_loopback(args.host)
     if not loopback and not args.allow_remote:
         raise ServeError(
@@ -114,6 +111,10 @@ def run(args: argparse.Namespace) -> int:
     token = read_token(args.token_file) if args.token_file else new_token()
     workdir = served_workdir(args.workdir)
     db = database_path(args, args.read_only)
+    # After the checks: ui/serve.py imports textual-serve and aiohttp.
+    # deferred: ui.serve — off sass serve (sass_tui/startup.py)
+    from sass_tui.ui.serve import ServeOptions, serve
+
     options = ServeOptions(
         host=args.host,
         port=args.port,
@@ -193,7 +194,7 @@ def new_token() -> str:
 
 def read_token(name: str) -> str:
     """The token in file `name` (its first line, spaces around it dropped)."""
-    path = regular_file(name)
+    path = regular_file(name, largest=LARGEST_TOKEN_FILE, kind="a token file")
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
     except UnicodeDecodeError:

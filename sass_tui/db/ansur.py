@@ -39,7 +39,7 @@ from sass_tui.db.schema import (
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES, PUBLISHED_TO_CANONICAL
 from sass_tui.model.paths import PathError, regular_file
-from sass_tui.model.text import control_character, printable
+from sass_tui.model.text import control_character, printable, quoted
 
 ANSUR_HANDEDNESS = {
     "right hand": "right",
@@ -259,7 +259,7 @@ class _Chunk:
                 try:
                     float(text)
                 except ValueError:
-                    self.fail(k, f"column {name}: expected a number, found {text!r}")
+                    self.fail(k, f"column {name}: expected a number, found {quoted(text)}")
             raise
         return values
 
@@ -272,7 +272,7 @@ class _Chunk:
             found = self.rows[k][self.columns[name]]
             self.fail(
                 k,
-                f"column {name}: {found!r} is not a plausible value "
+                f"column {name}: {quoted(found)} is not a plausible value "
                 f"(expected more than {low:g} and at most {high:g} {unit} once converted)",
             )
 
@@ -284,7 +284,7 @@ class _Chunk:
                 self.fail(
                     k,
                     f"column {name}: expected one of {', '.join(sorted(table))}, "
-                    f"found {row[column]!r}",
+                    f"found {quoted(row[column])}",
                 )
             out.append(table[key])
         return out
@@ -312,7 +312,7 @@ class _Chunk:
             elif text.isdigit() and len(text) <= 9:
                 out.append(int(text))
             else:
-                self.fail(k, f"column {name}: expected a whole-number code, found {text!r}")
+                self.fail(k, f"column {name}: expected a whole-number code, found {quoted(text)}")
         return out
 
 

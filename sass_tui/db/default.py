@@ -5,18 +5,24 @@ The default database holds the 6,068 people of the ANSUR II public survey
 `ansur2`, and the synthetic people with strength experiments (datasets/db),
 source `synthetic`.
 
-It is built *in place*, in one exclusive transaction: every table dropped and
-created afresh, then filled.  Another process sees the old database or the
-new one, never a mixture; a process importing meanwhile finishes first (or
-`db init` waits for it), and no file is ever renamed over a database somebody
-may hold open (a stale rollback journal then belongs to the same file, and
-SQLite rolls it back as it should).
+A database that is there is rebuilt *in place*, in one exclusive
+transaction: every table dropped and created afresh, then filled.  Another
+process sees the old database or the new one, never a mixture; a process
+importing meanwhile finishes first (or `db init` waits for it), and no file
+is ever renamed over a database somebody may hold open (a stale rollback
+journal then belongs to the same file, and SQLite rolls it back as it
+should).  A new one (no file, or an empty one) is built *aside*, in a
+temporary file beside it named as model/atomic.py names its temporaries,
+and linked into place only once it is whole: a full disk half-way leaves no
+database (it once left a schema with nobody in it, which answered every
+query with "0 people"), and a killed build's temporary is swept by the next.
 
 Nothing here parses arguments or prints; the CLI and the TUI call these.
 """
 
 from __future__ import annotations
 
+import os
 import sqlite3
 from pathlib import Path
 
@@ -31,6 +37,7 @@ from sass_tui.db.schema import (
     write_refused,
 )
 from sass_tui.db.scope import DEMONSTRATION_SOURCE
+from sass_tui.model.atomic import remove_stale_temporaries, temporary_name
 
 ANSUR_FILES = ("ANSUR_II_MALE_Public.csv.gz", "ANSUR_II_FEMALE_Public.csv.gz")
 SYNTHETIC_LABEL = DEMONSTRATION_SOURCE  # what a query reaches only when it names it
@@ -129,6 +136,11 @@ def create_default_database(
     caller wipes an import by accident.
     Returns the people stored per source label."""
     path = Path(path)
+    if needs_building(path):
+        built = _build_aside(path, Steps(progress, cancel, "building the default database"))
+        if built is not None:
+            return built
+        # another process made the file meanwhile: leave it, or rebuild it in place
     conn = connect(path, create=True, rebuild=True)
     try:
         # A cancel (Cancelled at the next chunk of the survey) rolls it all back.
@@ -140,6 +152,45 @@ def create_default_database(
         raise refused from None
     finally:
         conn.close()
+
+
+def _build_aside(path: Path, progress: Progress | None) -> dict[str, int] | None:
+    """Build a new database beside `path` and link it into place; None when
+    another process made `path` meanwhile (theirs is kept, ours dropped)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    remove_stale_temporaries(path)
+    aside = temporary_name(path)
+    try:
+        try:
+            conn = connect(aside, create=True, rebuild=True)
+        except DatabaseError as exc:  # its messages name the file users know
+            raise DatabaseError(str(exc).replace(str(aside), str(path))) from None
+        try:
+            counts = _build(conn, path, progress, replace=True)
+        except sqlite3.Error as exc:
+            refused = write_refused(exc, path)
+            if refused is None:
+                raise
+            raise refused from None
+        finally:
+            conn.close()
+        if path.exists() and path.stat().st_size == 0:
+            path.unlink()  # an empty file is no database: ours takes its place
+        try:
+            os.link(aside, path)  # never over a file another process made meanwhile
+        except FileExistsError:
+            return None
+        except OSError:  # a file system without hard links
+            if path.exists():
+                return None
+            os.replace(aside, path)
+        return counts
+    finally:
+        for leftover in (aside, aside.with_name(aside.name + "-journal")):
+            try:
+                leftover.unlink()
+            except FileNotFoundError:
+                pass
 
 
 def _build(

@@ -48,10 +48,10 @@ from sass_tui.db.schema import (
     transaction,
 )
 from sass_tui.db.scope import source_label
-from sass_tui.model.atomic import write_text_atomic
+from sass_tui.model.atomic import write_files_atomic
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import PathError, regular_file
-from sass_tui.model.text import control_character
+from sass_tui.model.paths import LARGEST_TABLE_FILE, PathError, regular_file
+from sass_tui.model.text import control_character, quoted
 from sass_tui.model.units import UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, SIDES, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
@@ -124,7 +124,8 @@ class _Reader:
     def __init__(self, path: Path):
         self.path = path
         try:
-            regular_file(path)  # a FIFO or a device would never end
+            # a FIFO or a device would never end; a huge file is refused unread
+            regular_file(path, largest=LARGEST_TABLE_FILE, kind="a flat file")
         except PathError as exc:
             raise FlatFileError(f"{path}: cannot read: {exc.reason}") from None
         try:
@@ -155,18 +156,20 @@ class _Reader:
         try:
             value = float(text)
         except ValueError:
-            self.fail(f"{field_name}: expected a number, found {text!r}")
+            self.fail(f"{field_name}: expected a number, found {quoted(text)}")
         if not math.isfinite(value):
-            self.fail(f"{field_name}: expected a finite number, found {text!r}")
+            self.fail(f"{field_name}: expected a finite number, found {quoted(text)}")
         return math.nan if value == NO_VALUE else value
 
     def integer(self, text: str, field_name: str) -> int:
         try:
             value = int(text)
         except ValueError:
-            self.fail(f"{field_name}: expected a whole number, found {text!r}")
+            self.fail(f"{field_name}: expected a whole number, found {quoted(text)}")
         if not 0 <= value <= MAX_ID:
-            self.fail(f"{field_name}: expected a whole number from 0 to {MAX_ID}, found {text!r}")
+            self.fail(
+                f"{field_name}: expected a whole number from 0 to {MAX_ID}, found {quoted(text)}"
+            )
         return value
 
     def plausible(self, text: str, field_name: str, high: float, unit: str) -> float:
@@ -174,7 +177,7 @@ class _Reader:
         value = self.number(text, field_name)
         if value == value and not 0 < value <= high:
             self.fail(
-                f"{field_name}: {text!r} is not plausible "
+                f"{field_name}: {quoted(text)} is not plausible "
                 f"(expected more than 0 and at most {high:g} {unit}, or 999.0 for no value)"
             )
         return value
@@ -182,7 +185,7 @@ class _Reader:
     def choice(self, text: str, choices: Sequence[str], field_name: str) -> str:
         word = text.strip().lower()
         if word not in choices:
-            self.fail(f"{field_name}: expected one of {', '.join(choices)}, found {text!r}")
+            self.fail(f"{field_name}: expected one of {', '.join(choices)}, found {quoted(text)}")
         return word
 
 
@@ -407,8 +410,11 @@ def _count_lines(files: FlatFiles) -> int:
     total = 0
     for name in FILE_NAMES:
         path = getattr(files, name)
-        if path is not None and path.is_file():  # not a FIFO: the reader refuses it
+        # not a FIFO, nor a file too large: the reader refuses them unread
+        if path is not None and path.is_file():
             try:
+                if path.stat().st_size > LARGEST_TABLE_FILE:
+                    continue
                 with open(path, "rb") as handle:
                     total += sum(
                         chunk.count(b"\n") for chunk in iter(lambda: handle.read(1 << 20), b"")
@@ -487,9 +493,10 @@ def write_flat_files(batch: PeopleBatch, directory: str | Path) -> list[Path]:
             lines[key].append(
                 f"{ids[i]},{exp}," + ",".join(v if isinstance(v, str) else _fmt(v) for v in rest)
             )
-    written = []
-    for key, name in FILE_NAMES.items():
-        if lines[key]:
-            write_text_atomic(directory / name, "\n".join(lines[key]) + "\n")
-            written.append(directory / name)
-    return written
+    files = {
+        directory / name: "\n".join(lines[key]) + "\n"
+        for key, name in FILE_NAMES.items()
+        if lines[key]
+    }
+    write_files_atomic(files)  # all or none
+    return list(files)

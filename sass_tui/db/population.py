@@ -3,7 +3,7 @@ the empirical 5th, 50th and 95th percentile, per gender, of every girth and
 center-of-mass row, from the selected people's own values.
 
 The result is one PopulationData per group (report figure 7's format), ready
-for `popfile.write_population_file` or for loading into the spreadsheet.
+for `popfile.render_population_file` or for loading into the spreadsheet.
 
 Every cell has a value, so that any population of real people makes a
 figure.  A cell at least MIN_PEOPLE of the people have a value of is theirs
@@ -65,7 +65,7 @@ from sass_tui.model.names import (
     row_index,
 )
 from sass_tui.model.popfile import PopulationData, read_population_file
-from sass_tui.model.text import printable
+from sass_tui.model.text import quoted
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -405,7 +405,7 @@ def parse_id_list(text: str, where: str) -> list[int]:
         digits = field.lstrip("0") or "0"
         if not (field.isascii() and field.isdigit() and len(digits) < 20 and int(digits) < 2**63):
             raise IdListError(
-                f"{where}:{number}: {printable(field)!r} is not a person id "
+                f"{where}:{number}: {quoted(field, escape=True)} is not a person id "
                 "(expected a whole number, one a line, or `sass query --format csv` output)"
             )
         ids[int(digits)] = None

@@ -8,17 +8,20 @@ from __future__ import annotations
 from pathlib import Path
 
 from sass_tui.db.population import SelectionPopulation
+from sass_tui.model.atomic import write_files_atomic
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL
-from sass_tui.model.popfile import cmass_path, global_path, write_population_file
+from sass_tui.model.popfile import cmass_path, global_path, render_population_file
 
 __all__ = ["cmass_path", "global_path", "write_population_files"]
 
 
 def write_population_files(result: SelectionPopulation, target: Path) -> dict[str, Path]:
-    """Write each group the population has; returns group -> the file written."""
+    """Write each group the population has, all or none (a full disk once left
+    a new girth file beside an old center-of-mass file); returns group -> the
+    file written."""
     paths = {GIRTH: target, CENTER_OF_MASS: cmass_path(target), GLOBAL: global_path(target)}
-    written: dict[str, Path] = {}
-    for group, data in result.groups.items():
-        write_population_file(data, paths[group])
-        written[group] = paths[group]
+    written = {group: paths[group] for group in result.groups}
+    write_files_atomic(
+        {written[group]: render_population_file(data) for group, data in result.groups.items()}
+    )
     return written

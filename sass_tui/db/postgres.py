@@ -36,6 +36,7 @@ here and only when a PostgreSQL address is given.
 
 from __future__ import annotations
 
+import os
 import sqlite3
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import ExitStack, contextmanager
@@ -55,6 +56,7 @@ from sass_tui.db.schema import (
     connect,
     schema_statements,
 )
+from sass_tui.model.atomic import process_alive
 from sass_tui.model.served import served_read_only
 
 # pg_advisory_xact_lock key of sass's writers: "SASS" in ASCII.
@@ -86,7 +88,26 @@ def _driver() -> Any:
         raise DatabaseError(
             "a PostgreSQL database needs the psycopg driver: pip install 'sass-tui[postgres]'"
         ) from None
+    _quiet_copy_teardown()
     return psycopg
+
+
+def _quiet_copy_teardown() -> None:
+    """psycopg logs the error it meets while ending a COPY that another error
+    broke ("error ignored terminating <psycopg.Copy [BAD]>": a server gone,
+    a cancel) and raises the first; with no logging set up, Python printed
+    that line on the terminal before sass's own message about the first.
+    Only that record of psycopg's logger is dropped; its others go on."""
+    # deferred: logging — off sass query, sass query --count, sass person … (sass_tui/startup.py)
+    import logging
+
+    driver_log = logging.getLogger("psycopg")
+    if _drop_copy_teardown not in driver_log.filters:
+        driver_log.addFilter(_drop_copy_teardown)
+
+
+def _drop_copy_teardown(record: object) -> bool:
+    return not str(getattr(record, "msg", "")).startswith("error ignored terminating")
 
 
 # PostgreSQL's SQLSTATE for a change refused in a read-only transaction.
@@ -392,6 +413,31 @@ def people_count(conn: PostgresConnection) -> int:
 # --- imports -------------------------------------------------------------------
 
 
+# A staging folder is named for the process that made it, so that one a
+# killed import left behind (the people of a whole ANSUR II import, 23 MB)
+# is removed by the next import once that process is gone, as model/atomic.py
+# sweeps its temporaries.
+STAGING_PREFIX = "sass-staging-"
+
+
+def sweep_staging(folder: Path) -> list[Path]:
+    """Remove the staging folders in `folder` whose process is gone; returns them."""
+    # deferred: shutil — off sass query, sass query --count, sass person … (sass_tui/startup.py)
+    import shutil
+
+    swept: list[Path] = []
+    try:
+        entries = list(folder.glob(f"{STAGING_PREFIX}*-*"))
+    except OSError:
+        return swept
+    for entry in entries:
+        pid = entry.name[len(STAGING_PREFIX) :].split("-", 1)[0]
+        if pid.isdigit() and not process_alive(int(pid)) and entry.is_dir():
+            shutil.rmtree(entry, ignore_errors=True)
+            swept.append(entry)
+    return swept
+
+
 def import_staged(
     conn: PostgresConnection,
     stage: Callable[[sqlite3.Connection], T],
@@ -410,9 +456,10 @@ def import_staged(
     import tempfile
 
     conn.refuse_writes("an import")
-    with tempfile.TemporaryDirectory(prefix="sass-staging-") as folder:
+    sweep_staging(Path(tempfile.gettempdir()))
+    with tempfile.TemporaryDirectory(prefix=f"{STAGING_PREFIX}{os.getpid()}-") as folder:
         path = staging_file or Path(folder) / "staging.db"
-        staging = connect(path, create=True)
+        staging = connect(path, create=True, read_only=False)  # a private file
         try:
             result = stage(staging)
             with conn.transaction():

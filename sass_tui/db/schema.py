@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 from sass_tui.db.addresses import is_url, sqlite_only
 from sass_tui.model.paths import data_dir
+from sass_tui.model.served import READ_ONLY_ENV, served_read_only
 
 if TYPE_CHECKING:
     import numpy as np
@@ -314,7 +315,7 @@ def connect(
     create: bool = False,
     check_same_thread: bool = True,
     rebuild: bool = False,
-    read_only: bool = False,
+    read_only: bool | None = None,
 ) -> sqlite3.Connection:
     """Open a sass database (autocommit mode: writers use transaction()).
 
@@ -325,8 +326,17 @@ def connect(
     sass database, whatever its version or state, since it is about to be
     rebuilt.  `read_only` (`sass serve --read-only`) opens the file in
     SQLite's read-only mode: any write to it fails (TEMP tables, where the
-    query lists live, still work)."""
+    query lists live, still work); None (the default) is $SASS_READ_ONLY's
+    answer, as on PostgreSQL (db/postgres.py), and then a database is not
+    created either."""
     path = Path(path)
+    if read_only is None:
+        read_only = served_read_only()
+        if read_only and create:
+            raise DatabaseError(
+                f"cannot write {path}: the database is open read-only "
+                f"(${READ_ONLY_ENV}=1); nothing changed"
+            )
     new_file = not path.exists()
     if new_file and not create:
         raise DatabaseError(

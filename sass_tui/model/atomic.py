@@ -10,7 +10,12 @@ disk, then renamed over the target.  So that nothing surprising happens:
   a directory) is refused: renaming over it would replace it;
 - errors name the target, never the temporary file;
 - a write killed half-way leaves a temporary file; the next write of the same
-  target removes it once its process is gone.
+  target removes it once its process is gone;
+- files that belong together (a population's girth and center-of-mass
+  files, a .gltf and its .bin, flat-file exports) are written by
+  `write_files_atomic`: every one is written to its temporary first, and only
+  when all are on disk is any renamed into place; a full disk leaves every
+  target as it was.
 """
 
 from __future__ import annotations
@@ -18,6 +23,7 @@ from __future__ import annotations
 import errno
 import os
 import stat
+from collections.abc import Mapping
 from pathlib import Path
 
 from sass_tui.model.errors import SassError
@@ -57,31 +63,64 @@ def write_text_atomic(path: str | Path, text: str, encoding: str = "utf-8") -> N
 
 def write_bytes_atomic(path: str | Path, data: bytes) -> None:
     """Write `data` to `path` atomically, or raise OutputFileError naming `path`
-    (binary files: a glTF's .glb and .bin)."""
-    path = Path(os.fspath(path))
-    mode = _mode_for(path)
-    _remove_stale_temporaries(path)
-    tmp = temporary_name(path)
+    (binary files: a glTF's .glb)."""
+    write_files_atomic({Path(os.fspath(path)): data})
+
+
+def write_files_atomic(files: Mapping[Path, bytes | str]) -> None:
+    """Write several files, all or none: each to its temporary (text as
+    UTF-8), flushed to disk, and only then each renamed over its target, in
+    the order given.  A write that fails (a full disk, a target that is not
+    a regular file) leaves every target as it was and no temporary behind.
+    A rename within a directory takes no space; one refused after others
+    were done (a file system gone read-only in between) is the one window
+    where some files are new and others not, and the error says so."""
+    targets = [Path(os.fspath(path)) for path in files]
+    if len(set(targets)) != len(targets):
+        raise OutputFileError(targets[0], "the same file is named twice")
+    modes = [_mode_for(path) for path in targets]
+    written: list[tuple[Path, Path]] = []  # (temporary, target)
     try:
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o600)
-    except OSError as exc:
-        raise _error(path, exc) from None
-    try:
-        try:
-            with os.fdopen(fd, "wb") as handle:
-                handle.write(data)
-                handle.flush()
-                os.fchmod(handle.fileno(), mode)
-                os.fsync(handle.fileno())
-            os.replace(tmp, path)
-        except OSError as exc:
-            raise _error(path, exc) from None
+        for path, mode, data in zip(targets, modes, files.values()):
+            remove_stale_temporaries(path)
+            tmp = temporary_name(path)
+            try:
+                fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o600)
+            except OSError as exc:
+                raise _error(path, exc) from None
+            written.append((tmp, path))
+            try:
+                with os.fdopen(fd, "wb") as handle:
+                    handle.write(data.encode("utf-8") if isinstance(data, str) else data)
+                    handle.flush()
+                    os.fchmod(handle.fileno(), mode)
+                    os.fsync(handle.fileno())
+            except OSError as exc:
+                raise _error(path, exc) from None
+        for done, (tmp, path) in enumerate(written):
+            try:
+                os.replace(tmp, path)
+            except OSError as exc:
+                error = _error(path, exc)
+                if done:
+                    replaced = ", ".join(str(p) for _, p in written[:done])
+                    error = OutputFileError(path, f"{error.strerror}; already replaced: {replaced}")
+                raise error from None
     except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
+        for tmp, _ in written:
+            try:
+                os.unlink(tmp)
+            except FileNotFoundError:
+                pass
         raise
+
+
+def check_target(path: str | Path) -> None:
+    """Refuse, as a write would, a target that cannot be written: a
+    directory, a FIFO, a device, a missing directory.  A prompt asks this
+    before offering to overwrite (it offered to overwrite a directory, then
+    refused it)."""
+    _mode_for(Path(os.fspath(path)))
 
 
 def _mode_for(path: Path) -> int:
@@ -116,8 +155,9 @@ def _kind(mode: int) -> str:
     return "a special file"
 
 
-def _remove_stale_temporaries(path: Path) -> None:
-    """Remove temporaries of `path` left by a write that was killed.
+def remove_stale_temporaries(path: Path) -> None:
+    """Remove temporaries of `path` left by a write that was killed (a
+    database built aside too, db/default.py, and its journal).
 
     A temporary is stale when the process that made it (the PID in its name)
     is gone; a write still going in another process keeps its own.
@@ -131,7 +171,7 @@ def _remove_stale_temporaries(path: Path) -> None:
         if not name.startswith(prefix):
             continue
         pid_text = name[len(prefix) :].split("-", 1)[0]
-        if pid_text.isdigit() and _process_alive(int(pid_text)):
+        if pid_text.isdigit() and process_alive(int(pid_text)):
             continue
         try:
             os.unlink(path.parent / name)
@@ -139,7 +179,9 @@ def _remove_stale_temporaries(path: Path) -> None:
             pass
 
 
-def _process_alive(pid: int) -> bool:
+def process_alive(pid: int) -> bool:
+    """Whether process `pid` runs (this one does; a PID of another user's
+    process counts as running)."""
     if pid == os.getpid():
         return True
     try:

@@ -32,7 +32,8 @@ from sass_tui.model.names import (
     center_of_mass_variable,
     joint_limit_variable,
 )
-from sass_tui.model.paths import regular_file
+from sass_tui.model.paths import LARGEST_TEXT_FILE, regular_file
+from sass_tui.model.text import quoted
 
 if TYPE_CHECKING:
     from lark import Lark, Token, Tree
@@ -254,7 +255,7 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
     try:
         tree = _parser().parse(text)
     except UnexpectedToken as exc:
-        found = "end of file" if exc.token.type == "$END" else repr(str(exc.token))
+        found = "end of file" if exc.token.type == "$END" else quoted(str(exc.token))
         expected = ", ".join(sorted(_describe(t) for t in exc.expected))
         raise FigParseError(
             f"{name}:{exc.line}:{exc.column}: found {found}; expected {expected}"
@@ -289,7 +290,8 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
 
 
 def read_fig(path: str | Path) -> FigFile:
-    path = regular_file(path)  # a FIFO or a device would never end
+    # a FIFO or a device would never end; a huge file is refused unread
+    path = regular_file(path, largest=LARGEST_TEXT_FILE, kind="a .fig file")
     return parse_fig(path.read_text(encoding="utf-8"), str(path))
 
 

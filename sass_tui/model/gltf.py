@@ -27,7 +27,7 @@ from urllib.parse import quote
 
 import numpy as np
 
-from sass_tui.model.atomic import write_bytes_atomic
+from sass_tui.model.atomic import write_bytes_atomic, write_files_atomic
 from sass_tui.model.body_surface import body_mesh, figure_surface
 from sass_tui.model.errors import SassError
 from sass_tui.model.hanim import LOA1, build_humanoid
@@ -123,7 +123,8 @@ def bin_path(path: Path) -> Path:
 
 def write_gltf(asset: GltfDocument, path: str | Path) -> list[Path]:
     """Write `asset` to `path` atomically: one .glb, or a .gltf and its .bin
-    (the .bin first, so the .gltf never names a buffer that is not there).
+    (both or neither, the .bin renamed first, so the .gltf never names a buffer
+    that is not there).
     Returns the files written."""
     path = check_path(path)
     if path.suffix.lower() == ".glb":
@@ -132,8 +133,7 @@ def write_gltf(asset: GltfDocument, path: str | Path) -> list[Path]:
     buffer = bin_path(path)
     if buffer == path:  # pragma: no cover - check_path allows only .gltf here
         raise GltfError(f"{path}: the buffer would overwrite the document")
-    write_bytes_atomic(buffer, asset.buffer)
-    write_bytes_atomic(path, asset.gltf(buffer.name))
+    write_files_atomic({buffer: asset.buffer, path: asset.gltf(buffer.name)})
     return [path, buffer]
 
 

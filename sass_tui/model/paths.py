@@ -61,6 +61,23 @@ def inside(workdir: Path, text: str | Path) -> Path:
     return path
 
 
+# The largest file of each kind a reader takes, refused by its size before a
+# byte is read: a file many times the largest plausible one is a mistake (or
+# a sparse file), and reading it whole took minutes and gigabytes (a 1 GB
+# population file: 61 s and 13.6 GB).  The shipped population files are 1 to
+# 9 KB, strength.dat 17 KB, a .fig 3 KB; an id list of a million 20-digit
+# ids is 21 MB.
+LARGEST_TEXT_FILE = 4 * 2**20  # population, strength and .fig files
+LARGEST_ID_LIST = 32 * 2**20
+# A table of people (`sass predict --input`), read whole into rows.
+LARGEST_PEOPLE_TABLE = 64 * 2**20
+# A flat file of the database imports, read whole: 200,000 people's are
+# some hundreds of MB.  (ANSUR II CSV files are read in chunks: any size.)
+LARGEST_TABLE_FILE = 2**30
+# A token file holds one line of a few dozen characters.
+LARGEST_TOKEN_FILE = 4096
+
+
 # Completions listed at most: a directory of thousands is not read whole.
 MAX_COMPLETIONS = 200
 
@@ -91,26 +108,51 @@ def complete_path(text: str, workdir: Path | None = None) -> list[str]:
     return sorted(entries)
 
 
-def regular_file(text: str | Path, workdir: Path | None = None) -> Path:
+def regular_file(
+    text: str | Path,
+    workdir: Path | None = None,
+    *,
+    largest: int | None = None,
+    kind: str = "a data file",
+) -> Path:
     """The expanded path of an existing regular file.  A FIFO, a device or a
-    directory is refused before it is opened: reading a FIFO blocks forever."""
+    directory is refused before it is opened: reading a FIFO blocks forever.
+    With `largest`, a file of more bytes is refused too, naming its `kind`."""
     path = user_path(text, workdir)
     try:
-        mode = path.stat().st_mode
+        status = path.stat()
     except FileNotFoundError:
         raise PathError(f"{path}: no such file", "no such file") from None
-    if not stat.S_ISREG(mode):
-        kind = "a directory" if stat.S_ISDIR(mode) else "not a regular file"
-        raise PathError(f"{path}: {kind}; give a data file", f"{kind}; give a data file")
+    except OSError as exc:  # a loop of links, a name too long, no permission
+        reason = exc.strerror or str(exc)
+        raise PathError(f"{path}: {reason}", reason) from None
+    if not stat.S_ISREG(status.st_mode):
+        what = "a directory" if stat.S_ISDIR(status.st_mode) else "not a regular file"
+        raise PathError(f"{path}: {what}; give a data file", f"{what}; give a data file")
+    if largest is not None and status.st_size > largest:
+        reason = (
+            f"{size_text(status.st_size)} is too large for {kind} "
+            f"(at most {size_text(largest)}); nothing was read"
+        )
+        raise PathError(f"{path}: {reason}", reason)
     return path
 
 
-def read_user_text(text: str | Path) -> tuple[Path, str]:
+def size_text(size: int) -> str:
+    """A file's size for a message: '100.0 MiB', '12 KiB', '300 bytes'."""
+    if size >= 2**20:
+        return f"{size / 2**20:,.1f} MiB"
+    return f"{size // 1024} KiB" if size >= 1024 else f"{size} bytes"
+
+
+def read_user_text(
+    text: str | Path, kind: str = "a data file", largest: int = LARGEST_TEXT_FILE
+) -> tuple[Path, str]:
     """A data file the user names (a population or strength file): its path
-    (`regular_file`) and its text, UTF-8 or else Latin-1 (a file of the
-    report's time has no other).  PathError, `reason` saying why, when it
-    cannot be read."""
-    path = regular_file(text)
+    (`regular_file`, at most `largest` bytes) and its text, UTF-8 or else
+    Latin-1 (a file of the report's time has no other).  PathError, `reason`
+    saying why, when it cannot be read."""
+    path = regular_file(text, largest=largest, kind=kind)
     try:
         return path, path.read_text(encoding="utf-8")
     except UnicodeDecodeError:

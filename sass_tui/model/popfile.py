@@ -44,6 +44,7 @@ from sass_tui.model.names import (
     normalise_label,
 )
 from sass_tui.model.paths import PathError, read_user_text
+from sass_tui.model.text import quoted
 from sass_tui.model.units import UnitError, finite_number
 from sass_tui.model.vocabulary import GENDERS
 
@@ -140,7 +141,7 @@ def read_global_beside(girth_path: str | Path) -> PopulationData | None:
 
 def read_population_file(path: str | Path, group: str) -> PopulationData:
     try:
-        path, text = read_user_text(path)
+        path, text = read_user_text(path, "a population file")
     except PathError as exc:
         raise PopulationFileError(f"{path}: cannot read: {exc.reason}") from None
     return parse_population_text(text, group, str(path))
@@ -171,7 +172,7 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
             word = line[1:].strip().lower()
             if word not in GENDERS:
                 raise PopulationFileError(
-                    f"{where}: expected 'T MALE' or 'T FEMALE', found {line.strip()!r}"
+                    f"{where}: expected 'T MALE' or 'T FEMALE', found {quoted(line.strip())}"
                 )
             if word in raw:
                 raise PopulationFileError(f"{where}: a second 'T {word.upper()}' section")
@@ -193,9 +194,29 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
         data.sections[gender], data.lines[gender] = _place_rows(
             entries, gender, group, lookup, name, section_line, data.warnings
         )
+    _refuse_negative_sizes(data, name)
     _check_rows(data, name)
     _check_cross_gender(data, name)
     return data
+
+
+def _refuse_negative_sizes(data: PopulationData, name: str) -> None:
+    """A segment size (girth file) is a length: a negative one is refused at
+    its line, as a typed cell's is (Figure.set_value); it went on into the
+    .fig as `botheadx = -25.00cm`.  Joint limits and centers of mass may be
+    negative."""
+    if data.group != GIRTH:
+        return
+    for gender in data.sections:
+        for i, row in enumerate(ROWS[GIRTH]):
+            for a, axis in enumerate(AXES):
+                cell = data.cell(gender, i, a)
+                if any(v < 0 for v in cell):  # NaN (999, no value) compares False
+                    raise PopulationFileError(
+                        f"{name}:{data.lines[gender][i]}: {row.label} {axis}: "
+                        f"{'/'.join(f'{v:g}' for v in cell)} cm; a segment size cannot "
+                        "be negative; nothing was loaded"
+                    )
 
 
 def _check_kind(entries: list[tuple[int, list[float], str]], group: str, name: str) -> None:
@@ -239,12 +260,14 @@ def split_data_row(
         if end < 0:
             raise error(f"{where}: comment '/*' is not closed with '*/'")
         if line[end + 2 :].strip():
-            raise error(f"{where}: unexpected {line[end + 2 :].strip()!r} after the comment")
+            raise error(f"{where}: unexpected {quoted(line[end + 2 :].strip())} after the comment")
         numbers_text, label = line[:start], line[start + 2 : end].strip()
     tokens = [t for t in re.split(r"[,\s]+", numbers_text.strip()) if t]
     for col, token in enumerate(tokens, start=1):
         if not _NUMBER.match(token):
-            raise error(f"{where}: value {col} is {token!r}; expected a number (999 = no value)")
+            raise error(
+                f"{where}: value {col} is {quoted(token)}; expected a number (999 = no value)"
+            )
     if len(tokens) != width:
         raise error(
             f"{where}: {len(tokens)} numbers; expected {width} {layout} and a /* comment */"
@@ -464,11 +487,8 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
     return out
 
 
-def write_population_file(data: PopulationData, path: str | Path) -> None:
-    """Write statistics back in the same format (atomically)."""
-    # deferred: model.atomic — off the first screen, sass strength (sass_tui/startup.py)
-    from sass_tui.model.atomic import write_text_atomic
-
+def render_population_file(data: PopulationData) -> str:
+    """The text of a population file of `data` (report §12.2.4)."""
     lines = [f"C {data.title}"]
     for gender, stats in data.sections.items():
         lines += ["C", f"T {gender.upper()}"]
@@ -479,4 +499,4 @@ def write_population_file(data: PopulationData, path: str | Path) -> None:
                 lines.append(f"C {row_notes[k]}")
             flat = [NO_VALUE if math.isnan(v) else v for cell in cells for v in cell]
             lines.append(" " + " ".join(f"{v:8g}" for v in flat) + f"  /* {row.label} */")
-    write_text_atomic(path, "\n".join(lines) + "\n")
+    return "\n".join(lines) + "\n"

@@ -17,6 +17,7 @@ import numpy as np
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS, row_index
+from sass_tui.model.text import quoted
 from sass_tui.model.vocabulary import JOINT_AXES, MOTION_NAMES
 
 # The row's joint picks the fatigue curve.
@@ -156,7 +157,7 @@ def parse_side_factor(text: str) -> float:
     try:
         factor = float(text)
     except ValueError:
-        raise StrengthError(f"scaling factor {text.strip()!r} is not a number") from None
+        raise StrengthError(f"scaling factor {quoted(text.strip())} is not a number") from None
     if not 0 < factor <= 2:
         raise StrengthError(f"scaling factor {factor:g} is outside 0-2")
     return factor
@@ -239,5 +240,5 @@ def parse_joint_axis(text: str) -> int:
     if key in JOINT_AXES:
         return JOINT_AXES.index(key)
     raise StrengthError(
-        f"unknown joint axis {text.strip()!r}; expected one of {', '.join(JOINT_AXES)}"
+        f"unknown joint axis {quoted(text.strip())}; expected one of {', '.join(JOINT_AXES)}"
     )

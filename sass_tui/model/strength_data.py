@@ -45,6 +45,7 @@ from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
 from sass_tui.model.published_strength import EXAMPLE_SOURCE
 from sass_tui.model.strength_conditions import StrengthError
+from sass_tui.model.text import quoted
 from sass_tui.model.units import convert
 from sass_tui.model.vocabulary import GENDERS, JOINT_AXES, MOTION_NAMES, SIDES
 
@@ -173,7 +174,7 @@ def default_path() -> Path:
 def read_strength_file(path: str | Path | None = None) -> StrengthData:
     where = default_path() if path is None else path
     try:
-        read, text = read_user_text(where)
+        read, text = read_user_text(where, "a strength file")
     except PathError as exc:
         raise StrengthFileError(f"{where}: cannot read: {exc.reason}") from None
     return parse_strength_text(text, str(read))
@@ -187,7 +188,7 @@ def motion_index(text: str) -> int:
     if key in MOTION_NAMES:
         return MOTION_NAMES.index(key)
     raise StrengthError(
-        f"unknown motion {text.strip()!r}; expected one of {', '.join(MOTION_NAMES)}"
+        f"unknown motion {quoted(text.strip())}; expected one of {', '.join(MOTION_NAMES)}"
     )
 
 
@@ -219,7 +220,7 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
             word = line[1:].strip().lower()
             if word not in GENDERS:
                 raise StrengthFileError(
-                    f"{where}: expected 'G MALE' or 'G FEMALE', found {line.strip()!r}"
+                    f"{where}: expected 'G MALE' or 'G FEMALE', found {quoted(line.strip())}"
                 )
             gender, key = word, None
             continue
@@ -227,7 +228,7 @@ def parse_strength_text(text: str, name: str = "<text>") -> StrengthData:
             word = line[1:].strip().lower()
             if word not in SIDES:
                 raise StrengthFileError(
-                    f"{where}: expected 'L RIGHT' or 'L LEFT', found {line.strip()!r}"
+                    f"{where}: expected 'L RIGHT' or 'L LEFT', found {quoted(line.strip())}"
                 )
             if gender is None:
                 raise StrengthFileError(

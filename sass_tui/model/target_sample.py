@@ -29,6 +29,7 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.text import quoted
 from sass_tui.model.units import UnitError, convert, parse_quantity, unit_name
 from sass_tui.model.vocabulary import GENDERS
 
@@ -140,7 +141,9 @@ def read_sample(
         try:
             field = header_field(name)
         except SassError as exc:
-            raise SampleError(f"{place}: column {c + 1} {cell!r}: {exc}", where=place) from None
+            raise SampleError(
+                f"{place}: column {c + 1} {quoted(cell)}: {exc}", where=place
+            ) from None
         if field is None:
             continue
         canonical = field_unit(field)
@@ -151,13 +154,13 @@ def read_sample(
                 convert(1.0, unit, canonical)
             except UnitError as exc:
                 raise SampleError(
-                    f"{place}: column {c + 1} {cell!r}: {exc}; expected a unit of "
+                    f"{place}: column {c + 1} {quoted(cell)}: {exc}; expected a unit of "
                     f"{'mass (kg, lb)' if canonical == 'kg' else 'length (cm, mm, in)'}",
                     where=place,
                 ) from None
         if field in columns:
             raise SampleError(
-                f"{place}: column {c + 1} {cell!r} repeats column "
+                f"{place}: column {c + 1} {quoted(cell)} repeats column "
                 f"{columns[field][0] + 1} {columns[field][2]!r}",
                 where=place,
             )
@@ -305,7 +308,7 @@ def _cell(
     if value <= 0:
         place = f"{where}:{line}"
         raise SampleError(
-            f"{place}: column {c + 1} {name!r}: {text!r}: a {field} must be greater than 0",
+            f"{place}: column {c + 1} {name!r}: {quoted(text)}: a {field} must be greater than 0",
             where=place,
         )
     return value

@@ -78,3 +78,41 @@ def control_character(text: str) -> str | None:
     if found is None:
         return None
     return f"a control character ({_escape(found)}) at character {found.start() + 1}"
+
+
+# The characters that make a spreadsheet (Excel, LibreOffice Calc, Google
+# Sheets) read a CSV cell as a formula, or a tab/carriage return that shifts
+# it into one: OWASP's "CSV Injection" page lists = + - @ TAB CR.
+FORMULA_STARTS = "=+-@\t\r"
+_FORMULA_START = re.compile("^[=+\\-@\t\r]", re.MULTILINE)
+
+
+def spreadsheet_text(text: str) -> str:
+    """`text` as a CSV cell a spreadsheet opens as text: one starting with a
+    formula character gets a leading apostrophe (OWASP's advice), which
+    spreadsheets take as "this cell is text"; the rest of the text is kept."""
+    return "'" + text if text[:1] in tuple(FORMULA_STARTS) else text
+
+
+def may_start_a_formula(texts: list[str]) -> bool:
+    """Whether any of `texts` starts with a formula character: one search
+    over them all joined (a text holding a newline may answer yes falsely)."""
+    return _FORMULA_START.search("\n".join(texts)) is not None
+
+
+# What a message quotes of a bad value: enough to find it in the file, never
+# the whole of a megabyte line (a 1 GB file of one line once made a 4 GB
+# message).
+QUOTE_LIMIT = 40
+
+
+def quoted(text: str, limit: int = QUOTE_LIMIT, *, escape: bool = False) -> str:
+    """`text` quoted for a message, as repr() quotes it, cut to `limit`
+    characters with its length said: "'xxxx…' (1,048,576 characters)".
+    `escape`: its control characters made visible first (printable)."""
+    shown = text[:limit]
+    if escape:
+        shown = printable(shown)
+    if len(text) <= limit:
+        return repr(shown)
+    return f"{shown + '…'!r} ({len(text):,} characters)"

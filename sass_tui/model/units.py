@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, overload
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH
+from sass_tui.model.text import quoted
 
 if TYPE_CHECKING:
     import numpy as np
@@ -177,7 +178,7 @@ def unit_name(text: str) -> str:
     key = re.sub(r"\s+", " ", text.strip()).lower()
     if key in _ALIASES:
         return _ALIASES[key]
-    raise UnitError(f"unknown unit {text.strip()!r}")
+    raise UnitError(f"unknown unit {quoted(text.strip())}")
 
 
 def parse_quantity(text: str, unit: str) -> float:
@@ -194,14 +195,14 @@ def parse_quantity(text: str, unit: str) -> float:
         )
     match = _NUMBER.match(text)
     if not match:
-        raise UnitError(f"expected a number with an optional unit, got {text.strip()!r}")
+        raise UnitError(f"expected a number with an optional unit, got {quoted(text.strip())}")
     value = finite_number(match.group(1))
     if not match.group(2):
         return value
     given = unit_name(match.group(2))
     converted = float(convert(value, given, unit))
     if not math.isfinite(converted):
-        raise UnitError(f"{text.strip()!r} is too large a number")
+        raise UnitError(f"{quoted(text.strip())} is too large a number")
     return converted
 
 
@@ -222,9 +223,11 @@ def finite_number(text: str) -> float:
     try:
         value = float(text)
     except ValueError:
-        raise UnitError(f"expected a number, got {text.strip()!r}") from None
+        raise UnitError(f"expected a number, got {quoted(text.strip())}") from None
     if not math.isfinite(value) or abs(value) > LARGEST_NUMBER:
-        raise UnitError(f"{text.strip()!r} is not a usable number (largest {LARGEST_NUMBER:g})")
+        raise UnitError(
+            f"{quoted(text.strip())} is not a usable number (largest {LARGEST_NUMBER:g})"
+        )
     return value
 
 

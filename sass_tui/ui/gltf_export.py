@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 
 from sass_tui.db.individual import person_figure
 from sass_tui.db.lists import DB_ERRORS
+from sass_tui.model.atomic import OutputFileError, check_target
 from sass_tui.model.errors import SassError
 from sass_tui.model.gltf import POSES, bin_path, check_path, pose_of, render_gltf, write_gltf
 from sass_tui.model.hanim import build_humanoid, not_in_humanoid_note
@@ -56,6 +57,13 @@ async def _export(screen: SassScreen, figure: Figure, default: str) -> None:
         f"Exported the {pose} glTF body to {' and '.join(map(str, files))}."
         f"{not_in_humanoid_note(figure)}"
     )
+    try:
+        for file in files:  # a directory is refused before it is offered for overwrite
+            if file.exists():
+                check_target(file)
+    except OutputFileError as exc:
+        screen.complain(f"{exc}; nothing written")
+        return
     existing = " and ".join(str(f) for f in files if f.exists())
     if existing:
         answer = await screen.answer_to(f"{existing} exists. Overwrite? (y/N)")

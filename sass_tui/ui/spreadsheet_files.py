@@ -224,9 +224,18 @@ class FileCommands(SheetScreenBase):
             self._write_figure(path, sections, example)
 
     async def _may_write(self, path: Path) -> bool:
-        """A new file may be written; an existing one only after the user says y."""
+        """A new file may be written; an existing one only after the user says
+        y; what cannot be written (a directory) is refused before asking."""
+        # deferred: model.atomic — off the first screen (sass_tui/startup.py)
+        from sass_tui.model.atomic import OutputFileError, check_target
+
         if not path.exists():
             return True
+        try:
+            check_target(path)
+        except OutputFileError as exc:
+            self.complain(f"{exc}; nothing written")
+            return False
         answer = await self.answer_to(f"{path} exists. Overwrite it? (y/N)")
         if answer is None:
             self.say(CANCELLED)

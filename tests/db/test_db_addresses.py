@@ -23,7 +23,8 @@ def test_sass_serve_hands_an_address_to_its_sessions_in_the_environment(tmp_path
     line `ps` shows."""
     pytest.importorskip("textual_serve")
     from sass_tui.cli.serve import database_path
-    from sass_tui.ui.serve import ServeOptions, _server_class
+    from sass_tui.ui.serve import ServeOptions
+    from sass_tui.ui.serve_session import SessionService
 
     secret = "postgresql://lab:s3cret@dbhost.invalid/sass"
     monkeypatch.setenv("SASS_DB", secret)
@@ -37,8 +38,13 @@ def test_sass_serve_hands_an_address_to_its_sessions_in_the_environment(tmp_path
     async def nothing(*_args) -> None:
         return None
 
-    service = _server_class().session_class(
-        options, write_bytes=nothing, write_str=nothing, close=nothing, download_manager=None
+    service = SessionService(
+        options,
+        close_with=nothing,
+        write_bytes=nothing,
+        write_str=nothing,
+        close=nothing,
+        download_manager=None,
     )
     assert service._build_environment()["SASS_DB"] == secret
 

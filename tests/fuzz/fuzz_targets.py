@@ -408,6 +408,105 @@ def _strength_limit() -> Target:
     return Target("strength_limit", seeds, run)
 
 
+# --- the readers, on files of any size -------------------------------------------
+# A reader is a parser behind a file: it must refuse a file over its kind's
+# size unread (model/paths.py LARGEST_*), and read one just under it (a 4 MB
+# line of NULs, a 3 MB field) into a message of a few hundred characters at
+# most, never quoting the whole (a 1 GB file once made a 4 GB message).
+
+# A message longer than this is a fault the campaign counts as a traceback.
+LONGEST_MESSAGE = 1000
+# The shapes of a file: as mutated; the text, then a hole (a sparse file, no
+# disk used) up to a size; the text with one line made megabytes long; the
+# text's lines repeated to megabytes.
+FILE_SHAPES = ("plain", "plain", "hole", "long_line", "long_file")
+HOLE_SIZES = ("under", "over", 10**8, 10**9, 2**40)  # "under"/"over": the kind's limit
+LONG = 3_000_000
+
+
+@dataclass
+class FileTarget(Target):
+    """A reader: an input is (shape, size, text); `read(path)` reads the file."""
+
+    largest: int = 0
+
+    def generate(self, rng: random.Random) -> object:
+        text = str(super().generate(rng))
+        shape = rng.choice(FILE_SHAPES)
+        size = rng.choice(HOLE_SIZES) if shape == "hole" else 0
+        return {"shape": shape, "size": str(size), "text": text}
+
+
+_FILES: list[Path] = []
+
+
+def _file_of(value: object, largest: int) -> Path:
+    """The file an input describes, in a directory of this process's."""
+    if not _FILES:
+        _FILES.append(Path(tempfile.mkdtemp(prefix="sass-fuzz-")))
+    path = _FILES[0] / "input.dat"
+    spec = value if isinstance(value, dict) else {"shape": "plain", "size": "0", "text": value}
+    text, shape = str(spec["text"]), spec["shape"]
+    lines = text.split("\n") or [""]
+    if shape == "long_line":
+        i = len(lines) // 2
+        lines[i] = (lines[i] or "x") * (LONG // max(len(lines[i]), 1))
+    elif shape == "long_file":
+        lines = lines * (LONG // max(len(text), 1))
+    data = "\n".join(lines).encode("utf-8", "surrogatepass")[: max(largest, 1)]
+    path.write_bytes(data)
+    if shape == "hole":
+        size = {"under": largest, "over": largest + 1}.get(spec["size"]) or int(spec["size"])
+        with path.open("r+b") as handle:
+            handle.truncate(max(size, len(data)))
+    return path
+
+
+def _reader(name: str, seeds: list, largest: int, read: Callable[[Path], object]) -> FileTarget:
+    def run(value: object) -> object:
+        path = _file_of(value, largest)
+        try:
+            return read(path)
+        except ALLOWED as exc:
+            if len(str(exc)) > LONGEST_MESSAGE:
+                raise AssertionError(f"a message of {len(str(exc)):,} characters") from None
+            raise
+        finally:
+            path.unlink()
+
+    return FileTarget(name, seeds, run, largest)
+
+
+def _population_file() -> Target:
+    from sass_tui.model.names import GIRTH
+    from sass_tui.model.paths import LARGEST_TEXT_FILE
+    from sass_tui.model.popfile import read_population_file
+
+    seeds = [(DATASETS / "girth.dat").read_text(encoding="utf-8")]
+    return _reader(
+        "population_file",
+        seeds,
+        LARGEST_TEXT_FILE,
+        lambda path: read_population_file(path, GIRTH),
+    )
+
+
+def _strength_file() -> Target:
+    from sass_tui.model.paths import LARGEST_TEXT_FILE
+    from sass_tui.model.strength import read_strength_file
+
+    full = (DATASETS / "strength.dat").read_text(encoding="utf-8").split("\n")
+    return _reader("strength_file", ["\n".join(full[:60])], LARGEST_TEXT_FILE, read_strength_file)
+
+
+def _ids_file() -> Target:
+    from sass_tui.cli.population import read_id_file
+    from sass_tui.model.paths import LARGEST_ID_LIST
+
+    seeds = ["10027\n10032\n# a comment\n\n29421\n", "id,name\n10027,ANSUR II M 10027\n"]
+    return _reader("ids_file", seeds, LARGEST_ID_LIST, lambda path: read_id_file(str(path)))
+
+
 TARGET_MAKERS: dict[str, Callable[[], Target]] = {
     "population": _population,
     "strength": _strength,
@@ -420,6 +519,9 @@ TARGET_MAKERS: dict[str, Callable[[], Target]] = {
     "anderson2007": _anderson2007,
     "hfds2003": _hfds2003,
     "strength_limit": _strength_limit,
+    "population_file": _population_file,
+    "strength_file": _strength_file,
+    "ids_file": _ids_file,
 }
 _BUILT: dict[str, Target] = {}
 

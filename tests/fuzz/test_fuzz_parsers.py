@@ -22,7 +22,8 @@ WATCHDOG = 60.0
 # About 30 s for the whole folder on one core (flat and fig cost ~10 ms an input).
 EXAMPLES = {"population": 100, "strength": 200, "fig": 120, "query": 200, "flat": 100,
             "ansur": 120, "units": 300, "ids": 300, "anderson2007": 150,
-            "strength_limit": 300, "hfds2003": 150}  # fmt: skip
+            "strength_limit": 300, "hfds2003": 150,
+            "population_file": 40, "strength_file": 40, "ids_file": 40}  # fmt: skip
 
 
 def check(name: str, value: object) -> str:

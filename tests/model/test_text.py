@@ -9,7 +9,12 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
-from sass_tui.model.text import printable
+from sass_tui.model.text import (
+    FORMULA_STARTS,
+    may_start_a_formula,
+    printable,
+    spreadsheet_text,
+)
 
 HOSTILE = "\x1b[2J\x1b]0;pwned\x07"
 
@@ -121,3 +126,16 @@ def test_no_control_character_is_isprintable():
     escaped = [c for c in map(chr, range(0x110000)) if _control().match(c)]
     assert len(escaped) > 2000  # C0, DEL, C1, bidi controls, surrogates
     assert not any(c.isprintable() for c in escaped)
+
+
+@given(st.text())
+def test_a_csv_cell_never_starts_a_formula_and_keeps_its_text(text):
+    cell = spreadsheet_text(text)
+    assert cell[:1] not in tuple(FORMULA_STARTS)
+    assert cell == text or cell == "'" + text
+    assert cell == text or may_start_a_formula([text])  # the chunk check never misses one
+
+
+def test_a_formula_anywhere_in_a_chunk_is_found():
+    assert may_start_a_formula(["ANSUR II", "=HYPERLINK(1)"])
+    assert not may_start_a_formula(["ANSUR II", "a=b", "A-1", ""])

@@ -39,10 +39,13 @@ class Screen:
     def __init__(self, driver) -> None:
         self.driver = driver
         self.text = ""
+        self.requested: list[str] = []  # every URL the page asked for
 
     def read(self) -> str:
         for entry in self.driver.get_log("performance"):
             message = json.loads(entry["message"])["message"]
+            if message.get("method") == "Network.requestWillBeSent":
+                self.requested.append(message["params"]["request"]["url"])
             if message.get("method") != "Network.webSocketFrameReceived":
                 continue
             response = message["params"]["response"]
@@ -93,7 +96,7 @@ def browser(tmp_path: Path):
         f"--user-data-dir={tmp_path / 'chromium'}",
     ):
         options.add_argument(flag)
-    options.set_capability("goog:loggingPrefs", {"performance": "ALL"})
+    options.set_capability("goog:loggingPrefs", {"performance": "ALL", "browser": "ALL"})
     driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
     try:
         yield driver
@@ -117,3 +120,24 @@ def test_the_spreadsheet_runs_in_a_browser_and_takes_keys(served: str, browser) 
     keyboard.send_keys("j")
     screen.wait_for("Neck ul", mark)
     screen.wait_for("deg", mark)
+
+
+@pytest.mark.slow
+def test_the_page_runs_under_its_policy_on_its_own_font(served: str, browser) -> None:
+    """The served page breaks no rule of its Content-Security-Policy (the
+    console says every violation), asks no other server for anything (it
+    loaded Roboto Mono from fonts.googleapis.com on every session) and draws
+    the terminal in the Roboto Mono the package ships."""
+    browser.get(served)
+    screen = Screen(browser)
+    screen.wait_for(READY)
+    # the browser's own pages (its new tab) are not the page's
+    requested = [url for url in screen.requested if not url.startswith("chrome")]
+    origin = served.split("?", 1)[0].rstrip("/")
+    assert requested and all(
+        url.startswith(origin) or url.startswith("data:") for url in requested
+    ), requested
+    assert any(url.endswith("RobotoMono-VariableFont_wght.ttf") for url in requested)
+    assert browser.execute_script("return document.fonts.check('16px \"Roboto Mono\"')")
+    console = [entry["message"] for entry in browser.get_log("browser")]
+    assert not [line for line in console if "Content Security Policy" in line], console

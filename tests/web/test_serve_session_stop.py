@@ -15,7 +15,8 @@ pytest.importorskip("textual_serve")
 
 from textual_serve.download_manager import DownloadManager
 
-from sass_tui.ui.serve import STOP_WAIT_S, ServeOptions, _server_class
+from sass_tui.ui.serve import ServeOptions
+from sass_tui.ui.serve_session import STOP_WAIT_S, SessionService
 
 # Says it is a Textual app (textual-serve waits for this line), then reads
 # nothing and ignores SIGTERM: only SIGKILL ends it.
@@ -36,14 +37,14 @@ class StubbornOptions(ServeOptions):
 @pytest.mark.slow
 def test_a_session_process_that_will_not_quit_is_killed(tmp_path):
     options = StubbornOptions(host="localhost", port=1, token="t" * 32, workdir=tmp_path)
-    service_class = _server_class().session_class
 
     async def nothing(*args) -> None:
         return None
 
     async def scenario() -> tuple[float, int | None]:
-        service = service_class(
+        service = SessionService(
             options,
+            close_with=nothing,
             write_bytes=nothing,
             write_str=nothing,
             close=nothing,
