@@ -8,12 +8,12 @@ working directory; then ui/serve.py serves.
 from __future__ import annotations
 
 import argparse
+import importlib.util
 import secrets
 import socket
 import ssl
 import sys
 import time
-from importlib.util import find_spec
 from ipaddress import ip_address
 from pathlib import Path
 from urllib.parse import urlsplit
@@ -96,7 +96,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    if find_spec("textual_serve") is None:  # the [serve] extra is not installed
+    if importlib.util.find_spec("textual_serve") is None:  # the [serve] extra is not installed
         raise ServeError("sass serve needs textual-serve: pip install 'sass-tui[serve]'")
     loopback = is_loopback(args.host)
     if not loopback and not args.allow_remote:
