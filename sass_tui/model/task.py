@@ -335,19 +335,48 @@ class Population:
     note: str
 
 
-def assess_population(
-    figure: Figure, people: Population, angles: Angles, loads: list[HandLoad]
+def assess_populations(
+    groups: list[tuple[Figure, Population]],
+    angles: Angles,
+    loads: list[HandLoad],
+    together: str = "",
 ) -> TaskAnswer:
-    """Percent capable over many people: each person's moments are the
-    figure's scaled to their own size (segment weights by mass x stature, the
-    loads' lever arms by stature), their arm's weight by their mass; the
-    share is the weighted mean of each person's probability."""
+    """Percent capable over many people, one population per gender, each
+    scaled from its own gender's figure; the moments are on the first
+    group's figure.  With `together`, a column of the groups' people
+    together: every person's probability by their weight, over all groups."""
     _check_loads(loads)
-    body = pose_figure(figure, angles)
+    answer: TaskAnswer | None = None
+    sums: dict[str, tuple[Capability, float, float]] = {}
+    for figure, people in groups:
+        body = pose_figure(figure, angles)
+        if answer is None:
+            answer = TaskAnswer(loads, task_moments(body, loads), _figure_words(figure))
+        answer.populations.append(people.words)
+        if people.note not in answer.notes:
+            answer.notes.append(people.note)
+        for found, capable, weight in _population_shares(body, people, angles, loads):
+            answer.record(found, people.words, 100.0 * capable / weight)
+            _, c, w = sums.get(found.what, (found, 0.0, 0.0))
+            sums[found.what] = (found, c + capable, w + weight)
+    assert answer is not None  # at least one group
+    if together and len(groups) > 1:
+        answer.populations.append(together)
+        for found, capable, weight in sums.values():
+            answer.record(found, together, 100.0 * capable / weight)
+    return answer
+
+
+def _population_shares(
+    body: PosedBody, people: Population, angles: Angles, loads: list[HandLoad]
+) -> list[tuple[Capability, float, float]]:
+    """(capability, sum of weight x probability, sum of weight) over the
+    people the model covers: each person's moments are the figure's scaled
+    to their own size (segment weights by mass x stature, the loads' lever
+    arms by stature), their arm's weight by their mass."""
+    out = []
     moments = task_moments(body, loads)
     bare = task_moments(body, [])
-    answer = TaskAnswer(loads, moments, _figure_words(figure), populations=[people.words])
-    answer.notes.append(people.note)
     m, h, w = people.masses, people.statures, people.weights
     known = np.isfinite(m) & np.isfinite(h) & (m > 0) & (h > 0) & (w > 0)
     for load in loads:
@@ -359,7 +388,7 @@ def assess_population(
         found = Capability(
             f"{load.side} hand", "force against the load", load.force, "N", {}, ARM_WORDS
         )
-        answer.record(found, people.words, _mean(capable, w[known]))
+        out.append((found, *_weighted(capable, w[known])))
     scale_body = m * h / (body.body_mass * body.stature)
     for (moment, side, word), unloaded in zip(_legs(moments), _legs(bare)):
         motion, torque = leg_demand(moment, word)
@@ -373,12 +402,14 @@ def assess_population(
         ok = ~np.isnan(capable) & (w > 0)
         if ok.any():
             found = Capability(moment.joint, motion, torque, "N-m", {}, ANDERSON)
-            answer.record(found, people.words, _mean(capable[ok], w[ok]))
-    return answer
+            out.append((found, *_weighted(capable[ok], w[ok])))
+    return out
 
 
-def _mean(capable: npt.NDArray[np.float64], weights: npt.NDArray[np.float64]) -> float:
-    return 100.0 * float((capable * weights).sum()) / float(weights.sum())
+def _weighted(
+    capable: npt.NDArray[np.float64], weights: npt.NDArray[np.float64]
+) -> tuple[float, float]:
+    return float((capable * weights).sum()), float(weights.sum())
 
 
 # --- what the answer says -------------------------------------------------------

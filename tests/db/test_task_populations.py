@@ -95,3 +95,70 @@ def test_a_fit_tests_strength_limit_is_weighted_by_the_target(with_target, capsy
     assert main([*argv, "knee_extension >= 120 N-m at knee_y=60", "stature <= 250 cm"]) == 0
     result = json.loads(capsys.readouterr().out)
     assert result["target"]["percent"] == pytest.approx(100 * capable / total, abs=0.01)
+
+
+VIRTUAL = "nhanes-2017-2020"
+
+
+@pytest.fixture(scope="module")
+def virtual_task(template_target, copy_database) -> tuple[str, list[str]]:
+    """A copy of the default database (the shipped virtual population not
+    made yet: the task's first use makes it) and the task's arguments."""
+    db = copy_database(template_target)
+    argv = ["task", *POSTURE, "--db", db, "--right-load", "60N", "--virtual", VIRTUAL]
+    return db, argv
+
+
+def _virtual_people(db: str, gender: str) -> tuple[np.ndarray, np.ndarray]:
+    """The stored virtual people of one gender (mass) and their survey weights."""
+    opened = Database.open(db)
+    try:
+        with opened.connection() as conn:
+            query = f'source = "virtual:{VIRTUAL}" AND gender = {gender}'
+            values = load_values(conn, ["mass"], query)
+            weights = load_target(conn, f"virtual:{VIRTUAL}").of(values.ids)
+    finally:
+        opened.close()
+    return values.matrix[:, 0], weights
+
+
+@pytest.mark.slow
+def test_a_virtual_population_is_weighted_by_its_survey_weights(virtual_task, capsys):
+    """`sass task --virtual`: each gender's share of the right hand is the
+    survey-weighted mean over the stored virtual people of each one's
+    probability (the figure's Arm Force Field, the arm's weight by their own
+    mass), computed here with numpy; together is both genders' people pooled."""
+    db, argv = virtual_task
+    assert main([*argv, "--format", "json"]) == 0
+    answer = json.loads(capsys.readouterr().out)
+    hand = next(c for c in answer["capable"] if c["what"] == "right hand")
+    pooled_capable = pooled_weight = 0.0
+    for gender, words in (
+        ("female", "VIRTUAL women"),
+        ("male", "VIRTUAL men"),
+    ):
+        mass, weights = _virtual_people(db, gender)
+        assert len(mass) > 1000  # NHANES 2017-2020's adults of one gender
+        body = pose_figure(Figure.default(gender), parse_angles(POSTURE))
+        arm = arm_force(body.points, "right", (0, 1, 0), gender, body.body_mass)
+        z = (60.0 - arm.gravity * mass / body.body_mass - arm.mean) / arm.sd
+        each = np.array([0.5 * (1 - math.erf(v / math.sqrt(2))) for v in z])
+        own = 100 * (each * weights).sum() / weights.sum()
+        assert hand["percent"][words] == pytest.approx(own, abs=0.05)
+        pooled_capable += (each * weights).sum()
+        pooled_weight += weights.sum()
+    together = hand["percent"]["VIRTUAL everyone"]
+    assert together == pytest.approx(100 * pooled_capable / pooled_weight, abs=0.05)
+    assert set(answer["limiting"]) == {
+        "VIRTUAL women", "VIRTUAL men", "VIRTUAL everyone"
+    }  # fmt: skip
+    assert answer["notes"][0].startswith("VIRTUAL people, not measured: nhanes-2017-2020")
+    knees = [c for c in answer["capable"] if c["what"].endswith("knee")]
+    assert knees and all(len(c["percent"]) == 3 for c in knees)
+
+
+def test_target_and_virtual_together_are_refused(virtual_task, capsys):
+    db, argv = virtual_task
+    with pytest.raises(SystemExit):
+        main([*argv, "--target", "civ"])
+    assert "not allowed with argument" in capsys.readouterr().err
