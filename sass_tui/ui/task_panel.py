@@ -1,0 +1,323 @@
+"""The Task panel of the strength page (`T` shows and hides it): can the
+people do it?  The posture is the strength page's: the angles of the row
+under its cursor, on the limb it shows.  Three cells, edited on the message
+line like the page's angles: the load on the left hand, on the right hand
+(a force, then the way it pulls: `60 N down`), and the people (the figure's
+gender, the figure shown, women, men, or women and men).  Below them the
+answer (model/task.py, docs/strength.md "A task"): the moments at the
+elbows, shoulders, hips, knees and ankles, the percent capable of each
+loaded hand (the Arm Force Field) and each hip, knee and ankle (Anderson et
+al. 2007), the limiting one, and what no published model covers.
+
+The answer is computed in a worker on a copy of the figure whenever an input
+changes, and posted back (the TUI never blocks).  The panel owns its keys
+(the arrows, Enter, a number typed) and asks the screen for a prompt with
+TaskPanel.EditRequested, as the strength page does.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from dataclasses import dataclass
+
+from rich.text import Text
+from textual import work
+from textual.binding import Binding
+from textual.message import Message
+from textual.widget import Widget
+
+from sass_tui.model.errors import SassError
+from sass_tui.model.figure import Figure
+from sass_tui.model.posture import parse_angles
+from sass_tui.model.published_strength import GENDER_WORDS
+from sass_tui.model.task import (
+    UNCOVERED,
+    HandLoad,
+    Reference,
+    TaskAnswer,
+    TaskError,
+    assess_task,
+    hand_load,
+    parse_hand_load,
+)
+from sass_tui.model.vocabulary import JOINT_AXES
+from sass_tui.ui.strength_page import TASK_PANEL_LINES, format_angle
+from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
+
+CELLS = ("left", "right", "people")
+CELL_WIDTH = 26
+DEFAULT_LOAD = 60.0  # N on the right hand, down: a bag held out
+# The people a task is for: the figure's gender (default), the figure shown
+# with its own size, or the standard figure of one gender or of both.
+PEOPLE = ("gender", "figure", "women", "men", "women and men")
+JOINT_ORDER = ("hand", "elbow", "shoulder", "hip", "knee", "ankle")
+
+
+@dataclass(frozen=True)
+class TaskInput:
+    """What the worker gets: a copy of the figure shown and the task."""
+
+    figure: Figure
+    posture: tuple[str, ...]
+    loads: tuple[HandLoad, ...]
+    people: str
+
+
+def references(task: TaskInput) -> list[Reference]:
+    """The figures standing for the people asked for."""
+    figure = task.figure
+    if task.people == "figure":
+        return [Reference(figure.person or "figure shown", figure, None)]
+    genders = {
+        "gender": (figure.gender,),
+        "women": ("female",),
+        "men": ("male",),
+        "women and men": ("female", "male"),
+    }[task.people]
+    return [Reference(GENDER_WORDS[g], Figure.default(g), None) for g in genders]
+
+
+def strength_posture(side: str, angles: list[float]) -> tuple[str, ...]:
+    """The strength page's angles of one row as a posture of that side's arm."""
+    return tuple(
+        f"{side}_{axis}={format_angle(degrees)}"
+        for axis, degrees in zip(JOINT_AXES, angles)
+        if not math.isnan(degrees)
+    )
+
+
+def posture_words(posture: tuple[str, ...]) -> str:
+    """`right_shoulder_x=30 ...` -> `right arm: shoulder 30 45 0, elbow 90, wrist 0 0 0`."""
+    if not posture:
+        return "standing"
+    side = posture[0].partition("_")[0]
+    values = {
+        item.partition("=")[0].removeprefix(f"{side}_"): item.partition("=")[2] for item in posture
+    }
+    joints = []
+    for joint in ("shoulder", "elbow", "wrist"):
+        shown = [values[axis] for axis in JOINT_AXES if axis.startswith(joint) and axis in values]
+        if shown:
+            joints.append(f"{joint} {' '.join(shown)}")
+    return f"{side} arm: {', '.join(joints)} deg"
+
+
+def parse_people(text: str) -> str:
+    words = " ".join(text.lower().split())
+    if words not in PEOPLE:
+        raise TaskError(f"people {text.strip()!r}: expected one of {', '.join(PEOPLE)}")
+    return words
+
+
+def load_words(load: HandLoad | None) -> str:
+    if load is None:
+        return "none"
+    x, y, z = (float(v) for v in load.direction)
+    named = {(0.0, -1.0, 0.0): "down", (0.0, 1.0, 0.0): "up", (0.0, 0.0, 1.0): "forward"}
+    named |= {(0.0, 0.0, -1.0): "back", (1.0, 0.0, 0.0): "left", (-1.0, 0.0, 0.0): "right"}
+    way = named.get((round(x, 4) + 0.0, round(y, 4) + 0.0, round(z, 4) + 0.0))
+    return f"{load.force:g} N {way or f'{x:.2f},{y:.2f},{z:.2f}'}"
+
+
+def answer_lines(answer: TaskAnswer) -> list[str]:
+    """The answer in the panel's rows: each loaded hand and each elbow,
+    shoulder, hip, knee and ankle with its moment and percent capable."""
+    people = answer.populations
+    heads = "".join(f"{p[:12]:>13}" for p in people)
+    lines = [f"{'Joint':<15}{'N-m':>6}{'loads':>6}  {'to exert':<30}{heads}"]
+    capable = {c.what: c for c in answer.capabilities}
+    moments = {m.joint: m for m in answer.moments}
+    for side in ("left", "right"):
+        for word in JOINT_ORDER:
+            what = f"{side} {word}"
+            moment, found = moments.get(what), capable.get(what)
+            if moment is None and found is None:
+                continue  # a hand without a load
+            size = f"{moment.size:6.1f}" if moment is not None else f"{'':6}"
+            loads = f"{math.hypot(*moment.from_loads):6.1f}" if moment is not None else f"{'':6}"
+            if found is None:
+                demand, cells = "the arm, at the hand", ""
+            else:
+                motion = "against the load" if found.unit == "N" else found.motion
+                demand = f"{motion.replace('_', ' ')} {found.demand:.1f} {found.unit}"
+                cells = "".join(
+                    f"{found.percent[p]:>11.1f} %" if p in found.percent else f"{'-':>13}"
+                    for p in people
+                )
+            lines.append(f"{what:<15}{size}{loads}  {demand[:30]:<30}{cells}")
+    limiting = []
+    for p in people:
+        worst = answer.limiting(p)
+        if worst is not None:
+            limiting.append(f"{p} {worst.what} {worst.percent[p]:.1f} %")
+    lines.append(f"Limiting: {'; '.join(limiting)}")
+    uncovered = [f"{m.joint} {m.size:.1f}" for m in answer.moments if m.covered_by == UNCOVERED]
+    lines.append(f"Not covered, {UNCOVERED} (N-m): {', '.join(uncovered)}")
+    return lines
+
+
+class TaskPanel(EditorKeys, Widget, can_focus=True):
+    """The task's inputs (three cells) and its answer, under the strength page."""
+
+    DEFAULT_CSS = f"""
+    TaskPanel {{
+        height: {TASK_PANEL_LINES};
+        padding: 0 1;
+        border-top: solid $panel-lighten-2;
+        text-wrap: nowrap;
+        text-overflow: clip;
+    }}
+    """
+    COMPONENT_CLASSES = {"taskpanel--cursor", "taskpanel--cursor-blur", "taskpanel--header"}
+    BINDINGS = [*CURSOR_BINDINGS, Binding("home", "jump(0)", show=False), EDIT_BINDING]
+
+    class EditRequested(Message):
+        """Edit the cell `cell` (left, right, people); `initial` = typed so far."""
+
+        def __init__(self, cell: str, initial: str = "") -> None:
+            super().__init__()
+            self.cell = cell
+            self.initial = initial
+
+    class Assessed(Message):
+        def __init__(self, answer: TaskAnswer | None, error: str = "") -> None:
+            super().__init__()
+            self.answer, self.error = answer, error
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.cursor = 1  # the right hand's load
+        self.loads: dict[str, HandLoad] = {
+            "right": hand_load("right", DEFAULT_LOAD, (0.0, -1.0, 0.0))
+        }
+        self.people = "gender"
+        self.posture: tuple[str, ...] = ()
+        self.figure: Figure | None = None
+        self.answer: TaskAnswer | None = None
+        self.error = ""
+        self.computing = False
+
+    # --- what it shows -------------------------------------------------------
+    def show_task(self, figure: Figure, posture: tuple[str, ...]) -> None:
+        """The figure shown and the strength page's posture: a new answer in
+        a worker (on a copy of the figure, which edits change in place)."""
+        self.figure, self.posture = figure, posture
+        self.recompute()
+
+    def recompute(self) -> None:
+        if self.figure is None:
+            return
+        self.computing = True
+        self.refresh()
+        task = TaskInput(
+            copy.deepcopy(self.figure), self.posture, tuple(self.loads.values()), self.people
+        )
+        self.run_task(task)
+
+    @work(thread=True, exclusive=True, group="task", exit_on_error=False)
+    def run_task(self, task: TaskInput) -> None:
+        try:
+            answer = assess_task(
+                references(task), parse_angles(list(task.posture)), list(task.loads)
+            )
+        except SassError as exc:
+            self.post_message(self.Assessed(None, str(exc)))
+            return
+        self.post_message(self.Assessed(answer))
+
+    def on_task_panel_assessed(self, event: TaskPanel.Assessed) -> None:
+        event.stop()
+        self.computing = False
+        self.answer, self.error = event.answer, event.error
+        self.refresh()
+
+    # --- the inputs, set from the screen's prompts ----------------------------
+    def cell_text(self, cell: str) -> str:
+        if cell != "people":
+            return load_words(self.loads.get(cell))
+        if self.people == "gender" and self.figure is not None:
+            return f"gender: {GENDER_WORDS[self.figure.gender]}"
+        return self.people
+
+    def prompt(self, cell: str) -> str:
+        """What the message line asks for `cell`."""
+        if cell == "people":
+            return f"People the task is for ({', '.join(PEOPLE)}) [{self.people}]:"
+        return (
+            f"Load on the {cell} hand (N, then the way it pulls: down, up, forward, back, "
+            f"left, right or X,Y,Z; 0 = none) [{self.cell_text(cell)}]:"
+        )
+
+    def set_cell(self, cell: str, text: str) -> str:
+        """Take an answer to `prompt`; what the message line says then."""
+        if not text.strip():
+            return f"Task: the {'people' if cell == 'people' else f'{cell} hand'} unchanged."
+        if cell == "people":
+            return f"Task: for {self.set_people(text)}."
+        return f"Task: {load_words(self.set_load(cell, text))} on the {cell} hand."
+
+    def set_load(self, side: str, text: str) -> HandLoad:
+        """`60 N down`, `15 lbf up`, `0` for none; a task keeps one load at least."""
+        load = parse_hand_load(side, text)
+        loads = {**self.loads, side: load}
+        if load.force == 0:
+            del loads[side]
+        if not loads:
+            raise TaskError("a task needs a load on a hand; the loads are unchanged")
+        self.loads = loads
+        self.recompute()
+        return load
+
+    def set_people(self, text: str) -> str:
+        self.people = parse_people(text)
+        self.recompute()
+        return self.people
+
+    # --- drawing ---------------------------------------------------------------
+    def render(self) -> Text:
+        style = self.get_component_rich_style
+        cursor = style("taskpanel--cursor" if self.has_focus else "taskpanel--cursor-blur")
+        head = Text(no_wrap=True, overflow="crop")
+        head.append("Task ", style("taskpanel--header"))
+        head.append(f"(T hides) posture of the strength page's row: {posture_words(self.posture)}")
+        cells = Text(no_wrap=True, overflow="crop")
+        for index, (cell, label) in enumerate(zip(CELLS, ("Left hand", "Right hand", "People"))):
+            cells.append(f"{label} ")
+            shown = f"{self.cell_text(cell):<{CELL_WIDTH - len(label) - 2}}"
+            cells.append(shown, cursor if index == self.cursor else "")
+            cells.append(" ")
+        lines = [head, cells]
+        if self.error:
+            lines.append(Text(self.error))
+        elif self.answer is None or self.computing:
+            lines.append(Text("Computing the task..."))
+        if self.answer is not None and not self.error:
+            lines += [
+                Text(line, no_wrap=True, overflow="crop") for line in answer_lines(self.answer)
+            ]
+        return Text("\n", no_wrap=True).join(lines)
+
+    # --- keys (EditorKeys) -------------------------------------------------------
+    def edit_request(self, initial: str) -> Message:
+        return self.EditRequested(CELLS[self.cursor], initial)
+
+    def cell_at(self, x: int, y: int) -> int | None:
+        if y != 1:
+            return None
+        return min(x // CELL_WIDTH, len(CELLS) - 1)
+
+    def chosen(self) -> int:
+        return self.cursor
+
+    def choose(self, cell: object) -> None:
+        assert isinstance(cell, int)
+        self.cursor = cell
+
+    def action_move(self, rows: int, columns: int) -> None:
+        self.cursor = min(max(self.cursor + columns, 0), len(CELLS) - 1)
+        self.refresh()
+
+    def action_jump(self, cell: int) -> None:
+        self.cursor = cell
+        self.refresh()
