@@ -163,43 +163,15 @@ def _weighted_answer(args: argparse.Namespace, angles, loads):  # -> model.task.
     name = weighting_name(args)
     assert name is not None  # --target or --virtual was given
     _refuse_own_body(args, "--virtual" if args.virtual is not None else "--target")
-    # deferred: db.shipped, db.targets, db.values, model.task — off sass --help, sass --version (sass_tui/startup.py)
+    # deferred: db.task_people, model.task — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.cli.options import open_db
-    from sass_tui.db.shipped import load_weights
-    from sass_tui.db.targets import base_query
-    from sass_tui.db.values import load_values
-    from sass_tui.model.task import Population, assess_populations
+    from sass_tui.db.task_people import group_words, weighted_people
+    from sass_tui.model.task import assess_populations
 
     conn = open_db(args)
     try:
-        weights = load_weights(conn, name)
-        target = weights.target
-        groups = []
-        for gender in target.genders:
-            values = load_values(
-                conn, ["age", "mass", "stature"], base_query(target.population, gender)
-            )
-            age, mass, stature = values.matrix.T
-            people = Population(
-                words=_group_words(target, gender),
-                gender=gender,
-                ages=age,
-                masses=mass,
-                statures=stature / 100.0,
-                weights=weights.of(values.ids),
-                note=target.words(),
-            )
-            groups.append((_figure(args, gender), people))
+        target, people = weighted_people(conn, name)
     finally:
         conn.close()
-    together = _group_words(target, None)
-    return assess_populations(groups, angles, loads, together)
-
-
-def _group_words(target, gender: str | None) -> str:  # target: db.targets.Target
-    """How a column names its people (short: a text column is 18 wide);
-    virtual people are called virtual, the weighting is in the notes."""
-    who = "everyone" if gender is None else GENDER_WORDS[gender]
-    if target.is_virtual:
-        return f"VIRTUAL {who}"
-    return f"{target.name} {who}"
+    groups = [(_figure(args, group.gender), group) for group in people]
+    return assess_populations(groups, angles, loads, group_words(target, None))

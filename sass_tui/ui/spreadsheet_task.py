@@ -38,6 +38,10 @@ class TaskCommands(SheetScreenBase):
         event.stop()
         self.show_task_panel()
 
+    def on_task_panel_refused(self, event: TaskPanel.Refused) -> None:
+        event.stop()
+        self.complain(event.text)
+
     def on_task_panel_edit_requested(self, event: TaskPanel.EditRequested) -> None:
         event.stop()
         panel = self.task_panel

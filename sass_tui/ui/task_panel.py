@@ -20,6 +20,7 @@ from __future__ import annotations
 import copy
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 from rich.text import Text
 from textual import work
@@ -27,6 +28,9 @@ from textual.binding import Binding
 from textual.message import Message
 from textual.widget import Widget
 
+from sass_tui.db.database import Database
+from sass_tui.db.scope import VIRTUAL_PREFIX
+from sass_tui.db.task_people import group_words, weighted_people
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.posture import parse_angles
@@ -37,6 +41,7 @@ from sass_tui.model.task import (
     Reference,
     TaskAnswer,
     TaskError,
+    assess_populations,
     assess_task,
     hand_load,
     parse_hand_load,
@@ -49,8 +54,11 @@ CELLS = ("left", "right", "people")
 CELL_WIDTH = 26
 DEFAULT_LOAD = 60.0  # N on the right hand, down: a bag held out
 # The people a task is for: the figure's gender (default), the figure shown
-# with its own size, or the standard figure of one gender or of both.
+# with its own size, the standard figure of one gender or of both; or the
+# people of a target or virtual population by name (`target NAME`,
+# `virtual NAME`), each scaled to their own size and weighted.
 PEOPLE = ("gender", "figure", "women", "men", "women and men")
+WEIGHTED = ("target", "virtual")
 JOINT_ORDER = ("hand", "elbow", "shoulder", "hip", "knee", "ankle")
 
 
@@ -62,6 +70,7 @@ class TaskInput:
     posture: tuple[str, ...]
     loads: tuple[HandLoad, ...]
     people: str
+    db_path: str | Path | None  # the database a target or virtual population is read from
 
 
 def references(task: TaskInput) -> list[Reference]:
@@ -76,6 +85,25 @@ def references(task: TaskInput) -> list[Reference]:
         "women and men": ("female", "male"),
     }[task.people]
     return [Reference(GENDER_WORDS[g], Figure.default(g), None) for g in genders]
+
+
+def assess(task: TaskInput) -> TaskAnswer:
+    """The task for the people asked for; a target's or virtual population's
+    are read from the database (the shipped one made the first time)."""
+    angles = parse_angles(list(task.posture))
+    kind, _, name = task.people.partition(" ")
+    if kind not in WEIGHTED:
+        return assess_task(references(task), angles, list(task.loads))
+    db = Database.open(task.db_path)
+    try:
+        with db.connection() as conn:
+            target, people = weighted_people(
+                conn, f"{VIRTUAL_PREFIX}{name}" if kind == "virtual" else name
+            )
+    finally:
+        db.close()
+    groups = [(Figure.default(group.gender), group) for group in people]
+    return assess_populations(groups, angles, list(task.loads), group_words(target, None))
 
 
 def strength_posture(side: str, angles: list[float]) -> tuple[str, ...]:
@@ -104,10 +132,16 @@ def posture_words(posture: tuple[str, ...]) -> str:
 
 
 def parse_people(text: str) -> str:
-    words = " ".join(text.lower().split())
-    if words not in PEOPLE:
-        raise TaskError(f"people {text.strip()!r}: expected one of {', '.join(PEOPLE)}")
-    return words
+    words = " ".join(text.split())
+    kind, _, name = words.partition(" ")
+    if kind.lower() in WEIGHTED and name:
+        return f"{kind.lower()} {name}"
+    if words.lower() not in PEOPLE:
+        raise TaskError(
+            f"people {text.strip()!r}: expected one of {', '.join(PEOPLE)}, "
+            "target NAME or virtual NAME"
+        )
+    return words.lower()
 
 
 def load_words(load: HandLoad | None) -> str:
@@ -181,9 +215,16 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
             self.initial = initial
 
     class Assessed(Message):
-        def __init__(self, answer: TaskAnswer | None, error: str = "") -> None:
+        def __init__(self, task: TaskInput, answer: TaskAnswer | None, error: str = "") -> None:
             super().__init__()
-            self.answer, self.error = answer, error
+            self.task, self.answer, self.error = task, answer, error
+
+    class Refused(Message):
+        """The people asked for could not be read: the message line says why."""
+
+        def __init__(self, text: str) -> None:
+            super().__init__()
+            self.text = text
 
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
@@ -192,6 +233,7 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
             "right": hand_load("right", DEFAULT_LOAD, (0.0, -1.0, 0.0))
         }
         self.people = "gender"
+        self.answered_people = "gender"  # the people of the answer shown
         self.posture: tuple[str, ...] = ()
         self.figure: Figure | None = None
         self.answer: TaskAnswer | None = None
@@ -211,25 +253,35 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
         self.computing = True
         self.refresh()
         task = TaskInput(
-            copy.deepcopy(self.figure), self.posture, tuple(self.loads.values()), self.people
+            copy.deepcopy(self.figure),
+            self.posture,
+            tuple(self.loads.values()),
+            self.people,
+            getattr(self.app, "db_path", None),
         )
         self.run_task(task)
 
     @work(thread=True, exclusive=True, group="task", exit_on_error=False)
     def run_task(self, task: TaskInput) -> None:
         try:
-            answer = assess_task(
-                references(task), parse_angles(list(task.posture)), list(task.loads)
-            )
-        except SassError as exc:
-            self.post_message(self.Assessed(None, str(exc)))
+            answer = assess(task)
+        except (SassError, OSError) as exc:
+            self.post_message(self.Assessed(task, None, str(exc)))
             return
-        self.post_message(self.Assessed(answer))
+        self.post_message(self.Assessed(task, answer))
 
     def on_task_panel_assessed(self, event: TaskPanel.Assessed) -> None:
         event.stop()
         self.computing = False
+        if event.error and event.task.people != self.answered_people:
+            # people that cannot be read: the answer before stays, for its people
+            self.people = self.answered_people
+            self.post_message(self.Refused(f"{event.task.people}: {event.error}"))
+            self.refresh()
+            return
         self.answer, self.error = event.answer, event.error
+        if event.answer is not None:
+            self.answered_people = event.task.people
         self.refresh()
 
     # --- the inputs, set from the screen's prompts ----------------------------
@@ -243,7 +295,10 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
     def prompt(self, cell: str) -> str:
         """What the message line asks for `cell`."""
         if cell == "people":
-            return f"People the task is for ({', '.join(PEOPLE)}) [{self.people}]:"
+            return (
+                f"People the task is for ({', '.join(PEOPLE)}, target NAME or "
+                f"virtual NAME) [{self.people}]:"
+            )
         return (
             f"Load on the {cell} hand (N, then the way it pulls: down, up, forward, back, "
             f"left, right or X,Y,Z; 0 = none) [{self.cell_text(cell)}]:"
@@ -280,7 +335,9 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
         cursor = style("taskpanel--cursor" if self.has_focus else "taskpanel--cursor-blur")
         head = Text(no_wrap=True, overflow="crop")
         head.append("Task ", style("taskpanel--header"))
-        head.append(f"(T hides) posture of the strength page's row: {posture_words(self.posture)}")
+        status = "computing..., " if self.computing else ""
+        head.append(f"({status}T hides) posture of the strength page's row: ")
+        head.append(posture_words(self.posture))
         cells = Text(no_wrap=True, overflow="crop")
         for index, (cell, label) in enumerate(zip(CELLS, ("Left hand", "Right hand", "People"))):
             cells.append(f"{label} ")
@@ -290,9 +347,7 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
         lines = [head, cells]
         if self.error:
             lines.append(Text(self.error))
-        elif self.answer is None or self.computing:
-            lines.append(Text("Computing the task..."))
-        if self.answer is not None and not self.error:
+        elif self.answer is not None:
             lines += [
                 Text(line, no_wrap=True, overflow="crop") for line in answer_lines(self.answer)
             ]

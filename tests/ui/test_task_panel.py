@@ -7,9 +7,15 @@ Field run here on the same posture."""
 
 from __future__ import annotations
 
+import math
+
+import numpy as np
 import pytest
 from _screen import message, settle, wait_until
 
+from sass_tui.db.database import Database
+from sass_tui.db.targets import load_target
+from sass_tui.db.values import load_values
 from sass_tui.model.arm_force_field import arm_force
 from sass_tui.model.figure import Figure
 from sass_tui.model.posture import parse_angles, pose_figure
@@ -18,6 +24,20 @@ from sass_tui.ui.strength_page import TASK_PANEL_LINES
 from sass_tui.ui.task_panel import TaskPanel, answer_lines, strength_posture
 
 SIZE = (110, 44)
+VIRTUAL = "nhanes-2017-2020"
+
+
+def virtual_people(db: str, gender: str) -> tuple[np.ndarray, np.ndarray]:
+    """The stored virtual people of one gender (mass) and their survey weights."""
+    opened = Database.open(db)
+    try:
+        with opened.connection() as conn:
+            query = f'source = "virtual:{VIRTUAL}" AND gender = {gender}'
+            values = load_values(conn, ["mass"], query)
+            weights = load_target(conn, f"virtual:{VIRTUAL}").of(values.ids)
+    finally:
+        opened.close()
+    return values.matrix[:, 0], weights
 
 
 async def answer(pilot, text: str) -> None:
@@ -132,6 +152,53 @@ def test_the_task_panel_follows_the_strength_page_and_its_cells(app_at, drive):
             hand = next(c for c in panel.answer.capabilities if c.what == "right hand")
             expected = hand_percent(Figure.default("female"), panel.posture, 30.0, (0, -1, 0))
             assert hand.percent["women"] == pytest.approx(expected)
+
+    drive(scenario())
+
+
+@pytest.mark.slow
+def test_the_task_panel_takes_a_virtual_population(app_at, drive, db):
+    """`virtual NAME` in the people cell: the shipped virtual population,
+    made in the database on first use, each gender and everyone weighted by
+    the survey's weights (checked against the stored virtual people); a
+    target that does not exist is refused and the people kept."""
+
+    async def scenario():
+        async with app_at(SIZE, db=True) as (app, pilot):
+            screen = app.screen
+            await pilot.press("T")
+            await wait_until(pilot, lambda: screen.task_panel is not None, "a task panel")
+            panel = screen.task_panel
+            await answered(pilot, panel)
+            await pilot.press("right", "enter")
+            await answer(pilot, "target nosuch")
+            await wait_until(pilot, lambda: "nosuch" in message(app), '"nosuch" in message(app)')
+            await answered(pilot, panel)
+            assert panel.people == "gender" and panel.answered_people == "gender"
+            await pilot.press("enter")
+            await answer(pilot, f"virtual {VIRTUAL}")
+            # making the virtual population takes seconds: wait for the worker itself
+            await app.workers.wait_for_complete()
+            columns = ["VIRTUAL men", "VIRTUAL women", "VIRTUAL everyone"]
+            await wait_until(
+                pilot,
+                lambda: panel.answer.populations == columns and not panel.computing,
+                "panel.answer.populations == columns",
+            )
+            hand = next(c for c in panel.answer.capabilities if c.what == "right hand")
+            pooled = [0.0, 0.0]
+            for gender, words in zip(("male", "female"), columns):
+                mass, weights = virtual_people(str(db), gender)
+                body = pose_figure(Figure.default(gender), parse_angles(list(panel.posture)))
+                arm = arm_force(body.points, "right", (0, 1, 0), gender, body.body_mass)
+                z = (60.0 - arm.gravity * mass / body.body_mass - arm.mean) / arm.sd
+                each = np.array([0.5 * (1 - math.erf(v / math.sqrt(2))) for v in z])
+                assert hand.percent[words] == pytest.approx(
+                    100 * (each * weights).sum() / weights.sum(), abs=0.05
+                )
+                pooled = [pooled[0] + (each * weights).sum(), pooled[1] + weights.sum()]
+            assert hand.percent[columns[2]] == pytest.approx(100 * pooled[0] / pooled[1], abs=0.05)
+            assert "VIRTUAL everyone" in str(panel.render())
 
     drive(scenario())
 
