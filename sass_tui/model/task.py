@@ -378,17 +378,15 @@ def _population_shares(
     moments = task_moments(body, loads)
     bare = task_moments(body, [])
     m, h, w = people.masses, people.statures, people.weights
-    known = np.isfinite(m) & np.isfinite(h) & (m > 0) & (h > 0) & (w > 0)
     for load in loads:
-        if load.force <= 0 or not known.any():
+        if load.force <= 0 or not _known(people).any():
             continue
         arm = arm_demand(body, load, people.gender)
-        gravity = arm.gravity * m[known] / body.body_mass
-        capable = normal_survival((load.force - gravity - arm.mean) / arm.sd)
+        capable, weight = _hand_sums(arm, body, people, np.array([load.force]))
         found = Capability(
             f"{load.side} hand", "force against the load", load.force, "N", {}, ARM_WORDS
         )
-        out.append((found, *_weighted(capable, w[known])))
+        out.append((found, float(capable[0]), weight))
     scale_body = m * h / (body.body_mass * body.stature)
     for (moment, side, word), unloaded in zip(_legs(moments), _legs(bare)):
         motion, torque = leg_demand(moment, word)
@@ -410,6 +408,65 @@ def _weighted(
     capable: npt.NDArray[np.float64], weights: npt.NDArray[np.float64]
 ) -> tuple[float, float]:
     return float((capable * weights).sum()), float(weights.sum())
+
+
+def _known(people: Population) -> npt.NDArray[np.bool_]:
+    m, h, w = people.masses, people.statures, people.weights
+    known: npt.NDArray[np.bool_] = np.isfinite(m) & np.isfinite(h) & (m > 0) & (h > 0) & (w > 0)
+    return known
+
+
+def _hand_sums(
+    arm: ArmForce, body: PosedBody, people: Population, forces: npt.NDArray[np.float64]
+) -> tuple[npt.NDArray[np.float64], float]:
+    """For each force: the sum of weight x probability of exerting it over
+    `people` (the arm's weight by each one's mass), and the sum of weight."""
+    known = _known(people)
+    gravity = arm.gravity * people.masses[known] / body.body_mass
+    capable = normal_survival((forces[:, None] - gravity[None, :] - arm.mean) / arm.sd)
+    weights = people.weights[known]
+    return capable @ weights, float(weights.sum())
+
+
+CURVE_POINTS = 41
+
+
+@dataclass(frozen=True)
+class CurveGroup:
+    """Whose curve: a figure alone (`people` None) or people scaled from it."""
+
+    words: str
+    body: PosedBody
+    gender: str
+    people: Population | None = None
+
+
+def hand_curves(
+    groups: list[CurveGroup], load: HandLoad, together: str = ""
+) -> dict[str, list[tuple[float, float]]]:
+    """Percent capable against the force on `load`'s hand (its direction
+    kept), from 0 to what 0.5 % of the strongest group can exert: for each
+    group and, with `together`, the weighted people of all groups pooled."""
+    arms = [(group, arm_demand(group.body, load, group.gender)) for group in groups]
+    top = max(max(arm.strength(0.5) for _, arm in arms), 1.0)
+    forces = np.linspace(0.0, top, CURVE_POINTS)
+    curves: dict[str, list[tuple[float, float]]] = {}
+    pooled, pooled_weight = np.zeros(CURVE_POINTS), 0.0
+    for group, arm in arms:
+        if group.people is None:
+            shares = [arm.percent_capable(float(f)) for f in forces]
+        elif _known(group.people).any():
+            capable, weight = _hand_sums(arm, group.body, group.people, forces)
+            pooled, pooled_weight = pooled + capable, pooled_weight + weight
+            shares = list(100.0 * capable / weight)
+        else:
+            continue
+        curves[group.words] = [(float(f), float(p)) for f, p in zip(forces, shares)]
+    if together and pooled_weight > 0 and len(curves) > 1:
+        curves[together] = [
+            (float(f), float(p)) for f, p in zip(forces, 100.0 * pooled / pooled_weight)
+        ]
+    return curves
 
 
 # --- what the answer says -------------------------------------------------------

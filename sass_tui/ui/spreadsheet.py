@@ -178,7 +178,7 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
         self.strength_page.page_rows = max(1, height - FIXED_LINES - task)
 
     # --- the strength page's Task panel (spreadsheet_task.py) --------------------
-    def action_task(self) -> None:
+    async def action_task(self) -> None:
         """Task: show or hide the strength page's panel of who can do a task.
 
         A posture (the strength page's row), loads on the hands; the joints'
@@ -201,14 +201,14 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
             from sass_tui.ui.task_panel import TaskPanel
 
             panel = TaskPanel(id="task-panel")
-            self.query_one("#data", Vertical).mount(panel, after=self.strength_page)
+            await self.query_one("#data", Vertical).mount(panel, after=self.strength_page)
         self.task_shown = True
         self._place_task_panel()
         self.show_task_panel()
-        self.set_focus(panel)
+        self.set_focus(panel.cells)
         self.say(
-            "Task: the posture is the strength page's row; ← → and Enter: the loads "
-            "(60 N down) and the people; shift+Tab: the strength page."
+            "Task: the strength page's row is its posture; ← → Enter: the loads and the "
+            "people; h: curve; shift+Tab: the page."
         )
 
     def _place_task_panel(self) -> None:

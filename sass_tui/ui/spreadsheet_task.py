@@ -46,7 +46,7 @@ class TaskCommands(SheetScreenBase):
         event.stop()
         panel = self.task_panel
         assert panel is not None  # it asked
-        if self._pass_to_prompt(panel, event.initial):
+        if self._pass_to_prompt(panel.cells, event.initial):
             return
         cell = event.cell
 
@@ -57,4 +57,4 @@ class TaskCommands(SheetScreenBase):
             self.ask(panel.prompt(cell), answer, event.initial)
         except SassError as exc:
             self.complain(str(exc))
-        self._after_edit_request(panel)
+        self._after_edit_request(panel.cells)

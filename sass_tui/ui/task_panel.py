@@ -25,24 +25,29 @@ from pathlib import Path
 from rich.text import Text
 from textual import work
 from textual.binding import Binding
+from textual.containers import Vertical
 from textual.message import Message
 from textual.widget import Widget
+from textual.widgets import Static
+from textual_plotext import PlotextPlot
 
 from sass_tui.db.database import Database
 from sass_tui.db.scope import VIRTUAL_PREFIX
 from sass_tui.db.task_people import group_words, weighted_people
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
-from sass_tui.model.posture import parse_angles
+from sass_tui.model.posture import parse_angles, pose_figure
 from sass_tui.model.published_strength import GENDER_WORDS
 from sass_tui.model.task import (
     UNCOVERED,
+    CurveGroup,
     HandLoad,
     Reference,
     TaskAnswer,
     TaskError,
     assess_populations,
     assess_task,
+    hand_curves,
     hand_load,
     parse_hand_load,
 )
@@ -71,6 +76,10 @@ class TaskInput:
     loads: tuple[HandLoad, ...]
     people: str
     db_path: str | Path | None  # the database a target or virtual population is read from
+    curve_side: str = ""  # the hand whose percent capable against its load is drawn
+
+
+Curves = dict[str, list[tuple[float, float]]]
 
 
 def references(task: TaskInput) -> list[Reference]:
@@ -87,23 +96,38 @@ def references(task: TaskInput) -> list[Reference]:
     return [Reference(GENDER_WORDS[g], Figure.default(g), None) for g in genders]
 
 
-def assess(task: TaskInput) -> TaskAnswer:
-    """The task for the people asked for; a target's or virtual population's
-    are read from the database (the shipped one made the first time)."""
+def assess(task: TaskInput) -> tuple[TaskAnswer, Curves]:
+    """The task for the people asked for (a target's or virtual population's
+    read from the database, the shipped one made the first time) and, when
+    asked, the curves of percent capable against the load on a hand."""
     angles = parse_angles(list(task.posture))
+    loads = list(task.loads)
     kind, _, name = task.people.partition(" ")
+    together = ""
     if kind not in WEIGHTED:
-        return assess_task(references(task), angles, list(task.loads))
-    db = Database.open(task.db_path)
-    try:
-        with db.connection() as conn:
-            target, people = weighted_people(
-                conn, f"{VIRTUAL_PREFIX}{name}" if kind == "virtual" else name
-            )
-    finally:
-        db.close()
-    groups = [(Figure.default(group.gender), group) for group in people]
-    return assess_populations(groups, angles, list(task.loads), group_words(target, None))
+        chosen = references(task)
+        answer = assess_task(chosen, angles, loads)
+        groups = [
+            CurveGroup(r.words, pose_figure(r.figure, angles), r.figure.gender) for r in chosen
+        ]
+    else:
+        db = Database.open(task.db_path)
+        try:
+            with db.connection() as conn:
+                target, people = weighted_people(
+                    conn, f"{VIRTUAL_PREFIX}{name}" if kind == "virtual" else name
+                )
+        finally:
+            db.close()
+        figures = [(Figure.default(group.gender), group) for group in people]
+        together = group_words(target, None)
+        answer = assess_populations(figures, angles, loads, together)
+        groups = [
+            CurveGroup(group.words, pose_figure(figure, angles), group.gender, group)
+            for figure, group in figures
+        ]
+    load = next((x for x in loads if x.side == task.curve_side and x.force > 0), None)
+    return answer, {} if load is None else hand_curves(groups, load, together)
 
 
 def strength_posture(side: str, angles: list[float]) -> tuple[str, ...]:
@@ -116,7 +140,7 @@ def strength_posture(side: str, angles: list[float]) -> tuple[str, ...]:
 
 
 def posture_words(posture: tuple[str, ...]) -> str:
-    """`right_shoulder_x=30 ...` -> `right arm: shoulder 30 45 0, elbow 90, wrist 0 0 0`."""
+    """`right_shoulder_x=30 ...` -> `right arm shoulder 30 45 0, elbow 90, wrist 0 0 0 deg`."""
     if not posture:
         return "standing"
     side = posture[0].partition("_")[0]
@@ -128,7 +152,7 @@ def posture_words(posture: tuple[str, ...]) -> str:
         shown = [values[axis] for axis in JOINT_AXES if axis.startswith(joint) and axis in values]
         if shown:
             joints.append(f"{joint} {' '.join(shown)}")
-    return f"{side} arm: {', '.join(joints)} deg"
+    return f"{side} arm {', '.join(joints)} deg"
 
 
 def parse_people(text: str) -> str:
@@ -191,20 +215,89 @@ def answer_lines(answer: TaskAnswer) -> list[str]:
     return lines
 
 
-class TaskPanel(EditorKeys, Widget, can_focus=True):
-    """The task's inputs (three cells) and its answer, under the strength page."""
+class TaskCells(EditorKeys, Widget, can_focus=True):
+    """The panel's first two lines: the posture, and the three cells the
+    arrows move over and Enter (or a number typed) edits; `h` the curve."""
+
+    DEFAULT_CSS = """
+    TaskCells { height: 2; text-wrap: nowrap; text-overflow: clip; }
+    """
+    COMPONENT_CLASSES = {"taskpanel--cursor", "taskpanel--cursor-blur", "taskpanel--header"}
+    BINDINGS = [
+        *CURSOR_BINDINGS,
+        Binding("home", "jump(0)", show=False),
+        EDIT_BINDING,
+        Binding("h", "curve", "Hand curve", tooltip="The task's hand curve or table"),
+    ]
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.cursor = 1  # the right hand's load
+
+    @property
+    def panel(self) -> TaskPanel:
+        parent = self.parent
+        assert isinstance(parent, TaskPanel)
+        return parent
+
+    def render(self) -> Text:
+        panel = self.panel
+        style = self.get_component_rich_style
+        cursor = style("taskpanel--cursor" if self.has_focus else "taskpanel--cursor-blur")
+        head = Text(no_wrap=True, overflow="crop")
+        head.append("Task ", style("taskpanel--header"))
+        status = "computing..., " if panel.computing else ""
+        head.append(f"({status}T hides, h: curve) the strength page's posture: ")
+        head.append(posture_words(panel.posture))
+        cells = Text(no_wrap=True, overflow="crop")
+        for index, (cell, label) in enumerate(zip(CELLS, ("Left hand", "Right hand", "People"))):
+            cells.append(f"{label} ")
+            shown = f"{panel.cell_text(cell):<{CELL_WIDTH - len(label) - 2}}"
+            cells.append(shown, cursor if index == self.cursor else "")
+            cells.append(" ")
+        return Text("\n", no_wrap=True).join([head, cells])
+
+    def edit_request(self, initial: str) -> Message:
+        return TaskPanel.EditRequested(CELLS[self.cursor], initial)
+
+    def cell_at(self, x: int, y: int) -> int | None:
+        if y != 1:
+            return None
+        return min(x // CELL_WIDTH, len(CELLS) - 1)
+
+    def chosen(self) -> int:
+        return self.cursor
+
+    def choose(self, cell: object) -> None:
+        assert isinstance(cell, int)
+        self.cursor = cell
+
+    def action_move(self, rows: int, columns: int) -> None:
+        self.cursor = min(max(self.cursor + columns, 0), len(CELLS) - 1)
+        self.refresh()
+
+    def action_jump(self, cell: int) -> None:
+        self.cursor = cell
+        self.refresh()
+
+    def action_curve(self) -> None:
+        """The task's curve: percent capable against the load on a loaded hand, or the table."""
+        self.panel.next_view()
+
+
+class TaskPanel(Vertical):
+    """The task's inputs and its answer (a table, or a hand's curve), under
+    the strength page; it holds the task and runs the worker."""
 
     DEFAULT_CSS = f"""
     TaskPanel {{
         height: {TASK_PANEL_LINES};
         padding: 0 1;
         border-top: solid $panel-lighten-2;
-        text-wrap: nowrap;
-        text-overflow: clip;
     }}
+    TaskPanel #task-answer {{ height: 1fr; text-wrap: nowrap; text-overflow: clip; }}
+    TaskPanel #task-curve {{ height: 1fr; display: none; }}
     """
-    COMPONENT_CLASSES = {"taskpanel--cursor", "taskpanel--cursor-blur", "taskpanel--header"}
-    BINDINGS = [*CURSOR_BINDINGS, Binding("home", "jump(0)", show=False), EDIT_BINDING]
 
     class EditRequested(Message):
         """Edit the cell `cell` (left, right, people); `initial` = typed so far."""
@@ -215,9 +308,11 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
             self.initial = initial
 
     class Assessed(Message):
-        def __init__(self, task: TaskInput, answer: TaskAnswer | None, error: str = "") -> None:
+        def __init__(
+            self, task: TaskInput, answer: TaskAnswer | None, curves: Curves, error: str = ""
+        ) -> None:
             super().__init__()
-            self.task, self.answer, self.error = task, answer, error
+            self.task, self.answer, self.curves, self.error = task, answer, curves, error
 
     class Refused(Message):
         """The people asked for could not be read: the message line says why."""
@@ -228,7 +323,6 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
 
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
-        self.cursor = 1  # the right hand's load
         self.loads: dict[str, HandLoad] = {
             "right": hand_load("right", DEFAULT_LOAD, (0.0, -1.0, 0.0))
         }
@@ -239,6 +333,19 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
         self.answer: TaskAnswer | None = None
         self.error = ""
         self.computing = False
+        self.curve_side = ""  # "": the table; else the hand whose curve is drawn
+        self.curves: Curves = {}
+
+    def compose(self):
+        yield TaskCells(id="task-cells")
+        yield Static("", id="task-answer")
+        plot = PlotextPlot(id="task-curve")
+        plot.can_focus = False  # the keys are the cells'
+        yield plot
+
+    @property
+    def cells(self) -> TaskCells:
+        return self.query_one(TaskCells)
 
     # --- what it shows -------------------------------------------------------
     def show_task(self, figure: Figure, posture: tuple[str, ...]) -> None:
@@ -251,24 +358,25 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
         if self.figure is None:
             return
         self.computing = True
-        self.refresh()
+        self.redraw()
         task = TaskInput(
             copy.deepcopy(self.figure),
             self.posture,
             tuple(self.loads.values()),
             self.people,
             getattr(self.app, "db_path", None),
+            self.curve_side,
         )
         self.run_task(task)
 
     @work(thread=True, exclusive=True, group="task", exit_on_error=False)
     def run_task(self, task: TaskInput) -> None:
         try:
-            answer = assess(task)
+            answer, curves = assess(task)
         except (SassError, OSError) as exc:
-            self.post_message(self.Assessed(task, None, str(exc)))
+            self.post_message(self.Assessed(task, None, {}, str(exc)))
             return
-        self.post_message(self.Assessed(task, answer))
+        self.post_message(self.Assessed(task, answer, curves))
 
     def on_task_panel_assessed(self, event: TaskPanel.Assessed) -> None:
         event.stop()
@@ -277,12 +385,50 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
             # people that cannot be read: the answer before stays, for its people
             self.people = self.answered_people
             self.post_message(self.Refused(f"{event.task.people}: {event.error}"))
-            self.refresh()
+            self.redraw()
             return
-        self.answer, self.error = event.answer, event.error
+        self.answer, self.error, self.curves = event.answer, event.error, event.curves
         if event.answer is not None:
             self.answered_people = event.task.people
-        self.refresh()
+        self.redraw()
+
+    def redraw(self) -> None:
+        """Draw the cells, the table or the curve from the task held."""
+        self.cells.refresh()
+        self._draw()
+
+    def next_view(self) -> None:
+        """The table, then the curve of each loaded hand in turn, then the table."""
+        order = ["", *(side for side in ("right", "left") if side in self.loads)]
+        self.curve_side = order[(order.index(self.curve_side) + 1) % len(order)]
+        self.recompute()
+
+    def _draw(self) -> None:
+        answer_view = self.query_one("#task-answer", Static)
+        plot = self.query_one("#task-curve", PlotextPlot)
+        curve = bool(self.curve_side) and not self.error
+        answer_view.display, plot.display = not curve, curve
+        if self.error:
+            answer_view.update(Text(self.error))
+        elif self.answer is not None:
+            answer_view.update(Text("\n".join(answer_lines(self.answer)), no_wrap=True))
+        if not curve:
+            return
+        chart = plot.plt
+        chart.clear_data()
+        chart.clear_figure()
+        for words, points in self.curves.items():
+            chart.plot(
+                [x for x, _ in points], [y for _, y in points], marker="braille", label=words
+            )
+        load = self.loads.get(self.curve_side)
+        if load is not None and self.curves:
+            chart.vline(load.force)
+        chart.ylim(0, 100)
+        chart.xlabel(f"load on the {self.curve_side} hand (N), the line at the task's")
+        chart.ylabel("percent capable (%)")
+        chart.title(f"{self.curve_side} hand: La Delfa & Potvin 2017 (Arm Force Field)")
+        plot.refresh()
 
     # --- the inputs, set from the screen's prompts ----------------------------
     def cell_text(self, cell: str) -> str:
@@ -321,6 +467,8 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
         if not loads:
             raise TaskError("a task needs a load on a hand; the loads are unchanged")
         self.loads = loads
+        if self.curve_side and self.curve_side not in loads:
+            self.curve_side = next(iter(loads))
         self.recompute()
         return load
 
@@ -328,51 +476,3 @@ class TaskPanel(EditorKeys, Widget, can_focus=True):
         self.people = parse_people(text)
         self.recompute()
         return self.people
-
-    # --- drawing ---------------------------------------------------------------
-    def render(self) -> Text:
-        style = self.get_component_rich_style
-        cursor = style("taskpanel--cursor" if self.has_focus else "taskpanel--cursor-blur")
-        head = Text(no_wrap=True, overflow="crop")
-        head.append("Task ", style("taskpanel--header"))
-        status = "computing..., " if self.computing else ""
-        head.append(f"({status}T hides) posture of the strength page's row: ")
-        head.append(posture_words(self.posture))
-        cells = Text(no_wrap=True, overflow="crop")
-        for index, (cell, label) in enumerate(zip(CELLS, ("Left hand", "Right hand", "People"))):
-            cells.append(f"{label} ")
-            shown = f"{self.cell_text(cell):<{CELL_WIDTH - len(label) - 2}}"
-            cells.append(shown, cursor if index == self.cursor else "")
-            cells.append(" ")
-        lines = [head, cells]
-        if self.error:
-            lines.append(Text(self.error))
-        elif self.answer is not None:
-            lines += [
-                Text(line, no_wrap=True, overflow="crop") for line in answer_lines(self.answer)
-            ]
-        return Text("\n", no_wrap=True).join(lines)
-
-    # --- keys (EditorKeys) -------------------------------------------------------
-    def edit_request(self, initial: str) -> Message:
-        return self.EditRequested(CELLS[self.cursor], initial)
-
-    def cell_at(self, x: int, y: int) -> int | None:
-        if y != 1:
-            return None
-        return min(x // CELL_WIDTH, len(CELLS) - 1)
-
-    def chosen(self) -> int:
-        return self.cursor
-
-    def choose(self, cell: object) -> None:
-        assert isinstance(cell, int)
-        self.cursor = cell
-
-    def action_move(self, rows: int, columns: int) -> None:
-        self.cursor = min(max(self.cursor + columns, 0), len(CELLS) - 1)
-        self.refresh()
-
-    def action_jump(self, cell: int) -> None:
-        self.cursor = cell
-        self.refresh()

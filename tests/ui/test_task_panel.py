@@ -12,6 +12,7 @@ import math
 import numpy as np
 import pytest
 from _screen import message, settle, wait_until
+from textual.widgets import Static
 
 from sass_tui.db.database import Database
 from sass_tui.db.targets import load_target
@@ -38,6 +39,10 @@ def virtual_people(db: str, gender: str) -> tuple[np.ndarray, np.ndarray]:
     finally:
         opened.close()
     return values.matrix[:, 0], weights
+
+
+def cells_and_answer(panel: TaskPanel) -> str:
+    return f"{panel.cells.render()}\n{panel.query_one('#task-answer', Static).render()}"
 
 
 async def answer(pilot, text: str) -> None:
@@ -69,7 +74,7 @@ def test_the_task_panel_follows_the_strength_page_and_its_cells(app_at, drive):
             await wait_until(pilot, lambda: screen.task_panel is not None, "a task panel")
             panel = screen.task_panel
             await answered(pilot, panel)
-            assert screen.data_group == "strength" and panel.display and panel.has_focus
+            assert screen.data_group == "strength" and panel.display and panel.cells.has_focus
             page = screen.strength_page
             side, angles = page.row_angles()
             assert panel.posture == strength_posture(side, angles)
@@ -85,6 +90,30 @@ def test_the_task_panel_follows_the_strength_page_and_its_cells(app_at, drive):
             assert f"Limiting: {words} " in shown
             assert "Not covered, no published model in sass covers it (N-m): left wrist" in shown
             assert "trunk (L5/S1)" in shown
+
+            # h: the right hand's curve of percent capable against its load
+            await pilot.press("h")
+            await wait_until(
+                pilot,
+                lambda: panel.curve_side == "right" and panel.curves and not panel.computing,
+                'panel.curve_side == "right" and panel.curves',
+            )
+            assert panel.query_one("#task-curve").display
+            assert not panel.query_one("#task-answer").display
+            curve = panel.curves[words]
+            assert curve[0] == (
+                0.0,
+                pytest.approx(hand_percent(Figure.default(gender), panel.posture, 0.0)),
+            )
+            assert curve[-1][1] < 1.0 and all(a[1] >= b[1] for a, b in zip(curve, curve[1:]))
+            force, share = curve[len(curve) // 3]
+            assert share == pytest.approx(
+                hand_percent(Figure.default(gender), panel.posture, force)
+            )
+            await pilot.press("h")  # one loaded hand: back to the table
+            await wait_until(
+                pilot, lambda: panel.query_one("#task-answer").display, "the table again"
+            )
 
             # the people: women and men (the cursor starts on the right hand)
             await pilot.press("right", "enter")
@@ -105,7 +134,7 @@ def test_the_task_panel_follows_the_strength_page_and_its_cells(app_at, drive):
             hand = next(c for c in panel.answer.capabilities if c.what == "right hand")
             expected = hand_percent(Figure.default("female"), panel.posture, 30.0, (0, -1, 0))
             assert hand.percent["women"] == pytest.approx(expected)
-            assert "30 N up" in str(panel.render())
+            assert "30 N up" in cells_and_answer(panel)
             # a bad load is refused and the load kept
             await pilot.press("enter")
             await answer(pilot, "heavy")
@@ -198,7 +227,7 @@ def test_the_task_panel_takes_a_virtual_population(app_at, drive, db):
                 )
                 pooled = [pooled[0] + (each * weights).sum(), pooled[1] + weights.sum()]
             assert hand.percent[columns[2]] == pytest.approx(100 * pooled[0] / pooled[1], abs=0.05)
-            assert "VIRTUAL everyone" in str(panel.render())
+            assert "VIRTUAL everyone" in cells_and_answer(panel)
 
     drive(scenario())
 
