@@ -12,17 +12,26 @@ import math
 import numpy as np
 import pytest
 from _screen import message, settle, wait_until
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from textual.widgets import Static
 
 from sass_tui.db.database import Database
 from sass_tui.db.targets import load_target
 from sass_tui.db.values import load_values
 from sass_tui.model.arm_force_field import arm_force
+from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.posture import parse_angles, pose_figure
 from sass_tui.model.published_strength import GENDER_WORDS
 from sass_tui.ui.strength_page import TASK_PANEL_LINES
-from sass_tui.ui.task_panel import TaskPanel, answer_lines, strength_posture
+from sass_tui.ui.task_panel import (
+    PEOPLE,
+    TaskPanel,
+    answer_lines,
+    parse_people,
+    strength_posture,
+)
 
 SIZE = (110, 44)
 VIRTUAL = "nhanes-2017-2020"
@@ -62,6 +71,27 @@ def hand_percent(figure: Figure, posture: tuple[str, ...], force: float, way=(0,
     body = pose_figure(figure, parse_angles(list(posture)))
     arm = arm_force(body.points, "right", way, figure.gender, body.body_mass)
     return arm.percent_capable(force)
+
+
+@pytest.mark.parametrize(
+    "text, people",
+    [("Women  and MEN", "women and men"), ("gender", "gender"), ("Virtual nhanes-2017-2020",
+     "virtual nhanes-2017-2020"), ("target civ", "target civ")],
+)  # fmt: skip
+def test_the_people_cell_takes_its_words(text, people):
+    assert parse_people(text) == people
+
+
+@settings(max_examples=80, deadline=None)
+@given(st.text(max_size=30))
+def test_any_people_text_is_people_or_a_clear_refusal(text):
+    try:
+        people = parse_people(text)
+    except SassError as exc:
+        assert "expected one of gender, figure" in str(exc)
+    else:
+        kind, _, name = people.partition(" ")
+        assert people in PEOPLE or (kind in ("target", "virtual") and name)
 
 
 @pytest.mark.slow
