@@ -15,8 +15,8 @@ from sass_tui.model.task import Population
 
 
 def group_words(target: Target, gender: str | None) -> str:
-    """How an answer's column names its people (short: a text column is 18
-    wide); virtual people are called virtual, the weighting is in the notes."""
+    """How an answer's column names its people; virtual people are called
+    virtual, the weighting is in the notes."""
     who = "everyone" if gender is None else GENDER_WORDS[gender]
     if target.is_virtual:
         return f"VIRTUAL {who}"

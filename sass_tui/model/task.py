@@ -536,12 +536,14 @@ def task_text(answer: TaskAnswer, posture: list[str]) -> list[str]:
             f"  {m.joint:<16} {x:>8.1f} {y:>8.1f} {z:>8.1f} {m.size:>8.1f} "
             f"{float(np.linalg.norm(m.from_loads)):>8.1f}  {m.covered_by}"
         )
-    heads = "".join(f"{p[:18]:>20}" for p in answer.populations)
+    # a column as wide as its population's name (a target's are long), 20 at least
+    width = max([20, *(len(p) + 2 for p in answer.populations)])
+    heads = "".join(f"{p:>{width}}" for p in answer.populations)
     lines += ["", f"Percent capable{'':<33}{heads}"]
     for c in answer.capabilities:
         what = f"{c.what}: {c.motion.replace('_', ' ')} {c.demand:.1f} {c.unit}"
         cells = "".join(
-            f"{c.percent[p]:>18.1f} %" if p in c.percent else f"{'-':>20}"
+            f"{c.percent[p]:>{width - 2}.1f} %" if p in c.percent else f"{'-':>{width}}"
             for p in answer.populations
         )
         lines.append(f"  {what:<46}{cells}")

@@ -178,12 +178,28 @@ def load_words(load: HandLoad | None) -> str:
     return f"{load.force:g} N {way or f'{x:.2f},{y:.2f},{z:.2f}'}"
 
 
+def _shared_words(names: list[str]) -> str:
+    """The first words every name of several starts with: `VIRTUAL` of
+    `VIRTUAL men`, `VIRTUAL women`."""
+    if len(names) < 2:
+        return ""
+    shared: list[str] = []
+    for words in zip(*(name.split() for name in names)):
+        if len(set(words)) > 1:
+            break
+        shared.append(words[0])
+    return " ".join(shared)
+
+
 def answer_lines(answer: TaskAnswer) -> list[str]:
     """The answer in the panel's rows: each loaded hand and each elbow,
     shoulder, hip, knee and ankle with its moment and percent capable."""
     people = answer.populations
-    heads = "".join(f"{p[:12]:>13}" for p in people)
-    lines = [f"{'Joint':<15}{'N-m':>6}{'loads':>6}  {'to exert':<30}{heads}"]
+    # the words the columns share (VIRTUAL, a target's name) once, in the header
+    shared = _shared_words(people)
+    heads = "".join(f"{p[len(shared) :].strip()[:12]:>13}" for p in people)
+    exert = f"to exert ({shared})" if shared else "to exert"
+    lines = [f"{'Joint':<15}{'N-m':>6}{'loads':>6}  {exert[:30]:<30}{heads}"]
     capable = {c.what: c for c in answer.capabilities}
     moments = {m.joint: m for m in answer.moments}
     for side in ("left", "right"):

@@ -257,7 +257,8 @@ def test_the_task_panel_takes_a_virtual_population(app_at, drive, db):
                 )
                 pooled = [pooled[0] + (each * weights).sum(), pooled[1] + weights.sum()]
             assert hand.percent[columns[2]] == pytest.approx(100 * pooled[0] / pooled[1], abs=0.05)
-            assert "VIRTUAL everyone" in cells_and_answer(panel)
+            shown = cells_and_answer(panel)
+            assert "to exert (VIRTUAL)" in shown and "everyone" in shown
 
     drive(scenario())
 
