@@ -3,16 +3,18 @@ people do it?  The posture is the strength page's: the angles of the row
 under its cursor, on the limb it shows.  Three cells, edited on the message
 line like the page's angles: the load on the left hand, on the right hand
 (a force, then the way it pulls: `60 N down`), and the people (the figure's
-gender, the figure shown, women, men, or women and men).  Below them the
-answer (model/task.py, docs/strength.md "A task"): the moments at the
-elbows, shoulders, hips, knees and ankles, the percent capable of each
-loaded hand (the Arm Force Field) and each hip, knee and ankle (Anderson et
-al. 2007), the limiting one, and what no published model covers.
+gender, the figure shown, women, men, women and men, `target NAME` or
+`virtual NAME`).  Below them the answer (model/task.py, docs/strength.md
+"A task"): the moments at the elbows, shoulders, hips, knees and ankles,
+the percent capable of each loaded hand (the Arm Force Field) and each hip,
+knee and ankle (Anderson et al. 2007), the limiting one, and what no
+published model covers; or, with `h`, the curve of percent capable against
+the load on a loaded hand, drawn with textual-plotext.
 
 The answer is computed in a worker on a copy of the figure whenever an input
-changes, and posted back (the TUI never blocks).  The panel owns its keys
-(the arrows, Enter, a number typed) and asks the screen for a prompt with
-TaskPanel.EditRequested, as the strength page does.
+changes, and posted back (the TUI never blocks).  TaskCells owns the keys
+(the arrows, Enter, a number typed, `h`) and asks the screen for a prompt
+with TaskPanel.EditRequested, as the strength page does.
 """
 
 from __future__ import annotations
@@ -52,7 +54,7 @@ from sass_tui.model.task import (
     parse_hand_load,
 )
 from sass_tui.model.vocabulary import JOINT_AXES
-from sass_tui.ui.strength_page import TASK_PANEL_LINES, format_angle
+from sass_tui.ui.strength_page import TASK_PANEL_LINES
 from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 
 CELLS = ("left", "right", "people")
@@ -133,7 +135,7 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves]:
 def strength_posture(side: str, angles: list[float]) -> tuple[str, ...]:
     """The strength page's angles of one row as a posture of that side's arm."""
     return tuple(
-        f"{side}_{axis}={format_angle(degrees)}"
+        f"{side}_{axis}={degrees:g}"
         for axis, degrees in zip(JOINT_AXES, angles)
         if not math.isnan(degrees)
     )
