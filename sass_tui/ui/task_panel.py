@@ -351,6 +351,7 @@ class TaskPanel(Vertical):
         self.answer: TaskAnswer | None = None
         self.error = ""
         self.computing = False
+        self.pending: TaskInput | None = None  # the newest task handed to a worker
         self.curve_side = ""  # "": the table; else the hand whose curve is drawn
         self.curves: Curves = {}
 
@@ -385,6 +386,7 @@ class TaskPanel(Vertical):
             getattr(self.app, "db_path", None),
             self.curve_side,
         )
+        self.pending = task
         self.run_task(task)
 
     @work(thread=True, exclusive=True, group="task", exit_on_error=False)
@@ -398,6 +400,8 @@ class TaskPanel(Vertical):
 
     def on_task_panel_assessed(self, event: TaskPanel.Assessed) -> None:
         event.stop()
+        if event.task is not self.pending:
+            return  # an older task's answer, finished after a newer one was asked for
         self.computing = False
         if event.error and event.task.people != self.answered_people:
             # people that cannot be read: the answer before stays, for its people
