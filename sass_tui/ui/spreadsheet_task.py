@@ -27,8 +27,8 @@ class TaskCommands(SheetScreenBase):
         panel = self.task_panel
         if panel is None or not panel.display:
             return
-        # deferred: ui.task_panel — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.task_panel import strength_posture
+        # deferred: ui.task_words — off the first screen, the first screen's next frame (sass_tui/startup.py)
+        from sass_tui.ui.task_words import strength_posture
 
         row = self.strength_page.row_angles()
         posture = () if row is None else strength_posture(*row)

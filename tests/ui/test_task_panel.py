@@ -25,13 +25,8 @@ from sass_tui.model.figure import Figure
 from sass_tui.model.posture import parse_angles, pose_figure
 from sass_tui.model.published_strength import GENDER_WORDS
 from sass_tui.ui.strength_page import TASK_PANEL_LINES
-from sass_tui.ui.task_panel import (
-    PEOPLE,
-    TaskPanel,
-    answer_lines,
-    parse_people,
-    strength_posture,
-)
+from sass_tui.ui.task_panel import TaskPanel
+from sass_tui.ui.task_words import PEOPLE, answer_lines, parse_people, strength_posture
 
 SIZE = (110, 44)
 VIRTUAL = "nhanes-2017-2020"
