@@ -21,6 +21,7 @@ from sass_tui.model.arm_force_field import arm_force
 from sass_tui.model.figure import Figure
 from sass_tui.model.posture import parse_angles, pose_figure
 from tests._paths import ANSUR
+from tests._virtual_task import VIRTUAL, right_hand_sums
 from tests.db.test_targets import civilian_women, write_sample
 
 POSTURE = ["shoulder_y=90", "elbow_y=0"]
@@ -97,9 +98,6 @@ def test_a_fit_tests_strength_limit_is_weighted_by_the_target(with_target, capsy
     assert result["target"]["percent"] == pytest.approx(100 * capable / total, abs=0.01)
 
 
-VIRTUAL = "nhanes-2017-2020"
-
-
 @pytest.fixture(scope="module")
 def virtual_task(template_target, copy_database) -> tuple[str, list[str]]:
     """A copy of the default database (the shipped virtual population not
@@ -107,19 +105,6 @@ def virtual_task(template_target, copy_database) -> tuple[str, list[str]]:
     db = copy_database(template_target)
     argv = ["task", *POSTURE, "--db", db, "--right-load", "60N", "--virtual", VIRTUAL]
     return db, argv
-
-
-def _virtual_people(db: str, gender: str) -> tuple[np.ndarray, np.ndarray]:
-    """The stored virtual people of one gender (mass) and their survey weights."""
-    opened = Database.open(db)
-    try:
-        with opened.connection() as conn:
-            query = f'source = "virtual:{VIRTUAL}" AND gender = {gender}'
-            values = load_values(conn, ["mass"], query)
-            weights = load_target(conn, f"virtual:{VIRTUAL}").of(values.ids)
-    finally:
-        opened.close()
-    return values.matrix[:, 0], weights
 
 
 @pytest.mark.slow
@@ -133,20 +118,11 @@ def test_a_virtual_population_is_weighted_by_its_survey_weights(virtual_task, ca
     answer = json.loads(capsys.readouterr().out)
     hand = next(c for c in answer["capable"] if c["what"] == "right hand")
     pooled_capable = pooled_weight = 0.0
-    for gender, words in (
-        ("female", "VIRTUAL women"),
-        ("male", "VIRTUAL men"),
-    ):
-        mass, weights = _virtual_people(db, gender)
-        assert len(mass) > 1000  # NHANES 2017-2020's adults of one gender
-        body = pose_figure(Figure.default(gender), parse_angles(POSTURE))
-        arm = arm_force(body.points, "right", (0, 1, 0), gender, body.body_mass)
-        z = (60.0 - arm.gravity * mass / body.body_mass - arm.mean) / arm.sd
-        each = np.array([0.5 * (1 - math.erf(v / math.sqrt(2))) for v in z])
-        own = 100 * (each * weights).sum() / weights.sum()
-        assert hand["percent"][words] == pytest.approx(own, abs=0.05)
-        pooled_capable += (each * weights).sum()
-        pooled_weight += weights.sum()
+    for gender, words in (("female", "VIRTUAL women"), ("male", "VIRTUAL men")):
+        capable, weight = right_hand_sums(db, gender, POSTURE, 60.0)
+        assert hand["percent"][words] == pytest.approx(100 * capable / weight, abs=0.05)
+        pooled_capable += capable
+        pooled_weight += weight
     together = hand["percent"]["VIRTUAL everyone"]
     assert together == pytest.approx(100 * pooled_capable / pooled_weight, abs=0.05)
     assert set(answer["limiting"]) == {

@@ -7,18 +7,12 @@ Field run here on the same posture."""
 
 from __future__ import annotations
 
-import math
-
-import numpy as np
 import pytest
 from _screen import message, settle, wait_until
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from textual.widgets import Static
 
-from sass_tui.db.database import Database
-from sass_tui.db.targets import load_target
-from sass_tui.db.values import load_values
 from sass_tui.model.arm_force_field import arm_force
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
@@ -27,22 +21,9 @@ from sass_tui.model.published_strength import GENDER_WORDS
 from sass_tui.ui.strength_page import TASK_PANEL_LINES
 from sass_tui.ui.task_panel import TaskPanel
 from sass_tui.ui.task_words import PEOPLE, answer_lines, parse_people, strength_posture
+from tests._virtual_task import VIRTUAL, right_hand_sums
 
 SIZE = (110, 44)
-VIRTUAL = "nhanes-2017-2020"
-
-
-def virtual_people(db: str, gender: str) -> tuple[np.ndarray, np.ndarray]:
-    """The stored virtual people of one gender (mass) and their survey weights."""
-    opened = Database.open(db)
-    try:
-        with opened.connection() as conn:
-            query = f'source = "virtual:{VIRTUAL}" AND gender = {gender}'
-            values = load_values(conn, ["mass"], query)
-            weights = load_target(conn, f"virtual:{VIRTUAL}").of(values.ids)
-    finally:
-        opened.close()
-    return values.matrix[:, 0], weights
 
 
 def cells_and_answer(panel: TaskPanel) -> str:
@@ -242,15 +223,9 @@ def test_the_task_panel_takes_a_virtual_population(app_at, drive, db):
             hand = next(c for c in panel.answer.capabilities if c.what == "right hand")
             pooled = [0.0, 0.0]
             for gender, words in zip(("male", "female"), columns):
-                mass, weights = virtual_people(str(db), gender)
-                body = pose_figure(Figure.default(gender), parse_angles(list(panel.posture)))
-                arm = arm_force(body.points, "right", (0, 1, 0), gender, body.body_mass)
-                z = (60.0 - arm.gravity * mass / body.body_mass - arm.mean) / arm.sd
-                each = np.array([0.5 * (1 - math.erf(v / math.sqrt(2))) for v in z])
-                assert hand.percent[words] == pytest.approx(
-                    100 * (each * weights).sum() / weights.sum(), abs=0.05
-                )
-                pooled = [pooled[0] + (each * weights).sum(), pooled[1] + weights.sum()]
+                capable, weight = right_hand_sums(str(db), gender, list(panel.posture), 60.0)
+                assert hand.percent[words] == pytest.approx(100 * capable / weight, abs=0.05)
+                pooled = [pooled[0] + capable, pooled[1] + weight]
             assert hand.percent[columns[2]] == pytest.approx(100 * pooled[0] / pooled[1], abs=0.05)
             shown = cells_and_answer(panel)
             assert "to exert (VIRTUAL)" in shown and "everyone" in shown
