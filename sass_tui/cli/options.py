@@ -99,7 +99,7 @@ class WeightingArgumentError(ValueError, SassError):
 VIRTUAL_PREFIX = "virtual:"
 
 
-def add_virtual_option(parser: argparse.ArgumentParser) -> None:
+def add_virtual_option(parser: argparse.ArgumentParser | argparse._ArgumentGroup) -> None:
     """`--virtual NAME`: the people of a virtual population, weighted by its survey weights."""
     parser.add_argument(
         "--virtual",

@@ -9,6 +9,7 @@ Anderson et al. 2007 for hips, knees and ankles), the limiting one named
     sass task knee_y=60 hip_y=70 shoulder_y=45 --left-load 60N --right-load 60N
     sass task shoulder_y=90 elbow_y=0 --right-load "15 lbf" --person "ANSUR II F 10037"
     sass task shoulder_y=90 --right-load 50N --target nasa-women
+    sass task shoulder_y=90 --right-load 50N --virtual nhanes-2017-2020
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from sass_tui.cli.options import SubParsers, add_db_option
+from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
 from sass_tui.model.published_strength import GENDER_WORDS
 from sass_tui.model.vocabulary import GENDERS
 
@@ -35,8 +36,10 @@ def register(commands: SubParsers) -> None:
         "figure's own segment masses, and the share of women and men (or a person, or a "
         "target population) able to exert them where a published model covers the joint: "
         "the Arm Force Field (La Delfa & Potvin 2017) for each loaded hand, Anderson et al. "
-        "2007 for hips, knees and ankles.  The trunk and the wrists have no published model "
-        "in sass: their moments are given and said to be uncovered (docs/strength.md).",
+        "2007 for hips, knees and ankles.  A target or virtual population's people are each "
+        "scaled to their own stature and mass and weighted: each gender and everyone.  The "
+        "trunk and the wrists have no published model in sass: their moments are given and "
+        "said to be uncovered (docs/strength.md).",
     )
     task.add_argument(
         "angles",
@@ -62,6 +65,7 @@ def register(commands: SubParsers) -> None:
         help="a target population (sass target): its people, each scaled to their own size, "
         "weighted",
     )
+    add_virtual_option(who)
     task.add_argument("--age", type=float, help="years, picks Anderson et al. 2007's age group")
     task.add_argument("--mass", help="the figure's body mass, e.g. 70 or '154 lb' (kg)")
     task.add_argument("--stature", help="the figure's stature, e.g. 165 or '65 in' (cm)")
@@ -88,8 +92,8 @@ def run(args: argparse.Namespace) -> int:
     ]
     if not loads:
         raise TaskError("a task needs a load on a hand: --left-load or --right-load")
-    if args.target is not None:
-        answer = _target_answer(args, angles, loads)
+    if args.target is not None or args.virtual is not None:
+        answer = _weighted_answer(args, angles, loads)
     else:
         answer = assess_task(_references(args), angles, loads)
     if args.format == "json":
@@ -152,29 +156,22 @@ def _references(args: argparse.Namespace) -> list:  # -> list[model.task.Referen
     return [Reference(str(figure.person), figure, None if age is None else float(age))]  # type: ignore[arg-type]
 
 
-def _target_answer(args: argparse.Namespace, angles, loads):  # -> model.task.TaskAnswer
-    """A target population's people, each scaled to their own size, weighted."""
-    _refuse_own_body(args, "--target")
-    # deferred: db.targets, db.values, model.task — off sass --help, sass --version (sass_tui/startup.py)
+def _weighted_answer(args: argparse.Namespace, angles, loads):  # -> model.task.TaskAnswer
+    """A target's (or virtual population's) people, each scaled to their own
+    size from their gender's figure, weighted: each gender and, for a target
+    of both, everyone together."""
+    name = weighting_name(args)
+    assert name is not None  # --target or --virtual was given
+    _refuse_own_body(args, "--virtual" if args.virtual is not None else "--target")
+    # deferred: db.task_people, model.task — off sass --help, sass --version (sass_tui/startup.py)
     from sass_tui.cli.options import open_db
-    from sass_tui.db.targets import load_target
-    from sass_tui.db.values import load_values
-    from sass_tui.model.task import Population, assess_population
+    from sass_tui.db.task_people import group_words, weighted_people
+    from sass_tui.model.task import assess_populations
 
     conn = open_db(args)
     try:
-        target = load_target(conn, args.target)
-        values = load_values(conn, ["age", "mass", "stature"], target.target.base_query)
+        target, people = weighted_people(conn, name)
     finally:
         conn.close()
-    age, mass, stature = values.matrix.T
-    people = Population(
-        words=f"{target.target.name} (weighted)",
-        gender=target.target.gender,
-        ages=age,
-        masses=mass,
-        statures=stature / 100.0,
-        weights=target.of(values.ids),
-        note=target.target.words(),
-    )
-    return assess_population(_figure(args, people.gender), people, angles, loads)
+    groups = [(_figure(args, group.gender), group) for group in people]
+    return assess_populations(groups, angles, loads, group_words(target, None))

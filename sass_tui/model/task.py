@@ -335,31 +335,58 @@ class Population:
     note: str
 
 
-def assess_population(
-    figure: Figure, people: Population, angles: Angles, loads: list[HandLoad]
+def assess_populations(
+    groups: list[tuple[Figure, Population]],
+    angles: Angles,
+    loads: list[HandLoad],
+    together: str = "",
 ) -> TaskAnswer:
-    """Percent capable over many people: each person's moments are the
-    figure's scaled to their own size (segment weights by mass x stature, the
-    loads' lever arms by stature), their arm's weight by their mass; the
-    share is the weighted mean of each person's probability."""
+    """Percent capable over many people, one population per gender, each
+    scaled from its own gender's figure; the moments are on the first
+    group's figure.  With `together`, a column of the groups' people
+    together: every person's probability by their weight, over all groups."""
     _check_loads(loads)
-    body = pose_figure(figure, angles)
+    answer: TaskAnswer | None = None
+    sums: dict[str, tuple[Capability, float, float]] = {}
+    for figure, people in groups:
+        body = pose_figure(figure, angles)
+        if answer is None:
+            answer = TaskAnswer(loads, task_moments(body, loads), _figure_words(figure))
+        answer.populations.append(people.words)
+        if people.note not in answer.notes:
+            answer.notes.append(people.note)
+        for found, capable, weight in _population_shares(body, people, angles, loads):
+            answer.record(found, people.words, 100.0 * capable / weight)
+            _, c, w = sums.get(found.what, (found, 0.0, 0.0))
+            sums[found.what] = (found, c + capable, w + weight)
+    assert answer is not None  # at least one group
+    if together and len(groups) > 1:
+        answer.populations.append(together)
+        for found, capable, weight in sums.values():
+            answer.record(found, together, 100.0 * capable / weight)
+    return answer
+
+
+def _population_shares(
+    body: PosedBody, people: Population, angles: Angles, loads: list[HandLoad]
+) -> list[tuple[Capability, float, float]]:
+    """(capability, sum of weight x probability, sum of weight) over the
+    people the model covers: each person's moments are the figure's scaled
+    to their own size (segment weights by mass x stature, the loads' lever
+    arms by stature), their arm's weight by their mass."""
+    out = []
     moments = task_moments(body, loads)
     bare = task_moments(body, [])
-    answer = TaskAnswer(loads, moments, _figure_words(figure), populations=[people.words])
-    answer.notes.append(people.note)
     m, h, w = people.masses, people.statures, people.weights
-    known = np.isfinite(m) & np.isfinite(h) & (m > 0) & (h > 0) & (w > 0)
     for load in loads:
-        if load.force <= 0 or not known.any():
+        if load.force <= 0 or not _known(people).any():
             continue
         arm = arm_demand(body, load, people.gender)
-        gravity = arm.gravity * m[known] / body.body_mass
-        capable = normal_survival((load.force - gravity - arm.mean) / arm.sd)
+        capable, weight = _hand_sums(arm, body, people, np.array([load.force]))
         found = Capability(
             f"{load.side} hand", "force against the load", load.force, "N", {}, ARM_WORDS
         )
-        answer.record(found, people.words, _mean(capable, w[known]))
+        out.append((found, float(capable[0]), weight))
     scale_body = m * h / (body.body_mass * body.stature)
     for (moment, side, word), unloaded in zip(_legs(moments), _legs(bare)):
         motion, torque = leg_demand(moment, word)
@@ -373,12 +400,73 @@ def assess_population(
         ok = ~np.isnan(capable) & (w > 0)
         if ok.any():
             found = Capability(moment.joint, motion, torque, "N-m", {}, ANDERSON)
-            answer.record(found, people.words, _mean(capable[ok], w[ok]))
-    return answer
+            out.append((found, *_weighted(capable[ok], w[ok])))
+    return out
 
 
-def _mean(capable: npt.NDArray[np.float64], weights: npt.NDArray[np.float64]) -> float:
-    return 100.0 * float((capable * weights).sum()) / float(weights.sum())
+def _weighted(
+    capable: npt.NDArray[np.float64], weights: npt.NDArray[np.float64]
+) -> tuple[float, float]:
+    return float((capable * weights).sum()), float(weights.sum())
+
+
+def _known(people: Population) -> npt.NDArray[np.bool_]:
+    m, h, w = people.masses, people.statures, people.weights
+    known: npt.NDArray[np.bool_] = np.isfinite(m) & np.isfinite(h) & (m > 0) & (h > 0) & (w > 0)
+    return known
+
+
+def _hand_sums(
+    arm: ArmForce, body: PosedBody, people: Population, forces: npt.NDArray[np.float64]
+) -> tuple[npt.NDArray[np.float64], float]:
+    """For each force: the sum of weight x probability of exerting it over
+    `people` (the arm's weight by each one's mass), and the sum of weight."""
+    known = _known(people)
+    gravity = arm.gravity * people.masses[known] / body.body_mass
+    capable = normal_survival((forces[:, None] - gravity[None, :] - arm.mean) / arm.sd)
+    weights = people.weights[known]
+    return capable @ weights, float(weights.sum())
+
+
+CURVE_POINTS = 41
+
+
+@dataclass(frozen=True)
+class CurveGroup:
+    """Whose curve: a figure alone (`people` None) or people scaled from it."""
+
+    words: str
+    body: PosedBody
+    gender: str
+    people: Population | None = None
+
+
+def hand_curves(
+    groups: list[CurveGroup], load: HandLoad, together: str = ""
+) -> dict[str, list[tuple[float, float]]]:
+    """Percent capable against the force on `load`'s hand (its direction
+    kept), from 0 to what 0.5 % of the strongest group can exert: for each
+    group and, with `together`, the weighted people of all groups pooled."""
+    arms = [(group, arm_demand(group.body, load, group.gender)) for group in groups]
+    top = max(max(arm.strength(0.5) for _, arm in arms), 1.0)
+    forces = np.linspace(0.0, top, CURVE_POINTS)
+    curves: dict[str, list[tuple[float, float]]] = {}
+    pooled, pooled_weight = np.zeros(CURVE_POINTS), 0.0
+    for group, arm in arms:
+        if group.people is None:
+            shares = [arm.percent_capable(float(f)) for f in forces]
+        elif _known(group.people).any():
+            capable, weight = _hand_sums(arm, group.body, group.people, forces)
+            pooled, pooled_weight = pooled + capable, pooled_weight + weight
+            shares = list(100.0 * capable / weight)
+        else:
+            continue
+        curves[group.words] = [(float(f), float(p)) for f, p in zip(forces, shares)]
+    if together and pooled_weight > 0 and len(curves) > 1:
+        curves[together] = [
+            (float(f), float(p)) for f, p in zip(forces, 100.0 * pooled / pooled_weight)
+        ]
+    return curves
 
 
 # --- what the answer says -------------------------------------------------------
@@ -448,12 +536,14 @@ def task_text(answer: TaskAnswer, posture: list[str]) -> list[str]:
             f"  {m.joint:<16} {x:>8.1f} {y:>8.1f} {z:>8.1f} {m.size:>8.1f} "
             f"{float(np.linalg.norm(m.from_loads)):>8.1f}  {m.covered_by}"
         )
-    heads = "".join(f"{p[:18]:>20}" for p in answer.populations)
+    # a column as wide as its population's name (a target's are long), 20 at least
+    width = max([20, *(len(p) + 2 for p in answer.populations)])
+    heads = "".join(f"{p:>{width}}" for p in answer.populations)
     lines += ["", f"Percent capable{'':<33}{heads}"]
     for c in answer.capabilities:
         what = f"{c.what}: {c.motion.replace('_', ' ')} {c.demand:.1f} {c.unit}"
         cells = "".join(
-            f"{c.percent[p]:>18.1f} %" if p in c.percent else f"{'-':>20}"
+            f"{c.percent[p]:>{width - 2}.1f} %" if p in c.percent else f"{'-':>{width}}"
             for p in answer.populations
         )
         lines.append(f"  {what:<46}{cells}")

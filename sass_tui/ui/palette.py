@@ -92,13 +92,6 @@ SCREENS: tuple[ScreenRoute, ...] = (
         "t on the spreadsheet",
     ),
     ScreenRoute(
-        "Task",
-        "sass_tui.ui.task_screen",
-        "TaskScreen",
-        "task",
-        "T on the spreadsheet (the strength page's task)",
-    ),
-    ScreenRoute(
         "Fit Test",
         "sass_tui.ui.fit_screen",
         "FitScreen",

@@ -33,8 +33,9 @@ from sass_tui.ui.figure_view import FigureView
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.spreadsheet_edit import EditCommands
 from sass_tui.ui.spreadsheet_people import PeopleCommands
+from sass_tui.ui.spreadsheet_task import TaskCommands
 from sass_tui.ui.spreadsheet_worksheet import WorksheetCommands
-from sass_tui.ui.strength_page import StrengthPage
+from sass_tui.ui.strength_page import TASK_PANEL_LINES, StrengthPage
 from sass_tui.ui.widgets import (
     CommandMenu,
     DataSheet,
@@ -59,7 +60,7 @@ FIXED_LINES = 1 + 6 + 1 + DataSheet.HEADER_LINES + 1 + 1
 FIGURE_PANEL_MIN_WIDTH = 120
 
 
-class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands):
+class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCommands):
     """Figure 4: group bar, global data | command menu, data section, message line."""
 
     # The footer at 80 columns (beside ctrl+p): n p f d|o u w b q, and r on
@@ -85,7 +86,7 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands):
         Binding("b", "see_figure", "Draw", tooltip="See figure"),
         Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         Binding("t", "strength_curve", show=False),
-        Binding("T", "task", show=False),
+        Binding("T", "task", show=False, tooltip="Task panel"),
         Binding("M", "assumed_modifiers", show=False),
         *(
             Binding(spec.key, spec.action, spec.footer)
@@ -173,7 +174,49 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands):
 
     def _set_page_rows(self, height: int) -> None:
         self.sheet.page_rows = height - FIXED_LINES
-        self.strength_page.page_rows = height - FIXED_LINES
+        task = TASK_PANEL_LINES if self.task_shown else 0
+        self.strength_page.page_rows = max(1, height - FIXED_LINES - task)
+
+    # --- the strength page's Task panel (spreadsheet_task.py) --------------------
+    async def action_task(self) -> None:
+        """Task: show or hide the strength page's panel of who can do a task.
+
+        A posture (the strength page's row), loads on the hands; the joints'
+        moments and the percent capable (ui/task_panel.py)."""
+        if self.message_line.prompting:
+            return
+        if self.task_shown:
+            self.task_shown = False
+            self._place_task_panel()
+            self.set_focus(self.active_sheet)
+            self.say("Task panel hidden; T shows it again.")
+            return
+        if self.data_group != STRENGTH:
+            self.action_select_group(STRENGTH)
+            if self.data_group != STRENGTH:  # refused: said why
+                return
+        panel = self.task_panel
+        if panel is None:
+            # deferred: ui.task_panel — off the first screen, the first screen's next frame (sass_tui/startup.py)
+            from sass_tui.ui.task_panel import TaskPanel
+
+            panel = TaskPanel(id="task-panel")
+            await self.query_one("#data", Vertical).mount(panel, after=self.strength_page)
+        self.task_shown = True
+        self._place_task_panel()
+        self.show_task_panel()
+        self.set_focus(panel.cells)
+        self.say(
+            "Task: the strength page's row is its posture; ← → Enter: the loads and the "
+            "people; h: curve; shift+Tab: the page."
+        )
+
+    def _place_task_panel(self) -> None:
+        """Shown on the strength page when asked for; the page's rows make room."""
+        panel = self.task_panel
+        if panel is not None:
+            panel.display = self.task_shown and self.data_group == STRENGTH
+        self._set_page_rows(self.app.size.height)
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:
         spec = next((c for c in COMMANDS if c.action == action), None)
@@ -221,6 +264,7 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands):
         on_strength = group == STRENGTH
         self.sheet.display = not on_strength
         self.strength_page.display = on_strength
+        self._place_task_panel()
         if had_focus or self.focused is None:
             self.set_focus(self.active_sheet)  # now: an edit asked for next keeps its prompt
         self.refresh_screen()

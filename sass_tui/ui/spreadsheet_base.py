@@ -119,6 +119,9 @@ class SheetScreenBase(SassScreen):
         if outlines != panel.outlines:
             panel.outlines = outlines
 
+    def show_task_panel(self) -> None:
+        """The strength page's Task panel follows the figure (spreadsheet_task.py)."""
+
     @property
     def sheet(self) -> DataSheet:
         return self.query_one("#sheet", DataSheet)
@@ -160,6 +163,7 @@ class SheetScreenBase(SassScreen):
             self.strength_page.show_sheet(
                 self.session.strength_sheet, self.session.strength_sheets.missing
             )
+            self.show_task_panel()
         self.redraw_figure_panel()
 
     # --- message line ---------------------------------------------------------
@@ -201,13 +205,6 @@ class SheetScreenBase(SassScreen):
             self.message_line.type_ahead("enter", None)
         widget.typing_done()
         return True
-
-    def action_task(self) -> None:
-        """Task: a posture and loads on the hands; the joints' moments and who can do it."""
-        # deferred: ui.task_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.task_screen import TaskScreen
-
-        self.app.push_screen(TaskScreen(self.session.figure))
 
     def action_strength_curve(self) -> None:
         """Strength curves: hip, knee and ankle torque over the joint's range."""

@@ -12,6 +12,7 @@ import math
 from typing import TYPE_CHECKING
 
 from rich.text import Text
+from textual.message import Message
 
 from sass_tui.model.vocabulary import JOINT_AXES
 from sass_tui.ui.widgets import DataSheet
@@ -26,6 +27,10 @@ NAME_WIDTH = 26  # "Shoulder lateral rotation" and a space
 SOURCE_WORD_WIDTH = 11
 SOURCE_LETTER = {"stored": "s", "predicted": "p", "no data": ""}
 JOINT_SPANS = (("Shoulder", 3), ("Elbow", 1), ("Wrist", 3))
+# The Task panel under the page (ui/task_panel.py, T): its border 1, the
+# posture and inputs 2, the table's header 1, 12 hands and joints, limiting
+# and not covered 2.  Fixed: the page's rows follow from the terminal's height.
+TASK_PANEL_LINES = 18
 
 
 def format_angle(degrees: float, width: int = ANGLE_WIDTH - 1) -> str:
@@ -52,10 +57,44 @@ class StrengthPage(DataSheet):
     PAGE_ROWS = 14  # report §12.2.4: fixed to 14 lines for strength
     COLUMNS = len(JOINT_AXES)
 
+    class RowChosen(Message):
+        """The cursor went to another row (a motion): the Task panel's posture follows."""
+
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
         self.sheet: StrengthSheet | None = None
         self.missing: str | None = None
+
+    def row_angles(self) -> tuple[str, list[float]] | None:
+        """The side shown and the angles of the row under the cursor."""
+        if self.sheet is None or not self.row_count:
+            return None
+        return self.sheet.side, [float(a) for a in self.sheet.angles[self.cursor_row]]
+
+    def _moved_from(self, row: int) -> None:
+        if row != self.cursor_row:
+            self.post_message(self.RowChosen())
+
+    def action_move(self, rows: int, columns: int) -> None:
+        row = self.cursor_row
+        super().action_move(rows, columns)
+        self._moved_from(row)
+
+    def action_jump(self, row: int) -> None:
+        before = self.cursor_row
+        super().action_jump(row)
+        self._moved_from(before)
+
+    def turn_page(self, pages: int) -> bool:
+        row = self.cursor_row
+        turned = super().turn_page(pages)
+        self._moved_from(row)
+        return turned
+
+    def choose(self, cell: object) -> None:
+        row = self.cursor_row
+        super().choose(cell)
+        self._moved_from(row)
 
     def show_sheet(self, sheet: StrengthSheet | None, missing: str | None = None) -> None:
         """`missing`: why there is no sheet (a person without strength experiments)."""

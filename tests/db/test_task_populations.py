@@ -21,6 +21,7 @@ from sass_tui.model.arm_force_field import arm_force
 from sass_tui.model.figure import Figure
 from sass_tui.model.posture import parse_angles, pose_figure
 from tests._paths import ANSUR
+from tests._virtual_task import VIRTUAL, right_hand_sums
 from tests.db.test_targets import civilian_women, write_sample
 
 POSTURE = ["shoulder_y=90", "elbow_y=0"]
@@ -95,3 +96,45 @@ def test_a_fit_tests_strength_limit_is_weighted_by_the_target(with_target, capsy
     assert main([*argv, "knee_extension >= 120 N-m at knee_y=60", "stature <= 250 cm"]) == 0
     result = json.loads(capsys.readouterr().out)
     assert result["target"]["percent"] == pytest.approx(100 * capable / total, abs=0.01)
+
+
+@pytest.fixture(scope="module")
+def virtual_task(template_target, copy_database) -> tuple[str, list[str]]:
+    """A copy of the default database (the shipped virtual population not
+    made yet: the task's first use makes it) and the task's arguments."""
+    db = copy_database(template_target)
+    argv = ["task", *POSTURE, "--db", db, "--right-load", "60N", "--virtual", VIRTUAL]
+    return db, argv
+
+
+@pytest.mark.slow
+def test_a_virtual_population_is_weighted_by_its_survey_weights(virtual_task, capsys):
+    """`sass task --virtual`: each gender's share of the right hand is the
+    survey-weighted mean over the stored virtual people of each one's
+    probability (the figure's Arm Force Field, the arm's weight by their own
+    mass), computed here with numpy; together is both genders' people pooled."""
+    db, argv = virtual_task
+    assert main([*argv, "--format", "json"]) == 0
+    answer = json.loads(capsys.readouterr().out)
+    hand = next(c for c in answer["capable"] if c["what"] == "right hand")
+    pooled_capable = pooled_weight = 0.0
+    for gender, words in (("female", "VIRTUAL women"), ("male", "VIRTUAL men")):
+        capable, weight = right_hand_sums(db, gender, POSTURE, 60.0)
+        assert hand["percent"][words] == pytest.approx(100 * capable / weight, abs=0.05)
+        pooled_capable += capable
+        pooled_weight += weight
+    together = hand["percent"]["VIRTUAL everyone"]
+    assert together == pytest.approx(100 * pooled_capable / pooled_weight, abs=0.05)
+    assert set(answer["limiting"]) == {
+        "VIRTUAL women", "VIRTUAL men", "VIRTUAL everyone"
+    }  # fmt: skip
+    assert answer["notes"][0].startswith("VIRTUAL people, not measured: nhanes-2017-2020")
+    knees = [c for c in answer["capable"] if c["what"].endswith("knee")]
+    assert knees and all(len(c["percent"]) == 3 for c in knees)
+
+
+def test_target_and_virtual_together_are_refused(virtual_task, capsys):
+    db, argv = virtual_task
+    with pytest.raises(SystemExit):
+        main([*argv, "--target", "civ"])
+    assert "not allowed with argument" in capsys.readouterr().err

@@ -1,0 +1,45 @@
+"""The expected share of a task's loaded hand over the stored virtual people
+of the shipped virtual population, computed here without sass's task code:
+each person's probability of exerting the load (the figure's Arm Force
+Field, the arm's weight by their own mass: the normal tail written out with
+math.erf), weighted by the survey's weights.  For tests/db and tests/ui."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from sass_tui.db.database import Database
+from sass_tui.db.targets import load_target
+from sass_tui.db.values import load_values
+from sass_tui.model.arm_force_field import arm_force
+from sass_tui.model.figure import Figure
+from sass_tui.model.posture import parse_angles, pose_figure
+
+VIRTUAL = "nhanes-2017-2020"
+
+
+def virtual_people(db: str, gender: str) -> tuple[np.ndarray, np.ndarray]:
+    """The stored virtual people of one gender (mass) and their survey weights."""
+    opened = Database.open(db)
+    try:
+        with opened.connection() as conn:
+            query = f'source = "virtual:{VIRTUAL}" AND gender = {gender}'
+            values = load_values(conn, ["mass"], query)
+            weights = load_target(conn, f"virtual:{VIRTUAL}").of(values.ids)
+    finally:
+        opened.close()
+    return values.matrix[:, 0], weights
+
+
+def right_hand_sums(db: str, gender: str, posture: list[str], load: float) -> tuple[float, float]:
+    """(sum of weight x probability, sum of weight) of one gender's virtual
+    people holding `load` N down in the right hand in `posture`."""
+    mass, weights = virtual_people(db, gender)
+    assert len(mass) > 1000  # NHANES 2017-2020's adults of one gender
+    body = pose_figure(Figure.default(gender), parse_angles(posture))
+    arm = arm_force(body.points, "right", (0, 1, 0), gender, body.body_mass)
+    z = (load - arm.gravity * mass / body.body_mass - arm.mean) / arm.sd
+    each = np.array([0.5 * (1 - math.erf(v / math.sqrt(2))) for v in z])
+    return float((each * weights).sum()), float(weights.sum())
