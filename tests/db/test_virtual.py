@@ -236,3 +236,15 @@ def test_predict_learns_from_the_virtual_people(shipped, capsys):
     real = json.loads(capsys.readouterr().out)
     assert "virtual:nhanes-2017-2020" in virtual["model"]["population"]
     assert virtual["model"]["n"] == len(nhanes("2", "BMXHT")[0]) and real["model"]["n"] == 1986
+    # The fit is unweighted, and says so: in the JSON, and in the table.
+    assert virtual["model"]["weighted"] is False
+    assert virtual["model"]["virtual"] == "nhanes-2017-2020" and real["model"]["virtual"] is None
+    table = ["predict", "--db", shipped, "--gender", "female", *known, "--nearest", "2"]
+    assert main([*table, "--virtual", "nhanes-2017-2020"]) == 0
+    said = capsys.readouterr().out
+    assert "learnt from the VIRTUAL people of nhanes-2017-2020, unweighted: each virtual " in said
+    assert "nearest VIRTUAL people of nhanes-2017-2020" in said
+    assert "nearest real people" not in said
+    assert main(table) == 0
+    said = capsys.readouterr().out
+    assert "unweighted" not in said and "nearest real people" in said
