@@ -11,11 +11,12 @@ from sass_tui.cli.progress import progress_for
 from sass_tui.db import accelerator
 from sass_tui.db.addresses import is_url
 from sass_tui.db.database import Database, configured_target, init_postgres
-from sass_tui.db.default import create_default_database
+from sass_tui.db.default import SYNTHETIC_LABEL, create_default_database
 from sass_tui.db.flatfile import FlatFileError, FlatFiles
 from sass_tui.db.postgres import shown
 from sass_tui.db.replacing import Held, keep_targets, what_init_replaces
 from sass_tui.db.schema import DatabaseError, connect, default_db_path
+from sass_tui.db.scope import VIRTUAL_PREFIX
 from sass_tui.model.text import printable
 
 
@@ -104,10 +105,7 @@ def run_init(args: argparse.Namespace) -> int:
     # the copy's threshold (accelerator.MIN_PEOPLE), counted by SQLite.
 
     accelerator.forget(path.resolve())
-    print(
-        f"created {path}: {counts.get('ansur2', 0)} ANSUR II people and "
-        f"{counts.get('synthetic', 0)} synthetic people"
-    )
+    print(f"created {path}: {_built(counts)}")
     if held.targets:
         conn = connect(path)
         try:
@@ -116,6 +114,22 @@ def run_init(args: argparse.Namespace) -> int:
         finally:
             conn.close()
     return 0
+
+
+def _built(counts: dict[str, int]) -> str:
+    """What `sass db init` stored (db/default.py's fill_default's counts per source)."""
+    said = [
+        f"{counts.get('ansur2', 0)} ANSUR II people and "
+        f"{counts.get(SYNTHETIC_LABEL, 0)} synthetic people"
+    ]
+    for source, n in counts.items():
+        if source.startswith(VIRTUAL_PREFIX):
+            name = source.removeprefix(VIRTUAL_PREFIX)
+            said.append(
+                f"the shipped target {name} and its VIRTUAL population of {n} predicted "
+                f"people (`--virtual {name}`)"
+            )
+    return "; ".join(said)
 
 
 def _replace_confirmed(where: str, held: Held) -> bool:
@@ -154,10 +168,7 @@ def _init_postgres(url: str, force: bool) -> int:
     counts = init_postgres(url, bar, force=True)
     if bar:
         bar.finish()
-    print(
-        f"created the sass schema in {shown(url)}: {counts.get('ansur2', 0)} ANSUR II people "
-        f"and {counts.get('synthetic', 0)} synthetic people"
-    )
+    print(f"created the sass schema in {shown(url)}: {_built(counts)}")
     if held.targets:
         db = Database.open(url)
         try:

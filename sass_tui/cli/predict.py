@@ -46,6 +46,18 @@ class PredictArgumentError(ValueError, SassError):
         SassError.__init__(self, message, where=where)
 
 
+# `--virtual NAME`: the regression learns from the virtual people unweighted.
+# Their predicted measures were drawn from sass's regression on the soldiers
+# (db/virtual.py), so weighting cannot change what it says of a measure given
+# stature and mass; the survey weights would move only the stature-mass
+# relation, and at the price of the sample: the shipped population's Kish
+# effective size is 43 % of its people (docs/target-populations.md).
+UNWEIGHTED = (
+    "unweighted: each virtual person counts once, not by its survey weight "
+    "(docs/target-populations.md, Predicting from virtual people)"
+)
+
+
 def register(commands: SubParsers) -> None:
     predict = commands.add_parser(
         "predict",
@@ -147,17 +159,20 @@ def run(args: argparse.Namespace) -> int:
     if args.input is not None:
         rows = predict_csv(predictor, args.gender, args.input, args.output)
         print(f"wrote {args.output} ({rows} {'person' if rows == 1 else 'people'})")
+        if args.virtual is not None:
+            print(f"learnt from the VIRTUAL people of {args.virtual}, {UNWEIGHTED}")
         return 0
     known = predictor.parse_known(args.gender, pairs)
     prediction = predictor.predict(args.gender, known, nearest=args.nearest)
     out = sys.stdout
     if args.format == "json":
-        json.dump(prediction_json(predictor, prediction, args.population), out, indent=1)
+        document = prediction_json(predictor, prediction, args.population, args.virtual)
+        json.dump(document, out, indent=1)
         out.write("\n")
     elif args.format == "csv":
         _write_csv(prediction, out)
     else:
-        _write_table(prediction, out, args.population)
+        _write_table(prediction, out, args.population, args.virtual)
     if args.figure:
         path = write_prediction_figure(prediction, args.figure)
         print(f"wrote {path}", file=sys.stderr if args.format != "table" else out)
@@ -165,10 +180,14 @@ def run(args: argparse.Namespace) -> int:
 
 
 def prediction_json(
-    predictor: Predictor, prediction: Prediction, population: str | None = None
+    predictor: Predictor,
+    prediction: Prediction,
+    population: str | None = None,
+    virtual: str | None = None,
 ) -> dict[str, Any]:
     """The JSON document of one prediction; `population`
-    the query the model learnt from (None: the default, every real person)."""
+    the query the model learnt from (None: the default, every real person),
+    `virtual` the virtual population it learnt from (`--virtual NAME`)."""
     cv = predictor.cv_rmse(prediction.gender, prediction.known)
     return {
         "gender": prediction.gender,
@@ -185,6 +204,9 @@ def prediction_json(
             "n": prediction.n,
             "population": population,
             "cv_rmse": {k: round(v, 4) for k, v in cv.items()},
+            # Every person counts once, survey weights or not (UNWEIGHTED says why).
+            "weighted": False,
+            "virtual": virtual,
         },
     }
 
@@ -198,19 +220,27 @@ def _write_csv(prediction: Prediction, out: TextIO) -> None:
         )
 
 
-def _write_table(prediction: Prediction, out: TextIO, population: str | None = None) -> None:
+def _write_table(
+    prediction: Prediction,
+    out: TextIO,
+    population: str | None = None,
+    virtual: str | None = None,
+) -> None:
     among = "" if population is None else f" of {population}"
     out.write(
         f"{prediction.gender}, {prediction.label()} "
         f"(regression on {prediction.n} people{among}; 90 % prediction intervals)\n"
     )
+    if virtual is not None:
+        out.write(f"learnt from the VIRTUAL people of {virtual}, {UNWEIGHTED}\n")
     width = max(len(name) for name in prediction.values)
     out.write(f"{'field':<{width}}  {'value':>8} {'unit':<4}  {'90 % interval':>17}\n")
     for name, e in prediction.values.items():
         interval = "known" if e.known else f"{e.low:.2f} - {e.high:.2f}"
         out.write(f"{name:<{width}}  {e.value:8.2f} {e.unit:<4}  {interval:>17}\n")
     if prediction.nearest:
-        out.write("\nnearest real people (standardized distance over the known values):\n")
+        who = "real people" if virtual is None else f"VIRTUAL people of {virtual}"
+        out.write(f"\nnearest {who} (standardized distance over the known values):\n")
         for n in prediction.nearest:
             out.write(f"{n.id:>8}  {n.name:<24} {n.distance:7.3f}\n")
 

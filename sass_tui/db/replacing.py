@@ -18,13 +18,19 @@ import numpy as np
 from sass_tui.db.ansur import DEFAULT_LABEL
 from sass_tui.db.default import SYNTHETIC_LABEL
 from sass_tui.db.dialect import dialect_of, mark_of
+from sass_tui.db.scope import virtual_source
+from sass_tui.model.datasets import NHANES_NAME
 from sass_tui.model.text import printable
 
 if TYPE_CHECKING:
     from sass_tui.db.targets import Target
 
-# The people `sass db init` stores again.
-DEFAULT_SOURCES = (DEFAULT_LABEL, SYNTHETIC_LABEL)
+# The people `sass db init` stores again: the virtual ones made anew from
+# the shipped NHANES sample (db/virtual.py's store_shipped_in).
+DEFAULT_SOURCES = (DEFAULT_LABEL, SYNTHETIC_LABEL, virtual_source(NHANES_NAME))
+# The targets `sass db init` makes anew: the shipped target and the virtual
+# population's weights (db/targets.py's SHIPPED).
+MADE_ANEW = (NHANES_NAME, virtual_source(NHANES_NAME))
 
 
 @dataclass(frozen=True)
@@ -76,6 +82,8 @@ class Held:
 
 
 def target_fate(held: HeldTarget) -> str:
+    if held.target.name in MADE_ANEW:
+        return "made anew from the shipped data"
     if held.keepable:
         return f"kept (its {len(held.people):,} people are stored again)"
     return f"deleted ({_lacking(held)})"
@@ -146,11 +154,11 @@ def keep_targets(conn: Any, held: Held) -> list[str]:
     said = []
     for one in held.targets:
         name = printable(one.target.name)
-        if not one.keepable:
-            said.append(f"deleted target {name}: {_lacking(one)}")
-            continue
         if target_exists(conn, one.target.name):
             said.append(f"target {name}: made anew by sass db init")
+            continue
+        if not one.keepable:
+            said.append(f"deleted target {name}: {_lacking(one)}")
             continue
         ids = [
             keys.get(str(key)) if key is not None else (id_num if id_num in synthetic else None)

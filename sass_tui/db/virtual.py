@@ -31,6 +31,7 @@ import numpy.typing as npt
 from sass_tui.db import database
 from sass_tui.db.ansur import derived_girth
 from sass_tui.db.dialect import dialect_of, mark_of, writing
+from sass_tui.db.progress import Progress
 from sass_tui.db.schema import (
     PERSON_TABLES,
     SQLITE_ONLY_TABLES,
@@ -228,17 +229,40 @@ def shipped_sample() -> Sample:
     )
 
 
-def store_shipped(conn: sqlite3.Connection) -> None:
-    """Make and store the shipped target and virtual population
-    `nhanes-2017-2020` (both genders, adults 20+): the real people weighted
-    to NHANES's examination weights within their range (`within_range`: the
+def make_shipped(conn: sqlite3.Connection) -> tuple[TargetWeights, VirtualPopulation]:
+    """The shipped target and virtual population `nhanes-2017-2020` (both
+    genders, adults 20+), nothing stored: the real people weighted to
+    NHANES's examination weights within their range (`within_range`: the
     heaviest NHANES women lie beyond every ANSUR II woman; `outside_share`
     says how much), and one virtual person per NHANES adult."""
     sample = shipped_sample()
     _target, weights, _weightings = make_target(
         conn, NHANES_NAME, BOTH, sample, NHANES_NAME, within_range=True
     )
-    population = make_virtual(conn, NHANES_NAME, sample, NHANES_NAME)
+    return weights, make_virtual(conn, NHANES_NAME, sample, NHANES_NAME)
+
+
+def store_shipped_in(conn: sqlite3.Connection, progress: Progress | None = None) -> int:
+    """Make and store the shipped target and virtual population in the
+    caller's transaction, on a SQLite connection holding the default people
+    (`sass db init`: the database itself, or PostgreSQL's staging file, whose
+    targets are copied with its people).  `progress(done, 2)` after each
+    half.  Returns how many virtual people."""
+    weights, population = make_shipped(conn)
+    if progress is not None:
+        progress(1, 2)
+    insert_target(conn, weights)
+    store_virtual_in(conn, population)
+    if progress is not None:
+        progress(2, 2)
+    return len(population.weights)
+
+
+def store_shipped(conn: sqlite3.Connection) -> None:
+    """Make and store the shipped target and virtual population in a
+    database that lacks them (one built before `sass db init` made them, or
+    by imports alone), each in its own transaction, on either engine."""
+    weights, population = make_shipped(conn)
     store_target(conn, weights, replace=True)
     store_virtual(conn, population)
 

@@ -3,11 +3,33 @@ ANSUR II soldier of the CSV files, and the demonstration people labelled."""
 
 from __future__ import annotations
 
+import csv
 import sqlite3
 
 import pytest
 
 from sass_tui.cli import main
+from tests._paths import SHARED
+
+NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
+
+
+def nhanes_adults() -> int:
+    """NHANES 2017-March 2020 adults (20+) with a height and a weight, counted
+    from the published CSV: one virtual person each."""
+    lines = [
+        line
+        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
+        if not line.startswith("#")
+    ]
+    return sum(
+        1
+        for r in csv.DictReader(lines)
+        if r["RIDAGEYR"] != "NA"
+        and float(r["RIDAGEYR"]) >= 20
+        and r["BMXHT"] != "NA"
+        and r["BMXWT"] != "NA"
+    )
 
 
 @pytest.mark.slow
@@ -22,6 +44,8 @@ def test_init_stores_every_soldier_of_the_csv_files(tmp_path, ansur_stature_cm, 
     finally:
         conn.close()
     assert sources.pop("ansur2") == soldiers
+    # The shipped virtual population: one predicted person per NHANES adult.
+    assert sources.pop("virtual:nhanes-2017-2020") == nhanes_adults()
     # Everyone else is a demonstration person, stored as such (never a real one).
     assert sources and all(source.startswith("synthetic") for source in sources)
 

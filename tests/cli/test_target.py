@@ -4,11 +4,15 @@ do not go together."""
 from __future__ import annotations
 
 from sass_tui.cli import main
+from sass_tui.db.targets import SHIPPED
 
 
-def test_a_new_database_lists_no_target(people_db, capsys):
+def test_a_new_database_lists_only_the_shipped_target_and_virtual_population(people_db, capsys):
+    """`sass db init` made them: listed as stored, not as made on first use."""
     assert main(["--db", str(people_db), "target", "--list"]) == 0
-    assert capsys.readouterr().out.startswith("no targets")
+    lines = capsys.readouterr().out.splitlines()
+    assert [line.split()[0] for line in lines] == list(SHIPPED)
+    assert "VIRTUAL population" in lines[1] and "first use" not in "".join(lines)
 
 
 def test_dropping_a_target_that_is_not_stored_says_so(people_db, capsys):

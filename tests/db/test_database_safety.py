@@ -30,6 +30,10 @@ pytestmark = pytest.mark.sqlite_only(
 )
 
 ROOT = Path(__file__).resolve().parents[2]
+# NHANES 2017-March 2020 adults with a height and a weight: the shipped
+# virtual population `sass db init` stores (tests/cli/test_db.py counts them
+# from the published CSV).
+NHANES_ADULTS = 8381
 PERSON = "99907,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
 
 
@@ -202,7 +206,7 @@ def test_db_init_needs_force_to_replace_people(db_path, tmp_path, capsys):
     assert _count(db_path, "name = 'JANE_DOE'") == 1
     assert main(["db", "init", "--force", "--db", str(db_path)]) == 0
     assert _count(db_path, "name = 'JANE_DOE'") == 0
-    assert _count(db_path) == 6068 + 200
+    assert _count(db_path) == 6068 + 200 + NHANES_ADULTS
 
 
 @pytest.mark.slow
@@ -217,7 +221,7 @@ def test_db_init_rebuilds_in_place_under_an_open_connection(db_path, tmp_path):
     assert run_query(reader, "stature > 0 cm").count() == 6068 + 1  # real people
     create_default_database(db_path, replace=True)
     assert db_path.stat().st_ino == inode
-    assert run_query(reader, "stature > 0 cm AND source != none").count() == 6268
+    assert run_query(reader, "stature > 0 cm AND source != none").count() == 6268 + NHANES_ADULTS
     reader.close()
     assert _integrity(db_path) == "ok"
     assert not Path(f"{db_path}-journal").exists()
@@ -227,7 +231,11 @@ def test_db_init_rebuilds_in_place_under_an_open_connection(db_path, tmp_path):
 def test_db_init_builds_an_empty_file_in_place(tmp_path):
     path = tmp_path / "empty.db"
     path.touch()
-    assert create_default_database(path) == {"synthetic": 200, "ansur2": 6068}
+    assert create_default_database(path) == {
+        "synthetic": 200,
+        "ansur2": 6068,
+        "virtual:nhanes-2017-2020": NHANES_ADULTS,
+    }
     assert create_default_database(path) == {}  # first use twice: built once
 
 
@@ -394,7 +402,12 @@ def test_building_reports_progress(tmp_path):
     create_default_database(tmp_path / "p.db", progress=lambda d, t: calls.append((d, t)))
     assert len(calls) >= 3
     assert [d for d, _ in calls] == sorted(d for d, _ in calls)
-    assert calls[-1][0] == calls[-1][1] == sum(f.stat().st_size for f in shipped_ansur_files())
+    # The survey's bytes fill the first half of the bar, the shipped target
+    # and virtual population the second.
+    survey = sum(f.stat().st_size for f in shipped_ansur_files())
+    assert (survey, 2 * survey) in calls
+    assert calls[-1] == (2 * survey, 2 * survey)
+    assert {t for _, t in calls} == {2 * survey}
 
 
 @pytest.mark.slow
@@ -407,7 +420,7 @@ def test_db_init_asks_on_a_terminal(db_path, tmp_path, monkeypatch, answer, stat
     monkeypatch.setattr(sys, "stdin", _Terminal(answer))
     monkeypatch.setattr(sys, "stderr", err)
     assert main(["db", "init", "--db", str(db_path)]) == status
-    assert "holds 6269 people" in err.getvalue() and "[y/N]" in err.getvalue()
+    assert f"holds {6269 + NHANES_ADULTS} people" in err.getvalue() and "[y/N]" in err.getvalue()
     assert _count(db_path, "name = 'JANE_DOE'") == kept
     if status == 0:
         assert "building [" in err.getvalue()  # the progress bar

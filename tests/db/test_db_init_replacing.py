@@ -11,12 +11,18 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
-from test_database_safety import _flat, _Terminal
+from test_database_safety import NHANES_ADULTS, _flat, _Terminal
 from test_targets import civilian_women, write_sample
 
 from sass_tui.cli import main
 from sass_tui.db.database import Database
-from sass_tui.db.targets import TargetWeights, list_targets, load_target, store_target
+from sass_tui.db.targets import (
+    SHIPPED,
+    TargetWeights,
+    list_targets,
+    load_target,
+    store_target,
+)
 
 
 def _weights_by_subject(db: str, name: str) -> dict[str, float]:
@@ -60,7 +66,11 @@ def test_db_init_lists_what_it_deletes_and_keeps_the_targets_it_can(
     # Without a terminal to ask on: refused, saying what --force would delete.
     assert main(["db", "init", "--db", db]) != 0
     refused = capsys.readouterr().err
-    assert "holds 6269 people" in refused and "--force" in refused
+    assert f"holds {6269 + NHANES_ADULTS} people" in refused and "--force" in refused
+    # The shipped virtual population and targets: made anew, not deleted.
+    assert f"{NHANES_ADULTS:,} people from virtual:nhanes-2017-2020: stored again" in refused
+    assert "target nhanes-2017-2020: made anew from the shipped data" in refused
+    assert "target virtual:nhanes-2017-2020: made anew from the shipped data" in refused
     assert "6,068 people from ansur2: stored again from the shipped data" in refused
     assert "1 person from hand-made test person: deleted (import them again afterwards)" in refused
     assert f"target civ: kept (its {len(civ):,} people are stored again)" in refused
@@ -85,7 +95,7 @@ def test_db_init_lists_what_it_deletes_and_keeps_the_targets_it_can(
     opened = Database.open(db)
     try:
         with opened.connection() as conn:
-            assert [t.name for t in list_targets(conn)] == ["civ"]
+            assert [t.name for t in list_targets(conn)] == ["civ", *SHIPPED]
             assert conn.execute("SELECT 1 FROM person WHERE name = 'JANE_DOE'").fetchone() is None
     finally:
         opened.close()

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from test_database_safety import NHANES_ADULTS
 
 from sass_tui.cli import main
 from sass_tui.db.individual import fetch_individual
@@ -65,7 +66,11 @@ def test_sample_query_finds_people_and_no_women(engine_db):
 def test_every_person_is_labelled_with_its_source(engine_db):
     sources = dict(engine_db.execute("SELECT source, count(*) FROM person GROUP BY source"))
     synthetic = sum(1 for _ in _flat("person.db"))
-    assert sources == {"synthetic": synthetic, "ansur2": 6068}
+    assert sources == {
+        "synthetic": synthetic,
+        "ansur2": 6068,
+        "virtual:nhanes-2017-2020": NHANES_ADULTS,  # VIRTUAL: out of every real answer
+    }
     names = {n for (n,) in engine_db.execute("SELECT name FROM person WHERE source = 'synthetic'")}
     assert names == {r[1] for r in _flat("person.db")}
 
@@ -133,9 +138,13 @@ def test_cli_db_init_uses_xdg_location(tmp_path, monkeypatch, capsys):
     assert main(["db", "init"]) == 0
     assert target.is_file()
     capsys.readouterr()
-    # A fresh install: 6,068 ANSUR II people plus the synthetic ones, no file given.
+    # A fresh install: 6,068 ANSUR II people, the synthetic ones and the
+    # shipped virtual people (a query naming `source` reaches every source),
+    # no file given.
     assert main(["query", "--format", "json", "stature > 0 cm AND source != none"]) == 0
-    assert json.loads(capsys.readouterr().out)["count"] == 6068 + 200
+    assert json.loads(capsys.readouterr().out)["count"] == 6068 + 200 + NHANES_ADULTS
+    assert main(["query", "--count", "--virtual", "nhanes-2017-2020", "stature > 0 cm"]) == 0
+    assert capsys.readouterr().out.splitlines()[0] == str(NHANES_ADULTS)
 
 
 def test_cli_query_missing_database_is_an_error(tmp_path, capsys):

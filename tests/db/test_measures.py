@@ -122,9 +122,12 @@ def test_source_labels(engine_db, survey):
     assert run_query(engine_db, "source = 'ANSUR2'").count() == 6068
     synthetic = run_query(engine_db, "source = synthetic").count()
     assert synthetic == 200
+    virtual = run_query(engine_db, 'source = "virtual:nhanes-2017-2020"').count()
+    assert virtual == 8381  # the shipped virtual population sass db init stores
     # without a source term a query reaches the real people only; any source term, everyone
     assert run_query(engine_db, "stature > 0 cm").count() == 6068
-    assert run_query(engine_db, "stature > 0 cm AND source != none").count() == 6068 + synthetic
+    everyone = run_query(engine_db, "stature > 0 cm AND source != none").count()
+    assert everyone == 6068 + synthetic + virtual
 
 
 @pytest.mark.parametrize(

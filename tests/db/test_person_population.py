@@ -109,7 +109,9 @@ def _medians_by_sql(conn, table: str, axis: str) -> tuple[float, int]:
         for (v,) in conn.execute(
             f"SELECT q.{axis} FROM person p JOIN {table} q ON q.id_num = p.id_num "
             "WHERE p.gender = 'female' AND p.age < 25 AND q.{axis} IS NOT NULL "
-            "AND p.source != 'synthetic'".replace("{axis}", axis)
+            "AND p.source != 'synthetic' AND substr(p.source, 1, 8) != 'virtual:'".replace(
+                "{axis}", axis
+            )
         )
     ]
     return (statistics.median(values) if values else float("nan")), len(values)
@@ -122,7 +124,7 @@ def test_population_file_50th_are_the_medians(engine_db, shared_target, tmp_path
     assert "young.dat" in said and "young-cmass.dat" in said
     women = engine_db.execute(
         "SELECT count(*) FROM person WHERE gender = 'female' AND age < 25 "
-        "AND source != 'synthetic'"  # a query reaches real people only
+        "AND source != 'synthetic' AND substr(source, 1, 8) != 'virtual:'"  # real people only
     ).fetchone()[0]
     for group, path, table_group in (
         (GIRTH, target, "girth"),
@@ -214,7 +216,7 @@ def test_population_of_a_list_of_ids_is_exactly_those_people(engine_db):
     both = population_of(engine_db, "age < 22", ids=ids)
     (n,) = engine_db.execute(
         f"SELECT count(*) FROM person WHERE age < 22 AND {listed} "
-        "AND source != 'synthetic'",  # a query reaches real people only
+        "AND source != 'synthetic' AND substr(source, 1, 8) != 'virtual:'",  # real people only
         (marks,),
     ).fetchone()
     assert both.counts == {"female": n}

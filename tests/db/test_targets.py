@@ -17,6 +17,7 @@ import pytest
 from sass_tui.cli import main
 from sass_tui.db.addresses import is_url
 from sass_tui.db.database import Database
+from sass_tui.db.targets import SHIPPED
 from sass_tui.model.names import GLOBAL, row_index
 from sass_tui.model.popfile import read_population_file
 
@@ -69,6 +70,8 @@ def run_json(capsys, *argv: str) -> dict:
 
 
 def stored_targets(db: str) -> list[tuple]:
+    """The targets stored beside the shipped ones `sass db init` makes (their
+    names in the target table, then in target_weight)."""
     opened = Database.open(db)
     try:
         with opened.connection() as conn:
@@ -76,6 +79,7 @@ def stored_targets(db: str) -> list[tuple]:
                 tuple(row)
                 for sql in ("SELECT name FROM target", "SELECT DISTINCT target FROM target_weight")
                 for row in conn.execute(sql).fetchall()
+                if row[0] not in SHIPPED
             ]
     finally:
         opened.close()

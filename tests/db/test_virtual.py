@@ -1,5 +1,6 @@
 """Virtual populations (db/virtual.py, model/virtual.py): the shipped
-`nhanes-2017-2020`, made on first use, holds NHANES's own weighted stature
+`nhanes-2017-2020`, made by `sass db init` (and on first use in a database
+that lacks it), holds NHANES's own weighted stature
 and mass, a measure NHANES took that the prediction never saw agrees with
 it, and its people never count among real people.  Expected numbers are
 computed here from the published CSV (../shared/data/nhanes) by cumulative
@@ -15,8 +16,10 @@ import pytest
 
 from sass_tui.cli import main
 from sass_tui.db.database import Database
-from sass_tui.db.targets import load_target
+from sass_tui.db.dialect import mark_of
+from sass_tui.db.targets import SHIPPED, list_targets, load_target
 from sass_tui.db.values import load_values
+from sass_tui.db.virtual import drop_virtual
 from tests._paths import SHARED
 
 NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
@@ -54,10 +57,99 @@ def by_cumulative_weight(values: np.ndarray, weights: np.ndarray, q: float) -> f
 
 @pytest.fixture(scope="module")
 def shipped(template_target, copy_database) -> str:
-    """A copy of the default database whose first use of the shipped name made it."""
-    db = copy_database(template_target)
-    assert main(["query", "--db", db, "--count", "--virtual", "nhanes-2017-2020", "mass > 0"]) == 0
-    return db
+    """A copy of the default database, which `sass db init` built with the
+    shipped target and virtual population in it."""
+    return copy_database(template_target)
+
+
+def shipped_state(db: str) -> dict[str, object]:
+    """What a database holds of the shipped target and virtual population:
+    each target's counts, the virtual people's key, gender, stature, mass and
+    a predicted measure, and every weight by the weighted person's source key."""
+    opened = Database.open(db)
+    try:
+        with opened.connection() as conn:
+            targets = {
+                t.name: (t.people, t.sample_rows, round(t.effective_n, 6))
+                for t in list_targets(conn)
+            }
+            people = conn.execute(
+                "SELECT p.source_key, p.gender, p.stature, p.mass, m.chestcircumference "
+                "FROM person p JOIN measure m ON m.id_num = p.id_num "
+                "WHERE p.source = 'virtual:nhanes-2017-2020' ORDER BY p.source_key"
+            ).fetchall()
+            weights = {
+                name: sorted(
+                    (str(key), round(float(w), 9))
+                    for key, w in conn.execute(
+                        "SELECT p.source_key, w.weight FROM target_weight w "
+                        f"JOIN person p ON p.id_num = w.id_num WHERE w.target = {mark_of(conn)}",
+                        (name,),
+                    )
+                )
+                for name in targets
+            }
+    finally:
+        opened.close()
+    return {
+        "targets": targets,
+        "people": [(k, g, round(s, 6), round(m, 6), round(c, 6)) for k, g, s, m, c in people],
+        "weights": weights,
+    }
+
+
+@pytest.mark.slow
+def test_db_init_stores_the_shipped_target_and_virtual_people(engine_target, capsys):
+    """Right after `sass db init` (the engine's template): both stored, listed
+    as stored rather than as made on first use, and reading them stores nothing."""
+    before = shipped_state(engine_target)
+    assert list(before["targets"]) == list(SHIPPED)
+    assert len(before["people"]) == before["targets"]["virtual:nhanes-2017-2020"][0] == 8381
+    capsys.readouterr()
+    assert main(["target", "--db", engine_target, "--list"]) == 0
+    listed = capsys.readouterr().out
+    assert [line.split()[0] for line in listed.splitlines()] == list(SHIPPED)
+    assert "first use" not in listed
+    argv = ["query", "--db", engine_target, "--count", "--virtual", "nhanes-2017-2020"]
+    assert main([*argv, "mass > 0"]) == 0
+    assert shipped_state(engine_target) == before
+
+
+@pytest.mark.slow
+def test_both_engines_test_databases_agree(default_db_file, cluster, postgres_template):
+    """The SQLite database the tests share (create_default_database) and the
+    PostgreSQL template (`sass db init`) hold the same shipped target and
+    virtual people: the same people, measures and weights, by source key."""
+    url = cluster.create_database("shipped_agree", postgres_template)
+    try:
+        sqlite, postgresql = shipped_state(str(default_db_file)), shipped_state(str(url))
+    finally:
+        cluster.drop_database("shipped_agree")
+    assert sqlite["targets"] == postgresql["targets"]
+    assert sqlite["people"] == postgresql["people"]
+    assert sqlite["weights"] == postgresql["weights"]
+
+
+@pytest.mark.slow
+def test_a_database_without_them_makes_them_on_first_use(engine_target, capsys):
+    """A database built before `sass db init` made them (here: both dropped)
+    makes them the first time a command names them, as db init would."""
+    made = shipped_state(engine_target)
+    capsys.readouterr()
+    assert main(["target", "--db", engine_target, "--drop", "nhanes-2017-2020"]) == 0
+    opened = Database.open(engine_target)
+    try:
+        with opened.connection() as conn:
+            assert drop_virtual(conn, "nhanes-2017-2020") == 8381
+    finally:
+        opened.close()
+    assert main(["target", "--db", engine_target, "--list"]) == 0
+    assert capsys.readouterr().out.count("made on first use") == 2
+    argv = ["query", "--db", engine_target, "--count", "--virtual", "nhanes-2017-2020"]
+    assert main([*argv, "mass > 0"]) == 0
+    again = shipped_state(engine_target)
+    assert again["targets"] == made["targets"]
+    assert again["people"] == made["people"]
 
 
 def virtual_values(db: str, fields: list[str], gender: str):
@@ -144,3 +236,15 @@ def test_predict_learns_from_the_virtual_people(shipped, capsys):
     real = json.loads(capsys.readouterr().out)
     assert "virtual:nhanes-2017-2020" in virtual["model"]["population"]
     assert virtual["model"]["n"] == len(nhanes("2", "BMXHT")[0]) and real["model"]["n"] == 1986
+    # The fit is unweighted, and says so: in the JSON, and in the table.
+    assert virtual["model"]["weighted"] is False
+    assert virtual["model"]["virtual"] == "nhanes-2017-2020" and real["model"]["virtual"] is None
+    table = ["predict", "--db", shipped, "--gender", "female", *known, "--nearest", "2"]
+    assert main([*table, "--virtual", "nhanes-2017-2020"]) == 0
+    said = capsys.readouterr().out
+    assert "learnt from the VIRTUAL people of nhanes-2017-2020, unweighted: each virtual " in said
+    assert "nearest VIRTUAL people of nhanes-2017-2020" in said
+    assert "nearest real people" not in said
+    assert main(table) == 0
+    said = capsys.readouterr().out
+    assert "unweighted" not in said and "nearest real people" in said
