@@ -7,7 +7,8 @@ import argparse
 import sys
 from typing import TYPE_CHECKING
 
-from sass_tui.cli.options import SubParsers, add_figure_options, figure_from_args, print_warnings
+from sass_tui.cli.figure_from_options import figure_from_args
+from sass_tui.cli.options import SubParsers, add_figure_options, print_warnings
 from sass_tui.model.hanim import not_in_humanoid_note
 from sass_tui.model.hanim_x3d import export_hanim
 from sass_tui.model.paths import user_path

@@ -19,15 +19,16 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 import numpy as np
 
+from sass_tui.cli.database_access import open_db
 from sass_tui.cli.options import (
     SubParsers,
     add_db_option,
     add_virtual_option,
-    open_db,
     weighting_name,
     whole_number,
 )
 from sass_tui.db.predict import open_predictor
+from sass_tui.db.shipped import load_weights
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import LARGEST_PEOPLE_TABLE, regular_file
@@ -127,9 +128,6 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     try:
         if args.virtual is not None:
-            # deferred: db.shipped — off sass --help, sass --version (sass_tui/startup.py)
-            from sass_tui.db.shipped import load_weights
-
             # Learn from the virtual population's people (the shipped one made on first use).
             virtual = load_weights(conn, weighting_name(args) or "").target.population
             args.population = (

@@ -10,14 +10,10 @@ from itertools import islice
 from operator import itemgetter
 from typing import TextIO
 
-from sass_tui.cli.options import (
-    SubParsers,
-    add_db_option,
-    add_virtual_option,
-    open_database,
-    weighting_name,
-)
+from sass_tui.cli.database_access import open_database
+from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
 from sass_tui.db.query import PERSON_FIELDS, QueryError, compile_query, demonstration_hint
+from sass_tui.db.query_fields import field_reference
 from sass_tui.model.text import (
     is_printable,
     is_printable_lines,
@@ -129,9 +125,6 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
 
 def _list_fields(form: str) -> None:
     """Every field with its unit and description (db/query_fields.py)."""
-    # deferred: db.query_fields — only --fields lists the fields
-    from sass_tui.db.query_fields import field_reference
-
     fields = field_reference()
     out = sys.stdout
     if form == "csv":
