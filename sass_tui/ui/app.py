@@ -18,7 +18,9 @@ from textual.app import App
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.paths import regular_file, user_path
+from sass_tui.model.served import served_read_only, served_workdir
 from sass_tui.model.session import Session
+from sass_tui.ui.palette import ScreenCommands
 from sass_tui.ui.settings import load_settings, save_setting
 from sass_tui.ui.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
 from sass_tui.ui.widgets import MessageLine
@@ -250,18 +252,12 @@ class SassApp(App):
 
 
 def _screen_commands_provider():
-    # deferred: ui.palette — off the first screen, the first screen's next frame (sass_tui/startup.py)
-    from sass_tui.ui.palette import ScreenCommands
-
     return ScreenCommands
 
 
 def make_app(db_path: str | Path | None = None, worksheet: str | None = None) -> SassApp:
     """The app `sass` runs: a served session's (`sass serve`) when its
     environment says so (model/served.py)."""
-    # deferred: model.served — off the first screen, the first screen's next frame (sass_tui/startup.py)
-    from sass_tui.model.served import served_read_only, served_workdir
-
     return SassApp(
         db_path=db_path,
         workdir=served_workdir(),

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 from textual import work
 from textual.message import Message
 
+from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.session import Session
 from sass_tui.ui.spreadsheet_base import WorkerSaid
@@ -101,9 +102,6 @@ class WorksheetCommands(FileCommands):
 
     @work(thread=True, group="write", exit_on_error=False)
     def write_worksheet(self, path: Path, text: str, state: frozenset[int]) -> None:
-        # deferred: model.atomic — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.atomic import write_text_atomic
-
         try:
             write_text_atomic(path, text)
         except (SassError, OSError) as exc:
