@@ -39,7 +39,7 @@ class SassApp(App):
     TITLE = "SASS"
     # ctrl+p: the active screen's commands (sass_tui/ui/palette.py) and
     # Textual's own (themes, keys, screenshot, quit).
-    COMMANDS = App.COMMANDS | {lambda: _screen_commands_provider()}
+    COMMANDS = App.COMMANDS | {ScreenCommands}
 
     def __init__(
         self,
@@ -249,10 +249,6 @@ class SassApp(App):
         from sass_tui.db.individual import person_figure as figure_of
 
         return figure_of(self.selected_individual(index), population)
-
-
-def _screen_commands_provider():
-    return ScreenCommands
 
 
 def make_app(db_path: str | Path | None = None, worksheet: str | None = None) -> SassApp:
