@@ -157,6 +157,9 @@ def run(args: argparse.Namespace) -> int:
     else:
         _write_table(prediction, out, args.population)
     if args.figure:
+        # deferred: cli.prediction_figure (the figure writers) — off sass predict (sass_tui/startup.py)
+        from sass_tui.cli.prediction_figure import write_prediction_figure
+
         path = write_prediction_figure(prediction, args.figure)
         print(f"wrote {path}", file=sys.stderr if args.format != "table" else out)
     return 0
@@ -211,24 +214,6 @@ def _write_table(prediction: Prediction, out: TextIO, population: str | None = N
         out.write("\nnearest real people (standardized distance over the known values):\n")
         for n in prediction.nearest:
             out.write(f"{n.id:>8}  {n.name:<24} {n.distance:7.3f}\n")
-
-
-def write_prediction_figure(prediction: Prediction, path: str) -> str:
-    """The predicted person as a .fig file, an HAnim .x3d humanoid or a glTF
-    body; cells the model has no value for come from the default population
-    (the file says which)."""
-    # deferred: model.figure, model.figfile, model.gltf, model.hanim_x3d — off sass predict (sass_tui/startup.py)
-    from sass_tui.model.figfile import write_fig
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.gltf import export_gltf
-    from sass_tui.model.hanim_x3d import export_hanim
-
-    figure = prediction.figure(Figure.default(prediction.gender))
-    if path.lower().endswith((".glb", ".gltf")):
-        return ", ".join(str(p) for p in export_gltf(figure, path))
-    if path.lower().endswith(".x3d"):
-        return str(export_hanim(figure, path))
-    return str(write_fig(figure, path))
 
 
 def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> int:

@@ -22,6 +22,7 @@ SHARED = {
     "database_access",
     "figure_from_options",
     "person_option",
+    "prediction_figure",
     "progress",
     "strength_arm",  # sass strength arm_force
 }
