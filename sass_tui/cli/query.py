@@ -76,7 +76,10 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
     weighting = weighting_name(args)
     if args.count:
         if weighting is not None:
-            _weighted_count(conn, query.compiled, weighting)
+            # deferred: cli.query_weighted (db.shipped, db.targets) — off sass query, sass query --count (sass_tui/startup.py)
+            from sass_tui.cli.query_weighted import print_weighted_count
+
+            print_weighted_count(conn, query.compiled, weighting)
             return
         found = query.count()
         print(found)
@@ -153,31 +156,6 @@ def _list_fields(form: str) -> None:
 def _cell(text: object) -> object:
     """A text cell of the CSV: printable, and never a formula; None stays empty."""
     return text if text is None else spreadsheet_text(printable(text))
-
-
-def _weighted_count(conn, query, name: str) -> None:  # query: db.query.CompiledQuery
-    """The raw count, and beside it the target's weighted count and share."""
-    # deferred: db.shipped, db.targets — off sass query, sass query --count (sass_tui/startup.py)
-    from sass_tui.db.shipped import load_weights
-    from sass_tui.db.targets import weighted_count
-
-    weights = load_weights(conn, name)
-    if weights.target.is_virtual:  # its virtual people, whom a query reaches only by name
-        query = compile_query(f"({query.text}) AND {weights.target.population}")
-    counted = weighted_count(conn, query, weights)
-    target = counted.target
-    if target.is_virtual:
-        print(
-            f"{counted.count}\nweighted: {counted.weighted:.1f} of {counted.total:.0f} "
-            f"({counted.percent:.1f} %) of the {target.words()}"
-        )
-        return
-    print(
-        f"{counted.count}\nweighted: {counted.weighted:.1f} of {counted.total:.0f} "
-        f"({counted.percent:.1f} %) of target {target.name} ({target.gender}, weighted by "
-        f"{', '.join(target.fields)} to {target.sample}; {counted.in_target} of the "
-        f"{counted.count} people are the target's)"
-    )
 
 
 def _say_who_else(conn, query, found: int) -> None:  # query: db.query.CompiledQuery

@@ -23,6 +23,7 @@ SHARED = {
     "figure_from_options",
     "person_option",
     "prediction_figure",
+    "query_weighted",
     "progress",
     "strength_arm",  # sass strength arm_force
 }
