@@ -109,24 +109,14 @@ class SassApp(App):
     def _make_strength_sheet(self, figure: Figure, path: str | Path | None) -> StrengthSheet | None:
         """The population's strength sheet from `path` (None =
         datasets/strength.dat), or None and why in strength_error."""
-        # deferred: model.strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.strength import StrengthError, StrengthSheet, read_strength_file
-
-        # deferred: model.worksheet — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.worksheet import apply_strength
+        # deferred: model.worksheet (model.strength, numpy) — off the first screen (sass_tui/startup.py)
+        from sass_tui.model.worksheet import population_strength_sheet
 
         try:
-            sheet = StrengthSheet(read_strength_file(path), figure)
+            return population_strength_sheet(path, figure, self._opened_strength)
         except (SassError, OSError) as exc:
             self._strength_error = f"Strength data is not loaded ({exc}); SASS runs without it."
             return None
-        if self._opened_strength is not None:
-            apply_strength(self._opened_strength, sheet)
-        try:
-            sheet.rows()  # fits the equations now rather than on the first 's'
-        except StrengthError:
-            pass  # no data for this gender: the page says so when shown
-        return sheet
 
     def _read_worksheet(self, name: str | Path) -> tuple[Figure, str | None]:
         """The figure of the worksheet `sass --open` names, and its strength
