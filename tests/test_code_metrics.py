@@ -1,12 +1,16 @@
 """The code stays in pieces a reader can hold: no module in sass_tui/ui/ over
-500 lines, no class anywhere in sass_tui with over 30 methods of its own
-(scripts/code_metrics.py, docs/architecture.md "Screens in pieces")."""
+500 lines, no class anywhere in sass_tui with over 30 methods of its own, no
+more function-level imports than the ceiling (scripts/code_metrics.py,
+docs/architecture.md "Screens in pieces")."""
 
 from __future__ import annotations
 
+import ast
 import inspect
 import runpy
 from pathlib import Path
+
+import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 METRICS = runpy.run_path(str(ROOT / "scripts" / "code_metrics.py"))
@@ -42,3 +46,32 @@ def test_the_count_is_the_class_body_as_python_sees_it():
         ]
         where = f"sass_tui/ui/{Path(inspect.getfile(cls)).name}"
         assert counted[(where, cls.__name__)] == len(own)
+
+
+@pytest.mark.slow
+def test_function_level_imports_stay_under_the_ceiling():
+    found = METRICS["function_level_imports"]()
+    assert sum(found.values()) <= METRICS["MAX_FUNCTION_LEVEL_IMPORTS"], found.most_common(8)
+
+
+@pytest.mark.slow
+def test_the_import_count_is_every_import_inside_a_function():
+    # Counted again here by a plain walk of each function's own statements,
+    # a nested function's imports under the innermost function only.
+    def own_imports(node: ast.AST) -> int:
+        count = 0
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, ast.Import | ast.ImportFrom):
+                count += 1
+            elif not isinstance(child, ast.FunctionDef | ast.AsyncFunctionDef):
+                count += own_imports(child)
+        return count
+
+    total = 0
+    for path in (ROOT / "sass_tui").rglob("*.py"):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+                total += own_imports(node)
+    assert total > 0
+    assert sum(METRICS["function_level_imports"]().values()) == total

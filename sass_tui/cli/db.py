@@ -6,7 +6,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_database, warn_of_a_password
+from sass_tui.cli.database_access import open_database
+from sass_tui.cli.options import SubParsers, add_db_option, warn_of_a_password
 from sass_tui.cli.progress import progress_for
 from sass_tui.db import accelerator
 from sass_tui.db.addresses import is_url

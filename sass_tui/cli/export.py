@@ -7,9 +7,9 @@ import argparse
 import sys
 from typing import TYPE_CHECKING
 
-from sass_tui.cli.options import SubParsers, add_figure_options, figure_from_args, print_warnings
+from sass_tui.cli.figure_from_options import figure_from_args
+from sass_tui.cli.options import SubParsers, add_figure_options, print_warnings
 from sass_tui.model.hanim import not_in_humanoid_note
-from sass_tui.model.hanim_x3d import export_hanim
 from sass_tui.model.paths import user_path
 
 if TYPE_CHECKING:
@@ -47,6 +47,9 @@ def register(commands: SubParsers) -> None:
 
 
 def run_hanim(args: argparse.Namespace) -> int:
+    # deferred: model.hanim_x3d (xml.etree) — off sass export gltf (sass_tui/startup.py)
+    from sass_tui.model.hanim_x3d import export_hanim
+
     figure, warnings = figure_from_args(args)
     print_warnings(warnings)
     path = export_hanim(figure, user_path(args.output))

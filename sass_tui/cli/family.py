@@ -5,13 +5,8 @@ from __future__ import annotations
 import argparse
 import sys
 
-from sass_tui.cli.options import (
-    SubParsers,
-    add_db_option,
-    add_virtual_option,
-    open_db,
-    weighting_name,
-)
+from sass_tui.cli.database_access import open_db
+from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
 from sass_tui.db.fit import load_family
 from sass_tui.db.query import parse_option
 from sass_tui.model.accommodation import measure_field, write_family

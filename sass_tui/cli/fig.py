@@ -5,13 +5,8 @@ from __future__ import annotations
 import argparse
 import sys
 
-from sass_tui.cli.options import (
-    SubParsers,
-    add_figure_options,
-    figure_from_args,
-    person_file_name,
-    print_warnings,
-)
+from sass_tui.cli.figure_from_options import figure_from_args
+from sass_tui.cli.options import SubParsers, add_figure_options, person_file_name, print_warnings
 from sass_tui.model.figfile import default_fig_name, write_fig
 from sass_tui.model.names import GIRTH
 from sass_tui.model.published_strength import EXAMPLE_DATA_SET, EXAMPLE_SOURCE

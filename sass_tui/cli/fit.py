@@ -7,13 +7,8 @@ import json
 import sys
 from typing import TYPE_CHECKING
 
-from sass_tui.cli.options import (
-    SubParsers,
-    add_db_option,
-    add_virtual_option,
-    open_db,
-    weighting_name,
-)
+from sass_tui.cli.database_access import open_db
+from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
 from sass_tui.db.fit import check_mix, fit_test
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.query import compile_conjuncts, parse, parse_option

@@ -9,7 +9,8 @@ import argparse
 import json
 import sys
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_database
+from sass_tui.cli.database_access import open_database
+from sass_tui.cli.options import SubParsers, add_db_option
 from sass_tui.db.person_text import person_lines
 
 

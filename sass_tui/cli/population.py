@@ -17,13 +17,8 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.options import (
-    SubParsers,
-    add_db_option,
-    add_virtual_option,
-    open_db,
-    weighting_name,
-)
+from sass_tui.cli.database_access import open_db
+from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
 from sass_tui.db.population import (
     IdListError,
     missing_ids,

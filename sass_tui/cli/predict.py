@@ -19,15 +19,16 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 import numpy as np
 
+from sass_tui.cli.database_access import open_db
 from sass_tui.cli.options import (
     SubParsers,
     add_db_option,
     add_virtual_option,
-    open_db,
     weighting_name,
     whole_number,
 )
 from sass_tui.db.predict import open_predictor
+from sass_tui.db.shipped import load_weights
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import LARGEST_PEOPLE_TABLE, regular_file
@@ -139,9 +140,6 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     try:
         if args.virtual is not None:
-            # deferred: db.shipped — off sass --help, sass --version (sass_tui/startup.py)
-            from sass_tui.db.shipped import load_weights
-
             # Learn from the virtual population's people (the shipped one made on first use).
             virtual = load_weights(conn, weighting_name(args) or "").target.population
             args.population = (
@@ -174,6 +172,9 @@ def run(args: argparse.Namespace) -> int:
     else:
         _write_table(prediction, out, args.population, args.virtual)
     if args.figure:
+        # deferred: cli.prediction_figure (the figure writers) — off sass predict (sass_tui/startup.py)
+        from sass_tui.cli.prediction_figure import write_prediction_figure
+
         path = write_prediction_figure(prediction, args.figure)
         print(f"wrote {path}", file=sys.stderr if args.format != "table" else out)
     return 0
@@ -243,24 +244,6 @@ def _write_table(
         out.write(f"\nnearest {who} (standardized distance over the known values):\n")
         for n in prediction.nearest:
             out.write(f"{n.id:>8}  {n.name:<24} {n.distance:7.3f}\n")
-
-
-def write_prediction_figure(prediction: Prediction, path: str) -> str:
-    """The predicted person as a .fig file, an HAnim .x3d humanoid or a glTF
-    body; cells the model has no value for come from the default population
-    (the file says which)."""
-    # deferred: model.figure, model.figfile, model.gltf, model.hanim_x3d — off sass predict (sass_tui/startup.py)
-    from sass_tui.model.figfile import write_fig
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.gltf import export_gltf
-    from sass_tui.model.hanim_x3d import export_hanim
-
-    figure = prediction.figure(Figure.default(prediction.gender))
-    if path.lower().endswith((".glb", ".gltf")):
-        return ", ".join(str(p) for p in export_gltf(figure, path))
-    if path.lower().endswith(".x3d"):
-        return str(export_hanim(figure, path))
-    return str(write_fig(figure, path))
 
 
 def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> int:

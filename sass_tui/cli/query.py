@@ -10,14 +10,10 @@ from itertools import islice
 from operator import itemgetter
 from typing import TextIO
 
-from sass_tui.cli.options import (
-    SubParsers,
-    add_db_option,
-    add_virtual_option,
-    open_database,
-    weighting_name,
-)
+from sass_tui.cli.database_access import open_database
+from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
 from sass_tui.db.query import PERSON_FIELDS, QueryError, compile_query, demonstration_hint
+from sass_tui.db.query_fields import field_reference
 from sass_tui.model.text import (
     is_printable,
     is_printable_lines,
@@ -80,7 +76,10 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
     weighting = weighting_name(args)
     if args.count:
         if weighting is not None:
-            _weighted_count(conn, query.compiled, weighting)
+            # deferred: cli.query_weighted (db.shipped, db.targets) — off sass query, sass query --count (sass_tui/startup.py)
+            from sass_tui.cli.query_weighted import print_weighted_count
+
+            print_weighted_count(conn, query.compiled, weighting)
             return
         found = query.count()
         print(found)
@@ -129,9 +128,6 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
 
 def _list_fields(form: str) -> None:
     """Every field with its unit and description (db/query_fields.py)."""
-    # deferred: db.query_fields — only --fields lists the fields
-    from sass_tui.db.query_fields import field_reference
-
     fields = field_reference()
     out = sys.stdout
     if form == "csv":
@@ -160,31 +156,6 @@ def _list_fields(form: str) -> None:
 def _cell(text: object) -> object:
     """A text cell of the CSV: printable, and never a formula; None stays empty."""
     return text if text is None else spreadsheet_text(printable(text))
-
-
-def _weighted_count(conn, query, name: str) -> None:  # query: db.query.CompiledQuery
-    """The raw count, and beside it the target's weighted count and share."""
-    # deferred: db.shipped, db.targets — off sass query, sass query --count (sass_tui/startup.py)
-    from sass_tui.db.shipped import load_weights
-    from sass_tui.db.targets import weighted_count
-
-    weights = load_weights(conn, name)
-    if weights.target.is_virtual:  # its virtual people, whom a query reaches only by name
-        query = compile_query(f"({query.text}) AND {weights.target.population}")
-    counted = weighted_count(conn, query, weights)
-    target = counted.target
-    if target.is_virtual:
-        print(
-            f"{counted.count}\nweighted: {counted.weighted:.1f} of {counted.total:.0f} "
-            f"({counted.percent:.1f} %) of the {target.words()}"
-        )
-        return
-    print(
-        f"{counted.count}\nweighted: {counted.weighted:.1f} of {counted.total:.0f} "
-        f"({counted.percent:.1f} %) of target {target.name} ({target.gender}, weighted by "
-        f"{', '.join(target.fields)} to {target.sample}; {counted.in_target} of the "
-        f"{counted.count} people are the target's)"
-    )
 
 
 def _say_who_else(conn, query, found: int) -> None:  # query: db.query.CompiledQuery

@@ -18,7 +18,7 @@ from ipaddress import ip_address
 from pathlib import Path
 from urllib.parse import urlsplit
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db, positive_number
+from sass_tui.cli.options import SubParsers, add_db_option, positive_number
 from sass_tui.model.errors import SassError
 from sass_tui.model.paths import LARGEST_TOKEN_FILE, data_dir, regular_file, user_path
 
@@ -110,6 +110,9 @@ def run(args: argparse.Namespace) -> int:
         check_public_url(args.public_url)
     token = read_token(args.token_file) if args.token_file else new_token()
     workdir = served_workdir(args.workdir)
+    # deferred: cli.database_access (the db package) — off sass serve (sass_tui/startup.py)
+    from sass_tui.cli.database_access import database_path
+
     db = database_path(args, args.read_only)
     # After the checks: ui/serve.py imports textual-serve and aiohttp.
     # deferred: ui.serve — off sass serve (sass_tui/startup.py)
@@ -228,32 +231,3 @@ def served_workdir(name: str | None) -> Path:
     except FileExistsError:
         raise ServeError(f"--workdir {path}: not a directory") from None
     return path.resolve()
-
-
-def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | None:
-    """The database the sessions open: a SQLite file, or a PostgreSQL address
-    (`--db` or $SASS_DB).  A read-only database is opened (and the default
-    file built on first use) here, since a session cannot build it and a
-    server that cannot be reached is better said once than in every session.
-    Each session's connections to a PostgreSQL database are then read-only
-    by the server's rule ($SASS_READ_ONLY, db/postgres.py)."""
-    # deferred: db.addresses, db.database, db.schema, model.paths — off sass serve (sass_tui/startup.py)
-    from sass_tui.db.addresses import is_url
-    from sass_tui.db.database import configured_target
-
-    db = getattr(args, "db", None)
-    target = configured_target(db)
-    if is_url(target):
-        if read_only:
-            # deferred: db.postgres — psycopg only on the PostgreSQL path (sass_tui/startup.py)
-            from sass_tui.db.postgres import connect_postgres
-
-            connect_postgres(str(target), read_only=True).close()
-        return str(target)
-    if not read_only:
-        return user_path(db).resolve() if db else None
-    # deferred: db.schema — off sass serve (sass_tui/startup.py)
-    from sass_tui.db.schema import default_db_path
-
-    open_db(args).close()
-    return user_path(db).resolve() if db else default_db_path().resolve()

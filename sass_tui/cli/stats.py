@@ -25,13 +25,12 @@ import math
 import sys
 from typing import TYPE_CHECKING, Any, TextIO
 
-from sass_tui.cli.options import (
-    SubParsers,
-    add_db_option,
-    add_virtual_option,
-    open_db,
-    weighting_name,
-)
+from sass_tui.cli.database_access import open_db
+from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
+from sass_tui.db.query import QueryError, compile_query
+from sass_tui.db.shipped import load_weights
+from sass_tui.db.stats import EVERY_MEASURE, check_unit, format_stats, stats_table
+from sass_tui.model.accommodation import measure_field
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
@@ -105,12 +104,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: db.query, db.shipped, db.stats, model.accommodation — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.db.query import QueryError, compile_query
-    from sass_tui.db.shipped import load_weights
-    from sass_tui.db.stats import EVERY_MEASURE, check_unit, format_stats, stats_table
-    from sass_tui.model.accommodation import measure_field
-
     # Everything that needs no database first: a bad input touches nothing.
     fields = [measure_field(name) for name in args.measures] or list(EVERY_MEASURE)
     fields = list(dict.fromkeys(fields))

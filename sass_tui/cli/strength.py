@@ -19,7 +19,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from sass_tui.cli.options import SubParsers, add_db_option, open_db
+from sass_tui.cli.options import SubParsers, add_db_option
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS
 from sass_tui.model.published_grip import (
@@ -285,9 +285,6 @@ def run(args: argparse.Namespace) -> int:
 
 def _take_person(args: argparse.Namespace) -> None:
     """A database person's own gender, age, mass and stature into `args`."""
-    # deferred: db.individual — off sass strength (sass_tui/startup.py)
-    from sass_tui.db.individual import find_person, person_record
-
     given = [
         option
         for option, value in (
@@ -303,11 +300,10 @@ def _take_person(args: argparse.Namespace) -> None:
             f"--person takes the person's own gender, age, mass and stature; "
             f"{', '.join(given)} cannot be given with it"
         )
-    conn = open_db(args)
-    try:
-        record = person_record(conn, find_person(conn, args.person))
-    finally:
-        conn.close()
+    # deferred: cli.person_option (the db package, numpy) — off sass strength (sass_tui/startup.py)
+    from sass_tui.cli.person_option import named_person_record
+
+    record = named_person_record(args)
     missing = [k for k in ("gender", "age", "mass", "stature") if record[k] is None]
     if missing:
         raise PublishedStrengthError(

@@ -19,7 +19,6 @@ import json
 import numpy as np
 import numpy.typing as npt
 
-from sass_tui.cli.options import person_figure
 from sass_tui.model.arm_force_field import (
     ArmForce,
     ArmForceError,
@@ -84,6 +83,9 @@ def _figure(args: argparse.Namespace) -> Figure:
     figure = Figure.default(args.gender or "male")
     figure.set_group_percentile(JOINT_LIMITS, args.joint_limit_percentile)
     if args.person is not None:
+        # deferred: cli.person_option (the db package, numpy) — off sass strength (sass_tui/startup.py)
+        from sass_tui.cli.person_option import person_figure
+
         return person_figure(args, figure)
     if args.mass is not None:
         figure.set_mass(parse_quantity(args.mass, "kg"))

@@ -15,7 +15,8 @@ import gzip
 import sys
 from typing import TYPE_CHECKING, TextIO
 
-from sass_tui.cli.options import VIRTUAL_PREFIX, SubParsers, add_db_option, open_db
+from sass_tui.cli.database_access import open_db
+from sass_tui.cli.options import VIRTUAL_PREFIX, SubParsers, add_db_option
 from sass_tui.db.query import parse_option
 from sass_tui.db.targets import (
     BOTH,

@@ -18,7 +18,20 @@ import argparse
 import json
 
 from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
+from sass_tui.model.arm_force_field import parse_direction
+from sass_tui.model.figure import Figure
+from sass_tui.model.posture import parse_angles
 from sass_tui.model.published_strength import GENDER_WORDS
+from sass_tui.model.task import (
+    Reference,
+    TaskError,
+    assess_populations,
+    assess_task,
+    hand_load,
+    task_json,
+    task_text,
+)
+from sass_tui.model.units import parse_quantity
 from sass_tui.model.vocabulary import GENDERS
 
 LOAD_HELP = "the load on the {side} hand, e.g. 60N or '15 lbf' (N without a unit)"
@@ -75,12 +88,6 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    # deferred: model.task, model.posture, model.units — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.arm_force_field import parse_direction
-    from sass_tui.model.posture import parse_angles
-    from sass_tui.model.task import TaskError, assess_task, hand_load, task_json, task_text
-    from sass_tui.model.units import parse_quantity
-
     angles = parse_angles(args.angles)
     loads = [
         hand_load(side, parse_quantity(text, "N"), parse_direction(direction))
@@ -104,11 +111,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _figure(args: argparse.Namespace, gender: str):  # -> Figure
-    # deferred: model.figure, model.units — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.units import parse_quantity
-
+def _figure(args: argparse.Namespace, gender: str) -> Figure:
     figure = Figure.default(gender)
     if args.mass is not None:
         figure.set_mass(parse_quantity(args.mass, "kg"))
@@ -118,9 +121,6 @@ def _figure(args: argparse.Namespace, gender: str):  # -> Figure
 
 
 def _refuse_own_body(args: argparse.Namespace, who: str) -> None:
-    # deferred: model.task — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.task import TaskError
-
     given = [
         option
         for option, value in (
@@ -134,23 +134,15 @@ def _refuse_own_body(args: argparse.Namespace, who: str) -> None:
         raise TaskError(f"{who} takes each person's own body; leave out {', '.join(given)}")
 
 
-def _references(args: argparse.Namespace) -> list:  # -> list[model.task.Reference]
-    # deferred: model.task — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.model.task import Reference
-
+def _references(args: argparse.Namespace) -> list[Reference]:
     if args.person is None:
         genders = [args.gender] if args.gender else ["female", "male"]
         return [Reference(GENDER_WORDS[g], _figure(args, g), args.age) for g in genders]
     _refuse_own_body(args, "--person")
-    # deferred: db.individual — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.cli.options import open_db, person_figure
-    from sass_tui.db.individual import find_person, person_record
+    # deferred: cli.person_option (the db package, numpy) — off sass task (sass_tui/startup.py)
+    from sass_tui.cli.person_option import named_person_record, person_figure
 
-    conn = open_db(args)
-    try:
-        record = person_record(conn, find_person(conn, args.person))
-    finally:
-        conn.close()
+    record = named_person_record(args)
     figure = person_figure(args, _figure(args, str(record["gender"])))
     age = record["age"]
     return [Reference(str(figure.person), figure, None if age is None else float(age))]  # type: ignore[arg-type]
@@ -163,10 +155,9 @@ def _weighted_answer(args: argparse.Namespace, angles, loads):  # -> model.task.
     name = weighting_name(args)
     assert name is not None  # --target or --virtual was given
     _refuse_own_body(args, "--virtual" if args.virtual is not None else "--target")
-    # deferred: db.task_people, model.task — off sass --help, sass --version (sass_tui/startup.py)
-    from sass_tui.cli.options import open_db
+    # deferred: cli.database_access, db.task_people — off sass task (sass_tui/startup.py)
+    from sass_tui.cli.database_access import open_db
     from sass_tui.db.task_people import group_words, weighted_people
-    from sass_tui.model.task import assess_populations
 
     conn = open_db(args)
     try:

@@ -37,6 +37,7 @@ SQLite is fast, and neither numpy nor duckdb need be imported).
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 import sqlite3
@@ -212,9 +213,6 @@ def _read_column(conn: sqlite3.Connection, table: str, column: str, ids: Any) ->
 
 
 def _cache_folder(path: Path) -> Path:
-    # deferred: hashlib — off sass query --count (sass_tui/startup.py)
-    import hashlib
-
     base = CACHE_DIR
     if base is None:
         xdg = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")

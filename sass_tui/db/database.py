@@ -187,25 +187,13 @@ class Database:
     ) -> tuple[Family, Values]:
         """A manikin family (db/fit.py) and the people's values of its first two
         measures (the scatter it is drawn over)."""
-        # deferred: db.fit, db.values — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-        from sass_tui.db.fit import load_family
-        from sass_tui.db.values import load_values
+        # deferred: db.fit (db.values, numpy) — off sass query, sass query --count, sass person … (sass_tui/startup.py)
+        from sass_tui.db.fit import family_and_scatter
 
         with self.connection() as conn:
-            family = load_family(
-                conn,
-                gender,
-                measures,
-                coverage,
-                method,
-                population,
-                progress=progress,
-                cancel=cancel,
+            return family_and_scatter(
+                conn, gender, measures, coverage, method, population, progress, cancel
             )
-            people = load_values(
-                conn, list(family.measures[:2]), f"({population}) AND gender = {gender}"
-            )
-        return family, people
 
     # --- writing -------------------------------------------------------------
 

@@ -48,7 +48,7 @@ from sass_tui.db.query import (
     parsed,
     real_people_only,
 )
-from sass_tui.db.values import load_values
+from sass_tui.db.values import Values, load_values
 from sass_tui.model.accommodation import Family, build_family, measure_field
 from sass_tui.model.errors import SassError
 from sass_tui.model.percent_capable import strength_limit_probability
@@ -554,3 +554,22 @@ def limit_histograms(
             )
         )
     return tuple(out)
+
+
+def family_and_scatter(
+    conn: sqlite3.Connection,
+    gender: str,
+    measures: Sequence[str],
+    target: float,
+    kind: str,
+    population: str,
+    progress: Progress | None = None,
+    cancel: Cancel | None = None,
+) -> tuple[Family, Values]:
+    """The manikin family (load_family) and the people's values of its first
+    two measures: the scatter the family screen draws it over."""
+    family = load_family(
+        conn, gender, measures, target, kind, population, progress=progress, cancel=cancel
+    )
+    people = load_values(conn, list(family.measures[:2]), f"({population}) AND gender = {gender}")
+    return family, people

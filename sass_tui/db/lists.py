@@ -36,13 +36,14 @@ from sass_tui.db.database import Database, engine_errors
 from sass_tui.db.dialect import dialect_of, mark_of
 from sass_tui.db.fit import fit_test, limit_histograms
 from sass_tui.db.flatfile import FlatFiles
-from sass_tui.db.individual import fetch_individual
+from sass_tui.db.individual import fetch_individual, person_record
 from sass_tui.db.population import population_of
 from sass_tui.db.postgres import connect_postgres
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import LIST_FIELDS, CompiledQuery, compile_query, demonstration_hint
 from sass_tui.db.schema import DatabaseError, connect, transaction
 from sass_tui.db.shipped import load_weights
+from sass_tui.db.stats import EVERY_MEASURE, stats_table
 from sass_tui.db.targets import SHIPPED, list_targets, weighted_count
 from sass_tui.model.errors import SassError
 
@@ -360,9 +361,6 @@ class QueryLists:
     def person_record(self, id_num: int) -> dict[str, object]:
         """Everything stored about the person `id_num` (db/individual.py's
         person_record: what `sass person` prints)."""
-        # deferred: db.individual — only person_record() needs it; importing db.lists does not load it
-        from sass_tui.db.individual import person_record
-
         return person_record(self._conn, id_num)
 
     @_serialised
@@ -518,9 +516,6 @@ class QueryLists:
     ) -> StatsTable:
         """The percentile table of every measure over the query's people
         (db/stats.py), weighted to a target or a virtual population by name."""
-        # deferred: db.stats — only stats() needs it; importing db.lists does not load it
-        from sass_tui.db.stats import EVERY_MEASURE, stats_table
-
         with interruptible(self._conn, cancel, "the table"):
             return stats_table(self._conn, list(EVERY_MEASURE), query, weights=self._target(target))
 

@@ -53,7 +53,6 @@ from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.figfile import write_fig
 from sass_tui.model.figure import Figure
-from sass_tui.model.hanim_x3d import export_hanim
 from sass_tui.model.measures import MEASURES, suggest
 from sass_tui.model.prediction import ALIASES, Prediction, Predictor
 
@@ -451,6 +450,9 @@ def build_family(
 def write_family(family: Family, directory: str | Path, population: Figure) -> Family:
     """Write a .fig and an .x3d per manikin and family.json into `directory`
     (each file atomically); returns the family with each manikin's files."""
+    # deferred: model.hanim_x3d (xml.etree) — off sass fit (sass_tui/startup.py)
+    from sass_tui.model.hanim_x3d import export_hanim
+
     out = Path(directory)
     out.mkdir(parents=True, exist_ok=True)
     manikins = []

@@ -77,6 +77,11 @@ _ASSUMED = {
 }
 
 
+# The skin's colour (sRGB), by gender: the X3D document's Material and the
+# glTF body's base colour (model/hanim_x3d.py, model/gltf.py).
+SKIN = {"male": "0.80 0.62 0.50", "female": "0.86 0.66 0.58"}
+
+
 @dataclass(frozen=True)
 class Section:
     """A closed superellipse: centre, width axis `u` (half-width a), depth

@@ -28,10 +28,9 @@ from urllib.parse import quote
 import numpy as np
 
 from sass_tui.model.atomic import write_bytes_atomic, write_files_atomic
-from sass_tui.model.body_surface import body_mesh, figure_surface
+from sass_tui.model.body_surface import SKIN, body_mesh, figure_surface
 from sass_tui.model.errors import SassError
 from sass_tui.model.hanim import LOA1, build_humanoid
-from sass_tui.model.hanim_x3d import SKIN
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS
 
 if TYPE_CHECKING:

@@ -6,6 +6,7 @@ call export_hanim().
 from __future__ import annotations
 
 import math
+import xml.etree.ElementTree as ET
 from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -13,13 +14,11 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from sass_tui.model.atomic import write_text_atomic
-from sass_tui.model.body_surface import BodyMesh, body_mesh, figure_surface
+from sass_tui.model.body_surface import SKIN, BodyMesh, body_mesh, figure_surface
 from sass_tui.model.hanim import LOA1, HAnimError, Humanoid, Site, build_humanoid
 from sass_tui.model.names import GIRTH
 
 if TYPE_CHECKING:
-    import xml.etree.ElementTree as ET
-
     from sass_tui.model.figure import Figure
 
 HANIM_VERSION = "2.0"
@@ -41,9 +40,6 @@ def _mfstring(values: list[str]) -> str:
     return " ".join('"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"' for v in values)
 
 
-SKIN = {"male": "0.80 0.62 0.50", "female": "0.86 0.66 0.58"}
-
-
 def humanoid_element(humanoid: Humanoid, gender: str, mesh: BodyMesh | None = None) -> ET.Element:
     """The HAnimHumanoid node.  DEF names follow the HAnim convention the x3d
     package checks: the humanoid's name, '_', the node's name ('male_50_l_hip');
@@ -52,9 +48,6 @@ def humanoid_element(humanoid: Humanoid, gender: str, mesh: BodyMesh | None = No
     (ISO/IEC 19774-1 clause 6.3: skinCoord, skinNormal, skin, and each joint's
     skinCoordIndex and skinCoordWeight); without it, each segment holds the
     boxes and ellipsoids of its solids."""
-    # deferred: xml.etree.ElementTree — the X3D document only: not the TUI's drawing
-    import xml.etree.ElementTree as ET
-
     prefix = f"{humanoid.name}_"
     # skeletalConfiguration is "BASIC" (clause 4.8.2) through the field's X3D 4.0
     # default: X3D's canonical XML form leaves defaults out, and Debian's
@@ -166,9 +159,6 @@ def _skin_of_joints(mesh: BodyMesh) -> dict[int, tuple[str, str]]:
 def _add_skin(root: ET.Element, mesh: BodyMesh, prefix: str, colour: str) -> None:
     """The skin's coordinates and normals (bound to the joints through their
     skinCoordIndex), and the one Shape drawing them."""
-    # deferred: xml.etree.ElementTree — the X3D document only: not the TUI's drawing
-    import xml.etree.ElementTree as ET
-
     coord, normal = f"{prefix}skin_coord", f"{prefix}skin_normal"
     ET.SubElement(
         root,
@@ -194,9 +184,6 @@ def _add_skin(root: ET.Element, mesh: BodyMesh, prefix: str, colour: str) -> Non
 
 def scene_document(humanoids: list[tuple[ET.Element, float]], title: str, height: float) -> str:
     """An X3D 4.0 document holding humanoids side by side (x offsets in metres)."""
-    # deferred: xml.etree.ElementTree — off the first screen's next frame, sass export gltf, sass fit (sass_tui/startup.py)
-    import xml.etree.ElementTree as ET
-
     x3d = ET.Element(
         "X3D",
         {

@@ -7,6 +7,7 @@ give lengths in mm, `weightkg` in 0.1 kg and `interpupillarybreadth` in
 
 from __future__ import annotations
 
+import difflib
 from collections.abc import Sequence
 from typing import Final
 
@@ -218,7 +219,4 @@ PUBLISHED_TO_CANONICAL: Final[dict[str, float]] = {
 def suggest(name: str, limit: int = 3, names: Sequence[str] = MEASURES) -> list[str]:
     """The `names` (default: the measurements') close to `name`, for a "did
     you mean" after a typo."""
-    # deferred: difflib — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-    import difflib
-
     return difflib.get_close_matches(name.lower(), names, n=limit, cutoff=0.6)

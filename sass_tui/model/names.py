@@ -13,6 +13,8 @@ from functools import cache
 from types import MappingProxyType
 from typing import NamedTuple
 
+from sass_tui.model.vocabulary import MOTION_NAMES
+
 AXES = ("x", "y", "z")
 
 GIRTH = "girth"
@@ -133,6 +135,23 @@ ROWS: dict[str, tuple[Row, ...]] = {
     GLOBAL: GLOBAL_ROWS,
 }
 AXES_OF = {GIRTH: 3, JOINT_LIMITS: 3, CENTER_OF_MASS: 3, GLOBAL: 1}
+
+# Display order of the strength page (one page of 14 rows; model/strength_data.py).
+MOTIONS: tuple[Row, ...] = tuple(
+    Row(name, name.replace("_", " ").capitalize(), (name.replace("_", " "),))
+    for name in MOTION_NAMES
+)
+
+# The joint-angle columns of figure 8 (the strength page).
+JOINT_AXIS_LABELS = (
+    "Shoulder x",
+    "Shoulder y",
+    "Shoulder z",
+    "Elbow y",
+    "Wrist x",
+    "Wrist y",
+    "Wrist z",
+)
 
 
 def row_index(group: str, name: str) -> int:

@@ -170,23 +170,27 @@ def read_user_text(
 
 def data_dir() -> Path:
     """Where sass keeps its database and served sessions' directories."""
-    # deferred: platformdirs — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
-    from platformdirs import user_data_dir
-
-    return Path(user_data_dir("sass", appauthor=False))
+    return _platform_dir("data")
 
 
 def cache_dir() -> Path:
     """Where sass keeps what it can rebuild (the database's column copies)."""
-    # deferred: platformdirs — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
-    from platformdirs import user_cache_dir
-
-    return Path(user_cache_dir("sass", appauthor=False))
+    return _platform_dir("cache")
 
 
 def config_dir() -> Path:
     """Where sass keeps the user's settings."""
-    # deferred: platformdirs — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
-    from platformdirs import user_config_dir
+    return _platform_dir("config")
 
-    return Path(user_config_dir("sass", appauthor=False))
+
+def _platform_dir(kind: str) -> Path:
+    """sass's directory of a kind ("data", "cache" or "config") on this system."""
+    # deferred: platformdirs — off sass query, sass query --count, sass fig … (sass_tui/startup.py)
+    import platformdirs
+
+    where = {
+        "data": platformdirs.user_data_dir,
+        "cache": platformdirs.user_cache_dir,
+        "config": platformdirs.user_config_dir,
+    }[kind]
+    return Path(where("sass", appauthor=False))

@@ -186,10 +186,7 @@ class StrengthSheets:
         """A new population sheet from a strength file, and the one it replaces:
         the view settings (side, unit, percentile, factor) survive; the angles
         are the new file's."""
-        # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
-        from sass_tui.model.strength import StrengthSheet
-
-        sheet = StrengthSheet(data, self._figure())
+        sheet = _new_sheet(data, self._figure())
         old = self.shown
         if old is not None:
             sheet.side, sheet.unit = old.side, old.unit
@@ -205,10 +202,7 @@ class StrengthSheets:
             self.make()
             self._shown, self.missing = None, own_strength
         elif own_strength is not None:
-            # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
-            from sass_tui.model.strength import StrengthSheet
-
-            sheet = StrengthSheet(own_strength, person)
+            sheet = _new_sheet(own_strength, person)
             shown = self.population
             if shown is not None:
                 sheet.side, sheet.unit = shown.side, shown.unit
@@ -446,3 +440,11 @@ def _fresh(snapshot: dict[str, object]) -> dict[str, object]:
 
 def _cell_name(group: str, row: int, axis: int) -> str:
     return f"{ROWS[group][row].label} {AXES[axis]}"
+
+
+def _new_sheet(data: StrengthData, figure: Figure) -> StrengthSheet:
+    """A strength sheet of `data` for `figure` (model/strength.py, with numpy)."""
+    # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
+    from sass_tui.model.strength import StrengthSheet
+
+    return StrengthSheet(data, figure)

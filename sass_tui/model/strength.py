@@ -16,7 +16,7 @@ import numpy as np
 
 from sass_tui.model import published_strength as published
 from sass_tui.model.figure import Figure
-from sass_tui.model.names import STRENGTH
+from sass_tui.model.names import JOINT_AXIS_LABELS, MOTIONS, STRENGTH
 from sass_tui.model.percentile import check_percentile
 from sass_tui.model.strength_conditions import (
     ASSUMED_LABEL,
@@ -44,10 +44,8 @@ from sass_tui.model.strength_conditions import (
 from sass_tui.model.strength_data import (
     EXTRAPOLATION_MARGIN_DEG,
     FILE_NAME,
-    JOINT_AXIS_LABELS,
     LARGEST_ANGLE,
     LARGEST_STRENGTH,
-    MOTIONS,
     N_ANGLES,
     N_FEATURES,
     STRENGTH_CV,

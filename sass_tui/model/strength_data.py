@@ -39,7 +39,7 @@ import numpy.typing as npt
 
 from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
-from sass_tui.model.names import Row, normalise_label
+from sass_tui.model.names import JOINT_AXIS_LABELS, MOTIONS, normalise_label
 from sass_tui.model.paths import PathError, read_user_text
 from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
@@ -51,11 +51,6 @@ from sass_tui.model.vocabulary import GENDERS, JOINT_AXES, MOTION_NAMES, SIDES
 
 FILE_NAME = "strength.dat"
 
-# Display order of the strength page (one page of 14 rows).
-MOTIONS: tuple[Row, ...] = tuple(
-    Row(name, name.replace("_", " ").capitalize(), (name.replace("_", " "),))
-    for name in MOTION_NAMES
-)
 _MOTION_ALIASES = {
     "shoulder internal rotation": "shoulder_medial_rotation",
     "shoulder external rotation": "shoulder_lateral_rotation",
@@ -63,16 +58,6 @@ _MOTION_ALIASES = {
     "wrist ulnar adduction": "wrist_ulnar_deviation",
 }
 
-# The joint-angle columns of figure 8, and the joint-limit row/axis of each.
-JOINT_AXIS_LABELS = (
-    "Shoulder x",
-    "Shoulder y",
-    "Shoulder z",
-    "Elbow y",
-    "Wrist x",
-    "Wrist y",
-    "Wrist z",
-)
 N_ANGLES = len(JOINT_AXES)
 N_FEATURES = 1 + 2 * N_ANGLES
 _ANGLE_SCALE = 100.0  # keeps t^2 near 1 so lstsq is well conditioned

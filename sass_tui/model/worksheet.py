@@ -23,7 +23,7 @@ import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure, GroupState
@@ -32,6 +32,12 @@ from sass_tui.model.names import AXES_OF, GLOBAL, GROUPS, ROWS, STRENGTH
 from sass_tui.model.paths import PathError, read_user_text
 from sass_tui.model.popfile import Cells, PopulationData
 from sass_tui.model.session import Session
+from sass_tui.model.strength import (
+    StrengthData,
+    StrengthError,
+    StrengthSheet,
+    read_strength_file,
+)
 from sass_tui.model.units import GROUP_UNITS
 from sass_tui.model.vocabulary import (
     FIGURE_TYPES,
@@ -41,9 +47,6 @@ from sass_tui.model.vocabulary import (
     MOTION_NAMES,
     STRENGTH_TYPES,
 )
-
-if TYPE_CHECKING:
-    from sass_tui.model.strength import StrengthSheet
 
 FORMAT = "sass worksheet"
 FORMAT_VERSION = 1
@@ -377,3 +380,35 @@ def apply_strength(settings: StrengthSettings, sheet: StrengthSheet) -> None:
     sheet.non_dominant_factor = settings.non_dominant_factor
     for row, angles in enumerate(settings.angles):
         sheet.angles[row] = angles
+
+
+def read_worksheet_and_strength(
+    path: str | Path,
+) -> tuple[Worksheet, StrengthData | None, SassError | OSError | None]:
+    """A worksheet and the strength file it names: that file's data, or None
+    and why it could not be read (a file moved since the worksheet was saved
+    leaves the strength page as it is; the worksheet still opens)."""
+    worksheet = read_worksheet(path)
+    if worksheet.strength is None:
+        return worksheet, None, None
+    try:
+        return worksheet, read_strength_file(worksheet.strength.path), None
+    except (SassError, OSError) as exc:
+        return worksheet, None, exc
+
+
+def population_strength_sheet(
+    path: str | Path | None, figure: Figure, settings: StrengthSettings | None
+) -> StrengthSheet:
+    """The population's strength sheet from the strength file `path` (None:
+    the shipped datasets/strength.dat), set as a worksheet saved it, its
+    equations fitted now rather than on the first look at the page (a gender
+    the file has no data for is said when the page is shown)."""
+    sheet = StrengthSheet(read_strength_file(path), figure)
+    if settings is not None:
+        apply_strength(settings, sheet)
+    try:
+        sheet.rows()
+    except StrengthError:
+        pass  # no data for this gender: the page says so when shown
+    return sheet

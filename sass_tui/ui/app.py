@@ -18,7 +18,9 @@ from textual.app import App
 from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.paths import regular_file, user_path
+from sass_tui.model.served import served_read_only, served_workdir
 from sass_tui.model.session import Session
+from sass_tui.ui.palette import ScreenCommands
 from sass_tui.ui.settings import load_settings, save_setting
 from sass_tui.ui.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
 from sass_tui.ui.widgets import MessageLine
@@ -37,7 +39,7 @@ class SassApp(App):
     TITLE = "SASS"
     # ctrl+p: the active screen's commands (sass_tui/ui/palette.py) and
     # Textual's own (themes, keys, screenshot, quit).
-    COMMANDS = App.COMMANDS | {lambda: _screen_commands_provider()}
+    COMMANDS = App.COMMANDS | {ScreenCommands}
 
     def __init__(
         self,
@@ -107,24 +109,14 @@ class SassApp(App):
     def _make_strength_sheet(self, figure: Figure, path: str | Path | None) -> StrengthSheet | None:
         """The population's strength sheet from `path` (None =
         datasets/strength.dat), or None and why in strength_error."""
-        # deferred: model.strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.strength import StrengthError, StrengthSheet, read_strength_file
-
-        # deferred: model.worksheet — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.worksheet import apply_strength
+        # deferred: model.worksheet (model.strength, numpy) — off the first screen (sass_tui/startup.py)
+        from sass_tui.model.worksheet import population_strength_sheet
 
         try:
-            sheet = StrengthSheet(read_strength_file(path), figure)
+            return population_strength_sheet(path, figure, self._opened_strength)
         except (SassError, OSError) as exc:
             self._strength_error = f"Strength data is not loaded ({exc}); SASS runs without it."
             return None
-        if self._opened_strength is not None:
-            apply_strength(self._opened_strength, sheet)
-        try:
-            sheet.rows()  # fits the equations now rather than on the first 's'
-        except StrengthError:
-            pass  # no data for this gender: the page says so when shown
-        return sheet
 
     def _read_worksheet(self, name: str | Path) -> tuple[Figure, str | None]:
         """The figure of the worksheet `sass --open` names, and its strength
@@ -249,19 +241,9 @@ class SassApp(App):
         return figure_of(self.selected_individual(index), population)
 
 
-def _screen_commands_provider():
-    # deferred: ui.palette — off the first screen, the first screen's next frame (sass_tui/startup.py)
-    from sass_tui.ui.palette import ScreenCommands
-
-    return ScreenCommands
-
-
 def make_app(db_path: str | Path | None = None, worksheet: str | None = None) -> SassApp:
     """The app `sass` runs: a served session's (`sass serve`) when its
     environment says so (model/served.py)."""
-    # deferred: model.served — off the first screen, the first screen's next frame (sass_tui/startup.py)
-    from sass_tui.model.served import served_read_only, served_workdir
-
     return SassApp(
         db_path=db_path,
         workdir=served_workdir(),

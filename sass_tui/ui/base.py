@@ -21,6 +21,7 @@ from textual.dom import DOMNode
 from textual.screen import Screen
 
 from sass_tui.model.paths import complete_path
+from sass_tui.ui.palette import HelpScreen, help_commands
 from sass_tui.ui.textual_api import bindings_of
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
 from sass_tui.ui.widgets.editor import run_own_binding
@@ -178,9 +179,6 @@ class SassScreen(Screen):
 
     def action_help(self) -> None:
         """List every key of this screen, what it runs and what that does."""
-        # deferred: ui.palette — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.palette import HelpScreen, help_commands
-
         title = f"Keys of {type(self).__name__.removesuffix('Screen') or 'this'} screen"
         self.app.push_screen(HelpScreen(help_commands(self), title))
 

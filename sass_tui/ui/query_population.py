@@ -18,6 +18,7 @@ from sass_tui.ui.fit_screen import FitScreen
 from sass_tui.ui.progress import Work
 from sass_tui.ui.query_base import WAIT, Busy, QueryScreenBase
 from sass_tui.ui.query_messages import PopulationMade
+from sass_tui.ui.stats_screen import StatsScreen
 from sass_tui.ui.target_picker import pick_target, weighted_words
 
 
@@ -155,9 +156,6 @@ class PopulationCommands(QueryScreenBase):
     # --- Stats ---------------------------------------------------------------
     def action_stats(self) -> None:
         """The percentile table of the last query's people (weighted to the target)."""
-        # deferred: ui.stats_screen — only action_stats() needs it; importing ui.query_population does not load it
-        from sass_tui.ui.stats_screen import StatsScreen
-
         if self.running:
             self.say(WAIT)
             return

@@ -31,6 +31,7 @@ from sass_tui.model.units import DISPLAY, other_unit
 from sass_tui.ui.commands import COMMANDS
 from sass_tui.ui.figure_view import FigureView
 from sass_tui.ui.footer import Footer
+from sass_tui.ui.message_log import MessageLog
 from sass_tui.ui.spreadsheet_edit import EditCommands
 from sass_tui.ui.spreadsheet_people import PeopleCommands
 from sass_tui.ui.spreadsheet_task import TaskCommands
@@ -333,9 +334,6 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
 
     def action_message_log(self) -> None:
         """List the messages shown so far."""
-        # deferred: ui.message_log — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.message_log import MessageLog
-
         self.app.push_screen(MessageLog(self.message_line.history))
 
     # --- Right -> Left -------------------------------------------------------------------

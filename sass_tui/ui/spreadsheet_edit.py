@@ -12,6 +12,8 @@ from sass_tui.model.names import (
     GIRTH,
     GLOBAL,
     GROUP_TITLES,
+    JOINT_AXIS_LABELS,
+    MOTIONS,
     STRENGTH,
     row_index,
 )
@@ -144,9 +146,6 @@ class EditCommands(SheetScreenBase):
         if sheet is None:
             self.complain(self.strength_error)
             return
-        # deferred: model.strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.strength import JOINT_AXIS_LABELS, MOTIONS
-
         name = f"{sheet.side} {MOTIONS[row].label.lower()}, {JOINT_AXIS_LABELS[column].lower()}"
         current = format_angle(sheet.angles[row, column])
         self.ask(
@@ -156,9 +155,6 @@ class EditCommands(SheetScreenBase):
         )
 
     def _edit_angle(self, row: int, column: int, text: str) -> None:
-        # deferred: model.strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.strength import JOINT_AXIS_LABELS, MOTIONS
-
         axis = JOINT_AXIS_LABELS[column].lower()
         if not text.strip():
             self.say(f"{MOTIONS[row].label} {axis} unchanged.")

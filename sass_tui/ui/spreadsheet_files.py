@@ -9,6 +9,7 @@ from pathlib import Path
 
 from textual import work
 
+from sass_tui.model.atomic import OutputFileError, check_target, write_text_atomic
 from sass_tui.model.datasets import SHIPPED_POPULATION, shipped_population
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
@@ -18,6 +19,8 @@ from sass_tui.model.names import (
     STRENGTH,
 )
 from sass_tui.model.popfile import read_global_beside, read_population_file
+from sass_tui.model.published_grip import GRIP_DATA_SET, table_words
+from sass_tui.model.published_strength import DATA_SET, EXAMPLE_DATA_SET
 from sass_tui.ui.spreadsheet_base import (
     AnswerError,
     PopulationRead,
@@ -79,12 +82,6 @@ class FileCommands(SheetScreenBase):
         """A strength data set named instead of a file (docs/strength.md): the
         example data read again, Anderson et al. 2007's curves shown, or HFDS
         2003's grip forces said (forces: the strength page shows joint torques)."""
-        # deferred: model.published_grip — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.published_grip import GRIP_DATA_SET, table_words
-
-        # deferred: model.published_strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.published_strength import DATA_SET, EXAMPLE_DATA_SET
-
         if name == EXAMPLE_DATA_SET:
             # deferred: model.strength — off the first screen (sass_tui/startup.py)
             from sass_tui.model.strength import default_path
@@ -226,9 +223,6 @@ class FileCommands(SheetScreenBase):
     async def _may_write(self, path: Path) -> bool:
         """A new file may be written; an existing one only after the user says
         y; what cannot be written (a directory) is refused before asking."""
-        # deferred: model.atomic — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.atomic import OutputFileError, check_target
-
         if not path.exists():
             return True
         try:
@@ -263,9 +257,6 @@ class FileCommands(SheetScreenBase):
 
     @work(thread=True, group="write", exit_on_error=False)
     def write_text(self, path: Path, text: str, done: str) -> None:
-        # deferred: model.atomic — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.atomic import write_text_atomic
-
         try:
             write_text_atomic(path, text)
         except (SassError, OSError) as exc:

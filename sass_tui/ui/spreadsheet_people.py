@@ -18,6 +18,7 @@ from sass_tui.model.names import (
     GROUP_TITLES,
 )
 from sass_tui.model.units import convert
+from sass_tui.ui.more_menu import MoreMenu
 from sass_tui.ui.predict import (
     KNOWN_PROMPT,
     KnownSuggester,
@@ -59,9 +60,6 @@ class PeopleCommands(SheetScreenBase):
 
     async def _display_more(self) -> None:
         """The More Menu's choice; for Nth Person, the number."""
-        # deferred: ui.more_menu — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.more_menu import MoreMenu
-
         choice = await self.choose(MoreMenu())
         if choice is None:
             self.say("Disp. More cancelled.")

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 from textual import work
 from textual.message import Message
 
+from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
 from sass_tui.model.session import Session
 from sass_tui.ui.spreadsheet_base import WorkerSaid
@@ -101,9 +102,6 @@ class WorksheetCommands(FileCommands):
 
     @work(thread=True, group="write", exit_on_error=False)
     def write_worksheet(self, path: Path, text: str, state: frozenset[int]) -> None:
-        # deferred: model.atomic — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.atomic import write_text_atomic
-
         try:
             write_text_atomic(path, text)
         except (SassError, OSError) as exc:
@@ -136,25 +134,19 @@ class WorksheetCommands(FileCommands):
 
     @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
     def read_worksheet_file(self, path: Path) -> None:
-        # deferred: model.strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.strength import read_strength_file
-
-        # deferred: model.worksheet — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.worksheet import read_worksheet
+        # deferred: model.worksheet (model.strength, numpy) — off the first screen (sass_tui/startup.py)
+        from sass_tui.model.worksheet import read_worksheet_and_strength
 
         try:
-            worksheet = read_worksheet(path)
+            worksheet, strength, unread = read_worksheet_and_strength(path)
         except (SassError, OSError) as exc:
             self.post_message(WorkerSaid(f"{exc}; the sheet is unchanged.", "error"))
             return
         # The strength file is named, not held, by the worksheet: one moved
         # since leaves the strength page as it is, and the sheet opens.
-        settings, strength, problem = worksheet.strength, None, ""
-        if settings is not None:
-            try:
-                strength = read_strength_file(settings.path)
-            except (SassError, OSError) as exc:
-                problem = f" Its strength file is not read ({exc}); the strength page is unchanged."
+        problem = ""
+        if unread is not None:
+            problem = f" Its strength file is not read ({unread}); the strength page is unchanged."
         self.post_message(WorksheetRead(path, worksheet, strength, problem))
 
     def on_worksheet_read(self, event: WorksheetRead) -> None:

@@ -17,7 +17,16 @@ import sass_tui.cli
 from sass_tui.cli import VERBS, build_parser, verb_module
 
 # The modules of sass_tui/cli that are not verbs: what the verbs share.
-SHARED = {"options", "progress", "strength_arm"}  # strength_arm: sass strength arm_force
+SHARED = {
+    "options",
+    "database_access",
+    "figure_from_options",
+    "person_option",
+    "prediction_figure",
+    "query_weighted",
+    "progress",
+    "strength_arm",  # sass strength arm_force
+}
 
 
 def _options(parser: argparse.ArgumentParser, words: str) -> Iterator[tuple[str, argparse.Action]]:

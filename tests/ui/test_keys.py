@@ -235,6 +235,7 @@ def test_the_write_worker_writes_the_figure_as_it_was_when_asked(
 
     from sass_tui.model import atomic, figfile
     from sass_tui.model.figfile import read_fig
+    from sass_tui.ui import spreadsheet_files
 
     edited, working = threading.Event(), threading.Event()
 
@@ -250,6 +251,10 @@ def test_the_write_worker_writes_the_figure_as_it_was_when_asked(
     monkeypatch.setattr(figfile, "render_fig", after_the_edit(figfile.render_fig))
     monkeypatch.setattr(figfile, "write_text_atomic", after_the_edit(figfile.write_text_atomic))
     monkeypatch.setattr(atomic, "write_text_atomic", after_the_edit(atomic.write_text_atomic))
+    # The spreadsheet's write worker (ui/spreadsheet_files.py) holds its own name for it.
+    monkeypatch.setattr(
+        spreadsheet_files, "write_text_atomic", after_the_edit(atomic.write_text_atomic)
+    )
     out = tmp_path / "asked.fig"
 
     async def scenario():
