@@ -27,7 +27,7 @@ MAX_MODULE_LINES = 500
 # start-up row of sass_tui/startup.py keeps off a path (or the path's verb
 # module imports it only for an option).  A ceiling that only comes down as
 # imports move to module tops; the goal is 60.
-MAX_FUNCTION_LEVEL_IMPORTS = 120
+MAX_FUNCTION_LEVEL_IMPORTS = 118
 # A ticket number in prose: "issue" or "issues", then a number (a "#" allowed).
 ISSUE_REFERENCE = re.compile(r"\bissues?\s+#?\d+", re.IGNORECASE)
 

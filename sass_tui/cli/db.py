@@ -15,6 +15,7 @@ from sass_tui.db.database import Database, configured_target, init_postgres
 from sass_tui.db.default import SYNTHETIC_LABEL, create_default_database
 from sass_tui.db.flatfile import FlatFileError, FlatFiles
 from sass_tui.db.postgres import shown
+from sass_tui.db.query import QueryError, compile_query
 from sass_tui.db.replacing import Held, keep_targets, what_init_replaces
 from sass_tui.db.schema import DatabaseError, connect, default_db_path
 from sass_tui.db.scope import VIRTUAL_PREFIX
@@ -208,9 +209,6 @@ def run_import_ansur(args: argparse.Namespace) -> int:
 
 
 def run_copy(args: argparse.Namespace) -> int:
-    # deferred: db.query — off sass db init (sass_tui/startup.py)
-    from sass_tui.db.query import QueryError, compile_query
-
     wanted: set[tuple[str, str]] = set()
     for text in args.queries:  # before opening: a bad query touches nothing
         compiled = compile_query(text)

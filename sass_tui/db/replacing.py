@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -19,11 +19,9 @@ from sass_tui.db.ansur import DEFAULT_LABEL
 from sass_tui.db.default import SYNTHETIC_LABEL
 from sass_tui.db.dialect import dialect_of, mark_of
 from sass_tui.db.scope import virtual_source
+from sass_tui.db.targets import Target, TargetWeights, list_targets, store_target, target_exists
 from sass_tui.model.datasets import NHANES_NAME
 from sass_tui.model.text import printable
-
-if TYPE_CHECKING:
-    from sass_tui.db.targets import Target
 
 # The people `sass db init` stores again: the virtual ones made anew from
 # the shipped NHANES sample (db/virtual.py's store_shipped_in).
@@ -107,9 +105,6 @@ def what_init_replaces(conn: Any) -> Held:
     }
     if not _has_table(conn, "target"):
         return Held(people, [])
-    # deferred: db.targets — off sass db init (sass_tui/startup.py): only a database holding targets needs it
-    from sass_tui.db.targets import list_targets
-
     m = mark_of(conn)
     targets = [
         HeldTarget(
@@ -136,9 +131,6 @@ def keep_targets(conn: Any, held: Held) -> list[str]:
     initialisation made itself (a shipped target) is the new one."""
     if not held.targets:
         return []
-    # deferred: db.targets — off sass db init (sass_tui/startup.py): only a database holding targets needs it
-    from sass_tui.db.targets import TargetWeights, store_target, target_exists
-
     keys = {
         str(key): int(id_num)
         for key, id_num in conn.execute(
