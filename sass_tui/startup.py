@@ -32,18 +32,13 @@ class StartupPath(NamedTuple):
     status: int = 0  # the exit status the argv is expected to give
 
 
-# Off every path here: pint only checks the unit table in the tests;
-# pygltflib only reads exported glTF files back in the tests.
-NEVER = ("pint", "pygltflib")
-# lark parses a query (db/query_grammar.py: Lark's LALR parser, its tables
-# loaded from the user's cache) or a .fig file being read (model/figfile.py).
-# Importing it brings logging, tempfile (and shutil), pickle, hashlib,
-# dataclasses and inspect: a path that parses a query pays for them (~20 ms
-# of lark, measured against the stand-alone parser it replaced in
-# docs/performance.md, "The query parser"); every other path keeps lark out.
-QUERY_PARSER = ("lark", "sass_tui.db.query_grammar")
-# What a path that imports lark may still keep out of NOT_FOR_A_SHORT_COMMAND.
-NOT_FOR_A_SHORT_QUERY = ("importlib.metadata", "asyncio")
+# Off every path here: lark only reads a .fig file (model/figfile.py; a query
+# is parsed by the generated stand-alone parser, db/_query_parser.py); pint
+# only checks the unit table in the tests; pygltflib only reads exported glTF
+# files back in the tests.
+NEVER = ("lark", "pint", "pygltflib")
+# The query language's generated parser: only a path that parses a query.
+QUERY_PARSER = ("sass_tui.db._query_parser",)
 # Textual and what draws or serves it: only the TUI and `sass serve`.
 UI = ("textual", "rich", "textual_canvas", "textual_plotext", "textual_serve", "aiohttp")
 # The engines past SQLite: PostgreSQL on an address, DuckDB for the column
@@ -145,21 +140,21 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass query",
         ("query", "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"),
-        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets", "platformdirs",
-         "xml.etree.ElementTree", "sass_tui.ui",
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "dataclasses", "inspect",
+         "numpy", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
          "sass_tui.model.prediction", "sass_tui.db.accelerator", "sass_tui.db.postgres",
          "json", "csv", "sass_tui.model.datasets"),
-        "`sass query` <= 5x `python -c pass` (benchmarks/cli_ratios.py): lark's parser"
-        " from its cached tables, the unit table (not pint), SQLite and the table writer;"
-        " argparse's help formatter without shutil; no column copy below its size; json"
-        " only for --format json (1.1 ms), the PostgreSQL module only for an address",
+        "`sass query` <= 5x `python -c pass` (benchmarks/cli_ratios.py): the generated"
+        " parser, the unit table (not pint), SQLite and the table writer; argparse's help"
+        " formatter without shutil; no column copy below its size; json only for --format"
+        " json (1.1 ms), the PostgreSQL module only for an address",
         needs_db=True,
     ),
     StartupPath(
         "sass query --format csv",
         ("query", "--format", "csv", "stature > 70 in"),
-        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets", "platformdirs",
-         "xml.etree.ElementTree", "sass_tui.ui",
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "dataclasses", "inspect",
+         "numpy", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
          "sass_tui.model.prediction", "sass_tui.db.accelerator", "sass_tui.db.postgres",
          "json"),
         "as `sass query`: \"70 in\" is converted from the unit table, and csv is the writer",
@@ -168,7 +163,7 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass query --count",
         ("query", "--count", "gender = male"),
-        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy", "secrets",
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "numpy", "secrets",
          "platformdirs", "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
          "uuid"),
         "a count asks the column copy's module whether a copy exists; below its size"
@@ -188,7 +183,8 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass population",
         ("population", "--query", "gender = male", "-o", "X.dat"),
-        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "secrets", "platformdirs",
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "inspect", "secrets",
+         "platformdirs",
          "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
          "sass_tui.db.accelerator", "sass_tui.db.targets", "sass_tui.model.targets"),
         "the population files need the query, the people and numpy's statistics only",
@@ -226,7 +222,8 @@ PATHS: tuple[StartupPath, ...] = (
     StartupPath(
         "sass target",
         ("target", "--list"),
-        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_QUERY, "numpy.ma", "secrets", "platformdirs",
+        (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "inspect", "numpy.ma",
+         "secrets", "platformdirs",
          "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
          "sass_tui.db.accelerator"),
         "listing the stored targets reads the database only",

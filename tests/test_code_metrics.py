@@ -69,6 +69,8 @@ def test_the_import_count_is_every_import_inside_a_function():
 
     total = 0
     for path in (ROOT / "sass_tui").rglob("*.py"):
+        if path in METRICS["GENERATED"]:  # lark's stand-alone parser, not ours to move
+            continue
         tree = ast.parse(path.read_text(encoding="utf-8"))
         for node in ast.walk(tree):
             if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):

@@ -40,18 +40,25 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Iterator
+from functools import lru_cache
 from typing import Any, NamedTuple, NoReturn, Protocol
 
-from lark import Token, Transformer, Tree, v_args
-from lark.exceptions import (
+# The parser is lark's stand-alone LALR module generated from GRAMMAR
+# (db/query_grammar.py) by scripts/make_query_parser.py: importing it costs
+# less than importing lark and loading its cached tables (docs/performance.md).
+from sass_tui.db._query_parser import (
+    Lark,
+    Lark_StandAlone,
+    Token,
+    Transformer,
+    Tree,
     UnexpectedCharacters,
     UnexpectedEOF,
     UnexpectedInput,
     UnexpectedToken,
     VisitError,
+    v_args,
 )
-
-from sass_tui.db.query_grammar import parser
 from sass_tui.db.query_tree import (
     PERSON_TABLE,
     And,
@@ -142,6 +149,13 @@ class QueryError(ValueError, SassError):
         if not self.column:
             return self.text
         return f"{self.text}\n{' ' * (self.column - 1)}^"
+
+
+@lru_cache(maxsize=1)
+def parser() -> Lark:
+    """The LALR parser of GRAMMAR (positions kept for error columns)."""
+    standalone: Lark = Lark_StandAlone()
+    return standalone
 
 
 class CompiledQuery(NamedTuple):  # not a dataclass: see model.names.Row
@@ -274,7 +288,9 @@ class _TreeBuilder(Transformer[Token, Expr]):
             return Comparison(field, table, column, sql_op, value_text, nocase=True)
         if words is not None:
             if kind == "text":
-                token = Token.new_borrow_pos("NAME", _unquote(token), token)
+                # lark's stand-alone generator defines _T three times, so mypy reads this
+                # classmethod's cls as a Lark's: the generated module's own typing slip.
+                token = Token.new_borrow_pos("NAME", _unquote(token), token)  # type: ignore[misc]
             if kind not in ("word", "text") or token.lower() not in words:
                 self._fail(
                     f"{'.'.join(names)} is one of {', '.join(words)}, not {_value_text(value)!r}",

@@ -2,21 +2,20 @@
 query on: `sass query` (its count, rows, the demonstration hint, a target's
 weighted count), `sass fit`, `sass family`, `sass population`, `sass
 target`, and the query screen's lists.  Each parse of the query parser
-(db/query_grammar.py) is counted by the text it read."""
+(db/_query_parser.py, generated from db/query_grammar.py) is counted by the text it read."""
 
 from __future__ import annotations
 
 from collections import Counter
 
-import lark
 import pytest
 from test_targets import civilian_women, write_sample
 
 from sass_tui.cli import main
+from sass_tui.db import _query_parser
 from sass_tui.db.database import Database
 from sass_tui.db.lists import QueryLists
-from sass_tui.db.query import compile_query, demonstration_hint
-from sass_tui.db.query_grammar import parser
+from sass_tui.db.query import compile_query, demonstration_hint, parser
 
 STRENGTH = "gender = male AND strength.elbow_flexion.max > 20 ft-lb"
 
@@ -26,14 +25,14 @@ def parses(monkeypatch) -> Counter[str]:
     """How many times the query parser read each text."""
     counted: Counter[str] = Counter()
     query_parser = parser()
-    real_parse = lark.Lark.parse
+    real_parse = _query_parser.Lark.parse
 
     def counting(self, text, *args, **kwargs):
         if self is query_parser:
             counted[text] += 1
         return real_parse(self, text, *args, **kwargs)
 
-    monkeypatch.setattr(lark.Lark, "parse", counting)
+    monkeypatch.setattr(_query_parser.Lark, "parse", counting)
     return counted
 
 
