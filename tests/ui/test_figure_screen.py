@@ -125,11 +125,20 @@ def test_no_figure_panel_below_120_columns(drive, app_at):
             await pilot.pause()
             assert app.spreadsheet.figure_panel is None
             await pilot.resize_terminal(120, 40)
-            await pilot.pause()
-            assert app.spreadsheet.figure_panel.display
+            await wait_until(
+                pilot,
+                lambda: (
+                    app.spreadsheet.figure_panel is not None
+                    and app.spreadsheet.figure_panel.display
+                ),
+                "no figure panel at 120 columns",
+            )
             await pilot.resize_terminal(100, 40)
-            await pilot.pause()
-            assert not app.spreadsheet.figure_panel.display
+            await wait_until(
+                pilot,
+                lambda: not app.spreadsheet.figure_panel.display,
+                "the figure panel still shows at 100 columns",
+            )
 
     drive(scenario())
 
