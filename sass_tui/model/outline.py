@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import Any, Literal
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.hanim import build_humanoid
 
 ShapeKind = Literal["box", "ellipse"]
 
@@ -65,9 +66,6 @@ class OutlineError(ValueError, SassError):
 
 def figure_outline(figure: Any, label: str = "") -> Outline:
     """The front and side views of `figure` (a model Figure with every group loaded)."""
-    # deferred: model.hanim — off the first screen (sass_tui/startup.py)
-    from sass_tui.model.hanim import build_humanoid
-
     try:
         humanoid = build_humanoid(figure)
     except SassError as exc:

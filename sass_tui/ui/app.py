@@ -15,7 +15,6 @@ from typing import TYPE_CHECKING
 
 from textual.app import App
 
-from sass_tui.model.errors import SassError
 from sass_tui.model.figure import Figure
 from sass_tui.model.paths import regular_file, user_path
 from sass_tui.model.served import served_read_only, served_workdir
@@ -30,6 +29,7 @@ if TYPE_CHECKING:  # the database costs start-up time: imported when first used
     from sass_tui.db.lists import QueryLists
     from sass_tui.model.strength import StrengthSheet
     from sass_tui.model.worksheet import StrengthSettings
+    from sass_tui.ui.figure_work import FigureWork
     from sass_tui.ui.query_messages import DatabaseOpened
 
 
@@ -106,26 +106,30 @@ class SassApp(App):
         self.session.strength_sheets.make()
         return self._strength_error
 
+    @property
+    def figure_work(self) -> FigureWork:
+        """The work on the figure's model past the first screen (ui/figure_work.py:
+        the strength sheet, the worksheet file, the .fig file, the outlines),
+        imported when first needed: once the first screen is drawn, or by
+        `sass --open`."""
+        # deferred: ui.figure_work (model.strength, model.worksheet, numpy) — off the first screen (sass_tui/startup.py)
+        from sass_tui.ui.figure_work import FigureWork
+
+        return FigureWork()
+
     def _make_strength_sheet(self, figure: Figure, path: str | Path | None) -> StrengthSheet | None:
         """The population's strength sheet from `path` (None =
         datasets/strength.dat), or None and why in strength_error."""
-        # deferred: model.worksheet (model.strength, numpy) — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.worksheet import population_strength_sheet
-
-        try:
-            return population_strength_sheet(path, figure, self._opened_strength)
-        except (SassError, OSError) as exc:
-            self._strength_error = f"Strength data is not loaded ({exc}); SASS runs without it."
-            return None
+        sheet, problem = self.figure_work.strength_sheet(path, figure, self._opened_strength)
+        if sheet is None:
+            self._strength_error = problem
+        return sheet
 
     def _read_worksheet(self, name: str | Path) -> tuple[Figure, str | None]:
         """The figure of the worksheet `sass --open` names, and its strength
         file (its settings are set on the sheet when it is made)."""
-        # deferred: model.worksheet — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.worksheet import read_worksheet
-
         path = self.regular_file(str(name))
-        worksheet = read_worksheet(path)
+        worksheet = self.figure_work.read_worksheet(path)
         self.worksheet_path = path
         self._opened_strength = worksheet.strength
         strength = worksheet.strength
@@ -211,10 +215,7 @@ class SassApp(App):
         self.push_screen(QueryScreen(self.query_lists, self.db_path))
 
     def open_figure_screen(self) -> None:
-        # deferred: ui.figure_screen — off the first screen (sass_tui/startup.py)
-        from sass_tui.ui.figure_screen import FigureScreen
-
-        self.push_screen(FigureScreen(self.session))
+        self.push_screen(self.figure_work.figure_screen(self.session))
 
     def on_database_opened(self, event: DatabaseOpened) -> None:
         self.query_lists = event.lists

@@ -19,10 +19,13 @@ from textual.containers import Vertical
 from textual.reactive import reactive
 from textual.widgets import Static
 
-from sass_tui.model.outline import Outline, Shape, View
-
-if TYPE_CHECKING:  # imported with the first canvas: ~17 ms (it reads its version)
+if TYPE_CHECKING:
+    # The canvas: imported with the first one, ~17 ms (it reads its version).
+    # The outlines: what the figure screen's module builds (model/outline.py,
+    # the HAnim humanoid, numpy), handed to the view after the first screen.
     from textual_canvas import Canvas
+
+    from sass_tui.model.outline import Outline, Shape, View
 
 FILL = Color.parse("#5f87af")
 OVERLAY = Color.parse("#ffaf00")

@@ -352,11 +352,8 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
         if not (self.data_group == STRENGTH and strength is not None):
             self.say("Right → Left applies to the Strength group (press s).")
             return
-        # deferred: model.strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.strength import DEFAULT_NON_DOMINANT_FACTOR
-
+        factor = self.sass_app.figure_work.non_dominant_factor
         self.ask(
-            f"Scaling factor for the non-dominant limb "
-            f"(RETURN = default {DEFAULT_NON_DOMINANT_FACTOR:.3f}):",
+            f"Scaling factor for the non-dominant limb (RETURN = default {factor:.3f}):",
             lambda text: self.say(strength.switch_side(text) + "."),
         )

@@ -109,11 +109,9 @@ class SheetScreenBase(SassScreen):
         panel = self.figure_panel
         if panel is None or not panel.display or not self._first_screen_shown:
             return
-        # deferred: ui.figure_screen — off the first screen (sass_tui/startup.py)
-        from sass_tui.ui.figure_screen import session_outlines
-
+        app = self.sass_app
         try:
-            outlines = session_outlines(self.session, self.sass_app.figure_overlay)
+            outlines = app.figure_work.outlines(self.session, app.figure_overlay)
         except SassError:
             outlines = ()  # the caption says there is nothing to draw
         if outlines != panel.outlines:

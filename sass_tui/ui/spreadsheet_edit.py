@@ -129,10 +129,7 @@ class EditCommands(SheetScreenBase):
                 format_value(low, state.unit), format_value(high, state.unit), DISPLAY[state.unit]
             )
             kind = "warning"
-        # deferred: model.hanim — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.hanim import NOT_IN_HUMANOID
-
-        if group == GIRTH and (state.rows[row].name, axis) in NOT_IN_HUMANOID:
+        if group == GIRTH and self.sass_app.figure_work.not_in_humanoid(state.rows[row].name, axis):
             # The figure view does not move: say why, and where the value goes.
             said += (
                 " It goes to a .fig; the figure view and Export HAnim stand the joints "

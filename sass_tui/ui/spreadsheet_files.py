@@ -4,7 +4,6 @@ get an immutable input (a path, the rendered text)."""
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 from textual import work
@@ -15,7 +14,6 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
     GIRTH,
     GROUP_TITLES,
-    GROUPS,
     STRENGTH,
 )
 from sass_tui.model.popfile import read_global_beside, read_population_file
@@ -35,10 +33,6 @@ from sass_tui.ui.widgets.message_line import CANCELLED
 # DATA_SET, model/published_grip.py's GRIP_DATA_SET, which the first screen
 # does not import.
 STRENGTH_DATA_SETS = ("example", "anderson2007", "hfds2003")
-
-
-def _slug(name: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("_") or "person"
 
 
 class FileCommands(SheetScreenBase):
@@ -83,11 +77,9 @@ class FileCommands(SheetScreenBase):
         example data read again, Anderson et al. 2007's curves shown, or HFDS
         2003's grip forces said (forces: the strength page shows joint torques)."""
         if name == EXAMPLE_DATA_SET:
-            # deferred: model.strength — off the first screen (sass_tui/startup.py)
-            from sass_tui.model.strength import default_path
-
-            self.say(f"Reading the example data ({default_path().name}) ...")
-            self.read_data_file(default_path(), STRENGTH)
+            path = self.sass_app.figure_work.example_strength_path()
+            self.say(f"Reading the example data ({path.name}) ...")
+            self.read_data_file(path, STRENGTH)
             return True
         if name == DATA_SET:
             self.action_strength_curve()
@@ -103,10 +95,8 @@ class FileCommands(SheetScreenBase):
         what = "strength data" if group == STRENGTH else GROUP_TITLES[group]
         try:
             if group == STRENGTH:
-                # deferred: model.strength — off the first screen (sass_tui/startup.py)
-                from sass_tui.model.strength import read_strength_file
-
-                self.post_message(StrengthRead(read_strength_file(path)))
+                strength = self.sass_app.figure_work.read_strength_file(path)
+                self.post_message(StrengthRead(strength))
             else:
                 data = read_population_file(path, group)
                 beside = read_global_beside(path) if group == GIRTH else None
@@ -161,16 +151,9 @@ class FileCommands(SheetScreenBase):
 
     # --- Create Figure --------------------------------------------------------------
     def _default_name(self, suffix: str) -> str:
-        """Create Figure's and Export HAnim's file name: the person's shown,
+        """Create Figure's and the exports' file name: the person's shown,
         else the figure's gender and girth percentile (MALE50.FIG)."""
-        # deferred: model.figfile — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.figfile import default_fig_name
-
-        figure = self.figure
-        if figure.person:
-            return f"{_slug(figure.person)}{suffix}"
-        name = default_fig_name(figure.gender, figure.groups[GIRTH].percentile, figure.figure_type)
-        return name if suffix == ".fig" else Path(name).with_suffix(suffix).name
+        return self.sass_app.figure_work.file_name(self.figure, suffix)
 
     def action_create_figure(self) -> None:
         """Write the figure shown as a .fig file."""
@@ -191,7 +174,7 @@ class FileCommands(SheetScreenBase):
             self.say(CANCELLED)
             return
         path = self.sass_app.user_path(name.strip() or default)
-        sections = []
+        sections: list = []
         example = ""
         strength = self.session.strength_sheet
         if strength is not None:
@@ -203,16 +186,8 @@ class FileCommands(SheetScreenBase):
                 return
             word = answer.strip().lower()
             if word in ("", "y", "yes", "example"):
-                # deferred: model.strength — off the first screen (sass_tui/startup.py)
-                from sass_tui.model.strength import fig_section, lower_limb_fig_section
-
-                # No invented strength unless asked for by name (docs/strength.md):
-                # the arm's lines are measured data's, or the example data's on 'example'.
-                sections = [lower_limb_fig_section(self.figure)]
-                if not strength.data.test_data or word == "example":
-                    sections.insert(0, fig_section(strength))
-                if strength.data.test_data and word == "example":
-                    example = " Its arm strength is the example data (invented), not measured."
+                figure_work = self.sass_app.figure_work
+                sections, example = figure_work.fig_strength(self.figure, strength, word)
             elif word not in ("n", "no"):
                 raise AnswerError(
                     f"expected y, n or example, got {answer.strip()!r}; nothing written"
@@ -242,17 +217,7 @@ class FileCommands(SheetScreenBase):
     def _write_figure(self, path: Path, sections: list, said: str = "") -> None:
         """Rendered here, on the UI thread: the worker gets the text, never the
         figure the user may be editing meanwhile."""
-        # deferred: model.figfile — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.figfile import render_fig
-
-        figure = self.figure
-        text = render_fig(figure, sections)
-        filled = sum(int(figure.output_values(g)[1].sum()) for g in GROUPS)
-        note = (
-            f" {filled} values not measured for {figure.person} came from the population."
-            if filled
-            else ""
-        )
+        text, note = self.sass_app.figure_work.fig_text(self.figure, sections)
         self.write_text(path, text, f"Wrote {path}.{note}{said}")
 
     @work(thread=True, group="write", exit_on_error=False)
@@ -265,32 +230,17 @@ class FileCommands(SheetScreenBase):
             return
         self.post_message(WorkerSaid(done))
 
-    # --- Export HAnim -----------------------------------------------------------------
+    # --- Export HAnim, Export glTF ------------------------------------------------------
     def action_export_hanim(self) -> None:
         """Write the figure shown as an HAnim X3D humanoid."""
-        self.converse(self._export_hanim())
-
-    async def _export_hanim(self) -> None:
-        """Export HAnim's questions: the file name, and y/N before a file is
-        replaced."""
-        # deferred: model.hanim, model.hanim_x3d — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.hanim import not_in_humanoid_note
-        from sass_tui.model.hanim_x3d import render_hanim
-
-        default = self._default_name(".x3d")
-        name = await self.answer_to(f"HAnim file name [{default}]:", complete=self.complete_file)
-        if name is None:
-            self.say(CANCELLED)
-            return
-        path = self.sass_app.user_path(name.strip() or default)
-        text = render_hanim(self.figure)  # on the UI thread: see _write_figure
-        done = f"Exported the HAnim humanoid to {path}.{not_in_humanoid_note(self.figure)}"
-        if await self._may_write(path):
-            self.write_text(path, text, done)
+        self._export("hanim")
 
     def action_export_gltf(self) -> None:
         """Write the figure shown as a glTF 2.0 body (.glb)."""
-        # deferred: ui.gltf_export — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.gltf_export import ask_gltf_export
+        self._export("gltf")
 
-        ask_gltf_export(self, self.figure, self._default_name(".glb"))
+    def _export(self, kind: str) -> None:
+        # deferred: ui.exports (model.hanim_x3d, xml.etree, the db package) — off the first screen, the first screen's next frame (sass_tui/startup.py)
+        from sass_tui.ui.exports import export_figure
+
+        export_figure(self, kind)

@@ -27,12 +27,7 @@ class TaskCommands(SheetScreenBase):
         panel = self.task_panel
         if panel is None or not panel.display:
             return
-        # deferred: ui.task_words — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.task_words import strength_posture
-
-        row = self.strength_page.row_angles()
-        posture = () if row is None else strength_posture(*row)
-        panel.show_task(self.figure, posture)
+        panel.follow_row(self.figure, self.strength_page.row_angles())
 
     def on_strength_page_row_chosen(self, event: StrengthPage.RowChosen) -> None:
         event.stop()

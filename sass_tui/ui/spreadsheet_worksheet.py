@@ -14,7 +14,6 @@ from textual.message import Message
 
 from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
-from sass_tui.model.session import Session
 from sass_tui.ui.spreadsheet_base import WorkerSaid
 from sass_tui.ui.spreadsheet_files import FileCommands
 from sass_tui.ui.widgets.message_line import CANCELLED
@@ -49,20 +48,6 @@ class WorksheetRead(Message):
         self.strength_problem = strength_problem
 
 
-def open_worksheet(session: Session, worksheet: Worksheet, strength: StrengthData | None) -> None:
-    """Show a worksheet read (and its strength file): the Session's figure and
-    strength sheet become the file's."""
-    # deferred: model.worksheet — off the first screen (sass_tui/startup.py)
-    from sass_tui.model.worksheet import apply_strength
-
-    settings = worksheet.strength
-    session.open_worksheet(
-        worksheet.figure,
-        strength,
-        None if settings is None else lambda sheet: apply_strength(settings, sheet),
-    )
-
-
 class WorksheetCommands(FileCommands):
     # --- Save, Save As ----------------------------------------------------------
     def action_save(self) -> None:
@@ -78,11 +63,8 @@ class WorksheetCommands(FileCommands):
         self.converse(self._save_as())
 
     async def _save_as(self) -> None:
-        # deferred: model.worksheet — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.worksheet import DEFAULT_NAME
-
         current = self.sass_app.worksheet_path
-        default = str(current) if current is not None else DEFAULT_NAME
+        default = str(current) if current is not None else self.sass_app.figure_work.worksheet_name
         name = await self.answer_to(f"Save worksheet as [{default}]:", complete=self.complete_file)
         if name is None:
             self.say(CANCELLED)
@@ -92,11 +74,8 @@ class WorksheetCommands(FileCommands):
             self._save_to(path)
 
     def _save_to(self, path: Path) -> None:
-        # deferred: model.worksheet — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.worksheet import worksheet_text
-
         # Rendered here: the worker gets the text, not the figure being edited.
-        text = worksheet_text(self.session)
+        text = self.sass_app.figure_work.worksheet_text(self.session)
         self.say(f"Saving the worksheet to {path} ...")
         self.write_worksheet(path, text, self.session.edit_state())
 
@@ -134,11 +113,9 @@ class WorksheetCommands(FileCommands):
 
     @work(thread=True, exclusive=True, group="input-data", exit_on_error=False)
     def read_worksheet_file(self, path: Path) -> None:
-        # deferred: model.worksheet (model.strength, numpy) — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.worksheet import read_worksheet_and_strength
-
+        figure_work = self.sass_app.figure_work
         try:
-            worksheet, strength, unread = read_worksheet_and_strength(path)
+            worksheet, strength, unread = figure_work.read_worksheet_and_strength(path)
         except (SassError, OSError) as exc:
             self.post_message(WorkerSaid(f"{exc}; the sheet is unchanged.", "error"))
             return
@@ -150,7 +127,7 @@ class WorksheetCommands(FileCommands):
         self.post_message(WorksheetRead(path, worksheet, strength, problem))
 
     def on_worksheet_read(self, event: WorksheetRead) -> None:
-        open_worksheet(self.session, event.worksheet, event.strength)
+        self.sass_app.figure_work.open_worksheet(self.session, event.worksheet, event.strength)
         self.sass_app.worksheet_path = event.path
         self._warning_index = 0
         self.refresh_screen()

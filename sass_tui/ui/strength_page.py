@@ -9,7 +9,7 @@ for with DataSheet.EditRequested and go through the screen to the Session.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from rich.text import Text
 from textual.message import Message
@@ -19,6 +19,7 @@ from sass_tui.ui.widgets import DataSheet
 
 if TYPE_CHECKING:  # numpy-heavy: the page is hidden on the first screen
     from sass_tui.model.strength import StrengthSheet
+    from sass_tui.ui.app import SassApp
 
 ANGLE_WIDTH = 6
 VALUE_WIDTH = 8
@@ -117,17 +118,6 @@ class StrengthPage(DataSheet):
         name, angle, _ = self.column_widths()
         return name + column * angle, angle
 
-    def _limits(self, sheet) -> list[tuple[float, float]]:
-        """(lower, upper) of each angle column for the shown side; the joint
-        limits change with their percentile and the gender, so ask each time."""
-        # deferred: model.strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.strength import StrengthError, joint_limit_range
-
-        try:
-            return [joint_limit_range(sheet.figure, sheet.side, axis) for axis in JOINT_AXES]
-        except StrengthError:
-            return [(-math.inf, math.inf)] * self.COLUMNS
-
     def render(self) -> Text:
         sheet = self.sheet
         name_w, angle_w, source_w = self.column_widths()
@@ -143,13 +133,9 @@ class StrengthPage(DataSheet):
         second = Text(no_wrap=True, overflow="crop")
         if sheet is None:
             return Text("\n").join([top, Text(self.missing or "Strength data is not loaded.")])
-        # deferred: model.strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.model.strength import StrengthError
-
-        try:
-            rows = sheet.rows()
-        except StrengthError as exc:  # e.g. no data for this gender in the file
-            rows, problem = [], exc
+        # The strength model (numpy) is the app's once a sheet is shown (ui/figure_work.py).
+        work = cast("SassApp", self.app).figure_work
+        rows, problem = work.strength_rows(sheet)  # e.g. no data for this gender in the file
         # Figure 5: the side label sits under "motion impetus".
         second.append(f"{sheet.side:<8}", header_style)
         second.append(
@@ -165,7 +151,7 @@ class StrengthPage(DataSheet):
         if not rows:
             lines.append(Text(f"{problem}."))
             return Text("\n").join(lines)
-        limits = self._limits(sheet)
+        limits = work.joint_limits(sheet)
         outside_style = style("strengthpage--outside")
         first = self.page * self.page_size
         for row in rows[first : first + self.page_size]:

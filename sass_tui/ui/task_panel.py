@@ -59,6 +59,7 @@ from sass_tui.ui.task_words import (
     load_words,
     parse_people,
     posture_words,
+    strength_posture,
 )
 from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 
@@ -269,6 +270,11 @@ class TaskPanel(Vertical):
         a worker (on a copy of the figure, which edits change in place)."""
         self.figure, self.posture = figure, posture
         self.recompute()
+
+    def follow_row(self, figure: Figure, row: tuple[str, list[float]] | None) -> None:
+        """The figure shown and the strength page's row (its side and angles,
+        StrengthPage.row_angles; None: no row) as the task's posture."""
+        self.show_task(figure, () if row is None else strength_posture(*row))
 
     def recompute(self) -> None:
         if self.figure is None:
