@@ -30,6 +30,7 @@ if TYPE_CHECKING:  # the database costs start-up time: imported when first used
     from sass_tui.model.strength import StrengthSheet
     from sass_tui.model.worksheet import StrengthSettings
     from sass_tui.ui.figure_work import FigureWork
+    from sass_tui.ui.people_work import PeopleWork
     from sass_tui.ui.query_messages import DatabaseOpened
 
 
@@ -206,13 +207,20 @@ class SassApp(App):
         return self.spreadsheet.strength_page
 
     # --- the query screen and the selected list -------------------------------------
-    def open_query_screen(self) -> None:
-        # Imported when first used: the database costs ~60 ms of start-up
-        # that a user who never queries should not pay.
-        # deferred: ui.query_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.query_screen import QueryScreen
+    @property
+    def people_work(self) -> PeopleWork:
+        """The work on the database's people (ui/people_work.py: the query
+        screen, the selected list, a person's figure and strength, Family,
+        Predict's model), imported when a command first needs it: the
+        database costs ~60 ms of start-up that a user who never queries
+        should not pay."""
+        # deferred: ui.people_work (the db package, ui.query_screen, model.prediction) — off the first screen, the first screen's next frame (sass_tui/startup.py)
+        from sass_tui.ui.people_work import PeopleWork
 
-        self.push_screen(QueryScreen(self.query_lists, self.db_path))
+        return PeopleWork()
+
+    def open_query_screen(self) -> None:
+        self.push_screen(self.people_work.query_screen(self.query_lists, self.db_path))
 
     def open_figure_screen(self) -> None:
         self.push_screen(self.figure_work.figure_screen(self.session))
@@ -221,10 +229,8 @@ class SassApp(App):
         self.query_lists = event.lists
 
     def selected_count(self) -> int:
-        # deferred: db.lists — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.db.lists import SELECTED_LIST
-
-        return self.query_lists.count(SELECTED_LIST) if self.query_lists else 0
+        lists = self.query_lists
+        return self.people_work.selected_count(lists) if lists is not None else 0
 
     def selected_individual(self, index: int) -> Individual:
         """Person `index` of the selected list, read from the database; OSError
@@ -236,10 +242,7 @@ class SassApp(App):
 
     def person_figure(self, index: int, population: Figure) -> Figure:
         """The figure of person `index` of the selected list (report §12.4)."""
-        # deferred: db.individual — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.db.individual import person_figure as figure_of
-
-        return figure_of(self.selected_individual(index), population)
+        return self.people_work.person_figure(self.selected_individual(index), population)
 
 
 def make_app(db_path: str | Path | None = None, worksheet: str | None = None) -> SassApp:

@@ -1,13 +1,12 @@
 """Predict on the spreadsheet: the known values are typed on the
 message line with their names completed as they are typed; the prediction
-model is opened in a worker (the first fit takes about a second) and posted
-back as `PredictorOpened`.
+model is opened in a worker (ui/people_work.py's open_predictor_at: the first
+fit takes about a second) and posted back as `PredictorOpened`.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 from textual.message import Message
@@ -47,19 +46,6 @@ class PredictorOpened(Message):
     def __init__(self, predictor: Predictor) -> None:
         super().__init__()
         self.predictor = predictor
-
-
-def open_predictor_at(db_path: str | Path | None) -> Predictor:
-    """The predictor of the database the query screen uses (the default one
-    when no --db was given); run in a worker."""
-    # deferred: db.database — off the first screen, the first screen's next frame (sass_tui/startup.py)
-    from sass_tui.db.database import Database
-
-    db = Database.open(db_path)
-    try:
-        return db.predictor()
-    finally:
-        db.close()
 
 
 def interval_text(prediction: Prediction, field: str, unit: str, convert) -> str:

@@ -24,7 +24,6 @@ from sass_tui.ui.predict import (
     KnownSuggester,
     PredictorOpened,
     interval_text,
-    open_predictor_at,
 )
 from sass_tui.ui.spreadsheet_base import (
     AnswerError,
@@ -104,29 +103,12 @@ class PeopleCommands(SheetScreenBase):
 
     def _own_strength(self, index: int, person: Figure) -> StrengthData | str:
         """The person's own strength experiments, or why there are none."""
-        # deferred: db.individual, model.strength — off the first screen (sass_tui/startup.py)
-        from sass_tui.db.individual import strength_measurements
-        from sass_tui.model.strength import person_strength_data
-
         try:
             individual = self.sass_app.selected_individual(index)
         except (SassError, OSError) as exc:
             return f"{person.person}: strength not read ({exc})."
-        measurements = strength_measurements(individual)
-        if not measurements:
-            return (
-                f"{person.person} has no strength experiments in the database: "
-                "no strength is shown for them."
-            )
-        # The experiments at the person's own conditions (the global panel's).
-        conditions = (
-            person.strength_type,
-            person.motion_speed,
-            person.training_level,
-            person.fatigue_level,
-        )
         name = person.person or f"person {index + 1}"  # a person's figure is always named
-        return person_strength_data(name, person.gender, measurements, conditions)
+        return self.sass_app.people_work.own_strength(individual, person, name)
 
     def action_display_population(self) -> None:
         """Go back to the population figure."""
@@ -141,10 +123,8 @@ class PeopleCommands(SheetScreenBase):
     # --- Family ----------------------------------------------------------------
     def action_family(self) -> None:
         """Build a manikin family covering the population."""
-        # deferred: ui.family_screen — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.family_screen import FamilyScreen
-
-        self.app.push_screen(FamilyScreen(self.sass_app.db_path, self.session.population.gender))
+        app = self.sass_app
+        app.push_screen(app.people_work.family_screen(app.db_path, self.session.population.gender))
 
     # --- Predict ---------------------------------------------------------------
     def action_predict(self) -> None:
@@ -158,7 +138,7 @@ class PeopleCommands(SheetScreenBase):
     @work(thread=True, exclusive=True, group="predictor", exit_on_error=False)
     def open_predictor(self, db_path: str | Path | None) -> None:
         try:
-            self.post_message(PredictorOpened(open_predictor_at(db_path)))
+            self.post_message(PredictorOpened(self.sass_app.people_work.open_predictor(db_path)))
         except (SassError, OSError) as exc:
             self.post_message(WorkerSaid(f"Cannot open the prediction model: {exc}", "error"))
 
@@ -193,9 +173,6 @@ class PeopleCommands(SheetScreenBase):
         self._predict_from(text)
 
     def _predict_from(self, text: str) -> None:
-        # deferred: model.prediction — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.model.prediction import split_known
-
         if not text.strip():
             self.say("No known values given; nothing predicted.")
             return
@@ -203,7 +180,7 @@ class PeopleCommands(SheetScreenBase):
         predictor = self._predictor
         if predictor is None:
             return  # asked only once the model is open
-        known = predictor.parse_known(gender, split_known(text))
+        known = predictor.parse_known(gender, self.sass_app.people_work.split_known(text))
         prediction = predictor.predict(gender, known, nearest=1)
         figure = prediction.figure(self.session.population)
         self.session.show_person(figure, -1)

@@ -81,7 +81,7 @@ def test_the_family_screen_on_postgresql(drive, initialised, app_at):
 
 @pytest.mark.slow
 def test_the_spreadsheets_predictor_on_postgresql(initialised):
-    from sass_tui.ui.predict import open_predictor_at
+    from sass_tui.ui.people_work import open_predictor_at
 
     predicted = {}
     for engine, target in initialised.items():
