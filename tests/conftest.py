@@ -11,6 +11,14 @@ from _paths import ANSUR, REPORT
 
 from sass_tui.cli import main
 
+# One BLAS thread in each test process: `pytest -n 2` already keeps both cores
+# busy, and OpenBLAS's own threads then wait on each other (calibrating the
+# shipped target's weights, model/targets.py's Newton steps: 7.6 ms a step
+# with its threads under load, 1.5 ms with one; the model tests' CPU time
+# 47 s -> 39 s).  Set before anything imports numpy; `sass` processes the
+# tests start inherit it.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
 
 @pytest.fixture(scope="session")
 def report_lines() -> list[str]:
@@ -137,13 +145,12 @@ def postgres_template(cluster) -> str:
 
 
 @pytest.fixture(scope="session")
-def initialised(tmp_path_factory, cluster, postgres_template) -> dict[str, str]:
+def initialised(tmp_path_factory, cluster, postgres_template, shipped_db_file) -> dict[str, str]:
     """One database per engine after `sass db init`: {"sqlite": path, "postgresql": url}
     (PostgreSQL's a copy of `postgres_template`)."""
-    from sass_tui.cli import main
 
     sqlite_path = str(tmp_path_factory.mktemp("engines") / "sass.db")
-    assert main(["db", "init", "--force", "--db", sqlite_path]) == 0
+    shutil.copy(shipped_db_file, sqlite_path)  # what `sass db init` builds
     url = cluster.create_database("initialised", postgres_template)
     return {"sqlite": sqlite_path, "postgresql": url}
 

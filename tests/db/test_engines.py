@@ -126,7 +126,7 @@ print(sorted(seen))
 
 @pytest.mark.slow
 @needs_postgres
-def test_four_imports_at_once_and_four_readers(cluster, ansur_dir, tmp_path):
+def test_four_imports_at_once_and_four_readers(cluster, postgres_template, ansur_dir, tmp_path):
     """Four `sass db import-ansur` processes at once, four readers counting
     throughout: every reader sees each label with none or all of its women,
     and at the end each label holds exactly its women, no person twice.
@@ -134,8 +134,7 @@ def test_four_imports_at_once_and_four_readers(cluster, ansur_dir, tmp_path):
     still one chunk (db/ansur.py's CHUNK_ROWS) stored in one transaction of
     several COPYs, as with the whole file (1,986 women), which took 20 s of
     CPU, most of it the readers counting while the imports ran; now 6 s."""
-    url = cluster.create_database("load")
-    assert main(["db", "init", "--force", "--db", url]) == 0
+    url = cluster.create_database("load", postgres_template)  # after `sass db init`
     female = tmp_path / "ANSUR_II_FEMALE_Public.csv"
     with (ansur_dir / "ANSUR_II_FEMALE_Public.csv").open(encoding="latin-1") as f:
         female.write_text("".join(line for _, line in zip(range(301), f)), encoding="latin-1")
@@ -225,9 +224,10 @@ sys.exit(main(sys.argv[1:]))
 
 @pytest.mark.slow
 @needs_postgres
-def test_a_client_killed_mid_import_leaves_the_database_as_before(cluster, ansur_dir):
-    url = cluster.create_database("killed")
-    assert main(["db", "init", "--force", "--db", url]) == 0
+def test_a_client_killed_mid_import_leaves_the_database_as_before(
+    cluster, postgres_template, ansur_dir
+):
+    url = cluster.create_database("killed", postgres_template)  # after `sass db init`
     db = Database.open(url)
     try:
         before = db.people_count()
@@ -261,10 +261,8 @@ def test_a_client_killed_mid_import_leaves_the_database_as_before(cluster, ansur
 
 @pytest.mark.slow
 @needs_postgres
-def test_a_server_restarted_between_two_commands(cluster, capsys):
-    url = cluster.create_database("restarted")
-    assert main(["db", "init", "--force", "--db", url]) == 0
-    capsys.readouterr()
+def test_a_server_restarted_between_two_commands(cluster, postgres_template, capsys):
+    url = cluster.create_database("restarted", postgres_template)  # after `sass db init`
     query = "gender = female AND stature > 170 cm"
     db = Database.open(url)
     try:

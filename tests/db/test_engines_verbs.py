@@ -90,9 +90,8 @@ def test_a_target_is_the_same_on_both_engines(with_target, initialised, capsys):
 
 
 @pytest.mark.slow
-def test_a_target_is_dropped_on_postgresql(initialised, cluster, tmp_path, capsys):
-    url = cluster.create_database("targets")
-    assert main(["db", "init", "--force", "--db", url]) == 0
+def test_a_target_is_dropped_on_postgresql(cluster, postgres_template, tmp_path, capsys):
+    url = cluster.create_database("targets", postgres_template)  # after `sass db init`
     sample = write_sample(tmp_path / "civ.csv", civilian_women(500))
     argv = ["target", "t1", "--gender", "female", "--sample", str(sample), "--db", url]
     assert main(argv) == 0
@@ -321,13 +320,14 @@ def test_a_person_is_the_same_on_both_engines(initialised, engine_dirs, capsys, 
 
 
 @pytest.mark.slow
-def test_the_lists_on_postgresql_import_and_outlive_a_restart(cluster, ansur_dir):
+def test_the_lists_on_postgresql_import_and_outlive_a_restart(
+    cluster, postgres_template, ansur_dir
+):
     """The query screen's Input DB imports into PostgreSQL (staged, one
     transaction); after a server restart the lists start again, empty, and work."""
     from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 
-    url = cluster.create_database("lists")
-    assert main(["db", "init", "--force", "--db", url]) == 0
+    url = cluster.create_database("lists", postgres_template)  # after `sass db init`
     lists = QueryLists.open(url)
     try:
         female = ansur_dir / "ANSUR_II_FEMALE_Public.csv"

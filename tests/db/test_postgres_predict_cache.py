@@ -48,10 +48,9 @@ def key_of(url: str) -> str:
 
 @pytest.mark.slow
 def test_the_second_predict_loads_the_cache_and_an_import_refits(
-    cluster, private_cache, fits, ansur_dir, capsys
+    cluster, postgres_template, private_cache, fits, ansur_dir, capsys
 ):
-    url = cluster.create_database("predict_cache")
-    assert main(["db", "init", "--force", "--db", url]) == 0
+    url = cluster.create_database("predict_cache", postgres_template)  # after `sass db init`
     url = url.replace("postgresql://sass@", "postgresql://sass:s3cret@")
     capsys.readouterr()
     before = key_of(url)

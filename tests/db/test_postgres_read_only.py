@@ -26,10 +26,9 @@ READ_ONLY = "the database is open read-only"
 
 
 @pytest.fixture(scope="module")
-def shared(cluster, tmp_path_factory) -> str:
+def shared(cluster, postgres_template, tmp_path_factory) -> str:
     """A database after `sass db init`, holding one target (`civ`)."""
-    url = cluster.create_database("read_only")
-    assert main(["db", "init", "--force", "--db", url]) == 0
+    url = cluster.create_database("read_only", postgres_template)
     sample = write_sample(tmp_path_factory.mktemp("sample") / "civ.csv", civilian_women(400))
     assert main(["target", "civ", "--gender", "female", "--sample", str(sample), "--db", url]) == 0
     return url

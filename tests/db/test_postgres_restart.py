@@ -14,13 +14,10 @@ QUERY = "gender = female AND stature > 170 cm"
 
 
 @pytest.fixture(scope="module")
-def restarted_url(cluster) -> str:
+def restarted_url(cluster, postgres_template) -> str:
     """A database after `sass db init`, with a password in its address (the
     throwaway cluster trusts every local connection and ignores it)."""
-    from sass_tui.cli import main
-
-    url = cluster.create_database("restarted_lists")
-    assert main(["db", "init", "--force", "--db", url]) == 0
+    url = cluster.create_database("restarted_lists", postgres_template)
     return url.replace("postgresql://sass@", "postgresql://sass:s3cret@")
 
 
