@@ -10,11 +10,10 @@ from sass_tui.cli.database_access import open_database
 from sass_tui.cli.options import SubParsers, add_db_option, warn_of_a_password
 from sass_tui.cli.progress import progress_for
 from sass_tui.db import accelerator
-from sass_tui.db.addresses import is_url
+from sass_tui.db.addresses import is_url, shown
 from sass_tui.db.database import Database, configured_target, init_postgres
 from sass_tui.db.default import SYNTHETIC_LABEL, create_default_database
 from sass_tui.db.flatfile import FlatFileError, FlatFiles
-from sass_tui.db.postgres import shown
 from sass_tui.db.query import QueryError, compile_query
 from sass_tui.db.replacing import Held, keep_targets, what_init_replaces
 from sass_tui.db.schema import DatabaseError, connect, default_db_path

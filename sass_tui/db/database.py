@@ -19,7 +19,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
-from sass_tui.db.addresses import is_url
+from sass_tui.db.addresses import is_url, shown
 from sass_tui.db.default import fill_default, open_database
 from sass_tui.db.schema import DatabaseError, transaction
 
@@ -111,9 +111,6 @@ class Database:
     def name(self) -> str:
         """The database as shown to a user (a PostgreSQL address without its password)."""
         if is_url(self.target):
-            # deferred: db.postgres — off sass query, sass db init (sass_tui/startup.py)
-            from sass_tui.db.postgres import shown
-
             return shown(str(self.target))
         if self.dialect == "sqlite":
             for _seq, name, file in self._conn.execute("PRAGMA database_list"):
@@ -250,7 +247,7 @@ def init_postgres(url: str, progress: Progress | None = None, *, force: bool) ->
     default people stored in one transaction, replacing everyone (with
     `force`; without it a database holding people is refused)."""
     # deferred: db.postgres — off sass db init (sass_tui/startup.py)
-    from sass_tui.db.postgres import connect_postgres, import_staged, people_count, shown
+    from sass_tui.db.postgres import connect_postgres, import_staged, people_count
 
     conn = connect_postgres(url, create=True)
     try:
