@@ -26,16 +26,9 @@ from typing import Any, BinaryIO, NoReturn, cast
 
 import numpy as np
 
+from sass_tui.db.people_store import PeopleBatch, girth_mass_fractions, store_people
 from sass_tui.db.progress import Cancel, Progress, Steps
-from sass_tui.db.schema import (
-    GIRTH_NAMES,
-    PERSON_ATTRIBUTES,
-    PeopleBatch,
-    check_writable,
-    girth_mass_fractions,
-    store_people,
-    transaction,
-)
+from sass_tui.db.schema import GIRTH_NAMES, PERSON_ATTRIBUTES, check_writable, transaction
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES, PUBLISHED_TO_CANONICAL
 from sass_tui.model.paths import PathError, regular_file

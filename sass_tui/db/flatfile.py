@@ -35,16 +35,15 @@ from typing import Any, NoReturn
 
 import numpy as np
 
+from sass_tui.db.people_store import PeopleBatch, store_people
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
     JOINT_LIMIT_NAMES,
     MASS_ONLY_SEGMENTS,
-    PeopleBatch,
     SqlRow,
     check_writable,
-    store_people,
     transaction,
 )
 from sass_tui.db.scope import source_label

@@ -16,7 +16,8 @@ import pytest
 from big_flat_files import write_big_flat_files
 
 from sass_tui.db.database import Database
-from sass_tui.db.default import create_default_database, shipped_ansur_files
+from sass_tui.db.default import create_default_database
+from sass_tui.db.default_people import shipped_ansur_files
 from sass_tui.db.dialect import dialect_of
 from sass_tui.db.fit import fit_test, load_family
 from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists

@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 
 from sass_tui.db import accelerator, column_copy, copy_file
 from sass_tui.db.individual import fetch_individual
+from sass_tui.db.people_store import PeopleBatch, delete_people, store_people
 from sass_tui.db.query import CompiledQuery, Query, compile_query, run_query
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
@@ -25,11 +26,8 @@ from sass_tui.db.schema import (
     JOINT_LIMIT_NAMES,
     QUERY_TABLES,
     STRENGTH_PARAMETERS,
-    PeopleBatch,
     connect,
-    delete_people,
     recreate_schema,
-    store_people,
     transaction,
 )
 from sass_tui.model.strength import MOTION_NAMES
@@ -662,7 +660,8 @@ def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path):
         f"sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
         "from test_scale_paths import generated_batch\n"
         "from sass_tui.db import schema\n"
-        "from sass_tui.db.schema import connect, store_people, transaction\n"
+        "from sass_tui.db.people_store import store_people\n"
+        "from sass_tui.db.schema import connect, transaction\n"
         "conn = connect(sys.argv[1])\n"
         "conn.execute('PRAGMA cache_size = 5')\n"  # pages spill to the file before COMMIT
         "batch = generated_batch(np.random.default_rng(4), np.arange(600_001, 600_301))\n"
