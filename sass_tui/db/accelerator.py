@@ -42,11 +42,7 @@ from __future__ import annotations
 
 import sqlite3
 from collections.abc import Callable, Iterable
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
-
-from sass_tui.db import copy_file
-from sass_tui.db.copy_file import LOCK, cache_folder
 
 # Unsupported and database_path are the command line's too (`sass db copy`).
 from sass_tui.db.copy_file import Unsupported as Unsupported
@@ -169,16 +165,3 @@ def refresh(
     except ImportError:
         raise DatabaseError("the column copy needs DuckDB: pip install 'sass-tui[fast]'") from None
     return refresh_now(conn, wanted, progress)
-
-
-def forget(path: Path) -> None:
-    """Drop the copy of the database at `path`, in memory and on disk (after
-    `db init`: no later history can use it; errors ignored)."""
-    # deferred: shutil — off sass query --count (sass_tui/startup.py)
-    import shutil
-
-    with LOCK:
-        held = copy_file.OPEN_COPIES.pop(path, None)
-        if held is not None:
-            held.duck.close()
-    shutil.rmtree(cache_folder(path), ignore_errors=True)
