@@ -14,7 +14,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from sass_tui.db.default import shipped_ansur_files
+from sass_tui.db.default_people import shipped_ansur_files
 
 CHILD = """
 import resource, sys, time

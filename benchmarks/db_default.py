@@ -13,7 +13,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from sass_tui.db.default import create_default_database, shipped_ansur_files
+from sass_tui.db.default import create_default_database
+from sass_tui.db.default_people import shipped_ansur_files
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect
 from sass_tui.db.values import load_values

@@ -33,7 +33,7 @@ from pathlib import Path
 from db_million import SAMPLE
 from scale_databases import database, median_time
 
-from sass_tui.db import accelerator
+from sass_tui.db import accelerator, copy_file
 from sass_tui.db.query import Query, compile_query
 from sass_tui.db.schema import connect
 
@@ -117,21 +117,21 @@ def main() -> None:
             conn = connect(path)
             expected = sqlite_count(conn)  # also warms the page cache
             sqlite_time, _n = median_time(lambda: sqlite_count(conn), runs=3)
-            accelerator.CACHE_DIR = args.cache / "columns"
-            shutil.rmtree(accelerator.CACHE_DIR, ignore_errors=True)
-            accelerator._STORES.clear()
-            accelerator.BACKGROUND = False  # built in this thread, to time it
+            copy_file.CACHE_DIR = args.cache / "columns"
+            shutil.rmtree(copy_file.CACHE_DIR, ignore_errors=True)
+            copy_file.OPEN_COPIES.clear()
+            copy_file.BACKGROUND = False  # built in this thread, to time it
             t0 = time.perf_counter()
             first = Query(conn, compile_query(SAMPLE)).count()
             build_time = time.perf_counter() - t0
             assert accelerator.last_answer == "copy", accelerator.last_answer
-            accelerator._STORES.clear()  # as the next process: the copy opened from disk
+            copy_file.OPEN_COPIES.clear()  # as the next process: the copy opened from disk
             t0 = time.perf_counter()
             Query(conn, compile_query(SAMPLE)).count()
             reload_time = time.perf_counter() - t0
             duck_time, got = median_time(lambda: Query(conn, compile_query(SAMPLE)).count())
             assert got == first == expected, (got, first, expected)
-            copy_size = sum(f.stat().st_size for f in accelerator.CACHE_DIR.rglob("*"))
+            copy_size = sum(f.stat().st_size for f in copy_file.CACHE_DIR.rglob("*"))
             note("people", f"{people:,}")
             note("people matching", f"{expected:,}")
             note("SQLite file", f"{path.stat().st_size / 1e9:.1f} GB")

@@ -20,8 +20,9 @@ from pathlib import Path
 import numpy as np
 
 from sass_tui.db.individual import fetch_individual
+from sass_tui.db.people_store import PeopleBatch, girth_mass_fractions, store_people
 from sass_tui.db.query import run_query
-from sass_tui.db.schema import PeopleBatch, connect, girth_mass_fractions, store_people, transaction
+from sass_tui.db.schema import connect, transaction
 from sass_tui.model import datasets
 from sass_tui.model.names import GIRTH, GLOBAL
 from sass_tui.model.percentile import Z95

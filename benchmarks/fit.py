@@ -23,7 +23,8 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from sass_tui.db.fit import fit_test, load_family
+from sass_tui.db.family import load_family
+from sass_tui.db.fit import fit_test
 from sass_tui.db.predict import open_predictor
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect

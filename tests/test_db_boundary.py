@@ -57,7 +57,7 @@ def test_one_caller_decides_how_an_import_is_staged():
     # PostgreSQL stages an import in a SQLite file and copies it in one
     # transaction; whether to is decided once, in db/database.py's
     # store_people, for the command line (Database) and the screens
-    # (QueryLists) alike; init_postgres is PostgreSQL's `sass db init` only.
+    # (QueryLists) alike, and PostgreSQL's `sass db init` (init_postgres).
     callers = set()
     for path in (Path(__file__).resolve().parent.parent / "sass_tui").rglob("*.py"):
         for function in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
@@ -69,4 +69,4 @@ def test_one_caller_decides_how_an_import_is_staged():
                         == "import_staged"
                     ):
                         callers.add(f"{path.parent.name}/{path.name}:{function.name}")
-    assert callers == {"db/database.py:store_people", "db/database.py:init_postgres"}
+    assert callers == {"db/database.py:store_people"}

@@ -10,13 +10,13 @@ from sass_tui.cli.database_access import open_database
 from sass_tui.cli.options import SubParsers, add_db_option, warn_of_a_password
 from sass_tui.cli.progress import progress_for
 from sass_tui.db import accelerator
-from sass_tui.db.addresses import is_url
+from sass_tui.db.addresses import is_url, shown
+from sass_tui.db.ansur import import_ansur_into
 from sass_tui.db.database import Database, configured_target, init_postgres
 from sass_tui.db.default import SYNTHETIC_LABEL, create_default_database
-from sass_tui.db.flatfile import FlatFileError, FlatFiles
-from sass_tui.db.postgres import shown
+from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_into
 from sass_tui.db.query import QueryError, compile_query
-from sass_tui.db.replacing import Held, keep_targets, what_init_replaces
+from sass_tui.db.replacing import Held, forget_column_copy, keep_targets, what_init_replaces
 from sass_tui.db.schema import DatabaseError, connect, default_db_path
 from sass_tui.db.scope import VIRTUAL_PREFIX
 from sass_tui.model.text import printable
@@ -106,7 +106,7 @@ def run_init(args: argparse.Namespace) -> int:
     # taking disk space.  None is built: the default people are fewer than
     # the copy's threshold (accelerator.MIN_PEOPLE), counted by SQLite.
 
-    accelerator.forget(path.resolve())
+    forget_column_copy(path.resolve())
     print(f"created {path}: {_built(counts)}")
     if held.targets:
         conn = connect(path)
@@ -193,7 +193,7 @@ def run_import_flat(args: argparse.Namespace) -> int:
         center_of_mass=Path(args.cmass),
         **{k: Path(v) for k, v in strength.items()},
     )
-    count = open_database(args, create=True).import_flat(files)
+    count = import_flat_into(open_database(args, create=True), files)
     print(f"imported {count} people")
     return 0
 
@@ -201,7 +201,7 @@ def run_import_flat(args: argparse.Namespace) -> int:
 def run_import_ansur(args: argparse.Namespace) -> int:
     db = open_database(args, create=True)
     bar = progress_for(sys.stderr)
-    counts = db.import_ansur(args.files, progress=bar, label=args.source)
+    counts = import_ansur_into(db, args.files, progress=bar, label=args.source)
     if bar:
         bar.finish()
     print(f"imported {counts['male']} men and {counts['female']} women")

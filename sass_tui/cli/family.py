@@ -7,7 +7,7 @@ import sys
 
 from sass_tui.cli.database_access import open_db
 from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
-from sass_tui.db.fit import load_family
+from sass_tui.db.family import load_family
 from sass_tui.db.query import parse_option
 from sass_tui.model.accommodation import measure_field, write_family
 from sass_tui.model.figure import Figure

@@ -11,6 +11,7 @@ import sys
 
 from sass_tui.cli.database_access import open_database
 from sass_tui.cli.options import SubParsers, add_db_option
+from sass_tui.db.individual import person_records
 from sass_tui.db.person_text import person_lines
 
 
@@ -32,7 +33,7 @@ def register(commands: SubParsers) -> None:
 def run(args: argparse.Namespace) -> int:
     db = open_database(args)
     try:
-        records = db.person_records(args.ids)
+        records = person_records(db, args.ids)
     finally:
         db.close()
     out = sys.stdout

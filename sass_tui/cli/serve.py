@@ -135,7 +135,7 @@ def run(args: argparse.Namespace) -> int:
     print(f"sass serve: web sessions read and write files in {workdir}", file=err)
     if db is not None:
         # deferred: db.postgres — off sass serve (sass_tui/startup.py)
-        from sass_tui.db.postgres import shown
+        from sass_tui.db.addresses import shown
 
         named = shown(db) if isinstance(db, str) else db  # never the password
         print(f"sass serve: database {named}{' (read-only)' if args.read_only else ''}", file=err)

@@ -1,10 +1,13 @@
 """What `--db` / $SASS_DB names: a SQLite file, or a PostgreSQL database by its
-address.  Imports nothing, so the TUI's start (which must not import numpy)
-can tell the two apart."""
+address, and an address as shown to a user.  Imports only urllib.parse
+(which pathlib imports already), so the TUI's start (which must not import
+numpy) can tell the two apart, and a SQLite path need not import
+db/postgres.py to show an address."""
 
 from __future__ import annotations
 
 from pathlib import Path
+from urllib.parse import urlsplit, urlunsplit
 
 URL_PREFIXES = ("postgresql://", "postgres://")
 # The verbs that take a PostgreSQL database, as the TUI does; the others read a SQLite file.
@@ -37,3 +40,14 @@ def is_url(target: str | Path | None) -> bool:
 def sqlite_only(what: str) -> str:
     """The refusal of a PostgreSQL address by a command that reads a SQLite file."""
     return f"{what} reads a SQLite file only; on PostgreSQL use {POSTGRES_VERBS}"
+
+
+def shown(url: str) -> str:
+    """The address without its password, for messages."""
+    parts = urlsplit(url)
+    if parts.password is None:
+        return url
+    host = parts.hostname or ""
+    user = parts.username or ""
+    port = f":{parts.port}" if parts.port else ""
+    return urlunsplit(parts._replace(netloc=f"{user}:***@{host}{port}"))

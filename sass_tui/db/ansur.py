@@ -26,16 +26,10 @@ from typing import Any, BinaryIO, NoReturn, cast
 
 import numpy as np
 
+from sass_tui.db import database
+from sass_tui.db.people_store import PeopleBatch, girth_mass_fractions, store_people
 from sass_tui.db.progress import Cancel, Progress, Steps
-from sass_tui.db.schema import (
-    GIRTH_NAMES,
-    PERSON_ATTRIBUTES,
-    PeopleBatch,
-    check_writable,
-    girth_mass_fractions,
-    store_people,
-    transaction,
-)
+from sass_tui.db.schema import GIRTH_NAMES, PERSON_ATTRIBUTES, check_writable, transaction
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES, PUBLISHED_TO_CANONICAL
 from sass_tui.model.paths import PathError, regular_file
@@ -580,3 +574,22 @@ def import_ansur(
     check_writable(conn)
     with transaction(conn):
         return store_ansur(conn, paths, label=label, progress=Steps(progress, cancel, "the import"))
+
+
+def import_ansur_into(
+    db: database.Database,
+    files: Sequence[str | Path],
+    *,
+    label: str,
+    progress: Progress | None = None,
+    cancel: Cancel | None = None,
+) -> dict[str, int]:
+    """Import ANSUR II format files into `db` in one transaction, as
+    db/database.py's store_people decides (on PostgreSQL through a staging
+    file); people per gender."""
+    with db.connection() as conn:
+        return database.store_people(
+            conn,
+            lambda storing: import_ansur(storing, files, progress, label=label, cancel=cancel),
+            cancel,
+        )

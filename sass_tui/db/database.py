@@ -4,9 +4,12 @@ transactions, its lock and the differences between the engines.
 `Database.open(target)` opens a SQLite file (a path; the default database
 when None) or a PostgreSQL database (`postgresql://user@host/db`; also from
 $SASS_DB).  The command line's verbs and the screens ask it for answers
-(`query`, `count`, `import_ansur`, `import_flat`, `init`) and never see a
-connection; functions of this layer that take a connection are handed it
-here.  Engine errors leave as DatabaseErrors (`engine_error`).
+(`query`, `count`, `predictor`, ...) or hand it to this layer's functions
+that take one (the imports of db/ansur.py and db/flatfile.py, the family of
+db/family.py, the records of db/individual.py: each module imports what it
+needs at its top, reached only by the verb or screen that needs it), and
+never see a connection; functions of this layer that take a connection are
+handed it here (`connection()`).  Engine errors leave as DatabaseErrors (`engine_error`).
 """
 
 from __future__ import annotations
@@ -14,22 +17,19 @@ from __future__ import annotations
 import os
 import sys
 import threading
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
-from sass_tui.db.addresses import is_url
+from sass_tui.db.addresses import is_url, shown
 from sass_tui.db.default import fill_default, open_database
 from sass_tui.db.schema import DatabaseError, transaction
 
 if TYPE_CHECKING:
-    from sass_tui.db.flatfile import FlatFiles
     from sass_tui.db.progress import Cancel, Progress
     from sass_tui.db.query import CompiledQuery, Query
     from sass_tui.db.query_tree import Dialect
-    from sass_tui.db.values import Values
-    from sass_tui.model.accommodation import Family
     from sass_tui.model.prediction import Predictor
 
 T = TypeVar("T")
@@ -111,9 +111,6 @@ class Database:
     def name(self) -> str:
         """The database as shown to a user (a PostgreSQL address without its password)."""
         if is_url(self.target):
-            # deferred: db.postgres — off sass query, sass db init (sass_tui/startup.py)
-            from sass_tui.db.postgres import shown
-
             return shown(str(self.target))
         if self.dialect == "sqlite":
             for _seq, name, file in self._conn.execute("PRAGMA database_list"):
@@ -154,15 +151,6 @@ class Database:
         with self.connection():
             return list(self.query(query).person_rows())
 
-    def person_records(self, keys: Sequence[str]) -> list[dict[str, object]]:
-        """Everything stored about the people `keys` name (an id or a name), in
-        order (db/individual.py's person_record)."""
-        # deferred: db.individual — off sass query, sass query --count, sass population … (sass_tui/startup.py)
-        from sass_tui.db.individual import find_person, person_record
-
-        with self.connection() as conn:
-            return [person_record(conn, find_person(conn, key)) for key in keys]
-
     def people_count(self) -> int:
         with self.connection() as conn:
             return int(conn.execute("SELECT count(*) FROM person").fetchone()[0])
@@ -175,73 +163,27 @@ class Database:
         with self.connection() as conn:
             return open_predictor(conn)
 
-    def family(
-        self,
-        gender: str,
-        measures: tuple[str, ...],
-        coverage: float,
-        method: str,
-        population: str,
-        progress: Progress | None = None,
-        cancel: Cancel | None = None,
-    ) -> tuple[Family, Values]:
-        """A manikin family (db/fit.py) and the people's values of its first two
-        measures (the scatter it is drawn over)."""
-        # deferred: db.fit (db.values, numpy) — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-        from sass_tui.db.fit import family_and_scatter
 
-        with self.connection() as conn:
-            return family_and_scatter(
-                conn, gender, measures, coverage, method, population, progress, cancel
-            )
-
-    # --- writing -------------------------------------------------------------
-
-    def import_ansur(
-        self,
-        files: Sequence[str | Path],
-        *,
-        label: str,
-        progress: Progress | None = None,
-        cancel: Cancel | None = None,
-    ) -> dict[str, int]:
-        """Import ANSUR II format files in one transaction; people per gender."""
-        # deferred: db.ansur — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-        from sass_tui.db.ansur import import_ansur
-
-        with self.connection() as conn:
-            return store_people(
-                conn,
-                lambda storing: import_ansur(storing, files, progress, label=label, cancel=cancel),
-                cancel,
-            )
-
-    def import_flat(
-        self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
-    ) -> int:
-        """Import legacy flat files in one transaction; how many people."""
-        # deferred: db.flatfile — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-        from sass_tui.db.flatfile import import_flat_files
-
-        with self.connection() as conn:
-            return store_people(
-                conn, lambda storing: import_flat_files(storing, files, progress, cancel), cancel
-            )
-
-
-def store_people(conn: Any, load: Callable[[Any], T], cancel: Cancel | None = None) -> T:
+def store_people(
+    conn: Any, load: Callable[[Any], T], cancel: Cancel | None = None, *, replace_all: bool = False
+) -> T:
     """The one place that decides how an import stores people, for the command
-    line and the screens alike (Database.import_ansur and import_flat, which
-    QueryLists's imports call): on SQLite `load` runs on the file's own
-    connection (its transaction is the import's); on PostgreSQL it runs on a
-    SQLite staging file whose people are then copied in one transaction
-    (db/postgres.py's import_staged), so a failure or a cancel stores nothing."""
+    line and the screens alike (db/ansur.py's import_ansur_into and
+    db/flatfile.py's import_flat_into, which QueryLists's imports call, and
+    init_postgres): on SQLite `load` runs on
+    the file's own connection (its transaction is the import's); on
+    PostgreSQL it runs on a SQLite staging file whose people are then copied
+    in one transaction (db/postgres.py's import_staged), so a failure or a
+    cancel stores nothing.  `replace_all` (PostgreSQL's `sass db init` only;
+    SQLite's rebuilds the file, db/default.py): everyone stored before goes."""
     # db/dialect.py's dialect_of, which imports db/postgres.py: off sass query.
     if getattr(conn, "dialect", "sqlite") == "postgresql":
         # deferred: db.postgres — off sass query, sass db init (sass_tui/startup.py)
         from sass_tui.db.postgres import import_staged
 
-        return import_staged(conn, load, cancel=cancel)
+        return import_staged(conn, load, cancel=cancel, replace_all=replace_all)
+    if replace_all:
+        raise ValueError("replace_all is PostgreSQL's: a SQLite file is rebuilt (db/default.py)")
     return load(conn)
 
 
@@ -249,12 +191,9 @@ def init_postgres(url: str, progress: Progress | None = None, *, force: bool) ->
     """`sass db init` on PostgreSQL: the schema made (or migrated) and the
     default people stored in one transaction, replacing everyone (with
     `force`; without it a database holding people is refused)."""
-    # deferred: db.postgres — off sass db init (sass_tui/startup.py)
-    from sass_tui.db.postgres import connect_postgres, import_staged, people_count, shown
-
-    conn = connect_postgres(url, create=True)
+    database = Database.open(url, create=True)
     try:
-        held = people_count(conn)
+        held = database.people_count()
         if held and not force:
             raise DatabaseError(
                 f"{shown(url)} holds {held} people; `sass db init --force` replaces them "
@@ -265,6 +204,7 @@ def init_postgres(url: str, progress: Progress | None = None, *, force: bool) ->
             with transaction(staging):
                 return fill_default(staging, progress)
 
-        return import_staged(conn, stage, replace_all=True)
+        with database.connection() as conn:
+            return store_people(conn, stage, replace_all=True)
     finally:
-        conn.close()
+        database.close()

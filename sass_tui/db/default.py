@@ -33,13 +33,11 @@ from sass_tui.db.schema import (
     connect,
     default_db_path,
     recreate_schema,
-    store_people,
     write_refused,
 )
-from sass_tui.db.scope import DEMONSTRATION_SOURCE, virtual_source
+from sass_tui.db.scope import DEMONSTRATION_SOURCE
 from sass_tui.model.atomic import remove_stale_temporaries, temporary_name
 
-ANSUR_FILES = ("ANSUR_II_MALE_Public.csv.gz", "ANSUR_II_FEMALE_Public.csv.gz")
 SYNTHETIC_LABEL = DEMONSTRATION_SOURCE  # what a query reaches only when it names it
 
 
@@ -109,13 +107,6 @@ def default_needs_building(path: Path) -> bool:
 
 def holds_people(conn: sqlite3.Connection) -> bool:
     return conn.execute("SELECT 1 FROM person LIMIT 1").fetchone() is not None
-
-
-def shipped_ansur_files() -> list[Path]:
-    # deferred: model.datasets — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-    from sass_tui.model import datasets
-
-    return [datasets.directory() / "ansur2" / name for name in ANSUR_FILES]
 
 
 def people_count(conn: sqlite3.Connection) -> int:
@@ -221,48 +212,11 @@ def _build(
 
 
 def fill_default(conn: sqlite3.Connection, progress: Progress | None = None) -> dict[str, int]:
-    """Store the shipped people, and the shipped target and virtual population
-    `nhanes-2017-2020` made from them (db/virtual.py's store_shipped_in),
-    inside the caller's transaction.  Returns the people stored per source."""
-    # deferred: db.ansur, db.flatfile, db.virtual, model.datasets — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-    from sass_tui.db.ansur import DEFAULT_LABEL, store_ansur
-    from sass_tui.db.flatfile import FlatFiles, read_flat_files
-    from sass_tui.db.virtual import store_shipped_in
-    from sass_tui.model import datasets
+    """Store the shipped people, the shipped target and the virtual population
+    made from them inside the caller's transaction (db/default_people.py's
+    store_default_people); the people stored per source.  For SQLite's build
+    here and PostgreSQL's staging file (db/database.py's init_postgres)."""
+    # deferred: db.default_people (db.ansur, db.flatfile, db.virtual, numpy) — off sass query, sass query --count, sass person … (sass_tui/startup.py)
+    from sass_tui.db.default_people import store_default_people
 
-    synthetic = read_flat_files(FlatFiles.in_directory(datasets.directory() / "db"))
-    synthetic.source = [SYNTHETIC_LABEL] * len(synthetic)
-    store_people(conn, synthetic, replace=False)
-    files = shipped_ansur_files()
-    missing = [str(f) for f in files if not f.is_file()]
-    if missing:
-        raise DatabaseError(f"the shipped ANSUR II files are missing: {', '.join(missing)}")
-    # Making the shipped target and virtual people takes about as long as
-    # reading the survey (benchmarks/virtual.py): each gets half the bar.
-    halves = _Halves(progress)
-    counts = store_ansur(conn, files, label=DEFAULT_LABEL, progress=halves.first)
-    virtual = store_shipped_in(conn, progress=halves.second)
-    return {
-        SYNTHETIC_LABEL: len(synthetic),
-        DEFAULT_LABEL: sum(counts.values()),
-        virtual_source(datasets.NHANES_NAME): virtual,
-    }
-
-
-class _Halves:
-    """One progress bar for two steps: `first(done, total)` fills its first
-    half, `second(done, total)` its second, in the first's units (each a Progress)."""
-
-    def __init__(self, progress: Progress | None) -> None:
-        self.progress = progress
-        self.half = 0  # the first step's total, once it has reported
-
-    def first(self, done: int, total: int) -> None:
-        self.half = total
-        if self.progress is not None:
-            self.progress(done, 2 * total)
-
-    def second(self, done: int, total: int) -> None:
-        half = self.half or total
-        if self.progress is not None:
-            self.progress(half + done * half // total, 2 * half)
+    return store_default_people(conn, progress)

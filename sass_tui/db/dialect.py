@@ -12,9 +12,11 @@ from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
-from sass_tui.db.postgres import WRITE_LOCK
 from sass_tui.db.query_tree import Dialect, placeholder
 from sass_tui.db.schema import check_writable, transaction
+
+# pg_advisory_xact_lock key of sass's writers (db/postgres.py): "SASS" in ASCII.
+WRITE_LOCK = 0x53415353
 
 
 def dialect_of(conn: Any) -> Dialect:

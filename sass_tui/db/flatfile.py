@@ -35,16 +35,16 @@ from typing import Any, NoReturn
 
 import numpy as np
 
+from sass_tui.db import database
+from sass_tui.db.people_store import PeopleBatch, store_people
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
     JOINT_LIMIT_NAMES,
     MASS_ONLY_SEGMENTS,
-    PeopleBatch,
     SqlRow,
     check_writable,
-    store_people,
     transaction,
 )
 from sass_tui.db.scope import source_label
@@ -448,6 +448,21 @@ def import_flat_files(
     with transaction(conn), interruptible(conn, cancel, "the import"):
         store_people(conn, batch)
     return len(batch)
+
+
+def import_flat_into(
+    db: database.Database,
+    files: FlatFiles,
+    progress: Progress | None = None,
+    cancel: Cancel | None = None,
+) -> int:
+    """Import legacy flat files into `db` in one transaction, as
+    db/database.py's store_people decides (on PostgreSQL through a staging
+    file); how many people."""
+    with db.connection() as conn:
+        return database.store_people(
+            conn, lambda storing: import_flat_files(storing, files, progress, cancel), cancel
+        )
 
 
 # --- writing (the default data set generator) ------------------------------

@@ -33,6 +33,7 @@ from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS
 from sass_tui.model.vocabulary import EXPERIMENT_PARAMETERS
 
 if TYPE_CHECKING:
+    from sass_tui.db.database import Database
     from sass_tui.model.figure import Figure
 
 
@@ -283,6 +284,13 @@ def person_record(conn: sqlite3.Connection, id_num: int) -> dict[str, object]:
 # (side, motion, 7 angles in JOINT_AXES order in deg, strength N-m,
 #  (strength_type, motion_speed, training_level, fatigue_level))
 StrengthMeasurement = tuple[str, str, tuple[float, ...], float, tuple[str, float, float, float]]
+
+
+def person_records(database: Database, keys: Sequence[str]) -> list[dict[str, object]]:
+    """Everything stored about the people `keys` name (an id or a name), in
+    order (person_record), read under the database's lock: `sass person`."""
+    with database.connection() as conn:
+        return [person_record(conn, find_person(conn, key)) for key in keys]
 
 
 def strength_measurements(person: Individual) -> list[StrengthMeasurement]:

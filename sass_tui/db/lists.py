@@ -32,10 +32,11 @@ from typing import TYPE_CHECKING, Any, ParamSpec, TypeVar
 
 from sass_tui.db import accelerator
 from sass_tui.db.addresses import is_url
+from sass_tui.db.ansur import import_ansur_into
 from sass_tui.db.database import Database, engine_errors
 from sass_tui.db.dialect import dialect_of, mark_of
 from sass_tui.db.fit import fit_test, limit_histograms
-from sass_tui.db.flatfile import FlatFiles
+from sass_tui.db.flatfile import FlatFiles, import_flat_into
 from sass_tui.db.individual import fetch_individual, person_record
 from sass_tui.db.population import population_of
 from sass_tui.db.postgres import connect_postgres
@@ -422,7 +423,7 @@ class QueryLists:
         self, files: FlatFiles, progress: Progress | None = None, cancel: Cancel | None = None
     ) -> int:
         """Load flat files (one transaction: a failure or a cancel stores nothing)."""
-        return self._database.import_flat(files, progress, cancel)
+        return import_flat_into(self._database, files, progress, cancel)
 
     @_serialised
     def import_ansur(
@@ -434,7 +435,9 @@ class QueryLists:
     ) -> int:
         """Load an ANSUR II format file under the source `label` (one
         transaction: a failure or a cancel stores nothing); returns how many."""
-        counts = self._database.import_ansur([path], label=label, progress=progress, cancel=cancel)
+        counts = import_ansur_into(
+            self._database, [path], label=label, progress=progress, cancel=cancel
+        )
         return sum(counts.values())
 
     @_serialised

@@ -36,7 +36,7 @@ import datetime as _dt
 import sqlite3
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -189,8 +189,8 @@ def population_of(
         modelled[group] = 0
         for gender in counts:
             people = block[genders == gender]
-            weights = None if target is None else target.of(values.ids[genders == gender])
-            stats = _percentiles(people, column_done, weights).reshape(len(rows), 3, 3)
+            ids = values.ids[genders == gender]
+            stats = _percentiles(people, column_done, target, ids).reshape(len(rows), 3, 3)
             have = np.sum(~np.isnan(people), axis=0).reshape(len(rows), 3)
             modelled[group] += _fill_from_report(data, gender, stats, have, scales[gender])
             data.sections[gender] = stats
@@ -220,8 +220,9 @@ def _own_stature_and_mass(
     data = PopulationData(group=GLOBAL, title=title, path="")
     for gender in counts:
         mine = genders == gender
-        weights = None if target is None else target.of(values.ids[mine])
-        stats = _percentiles(columns[mine], lambda: None, weights).reshape(len(GLOBAL_ROWS), 1, 3)
+        stats = _percentiles(columns[mine], lambda: None, target, values.ids[mine]).reshape(
+            len(GLOBAL_ROWS), 1, 3
+        )
         have = np.sum(~np.isnan(columns[mine]), axis=0)
         notes = []
         for r, row in enumerate(GLOBAL_ROWS):
@@ -366,24 +367,26 @@ def _selection_words(query: str | None, ids: Sequence[int] | None, ids_from: str
 
 
 def _percentiles(
-    people: np.ndarray, column_done: Callable[[], None], weights: np.ndarray | None = None
+    people: np.ndarray,
+    column_done: Callable[[], None],
+    target: TargetWeights | None = None,
+    ids: Any = None,  # the people's ids (Values.ids) when a target is given
 ) -> np.ndarray:
     """Per column, 5th/50th/95th of the values present (NaN below MIN_PEOPLE);
-    weighted empirical percentiles when `weights` are given."""
+    weighted empirical percentiles of the people `ids` when a `target` is
+    given (its module, db/targets.py, is imported only when one is)."""
     out = np.full((people.shape[1], len(PERCENTILES)), np.nan)
+    weights = None if target is None or ids is None else target.of(ids)
     for k in range(people.shape[1]):
         column_done()
         column = people[:, k]
         present = ~np.isnan(column)
         if present.sum() < MIN_PEOPLE:
             continue
-        if weights is None:
+        if target is None or weights is None:
             out[k] = np.percentile(column[present], PERCENTILES)
         else:
-            # deferred: model.targets — off sass population (sass_tui/startup.py)
-            from sass_tui.model.targets import weighted_percentile
-
-            out[k] = weighted_percentile(column, weights, PERCENTILES)
+            out[k] = target.percentiles(column, weights, PERCENTILES)
     return out
 
 

@@ -36,14 +36,18 @@ here and only when a PostgreSQL address is given.
 
 from __future__ import annotations
 
+import logging
 import os
+import shutil
 import sqlite3
+import tempfile
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from contextlib import ExitStack, contextmanager
 from pathlib import Path
 from typing import Any, TypeVar
-from urllib.parse import urlsplit, urlunsplit
 
+from sass_tui.db.addresses import shown
+from sass_tui.db.dialect import WRITE_LOCK
 from sass_tui.db.progress import Cancel, interruptible
 from sass_tui.db.query_tree import Dialect
 from sass_tui.db.schema import (
@@ -59,25 +63,12 @@ from sass_tui.db.schema import (
 from sass_tui.model.atomic import process_alive
 from sass_tui.model.served import served_read_only
 
-# pg_advisory_xact_lock key of sass's writers: "SASS" in ASCII.
-WRITE_LOCK = 0x53415353
 # Older PostgreSQL schema version -> the statements that bring it to the next one.
 MIGRATIONS: dict[str, tuple[str, ...]] = {}
 CONNECT_TIMEOUT_S = 10
 T = TypeVar("T")
 # SQLite's declared types -> PostgreSQL's.
 _TYPES = {"INTEGER": "BIGINT", "REAL": "DOUBLE PRECISION", "TEXT": "TEXT", "BLOB": "BYTEA"}
-
-
-def shown(url: str) -> str:
-    """The address without its password, for messages."""
-    parts = urlsplit(url)
-    if parts.password is None:
-        return url
-    host = parts.hostname or ""
-    user = parts.username or ""
-    port = f":{parts.port}" if parts.port else ""
-    return urlunsplit(parts._replace(netloc=f"{user}:***@{host}{port}"))
 
 
 def _driver() -> Any:
@@ -98,9 +89,6 @@ def _quiet_copy_teardown() -> None:
     a cancel) and raises the first; with no logging set up, Python printed
     that line on the terminal before sass's own message about the first.
     Only that record of psycopg's logger is dropped; its others go on."""
-    # deferred: logging — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-    import logging
-
     driver_log = logging.getLogger("psycopg")
     if _drop_copy_teardown not in driver_log.filters:
         driver_log.addFilter(_drop_copy_teardown)
@@ -422,9 +410,6 @@ STAGING_PREFIX = "sass-staging-"
 
 def sweep_staging(folder: Path) -> list[Path]:
     """Remove the staging folders in `folder` whose process is gone; returns them."""
-    # deferred: shutil — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-    import shutil
-
     swept: list[Path] = []
     try:
         entries = list(folder.glob(f"{STAGING_PREFIX}*-*"))
@@ -452,9 +437,6 @@ def import_staged(
     (handed to `stage` too) also stops the copy, up to its commit, with
     Cancelled and the transaction rolled back: nothing stored, as a cancel
     of SQLite's import (db/progress.py's interruptible)."""
-    # deferred: tempfile — off sass query, sass query --count, sass person … (sass_tui/startup.py)
-    import tempfile
-
     conn.refuse_writes("an import")
     sweep_staging(Path(tempfile.gettempdir()))
     with tempfile.TemporaryDirectory(prefix=f"{STAGING_PREFIX}{os.getpid()}-") as folder:

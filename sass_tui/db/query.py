@@ -702,15 +702,23 @@ class Query:
 
     def count(self) -> int:
         if self.dialect == "sqlite":
-            # deferred: db.accelerator — its imports cost start-up time; counts only
-            from sass_tui.db import accelerator
-
-            fast = accelerator.count(self.conn, self.compiled)  # type: ignore[arg-type]
+            fast = self._from_copy(ids=False)
             if fast is not None:  # None below ~200k people, or without DuckDB
-                return fast
+                return int(fast)
         sql = f"SELECT count(*) FROM {self.compiled.from_clause()} WHERE {self.where}"
         count: int = self.conn.execute(sql, self.params).fetchone()[0]
         return count
+
+    def _from_copy(self, *, ids: bool) -> Any:
+        """The count (or the ids) from the column copy of a SQLite file
+        (db/accelerator.py); None when SQLite must answer."""
+        # deferred: db.accelerator — off sass query, sass population, sass predict … (sass_tui/startup.py)
+        from sass_tui.db import accelerator
+
+        conn: Any = self.conn
+        return (
+            accelerator.ids(conn, self.compiled) if ids else accelerator.count(conn, self.compiled)
+        )
 
     def _rows(self, extra: str, params: tuple[object, ...]) -> list[dict[str, Any]]:
         sql = (
@@ -738,12 +746,9 @@ class Query:
 
     def ids(self) -> list[int]:
         if self.dialect == "sqlite":
-            # deferred: db.accelerator — off sass query, sass population, sass predict … (sass_tui/startup.py)
-            from sass_tui.db import accelerator
-
-            fast = accelerator.ids(self.conn, self.compiled)  # type: ignore[arg-type]
+            fast = self._from_copy(ids=True)
             if fast is not None:
-                return fast
+                return list(fast)
         sql = (
             f"SELECT p.id_num FROM {self.compiled.from_clause()} WHERE {self.where} "
             "ORDER BY p.id_num"

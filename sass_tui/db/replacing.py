@@ -5,17 +5,22 @@ ANSUR II and synthetic people) and deletes everyone else; a target population
 weighs is stored again: an ANSUR II person is found again by its source key
 (the survey's subject id), a synthetic person by its id (the flat files'
 numbering).  A target weighing anyone imported is deleted with them.  Either
-engine, through db/dialect.py."""
+engine, through db/dialect.py.  The column copy of a SQLite file replaced
+(db/accelerator.py) is dropped: no later history can use it."""
 
 from __future__ import annotations
 
+import shutil
 from collections.abc import Sequence
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from sass_tui.db import copy_file
 from sass_tui.db.ansur import DEFAULT_LABEL
+from sass_tui.db.copy_file import LOCK, cache_folder
 from sass_tui.db.default import SYNTHETIC_LABEL
 from sass_tui.db.dialect import dialect_of, mark_of
 from sass_tui.db.scope import virtual_source
@@ -179,3 +184,13 @@ def _has_table(conn: Any, name: str) -> bool:
             "WHERE table_name = %s AND table_schema = current_schema()"
         )
     return conn.execute(sql, (name,)).fetchone() is not None
+
+
+def forget_column_copy(path: Path) -> None:
+    """Drop the copy of the database at `path`, in memory and on disk (after
+    `db init`: no later history can use it; errors ignored)."""
+    with LOCK:
+        held = copy_file.OPEN_COPIES.pop(path, None)
+        if held is not None:
+            held.duck.close()
+    shutil.rmtree(cache_folder(path), ignore_errors=True)

@@ -33,7 +33,13 @@ from sass_tui.db.scope import VIRTUAL_PREFIX
 from sass_tui.db.values import load_values
 from sass_tui.model.datasets import NHANES_NAME
 from sass_tui.model.target_sample import Sample
-from sass_tui.model.targets import TargetError, Weighting, calibrate, kish_effective_n
+from sass_tui.model.targets import (
+    TargetError,
+    Weighting,
+    calibrate,
+    kish_effective_n,
+    weighted_percentile,
+)
 from sass_tui.model.text import printable
 from sass_tui.model.vocabulary import GENDERS
 
@@ -142,6 +148,18 @@ class TargetWeights:
         where = np.clip(np.searchsorted(self.ids, ids), 0, len(self.ids) - 1)
         out: npt.NDArray[np.float64] = np.where(self.ids[where] == ids, self.weights[where], 0.0)
         return out
+
+    def percentiles(
+        self,
+        column: npt.NDArray[np.float64],
+        weights: npt.NDArray[np.float64],
+        percents: Sequence[float],
+    ) -> npt.NDArray[np.float64]:
+        """Weighted empirical percentiles of `column` under `weights` (the
+        target's, `of` its people): model/targets.py's weighted_percentile,
+        for db/population.py, which imports neither module unless a target
+        is given (`sass population`'s row of sass_tui/startup.py)."""
+        return weighted_percentile(column, weights, percents)
 
 
 def base_query(population: str, gender: str) -> str:

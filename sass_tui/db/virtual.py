@@ -31,14 +31,9 @@ import numpy.typing as npt
 from sass_tui.db import database
 from sass_tui.db.ansur import derived_girth
 from sass_tui.db.dialect import dialect_of, mark_of, writing
+from sass_tui.db.people_store import PeopleBatch, delete_people, store_people
 from sass_tui.db.progress import Progress
-from sass_tui.db.schema import (
-    PERSON_TABLES,
-    SQLITE_ONLY_TABLES,
-    PeopleBatch,
-    delete_people,
-    store_people,
-)
+from sass_tui.db.schema import PERSON_TABLES, SQLITE_ONLY_TABLES
 from sass_tui.db.scope import virtual_query, virtual_source
 from sass_tui.db.targets import (
     BOTH,

@@ -19,6 +19,7 @@ from textual.widgets import DataTable, Label
 from textual_plotext import PlotextPlot
 
 from sass_tui.db.database import Database
+from sass_tui.db.family import family_and_scatter
 from sass_tui.db.fit import DEFAULT_POPULATION
 from sass_tui.model.accommodation import measure_field, write_family
 from sass_tui.model.errors import SassError
@@ -176,7 +177,8 @@ class FamilyScreen(SassScreen):
         try:
             db = Database.open(db_path)
             try:
-                family, people = db.family(
+                family, people = family_and_scatter(
+                    db,
                     gender,
                     measures,
                     coverage / 100.0,

@@ -9,11 +9,10 @@ from pathlib import Path
 
 from textual import work
 
-from sass_tui.db.addresses import is_url
+from sass_tui.db.addresses import is_url, shown
 from sass_tui.db.database import configured_target
 from sass_tui.db.default import create_default_database, default_needs_building
 from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, DatabaseBusy, QueryLists
-from sass_tui.db.postgres import shown
 from sass_tui.db.progress import Cancelled
 from sass_tui.db.schema import default_db_path
 from sass_tui.ui.base import SassScreen

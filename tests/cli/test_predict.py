@@ -14,8 +14,9 @@ import pytest
 
 from sass_tui.cli import main
 from sass_tui.db.ansur import import_ansur
+from sass_tui.db.people_store import delete_people
 from sass_tui.db.predict import cache_path, data_key, open_predictor
-from sass_tui.db.schema import connect, delete_people, transaction
+from sass_tui.db.schema import connect, transaction
 from sass_tui.model.figfile import read_fig
 from sass_tui.model.prediction import Predictor
 

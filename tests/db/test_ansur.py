@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.ansur import AnsurImportError, ellipse_axes
+from sass_tui.db.ansur import AnsurImportError, ellipse_axes, import_ansur_into
 from sass_tui.db.database import Database
 from sass_tui.db.dialect import mark_of
 from sass_tui.db.individual import fetch_individual
@@ -46,7 +46,7 @@ def ansur_target(engine, ansur_files, tmp_path_factory, request) -> tuple[str, d
     else:
         target = request.getfixturevalue("cluster").create_database("sass_ansur")
     with closing(Database.open(target, create=True)) as db:
-        counts = db.import_ansur(ansur_files, label="ansur2")
+        counts = import_ansur_into(db, ansur_files, label="ansur2")
     return target, counts
 
 
@@ -163,10 +163,10 @@ def test_reimport_does_not_duplicate(engine_target, engine_db_copy, ansur_files)
     before = row_counts(conn)
     ids = "SELECT id_num FROM person WHERE source = 'again' ORDER BY id_num"
     with closing(Database.open(engine_target)) as db:
-        assert db.import_ansur(ansur_files[1:], label="again") == {"male": 0, "female": 1986}
+        assert import_ansur_into(db, ansur_files[1:], label="again") == {"male": 0, "female": 1986}
         first = row_counts(conn), conn.execute(ids).fetchall()
         assert first[0]["person"] == before["person"] + 1986 == before["person"] + len(first[1])
-        db.import_ansur(ansur_files[1:], label="again")
+        import_ansur_into(db, ansur_files[1:], label="again")
     assert (row_counts(conn), conn.execute(ids).fetchall()) == first
 
 
@@ -186,7 +186,7 @@ def test_missing_column_rejected(engine_target, engine_db_copy, ansur_files, tmp
             AnsurImportError, match=r"broken.csv:1: missing column acromionradialelength"
         ),
     ):
-        db.import_ansur([ansur_files[0], bad], label="broken")
+        import_ansur_into(db, [ansur_files[0], bad], label="broken")
     assert row_counts(conn) == before
 
 

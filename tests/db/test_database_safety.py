@@ -19,7 +19,8 @@ from pathlib import Path
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.default import create_default_database, shipped_ansur_files
+from sass_tui.db.default import create_default_database
+from sass_tui.db.default_people import shipped_ansur_files
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.query import run_query

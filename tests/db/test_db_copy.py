@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db import accelerator
+from sass_tui.db import accelerator, copy_file
 from sass_tui.db.query import compile_query
 from sass_tui.db.schema import connect
 
@@ -117,21 +117,21 @@ def test_a_loaded_copy_is_not_written_again(db_path, tmp_path, monkeypatch):
     """A new process that loads the disk copy and counts leaves it as it is
     (it was rewritten whole, 140 MB at 5,000,000 people, by every process)."""
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
-    monkeypatch.setattr(accelerator, "BACKGROUND", False)
-    monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
-    accelerator._STORES.clear()
+    monkeypatch.setattr(copy_file, "BACKGROUND", False)
+    monkeypatch.setattr(copy_file, "CACHE_DIR", tmp_path / "columns")
+    copy_file.OPEN_COPIES.clear()
     conn = connect(db_path)
     try:
         done = accelerator.refresh(conn, accelerator.columns_named(compile_query(QUERY)))
         before = sorted(p.name for p in done.folder.iterdir())
-        accelerator._STORES.clear()  # as a new process
+        copy_file.OPEN_COPIES.clear()  # as a new process
         compiled = compile_query(QUERY)
         assert accelerator.count(conn, compiled) == sqlite_count(db_path, QUERY)
         assert accelerator.last_answer == "copy"
         assert sorted(p.name for p in done.folder.iterdir()) == before
     finally:
         conn.close()
-        accelerator._STORES.clear()
+        copy_file.OPEN_COPIES.clear()
 
 
 @pytest.mark.slow
@@ -140,7 +140,7 @@ def test_db_init_drops_the_old_copy(db_path, tmp_path, monkeypatch):
     built = sass(cache, "db", "copy", "--db", str(db_path))
     folder = Path(built.stdout.rsplit(" in ", 1)[1].strip())
     assert folder.is_dir()
-    monkeypatch.setattr(accelerator, "CACHE_DIR", cache / "sass" / "columns")
+    monkeypatch.setattr(copy_file, "CACHE_DIR", cache / "sass" / "columns")
     assert main(["db", "init", "--force", "--db", str(db_path)]) == 0
     assert not folder.exists()
 
@@ -162,7 +162,7 @@ def test_db_copy_of_a_file_that_is_not_a_database_is_a_message(tmp_path, capsys)
 
 
 def test_db_copy_of_a_wal_database_says_why(db_path, tmp_path, capsys, monkeypatch):
-    monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
+    monkeypatch.setattr(copy_file, "CACHE_DIR", tmp_path / "columns")
     raw = sqlite3.connect(db_path)
     raw.execute("PRAGMA journal_mode = WAL")
     raw.close()

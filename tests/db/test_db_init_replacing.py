@@ -16,6 +16,7 @@ from test_targets import civilian_women, write_sample
 
 from sass_tui.cli import main
 from sass_tui.db.database import Database
+from sass_tui.db.flatfile import import_flat_into
 from sass_tui.db.targets import (
     SHIPPED,
     TargetWeights,
@@ -41,7 +42,7 @@ def _holding_an_import_and_two_targets(db: str, tmp_path) -> None:
     assert main(["target", "civ", "--db", db, "--gender", "female", "--sample", str(sample)]) == 0
     opened = Database.open(db)
     try:
-        opened.import_flat(_flat(tmp_path))
+        import_flat_into(opened, _flat(tmp_path))
         with opened.connection() as conn:
             (jane,) = conn.execute("SELECT id_num FROM person WHERE name = 'JANE_DOE'").fetchone()
             civ = load_target(conn, "civ").target

@@ -11,14 +11,19 @@ from __future__ import annotations
 
 import threading
 from contextlib import closing
+from functools import partial
 
 import pytest
 from big_flat_files import write_big_flat_files
 
+from sass_tui.db.ansur import import_ansur_into
 from sass_tui.db.database import Database
-from sass_tui.db.default import create_default_database, shipped_ansur_files
+from sass_tui.db.default import create_default_database
+from sass_tui.db.default_people import shipped_ansur_files
 from sass_tui.db.dialect import dialect_of
-from sass_tui.db.fit import fit_test, load_family
+from sass_tui.db.family import load_family
+from sass_tui.db.fit import fit_test
+from sass_tui.db.flatfile import import_flat_into
 from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.population import population_of
 from sass_tui.db.progress import Cancelled, interruptible
@@ -74,16 +79,16 @@ def test_flat_import_reports_lines_and_a_cancel_stores_nothing(
         closing(db),
         pytest.raises(Cancelled, match="the import was cancelled; nothing was written"),
     ):
-        db.import_flat(files, progress, cancel)
+        import_flat_into(db, files, progress, cancel)
     assert len(reports) == 3
     assert _state(conn) == before
     # cancelled while storing (the SQLite statement is interrupted): rolled back
     with closing(Database.open(engine_target)) as db, pytest.raises(Cancelled):
-        db.import_flat(files, None, CancelAfter(1500 * 26 // 500 + 3))
+        import_flat_into(db, files, None, CancelAfter(1500 * 26 // 500 + 3))
     assert _state(conn) == before
     reports.clear()
     with closing(Database.open(engine_target)) as db:
-        assert db.import_flat(files, lambda d, t: reports.append((d, t))) == 1500
+        assert import_flat_into(db, files, lambda d, t: reports.append((d, t))) == 1500
     _checked(reports)
     assert reports[-1][1] == 1500 + 1500 * 25  # every line of both files
     assert _state(conn)[0]["person"] == before[0]["person"] + 1500
@@ -92,7 +97,7 @@ def test_flat_import_reports_lines_and_a_cancel_stores_nothing(
 def test_ansur_import_cancelled_is_rolled_back(engine_target, engine_db_copy):
     before = _state(engine_db_copy)
     with closing(Database.open(engine_target)) as db, pytest.raises(Cancelled):
-        db.import_ansur(shipped_ansur_files(), label="again", cancel=CancelAfter(2))
+        import_ansur_into(db, shipped_ansur_files(), label="again", cancel=CancelAfter(2))
     assert _state(engine_db_copy) == before
 
 
@@ -108,7 +113,10 @@ LAST_STORE = {
 @pytest.mark.parametrize(
     "open_importer",
     [
-        pytest.param(lambda target: (db := Database.open(target), db.import_flat), id="Database"),
+        pytest.param(
+            lambda target: (db := Database.open(target), partial(import_flat_into, db)),
+            id="Database",
+        ),
         pytest.param(
             lambda target: (lists := QueryLists.open(target), lists.import_files), id="QueryLists"
         ),

@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 from sass_tui.db.dialect import mark_of
-from sass_tui.db.fit import FitError, load_family
+from sass_tui.db.family import load_family
+from sass_tui.db.fit import FitError
 from sass_tui.db.query import run_query
 from sass_tui.model.accommodation import AccommodationError, chi2_quantile
 from sass_tui.model.figfile import read_fig

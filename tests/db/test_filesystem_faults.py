@@ -18,7 +18,7 @@ import pytest
 from _tmpfs import fill, mounted_tmpfs, remount_read_only
 
 from sass_tui.cli import main
-from sass_tui.db.default import shipped_ansur_files
+from sass_tui.db.default_people import shipped_ansur_files
 from sass_tui.db.flatfile import FlatFiles, import_flat_files
 from sass_tui.db.schema import connect
 

@@ -14,7 +14,7 @@ import pytest
 
 from sass_tui.cli import main
 from sass_tui.db.database import Database
-from sass_tui.db.flatfile import FlatFileError, FlatFiles, legacy_name
+from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_into, legacy_name
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.schema import row_counts
 from sass_tui.model.names import GIRTH, row_index
@@ -52,7 +52,7 @@ def test_import_and_fetch(engine_target, engine_db_copy, tmp_path):
         "elbow-strgh.db": "7,1,90,0,0,0,0,0,0,30.0,999.0\n",
     }
     with closing(Database.open(engine_target)) as db:
-        assert db.import_flat(_files(tmp_path, strength=strength)) == 1
+        assert import_flat_into(db, _files(tmp_path, strength=strength)) == 1
     person = fetch_individual(engine_db_copy, 7)
     assert person.name == "JANE_DOE" and person.handedness == "left"
     assert person.groups[GIRTH][row_index(GIRTH, "right_upper_arm")].tolist() == [
@@ -101,7 +101,7 @@ def test_bad_flat_file_rejects_whole_import(
         closing(Database.open(engine_target)) as db,
         pytest.raises(FlatFileError, match=message.replace("(", r"\(")),
     ):
-        db.import_flat(files)
+        import_flat_into(db, files)
     assert row_counts(engine_db_copy) == before
 
 
@@ -119,7 +119,7 @@ def test_database_error_mid_transaction_rolls_back(engine_target, engine_db_copy
         closing(Database.open(engine_target)) as db,
         pytest.raises(FlatFileError, match="elbow-strgh.db:1: experiment 2"),
     ):
-        db.import_flat(files)
+        import_flat_into(db, files)
     assert row_counts(engine_db_copy) == before
 
 
@@ -160,5 +160,5 @@ def test_default_flat_files_round_trip(engine_target, engine_db_copy, tmp_path):
     first = row_counts(engine_db_copy), engine_db_copy.execute(ids).fetchall()
     assert len(first[1]) == 200
     with closing(Database.open(engine_target)) as db:
-        assert db.import_flat(files) == 200
+        assert import_flat_into(db, files) == 200
     assert (row_counts(engine_db_copy), engine_db_copy.execute(ids).fetchall()) == first

@@ -21,9 +21,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
-from sass_tui.db.ansur import AnsurImportError, iter_ansur, read_ansur
+from sass_tui.db.ansur import AnsurImportError, import_ansur_into, iter_ansur, read_ansur
 from sass_tui.db.database import Database
-from sass_tui.db.flatfile import FlatFileError, FlatFiles
+from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_into
 from sass_tui.db.schema import row_counts
 
 MALE = DATASETS / "ansur2" / "ANSUR_II_MALE_Public.csv.gz"
@@ -78,7 +78,7 @@ def test_bad_values_are_refused_with_file_and_line(
     before = row_counts(engine_db_copy)
     path = _write(tmp_path, _with_value(male_lines, 7, column, value))
     with closing(Database.open(engine_target)) as db, pytest.raises(AnsurImportError) as caught:
-        db.import_ansur([path], label="ansur2")
+        import_ansur_into(db, [path], label="ansur2")
     assert str(caught.value).startswith(f"{path}:8: ")
     assert message in str(caught.value)
     assert row_counts(engine_db_copy) == before
@@ -87,7 +87,7 @@ def test_bad_values_are_refused_with_file_and_line(
 def test_a_byte_order_mark_is_read(engine_target, engine_db_copy, tmp_path, male_lines):
     path = _write(tmp_path, male_lines, bom=True)
     with closing(Database.open(engine_target)) as db:
-        counts = db.import_ansur([path], label="bom-test")
+        counts = import_ansur_into(db, [path], label="bom-test")
     assert counts == {"male": 30, "female": 0}
     stored = "SELECT count(*) FROM person WHERE source = 'bom-test' AND gender = 'male'"
     assert engine_db_copy.execute(stored).fetchone()[0] == 30
@@ -112,7 +112,7 @@ def test_duplicate_ids_name_both_lines(engine_target, engine_db_copy, tmp_path, 
             AnsurImportError, match=rf":21: duplicate subject id {first} \(first on line 3\)"
         ),
     ):
-        db.import_ansur([path], label="dup")
+        import_ansur_into(db, [path], label="dup")
     assert row_counts(engine_db_copy) == before
 
 
@@ -131,7 +131,7 @@ def test_gzip_files_import(engine_target, engine_db_copy, tmp_path, male_lines):
     path = tmp_path / "few.csv.gz"
     path.write_bytes(gzip.compress(("\n".join(male_lines) + "\n").encode("cp1252")))
     with closing(Database.open(engine_target)) as db:
-        assert db.import_ansur([path], label="gz") == {"male": 30, "female": 0}
+        assert import_ansur_into(db, [path], label="gz") == {"male": 30, "female": 0}
     assert engine_db_copy.execute("SELECT count(*) FROM person WHERE source = 'gz'").fetchone() == (
         30,
     )
@@ -193,13 +193,13 @@ def test_flat_files_refuse_absurd_values(engine_target, engine_db_copy, tmp_path
         closing(Database.open(engine_target)) as db,
         pytest.raises(FlatFileError, match=message.replace("(", r"\(")),
     ):
-        db.import_flat(_flat(tmp_path, person))
+        import_flat_into(db, _flat(tmp_path, person))
     assert row_counts(engine_db_copy) == before
 
 
 def test_flat_files_with_a_byte_order_mark(engine_target, engine_db_copy, tmp_path):
     with closing(Database.open(engine_target)) as db:
-        assert db.import_flat(_flat(tmp_path, PERSON, bom=True)) == 1
+        assert import_flat_into(db, _flat(tmp_path, PERSON, bom=True)) == 1
     assert engine_db_copy.execute("SELECT name FROM person WHERE id_num = 7").fetchone() == (
         "JANE_DOE",
     )
@@ -210,8 +210,8 @@ def test_imports_after_a_large_id_still_work(engine_target, engine_db_copy, tmp_
     male = gzip.decompress(MALE.read_bytes()).decode("cp1252").splitlines()[:3]
     path = _write(tmp_path, male)
     with closing(Database.open(engine_target)) as db:
-        db.import_flat(_flat(tmp_path, "999999999999" + PERSON[1:]))
-        assert db.import_ansur([path], label="after") == {"male": 2, "female": 0}
+        import_flat_into(db, _flat(tmp_path, "999999999999" + PERSON[1:]))
+        assert import_ansur_into(db, [path], label="after") == {"male": 2, "female": 0}
     ids = engine_db_copy.execute(
         "SELECT id_num FROM person WHERE source = 'after' ORDER BY id_num"
     ).fetchall()

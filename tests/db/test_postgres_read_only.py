@@ -15,7 +15,9 @@ from big_flat_files import write_big_flat_files
 from test_targets import civilian_women, write_sample
 
 from sass_tui.cli import main
+from sass_tui.db.ansur import import_ansur_into
 from sass_tui.db.database import Database
+from sass_tui.db.individual import person_records
 from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.schema import DatabaseError
 from sass_tui.model.served import READ_ONLY_ENV
@@ -145,8 +147,8 @@ def test_a_served_read_only_process_changes_nothing(
     db = Database.open(shared)
     try:
         with pytest.raises(DatabaseError, match=READ_ONLY):
-            db.import_ansur([ansur_dir / "ANSUR_II_MALE_Public.csv"], label="desk")
-        assert db.person_records(["17"])[0]
+            import_ansur_into(db, [ansur_dir / "ANSUR_II_MALE_Public.csv"], label="desk")
+        assert person_records(db, ["17"])[0]
     finally:
         db.close()
     assert held(shared) == before

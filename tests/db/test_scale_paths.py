@@ -16,8 +16,9 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-from sass_tui.db import accelerator
+from sass_tui.db import accelerator, column_copy, copy_file
 from sass_tui.db.individual import fetch_individual
+from sass_tui.db.people_store import PeopleBatch, delete_people, store_people
 from sass_tui.db.query import CompiledQuery, Query, compile_query, run_query
 from sass_tui.db.schema import (
     CENTER_OF_MASS_NAMES,
@@ -25,11 +26,8 @@ from sass_tui.db.schema import (
     JOINT_LIMIT_NAMES,
     QUERY_TABLES,
     STRENGTH_PARAMETERS,
-    PeopleBatch,
     connect,
-    delete_people,
     recreate_schema,
-    store_people,
     transaction,
 )
 from sass_tui.model.strength import MOTION_NAMES
@@ -106,11 +104,11 @@ def generated_db_file(tmp_path_factory) -> Path:
 def accelerated(monkeypatch, tmp_path):
     """The accelerator answering on any size, its disk copies in tmp_path."""
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
-    monkeypatch.setattr(accelerator, "BACKGROUND", False)
-    monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
-    accelerator._STORES.clear()
+    monkeypatch.setattr(copy_file, "BACKGROUND", False)
+    monkeypatch.setattr(copy_file, "CACHE_DIR", tmp_path / "columns")
+    copy_file.OPEN_COPIES.clear()
     yield tmp_path / "columns"
-    accelerator._STORES.clear()
+    copy_file.OPEN_COPIES.clear()
 
 
 @pytest.fixture()
@@ -223,9 +221,9 @@ def queries(draw, conn: sqlite3.Connection, depth: int = 0) -> str:
 
 def test_random_queries_agree(generated_db_file, tmp_path_factory, monkeypatch):
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
-    monkeypatch.setattr(accelerator, "BACKGROUND", False)
-    monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path_factory.mktemp("columns"))
-    accelerator._STORES.clear()
+    monkeypatch.setattr(copy_file, "BACKGROUND", False)
+    monkeypatch.setattr(copy_file, "CACHE_DIR", tmp_path_factory.mktemp("columns"))
+    copy_file.OPEN_COPIES.clear()
     conn = connect(generated_db_file)
 
     @settings(max_examples=80, deadline=None, suppress_health_check=list(HealthCheck))
@@ -238,7 +236,7 @@ def test_random_queries_agree(generated_db_file, tmp_path_factory, monkeypatch):
         agree()
     finally:
         conn.close()
-        accelerator._STORES.clear()
+        copy_file.OPEN_COPIES.clear()
 
 
 SAMPLE = (
@@ -289,16 +287,16 @@ def test_answer_follows_a_write_in_another_process_with_journal_off(db):
     other.execute("PRAGMA journal_mode = OFF")
     other.execute("UPDATE q_girth_neck SET x = 30.0 WHERE x <= 25")
     other.close()
-    accelerator._STORES.clear()  # as a new process: only the disk copy is left
+    copy_file.OPEN_COPIES.clear()  # as a new process: only the disk copy is left
     assert accelerator.count(db, compiled) == sqlite_count(db, compiled) > before
 
 
 def test_disk_copy_is_reused_by_the_next_process(db, accelerated):
     compiled = compile_query(SAMPLE)
     expected = accelerator.count(db, compiled)
-    (copy,) = accelerated.rglob(accelerator.COPY_FILE)
+    (copy,) = accelerated.rglob(copy_file.COPY_FILE)
     written = copy.stat().st_mtime_ns
-    accelerator._STORES.clear()
+    copy_file.OPEN_COPIES.clear()
     assert accelerator.count(db, compiled) == expected
     assert accelerator.last_answer == "copy"
     assert copy.stat().st_mtime_ns == written  # read, not written again
@@ -307,8 +305,8 @@ def test_disk_copy_is_reused_by_the_next_process(db, accelerated):
 def test_damaged_disk_copy_is_rebuilt(db, accelerated):
     compiled = compile_query(SAMPLE)
     expected = accelerator.count(db, compiled)
-    (copy,) = accelerated.rglob(accelerator.COPY_FILE)
-    accelerator._STORES.clear()
+    (copy,) = accelerated.rglob(copy_file.COPY_FILE)
+    copy_file.OPEN_COPIES.clear()
     copy.write_bytes(copy.read_bytes()[:5000])  # cut short
     assert accelerator.count(db, compiled) == expected == sqlite_count(db, compiled)
     assert accelerator.last_answer == "copy"
@@ -507,7 +505,7 @@ def test_random_writes_keep_the_copy_equal_to_sqlite(small_db_file, tmp_path_fac
     """After any sequence of writes, by sass or another program, every count
     and id list from the copy is SQLite's."""
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
-    monkeypatch.setattr(accelerator, "BACKGROUND", False)
+    monkeypatch.setattr(copy_file, "BACKGROUND", False)
 
     @settings(max_examples=30, deadline=None, suppress_health_check=list(HealthCheck))
     @given(st.lists(WRITES, min_size=1, max_size=6), st.integers(0, 2**32 - 1))
@@ -515,8 +513,8 @@ def test_random_writes_keep_the_copy_equal_to_sqlite(small_db_file, tmp_path_fac
     @example(steps=[("init", 1), ("delete", 4), ("sql delete", 1)], seed=0)
     def writes_agree(steps, seed):
         folder = tmp_path_factory.mktemp("writes")
-        monkeypatch.setattr(accelerator, "CACHE_DIR", folder / "columns")
-        accelerator._STORES.clear()
+        monkeypatch.setattr(copy_file, "CACHE_DIR", folder / "columns")
+        copy_file.OPEN_COPIES.clear()
         path = folder / "small.db"
         shutil.copyfile(small_db_file, path)
         conn = connect(path)
@@ -526,32 +524,32 @@ def test_random_writes_keep_the_copy_equal_to_sqlite(small_db_file, tmp_path_fac
             for step in steps:
                 if step[0] == "new process":  # a write, then a new process: the disk copy is older
                     _write(conn, path, ("sql update", step[1]), rng)
-                    accelerator._STORES.clear()
+                    copy_file.OPEN_COPIES.clear()
                 else:
                     _write(conn, path, step, rng)
                 assert_copy_is_sqlite(conn)
         finally:
             conn.close()
-            accelerator._STORES.clear()
+            copy_file.OPEN_COPIES.clear()
 
     writes_agree()
 
 
 def test_a_rebuild_runs_in_the_background_while_sqlite_answers(db, monkeypatch):
-    monkeypatch.setattr(accelerator, "BACKGROUND", True)
+    monkeypatch.setattr(copy_file, "BACKGROUND", True)
     compiled = compile_query(SAMPLE)
     assert accelerator.count(db, compiled) is None  # no copy yet: one is being built
     assert Query(db, compiled).count() == sqlite_count(db, compiled)
-    accelerator.wait()
+    column_copy.wait()
     assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
     # a write during a build: whichever comes first, the answer is SQLite's
     other = compile_query("girth.neck.y > 20 cm")
     assert accelerator.count(db, other) is None  # this column is being read
     with transaction(db):
         delete_people(db, sqlite_ids(db, other)[:5])
-    accelerator.wait()  # the build may have read before the write: then a new build
+    column_copy.wait()  # the build may have read before the write: then a new build
     assert accelerator.count(db, other) in (None, sqlite_count(db, other))
-    accelerator.wait()
+    column_copy.wait()
     assert accelerator.count(db, other) == sqlite_count(db, other)
     # `db init`: SQLite answers until the copy is rebuilt
     with transaction(db, "EXCLUSIVE"):
@@ -559,7 +557,7 @@ def test_a_rebuild_runs_in_the_background_while_sqlite_answers(db, monkeypatch):
         store_people(db, generated_batch(np.random.default_rng(9), np.arange(1, 101)))
     assert accelerator.count(db, compiled) is None
     assert Query(db, compiled).count() == sqlite_count(db, compiled)
-    accelerator.wait()
+    column_copy.wait()
     assert accelerator.count(db, compiled) == sqlite_count(db, compiled)
 
 
@@ -662,7 +660,8 @@ def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path):
         f"sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
         "from test_scale_paths import generated_batch\n"
         "from sass_tui.db import schema\n"
-        "from sass_tui.db.schema import connect, store_people, transaction\n"
+        "from sass_tui.db.people_store import store_people\n"
+        "from sass_tui.db.schema import connect, transaction\n"
         "conn = connect(sys.argv[1])\n"
         "conn.execute('PRAGMA cache_size = 5')\n"  # pages spill to the file before COMMIT
         "batch = generated_batch(np.random.default_rng(4), np.arange(600_001, 600_301))\n"

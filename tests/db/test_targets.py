@@ -244,9 +244,10 @@ def _state(db: str) -> object:
         opened.close()
 
 
-@pytest.mark.sqlite_only("people are deleted by SQLite's schema.delete_people alone")
+@pytest.mark.sqlite_only("people are deleted by SQLite's people_store.delete_people alone")
 def test_people_deleted_since_drop_out_of_the_sums(made, tmp_path):
-    from sass_tui.db.schema import connect, delete_people, transaction
+    from sass_tui.db.people_store import delete_people
+    from sass_tui.db.schema import connect, transaction
     from sass_tui.db.targets import load_target, weighted_count
 
     db = tmp_path / "sass.db"

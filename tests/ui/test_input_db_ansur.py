@@ -13,7 +13,7 @@ from test_query_screen import open_query_screen
 from test_work_progress import HeldWork, _answer, _state
 
 from sass_tui.db.ansur import looks_like_ansur
-from sass_tui.db.default import shipped_ansur_files
+from sass_tui.db.default_people import shipped_ansur_files
 from sass_tui.db.schema import connect
 from sass_tui.ui.progress import WorkBar
 

@@ -8,7 +8,7 @@ import pytest
 from _screen import message, settle
 from test_query_screen import SIZE, choose, open_query_screen, summary
 
-from sass_tui.db import accelerator
+from sass_tui.db import accelerator, copy_file
 from sass_tui.db.lists import QUERY_LIST
 from sass_tui.db.query import compile_query
 from sass_tui.db.schema import connect
@@ -20,9 +20,9 @@ QUERY = "gender = female AND stature > 165 cm"
 @pytest.mark.slow
 def test_query_db_list_comes_from_the_column_copy(drive, app_at, db, monkeypatch, tmp_path):
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)  # the copy answers on any size
-    monkeypatch.setattr(accelerator, "BACKGROUND", False)
-    monkeypatch.setattr(accelerator, "CACHE_DIR", tmp_path / "columns")
-    monkeypatch.setattr(accelerator, "_STORES", {})
+    monkeypatch.setattr(copy_file, "BACKGROUND", False)
+    monkeypatch.setattr(copy_file, "CACHE_DIR", tmp_path / "columns")
+    monkeypatch.setattr(copy_file, "OPEN_COPIES", {})
     answered = []
     answer = accelerator.answer_in_transaction
     monkeypatch.setattr(

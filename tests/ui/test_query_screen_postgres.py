@@ -11,7 +11,7 @@ from _screen import message, settle, wait_until
 from textual.widgets import DataTable
 
 from sass_tui.db.database import Database
-from sass_tui.db.fit import load_family
+from sass_tui.db.family import load_family
 from sass_tui.ui.family_screen import FamilyScreen
 from sass_tui.ui.query_screen import COMPLETE, QueryScreen, SummaryPanel
 
