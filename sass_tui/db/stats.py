@@ -204,8 +204,8 @@ def format_stats(table: StatsTable) -> str:
     """The table as `sass stats` prints it and the Stats screen shows it."""
     keys = [percentile_key(p) for p in (table.measures[0].percentiles if table.measures else {})]
     lines = []
-    if table.virtual:
-        lines.append(f"VIRTUAL people (predicted, not measured): {table.population}")
+    if table.virtual:  # the target's words say VIRTUAL and "not measured" first
+        lines.append(table.population)
     elif table.weighted_by:
         lines.append(f"weighted: {table.population}")
     lines.append(

@@ -112,6 +112,10 @@ def test_virtual_adults_20_to_59_have_nhanes_weighted_percentiles(shipped, capsy
     )
     assert table["virtual"] is True and "VIRTUAL" in table["population"]
     assert table["n"] == len(rows)
+    assert main(["stats", "--db", shipped, "--virtual", "nhanes-2017-2020", "stature"]) == 0
+    heading = capsys.readouterr().out.splitlines()[0]
+    assert heading.startswith("VIRTUAL people, not measured: nhanes-2017-2020 (")
+    assert heading.count("VIRTUAL") == 1  # said once, not twice
     for name, column in (("stature", "BMXHT"), ("mass", "BMXWT")):
         values = np.array([float(r[column]) for r in rows])
         for p in (5, 50, 95):

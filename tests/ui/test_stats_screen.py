@@ -43,7 +43,8 @@ def test_stats_of_every_real_person_then_of_the_virtual_civilians(drive, app_at,
                     f"no virtual table: {screen.message_line.history[-3:]} {screen.title_text()}"
                 ),
             )
-            assert screen.text.startswith("VIRTUAL people (predicted, not measured)")
+            assert screen.text.startswith("VIRTUAL people, not measured: nhanes-2017-2020 (")
+            assert screen.text.count("VIRTUAL") == 1
             title = str(screen.query_one("#stats-title").render())
             assert "VIRTUAL people of nhanes-2017-2020" in title
             await pilot.press("escape")
