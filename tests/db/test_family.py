@@ -16,7 +16,7 @@ from sass_tui.db.dialect import mark_of
 from sass_tui.db.fit import FitError, load_family
 from sass_tui.db.query import run_query
 from sass_tui.model.accommodation import AccommodationError, chi2_quantile
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 
 
 def _sass(*args: str) -> subprocess.CompletedProcess:

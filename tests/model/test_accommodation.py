@@ -25,7 +25,7 @@ from sass_tui.model.accommodation import (
     nearest_person,
     write_family,
 )
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.prediction import Predictor
 

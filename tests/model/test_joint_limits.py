@@ -11,7 +11,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.model.figfile import joint_limit_variable, parse_fig, render_fig
+from sass_tui.model.fig_reader import parse_fig
+from sass_tui.model.figfile import joint_limit_variable, render_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.hanim_x3d import render_hanim
 from sass_tui.model.names import AXES, JOINT_LIMITS, ROWS
