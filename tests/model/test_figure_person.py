@@ -7,7 +7,7 @@ import pytest
 
 from sass_tui.model.figure import Figure, FigureError
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
-from sass_tui.model.percentile import percentile_of
+from sass_tui.model.percentile_arrays import percentile_of
 from sass_tui.model.session import Session
 
 
