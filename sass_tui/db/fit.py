@@ -49,8 +49,9 @@ from sass_tui.db.query import (
     real_people_only,
 )
 from sass_tui.db.values import Values, load_values
-from sass_tui.model.accommodation import Family, build_family, measure_field
+from sass_tui.model.accommodation import Family, build_family
 from sass_tui.model.errors import SassError
+from sass_tui.model.measure_fields import measure_field
 from sass_tui.model.percent_capable import strength_limit_probability
 from sass_tui.model.targets import kish_effective_n
 from sass_tui.model.vocabulary import GENDERS
