@@ -95,7 +95,7 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     weighted_to = None
     if weighting is not None:
-        # deferred: db.shipped — off sass --help, sass family, sass --version (sass_tui/startup.py)
+        # deferred: db.shipped (db.targets) — off sass family (sass_tui/startup.py)
         from sass_tui.db.shipped import load_weights
 
         weighted_to = load_weights(conn, weighting)
