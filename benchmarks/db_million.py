@@ -35,7 +35,7 @@ CHUNK = 50_000
 
 
 def at_z(stats: np.ndarray, z: np.ndarray) -> np.ndarray:
-    """percentile.value_at, but from the normal score directly: value_at's
+    """percentile_arrays.value_at, but from the normal score directly: value_at's
     quantile function runs per element in Python, too slow for 75 million cells."""
     z = np.clip(z, -2.576, 2.576)  # the 0.5-99.5 percentile range
     v5, v50, v95 = stats[..., 0], stats[..., 1], stats[..., 2]

@@ -28,7 +28,7 @@ from sass_tui.db.fit import fit_test
 from sass_tui.db.predict import open_predictor
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect
-from sass_tui.model.accommodation import write_family
+from sass_tui.model.family_files import write_family
 from sass_tui.model.figfile import write_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.hanim_x3d import export_hanim

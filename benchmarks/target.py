@@ -23,7 +23,7 @@ from fit import median_ms  # benchmarks/fit.py: the one timing helper of both
 from sass_tui.db.fit import fit_test
 from sass_tui.db.schema import connect
 from sass_tui.db.targets import load_target, make_target, store_target
-from sass_tui.model.target_sample import read_sample
+from sass_tui.model.sample_file import read_sample
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))

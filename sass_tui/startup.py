@@ -32,7 +32,7 @@ class StartupPath(NamedTuple):
     status: int = 0  # the exit status the argv is expected to give
 
 
-# Off every path here: lark only reads a .fig file (model/figfile.py; a query
+# Off every path here: lark only reads a .fig file (model/fig_reader.py; a query
 # is parsed by the generated stand-alone parser, db/_query_parser.py); pint
 # only checks the unit table in the tests; pygltflib only reads exported glTF
 # files back in the tests.

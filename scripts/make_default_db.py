@@ -30,7 +30,7 @@ from sass_tui.db.schema import (
 )
 from sass_tui.model import datasets
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
-from sass_tui.model.percentile import value_at
+from sass_tui.model.percentile_arrays import value_at
 from sass_tui.model.popfile import read_population_file
 from sass_tui.model.strength import ISOKINETIC_DECAY_PER_DEG_S
 

@@ -9,8 +9,9 @@ from sass_tui.cli.database_access import open_db
 from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
 from sass_tui.db.family import load_family
 from sass_tui.db.query import parse_option
-from sass_tui.model.accommodation import measure_field, write_family
+from sass_tui.model.family_files import write_family
 from sass_tui.model.figure import Figure
+from sass_tui.model.measure_fields import measure_field
 from sass_tui.model.vocabulary import GENDERS
 
 DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.fit.DEFAULT_POPULATION (no import here)
@@ -94,7 +95,7 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     weighted_to = None
     if weighting is not None:
-        # deferred: db.shipped — off sass --help, sass family, sass --version (sass_tui/startup.py)
+        # deferred: db.shipped (db.targets) — off sass family (sass_tui/startup.py)
         from sass_tui.db.shipped import load_weights
 
         weighted_to = load_weights(conn, weighting)

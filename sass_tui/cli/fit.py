@@ -102,7 +102,7 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     target = None
     if weighting is not None:
-        # deferred: db.shipped — off sass --help, sass fit, sass --version (sass_tui/startup.py)
+        # deferred: db.shipped (db.targets) — off sass fit (sass_tui/startup.py)
         from sass_tui.db.shipped import load_weights
 
         target = load_weights(conn, weighting)

@@ -82,7 +82,7 @@ def run(args: argparse.Namespace) -> int:
         absent = missing_ids(conn, ids) if ids is not None else []
         target = None
         if weighting is not None:
-            # deferred: db.shipped — off sass --help, sass population, sass --version (sass_tui/startup.py)
+            # deferred: db.shipped (db.targets) — off sass population (sass_tui/startup.py)
             from sass_tui.db.shipped import load_weights
 
             target = load_weights(conn, weighting)

@@ -8,6 +8,14 @@ from __future__ import annotations
 from sass_tui.db.query import compile_query
 from sass_tui.db.shipped import load_weights
 from sass_tui.db.targets import weighted_count
+from sass_tui.model.targets import TargetError
+
+
+def answer_weighted(count: bool, conn, query, name: str) -> None:  # query: CompiledQuery
+    """`--target`/`--virtual` weight a count: print it, or refuse a listing."""
+    if not count:
+        raise TargetError("--target and --virtual weight a count: give --count too")
+    print_weighted_count(conn, query, name)
 
 
 def print_weighted_count(conn, query, name: str) -> None:  # query: db.query.CompiledQuery

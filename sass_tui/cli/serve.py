@@ -1,8 +1,9 @@
 """`sass serve`: the spreadsheet in a web browser (textual-serve, ui/serve.py).
 
 The options are checked here, before anything listens: a remote address only
-with --allow-remote, TLS files that can be read, a token file's token, the
-working directory; then ui/serve.py serves.
+with --allow-remote, TLS files that can be read, a token file's token; then
+cli/serving.py makes the working directory, finds the database and serves
+(ui/serve.py).
 """
 
 from __future__ import annotations
@@ -12,15 +13,12 @@ import importlib.util
 import secrets
 import socket
 import ssl
-import sys
-import time
 from ipaddress import ip_address
-from pathlib import Path
 from urllib.parse import urlsplit
 
 from sass_tui.cli.options import SubParsers, add_db_option, positive_number
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import LARGEST_TOKEN_FILE, data_dir, regular_file, user_path
+from sass_tui.model.paths import LARGEST_TOKEN_FILE, regular_file
 
 # secrets.token_urlsafe(32): 256 bits.  A token file's must have at least
 # 128 bits: 22 characters of the 64 a URL carries unquoted (6 bits each).
@@ -109,50 +107,12 @@ def run(args: argparse.Namespace) -> int:
     if args.public_url is not None:
         check_public_url(args.public_url)
     token = read_token(args.token_file) if args.token_file else new_token()
-    workdir = served_workdir(args.workdir)
-    # deferred: cli.database_access (the db package) — off sass serve (sass_tui/startup.py)
-    from sass_tui.cli.database_access import database_path
+    # After the checks: cli/serving.py brings the database and the web
+    # server (ui/serve.py: textual-serve, aiohttp).
+    # deferred: cli.serving (the db package, ui.serve, tempfile) — off sass serve (sass_tui/startup.py)
+    from sass_tui.cli.serving import start
 
-    db = database_path(args, args.read_only)
-    # After the checks: ui/serve.py imports textual-serve and aiohttp.
-    # deferred: ui.serve — off sass serve (sass_tui/startup.py)
-    from sass_tui.ui.serve import ServeOptions, serve
-
-    options = ServeOptions(
-        host=args.host,
-        port=args.port,
-        token=token,
-        workdir=workdir,
-        db=db,
-        read_only=args.read_only,
-        max_sessions=args.max_sessions,
-        loopback=loopback,
-        public_url=args.public_url,
-        ssl_context=ssl_context,
-        open_browser=args.open,
-    )
-    err = sys.stderr
-    print(f"sass serve: web sessions read and write files in {workdir}", file=err)
-    if db is not None:
-        # deferred: db.postgres — off sass serve (sass_tui/startup.py)
-        from sass_tui.db.addresses import shown
-
-        named = shown(db) if isinstance(db, str) else db  # never the password
-        print(f"sass serve: database {named}{' (read-only)' if args.read_only else ''}", file=err)
-    if not loopback and ssl_context is None:
-        print(
-            f"sass serve: warning: {args.host} serves plain HTTP: anyone on the network "
-            "between the browser and this machine can read the token and every session. "
-            "Give --certfile/--keyfile, or serve it behind a TLS reverse proxy "
-            "(docs/user-guide.md).",
-            file=err,
-        )
-    print(
-        f"sass serve: at most {args.max_sessions} sessions; Ctrl+C stops the server.",
-        file=err,
-        flush=True,
-    )
-    return serve(options)
+    return start(args, token=token, loopback=loopback, ssl_context=ssl_context)
 
 
 def is_loopback(host: str) -> bool:
@@ -211,23 +171,3 @@ def read_token(name: str) -> str:
             f"A-Z a-z 0-9 - _ (128 bits); {why}"
         )
     return token
-
-
-def served_workdir(name: str | None) -> Path:
-    """--workdir (made if missing), or a new directory under the user's data
-    directory; its real path, so that no link in it moves later."""
-    if name is None:
-        # deferred: tempfile — off sass serve (sass_tui/startup.py)
-        import tempfile
-
-        base = data_dir() / "serve"
-        base.mkdir(parents=True, exist_ok=True)
-        stamp = time.strftime("%Y%m%d-%H%M%S-")
-        return Path(tempfile.mkdtemp(prefix=stamp, dir=base)).resolve()
-
-    path = user_path(name)
-    try:
-        path.mkdir(parents=True, exist_ok=True)
-    except FileExistsError:
-        raise ServeError(f"--workdir {path}: not a directory") from None
-    return path.resolve()

@@ -30,7 +30,7 @@ from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, 
 from sass_tui.db.query import QueryError, compile_query
 from sass_tui.db.shipped import load_weights
 from sass_tui.db.stats import EVERY_MEASURE, check_unit, format_stats, stats_table
-from sass_tui.model.accommodation import measure_field
+from sass_tui.model.measure_fields import measure_field
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:

@@ -11,43 +11,17 @@ sample of the people a design is for (docs/target-populations.md).
 from __future__ import annotations
 
 import argparse
-import gzip
 import sys
-from typing import TYPE_CHECKING, TextIO
+from typing import TextIO
 
 from sass_tui.cli.database_access import open_db
-from sass_tui.cli.options import VIRTUAL_PREFIX, SubParsers, add_db_option
-from sass_tui.db.query import parse_option
-from sass_tui.db.targets import (
-    BOTH,
-    SHIPPED,
-    TargetExistsError,
-    check_name,
-    drop_target,
-    list_targets,
-    make_target,
-    store_target,
-    target_exists,
-)
-from sass_tui.model.datasets import NHANES, NHANES_NAME, NHANES_WEIGHT, shipped_text
-from sass_tui.model.errors import SassError
-from sass_tui.model.paths import regular_file
-from sass_tui.model.target_sample import SampleError, is_weighting_field, read_sample
+from sass_tui.cli.options import SubParsers, add_db_option
+from sass_tui.db.targets import SHIPPED, list_targets
+from sass_tui.model.datasets import NHANES_NAME, NHANES_WEIGHT
 from sass_tui.model.vocabulary import GENDERS
-
-if TYPE_CHECKING:
-    from sass_tui.db.targets import Target
-    from sass_tui.model.targets import Weighting
 
 DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.targets.DEFAULT_POPULATION (no import)
 DEFAULT_BY = "stature,mass"
-
-
-class TargetArgumentError(ValueError, SassError):
-    """Options of `sass target` that do not go together."""
-
-    def __init__(self, message: str = "", *, where: str | None = None) -> None:
-        SassError.__init__(self, message, where=where)
 
 
 def register(commands: SubParsers) -> None:
@@ -111,179 +85,19 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    if args.list or args.drop is not None:
-        if args.name or args.sample or args.gender or (args.list and args.drop is not None):
-            raise TargetArgumentError("--list and --drop NAME take no other arguments")
+    if args.list and not (args.name or args.sample or args.gender or args.drop is not None):
         conn = open_db(args)
         try:
-            if args.list:
-                _list(conn, sys.stdout)
-            else:
-                # deferred: db.virtual — off sass target (sass_tui/startup.py)
-                from sass_tui.db.virtual import drop_virtual
-
-                if args.drop.startswith(VIRTUAL_PREFIX):
-                    people = drop_virtual(conn, args.drop)
-                    print(f"dropped virtual population {args.drop} and its {people} virtual people")
-                else:
-                    drop_target(conn, args.drop)
-                    print(f"dropped target {args.drop}")
+            _list(conn, sys.stdout)
         finally:
             conn.close()
         return 0
-    if not args.name or not args.sample:
-        raise TargetArgumentError("give NAME and --sample FILE.csv (or --list, or --drop NAME)")
-    return _make(args)
+    # Making or dropping a target (and refusing options that do not go
+    # together) needs the sample reader, the virtual people and the weighting.
+    # deferred: cli.target_change (db.virtual, model.sample_file) — off sass target (sass_tui/startup.py)
+    from sass_tui.cli.target_change import change
 
-
-def by_fields(text: str) -> list[str]:
-    """`--by stature,mass,sittingheight` -> query-language fields."""
-    # deferred: model.accommodation — off sass target (sass_tui/startup.py)
-    from sass_tui.model.accommodation import measure_field
-
-    fields: list[str] = []
-    for name in (n.strip() for n in text.split(",")):
-        if not name:
-            continue
-        try:
-            field = measure_field(name)
-        except SassError as exc:
-            raise TargetArgumentError(f"--by: {exc}", where=name) from None
-        if not is_weighting_field(field):
-            raise TargetArgumentError(
-                f"--by: {name!r} is not a measurement; expected stature, mass or an "
-                "ANSUR II measurement",
-                where=name,
-            )
-        if field in fields:
-            raise TargetArgumentError(f"--by: {name!r} is listed twice", where=name)
-        fields.append(field)
-    if not 1 <= len(fields) <= 6:
-        raise TargetArgumentError(f"--by: give 1 to 6 measurements, not {len(fields)}")
-    return fields
-
-
-def _make(args: argparse.Namespace) -> int:
-    # Everything that needs no database first: a bad input touches nothing.
-    check_name(args.name)
-    fields = by_fields(args.by)
-    population = parse_option(args.population, "--population")  # parsed once, passed on
-    gender = args.gender or BOTH
-    sample = read_sample(
-        sample_text(args.sample),
-        fields,
-        args.sample,
-        weight=args.weight,
-        gender=args.gender,
-        need_gender=args.gender is None,
-    )
-    for column in sample.unused_weights:
-        print(
-            f"warning: {args.sample}: column {column!r} looks like a survey weight and is not "
-            f"used: every row counts once (give --weight {column} to use it)",
-            file=sys.stderr,
-        )
-    conn = open_db(args)
-    try:
-        if target_exists(conn, args.name) and not args.force and not _replace(args.name):
-            print("nothing changed", file=sys.stderr)
-            return 1
-        target, weights, weightings = make_target(
-            conn,
-            args.name,
-            gender,
-            sample,
-            args.sample,
-            population,
-            within_range=args.within_range,
-        )
-        virtual = None
-        if args.virtual:
-            # deferred: db.virtual — off sass target (sass_tui/startup.py)
-            from sass_tui.db.virtual import make_virtual, store_virtual
-
-            virtual = make_virtual(conn, args.name, sample, args.sample, gender)
-        store_target(conn, weights, replace=True)
-        if virtual is not None:
-            store_virtual(conn, virtual)
-    finally:
-        conn.close()
-    _report(target, weightings, sample.incomplete, sys.stdout)
-    if virtual is not None:
-        beyond = ", ".join(f"{n} {g}" for g, n in virtual.beyond.items())
-        print(
-            f"virtual population {args.name}: {len(virtual.people)} VIRTUAL people (their own "
-            f"stature, mass, age and gender; every other measure predicted from the real "
-            f"people); beyond the range the prediction was fitted on: {beyond}; "
-            f"effective n {virtual.target.effective_n:.0f} (sass fit --virtual {args.name})"
-        )
-    return 0
-
-
-def sample_text(name: str) -> str:
-    """The text of a sample: the shipped NHANES adults by name, a .gz file
-    decompressed, else the file."""
-    if name == NHANES_NAME:
-        return shipped_text(NHANES)
-    path = regular_file(name)
-    try:
-        data = path.read_bytes()
-        if name.endswith(".gz"):
-            data = gzip.decompress(data)
-        return data.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        raise SampleError(f"{name}: not UTF-8 text ({exc.reason})") from None
-    except (gzip.BadGzipFile, EOFError) as exc:
-        raise SampleError(f"{name}: not a gzip file ({exc})") from None
-
-
-def _replace(name: str) -> bool:
-    if not (sys.stdin.isatty() and sys.stderr.isatty()):
-        raise TargetExistsError(f"a target named {name!r} exists; give --force to replace it")
-    sys.stderr.write(f"a target named {name!r} exists; replace it? [y/N] ")
-    sys.stderr.flush()
-    return sys.stdin.readline().strip().lower() in ("y", "yes")
-
-
-def _report(target: Target, weightings: dict[str, Weighting], incomplete: int, out: TextIO) -> None:
-    survey = f" (each row weighted by its {target.weighted_by})" if target.weighted_by else ""
-    who = "male and female" if len(weightings) > 1 else target.gender
-    out.write(
-        f"target {target.name}: {target.people} {who} people of "
-        f"{target.population!r} weighted to {target.sample_rows} rows of {target.sample}{survey}"
-        + (f" ({incomplete} rows lacking a --by value left out)" if incomplete else "")
-        + "\n"
-    )
-    for gender, weighting in weightings.items():
-        if len(weightings) > 1:
-            out.write(f"{gender}: {weighting.people} people, {weighting.sample_rows} sample rows\n")
-        out.write(
-            f"{'':<24} {'':<10} {'mean':>8} {'SD':>7} {'5th':>8} {'50th':>8} {'95th':>8} "
-            f"{'outside':>8}\n"
-        )
-        for check in weighting.checks:
-            for word, summary in (
-                ("target", check.target),
-                ("weighted", check.weighted),
-                ("unweighted", check.unweighted),
-            ):
-                field = check.field.removeprefix("measure.") if word == "target" else ""
-                outside = f"{100 * check.outside_share:7.1f}%" if word == "target" else ""
-                m, sd, p5, p50, p95 = summary.as_list()
-                out.write(
-                    f"{field:<24} {word:<10} {m:8.2f} {sd:7.2f} {p5:8.2f} {p50:8.2f} {p95:8.2f} "
-                    f"{outside:>8}".rstrip()
-                    + "\n"
-                )
-        for warning in weighting.warnings():
-            prefix = f"{gender}: " if len(weightings) > 1 else ""
-            print(f"warning: {prefix}{warning}", file=sys.stderr)
-    out.write(
-        "outside: the share of the target's weight beyond every person's value "
-        "(weighting cannot reach it)\n"
-        f"effective sample size (Kish): {target.effective_n:.0f} of {target.people} people "
-        f"({target.percent_effective:.1f} %)\n"
-    )
+    return change(args)
 
 
 def _list(conn, out: TextIO) -> None:  # conn: the database layer's connection

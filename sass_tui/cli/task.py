@@ -17,7 +17,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
+from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option
 from sass_tui.model.arm_force_field import parse_direction
 from sass_tui.model.figure import Figure
 from sass_tui.model.posture import parse_angles
@@ -25,7 +25,6 @@ from sass_tui.model.published_strength import GENDER_WORDS
 from sass_tui.model.task import (
     Reference,
     TaskError,
-    assess_populations,
     assess_task,
     hand_load,
     task_json,
@@ -99,10 +98,15 @@ def run(args: argparse.Namespace) -> int:
     ]
     if not loads:
         raise TaskError("a task needs a load on a hand: --left-load or --right-load")
-    if args.target is not None or args.virtual is not None:
-        answer = _weighted_answer(args, angles, loads)
+    if args.person is None and args.target is None and args.virtual is None:
+        genders = [args.gender] if args.gender else ["female", "male"]
+        references = [Reference(GENDER_WORDS[g], _figure(args, g), args.age) for g in genders]
+        answer = assess_task(references, angles, loads)
     else:
-        answer = assess_task(_references(args), angles, loads)
+        # deferred: cli.task_people (the db package, numpy) — off sass task (sass_tui/startup.py)
+        from sass_tui.cli.task_people import people_answer
+
+        answer = people_answer(args, angles, loads, _figure)
     if args.format == "json":
         print(json.dumps(task_json(answer, args.angles)))
     else:
@@ -118,51 +122,3 @@ def _figure(args: argparse.Namespace, gender: str) -> Figure:
     if args.stature is not None:
         figure.set_stature(parse_quantity(args.stature, "cm"))
     return figure
-
-
-def _refuse_own_body(args: argparse.Namespace, who: str) -> None:
-    given = [
-        option
-        for option, value in (
-            ("--mass", args.mass),
-            ("--stature", args.stature),
-            ("--age", args.age),
-        )
-        if value is not None
-    ]
-    if given:
-        raise TaskError(f"{who} takes each person's own body; leave out {', '.join(given)}")
-
-
-def _references(args: argparse.Namespace) -> list[Reference]:
-    if args.person is None:
-        genders = [args.gender] if args.gender else ["female", "male"]
-        return [Reference(GENDER_WORDS[g], _figure(args, g), args.age) for g in genders]
-    _refuse_own_body(args, "--person")
-    # deferred: cli.person_option (the db package, numpy) — off sass task (sass_tui/startup.py)
-    from sass_tui.cli.person_option import named_person_record, person_figure
-
-    record = named_person_record(args)
-    figure = person_figure(args, _figure(args, str(record["gender"])))
-    age = record["age"]
-    return [Reference(str(figure.person), figure, None if age is None else float(age))]  # type: ignore[arg-type]
-
-
-def _weighted_answer(args: argparse.Namespace, angles, loads):  # -> model.task.TaskAnswer
-    """A target's (or virtual population's) people, each scaled to their own
-    size from their gender's figure, weighted: each gender and, for a target
-    of both, everyone together."""
-    name = weighting_name(args)
-    assert name is not None  # --target or --virtual was given
-    _refuse_own_body(args, "--virtual" if args.virtual is not None else "--target")
-    # deferred: cli.database_access, db.task_people — off sass task (sass_tui/startup.py)
-    from sass_tui.cli.database_access import open_db
-    from sass_tui.db.task_people import group_words, weighted_people
-
-    conn = open_db(args)
-    try:
-        target, people = weighted_people(conn, name)
-    finally:
-        conn.close()
-    groups = [(_figure(args, group.gender), group) for group in people]
-    return assess_populations(groups, angles, loads, group_words(target, None))

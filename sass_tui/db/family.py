@@ -21,7 +21,8 @@ from sass_tui.db.predict import open_predictor
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import ParsedQuery, joined, parsed
 from sass_tui.db.values import Values, load_values
-from sass_tui.model.accommodation import Family, build_family, measure_field
+from sass_tui.model.accommodation import Family, build_family
+from sass_tui.model.measure_fields import measure_field
 from sass_tui.model.targets import kish_effective_n
 from sass_tui.model.vocabulary import GENDERS
 

@@ -51,7 +51,8 @@ from sass_tui.db.values import load_values
 from sass_tui.model.datasets import NHANES, NHANES_NAME, NHANES_WEIGHT, shipped_text
 from sass_tui.model.measures import MEASURES
 from sass_tui.model.prediction import Predictor
-from sass_tui.model.target_sample import Sample, read_sample
+from sass_tui.model.sample_file import read_sample
+from sass_tui.model.target_sample import Sample
 from sass_tui.model.targets import TargetError, kish_effective_n
 from sass_tui.model.virtual import VirtualPeople, draw_virtual, fitted_range
 from sass_tui.model.vocabulary import GENDERS

@@ -40,21 +40,16 @@ population of the figure, as for any real person.  Numpy; no database.
 
 from __future__ import annotations
 
-import json
 import math
-from dataclasses import dataclass, replace
-from pathlib import Path
+from dataclasses import dataclass
 from typing import Any, Final
 
 import numpy as np
 import numpy.typing as npt
 
-from sass_tui.model.atomic import write_text_atomic
-from sass_tui.model.errors import SassError
-from sass_tui.model.figfile import write_fig
 from sass_tui.model.figure import Figure
-from sass_tui.model.measures import MEASURES, suggest
-from sass_tui.model.prediction import ALIASES, Prediction, Predictor
+from sass_tui.model.measure_fields import AccommodationError
+from sass_tui.model.prediction import Prediction, Predictor
 
 FloatArray = npt.NDArray[np.float64]
 BoolArray = npt.NDArray[np.bool_]
@@ -64,10 +59,6 @@ MAX_MEASURES: Final = 6
 MAX_DIAGONAL_MEASURES: Final = 3  # 2^k diagonal points only for k <= 3
 KINDS: Final = ("boundary", "distributed")
 INNER_RADIUS: Final = 0.5  # the distributed family's inner shell, as a fraction of r
-
-
-class AccommodationError(ValueError, SassError):
-    """A family that cannot be built (too few people or measurements, bad target)."""
 
 
 # --- chi-square ------------------------------------------------------------
@@ -445,51 +436,3 @@ def build_family(
             )
         )
     return Family(gender, kind, ellipsoid, coverage, tuple(manikins))
-
-
-def write_family(family: Family, directory: str | Path, population: Figure) -> Family:
-    """Write a .fig and an .x3d per manikin and family.json into `directory`
-    (each file atomically); returns the family with each manikin's files."""
-    # deferred: model.hanim_x3d (xml.etree) — off sass fit (sass_tui/startup.py)
-    from sass_tui.model.hanim_x3d import export_hanim
-
-    out = Path(directory)
-    out.mkdir(parents=True, exist_ok=True)
-    manikins = []
-    for manikin in family.manikins:
-        figure = manikin.figure(population)
-        if family.target is not None:  # every file of a weighted family says so
-            figure.person = f"{figure.person}, weighted to target {family.target['name']}"
-        stem = f"{family.gender}_{manikin.name}"
-        write_fig(figure, out / f"{stem}.fig")
-        export_hanim(figure, out / f"{stem}.x3d")
-        manikins.append(replace(manikin, files=(f"{stem}.fig", f"{stem}.x3d")))
-    written = replace(family, manikins=tuple(manikins))
-    text = json.dumps(written.to_json(), indent=1, allow_nan=False) + "\n"
-    write_text_atomic(out / "family.json", text)
-    return written
-
-
-def measure_field(name: str) -> str:
-    """A `--measures` name as a query-language field: `stature`, `mass`,
-    `measure.sittingheight`; a bare ANSUR II name gains `measure.`, and the
-    survey's own `stature` / `weightkg` are the person's stature and mass."""
-    word = name.strip().lower()
-    if word.startswith("measure."):
-        word = word.removeprefix("measure.")
-        if word not in MEASURES:
-            hint = suggest(word)
-            raise AccommodationError(
-                f"unknown measurement {name.strip()!r}"
-                + (f"; did you mean {', '.join('measure.' + h for h in hint)}?" if hint else "")
-            )
-    if "." in word or word in ("stature", "mass", "age"):
-        return word
-    if word in MEASURES:
-        return ALIASES.get(f"measure.{word}", f"measure.{word}")
-    hint = suggest(word)
-    raise AccommodationError(
-        f"unknown measurement {name.strip()!r}; expected stature, mass or an ANSUR II "
-        "measurement (sittingheight, hipbreadthsitting, ...)"
-        + (f"; did you mean {', '.join(hint)}?" if hint else "")
-    )

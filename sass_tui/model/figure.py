@@ -15,6 +15,7 @@ import copy
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from types import ModuleType
 from typing import TYPE_CHECKING
 
 from sass_tui.model import datasets
@@ -37,8 +38,6 @@ from sass_tui.model.percentile import (
     cell_value_at,
     check_percentile,
     grid_at,
-    percentile_of,
-    value_at,
 )
 from sass_tui.model.popfile import (
     PopulationData,
@@ -234,9 +233,7 @@ class Figure:
         (None = keep this figure's); `landmarks` the person's measurements
         that place the HAnim humanoid and the `.fig`'s joints (cm, by the
         survey's names: model/landmarks.py)."""
-        # deferred: numpy — off the first screen (sass_tui/startup.py)
-        import numpy as np
-
+        arrays = _arrays()
         gender = _check_choice(gender, GENDERS, "gender")
         person = Figure(
             gender=gender,
@@ -258,7 +255,7 @@ class Figure:
                     f"no {gender} {GROUP_TITLES[group]} statistics loaded to "
                     f"compare {name} with; load a population file that has them"
                 )
-            values = np.array(groups[group], dtype=float)
+            values = arrays.array(groups[group])
             if values.shape != (len(theirs.rows), 3):
                 raise FigureError(
                     f"{name}: {GROUP_TITLES[group]} has shape {values.shape}, "
@@ -266,9 +263,7 @@ class Figure:
                 )
             theirs.source, theirs.unit, theirs.percentile = mine.source, mine.unit, mine.percentile
             theirs.values = values
-            theirs.percentiles = np.asarray(
-                percentile_of(mine.source.stats(gender), values), dtype=float
-            ).reshape(values.shape)
+            theirs.percentiles = arrays.percentiles_against(mine.source.stats(gender), values)
         for parameter, value in strength_parameters.items():
             if value is not None:
                 person.set_strength_parameter(parameter, value)
@@ -402,14 +397,13 @@ class Figure:
         measures no joint limits, for one) but the population has one, the
         population's value at the group percentile.  A population figure has
         nothing to fill.  999 cells (no motion) stay NaN."""
-        # deferred: numpy — off the first screen (sass_tui/startup.py)
-        import numpy as np
-
         state = self.groups[group]
         assert state.values is not None, f"{group} not loaded"  # callers check missing_groups()
-        population = value_at(state.stats(self.gender), state.percentile)
-        filled = np.isnan(state.values) & ~np.isnan(population)
-        return np.where(filled, population, state.values), filled
+        stats = state.stats(self.gender)
+        output: tuple[np.ndarray, np.ndarray] = _arrays().filled_values(
+            state.values, stats, state.percentile
+        )
+        return output
 
     def output_mass(self) -> float:
         """The total mass for output: when a person's is unknown, the
@@ -480,10 +474,17 @@ def _copy(cells: Grid | np.ndarray | None) -> Grid | np.ndarray | None:
 
 
 def _array(grid: Grid) -> np.ndarray:
-    # deferred: numpy — off the first screen (sass_tui/startup.py)
-    import numpy as np
+    cells: np.ndarray = _arrays().array(grid)
+    return cells
 
-    return np.array(grid, dtype=float)
+
+def _arrays() -> ModuleType:
+    """model/figure_arrays.py, the figure's arithmetic over numpy arrays:
+    imported the first time an array is wanted, the one place numpy comes in."""
+    # deferred: model.figure_arrays (numpy) — off the first screen (sass_tui/startup.py)
+    from sass_tui.model import figure_arrays
+
+    return figure_arrays
 
 
 def _check_choice(value: str, choices: tuple[str, ...], what: str) -> str:

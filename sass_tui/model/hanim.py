@@ -37,7 +37,7 @@ from sass_tui.model.names import (
     ROWS,
     row_index,
 )
-from sass_tui.model.percentile import value_at
+from sass_tui.model.percentile_arrays import value_at
 
 if TYPE_CHECKING:
     from sass_tui.model.figure import Figure

@@ -9,7 +9,9 @@ grows more negative with the percentile).
 The model is written once, for one cell in plain floats (`cell_value_at`,
 `cell_percentile_of`): the TUI's first screen is computed with them before
 numpy is imported, to start sooner.  `value_at` and `percentile_of` apply them
-over numpy arrays whose last axis holds (v5, v50, v95), with broadcasting.
+over numpy arrays whose last axis holds (v5, v50, v95), with broadcasting:
+they are model/percentile_arrays.py, which imports numpy at its top (off the
+first screen, sass_tui/startup.py).
 """
 
 from __future__ import annotations
@@ -17,14 +19,9 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from statistics import NormalDist
-from typing import TYPE_CHECKING
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.floats import divide
-
-if TYPE_CHECKING:
-    import numpy as np
-    import numpy.typing as npt
 
 # One cell's stored (v5, v50, v95), and a group's (rows, 3 axes) cells in
 # plain floats, before numpy is wanted.
@@ -47,30 +44,12 @@ def _refuse(p: float) -> PercentileError:
     return PercentileError(f"percentile {p:g} is outside {MIN_PERCENTILE:g}-{MAX_PERCENTILE:g}")
 
 
-def check_percentile(p: npt.ArrayLike) -> npt.ArrayLike:
-    if isinstance(p, (int, float)):  # the one percentile of an edit: no numpy
-        if not MIN_PERCENTILE <= p <= MAX_PERCENTILE:
-            raise _refuse(float(p))
-        return p
-    # deferred: numpy — off the first screen, sass --help, sass --version (sass_tui/startup.py)
-    import numpy as np
-
-    arr = np.asarray(p, dtype=float)
-    bad = ~((arr >= MIN_PERCENTILE) & (arr <= MAX_PERCENTILE))
-    if np.any(bad):
-        raise _refuse(arr[bad].flat[0] if arr.ndim else float(arr))
+def check_percentile(p: float) -> float:
+    """One percentile (an edit's, an option's), in plain floats: 0.5-99.5,
+    else PercentileError (NaN too).  Over an array: percentile_arrays.py."""
+    if not MIN_PERCENTILE <= p <= MAX_PERCENTILE:
+        raise _refuse(float(p))
     return p
-
-
-def z_score(p: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
-    """Standard normal quantile of percentile(s) p (0.5-99.5)."""
-    # deferred: numpy — off the first screen, sass --help, sass --version (sass_tui/startup.py)
-    import numpy as np
-
-    arr = np.asarray(p, dtype=float)
-    if arr.ndim == 0:
-        return np.float64(_STANDARD.inv_cdf(float(arr) / 100.0))
-    return np.asarray(np.frompyfunc(_STANDARD.inv_cdf, 1, 1)(arr / 100.0), dtype=float)
 
 
 def cell_value_at(v5: float, v50: float, v95: float, p: float) -> float:
@@ -142,34 +121,3 @@ def grid_at(cells: Callable[[int, int], Cell], rows: int, p: float) -> tuple[Gri
     value's percentile (p; NaN where there is no value)."""
     values = [[cell_value_at(*cells(row, axis), p) for axis in range(3)] for row in range(rows)]
     return values, [[math.nan if math.isnan(v) else p for v in row] for row in values]
-
-
-def value_at(stats: npt.NDArray[np.float64], p: npt.ArrayLike) -> npt.NDArray[np.float64]:
-    """Values at percentile p over an array.  stats[..., 0:3] = (v5, v50,
-    v95); p broadcasts against stats[..., 0]."""
-    # deferred: numpy — off the first screen, sass --help, sass --version (sass_tui/startup.py)
-    import numpy as np
-
-    check_percentile(p)
-    stats = np.asarray(stats, dtype=float)
-    # The flags the cells' float arithmetic raises (NaN compared) are not errors.
-    with np.errstate(all="ignore"):
-        cells = np.frompyfunc(cell_value_at, 4, 1)(stats[..., 0], stats[..., 1], stats[..., 2], p)
-    return np.asarray(cells, dtype=float)
-
-
-def percentile_of(
-    stats: npt.NDArray[np.float64], value: npt.ArrayLike
-) -> npt.NDArray[np.float64] | np.float64:
-    """Percentiles of value(s) against stats, over an array (see
-    cell_percentile_of); a 0-d result is a numpy float."""
-    # deferred: numpy — off the first screen, sass --help, sass --version (sass_tui/startup.py)
-    import numpy as np
-
-    stats = np.asarray(stats, dtype=float)
-    with np.errstate(all="ignore"):  # as value_at
-        cells = np.frompyfunc(cell_percentile_of, 4, 1)(
-            stats[..., 0], stats[..., 1], stats[..., 2], np.asarray(value, dtype=float)
-        )
-    out = np.asarray(cells, dtype=float)
-    return out if out.ndim else np.float64(out)

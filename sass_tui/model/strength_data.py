@@ -41,7 +41,8 @@ from sass_tui.model import datasets
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import JOINT_AXIS_LABELS, MOTIONS, normalise_label
 from sass_tui.model.paths import PathError, read_user_text
-from sass_tui.model.percentile import _STANDARD, check_percentile, z_score
+from sass_tui.model.percentile import _STANDARD
+from sass_tui.model.percentile_arrays import check_percentiles, z_score
 from sass_tui.model.popfile import NO_VALUE, split_data_row
 from sass_tui.model.published_strength import EXAMPLE_SOURCE
 from sass_tui.model.strength_conditions import StrengthError
@@ -398,7 +399,7 @@ def person_strength_data(
 
 def percentile_factor(p: npt.ArrayLike) -> npt.NDArray[np.float64] | np.float64:
     """Strength at percentile p over the 50th: 1 + z(p) * CV (normal, CV 0.277)."""
-    check_percentile(p)
+    check_percentiles(p)
     return 1.0 + z_score(p) * STRENGTH_CV
 
 

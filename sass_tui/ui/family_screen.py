@@ -21,9 +21,10 @@ from textual_plotext import PlotextPlot
 from sass_tui.db.database import Database
 from sass_tui.db.family import family_and_scatter
 from sass_tui.db.fit import DEFAULT_POPULATION
-from sass_tui.model.accommodation import measure_field, write_family
 from sass_tui.model.errors import SassError
+from sass_tui.model.family_files import write_family
 from sass_tui.model.figure import Figure
+from sass_tui.model.measure_fields import measure_field
 from sass_tui.model.vocabulary import GENDERS
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.footer import Footer

@@ -17,7 +17,7 @@ from sass_tui.db.ansur import import_ansur
 from sass_tui.db.people_store import delete_people
 from sass_tui.db.predict import cache_path, data_key, open_predictor
 from sass_tui.db.schema import connect, transaction
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.model.prediction import Predictor
 
 # SQLite only: the fit is cached beside the SQLite file; predict on both

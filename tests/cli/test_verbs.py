@@ -24,8 +24,13 @@ SHARED = {
     "person_option",
     "prediction_figure",
     "query_weighted",
+    "query_csv",  # sass query --format csv
+    "query_json",  # sass query --format json
     "progress",
+    "serving",  # sass serve, once its options are checked
     "strength_arm",  # sass strength arm_force
+    "target_change",  # sass target NAME --sample, --drop
+    "task_people",  # sass task --person, --target, --virtual
 }
 
 

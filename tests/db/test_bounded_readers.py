@@ -94,7 +94,7 @@ def test_a_file_over_its_kinds_size_is_refused_unread(
 
 
 def test_the_fig_reader_refuses_a_huge_fig_by_its_size(tmp_path):
-    from sass_tui.model.figfile import read_fig
+    from sass_tui.model.fig_reader import read_fig
     from sass_tui.model.paths import PathError
 
     with pytest.raises(PathError, match=r"is too large for a \.fig file \(at most 4\.0 MiB\)"):

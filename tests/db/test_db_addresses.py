@@ -22,7 +22,7 @@ def test_sass_serve_hands_an_address_to_its_sessions_in_the_environment(tmp_path
     the address (its password too) travels in $SASS_DB, never on a command
     line `ps` shows."""
     pytest.importorskip("textual_serve")
-    from sass_tui.cli.database_access import database_path
+    from sass_tui.cli.serving import database_path
     from sass_tui.ui.serve import ServeOptions
     from sass_tui.ui.serve_session import SessionService
 

@@ -17,7 +17,7 @@ from sass_tui.db.family import load_family
 from sass_tui.db.fit import FitError
 from sass_tui.db.query import run_query
 from sass_tui.model.accommodation import AccommodationError, chi2_quantile
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 
 
 def _sass(*args: str) -> subprocess.CompletedProcess:

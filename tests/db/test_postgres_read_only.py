@@ -157,7 +157,7 @@ def test_a_served_read_only_process_changes_nothing(
 def test_sass_serve_read_only_takes_an_address(shared, monkeypatch):
     """The sessions of `sass serve --read-only --db postgresql://...` are told
     the address and that it is read-only; the server is tried once, here."""
-    from sass_tui.cli.database_access import database_path
+    from sass_tui.cli.serving import database_path
 
     assert database_path(SimpleNamespace(db=shared), read_only=True) == shared
     monkeypatch.setenv("SASS_DB", shared)

@@ -219,7 +219,8 @@ def _strength() -> Target:
 
 
 def _fig() -> Target:
-    from sass_tui.model.figfile import parse_fig, render_fig
+    from sass_tui.model.fig_reader import parse_fig
+    from sass_tui.model.figfile import render_fig
     from sass_tui.model.figure import Figure
 
     seed = render_fig(Figure.default())

@@ -23,9 +23,9 @@ from sass_tui.model.accommodation import (
     family_points,
     family_ranges,
     nearest_person,
-    write_family,
 )
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.family_files import write_family
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.prediction import Predictor
 

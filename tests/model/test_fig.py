@@ -10,7 +10,8 @@ import pytest
 from _paths import DATASETS
 
 from sass_tui.cli import main
-from sass_tui.model.figfile import FigParseError, default_fig_name, parse_fig, read_fig, render_fig
+from sass_tui.model.fig_reader import parse_fig, read_fig
+from sass_tui.model.figfile import FigParseError, default_fig_name, render_fig
 from sass_tui.model.figure import Figure
 
 # Appendix F misspells three names that BODY.FIG (appendix D) reads otherwise.

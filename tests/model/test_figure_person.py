@@ -7,7 +7,7 @@ import pytest
 
 from sass_tui.model.figure import Figure, FigureError
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
-from sass_tui.model.percentile import percentile_of
+from sass_tui.model.percentile_arrays import percentile_of
 from sass_tui.model.session import Session
 
 
@@ -71,7 +71,8 @@ def test_person_refused_without_statistics_or_with_wrong_shape():
 
 def test_files_for_a_person_with_unmeasured_values_take_the_population_values(tmp_path):
     """Like an ANSUR II soldier: no joint limits at all, no neck in the database."""
-    from sass_tui.model.figfile import read_fig, render_fig, write_fig
+    from sass_tui.model.fig_reader import read_fig
+    from sass_tui.model.figfile import render_fig, write_fig
     from sass_tui.model.hanim_x3d import export_hanim
 
     population = Figure.default("male")

@@ -15,7 +15,7 @@ import pytest
 from sass_tui.cli import main
 from sass_tui.db.individual import fetch_individual, find_person, person_figure
 from sass_tui.db.schema import connect
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.hanim import build_humanoid, landmark_heights
 from sass_tui.model.landmarks import BIACROMIAL_FRACTION

@@ -14,7 +14,8 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.figfile import FigParseError, FigValueError, parse_fig, render_fig
+from sass_tui.model.fig_reader import parse_fig
+from sass_tui.model.figfile import FigParseError, FigValueError, render_fig
 from sass_tui.model.figure import Figure, FigureError
 from sass_tui.model.names import GIRTH
 from sass_tui.model.popfile import PopulationFileError, parse_population_text

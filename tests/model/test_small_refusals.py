@@ -11,7 +11,8 @@ import pytest
 
 from sass_tui.cli import main
 from sass_tui.model import datasets
-from sass_tui.model.figfile import FigParseError, parse_fig
+from sass_tui.model.fig_reader import parse_fig
+from sass_tui.model.figfile import FigParseError
 from sass_tui.model.names import GIRTH
 from sass_tui.model.popfile import PopulationFileError, parse_population_text
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS
 from sass_tui.model.strength import (

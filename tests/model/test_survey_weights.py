@@ -9,7 +9,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.model.target_sample import SampleError, is_survey_weight, read_sample
+from sass_tui.model.sample_file import read_sample
+from sass_tui.model.target_sample import SampleError, is_survey_weight
 from sass_tui.model.targets import calibrate, outside_share, weighted_percentile
 
 FIELDS = ["stature", "mass"]

@@ -11,7 +11,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.target_sample import SampleError, read_sample
+from sass_tui.model.sample_file import read_sample
+from sass_tui.model.target_sample import SampleError
 
 FIELDS = ["stature", "mass"]
 # unit spelling -> factor to the canonical unit (cm or kg), written out here

@@ -12,7 +12,7 @@ from textual.widgets import DataTable
 from sass_tui.db.default import open_database
 from sass_tui.db.family import load_family
 from sass_tui.db.values import load_values
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.ui.family_screen import FamilyBuilt, FamilyScreen
 
 

@@ -234,7 +234,7 @@ def test_the_write_worker_writes_the_figure_as_it_was_when_asked(
     import threading
 
     from sass_tui.model import atomic, figfile
-    from sass_tui.model.figfile import read_fig
+    from sass_tui.model.fig_reader import read_fig
     from sass_tui.ui import spreadsheet_files
 
     edited, working = threading.Event(), threading.Event()

@@ -8,7 +8,7 @@ from _screen import wait_until
 
 from sass_tui.db.default import open_database
 from sass_tui.db.predict import open_predictor
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH
 from sass_tui.model.prediction import split_known
 

@@ -12,7 +12,7 @@ from textual.widgets import OptionList
 from sass_tui.db.individual import fetch_individual
 from sass_tui.db.query import run_query
 from sass_tui.db.schema import connect
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.model.names import GIRTH, row_index
 from sass_tui.ui.query_builder import VALUE_PROMPT, QueryBuilderScreen, QueryPopup
 from sass_tui.ui.query_screen import (

@@ -8,7 +8,7 @@ from _screen import message, paste
 from textual import events
 
 from sass_tui.model import datasets
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH, row_index
 from sass_tui.model.popfile import parse_population_text, read_population_file

@@ -8,7 +8,7 @@ import xml.etree.ElementTree as ET
 import pytest
 from _screen import message, paste
 
-from sass_tui.model.figfile import read_fig
+from sass_tui.model.fig_reader import read_fig
 from sass_tui.model.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH
 from sass_tui.model.strength import (
