@@ -130,6 +130,15 @@ PATHS: tuple[StartupPath, ...] = (
         "the strength of the default figure needs the strength file and the model only",
     ),
     StartupPath(
+        "sass strength arm_force",
+        ("strength", "arm_force", "--direction", "up"),
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
+         "platformdirs", "numpy.ma", "secrets", "xml.etree.ElementTree", "sass_tui.db",
+         "sass_tui.ui", "sass_tui.cli.person_option"),
+        "the Arm Force Field at the default figure's hand needs the posture and the model;"
+        " the database only for --person (cli/person_option.py)",
+    ),
+    StartupPath(
         "sass task",
         ("task", "shoulder_y=60", "elbow_y=30", "--right-load", "50N"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3", "platformdirs", "numpy.ma",

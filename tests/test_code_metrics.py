@@ -67,13 +67,19 @@ def test_the_import_count_is_every_import_inside_a_function():
                 count += own_imports(child)
         return count
 
-    total = 0
+    total = generated = 0
     for path in (ROOT / "sass_tui").rglob("*.py"):
-        if path in METRICS["GENERATED"]:  # lark's stand-alone parser, not ours to move
-            continue
         tree = ast.parse(path.read_text(encoding="utf-8"))
-        for node in ast.walk(tree):
-            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
-                total += own_imports(node)
+        count = sum(
+            own_imports(node)
+            for node in ast.walk(tree)
+            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef)
+        )
+        if path in METRICS["GENERATED"]:  # lark's stand-alone parser, not ours to move
+            generated += count
+        else:
+            total += count
     assert total > 0
     assert sum(METRICS["function_level_imports"]().values()) == total
+    # The package's goal, the generated parser's own imports included: 60.
+    assert total + generated <= 60, (total, generated)

@@ -83,7 +83,7 @@ def _figure(args: argparse.Namespace) -> Figure:
     figure = Figure.default(args.gender or "male")
     figure.set_group_percentile(JOINT_LIMITS, args.joint_limit_percentile)
     if args.person is not None:
-        # deferred: cli.person_option (the db package, numpy) — off sass strength (sass_tui/startup.py)
+        # deferred: cli.person_option (the db package) — off sass strength arm_force (sass_tui/startup.py)
         from sass_tui.cli.person_option import person_figure
 
         return person_figure(args, figure)
