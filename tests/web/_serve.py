@@ -49,7 +49,9 @@ class Served:
         return f"sass-token-{self.port}={self.token}"
 
     def children(self) -> list[int]:
-        """The server's child processes (its sessions), from /proc."""
+        """The server's live child processes (its sessions), from /proc: a
+        killed session the server has not reaped yet (a zombie, state Z) is
+        no longer one."""
         found = []
         for entry in Path("/proc").iterdir():
             if not entry.name.isdigit():
@@ -58,7 +60,8 @@ class Served:
                 stat = (entry / "stat").read_text()
             except OSError:
                 continue
-            if int(stat.rsplit(")", 1)[1].split()[1]) == self.process.pid:
+            state, parent = stat.rsplit(")", 1)[1].split()[:2]
+            if int(parent) == self.process.pid and state != "Z":
                 found.append(int(entry.name))
         return found
 
