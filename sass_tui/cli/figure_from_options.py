@@ -71,6 +71,14 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     if stature_and_mass is not None:
         named.add(stature_and_mass.path)
     warnings = [w for w in warnings if w.split(":", 1)[0] in named]
+    for name, option, unit in (("mass", args.mass, "kg"), ("stature", args.stature, "cm")):
+        outside = session.figure.implausible_range(name) if option is not None else None
+        if outside is not None:  # as the spreadsheet says of a typed one
+            warnings.append(
+                f"--{name} {option}: outside the {session.figure.gender} population's "
+                f"0.5th-99.5th percentile range, {outside[0]:.1f}-{outside[1]:.1f} {unit}; "
+                "accepted"
+            )
     if args.person is not None:
         # deferred: cli.person_option (the db package, numpy) — off sass fig, sass export hanim, sass export gltf (sass_tui/startup.py)
         from sass_tui.cli.person_option import person_figure

@@ -32,12 +32,15 @@ from sass_tui.model.names import (
     Row,
 )
 from sass_tui.model.percentile import (
+    MAX_PERCENTILE,
+    MIN_PERCENTILE,
     Cell,
     Grid,
     cell_percentile_of,
     cell_value_at,
     check_percentile,
     grid_at,
+    plausible_range,
 )
 from sass_tui.model.popfile import (
     PopulationData,
@@ -311,6 +314,18 @@ class Figure:
         check_percentile(p)
         self.stature_percentile = float(p)
         self.stature = _global_value(self.global_stats, self.gender, "stature", p)
+
+    def implausible_range(self, name: str) -> tuple[float, float] | None:
+        """For a mass or stature set beyond the population's 0.5th-99.5th
+        percentile (the ends a percentile may be typed at): that range, in kg
+        or cm, lower first; the value stands, a warning names the range.
+        None inside it, or without statistics."""
+        if name not in ("mass", "stature") or self.global_stats is None:
+            return None
+        percentile = getattr(self, f"{name}_percentile")
+        if math.isnan(percentile) or MIN_PERCENTILE <= percentile <= MAX_PERCENTILE:
+            return None
+        return plausible_range(*_global_cell(self.global_stats, self.gender, name))
 
     def set_strength_parameter(self, name: str, value: str | float) -> None:
         if name == "strength_type":

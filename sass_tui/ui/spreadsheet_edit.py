@@ -10,12 +10,10 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.names import (
     AXES,
     GIRTH,
-    GLOBAL,
     GROUP_TITLES,
     JOINT_AXIS_LABELS,
     MOTIONS,
     STRENGTH,
-    row_index,
 )
 from sass_tui.model.percentile import (
     MAX_PERCENTILE,
@@ -240,13 +238,10 @@ class EditCommands(SheetScreenBase):
     def _implausible(self, field: str) -> str:
         """A typed mass or stature beyond the population's 0.5th-99.5th
         percentile: accepted, and the range said ("" when inside)."""
-        figure = self.figure
-        if field not in ("mass", "stature") or figure.global_stats is None:
+        outside = self.figure.implausible_range(field)
+        if outside is None:
             return ""
-        if MIN_PERCENTILE <= getattr(figure, f"{field}_percentile") <= MAX_PERCENTILE:
-            return ""
-        row = row_index(GLOBAL, field)
-        low, high = plausible_range(*figure.global_stats.cell(figure.gender, row, 0))
+        low, high = outside
         return _outside(f"{low:.1f}", f"{high:.1f}", "kg" if field == "mass" else "cm")
 
     def _without_effect(self, field: str) -> str:

@@ -5,6 +5,7 @@ the girth of its own population (both the report's, or both the user's)."""
 from __future__ import annotations
 
 import shutil
+from statistics import NormalDist
 
 from sass_tui.cli import main
 from sass_tui.model import datasets
@@ -34,3 +35,23 @@ def test_a_copy_of_the_reports_girth_beside_the_shipped_center_of_mass_is_not_ch
     shutil.copy(datasets.path("cmass.dat"), theirs)
     main(["fig", "--girth", str(mine), "--cmass", str(theirs), "-o", str(tmp_path / "C.fig")])
     assert "appendix L.1's foot rule" in capsys.readouterr().err
+
+
+def test_a_mass_or_stature_beyond_the_population_is_accepted_with_a_warning(tmp_path, capsys):
+    """As the spreadsheet warns of a typed one (ui/spreadsheet_edit.py): beyond
+    the 0.5th-99.5th percentile of datasets/global.dat, each side of the 50th
+    spread as its 5th or 95th says (male mass 62.6 / 82.2 / 107.6 kg)."""
+    z = NormalDist().inv_cdf(0.995) / NormalDist().inv_cdf(0.95)
+    low, high = 82.2 - (82.2 - 62.6) * z, 82.2 + (107.6 - 82.2) * z
+    out = tmp_path / "heavy.fig"
+    assert main(["fig", "--mass", "300", "-o", str(out)]) == 0
+    err = capsys.readouterr().err
+    assert err.count("warning:") == 1 and out.is_file()
+    assert (
+        f"--mass 300: outside the male population's 0.5th-99.5th percentile range, "
+        f"{low:.1f}-{high:.1f} kg; accepted"
+    ) in err
+    assert main(["fig", "--mass", "80kg", "--stature", "175cm", "-o", str(out)]) == 0
+    assert "warning" not in capsys.readouterr().err
+    assert main(["export", "hanim", "--stature", "7ft", "-o", str(tmp_path / "tall.x3d")]) == 0
+    assert "--stature 7ft: outside the male population's" in capsys.readouterr().err
