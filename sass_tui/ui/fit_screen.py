@@ -21,10 +21,10 @@ from textual_plotext import PlotextPlot
 from sass_tui.db.fit import LimitHistogram
 from sass_tui.db.fit_table import format_table
 from sass_tui.db.lists import DB_ERRORS, QueryLists
-from sass_tui.ui.base import SassScreen
 from sass_tui.ui.footer import Footer
-from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
-from sass_tui.ui.target_picker import pick_target, weighted_words
+from sass_tui.ui.progress import Work, WorkBar
+from sass_tui.ui.target_picker import weighted_words
+from sass_tui.ui.weighted_work_screen import WeightedWorkScreen
 from sass_tui.ui.widgets import MessageLine
 
 GENDER_COLORS = {"male": "blue", "female": "magenta"}
@@ -44,7 +44,7 @@ def _short(field: str) -> str:
     return field.removeprefix("measure.")
 
 
-class FitScreen(SassScreen):
+class FitScreen(WeightedWorkScreen):
     DEFAULT_CSS = """
     FitScreen #fit-scroll { height: auto; max-height: 50%; }
     FitScreen #fit-table { padding: 0 1; width: auto; }
@@ -58,19 +58,22 @@ class FitScreen(SassScreen):
         Binding("t", "choose_target", "Target", show=False),  # F1 lists it; the footer as it was
     ]
 
+    TITLE_ID = "fit-title"
+    ANSWER_ID = "fit-table"
+    WORK_NAME = "Fit Test"
+    BUSY = "The fit test is running: wait for it, or Esc."
+    WAITING = "Testing, please wait..."
+
     def __init__(
         self, lists: QueryLists, limits: str, population: str, target: str | None = None
     ) -> None:
-        super().__init__(id="fit-screen")
-        self.lists = lists
+        super().__init__(lists, target, id="fit-screen")
         self.limits = limits
         self.population = population
-        self.target = target or None  # a target population's name: the test is weighted
         self.histograms: tuple[LimitHistogram, ...] = ()
         self.shown = 0  # which histogram is drawn
         # What was last handed to plotext: bin centers and, per gender, the counts.
         self.plotted: tuple[list[float], dict[str, list[int]]] = ([], {})
-        self.work: Work | None = None
 
     def compose(self):
         yield Static(self.title_text(), id="fit-title")
@@ -85,40 +88,8 @@ class FitScreen(SassScreen):
     def title_text(self) -> str:
         return f"Fit Test of {self.limits}{weighted_words(self.target)}"
 
-    def on_mount(self) -> None:
-        self.start_fit()
-
-    def start_fit(self) -> None:
-        self.work = Work(self, "Fit Test")
-        self.query_one(WorkBar).start(self.work)
-        self.run_fit(self.lists, self.limits, self.population, self.work, self.target)
-
-    def action_choose_target(self) -> None:
-        """Pick a target population: the test again on its people, weighted."""
-        if self.work is not None:
-            self.say("The fit test is running: wait for it, or Esc.")
-            return
-
-        self.converse(self._choose_target())
-
-    async def _choose_target(self) -> None:
-        name = await pick_target(self, self.lists, self.target)
-        if name is None:
-            return
-        self.target = name or None
-        self.query_one("#fit-title", Static).update(self.title_text())
-        self.query_one("#fit-table", Static).update("Testing, please wait...")
-        self.start_fit()
-
-    def on_work_progressed(self, event: WorkProgressed) -> None:
-        event.stop()
-        self.query_one(WorkBar).show(event)
-
-    def action_back(self) -> None:
-        """Back to the query screen (cancels a fit test still running)."""
-        if self.work is not None:
-            self.work.cancel.set()  # the test stops at its next step; nothing to undo
-        self.app.pop_screen()
+    def run_work(self, work: Work) -> None:
+        self.run_fit(self.lists, self.limits, self.population, work, self.target)
 
     @work(thread=True, exclusive=True, group="fit", exit_on_error=False)
     def run_fit(
@@ -135,8 +106,7 @@ class FitScreen(SassScreen):
 
     def on_fit_done(self, event: FitDone) -> None:
         event.stop()
-        self.work = None
-        self.query_one(WorkBar).stop()
+        self.work_done()
         table = self.query_one("#fit-table", Static)
         text = f"The fit test was not run: {event.error}" if event.error else event.text
         table.update(Text(text, no_wrap=True))  # a wide table scrolls sideways

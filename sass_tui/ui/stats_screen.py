@@ -19,10 +19,10 @@ from textual.widgets import Static
 
 from sass_tui.db.lists import DB_ERRORS, QueryLists
 from sass_tui.db.stats import format_stats
-from sass_tui.ui.base import SassScreen
 from sass_tui.ui.footer import Footer
-from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
-from sass_tui.ui.target_picker import pick_target, weighted_words
+from sass_tui.ui.progress import Work, WorkBar
+from sass_tui.ui.target_picker import weighted_words
+from sass_tui.ui.weighted_work_screen import WeightedWorkScreen
 from sass_tui.ui.widgets import MessageLine
 
 
@@ -33,7 +33,7 @@ class StatsDone(Message):
         self.error = error
 
 
-class StatsScreen(SassScreen):
+class StatsScreen(WeightedWorkScreen):
     DEFAULT_CSS = """
     StatsScreen #stats-title { padding: 0 1; text-style: bold; color: $text-accent; }
     StatsScreen #stats-scroll { height: 1fr; }
@@ -44,13 +44,16 @@ class StatsScreen(SassScreen):
         Binding("t", "choose_target", "Target"),
     ]
 
+    TITLE_ID = "stats-title"
+    ANSWER_ID = "stats-table"
+    WORK_NAME = "Stats"
+    BUSY = "The table is being made: wait for it, or Esc."
+    WAITING = "Making the table, please wait..."
+
     def __init__(self, lists: QueryLists, query: str | None, target: str | None = None) -> None:
-        super().__init__(id="stats-screen")
-        self.lists = lists
+        super().__init__(lists, target, id="stats-screen")
         self.query_text = query or None  # None: every real person
-        self.target = target or None
         self.text = ""  # the table shown
-        self.work: Work | None = None
 
     def compose(self):
         yield Static(self.title_text(), id="stats-title")
@@ -64,13 +67,8 @@ class StatsScreen(SassScreen):
         people = self.query_text or "every real person"
         return f"Stats of {people}{weighted_words(self.target)}"
 
-    def on_mount(self) -> None:
-        self.start_table()
-
-    def start_table(self) -> None:
-        self.work = Work(self, "Stats")
-        self.query_one(WorkBar).start(self.work)
-        self.make_table(self.lists, self.query_text, self.target, self.work)
+    def run_work(self, work: Work) -> None:
+        self.make_table(self.lists, self.query_text, self.target, work)
 
     @work(thread=True, exclusive=True, group="stats", exit_on_error=False)
     def make_table(
@@ -85,8 +83,7 @@ class StatsScreen(SassScreen):
 
     def on_stats_done(self, event: StatsDone) -> None:
         event.stop()
-        self.work = None
-        self.query_one(WorkBar).stop()
+        self.work_done()
         shown = self.query_one("#stats-table", Static)
         if event.error:
             shown.update(f"No table: {event.error}")
@@ -95,29 +92,3 @@ class StatsScreen(SassScreen):
         self.text = event.text
         shown.update(Text(event.text, no_wrap=True))  # a wide table scrolls sideways
         self.say("Table done: t another target, Esc back to the query, F1 lists the keys.")
-
-    def on_work_progressed(self, event: WorkProgressed) -> None:
-        event.stop()
-        self.query_one(WorkBar).show(event)
-
-    def action_choose_target(self) -> None:
-        """Pick a target or virtual population: the table again on its people, weighted."""
-        if self.work is not None:
-            self.say("The table is being made: wait for it, or Esc.")
-            return
-        self.converse(self._choose_target())
-
-    async def _choose_target(self) -> None:
-        name = await pick_target(self, self.lists, self.target)
-        if name is None:
-            return
-        self.target = name or None
-        self.query_one("#stats-title", Static).update(self.title_text())
-        self.query_one("#stats-table", Static).update("Making the table, please wait...")
-        self.start_table()
-
-    def action_back(self) -> None:
-        """Back to the query screen (cancels a table still being made)."""
-        if self.work is not None:
-            self.work.cancel.set()
-        self.app.pop_screen()
