@@ -342,8 +342,9 @@ class SassServer(Server):
         return aiohttp_jinja2.render_template("app_index.html", request, context)
 
     async def handle_websocket(self, request: web.Request) -> web.WebSocketResponse:
-        if len(self.sessions) >= self.options.max_sessions:
-            log.warning("refused a session: %d live (--max-sessions)", len(self.sessions))
+        live = sum(not session.ended for session in self.sessions)
+        if live >= self.options.max_sessions:
+            log.warning("refused a session: %d live (--max-sessions)", live)
             raise web.HTTPServiceUnavailable(
                 text=f"503: {self.options.max_sessions} sessions are open "
                 "(sass serve --max-sessions); close one and reload.\n"

@@ -129,6 +129,9 @@ class SessionService(AppService):
         self.options = options
         self.close_with = close_with  # the WebSocket's close(code, reason)
         self.stopping = False
+        # The process has ended (or is being stopped): the session no longer
+        # holds a slot of --max-sessions, though its socket may still close.
+        self.ended = False
 
     def _build_environment(self, width: int = 80, height: int = 24) -> dict[str, str]:
         environment = super()._build_environment(width, height)
@@ -176,6 +179,9 @@ class SessionService(AppService):
         except TimeoutError:  # its output closed, yet it runs: it is ended here
             process.kill()
             status = await process.wait()
+        # The slot is free before the socket closes: a browser reconnecting as
+        # soon as it sees the close is let in.
+        self.ended = True
         if status == 0:  # the app quit (Ctrl+Q): textual-serve has closed the socket
             await self.close_with(1000, "the session ended")
             return
@@ -189,6 +195,7 @@ class SessionService(AppService):
 
     async def stop(self) -> None:
         self.stopping = True
+        self.ended = True
         process = self._process
         try:
             await asyncio.wait_for(super().stop(), STOP_WAIT_S)
