@@ -21,15 +21,14 @@ from sass_tui.model.percentile import (
     _refuse,
     cell_percentile_of,
     cell_value_at,
+    check_percentile,
 )
 
 
 def check_percentiles(p: npt.ArrayLike) -> npt.ArrayLike:
     """Percentile(s) p, a number or an array: each 0.5-99.5, else PercentileError."""
     if isinstance(p, (int, float)):  # the one percentile of an edit
-        if not MIN_PERCENTILE <= p <= MAX_PERCENTILE:
-            raise _refuse(float(p))
-        return p
+        return check_percentile(p)
     arr = np.asarray(p, dtype=float)
     bad = ~((arr >= MIN_PERCENTILE) & (arr <= MAX_PERCENTILE))
     if np.any(bad):
