@@ -10,10 +10,10 @@ import tempfile
 import time
 from pathlib import Path
 
-from sass_tui.db.ansur import import_ansur
-from sass_tui.db.individual import fetch_individual
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.ansur import import_ansur
+from sass_tui.db.people.individual import fetch_individual
+from sass_tui.db.query.query import run_query
 
 ANSUR = Path(__file__).resolve().parents[1].parent / "shared" / "data" / "ansur2"
 FILES = [ANSUR / "ANSUR_II_MALE_Public.csv", ANSUR / "ANSUR_II_FEMALE_Public.csv"]

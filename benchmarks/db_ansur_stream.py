@@ -14,12 +14,12 @@ import sys
 import tempfile
 from pathlib import Path
 
-from sass_tui.db.default_people import shipped_ansur_files
+from sass_tui.db.people.default_people import shipped_ansur_files
 
 CHILD = """
 import resource, sys, time
-from sass_tui.db.ansur import import_ansur
-from sass_tui.db.schema import connect
+from sass_tui.db.people.ansur import import_ansur
+from sass_tui.db.engine.schema import connect
 conn = connect(sys.argv[1], create=True)
 start = time.perf_counter()
 counts = import_ansur(conn, sys.argv[2:], label="bench")

@@ -13,11 +13,11 @@ import tempfile
 import time
 from pathlib import Path
 
-from sass_tui.db.default import create_default_database
-from sass_tui.db.default_people import shipped_ansur_files
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import connect
-from sass_tui.db.values import load_values
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.default import create_default_database
+from sass_tui.db.people.default_people import shipped_ansur_files
+from sass_tui.db.people.values import load_values
+from sass_tui.db.query.query import run_query
 from sass_tui.model.measures import MEASURES
 
 QUERIES = [

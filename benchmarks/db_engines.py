@@ -4,7 +4,7 @@ people by each engine sass can use, side by side in one run:
 - SQLite: `Query.count()` with the column copy off (what answers a database
   below 200,000 people, or without DuckDB installed);
 - DuckDB: `Query.count()` answered from the DuckDB column copy
-  (sass_tui/db/accelerator.py), warm, plus its build (`sass db copy`: the
+  (sass_tui/db/query/accelerator.py), warm, plus its build (`sass db copy`: the
   first count after any write waits for this in the background) and its
   first count in a new process (the copy opened from disk);
 - PostgreSQL 15: the same query tree compiled in the "postgresql" dialect
@@ -33,9 +33,9 @@ from pathlib import Path
 from db_million import SAMPLE
 from scale_databases import database, median_time
 
-from sass_tui.db import accelerator, copy_file
-from sass_tui.db.query import Query, compile_query
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.query import accelerator, copy_file
+from sass_tui.db.query.query import Query, compile_query
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from _postgres import running_cluster, why_not
@@ -52,7 +52,7 @@ def sqlite_count(conn: sqlite3.Connection) -> int:
 
 def load_postgres(cluster, sqlite_conn: sqlite3.Connection, people: int) -> str:
     """The tables the sample query reads, copied into a new PostgreSQL database."""
-    from sass_tui.db.postgres import PostgresConnection
+    from sass_tui.db.engine.postgres import PostgresConnection
 
     url = cluster.create_database(f"people_{people}")
     pg = PostgresConnection(url)
@@ -76,7 +76,7 @@ def load_postgres(cluster, sqlite_conn: sqlite3.Connection, people: int) -> str:
 
 
 def postgres_count(url: str) -> tuple[float, int]:
-    from sass_tui.db.postgres import PostgresConnection
+    from sass_tui.db.engine.postgres import PostgresConnection
 
     pg = PostgresConnection(url)
     try:

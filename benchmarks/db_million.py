@@ -19,14 +19,14 @@ from pathlib import Path
 
 import numpy as np
 
-from sass_tui.db.individual import fetch_individual
-from sass_tui.db.people_store import PeopleBatch, girth_mass_fractions, store_people
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import connect, transaction
+from sass_tui.db.engine.schema import connect, transaction
+from sass_tui.db.people.individual import fetch_individual
+from sass_tui.db.people.people_store import PeopleBatch, girth_mass_fractions, store_people
+from sass_tui.db.query.query import run_query
 from sass_tui.model import datasets
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import GIRTH, GLOBAL
-from sass_tui.model.percentile import Z95
-from sass_tui.model.popfile import read_population_file
+from sass_tui.model.population.percentile import Z95
 
 SAMPLE = (
     "gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb"

@@ -25,9 +25,9 @@ import numpy as np
 from db_million import SAMPLE
 from scale_databases import MILLION, database, median_time
 
-from sass_tui.db.individual import _fetch_individual, fetch_individual
-from sass_tui.db.query import compile_query
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.individual import _fetch_individual, fetch_individual
+from sass_tui.db.query.query import compile_query
 
 MAPPED = 17179869184  # connect()'s memory map before this change (PRAGMA mmap_size)
 
@@ -42,7 +42,7 @@ def sqlite_count(conn: sqlite3.Connection) -> int:
 def fetch_before(conn: sqlite3.Connection, id_num: int) -> None:
     """fetch_individual as it was before this benchmark's change (the baseline):
     one query per relation and one per strength query table, 22 in all."""
-    from sass_tui.db.schema import QUERY_TABLES, STRENGTH_PARAMETERS
+    from sass_tui.db.engine.schema import QUERY_TABLES, STRENGTH_PARAMETERS
 
     conn.execute(
         "SELECT id_num, name, gender, stature, mass, handedness, age, source "

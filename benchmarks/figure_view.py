@@ -26,7 +26,7 @@ import statistics
 import time
 
 from sass_tui.ui.app import SassApp
-from sass_tui.ui.figure_screen import FigureScreen
+from sass_tui.ui.spreadsheet.figure_screen import FigureScreen
 
 SIZES = ((80, 24), (120, 40), (200, 60))
 

@@ -23,15 +23,15 @@ import time
 from collections.abc import Callable
 from pathlib import Path
 
-from sass_tui.db.family import load_family
-from sass_tui.db.fit import fit_test
-from sass_tui.db.predict import open_predictor
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import connect
-from sass_tui.model.family_files import write_family
-from sass_tui.model.figfile import write_fig
-from sass_tui.model.figure import Figure
-from sass_tui.model.hanim_x3d import export_hanim
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.populations.family import load_family
+from sass_tui.db.populations.fit import fit_test
+from sass_tui.db.populations.predict import open_predictor
+from sass_tui.db.query.query import run_query
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.family_files import write_family
+from sass_tui.model.files.figfile import write_fig
+from sass_tui.model.files.hanim_x3d import export_hanim
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from scripts.default_database import add_db_option, default_database

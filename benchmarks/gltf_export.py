@@ -16,13 +16,13 @@ import tempfile
 import time
 from pathlib import Path
 
-from sass_tui.db.default import create_default_database, open_database
-from sass_tui.db.individual import fetch_individual, find_person, person_figure
-from sass_tui.model.body_surface import body_mesh, figure_surface
-from sass_tui.model.figure import Figure
-from sass_tui.model.gltf import export_gltf, render_gltf
-from sass_tui.model.hanim import build_humanoid
-from sass_tui.model.hanim_x3d import export_hanim
+from sass_tui.db.people.default import create_default_database, open_database
+from sass_tui.db.people.individual import fetch_individual, find_person, person_figure
+from sass_tui.model.body.body_surface import body_mesh, figure_surface
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.hanim import build_humanoid
+from sass_tui.model.files.gltf import export_gltf, render_gltf
+from sass_tui.model.files.hanim_x3d import export_hanim
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks"))

@@ -14,10 +14,10 @@ import tempfile
 import time
 from pathlib import Path
 
-from sass_tui.model.figfile import render_fig, write_fig
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.figfile import render_fig, write_fig
 from sass_tui.model.names import GROUPS
-from sass_tui.model.percentile_arrays import value_at
+from sass_tui.model.population.percentile_arrays import value_at
 
 
 def best_of(func, repeat: int = 7, number: int = 200) -> float:

@@ -27,9 +27,9 @@ from pathlib import Path
 import numpy as np
 
 from sass_tui.cli.predict import predict_csv
-from sass_tui.db.default import open_database
-from sass_tui.db.predict import cache_path, data_key, fit_predictor, open_predictor
-from sass_tui.model.prediction import Predictor
+from sass_tui.db.people.default import open_database
+from sass_tui.db.populations.predict import cache_path, data_key, fit_predictor, open_predictor
+from sass_tui.model.population.prediction import Predictor
 
 
 def best_of(fn, number: int, repeat: int = 5) -> tuple[float, float]:

@@ -36,12 +36,12 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from big_flat_files import write_big_flat_files
 
-from sass_tui.db.default import create_default_database
-from sass_tui.db.fit import fit_test
-from sass_tui.db.flatfile import import_flat_files
-from sass_tui.db.lists import QueryLists
-from sass_tui.db.population import population_of
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.default import create_default_database
+from sass_tui.db.people.flatfile import import_flat_files
+from sass_tui.db.populations.fit import fit_test
+from sass_tui.db.populations.population import population_of
+from sass_tui.db.query.lists import QueryLists
 
 SEAT = (
     "stature <= 190 cm AND measure.sittingheight <= 100 cm "

@@ -19,8 +19,8 @@ import time
 def main() -> None:
     from sass_tui.cli.query import _write_table
     from sass_tui.cli.query_json import write_people as _write_json
-    from sass_tui.db.default import open_database
-    from sass_tui.db.query import run_query
+    from sass_tui.db.people.default import open_database
+    from sass_tui.db.query.query import run_query
 
     parser = argparse.ArgumentParser()
     parser.add_argument("query", nargs="?", default="gender = male")

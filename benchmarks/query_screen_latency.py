@@ -25,7 +25,7 @@ import tui_latency
 from db_million import build
 from tui_latency import SESSION, screen, tmux, wait_for
 
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
 
 # (expected pop-up title, how many Down presses to the item) of figure 13's sequence;
 # None = type the constraint value instead.

@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 from db_million import build
 
-from sass_tui.db.schema import PERSON_TABLES, connect
+from sass_tui.db.engine.schema import PERSON_TABLES, connect
 
 MILLION = 1_000_000
 

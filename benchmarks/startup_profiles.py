@@ -39,7 +39,7 @@ FIRST_SCREEN = """
 import sys
 
 from sass_tui.cli import run_tui
-from sass_tui.ui.spreadsheet import SpreadsheetScreen
+from sass_tui.ui.spreadsheet.spreadsheet import SpreadsheetScreen
 
 
 def first_screen_drawn(screen):

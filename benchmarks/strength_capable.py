@@ -21,13 +21,13 @@ import timeit
 
 import numpy as np
 
-from sass_tui.db.database import Database
-from sass_tui.db.values import load_values
-from sass_tui.model.arm_force_field import arm_force
-from sass_tui.model.figure import Figure
-from sass_tui.model.percent_capable import lower_limb_capable
-from sass_tui.model.posture import parse_angles, pose_figure
-from sass_tui.model.published_strength import (
+from sass_tui.db.engine.database import Database
+from sass_tui.db.people.values import load_values
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles, pose_figure
+from sass_tui.model.strength.arm_force_field import arm_force
+from sass_tui.model.strength.percent_capable import lower_limb_capable
+from sass_tui.model.strength.published_strength import (
     Subject,
     lower_limb_percent_capable,
     lower_limb_strength,

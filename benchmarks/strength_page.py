@@ -16,8 +16,8 @@ import time
 
 COLD_LOAD = """
 import time
-from sass_tui.model.figure import Figure
-from sass_tui.model.strength import StrengthSheet, read_strength_file
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.strength.strength import StrengthSheet, read_strength_file
 figure = Figure.default()
 start = time.perf_counter()
 sheet = StrengthSheet(read_strength_file(), figure)
@@ -41,8 +41,8 @@ def cold_load_ms(runs: int) -> list[float]:
 
 
 def recompute_ms(runs: int) -> list[float]:
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.strength import StrengthSheet, read_strength_file
+    from sass_tui.model.body.figure import Figure
+    from sass_tui.model.strength.strength import StrengthSheet, read_strength_file
 
     sheet = StrengthSheet(read_strength_file(), Figure.default())
     sheet.rows()
@@ -57,7 +57,7 @@ def recompute_ms(runs: int) -> list[float]:
 
 async def pilot_ms(runs: int) -> tuple[list[float], list[float], list[float]]:
     from sass_tui.ui.app import SassApp
-    from sass_tui.ui.strength_page import StrengthPage
+    from sass_tui.ui.spreadsheet.strength_page import StrengthPage
 
     baseline, show, edit = [], [], []
     for _ in range(runs):

@@ -15,8 +15,8 @@ import timeit
 
 import numpy as np
 
-from sass_tui.model.figure import Figure
-from sass_tui.model.strength import MOTIONS, StrengthSheet, fit_summary, read_strength_file
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.strength.strength import MOTIONS, StrengthSheet, fit_summary, read_strength_file
 
 
 def best_of(fn, number: int = 2000, repeat: int = 7) -> tuple[float, float]:

@@ -20,10 +20,10 @@ from pathlib import Path
 
 from fit import median_ms  # benchmarks/fit.py: the one timing helper of both
 
-from sass_tui.db.fit import fit_test
-from sass_tui.db.schema import connect
-from sass_tui.db.targets import load_target, make_target, store_target
-from sass_tui.model.sample_file import read_sample
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.populations.fit import fit_test
+from sass_tui.db.populations.targets import load_target, make_target, store_target
+from sass_tui.model.files.sample_file import read_sample
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))

@@ -75,10 +75,10 @@ SASS_PROBE = (
     PROBE
     + """
 from sass_tui.ui import app as sass_app
-from sass_tui.ui.spreadsheet import SpreadsheetScreen
+from sass_tui.ui.spreadsheet.spreadsheet import SpreadsheetScreen
 MARKS["app imported"] = time.perf_counter()
 wrap("sass_tui.ui.app", "SassApp.__init__")
-wrap("sass_tui.model.figure", "Figure.default")
+wrap("sass_tui.model.body.figure", "Figure.default")
 def first_screen_drawn(screen):
     drawn(screen.app, "numpy" in sys.modules)
 SpreadsheetScreen._first_screen_drawn = first_screen_drawn

@@ -28,12 +28,17 @@ from pathlib import Path
 
 from fit import median_ms  # benchmarks/fit.py: the one timing helper
 
-from sass_tui.db.default import create_default_database
-from sass_tui.db.schema import connect
-from sass_tui.db.shipped import load_weights
-from sass_tui.db.stats import EVERY_MEASURE, stats_table
-from sass_tui.db.targets import BOTH, drop_target, make_target, store_target
-from sass_tui.db.virtual import drop_virtual, make_virtual, shipped_sample, store_virtual
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.default import create_default_database
+from sass_tui.db.populations.shipped import load_weights
+from sass_tui.db.populations.stats import EVERY_MEASURE, stats_table
+from sass_tui.db.populations.targets import BOTH, drop_target, make_target, store_target
+from sass_tui.db.populations.virtual import (
+    drop_virtual,
+    make_virtual,
+    shipped_sample,
+    store_virtual,
+)
 from sass_tui.model.datasets import NHANES_NAME
 
 ROOT = Path(__file__).resolve().parents[1]

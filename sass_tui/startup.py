@@ -32,17 +32,17 @@ class StartupPath(NamedTuple):
     status: int = 0  # the exit status the argv is expected to give
 
 
-# Off every path here: lark only reads a .fig file (model/fig_reader.py; a query
-# is parsed by the generated stand-alone parser, db/_query_parser.py); pint
+# Off every path here: lark only reads a .fig file (model/files/fig_reader.py; a query
+# is parsed by the generated stand-alone parser, db/query/_query_parser.py); pint
 # only checks the unit table in the tests; pygltflib only reads exported glTF
 # files back in the tests.
 NEVER = ("lark", "pint", "pygltflib")
 # The query language's generated parser: only a path that parses a query.
-QUERY_PARSER = ("sass_tui.db._query_parser",)
+QUERY_PARSER = ("sass_tui.db.query._query_parser",)
 # Textual and what draws or serves it: only the TUI and `sass serve`.
 UI = ("textual", "rich", "textual_canvas", "textual_plotext", "textual_serve", "aiohttp")
 # The engines past SQLite: PostgreSQL on an address, DuckDB for the column
-# copy of 200,000 people and more (db/accelerator.py).
+# copy of 200,000 people and more (db/query/accelerator.py).
 ENGINES = ("psycopg", "duckdb")
 # Standard-library modules a command that writes nothing to a temporary file,
 # logs nothing and copies no file need not pay for.
@@ -51,8 +51,8 @@ NOT_FOR_A_SHORT_COMMAND = ("logging", "shutil", "tempfile", "importlib.metadata"
 OTHER_SCREENS = (
     "sqlite3",
     "sass_tui.db",
-    "sass_tui.model.prediction",
-    "sass_tui.ui.query_screen",
+    "sass_tui.model.population.prediction",
+    "sass_tui.ui.query.query_screen",
 )
 
 # fmt: off
@@ -63,7 +63,7 @@ PATHS: tuple[StartupPath, ...] = (
         (*NEVER, *QUERY_PARSER, *ENGINES, *OTHER_SCREENS, "numpy", "textual_canvas",
          "textual_plotext",
          "textual_serve", "aiohttp", "xml.etree.ElementTree", "importlib.metadata",
-         "sass_tui.ui.figure_screen"),
+         "sass_tui.ui.spreadsheet.figure_screen"),
         "`sass` start-up <= 1.3x a bare Textual app (benchmarks/cli_ratios.py): the default"
         " figure is read and computed in plain floats; numpy (~31 ms) waits a frame",
         moment="drawn",
@@ -101,7 +101,7 @@ PATHS: tuple[StartupPath, ...] = (
         ("fig", "-o", "X.fig"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
          "platformdirs", "numpy.ma", "secrets", "xml.etree.ElementTree", "sass_tui.db",
-         "sass_tui.ui", "sass_tui.model.landmarks"),
+         "sass_tui.ui", "sass_tui.model.body.landmarks"),
         "`sass fig -o X.fig` <= 1.6x `python -c 'import numpy'` (benchmarks/cli_ratios.py):"
         " the figure needs numpy and the model, no database and no temporary file's name",
     ),
@@ -126,7 +126,7 @@ PATHS: tuple[StartupPath, ...] = (
         ("strength", "elbow_flexion"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
          "platformdirs", "numpy.ma", "secrets", "xml.etree.ElementTree", "sass_tui.db",
-         "sass_tui.ui", "sass_tui.model.atomic"),
+         "sass_tui.ui", "sass_tui.model.files.atomic"),
         "the strength of the default figure needs the strength file and the model only",
     ),
     StartupPath(
@@ -134,9 +134,9 @@ PATHS: tuple[StartupPath, ...] = (
         ("strength", "arm_force", "--direction", "up"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
          "platformdirs", "numpy.ma", "secrets", "xml.etree.ElementTree", "sass_tui.db",
-         "sass_tui.ui", "sass_tui.cli.person_option"),
+         "sass_tui.ui", "sass_tui.cli.common.person_option"),
         "the Arm Force Field at the default figure's hand needs the posture and the model;"
-        " the database only for --person (cli/person_option.py)",
+        " the database only for --person (cli/common/person_option.py)",
     ),
     StartupPath(
         "sass task",
@@ -151,7 +151,7 @@ PATHS: tuple[StartupPath, ...] = (
         ("query", "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "dataclasses", "inspect",
          "numpy", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
-         "sass_tui.model.prediction", "sass_tui.db.accelerator", "sass_tui.db.postgres",
+         "sass_tui.model.population.prediction", "sass_tui.db.query.accelerator", "sass_tui.db.engine.postgres",
          "json", "csv", "sass_tui.model.datasets"),
         "`sass query` <= 5x `python -c pass` (benchmarks/cli_ratios.py): the generated"
         " parser, the unit table (not pint), SQLite and the table writer; argparse's help"
@@ -164,7 +164,7 @@ PATHS: tuple[StartupPath, ...] = (
         ("query", "--format", "csv", "stature > 70 in"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "dataclasses", "inspect",
          "numpy", "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
-         "sass_tui.model.prediction", "sass_tui.db.accelerator", "sass_tui.db.postgres",
+         "sass_tui.model.population.prediction", "sass_tui.db.query.accelerator", "sass_tui.db.engine.postgres",
          "json"),
         "as `sass query`: \"70 in\" is converted from the unit table, and csv is the writer",
         needs_db=True,
@@ -173,7 +173,7 @@ PATHS: tuple[StartupPath, ...] = (
         "sass query --count",
         ("query", "--count", "gender = male"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "numpy", "secrets",
-         "platformdirs", "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
+         "platformdirs", "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.population.prediction",
          "uuid"),
         "a count asks the column copy's module whether a copy exists; below its size"
         " SQLite counts, without duckdb or numpy",
@@ -184,8 +184,8 @@ PATHS: tuple[StartupPath, ...] = (
         ("person", "1"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy.ma", "secrets",
          "platformdirs",
-         "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
-         "sass_tui.db.accelerator"),
+         "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.population.prediction",
+         "sass_tui.db.query.accelerator"),
         "one person's record: no query language, no prediction",
         needs_db=True,
     ),
@@ -194,8 +194,8 @@ PATHS: tuple[StartupPath, ...] = (
         ("population", "--query", "gender = male", "-o", "X.dat"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "inspect", "secrets",
          "platformdirs",
-         "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
-         "sass_tui.db.accelerator", "sass_tui.db.targets", "sass_tui.model.targets"),
+         "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.population.prediction",
+         "sass_tui.db.query.accelerator", "sass_tui.db.populations.targets", "sass_tui.model.population.targets"),
         "the population files need the query, the people and numpy's statistics only",
         needs_db=True,
     ),
@@ -204,8 +204,8 @@ PATHS: tuple[StartupPath, ...] = (
         ("predict", "--gender", "male", "--known", "stature=180"),
         (*NEVER, *UI, *ENGINES, "asyncio", "importlib.metadata", "numpy.ma",
          "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
-         "sass_tui.db.accelerator", "sass_tui.model.figure", "sass_tui.model.figfile",
-         "sass_tui.model.hanim", "sass_tui.model.gltf"),
+         "sass_tui.db.query.accelerator", "sass_tui.model.body.figure", "sass_tui.model.files.figfile",
+         "sass_tui.model.body.hanim", "sass_tui.model.files.gltf"),
         "the regression needs the people and numpy, not the figure nor the exports' writers"
         " (only -o writes a figure)",
         needs_db=True,
@@ -215,7 +215,7 @@ PATHS: tuple[StartupPath, ...] = (
         ("fit", "stature <= 190 cm"),
         (*NEVER, *UI, *ENGINES, "asyncio", "importlib.metadata", "numpy.ma",
          "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
-         "sass_tui.db.accelerator", "sass_tui.db.targets", "sass_tui.db.predict"),
+         "sass_tui.db.query.accelerator", "sass_tui.db.populations.targets", "sass_tui.db.populations.predict"),
         "the fit test needs the query, the people and numpy only",
         needs_db=True,
     ),
@@ -223,8 +223,8 @@ PATHS: tuple[StartupPath, ...] = (
         "sass family",
         ("family", "--gender", "male", "--measures", "stature,mass", "-o", "family"),
         (*NEVER, *UI, *ENGINES, "asyncio", "importlib.metadata", "numpy.ma",
-         "secrets", "platformdirs", "sass_tui.ui", "sass_tui.db.accelerator",
-         "sass_tui.db.targets"),
+         "secrets", "platformdirs", "sass_tui.ui", "sass_tui.db.query.accelerator",
+         "sass_tui.db.populations.targets"),
         "the family needs the people, the prediction and the X3D writer, no TUI",
         needs_db=True,
     ),
@@ -233,8 +233,8 @@ PATHS: tuple[StartupPath, ...] = (
         ("target", "--list"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "inspect", "numpy.ma",
          "secrets", "platformdirs",
-         "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.prediction",
-         "sass_tui.db.accelerator"),
+         "xml.etree.ElementTree", "sass_tui.ui", "sass_tui.model.population.prediction",
+         "sass_tui.db.query.accelerator"),
         "listing the stored targets reads the database only",
         needs_db=True,
     ),
@@ -243,9 +243,9 @@ PATHS: tuple[StartupPath, ...] = (
         ("stats", "stature", "mass", "--gender", "female"),
         (*NEVER, *UI, *ENGINES, "asyncio", "importlib.metadata", "numpy.ma",
          "secrets", "platformdirs", "xml.etree.ElementTree", "sass_tui.ui",
-         "sass_tui.db.accelerator"),
+         "sass_tui.db.query.accelerator"),
         "the table reads the people's values and weights, no TUI, no other engine (the "
-        "shipped virtual population's maker, db/virtual.py, brings the prediction's tempfile)",
+        "shipped virtual population's maker, db/populations/virtual.py, brings the prediction's tempfile)",
         needs_db=True,
     ),
     StartupPath(
@@ -254,7 +254,7 @@ PATHS: tuple[StartupPath, ...] = (
         (*NEVER, *UI, *ENGINES, "asyncio", "importlib.metadata", "platformdirs",
          "xml.etree.ElementTree", "sass_tui.ui"),
         "building the default database needs the shipped files and SQLite; the shipped "
-        "target and virtual population made with it (db/virtual.py) bring a query (lark) "
+        "target and virtual population made with it (db/populations/virtual.py) bring a query (lark) "
         "and the prediction model, no other engine, no TUI",
     ),
     StartupPath(

@@ -26,7 +26,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from sass_tui.model.prediction import GenderModel, Predictor  # noqa: E402
+from sass_tui.model.population.prediction import GenderModel, Predictor  # noqa: E402
 
 FOLDS = 10
 SEED = 20261122
@@ -55,10 +55,10 @@ def load_training(args: argparse.Namespace):  # -> (fields, values)
     the ANSUR II files imported into a temporary database."""
     import tempfile
 
-    from sass_tui.db.ansur import import_ansur
-    from sass_tui.db.schema import connect
-    from sass_tui.db.values import load_values
-    from sass_tui.model.prediction import predicted_fields
+    from sass_tui.db.engine.schema import connect
+    from sass_tui.db.people.ansur import import_ansur
+    from sass_tui.db.people.values import load_values
+    from sass_tui.model.population.prediction import predicted_fields
 
     fields = predicted_fields()
     if args.db:
@@ -195,7 +195,7 @@ def render(
         "Measured by `python scripts/accuracy.py` (rerunnable; it writes this file) "
         f"on {date}, {machine}.",
         "",
-        "**Method** (`sass_tui/model/prediction.py`): per gender, the conditional mean of a "
+        "**Method** (`sass_tui/model/population/prediction.py`): per gender, the conditional mean of a "
         "multivariate normal fitted to the standardized ANSUR II values — which is ordinary "
         "least squares of every unknown value on the known ones — with a 90 % prediction "
         "interval from a residual variance modelled on the known values (the log squared "

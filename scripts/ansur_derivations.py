@@ -1,4 +1,4 @@
-"""The segment dimensions sass derives from ANSUR II (sass_tui/db/ansur.py,
+"""The segment dimensions sass derives from ANSUR II (sass_tui/db/people/ansur.py,
 _derive) against the report's appendices B and C (datasets/girth.dat), at the
 5th, 50th and 95th percentiles of each gender: the table of docs/data-sources.md,
 "ANSUR II derivations against appendices B and C".
@@ -63,7 +63,7 @@ MEASURED = {
 
 def derived_percentiles(folder: Path = ANSUR) -> dict[str, np.ndarray]:
     """gender -> (rows, 3 axes, 3 percentiles) of the derived girth, cm."""
-    from sass_tui.db.ansur import read_ansur
+    from sass_tui.db.people.ansur import read_ansur
 
     out = {}
     for gender, name in FILES.items():
@@ -76,8 +76,8 @@ def derived_percentiles(folder: Path = ANSUR) -> dict[str, np.ndarray]:
 
 def table(folder: Path = ANSUR) -> str:
     from sass_tui.model import datasets
+    from sass_tui.model.files.popfile import read_population_file
     from sass_tui.model.names import AXES, GIRTH, ROWS
-    from sass_tui.model.popfile import read_population_file
 
     report = read_population_file(datasets.path("girth.dat"), GIRTH)
     derived = derived_percentiles(folder)

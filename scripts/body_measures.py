@@ -1,8 +1,8 @@
 """Write datasets/body_measures.csv: for each gender and each measurement the
-body's surface passes through (model/body_measures.py SURFACE_MEASURES), the
+body's surface passes through (model/body/body_measures.py SURFACE_MEASURES), the
 three numbers of `sass predict`'s prediction from stature and mass alone.
 
-The predictor (model/prediction.py, fitted on the ANSUR II people of the
+The predictor (model/population/prediction.py, fitted on the ANSUR II people of the
 default database) gives the conditional mean of every measurement given the
 known values; given stature and mass that mean is linear in them, so three
 predictions per gender give it exactly:
@@ -24,11 +24,11 @@ import io
 import tempfile
 from pathlib import Path
 
-from sass_tui.db.default import create_default_database, open_database
-from sass_tui.db.predict import open_predictor
+from sass_tui.db.people.default import create_default_database, open_database
+from sass_tui.db.populations.predict import open_predictor
 from sass_tui.model import datasets
-from sass_tui.model.atomic import write_text_atomic
-from sass_tui.model.body_measures import SURFACE_MEASURES, TABLE, TABLE_COLUMNS
+from sass_tui.model.body.body_measures import SURFACE_MEASURES, TABLE, TABLE_COLUMNS
+from sass_tui.model.files.atomic import write_text_atomic
 
 # Where the three predictions are taken (cm, kg): inside each gender's range,
 # so the predictor refuses none of them.

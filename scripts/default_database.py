@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-from sass_tui.db.default import create_default_database
+from sass_tui.db.people.default import create_default_database
 
 
 def add_db_option(parser: argparse.ArgumentParser) -> None:

@@ -21,7 +21,7 @@ from pathlib import Path
 
 from hanim_pictures import figure_at  # the scripts' percentile figure (scripts/ is on the path)
 
-from sass_tui.model.gltf import export_gltf
+from sass_tui.model.files.gltf import export_gltf
 
 ROOT = Path(__file__).resolve().parents[1]
 THREE = ROOT / "node" / "node_modules" / "three"

@@ -1,13 +1,13 @@
 """How far the HAnim humanoid's joints stand from where a real body's landmarks
 put them (docs/hanim.md, "Joint centres").
 
-1. The landmark/stature ratios of sass_tui.model.hanim.LANDMARK_FRACTIONS,
+1. The landmark/stature ratios of sass_tui.model.body.hanim.LANDMARK_FRACTIONS,
    recomputed from the ANSUR II public files (means over every person).
 2. ANSUR II people (all 6,068, or a sample) imported into a fresh database
    (`sass db import-ansur`), fetched back and exported as `sass export hanim
    --person` exports them (db.individual.person_figure against the shipped
    population, hanim.build_humanoid); for each, the height of every site
-   their measurements place (model/landmarks.py) against the CSV column it
+   their measurements place (model/body/landmarks.py) against the CSV column it
    comes from, the acromion sites' spacing against biacromialbreadth, the
    joints placed at a landmark against it, and the whole-body centre of
    mass (de Leva 1996) as a share of the stature.
@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 if TYPE_CHECKING:
-    from sass_tui.model.hanim import Humanoid
+    from sass_tui.model.body.hanim import Humanoid
 
 ROOT = Path(__file__).resolve().parents[1]
 ANSUR = ROOT.parent / "shared" / "data" / "ansur2"
@@ -125,8 +125,8 @@ def center_of_mass_share(humanoid: Humanoid, stature: float) -> float:
 
 def percentile_figures() -> dict[str, float]:
     """Centre of mass / stature of the shipped male 50th and female 5th figures."""
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.hanim import build_humanoid
+    from sass_tui.model.body.figure import Figure
+    from sass_tui.model.body.hanim import build_humanoid
 
     out = {}
     for gender, percentile in (("male", 50.0), ("female", 5.0)):
@@ -145,11 +145,11 @@ def measure(people: int | None = None, folder: Path = ANSUR) -> dict[str, object
     """Export ANSUR II people (every one, or `people` evenly spread over each
     file, half men and half women) as `sass export hanim --person` does, and
     measure their sites and joints against their own measurements."""
-    from sass_tui.db.ansur import import_ansur
-    from sass_tui.db.individual import fetch_individual, person_figure
-    from sass_tui.db.schema import connect
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.hanim import build_humanoid
+    from sass_tui.db.engine.schema import connect
+    from sass_tui.db.people.ansur import import_ansur
+    from sass_tui.db.people.individual import fetch_individual, person_figure
+    from sass_tui.model.body.figure import Figure
+    from sass_tui.model.body.hanim import build_humanoid
 
     errors: dict[str, list[float]] = {
         **{site: [] for site, _ in SITES},
@@ -210,8 +210,8 @@ def main() -> int:
     )
     args = parser.parse_args()
     sys.path.insert(0, str(ROOT))
-    from sass_tui.model.hanim import LANDMARK_FRACTIONS
-    from sass_tui.model.landmarks import BIACROMIAL_FRACTION
+    from sass_tui.model.body.hanim import LANDMARK_FRACTIONS
+    from sass_tui.model.body.landmarks import BIACROMIAL_FRACTION
 
     fractions = landmark_fractions()
     print("landmark / stature (ANSUR II means):")

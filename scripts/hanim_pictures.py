@@ -9,10 +9,10 @@ import sys
 import tempfile
 from pathlib import Path
 
-from sass_tui.model.body_surface import body_mesh, figure_surface
-from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import build_humanoid
-from sass_tui.model.hanim_x3d import humanoid_element, scene_document
+from sass_tui.model.body.body_surface import body_mesh, figure_surface
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.hanim import build_humanoid
+from sass_tui.model.files.hanim_x3d import humanoid_element, scene_document
 
 ROW = (("female", 5.0), ("male", 50.0), ("male", 95.0))
 SPACING = 0.75  # metres between the figures' origins

@@ -3,7 +3,7 @@
 Nobody in these files exists.  Each person is drawn, with a fixed seed, from
 the population statistics shipped in datasets/ (global.dat, girth.dat,
 jntlmt.dat, cmass.dat) by the two-piece normal model of
-sass_tui/model/percentile.py; a shared body-size factor makes stature, mass
+sass_tui/model/population/percentile.py; a shared body-size factor makes stature, mass
 and the dimensions of one person go together.  Strengths come from assumed
 medians (STRENGTH_MEDIAN_NM below, rough magnitudes, no data set behind them)
 scaled by body mass.  Every person's `source` field says so, and
@@ -20,19 +20,19 @@ from pathlib import Path
 
 import numpy as np
 
-from sass_tui.db.flatfile import write_flat_files
-from sass_tui.db.schema import (
+from sass_tui.db.engine.schema import (
     ELBOW_MOTIONS,
     SHOULDER_MOTIONS,
     WRIST_MOTIONS,
     PeopleBatch,
     girth_mass_fractions,
 )
+from sass_tui.db.people.flatfile import write_flat_files
 from sass_tui.model import datasets
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
-from sass_tui.model.percentile_arrays import value_at
-from sass_tui.model.popfile import read_population_file
-from sass_tui.model.strength import ISOKINETIC_DECAY_PER_DEG_S
+from sass_tui.model.population.percentile_arrays import value_at
+from sass_tui.model.strength.strength import ISOKINETIC_DECAY_PER_DEG_S
 
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "datasets" / "db"

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from sass_tui.model.atomic import write_text_atomic
+from sass_tui.model.files.atomic import write_text_atomic
 
 ROOT = Path(__file__).resolve().parent.parent
 ANSUR = ROOT.parent / "shared" / "data" / "ansur2"

@@ -35,7 +35,7 @@ import io
 import sys
 from pathlib import Path
 
-from sass_tui.model.atomic import write_bytes_atomic
+from sass_tui.model.files.atomic import write_bytes_atomic
 
 ROOT = Path(__file__).resolve().parent.parent
 PUBLISHED = ROOT.parent / "shared" / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"

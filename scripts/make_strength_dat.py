@@ -177,7 +177,7 @@ def render() -> str:
 def main() -> int:
     root = Path(__file__).resolve().parents[1]
     sys.path.insert(0, str(root))
-    from sass_tui.model.atomic import write_text_atomic
+    from sass_tui.model.files.atomic import write_text_atomic
 
     target = root / "datasets" / "strength.dat"
     write_text_atomic(target, render())

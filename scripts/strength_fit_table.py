@@ -6,7 +6,7 @@ equation fitted to the shipped strength file, male right limb.
 
 from __future__ import annotations
 
-from sass_tui.model.strength import N_ANGLES, fit_summary, read_strength_file
+from sass_tui.model.strength.strength import N_ANGLES, fit_summary, read_strength_file
 from sass_tui.model.vocabulary import JOINT_AXES
 
 

@@ -23,10 +23,10 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from sass_tui.db.schema import connect  # noqa: E402
-from sass_tui.db.targets import make_target  # noqa: E402
-from sass_tui.model.target_sample import Sample  # noqa: E402
-from sass_tui.model.targets import weighted_percentile  # noqa: E402
+from sass_tui.db.engine.schema import connect  # noqa: E402
+from sass_tui.db.populations.targets import make_target  # noqa: E402
+from sass_tui.model.population.target_sample import Sample  # noqa: E402
+from sass_tui.model.population.targets import weighted_percentile  # noqa: E402
 from scripts.default_database import add_db_option, default_database  # noqa: E402
 
 # U.S. civilian-like adult women: mean stature 160.5 cm (SD 6.8), median
@@ -53,7 +53,7 @@ def main() -> None:
     args = parser.parse_args()
     with default_database(args.db, say_build_time=False) as (path, _tmp):
         conn = connect(path)
-        from sass_tui.db.values import load_values
+        from sass_tui.db.people.values import load_values
 
         people = load_values(conn, ["stature", "mass"], "source = ansur2 AND gender = female")
         print(

@@ -25,9 +25,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from sass_tui.db.schema import connect  # noqa: E402
-from sass_tui.db.shipped import load_weights  # noqa: E402
-from sass_tui.db.values import load_values  # noqa: E402
+from sass_tui.db.engine.schema import connect  # noqa: E402
+from sass_tui.db.people.values import load_values  # noqa: E402
+from sass_tui.db.populations.shipped import load_weights  # noqa: E402
 from scripts.default_database import add_db_option, default_database  # noqa: E402
 
 PUBLISHED = ROOT.parent / "shared" / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"

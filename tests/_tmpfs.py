@@ -76,8 +76,8 @@ def fill(folder: Path, leave: int = 0) -> Path:
 def build_small_db(path: Path) -> Path:
     """A sass database of the 200 shipped synthetic people (~1.8 MB: small
     enough for a tmpfs of a few MB)."""
-    from sass_tui.db.flatfile import FlatFiles, import_flat_files
-    from sass_tui.db.schema import connect
+    from sass_tui.db.engine.schema import connect
+    from sass_tui.db.people.flatfile import FlatFiles, import_flat_files
     from sass_tui.model import datasets
 
     conn = connect(path, create=True)

@@ -10,12 +10,12 @@ import math
 
 import numpy as np
 
-from sass_tui.db.database import Database
-from sass_tui.db.targets import load_target
-from sass_tui.db.values import load_values
-from sass_tui.model.arm_force_field import arm_force
-from sass_tui.model.figure import Figure
-from sass_tui.model.posture import parse_angles, pose_figure
+from sass_tui.db.engine.database import Database
+from sass_tui.db.people.values import load_values
+from sass_tui.db.populations.targets import load_target
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles, pose_figure
+from sass_tui.model.strength.arm_force_field import arm_force
 
 VIRTUAL = "nhanes-2017-2020"
 

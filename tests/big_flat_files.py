@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from sass_tui.db.flatfile import FlatFiles
-from sass_tui.db.schema import GIRTH_NAMES
+from sass_tui.db.engine.schema import GIRTH_NAMES
+from sass_tui.db.people.flatfile import FlatFiles
 
 FIRST_ID = 900_000
 

@@ -13,7 +13,7 @@ from sass_tui.cli import main
 
 # One BLAS thread in each test process: `pytest -n 2` already keeps both cores
 # busy, and OpenBLAS's own threads then wait on each other (calibrating the
-# shipped target's weights, model/targets.py's Newton steps: 7.6 ms a step
+# shipped target's weights, model/population/targets.py's Newton steps: 7.6 ms a step
 # with its threads under load, 1.5 ms with one; the model tests' CPU time
 # 47 s -> 39 s).  Set before anything imports numpy; `sass` processes the
 # tests start inherit it.
@@ -39,7 +39,7 @@ def shipped_db_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The database `sass db init` builds from the shipped data, built once per
     test process and never written: each area copies it (`db` in tests/ui,
     `default_db_file` in tests/db, `default_people_db` in tests/web)."""
-    from sass_tui.db.default import create_default_database
+    from sass_tui.db.people.default import create_default_database
 
     path = tmp_path_factory.mktemp("shipped") / "sass.db"
     create_default_database(path)
@@ -62,7 +62,7 @@ def _private_default_database(tmp_path_factory: pytest.TempPathFactory):
 @pytest.fixture(autouse=True, scope="session")
 def _private_cache(tmp_path_factory):
     """What sass caches in the user's cache directory (a PostgreSQL database's
-    prediction fit, db/predict.py) goes here, never in the user's."""
+    prediction fit, db/populations/predict.py) goes here, never in the user's."""
     saved = os.environ.get("XDG_CACHE_HOME")
     os.environ["XDG_CACHE_HOME"] = str(tmp_path_factory.mktemp("cache"))
     yield

@@ -16,8 +16,8 @@ ROOT = Path(__file__).resolve().parent.parent
 DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
 CODE = ("sass_tui", "tests", "scripts", "benchmarks")
 
-# A path the docs write from the repository's top (sass_tui/db/lists.py) or,
-# inside sass_tui, from its layer (db/lists.py).
+# A path the docs write from the repository's top (sass_tui/db/query/lists.py) or,
+# inside sass_tui, from its layer (db/query/lists.py).
 PATH = re.compile(
     r"(?<![\w/.~$-])((?:\.ci|sass_tui|tests|docs|benchmarks|scripts|datasets|node|LICENSES"
     r"|model|db|ui|cli)/[\w./-]*[\w/])"
@@ -79,7 +79,7 @@ def _parsed(module: Path) -> ast.Module:
 
 
 def _module_has(dotted: str) -> bool:
-    """sass_tui.db.lists (a module) or sass_tui.db.lists.QueryLists (a name it defines)."""
+    """sass_tui.db.query.lists (a module) or sass_tui.db.query.lists.QueryLists (a name it defines)."""
     parts = dotted.split(".")
     for end in range(len(parts), 0, -1):
         base = ROOT.joinpath(*parts[:end])
@@ -137,7 +137,7 @@ def test_every_path_module_and_function_the_docs_name_exists():
 
 def test_the_check_finds_what_does_not_exist():
     text = (
-        "`sass_tui/db/lists.py`, db/lists.py, `QueryLists.open`, `sass_tui.db.lists`, "
+        "`sass_tui/db/query/lists.py`, db/query/lists.py, `QueryLists.open`, `sass_tui.db.query.lists`, "
         "`compile_query()`, `pyproject.toml`"
     )
     assert missing(text) == []

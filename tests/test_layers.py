@@ -81,7 +81,7 @@ def test_the_first_screen_is_drawn_before_numpy_is_imported():
     code = (
         "import asyncio, sys\n"
         "from sass_tui.ui.app import SassApp\n"
-        "from sass_tui.ui.spreadsheet import SpreadsheetScreen\n"
+        "from sass_tui.ui.spreadsheet.spreadsheet import SpreadsheetScreen\n"
         "seen = {}\n"
         "drawn = SpreadsheetScreen._first_screen_drawn\n"
         "def first_screen_drawn(screen):\n"

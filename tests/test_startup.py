@@ -29,7 +29,7 @@ print("MODULES", " ".join(sys.modules), file=sys.stderr)
 TUI = """
 import asyncio, sys
 from sass_tui.ui.app import SassApp
-from sass_tui.ui.spreadsheet import SpreadsheetScreen
+from sass_tui.ui.spreadsheet.spreadsheet import SpreadsheetScreen
 seen = []
 drawn = SpreadsheetScreen._first_screen_drawn
 def first_screen_drawn(screen):

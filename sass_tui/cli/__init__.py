@@ -17,7 +17,7 @@ import sys
 from types import ModuleType
 from typing import Any, NamedTuple, cast
 
-from sass_tui.cli.options import DB_HELP, SubParsers
+from sass_tui.cli.common.options import DB_HELP, SubParsers
 from sass_tui.model.errors import SassError
 from sass_tui.model.text import printable
 
@@ -249,10 +249,10 @@ def run_verb(args: argparse.Namespace) -> int:
             print(printable(line), file=sys.stderr)
         return 2
     except Exception as exc:
-        if "sass_tui.db.database" not in sys.modules:
+        if "sass_tui.db.engine.database" not in sys.modules:
             raise  # no database was opened: not an engine's error
         # deferred: db.database — off sass fig, sass strength, sass export hanim … (sass_tui/startup.py)
-        from sass_tui.db.database import engine_error
+        from sass_tui.db.engine.database import engine_error
 
         error = engine_error(exc)
         if error is None:

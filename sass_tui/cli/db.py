@@ -6,19 +6,19 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.database_access import open_database
-from sass_tui.cli.options import SubParsers, add_db_option, warn_of_a_password
-from sass_tui.cli.progress import progress_for
-from sass_tui.db import accelerator
-from sass_tui.db.addresses import is_url, shown
-from sass_tui.db.ansur import import_ansur_into
-from sass_tui.db.database import Database, configured_target, init_postgres
-from sass_tui.db.default import SYNTHETIC_LABEL, create_default_database
-from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_into
-from sass_tui.db.query import QueryError, compile_query
-from sass_tui.db.replacing import Held, forget_column_copy, keep_targets, what_init_replaces
-from sass_tui.db.schema import DatabaseError, connect, default_db_path
-from sass_tui.db.scope import VIRTUAL_PREFIX
+from sass_tui.cli.common.database_access import open_database
+from sass_tui.cli.common.options import SubParsers, add_db_option, warn_of_a_password
+from sass_tui.cli.common.progress import progress_for
+from sass_tui.db.engine.addresses import is_url, shown
+from sass_tui.db.engine.database import Database, configured_target, init_postgres
+from sass_tui.db.engine.schema import DatabaseError, connect, default_db_path
+from sass_tui.db.people.ansur import import_ansur_into
+from sass_tui.db.people.default import SYNTHETIC_LABEL, create_default_database
+from sass_tui.db.people.flatfile import FlatFileError, FlatFiles, import_flat_into
+from sass_tui.db.people.replacing import Held, forget_column_copy, keep_targets, what_init_replaces
+from sass_tui.db.query import accelerator
+from sass_tui.db.query.query import QueryError, compile_query
+from sass_tui.db.query.scope import VIRTUAL_PREFIX
 from sass_tui.model.text import printable
 
 
@@ -119,7 +119,7 @@ def run_init(args: argparse.Namespace) -> int:
 
 
 def _built(counts: dict[str, int]) -> str:
-    """What `sass db init` stored (db/default.py's fill_default's counts per source)."""
+    """What `sass db init` stored (db/people/default.py's fill_default's counts per source)."""
     said = [
         f"{counts.get('ansur2', 0)} ANSUR II people and "
         f"{counts.get(SYNTHETIC_LABEL, 0)} synthetic people"

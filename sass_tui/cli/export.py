@@ -7,13 +7,13 @@ import argparse
 import sys
 from typing import TYPE_CHECKING
 
-from sass_tui.cli.figure_from_options import figure_from_args
-from sass_tui.cli.options import SubParsers, add_figure_options, print_warnings
-from sass_tui.model.hanim import not_in_humanoid_note
-from sass_tui.model.paths import user_path
+from sass_tui.cli.common.figure_from_options import figure_from_args
+from sass_tui.cli.common.options import SubParsers, add_figure_options, print_warnings
+from sass_tui.model.body.hanim import not_in_humanoid_note
+from sass_tui.model.files.paths import user_path
 
 if TYPE_CHECKING:
-    from sass_tui.model.figure import Figure
+    from sass_tui.model.body.figure import Figure
 
 
 def register(commands: SubParsers) -> None:
@@ -48,7 +48,7 @@ def register(commands: SubParsers) -> None:
 
 def run_hanim(args: argparse.Namespace) -> int:
     # deferred: model.hanim_x3d (xml.etree) — off sass export gltf (sass_tui/startup.py)
-    from sass_tui.model.hanim_x3d import export_hanim
+    from sass_tui.model.files.hanim_x3d import export_hanim
 
     figure, warnings = figure_from_args(args)
     print_warnings(warnings)
@@ -60,7 +60,7 @@ def run_hanim(args: argparse.Namespace) -> int:
 
 def run_gltf(args: argparse.Namespace) -> int:
     # deferred: model.gltf — off sass export hanim (sass_tui/startup.py)
-    from sass_tui.model.gltf import check_path, export_gltf
+    from sass_tui.model.files.gltf import check_path, export_gltf
 
     path = check_path(user_path(args.output))  # refused before the database is opened
     figure, warnings = figure_from_args(args)

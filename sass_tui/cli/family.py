@@ -5,16 +5,23 @@ from __future__ import annotations
 import argparse
 import sys
 
-from sass_tui.cli.database_access import open_db
-from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
-from sass_tui.db.family import load_family
-from sass_tui.db.query import parse_option
-from sass_tui.model.family_files import write_family
-from sass_tui.model.figure import Figure
-from sass_tui.model.measure_fields import measure_field
+from sass_tui.cli.common.database_access import open_db
+from sass_tui.cli.common.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    weighting_name,
+)
+from sass_tui.db.populations.family import load_family
+from sass_tui.db.query.query import parse_option
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.family_files import write_family
+from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.vocabulary import GENDERS
 
-DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.fit.DEFAULT_POPULATION (no import here)
+DEFAULT_POPULATION = (
+    "source = ansur2"  # = sass_tui.db.populations.fit.DEFAULT_POPULATION (no import here)
+)
 
 
 def coverage_argument(text: str) -> float:
@@ -96,7 +103,7 @@ def run(args: argparse.Namespace) -> int:
     weighted_to = None
     if weighting is not None:
         # deferred: db.shipped (db.targets) — off sass family (sass_tui/startup.py)
-        from sass_tui.db.shipped import load_weights
+        from sass_tui.db.populations.shipped import load_weights
 
         weighted_to = load_weights(conn, weighting)
         if weighted_to.target.is_virtual and args.population == DEFAULT_POPULATION:

@@ -5,12 +5,17 @@ from __future__ import annotations
 import argparse
 import sys
 
-from sass_tui.cli.figure_from_options import figure_from_args
-from sass_tui.cli.options import SubParsers, add_figure_options, person_file_name, print_warnings
-from sass_tui.model.figfile import default_fig_name, write_fig
+from sass_tui.cli.common.figure_from_options import figure_from_args
+from sass_tui.cli.common.options import (
+    SubParsers,
+    add_figure_options,
+    person_file_name,
+    print_warnings,
+)
+from sass_tui.model.files.figfile import default_fig_name, write_fig
 from sass_tui.model.names import GIRTH
-from sass_tui.model.published_strength import EXAMPLE_DATA_SET, EXAMPLE_SOURCE
-from sass_tui.model.strength import (
+from sass_tui.model.strength.published_strength import EXAMPLE_DATA_SET, EXAMPLE_SOURCE
+from sass_tui.model.strength.strength import (
     StrengthSheet,
     fig_section,
     lower_limb_fig_section,

@@ -7,18 +7,25 @@ import json
 import sys
 from typing import TYPE_CHECKING
 
-from sass_tui.cli.database_access import open_db
-from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
-from sass_tui.db.fit import check_mix, fit_test
-from sass_tui.db.fit_table import format_table
-from sass_tui.db.query import compile_conjuncts, parse, parse_option
-from sass_tui.model.published_strength import parse_strength_limit
+from sass_tui.cli.common.database_access import open_db
+from sass_tui.cli.common.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    weighting_name,
+)
+from sass_tui.db.populations.fit import check_mix, fit_test
+from sass_tui.db.populations.fit_table import format_table
+from sass_tui.db.query.query import compile_conjuncts, parse, parse_option
+from sass_tui.model.strength.published_strength import parse_strength_limit
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
     pass
 
-DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.fit.DEFAULT_POPULATION (no import here)
+DEFAULT_POPULATION = (
+    "source = ansur2"  # = sass_tui.db.populations.fit.DEFAULT_POPULATION (no import here)
+)
 
 
 def mix_argument(text: str) -> dict[str, float]:
@@ -103,7 +110,7 @@ def run(args: argparse.Namespace) -> int:
     target = None
     if weighting is not None:
         # deferred: db.shipped (db.targets) — off sass fit (sass_tui/startup.py)
-        from sass_tui.db.shipped import load_weights
+        from sass_tui.db.populations.shipped import load_weights
 
         target = load_weights(conn, weighting)
         if target.target.is_virtual and args.population == DEFAULT_POPULATION:

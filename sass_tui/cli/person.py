@@ -9,10 +9,10 @@ import argparse
 import json
 import sys
 
-from sass_tui.cli.database_access import open_database
-from sass_tui.cli.options import SubParsers, add_db_option
-from sass_tui.db.individual import person_records
-from sass_tui.db.person_text import person_lines
+from sass_tui.cli.common.database_access import open_database
+from sass_tui.cli.common.options import SubParsers, add_db_option
+from sass_tui.db.people.individual import person_records
+from sass_tui.db.people.person_text import person_lines
 
 
 def register(commands: SubParsers) -> None:

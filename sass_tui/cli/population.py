@@ -17,19 +17,24 @@ import argparse
 import sys
 from pathlib import Path
 
-from sass_tui.cli.database_access import open_db
-from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
-from sass_tui.db.population import (
+from sass_tui.cli.common.database_access import open_db
+from sass_tui.cli.common.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    weighting_name,
+)
+from sass_tui.db.populations.population import (
     IdListError,
     missing_ids,
     parse_id_list,
     people_words,
     population_of,
 )
-from sass_tui.db.population_files import write_population_files
-from sass_tui.db.query import parse
+from sass_tui.db.populations.population_files import write_population_files
+from sass_tui.db.query.query import parse
+from sass_tui.model.files.paths import LARGEST_ID_LIST, regular_file, size_text
 from sass_tui.model.names import GROUP_TITLES
-from sass_tui.model.paths import LARGEST_ID_LIST, regular_file, size_text
 
 
 def register(commands: SubParsers) -> None:
@@ -83,7 +88,7 @@ def run(args: argparse.Namespace) -> int:
         target = None
         if weighting is not None:
             # deferred: db.shipped (db.targets) — off sass population (sass_tui/startup.py)
-            from sass_tui.db.shipped import load_weights
+            from sass_tui.db.populations.shipped import load_weights
 
             target = load_weights(conn, weighting)
         result = population_of(

@@ -3,9 +3,9 @@
     sass predict --gender male --known stature=175.5cm --known mass=82.2kg -o P.fig
     sass predict --gender female --input known.csv --output predicted.csv
 
-The model (sass_tui/model/prediction.py) is fitted on the database's people
+The model (sass_tui/model/population/prediction.py) is fitted on the database's people
 and cached beside a SQLite file, or in the user's cache directory for a
-PostgreSQL database (sass_tui/db/predict.py).
+PostgreSQL database (sass_tui/db/populations/predict.py).
 """
 
 from __future__ import annotations
@@ -19,25 +19,30 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 import numpy as np
 
-from sass_tui.cli.database_access import open_db
-from sass_tui.cli.options import (
+from sass_tui.cli.common.database_access import open_db
+from sass_tui.cli.common.options import (
     SubParsers,
     add_db_option,
     add_virtual_option,
     weighting_name,
     whole_number,
 )
-from sass_tui.db.predict import open_predictor
-from sass_tui.db.shipped import load_weights
-from sass_tui.model.atomic import write_text_atomic
+from sass_tui.db.populations.predict import open_predictor
+from sass_tui.db.populations.shipped import load_weights
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import LARGEST_PEOPLE_TABLE, regular_file
-from sass_tui.model.prediction import MIN_PEOPLE, UnknownFieldError, field_unit, split_known
+from sass_tui.model.files.atomic import write_text_atomic
+from sass_tui.model.files.paths import LARGEST_PEOPLE_TABLE, regular_file
+from sass_tui.model.population.prediction import (
+    MIN_PEOPLE,
+    UnknownFieldError,
+    field_unit,
+    split_known,
+)
 from sass_tui.model.units import UnitError, parse_quantity
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
-    from sass_tui.model.prediction import Prediction, Predictor
+    from sass_tui.model.population.prediction import Prediction, Predictor
 
 
 class PredictArgumentError(ValueError, SassError):
@@ -49,7 +54,7 @@ class PredictArgumentError(ValueError, SassError):
 
 # `--virtual NAME`: the regression learns from the virtual people unweighted.
 # Their predicted measures were drawn from sass's regression on the soldiers
-# (db/virtual.py), so weighting cannot change what it says of a measure given
+# (db/populations/virtual.py), so weighting cannot change what it says of a measure given
 # stature and mass; the survey weights would move only the stature-mass
 # relation, and at the price of the sample: the shipped population's Kish
 # effective size is 43 % of its people (docs/target-populations.md).

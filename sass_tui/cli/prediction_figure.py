@@ -6,13 +6,13 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from sass_tui.model.figfile import write_fig
-from sass_tui.model.figure import Figure
-from sass_tui.model.gltf import export_gltf
-from sass_tui.model.hanim_x3d import export_hanim
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.figfile import write_fig
+from sass_tui.model.files.gltf import export_gltf
+from sass_tui.model.files.hanim_x3d import export_hanim
 
 if TYPE_CHECKING:
-    from sass_tui.model.prediction import Prediction
+    from sass_tui.model.population.prediction import Prediction
 
 
 def write_prediction_figure(prediction: Prediction, path: str) -> str:

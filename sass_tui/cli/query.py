@@ -8,10 +8,15 @@ from collections.abc import Callable, Iterable
 from itertools import islice
 from typing import Any, TextIO
 
-from sass_tui.cli.database_access import open_database
-from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
-from sass_tui.db.query import QueryError, compile_query, demonstration_hint
-from sass_tui.db.query_fields import FieldDoc, field_reference
+from sass_tui.cli.common.database_access import open_database
+from sass_tui.cli.common.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    weighting_name,
+)
+from sass_tui.db.query.query import QueryError, compile_query, demonstration_hint
+from sass_tui.db.query.query_fields import FieldDoc, field_reference
 from sass_tui.model.text import is_printable_lines, printable
 
 
@@ -85,7 +90,7 @@ def _answer(args: argparse.Namespace, query, conn) -> None:  # query: db.query.Q
 
 
 def _list_fields(form: str) -> None:
-    """Every field with its unit and description (db/query_fields.py)."""
+    """Every field with its unit and description (db/query/query_fields.py)."""
     _writers(form)[1](sys.stdout, field_reference())
 
 

@@ -10,8 +10,8 @@ from __future__ import annotations
 import csv
 from typing import TextIO
 
-from sass_tui.db.query import PERSON_FIELDS
-from sass_tui.db.query_fields import FieldDoc
+from sass_tui.db.query.query import PERSON_FIELDS
+from sass_tui.db.query.query_fields import FieldDoc
 from sass_tui.model.text import is_printable, may_start_a_formula, printable, spreadsheet_text
 
 

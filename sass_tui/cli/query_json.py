@@ -15,8 +15,8 @@ from json.encoder import encode_basestring_ascii as quote
 from operator import itemgetter
 from typing import TextIO
 
-from sass_tui.db.query import PERSON_FIELDS, QueryError
-from sass_tui.db.query_fields import FieldDoc
+from sass_tui.db.query.query import PERSON_FIELDS, QueryError
+from sass_tui.db.query.query_fields import FieldDoc
 from sass_tui.model.text import printable
 
 # A person of the JSON listing when every value is there and of its type (the

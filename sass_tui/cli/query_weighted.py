@@ -1,14 +1,14 @@
 """`sass query --count --target NAME` (or --virtual NAME): the count weighted
 to a target population.  Its own module because the stored weights
-(db/shipped.py, db/targets.py, with numpy) are what `sass query` without a
+(db/populations/shipped.py, db/populations/targets.py, with numpy) are what `sass query` without a
 target keeps off its start-up path (sass_tui/startup.py)."""
 
 from __future__ import annotations
 
-from sass_tui.db.query import compile_query
-from sass_tui.db.shipped import load_weights
-from sass_tui.db.targets import weighted_count
-from sass_tui.model.targets import TargetError
+from sass_tui.db.populations.shipped import load_weights
+from sass_tui.db.populations.targets import weighted_count
+from sass_tui.db.query.query import compile_query
+from sass_tui.model.population.targets import TargetError
 
 
 def answer_weighted(count: bool, conn, query, name: str) -> None:  # query: CompiledQuery

@@ -1,9 +1,9 @@
-"""`sass serve`: the spreadsheet in a web browser (textual-serve, ui/serve.py).
+"""`sass serve`: the spreadsheet in a web browser (textual-serve, ui/serve/serve.py).
 
 The options are checked here, before anything listens: a remote address only
 with --allow-remote, TLS files that can be read, a token file's token; then
 cli/serving.py makes the working directory, finds the database and serves
-(ui/serve.py).
+(ui/serve/serve.py).
 """
 
 from __future__ import annotations
@@ -16,9 +16,9 @@ import ssl
 from ipaddress import ip_address
 from urllib.parse import urlsplit
 
-from sass_tui.cli.options import SubParsers, add_db_option, positive_number
+from sass_tui.cli.common.options import SubParsers, add_db_option, positive_number
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import LARGEST_TOKEN_FILE, regular_file
+from sass_tui.model.files.paths import LARGEST_TOKEN_FILE, regular_file
 
 # secrets.token_urlsafe(32): 256 bits.  A token file's must have at least
 # 128 bits: 22 characters of the 64 a URL carries unquoted (6 bits each).
@@ -108,7 +108,7 @@ def run(args: argparse.Namespace) -> int:
         check_public_url(args.public_url)
     token = read_token(args.token_file) if args.token_file else new_token()
     # After the checks: cli/serving.py brings the database and the web
-    # server (ui/serve.py: textual-serve, aiohttp).
+    # server (ui/serve/serve.py: textual-serve, aiohttp).
     # deferred: cli.serving (the db package, ui.serve, tempfile) — off sass serve (sass_tui/startup.py)
     from sass_tui.cli.serving import start
 

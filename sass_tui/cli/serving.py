@@ -1,5 +1,5 @@
 """`sass serve` once its options are checked (cli/serve.py): the working
-directory, the database the sessions open, and the web server (ui/serve.py:
+directory, the database the sessions open, and the web server (ui/serve/serve.py:
 textual-serve, aiohttp).
 
 A module of its own, with all of these at its top, because cli/serve.py
@@ -16,14 +16,14 @@ import tempfile
 import time
 from pathlib import Path
 
-from sass_tui.cli.database_access import open_db
-from sass_tui.db.addresses import is_url, shown
-from sass_tui.db.database import configured_target
-from sass_tui.db.postgres import connect_postgres
-from sass_tui.db.schema import default_db_path
+from sass_tui.cli.common.database_access import open_db
+from sass_tui.db.engine.addresses import is_url, shown
+from sass_tui.db.engine.database import configured_target
+from sass_tui.db.engine.postgres import connect_postgres
+from sass_tui.db.engine.schema import default_db_path
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import data_dir, user_path
-from sass_tui.ui.serve import ServeOptions, serve
+from sass_tui.model.files.paths import data_dir, user_path
+from sass_tui.ui.serve.serve import ServeOptions, serve
 
 
 class WorkdirError(ValueError, SassError):
@@ -91,7 +91,7 @@ def database_path(args: argparse.Namespace, read_only: bool) -> Path | str | Non
     file built on first use) here, since a session cannot build it and a
     server that cannot be reached is better said once than in every session.
     Each session's connections to a PostgreSQL database are then read-only
-    by the server's rule ($SASS_READ_ONLY, db/postgres.py)."""
+    by the server's rule ($SASS_READ_ONLY, db/engine/postgres.py)."""
     db = getattr(args, "db", None)
     target = configured_target(db)
     if is_url(target):

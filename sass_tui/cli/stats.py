@@ -10,7 +10,7 @@ MEASURE: stature, mass and every ANSUR II measure) over the people a query
 selects: real people unless the query names a source, the people of a
 target population weighted (`--target`), or the VIRTUAL people of a virtual
 population weighted by their survey's weights (`--virtual`).  Lengths in
-cm, mass in kg unless `--unit`.  db/stats.py computes it.
+cm, mass in kg unless `--unit`.  db/populations/stats.py computes it.
 
 `sass --help` imports this module to list the verb: the database and numpy
 are imported in `run`.
@@ -25,18 +25,23 @@ import math
 import sys
 from typing import TYPE_CHECKING, Any, TextIO
 
-from sass_tui.cli.database_access import open_db
-from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option, weighting_name
-from sass_tui.db.query import QueryError, compile_query
-from sass_tui.db.shipped import load_weights
-from sass_tui.db.stats import EVERY_MEASURE, check_unit, format_stats, stats_table
-from sass_tui.model.measure_fields import measure_field
+from sass_tui.cli.common.database_access import open_db
+from sass_tui.cli.common.options import (
+    SubParsers,
+    add_db_option,
+    add_virtual_option,
+    weighting_name,
+)
+from sass_tui.db.populations.shipped import load_weights
+from sass_tui.db.populations.stats import EVERY_MEASURE, check_unit, format_stats, stats_table
+from sass_tui.db.query.query import QueryError, compile_query
+from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
-    from sass_tui.db.stats import StatsTable
+    from sass_tui.db.populations.stats import StatsTable
 
-# = sass_tui.db.stats.DEFAULT_PERCENTILES (no database import on `sass --help`)
+# = sass_tui.db.populations.stats.DEFAULT_PERCENTILES (no database import on `sass --help`)
 DEFAULT_PERCENTILES = (1.0, 5.0, 50.0, 95.0, 99.0)
 
 

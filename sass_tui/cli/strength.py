@@ -19,20 +19,20 @@ from __future__ import annotations
 import argparse
 import json
 
-from sass_tui.cli.options import SubParsers, add_db_option
-from sass_tui.model.figure import Figure
+from sass_tui.cli.common.options import SubParsers, add_db_option
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS
-from sass_tui.model.published_grip import (
+from sass_tui.model.strength.published_grip import (
     CITATION as GRIP_CITATION,
 )
-from sass_tui.model.published_grip import (
+from sass_tui.model.strength.published_grip import (
     GRIP_DATA_SET,
     GRIP_LABELS,
     GRIP_MOTIONS,
     grip_motion,
     grip_strength,
 )
-from sass_tui.model.published_strength import (
+from sass_tui.model.strength.published_strength import (
     AGE_GROUPS,
     CITATION,
     DATA_SET,
@@ -50,7 +50,7 @@ from sass_tui.model.published_strength import (
     ordinal,
     text_plot,
 )
-from sass_tui.model.strength import (
+from sass_tui.model.strength.strength import (
     ASSUMED_LABEL,
     ASSUMED_MODIFIERS,
     EXTRAPOLATION_MARGIN_DEG,
@@ -301,7 +301,7 @@ def _take_person(args: argparse.Namespace) -> None:
             f"{', '.join(given)} cannot be given with it"
         )
     # deferred: cli.person_option (the db package, numpy) — off sass strength (sass_tui/startup.py)
-    from sass_tui.cli.person_option import named_person_record
+    from sass_tui.cli.common.person_option import named_person_record
 
     record = named_person_record(args)
     missing = [k for k in ("gender", "age", "mass", "stature") if record[k] is None]

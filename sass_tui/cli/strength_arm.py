@@ -6,7 +6,7 @@ for one hand, one force direction and women or men (docs/strength.md).
     sass strength arm_force shoulder_y=60 --person "ANSUR II F 10037" --direction forward
 
 Where the hand is: the figure (or --person's) in the posture JOINT=ANGLE
-gives (model/posture.py, on the figure's own HAnim joint centres), or the
+gives (model/body/posture.py, on the figure's own HAnim joint centres), or the
 joint centres of a posture file (--posture).  Imported only when the motion
 is arm_force (cli/strength.py).
 """
@@ -19,17 +19,17 @@ import json
 import numpy as np
 import numpy.typing as npt
 
-from sass_tui.model.arm_force_field import (
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles, pose_figure, read_posture_file
+from sass_tui.model.names import JOINT_LIMITS
+from sass_tui.model.strength.arm_force_field import (
     ArmForce,
     ArmForceError,
     arm_force,
     check_capable,
     parse_direction,
 )
-from sass_tui.model.figure import Figure
-from sass_tui.model.names import JOINT_LIMITS
-from sass_tui.model.posture import parse_angles, pose_figure, read_posture_file
-from sass_tui.model.published_strength import text_plot
+from sass_tui.model.strength.published_strength import text_plot
 from sass_tui.model.units import DISPLAY, convert, parse_quantity, unit_name
 
 FORCE_UNITS = ("N", "lbf")
@@ -84,7 +84,7 @@ def _figure(args: argparse.Namespace) -> Figure:
     figure.set_group_percentile(JOINT_LIMITS, args.joint_limit_percentile)
     if args.person is not None:
         # deferred: cli.person_option (the db package) — off sass strength arm_force (sass_tui/startup.py)
-        from sass_tui.cli.person_option import person_figure
+        from sass_tui.cli.common.person_option import person_figure
 
         return person_figure(args, figure)
     if args.mass is not None:

@@ -14,13 +14,15 @@ import argparse
 import sys
 from typing import TextIO
 
-from sass_tui.cli.database_access import open_db
-from sass_tui.cli.options import SubParsers, add_db_option
-from sass_tui.db.targets import SHIPPED, list_targets
+from sass_tui.cli.common.database_access import open_db
+from sass_tui.cli.common.options import SubParsers, add_db_option
+from sass_tui.db.populations.targets import SHIPPED, list_targets
 from sass_tui.model.datasets import NHANES_NAME, NHANES_WEIGHT
 from sass_tui.model.vocabulary import GENDERS
 
-DEFAULT_POPULATION = "source = ansur2"  # = sass_tui.db.targets.DEFAULT_POPULATION (no import)
+DEFAULT_POPULATION = (
+    "source = ansur2"  # = sass_tui.db.populations.targets.DEFAULT_POPULATION (no import)
+)
 DEFAULT_BY = "stature,mass"
 
 

@@ -3,8 +3,8 @@ making and dropping a target population (cli/target.py holds the verb's
 options and `--list`).
 
 A module of its own because making a target reads a sample (the ANSUR II
-measure names and the prediction's units, model/sample_file.py) and may
-make virtual people (db/virtual.py), and dropping one may drop virtual
+measure names and the prediction's units, model/files/sample_file.py) and may
+make virtual people (db/populations/virtual.py), and dropping one may drop virtual
 people: listing the stored targets needs none of them (the `sass target` row
 of sass_tui/startup.py).
 """
@@ -16,10 +16,9 @@ import gzip
 import sys
 from typing import TYPE_CHECKING, TextIO
 
-from sass_tui.cli.database_access import open_db
-from sass_tui.cli.options import VIRTUAL_PREFIX
-from sass_tui.db.query import parse_option
-from sass_tui.db.targets import (
+from sass_tui.cli.common.database_access import open_db
+from sass_tui.cli.common.options import VIRTUAL_PREFIX
+from sass_tui.db.populations.targets import (
     BOTH,
     TargetExistsError,
     check_name,
@@ -28,17 +27,18 @@ from sass_tui.db.targets import (
     store_target,
     target_exists,
 )
-from sass_tui.db.virtual import drop_virtual, make_virtual, store_virtual
+from sass_tui.db.populations.virtual import drop_virtual, make_virtual, store_virtual
+from sass_tui.db.query.query import parse_option
 from sass_tui.model.datasets import NHANES, NHANES_NAME, shipped_text
 from sass_tui.model.errors import SassError
-from sass_tui.model.measure_fields import measure_field
-from sass_tui.model.paths import regular_file
-from sass_tui.model.sample_file import read_sample
-from sass_tui.model.target_sample import SampleError, is_weighting_field
+from sass_tui.model.files.paths import regular_file
+from sass_tui.model.files.sample_file import read_sample
+from sass_tui.model.population.measure_fields import measure_field
+from sass_tui.model.population.target_sample import SampleError, is_weighting_field
 
 if TYPE_CHECKING:
-    from sass_tui.db.targets import Target
-    from sass_tui.model.targets import Weighting
+    from sass_tui.db.populations.targets import Target
+    from sass_tui.model.population.targets import Weighting
 
 
 class TargetArgumentError(ValueError, SassError):

@@ -3,7 +3,7 @@ on the hands and a population -> the static moments at the wrists, elbows,
 shoulders, trunk, hips, knees and ankles, and the percent capable where a
 published model covers the joint (the Arm Force Field for each loaded hand,
 Anderson et al. 2007 for hips, knees and ankles), the limiting one named
-(model/task.py, docs/strength.md "A task").
+(model/strength/task.py, docs/strength.md "A task").
 
     sass task shoulder_y=60 elbow_y=30 --right-load 100N
     sass task knee_y=60 hip_y=70 shoulder_y=45 --left-load 60N --right-load 60N
@@ -17,12 +17,12 @@ from __future__ import annotations
 import argparse
 import json
 
-from sass_tui.cli.options import SubParsers, add_db_option, add_virtual_option
-from sass_tui.model.arm_force_field import parse_direction
-from sass_tui.model.figure import Figure
-from sass_tui.model.posture import parse_angles
-from sass_tui.model.published_strength import GENDER_WORDS
-from sass_tui.model.task import (
+from sass_tui.cli.common.options import SubParsers, add_db_option, add_virtual_option
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles
+from sass_tui.model.strength.arm_force_field import parse_direction
+from sass_tui.model.strength.published_strength import GENDER_WORDS
+from sass_tui.model.strength.task import (
     Reference,
     TaskError,
     assess_task,

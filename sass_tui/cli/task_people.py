@@ -3,7 +3,7 @@ the database (a real person at their own size; a target's or a virtual
 population's people, each scaled to their own size, weighted).
 
 A module of its own because these bring the db package and numpy's
-statistics (cli/person_option.py, db/task_people.py), which `sass task` for
+statistics (cli/common/person_option.py, db/populations/task_people.py), which `sass task` for
 women and men goes without (the `sass task` row of sass_tui/startup.py).
 """
 
@@ -12,12 +12,18 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 
-from sass_tui.cli.database_access import open_db
-from sass_tui.cli.options import weighting_name
-from sass_tui.cli.person_option import named_person_record, person_figure
-from sass_tui.db.task_people import group_words, weighted_people
-from sass_tui.model.figure import Figure
-from sass_tui.model.task import Reference, TaskAnswer, TaskError, assess_populations, assess_task
+from sass_tui.cli.common.database_access import open_db
+from sass_tui.cli.common.options import weighting_name
+from sass_tui.cli.common.person_option import named_person_record, person_figure
+from sass_tui.db.populations.task_people import group_words, weighted_people
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.strength.task import (
+    Reference,
+    TaskAnswer,
+    TaskError,
+    assess_populations,
+    assess_task,
+)
 
 # The verb's figure of a gender, at --mass and --stature (cli/task.py).
 FigureOf = Callable[[argparse.Namespace, str], Figure]

@@ -68,7 +68,7 @@ def interruptible(conn: Any, cancel: Cancel | None, what: str = "the work") -> I
     """Abort a running statement once `cancel` is set; raises Cancelled instead
     of SQLite's "interrupted" or PostgreSQL's "canceling statement" (the
     caller's transaction rolls back).  `conn`: sqlite3's connection or
-    db/postgres.py's PostgresConnection (which imports this module)."""
+    db/engine/postgres.py's PostgresConnection (which imports this module)."""
     if cancel is None:
         yield
         return
@@ -92,7 +92,7 @@ def interruptible(conn: Any, cancel: Cancel | None, what: str = "the work") -> I
 @contextmanager
 def _postgres_interruptible(conn: Any, cancel: Cancel, what: str) -> Iterator[None]:
     """A watcher thread asks the PostgreSQL server to cancel the running
-    statement once `cancel` is set (db/postgres.py's cancel_statement)."""
+    statement once `cancel` is set (db/engine/postgres.py's cancel_statement)."""
     done = threading.Event()
 
     def watch() -> None:

@@ -136,7 +136,7 @@ ROWS: dict[str, tuple[Row, ...]] = {
 }
 AXES_OF = {GIRTH: 3, JOINT_LIMITS: 3, CENTER_OF_MASS: 3, GLOBAL: 1}
 
-# Display order of the strength page (one page of 14 rows; model/strength_data.py).
+# Display order of the strength page (one page of 14 rows; model/strength/strength_data.py).
 MOTIONS: tuple[Row, ...] = tuple(
     Row(name, name.replace("_", " ").capitalize(), (name.replace("_", " "),))
     for name in MOTION_NAMES

@@ -16,14 +16,14 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, TypeVar
 
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.popfile import PopulationData
 from sass_tui.model.names import AXES, GROUP_TITLES, ROWS
-from sass_tui.model.popfile import PopulationData
 from sass_tui.model.units import GROUP_UNITS
 from sass_tui.model.vocabulary import JOINT_AXES
 
 if TYPE_CHECKING:  # numpy-heavy: the TUI makes its strength sheet after the first screen
-    from sass_tui.model.strength import StrengthData, StrengthRow, StrengthSheet
+    from sass_tui.model.strength.strength import StrengthData, StrengthRow, StrengthSheet
 
 JOURNAL_LENGTH = 100
 T = TypeVar("T")
@@ -177,7 +177,7 @@ class StrengthSheets:
         sheet = self.shown
         if sheet is None:
             # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
-            from sass_tui.model.strength import StrengthError
+            from sass_tui.model.strength.strength import StrengthError
 
             raise StrengthError("strength data is not loaded")
         return sheet
@@ -395,7 +395,7 @@ class Session:
         strength: StrengthData | None = None,
         angles: Callable[[StrengthSheet], None] | None = None,
     ) -> None:
-        """A worksheet opened (model/worksheet.py): its figure is the
+        """A worksheet opened (model/files/worksheet.py): its figure is the
         population figure; `strength` (its file, read again) the strength
         sheet, which `angles` then sets as saved.  Not an edit: the journal
         starts afresh, and what is open is what the file holds."""
@@ -443,8 +443,8 @@ def _cell_name(group: str, row: int, axis: int) -> str:
 
 
 def _new_sheet(data: StrengthData, figure: Figure) -> StrengthSheet:
-    """A strength sheet of `data` for `figure` (model/strength.py, with numpy)."""
+    """A strength sheet of `data` for `figure` (model/strength/strength.py, with numpy)."""
     # deferred: model.strength — off the first screen, sass export hanim, sass export gltf (sass_tui/startup.py)
-    from sass_tui.model.strength import StrengthSheet
+    from sass_tui.model.strength.strength import StrengthSheet
 
     return StrengthSheet(data, figure)

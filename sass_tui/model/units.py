@@ -48,7 +48,7 @@ BASE_FACTORS: dict[str, tuple[str, float]] = {
     "deg/s": ("angular speed", math.pi / 180.0),
     "N_m": ("torque", 1.0),
     "ft_lb": ("torque", 0.3048 * 4.4482216152605),
-    # Forces: the grip table of HFDS 2003 exhibit 14.5.2.1 (model/published_grip.py).
+    # Forces: the grip table of HFDS 2003 exhibit 14.5.2.1 (model/strength/published_grip.py).
     "N": ("force", 1.0),
     "lbf": ("force", 4.4482216152605),
 }

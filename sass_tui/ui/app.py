@@ -15,23 +15,23 @@ from typing import TYPE_CHECKING
 
 from textual.app import App
 
-from sass_tui.model.figure import Figure
-from sass_tui.model.paths import regular_file, user_path
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.paths import regular_file, user_path
 from sass_tui.model.served import served_read_only, served_workdir
 from sass_tui.model.session import Session
 from sass_tui.ui.palette import ScreenCommands
 from sass_tui.ui.settings import load_settings, save_setting
-from sass_tui.ui.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
+from sass_tui.ui.spreadsheet.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
 from sass_tui.ui.widgets import MessageLine
 
 if TYPE_CHECKING:  # the database costs start-up time: imported when first used
-    from sass_tui.db.individual import Individual
-    from sass_tui.db.lists import QueryLists
-    from sass_tui.model.strength import StrengthSheet
-    from sass_tui.model.worksheet import StrengthSettings
-    from sass_tui.ui.figure_work import FigureWork
-    from sass_tui.ui.people_work import PeopleWork
-    from sass_tui.ui.query_messages import DatabaseOpened
+    from sass_tui.db.people.individual import Individual
+    from sass_tui.db.query.lists import QueryLists
+    from sass_tui.model.files.worksheet import StrengthSettings
+    from sass_tui.model.strength.strength import StrengthSheet
+    from sass_tui.ui.query.people_work import PeopleWork
+    from sass_tui.ui.query.query_messages import DatabaseOpened
+    from sass_tui.ui.spreadsheet.figure_work import FigureWork
 
 
 class SassApp(App):
@@ -60,7 +60,7 @@ class SassApp(App):
         self.db_path: str | Path | None = None
         if db_path:
             # deferred: db.addresses — the db package is off the first screen (sass_tui/startup.py) unless --db is given; addresses imports nothing
-            from sass_tui.db.addresses import is_url
+            from sass_tui.db.engine.addresses import is_url
 
             self.db_path = db_path if is_url(db_path) else user_path(db_path)
         # A session served to a browser (model/served.py): the directory every
@@ -109,12 +109,12 @@ class SassApp(App):
 
     @property
     def figure_work(self) -> FigureWork:
-        """The work on the figure's model past the first screen (ui/figure_work.py:
+        """The work on the figure's model past the first screen (ui/spreadsheet/figure_work.py:
         the strength sheet, the worksheet file, the .fig file, the outlines),
         imported when first needed: once the first screen is drawn, or by
         `sass --open`."""
         # deferred: ui.figure_work (model.strength, model.worksheet, numpy) — off the first screen (sass_tui/startup.py)
-        from sass_tui.ui.figure_work import FigureWork
+        from sass_tui.ui.spreadsheet.figure_work import FigureWork
 
         return FigureWork()
 
@@ -175,7 +175,7 @@ class SassApp(App):
     # --- what tests and screens read ------------------------------------------------
     def user_path(self, text: str) -> Path:
         """A file name typed at a prompt: the user's own, or inside a served
-        session's working directory (model/paths.py's `inside`)."""
+        session's working directory (model/files/paths.py's `inside`)."""
         return user_path(text, self.workdir)
 
     def regular_file(self, text: str) -> Path:
@@ -209,13 +209,13 @@ class SassApp(App):
     # --- the query screen and the selected list -------------------------------------
     @property
     def people_work(self) -> PeopleWork:
-        """The work on the database's people (ui/people_work.py: the query
+        """The work on the database's people (ui/query/people_work.py: the query
         screen, the selected list, a person's figure and strength, Family,
         Predict's model), imported when a command first needs it: the
         database costs ~60 ms of start-up that a user who never queries
         should not pay."""
         # deferred: ui.people_work (the db package, ui.query_screen, model.prediction) — off the first screen, the first screen's next frame (sass_tui/startup.py)
-        from sass_tui.ui.people_work import PeopleWork
+        from sass_tui.ui.query.people_work import PeopleWork
 
         return PeopleWork()
 

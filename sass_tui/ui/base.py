@@ -20,7 +20,7 @@ from textual.binding import Binding
 from textual.dom import DOMNode
 from textual.screen import Screen
 
-from sass_tui.model.paths import complete_path
+from sass_tui.model.files.paths import complete_path
 from sass_tui.ui.palette import HelpScreen, help_commands
 from sass_tui.ui.textual_api import bindings_of
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead

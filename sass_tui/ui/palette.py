@@ -66,41 +66,49 @@ class ScreenRoute:
 SCREENS: tuple[ScreenRoute, ...] = (
     ScreenRoute(
         "Spreadsheet",
-        "sass_tui.ui.spreadsheet",
+        "sass_tui.ui.spreadsheet.spreadsheet",
         "SpreadsheetScreen",
         None,
         "Esc (or Exit Query) goes back to it",
     ),
     ScreenRoute(
-        "Query", "sass_tui.ui.query_screen", "QueryScreen", "query", "Query (d) on the spreadsheet"
+        "Query",
+        "sass_tui.ui.query.query_screen",
+        "QueryScreen",
+        "query",
+        "Query (d) on the spreadsheet",
     ),
     ScreenRoute(
-        "Figure", "sass_tui.ui.figure_screen", "FigureScreen", "see_figure", "b on the spreadsheet"
+        "Figure",
+        "sass_tui.ui.spreadsheet.figure_screen",
+        "FigureScreen",
+        "see_figure",
+        "b on the spreadsheet",
     ),
     ScreenRoute(
         "Family",
-        "sass_tui.ui.family_screen",
+        "sass_tui.ui.query.family_screen",
         "FamilyScreen",
         "family",
         "Family (y) on the spreadsheet",
     ),
     ScreenRoute(
         "Strength curves",
-        "sass_tui.ui.strength_curve_screen",
+        "sass_tui.ui.spreadsheet.strength_curve_screen",
         "StrengthCurveScreen",
         "strength_curve",
         "t on the spreadsheet",
     ),
     ScreenRoute(
         "Fit Test",
-        "sass_tui.ui.fit_screen",
+        "sass_tui.ui.query.fit_screen",
         "FitScreen",
         None,
         "on the query screen, run a query, then Fit Test (f)",
     ),
     ScreenRoute(
         "Stats",
-        "sass_tui.ui.stats_screen",
+        "sass_tui.ui.query.stats_screen",
         "StatsScreen",
         None,
         "on the query screen, run a query (or none: every real person), then Stats (S)",

@@ -8,9 +8,9 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from sass_tui.model.atomic import write_text_atomic
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import config_dir
+from sass_tui.model.files.atomic import write_text_atomic
+from sass_tui.model.files.paths import config_dir
 
 
 def settings_path() -> Path:

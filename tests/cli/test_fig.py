@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.fig_reader import read_fig
+from sass_tui.model.files.fig_reader import read_fig
 
 
 def test_the_default_names_are_the_reports(report_lines, tmp_path, monkeypatch, capsys):

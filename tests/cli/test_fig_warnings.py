@@ -38,7 +38,7 @@ def test_a_copy_of_the_reports_girth_beside_the_shipped_center_of_mass_is_not_ch
 
 
 def test_a_mass_or_stature_beyond_the_population_is_accepted_with_a_warning(tmp_path, capsys):
-    """As the spreadsheet warns of a typed one (ui/spreadsheet_edit.py): beyond
+    """As the spreadsheet warns of a typed one (ui/spreadsheet/spreadsheet_edit.py): beyond
     the 0.5th-99.5th percentile of datasets/global.dat, each side of the 50th
     spread as its 5th or 95th says (male mass 62.6 / 82.2 / 107.6 kg)."""
     z = NormalDist().inv_cdf(0.995) / NormalDist().inv_cdf(0.95)

@@ -8,8 +8,8 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.fig_reader import read_fig
-from sass_tui.model.figure import Figure, FigureError
+from sass_tui.model.body.figure import Figure, FigureError
+from sass_tui.model.files.fig_reader import read_fig
 
 
 def test_fig_person_by_name_and_by_id(person_db, tmp_path, monkeypatch, capsys):

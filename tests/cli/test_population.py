@@ -8,8 +8,8 @@ import re
 import numpy as np
 
 from sass_tui.cli import main
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH
-from sass_tui.model.popfile import read_population_file
 
 
 def test_the_womens_files_carry_their_own_stature_percentiles(

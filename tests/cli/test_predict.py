@@ -1,5 +1,5 @@
 """`sass predict` on a database imported from the ANSUR II files, and the
-cached fit beside it (sass_tui/db/predict.py)."""
+cached fit beside it (sass_tui/db/populations/predict.py)."""
 
 from __future__ import annotations
 
@@ -13,12 +13,12 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.ansur import import_ansur
-from sass_tui.db.people_store import delete_people
-from sass_tui.db.predict import cache_path, data_key, open_predictor
-from sass_tui.db.schema import connect, transaction
-from sass_tui.model.fig_reader import read_fig
-from sass_tui.model.prediction import Predictor
+from sass_tui.db.engine.schema import connect, transaction
+from sass_tui.db.people.ansur import import_ansur
+from sass_tui.db.people.people_store import delete_people
+from sass_tui.db.populations.predict import cache_path, data_key, open_predictor
+from sass_tui.model.files.fig_reader import read_fig
+from sass_tui.model.population.prediction import Predictor
 
 # SQLite only: the fit is cached beside the SQLite file; predict on both
 # engines is tests/db/test_engines_verbs.py's.

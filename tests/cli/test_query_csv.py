@@ -13,7 +13,7 @@ import subprocess
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
 
 # Labels an import may carry; a spreadsheet evaluates each as a formula when
 # written as it is (Gnumeric turns "=1+1" into 2).

@@ -10,7 +10,7 @@ import pint
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.query import compile_query, field_names
+from sass_tui.db.query.query import compile_query, field_names
 from sass_tui.model.measures import MEASURES
 
 UNITS = pint.UnitRegistry()

@@ -9,7 +9,7 @@ import json
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.arm_force_field import POSTURE_JOINTS
+from sass_tui.model.strength.arm_force_field import POSTURE_JOINTS
 from tests.model.test_arm_force_field import POSTURES
 
 

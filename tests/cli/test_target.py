@@ -4,7 +4,7 @@ do not go together."""
 from __future__ import annotations
 
 from sass_tui.cli import main
-from sass_tui.db.targets import SHIPPED
+from sass_tui.db.populations.targets import SHIPPED
 
 
 def test_a_new_database_lists_only_the_shipped_target_and_virtual_population(people_db, capsys):

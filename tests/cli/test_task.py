@@ -1,4 +1,4 @@
-"""`sass task` (cli/task.py, model/task.py): the moments of a posture with
+"""`sass task` (cli/task.py, model/strength/task.py): the moments of a posture with
 loads on the hands, from the figure's own segment masses and centres of
 mass, and who can do it.  The shoulder's moment is computed here by hand
 from the HAnim export's segments (`sass export hanim`) and the .fig's palm."""
@@ -12,9 +12,9 @@ import xml.etree.ElementTree as ET
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.arm_force_field import arm_force
-from sass_tui.model.figure import Figure
-from sass_tui.model.posture import parse_angles, pose_figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles, pose_figure
+from sass_tui.model.strength.arm_force_field import arm_force
 
 G = 9.81
 

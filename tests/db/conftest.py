@@ -23,7 +23,7 @@ from pathlib import Path
 
 import pytest
 
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
 
 ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_FLAT = ROOT / "datasets" / "db"
@@ -97,7 +97,7 @@ def copy_database(request, tmp_path_factory) -> Callable[[str], str]:
     """copy(address) -> the address of a new copy of that database, on its
     engine: a file copy, or `CREATE DATABASE ... TEMPLATE` (nobody may be
     connected to the original meanwhile; the copy goes with the cluster)."""
-    from sass_tui.db.addresses import is_url
+    from sass_tui.db.engine.addresses import is_url
 
     def copy(address: str) -> str:
         if not is_url(address):
@@ -134,7 +134,7 @@ def engine_target(engine, template_target, request, copy_database) -> Iterator[s
 
 
 def _opened(target: str) -> Iterator[object]:
-    from sass_tui.db.database import Database
+    from sass_tui.db.engine.database import Database
 
     db = Database.open(target)
     try:
@@ -147,7 +147,7 @@ def _opened(target: str) -> Iterator[object]:
 @pytest.fixture()
 def engine_db(shared_target) -> Iterator[object]:
     """A connection of its own to the shared database of `engine`, through the
-    Database service (sqlite3's, or db/postgres.py's PostgresConnection).  Read
+    Database service (sqlite3's, or db/engine/postgres.py's PostgresConnection).  Read
     only: a test that writes takes `engine_db_copy`."""
     yield from _opened(shared_target)
 

@@ -2,7 +2,7 @@
 
 Both engines: the test copy of ANSUR II is imported through the Database
 service into a new database of each engine (`ansur_target`; on PostgreSQL
-staged in SQLite and copied, db/postgres.py), and the same counts, ids and
+staged in SQLite and copied, db/engine/postgres.py), and the same counts, ids and
 values are asked of both."""
 
 from __future__ import annotations
@@ -18,11 +18,11 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.ansur import AnsurImportError, ellipse_axes, import_ansur_into
-from sass_tui.db.database import Database
-from sass_tui.db.dialect import mark_of
-from sass_tui.db.individual import fetch_individual
-from sass_tui.db.schema import row_counts
+from sass_tui.db.engine.database import Database
+from sass_tui.db.engine.dialect import mark_of
+from sass_tui.db.engine.schema import row_counts
+from sass_tui.db.people.ansur import AnsurImportError, ellipse_axes, import_ansur_into
+from sass_tui.db.people.individual import fetch_individual
 from sass_tui.model.names import GIRTH, row_index
 
 SHARED = Path(__file__).resolve().parents[1].parent.parent / "shared"

@@ -1,5 +1,5 @@
 """Every reader bounds what it reads: a file over its kind's plausible size
-is refused by its size before a byte is read (model/paths.py
+is refused by its size before a byte is read (model/files/paths.py
 `regular_file(largest=...)`), and a message quotes at most a few dozen
 characters of a bad value (model/text.py `quoted`).  A 1 GB sparse file
 given to `sass fig --girth` ran 61 s, peaked at 13.6 GB and printed a 4 GB
@@ -12,16 +12,16 @@ import os
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.population import IdListError, parse_id_list
-from sass_tui.model.names import GIRTH
-from sass_tui.model.paths import (
+from sass_tui.db.populations.population import IdListError, parse_id_list
+from sass_tui.model.files.paths import (
     LARGEST_ID_LIST,
     LARGEST_PEOPLE_TABLE,
     LARGEST_TABLE_FILE,
     LARGEST_TEXT_FILE,
 )
-from sass_tui.model.popfile import PopulationFileError, parse_population_text
-from sass_tui.model.strength import StrengthFileError, parse_strength_text
+from sass_tui.model.files.popfile import PopulationFileError, parse_population_text
+from sass_tui.model.names import GIRTH
+from sass_tui.model.strength.strength import StrengthFileError, parse_strength_text
 from sass_tui.model.text import QUOTE_LIMIT, quoted
 
 # A message's plausible length: a path, a line number, what was expected.
@@ -94,8 +94,8 @@ def test_a_file_over_its_kinds_size_is_refused_unread(
 
 
 def test_the_fig_reader_refuses_a_huge_fig_by_its_size(tmp_path):
-    from sass_tui.model.fig_reader import read_fig
-    from sass_tui.model.paths import PathError
+    from sass_tui.model.files.fig_reader import read_fig
+    from sass_tui.model.files.paths import PathError
 
     with pytest.raises(PathError, match=r"is too large for a \.fig file \(at most 4\.0 MiB\)"):
         read_fig(sparse(tmp_path / "huge.fig", LARGEST_TEXT_FILE + 1))
@@ -194,7 +194,7 @@ def test_ids_on_standard_input_are_bounded_too(default_db_file, tmp_path, monkey
     one character past the limit and stops there."""
     import io
 
-    from sass_tui.model.paths import LARGEST_ID_LIST
+    from sass_tui.model.files.paths import LARGEST_ID_LIST
 
     class Endless(io.TextIOBase):
         """A pipe that never ends (`yes 1 | sass population --ids -`)."""

@@ -1,5 +1,5 @@
 """A new database is built beside its name and linked into place whole
-(db/default.py `_build_aside`): `sass db init --db NEW.db` on a disk that
+(db/people/default.py `_build_aside`): `sass db init --db NEW.db` on a disk that
 fills half-way leaves no NEW.db (it left a schema with nobody in it, which
 then answered every query with "0"), and a killed build's temporary is
 swept by the next build, as the atomic writer's are."""
@@ -16,7 +16,7 @@ import pytest
 from _tmpfs import fill, mounted_tmpfs
 
 from sass_tui.cli import main
-from sass_tui.model.atomic import temporary_name
+from sass_tui.model.files.atomic import temporary_name
 
 pytestmark = pytest.mark.sqlite_only("SQLite files built aside")
 

@@ -19,12 +19,18 @@ from pathlib import Path
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.default import create_default_database
-from sass_tui.db.default_people import shipped_ansur_files
-from sass_tui.db.flatfile import FlatFiles, import_flat_files
-from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import SCHEMA_VERSION, DatabaseError, connect, row_counts, transaction
+from sass_tui.db.engine.schema import (
+    SCHEMA_VERSION,
+    DatabaseError,
+    connect,
+    row_counts,
+    transaction,
+)
+from sass_tui.db.people.default import create_default_database
+from sass_tui.db.people.default_people import shipped_ansur_files
+from sass_tui.db.people.flatfile import FlatFiles, import_flat_files
+from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.query.query import run_query
 
 pytestmark = pytest.mark.sqlite_only(
     "the SQLite file itself: its journal, locks, a foreign or damaged file"
@@ -243,8 +249,8 @@ def test_db_init_builds_an_empty_file_in_place(tmp_path):
 CHILD = textwrap.dedent(
     """
     import sys, time
-    from sass_tui.db.ansur import import_ansur
-    from sass_tui.db.schema import connect
+    from sass_tui.db.people.ansur import import_ansur
+    from sass_tui.db.engine.schema import connect
     conn = connect(sys.argv[1])
     conn.execute("PRAGMA cache_size = 20")  # spill pages to the file mid-transaction
     def progress(done, total):
@@ -289,8 +295,8 @@ def row_counts_of(path: Path) -> dict[str, int]:
 IMPORTER = textwrap.dedent(
     """
     import sys
-    from sass_tui.db.ansur import import_ansur
-    from sass_tui.db.schema import connect
+    from sass_tui.db.people.ansur import import_ansur
+    from sass_tui.db.engine.schema import connect
     conn = connect(sys.argv[1])
     print("start", flush=True)
     print(import_ansur(conn, sys.argv[2:], label="concurrent"), flush=True)
@@ -428,7 +434,7 @@ def test_db_init_asks_on_a_terminal(db_path, tmp_path, monkeypatch, answer, stat
 
 
 def test_db_init_while_a_writer_holds_the_lock_changes_nothing(db_path, monkeypatch):
-    from sass_tui.db import schema
+    from sass_tui.db.engine import schema
 
     monkeypatch.setattr(schema, "BUSY_TIMEOUT_S", 0.3)
     writer = sqlite3.connect(db_path, isolation_level=None)

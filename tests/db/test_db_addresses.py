@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.addresses import POSTGRES_COMMANDS, is_url
+from sass_tui.db.engine.addresses import POSTGRES_COMMANDS, is_url
 
 URL = "postgresql://lab@dbhost.invalid/sass"
 
@@ -23,8 +23,8 @@ def test_sass_serve_hands_an_address_to_its_sessions_in_the_environment(tmp_path
     line `ps` shows."""
     pytest.importorskip("textual_serve")
     from sass_tui.cli.serving import database_path
-    from sass_tui.ui.serve import ServeOptions
-    from sass_tui.ui.serve_session import SessionService
+    from sass_tui.ui.serve.serve import ServeOptions
+    from sass_tui.ui.serve.serve_session import SessionService
 
     secret = "postgresql://lab:s3cret@dbhost.invalid/sass"
     monkeypatch.setenv("SASS_DB", secret)

@@ -1,4 +1,4 @@
-"""`sass db copy`: the DuckDB column copy (sass_tui/db/accelerator.py) built now, so
+"""`sass db copy`: the DuckDB column copy (sass_tui/db/query/accelerator.py) built now, so
 that a one-shot `sass query` in a fresh process counts from it.
 
 The copy answers counts from accelerator.MIN_PEOPLE people; the processes
@@ -17,9 +17,9 @@ from pathlib import Path
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db import accelerator, copy_file
-from sass_tui.db.query import compile_query
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.query import accelerator, copy_file
+from sass_tui.db.query.query import compile_query
 
 pytestmark = pytest.mark.sqlite_only("the DuckDB column copy of a SQLite file")
 

@@ -15,9 +15,9 @@ from test_database_safety import NHANES_ADULTS, _flat, _Terminal
 from test_targets import civilian_women, write_sample
 
 from sass_tui.cli import main
-from sass_tui.db.database import Database
-from sass_tui.db.flatfile import import_flat_into
-from sass_tui.db.targets import (
+from sass_tui.db.engine.database import Database
+from sass_tui.db.people.flatfile import import_flat_into
+from sass_tui.db.populations.targets import (
     SHIPPED,
     TargetWeights,
     list_targets,

@@ -2,7 +2,7 @@
 reports (done, total) and stops on a cancel with nothing written.
 
 Both engines: imports through the Database service into a private copy
-(`engine_target`; on PostgreSQL staged in SQLite and copied, db/postgres.py),
+(`engine_target`; on PostgreSQL staged in SQLite and copied, db/engine/postgres.py),
 the query lists, populations, fit tests and families over the shared
 database.  SQLite only: the default file's first build and SQLite's
 progress handler (PostgreSQL's statement cancel: test_engines_verbs.py)."""
@@ -16,18 +16,18 @@ from functools import partial
 import pytest
 from big_flat_files import write_big_flat_files
 
-from sass_tui.db.ansur import import_ansur_into
-from sass_tui.db.database import Database
-from sass_tui.db.default import create_default_database
-from sass_tui.db.default_people import shipped_ansur_files
-from sass_tui.db.dialect import dialect_of
-from sass_tui.db.family import load_family
-from sass_tui.db.fit import fit_test
-from sass_tui.db.flatfile import import_flat_into
-from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
-from sass_tui.db.population import population_of
+from sass_tui.db.engine.database import Database
+from sass_tui.db.engine.dialect import dialect_of
+from sass_tui.db.engine.schema import row_counts
+from sass_tui.db.people.ansur import import_ansur_into
+from sass_tui.db.people.default import create_default_database
+from sass_tui.db.people.default_people import shipped_ansur_files
+from sass_tui.db.people.flatfile import import_flat_into
+from sass_tui.db.populations.family import load_family
+from sass_tui.db.populations.fit import fit_test
+from sass_tui.db.populations.population import population_of
 from sass_tui.db.progress import Cancelled, interruptible
-from sass_tui.db.schema import row_counts
+from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 
 
 class CancelAfter:
@@ -102,11 +102,11 @@ def test_ansur_import_cancelled_is_rolled_back(engine_target, engine_db_copy):
 
 
 # Where each engine stores an import's people last, before its commit: SQLite's
-# import writes them (db/flatfile.py); PostgreSQL's copies the staged people
-# (db/postgres.py's import_staged).
+# import writes them (db/people/flatfile.py); PostgreSQL's copies the staged people
+# (db/engine/postgres.py's import_staged).
 LAST_STORE = {
-    "sqlite": "sass_tui.db.flatfile.store_people",
-    "postgresql": "sass_tui.db.postgres.copy_people",
+    "sqlite": "sass_tui.db.people.flatfile.store_people",
+    "postgresql": "sass_tui.db.engine.postgres.copy_people",
 }
 
 
@@ -155,7 +155,7 @@ def test_default_database_build_cancelled_leaves_no_people(tmp_path):
     path = tmp_path / "new.db"
     with pytest.raises(Cancelled):
         create_default_database(path, cancel=CancelAfter(1))
-    # a new database is built aside (db/default.py): a cancelled one leaves no file
+    # a new database is built aside (db/people/default.py): a cancelled one leaves no file
     assert list(tmp_path.iterdir()) == []
 
 

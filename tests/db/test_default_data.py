@@ -13,9 +13,9 @@ import pytest
 from test_database_safety import NHANES_ADULTS
 
 from sass_tui.cli import main
-from sass_tui.db.individual import fetch_individual
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import DatabaseError, row_counts
+from sass_tui.db.engine.schema import DatabaseError, row_counts
+from sass_tui.db.people.individual import fetch_individual
+from sass_tui.db.query.query import run_query
 from sass_tui.model.names import GIRTH, JOINT_LIMITS, row_index
 from sass_tui.model.units import convert
 

@@ -17,8 +17,8 @@ import pytest
 from _postgres import why_not
 
 from sass_tui.cli import main
-from sass_tui.db.database import Database
-from sass_tui.db.schema import DatabaseError
+from sass_tui.db.engine.database import Database
+from sass_tui.db.engine.schema import DatabaseError
 
 ROOT = Path(__file__).resolve().parents[2]
 SHIPPED_ANSUR = ROOT / "datasets" / "ansur2"
@@ -109,7 +109,7 @@ def sass(*argv: str, env: dict[str, str] | None = None) -> subprocess.CompletedP
 
 READER = """
 import os, sys
-from sass_tui.db.database import Database
+from sass_tui.db.engine.database import Database
 url, labels, full, stop = sys.argv[1], sys.argv[2].split(","), int(sys.argv[3]), sys.argv[4]
 db = Database.open(url)
 seen = set()
@@ -131,7 +131,7 @@ def test_four_imports_at_once_and_four_readers(cluster, postgres_template, ansur
     throughout: every reader sees each label with none or all of its women,
     and at the end each label holds exactly its women, no person twice.
     The survey is the first 300 women of the ANSUR II file: each import is
-    still one chunk (db/ansur.py's CHUNK_ROWS) stored in one transaction of
+    still one chunk (db/people/ansur.py's CHUNK_ROWS) stored in one transaction of
     several COPYs, as with the whole file (1,986 women), which took 20 s of
     CPU, most of it the readers counting while the imports ran; now 6 s."""
     url = cluster.create_database("load", postgres_template)  # after `sass db init`
@@ -208,7 +208,7 @@ def test_a_reimport_replaces_and_never_duplicates(cluster, ansur_dir):
 
 KILLED = """
 import os, signal, sys
-from sass_tui.db import postgres
+from sass_tui.db.engine import postgres
 from sass_tui.cli import main
 copy_rows = postgres.PostgresConnection.copy_rows
 calls = []

@@ -263,7 +263,7 @@ def test_family_is_the_same_on_both_engines(initialised, with_target, engine_dir
 
 def lists_work(target: str) -> dict[str, object]:
     """Everything the query screen asks of its lists, on one engine."""
-    from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+    from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 
     lists = QueryLists.open(target)
     try:
@@ -325,7 +325,7 @@ def test_the_lists_on_postgresql_import_and_outlive_a_restart(
 ):
     """The query screen's Input DB imports into PostgreSQL (staged, one
     transaction); after a server restart the lists start again, empty, and work."""
-    from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+    from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 
     url = cluster.create_database("lists", postgres_template)  # after `sass db init`
     lists = QueryLists.open(url)
@@ -349,7 +349,7 @@ def test_a_long_statement_on_postgresql_is_cancelled(initialised):
     import threading
     import time
 
-    from sass_tui.db.database import Database
+    from sass_tui.db.engine.database import Database
     from sass_tui.db.progress import Cancelled, interruptible
 
     db = Database.open(initialised["postgresql"])

@@ -12,12 +12,12 @@ import sys
 import numpy as np
 import pytest
 
-from sass_tui.db.dialect import mark_of
-from sass_tui.db.family import load_family
-from sass_tui.db.fit import FitError
-from sass_tui.db.query import run_query
-from sass_tui.model.accommodation import AccommodationError, chi2_quantile
-from sass_tui.model.fig_reader import read_fig
+from sass_tui.db.engine.dialect import mark_of
+from sass_tui.db.populations.family import load_family
+from sass_tui.db.populations.fit import FitError
+from sass_tui.db.query.query import run_query
+from sass_tui.model.files.fig_reader import read_fig
+from sass_tui.model.population.accommodation import AccommodationError, chi2_quantile
 
 
 def _sass(*args: str) -> subprocess.CompletedProcess:

@@ -18,9 +18,9 @@ import pytest
 from _tmpfs import fill, mounted_tmpfs, remount_read_only
 
 from sass_tui.cli import main
-from sass_tui.db.default_people import shipped_ansur_files
-from sass_tui.db.flatfile import FlatFiles, import_flat_files
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.default_people import shipped_ansur_files
+from sass_tui.db.people.flatfile import FlatFiles, import_flat_files
 
 pytestmark = pytest.mark.sqlite_only("file-system faults under a SQLite file")
 
@@ -201,7 +201,7 @@ def test_a_read_only_file_system_still_answers_queries_and_refuses_writes(
 
 def test_the_library_refuses_a_read_only_database_before_writing(tmpfs_with_db, person_file):
     """The check is in the db layer (check_writable), for the TUI as for the CLI."""
-    from sass_tui.db.schema import DatabaseError
+    from sass_tui.db.engine.schema import DatabaseError
 
     mnt, db = tmpfs_with_db
     remount_read_only(mnt)

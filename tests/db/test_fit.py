@@ -15,9 +15,9 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from sass_tui.db.dialect import mark_of
-from sass_tui.db.fit import FitError, check_mix, fit_test
-from sass_tui.db.query import QueryError, compile_conjuncts, compile_query, run_query
+from sass_tui.db.engine.dialect import mark_of
+from sass_tui.db.populations.fit import FitError, check_mix, fit_test
+from sass_tui.db.query.query import QueryError, compile_conjuncts, compile_query, run_query
 
 # Every person of the default database has a stature; the source term reaches the
 # synthetic people too (a query without one reaches only real people), and
@@ -281,7 +281,7 @@ def test_conjuncts_are_the_and_terms(terms):
     # a parenthesised group (AND or OR) is one term
     assert [c.text for c in compiled] == terms
     whole = compile_query(text)
-    # the whole query also holds the real-people scope's two parameters (db/scope.py:
+    # the whole query also holds the real-people scope's two parameters (db/query/scope.py:
     # not the demonstration people, not the virtual people)
     assert sum(len(c.params) for c in compiled) == len(whole.params) - 2
 
@@ -368,7 +368,7 @@ def test_family_arguments_refuse_or_read_any_text(text):
 
 
 def test_limit_lines_read_numeric_comparisons_in_canonical_units():
-    from sass_tui.db.fit import LimitLine, limit_lines
+    from sass_tui.db.populations.fit import LimitLine, limit_lines
 
     lines = limit_lines(
         "gender = male AND stature > 63 in AND (mass > 50 kg AND mass < 200 lb) "
@@ -387,7 +387,7 @@ def test_limit_lines_read_numeric_comparisons_in_canonical_units():
 
 
 def test_limit_histograms_count_every_person_of_the_population(engine_db):
-    from sass_tui.db.fit import limit_histograms
+    from sass_tui.db.populations.fit import limit_histograms
 
     (mass, stature) = limit_histograms(
         engine_db, "mass < 200 lb AND mass > 50 AND stature < 190 cm", "source = ansur2", bins=7

@@ -2,7 +2,7 @@
 
 Both engines: the import goes through the Database service (`Database.import_flat`)
 or the CLI with the engine's address, into a private copy of the default database
-(`engine_target`; on PostgreSQL staged in SQLite and copied, db/postgres.py)."""
+(`engine_target`; on PostgreSQL staged in SQLite and copied, db/engine/postgres.py)."""
 
 from __future__ import annotations
 
@@ -13,10 +13,10 @@ from pathlib import Path
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.database import Database
-from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_into, legacy_name
-from sass_tui.db.individual import fetch_individual
-from sass_tui.db.schema import row_counts
+from sass_tui.db.engine.database import Database
+from sass_tui.db.engine.schema import row_counts
+from sass_tui.db.people.flatfile import FlatFileError, FlatFiles, import_flat_into, legacy_name
+from sass_tui.db.people.individual import fetch_individual
 from sass_tui.model.names import GIRTH, row_index
 
 DEFAULT_FLAT = Path(__file__).resolve().parents[2] / "datasets" / "db"
@@ -152,7 +152,7 @@ def test_cli_import_flat(engine_target, engine_db_copy, tmp_path, capsys):
 
 def test_default_flat_files_round_trip(engine_target, engine_db_copy, tmp_path):
     """Re-importing the shipped files replaces, never duplicates: the default
-    database holds them already (built from them, db/default.py), and one
+    database holds them already (built from them, db/people/default.py), and one
     import more leaves every count, id and name as it was."""
     shutil.copytree(DEFAULT_FLAT, tmp_path / "flat")
     files = FlatFiles.in_directory(tmp_path / "flat")

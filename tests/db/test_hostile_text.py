@@ -17,10 +17,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
-from sass_tui.db.ansur import AnsurImportError, import_ansur
-from sass_tui.db.dialect import mark_of, writing
-from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_files
-from sass_tui.db.schema import connect, row_counts
+from sass_tui.db.engine.dialect import mark_of, writing
+from sass_tui.db.engine.schema import connect, row_counts
+from sass_tui.db.people.ansur import AnsurImportError, import_ansur
+from sass_tui.db.people.flatfile import FlatFileError, FlatFiles, import_flat_files
 from sass_tui.model.text import control_character
 
 MALE = DATASETS / "ansur2" / "ANSUR_II_MALE_Public.csv.gz"

@@ -6,7 +6,7 @@ every refusal.
 
 Both engines where the database is written: the import goes through the
 Database service or the CLI with the engine's address (`engine_target`, a
-private copy; on PostgreSQL staged in SQLite and copied, db/postgres.py).  The
+private copy; on PostgreSQL staged in SQLite and copied, db/engine/postgres.py).  The
 readers' own tests (read_ansur, iter_ansur) touch no database."""
 
 from __future__ import annotations
@@ -21,10 +21,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
-from sass_tui.db.ansur import AnsurImportError, import_ansur_into, iter_ansur, read_ansur
-from sass_tui.db.database import Database
-from sass_tui.db.flatfile import FlatFileError, FlatFiles, import_flat_into
-from sass_tui.db.schema import row_counts
+from sass_tui.db.engine.database import Database
+from sass_tui.db.engine.schema import row_counts
+from sass_tui.db.people.ansur import AnsurImportError, import_ansur_into, iter_ansur, read_ansur
+from sass_tui.db.people.flatfile import FlatFileError, FlatFiles, import_flat_into
 
 MALE = DATASETS / "ansur2" / "ANSUR_II_MALE_Public.csv.gz"
 

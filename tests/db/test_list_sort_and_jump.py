@@ -7,8 +7,8 @@ import math
 
 import pytest
 
-from sass_tui.db.individual import person_record
-from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, SORT_COLUMNS, QueryLists
+from sass_tui.db.people.individual import person_record
+from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, SORT_COLUMNS, QueryLists
 
 QUERY = "gender = female AND stature > 170 cm"
 

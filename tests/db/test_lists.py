@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
-from sass_tui.db.query import QueryError, run_query
+from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.query.query import QueryError, run_query
 
 MALES = "gender = male"
 

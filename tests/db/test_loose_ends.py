@@ -11,7 +11,7 @@ import os
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.fit import FitError, check_mix
+from sass_tui.db.populations.fit import FitError, check_mix
 
 
 def test_one_gender_of_the_mix_leaves_the_rest_to_the_other():

@@ -13,9 +13,9 @@ import numpy as np
 import pytest
 from _paths import DATASETS
 
-from sass_tui.db.dialect import mark_of
-from sass_tui.db.query import QueryError, compile_query, field_names, run_query
-from sass_tui.db.values import load_values
+from sass_tui.db.engine.dialect import mark_of
+from sass_tui.db.people.values import load_values
+from sass_tui.db.query.query import QueryError, compile_query, field_names, run_query
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES
 
 FILES = ("ANSUR_II_MALE_Public.csv", "ANSUR_II_FEMALE_Public.csv")

@@ -1,4 +1,4 @@
-"""Files that belong together are replaced all or none (model/atomic.py
+"""Files that belong together are replaced all or none (model/files/atomic.py
 `write_files_atomic`): `sass population`'s girth and center-of-mass files, a
 .gltf and its .bin, flat-file exports.  A full disk once left a new `p.dat`
 beside the old `p-cmass.dat`."""
@@ -13,7 +13,7 @@ import pytest
 from _tmpfs import build_small_db, fill, mounted_tmpfs
 
 from sass_tui.cli import main
-from sass_tui.model.atomic import OutputFileError, write_files_atomic
+from sass_tui.model.files.atomic import OutputFileError, write_files_atomic
 
 pytestmark = pytest.mark.sqlite_only("file-system faults under a SQLite file")
 

@@ -15,12 +15,17 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
-from sass_tui.db.dialect import ids_in
-from sass_tui.db.population import MIN_PEOPLE, PopulationError, parse_id_list, population_of
-from sass_tui.db.schema import QUERY_TABLES
+from sass_tui.db.engine.dialect import ids_in
+from sass_tui.db.engine.schema import QUERY_TABLES
+from sass_tui.db.populations.population import (
+    MIN_PEOPLE,
+    PopulationError,
+    parse_id_list,
+    population_of,
+)
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.measures import MEASURES
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, ROWS
-from sass_tui.model.popfile import read_population_file
 
 FILES = ("ANSUR_II_MALE_Public.csv", "ANSUR_II_FEMALE_Public.csv")
 KEYS = {

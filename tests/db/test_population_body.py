@@ -17,8 +17,8 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, row_index
-from sass_tui.model.popfile import read_population_file
 
 TALL_WOMEN = "gender = female AND stature > 175 cm"
 

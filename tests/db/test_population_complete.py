@@ -16,10 +16,10 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.population import MIN_PEOPLE
+from sass_tui.db.populations.population import MIN_PEOPLE
 from sass_tui.model import datasets
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, ROWS, row_index
-from sass_tui.model.popfile import read_population_file
 
 
 @pytest.fixture(scope="module")

@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import pytest
 
-import sass_tui.db.predict as predict_module
+import sass_tui.db.populations.predict as predict_module
 from sass_tui.cli import main
-from sass_tui.db.database import Database
-from sass_tui.db.predict import data_key, server_cache_path
+from sass_tui.db.engine.database import Database
+from sass_tui.db.populations.predict import data_key, server_cache_path
 
 PREDICT = ["predict", "--gender", "male", "--known", "stature=180cm", "--known", "mass=85kg"]
 
@@ -25,7 +25,7 @@ def private_cache(tmp_path, monkeypatch):
 
 @pytest.fixture()
 def fits(monkeypatch) -> list[str]:
-    """The keys of the fits made (db/predict.py's fit_predictor, still run)."""
+    """The keys of the fits made (db/populations/predict.py's fit_predictor, still run)."""
     made: list[str] = []
     fit = predict_module.fit_predictor
 
@@ -109,7 +109,7 @@ def test_the_cache_file_is_named_without_the_password(cluster, private_cache):
 
 def test_the_key_takes_any_finite_value_and_sees_a_change(cluster):
     """A flat file's girth may hold any finite number: the key's integer sums
-    (db/dialect.py's total) neither overflow on 1e200 nor miss an edit of
+    (db/engine/dialect.py's total) neither overflow on 1e200 nor miss an edit of
     0.1 mm."""
     import psycopg
 

@@ -1,6 +1,6 @@
 """psycopg's "error ignored terminating <psycopg.Copy [BAD]>" (logged when a
 COPY another error broke is ended) no longer reaches the terminal before
-sass's own message (db/postgres.py `_quiet_copy_teardown`); psycopg's other
+sass's own message (db/engine/postgres.py `_quiet_copy_teardown`); psycopg's other
 warnings still do."""
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ pytest.importorskip("psycopg")
 
 SCRIPT = """
 import logging
-from sass_tui.db.postgres import _driver
+from sass_tui.db.engine.postgres import _driver
 _driver()
 log = logging.getLogger("psycopg")
 log.warning("error ignored terminating %r: %s", "<psycopg.Copy [BAD]>", "server closed")

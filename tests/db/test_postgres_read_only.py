@@ -15,11 +15,11 @@ from big_flat_files import write_big_flat_files
 from test_targets import civilian_women, write_sample
 
 from sass_tui.cli import main
-from sass_tui.db.ansur import import_ansur_into
-from sass_tui.db.database import Database
-from sass_tui.db.individual import person_records
-from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
-from sass_tui.db.schema import DatabaseError
+from sass_tui.db.engine.database import Database
+from sass_tui.db.engine.schema import DatabaseError
+from sass_tui.db.people.ansur import import_ansur_into
+from sass_tui.db.people.individual import person_records
+from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.model.served import READ_ONLY_ENV
 
 QUERY = "gender = female AND stature > 170 cm"

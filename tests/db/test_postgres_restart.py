@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import pytest
 
-from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
-from sass_tui.db.schema import DatabaseError
+from sass_tui.db.engine.schema import DatabaseError
+from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 
 QUERY = "gender = female AND stature > 170 cm"
 

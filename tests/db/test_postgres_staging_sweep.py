@@ -1,8 +1,8 @@
 """A PostgreSQL import stages its people in a SQLite file of its own
-(db/postgres.py `import_staged`); one killed half-way left that copy (23 MB
+(db/engine/postgres.py `import_staged`); one killed half-way left that copy (23 MB
 for ANSUR II) in the temporary directory for good.  The staging folder is
 named for its process, and the next import removes those of processes that
-are gone, as model/atomic.py sweeps its temporaries."""
+are gone, as model/files/atomic.py sweeps its temporaries."""
 
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ import time
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.postgres import STAGING_PREFIX, sweep_staging
+from sass_tui.db.engine.postgres import STAGING_PREFIX, sweep_staging
 
 
 def _dead_pid() -> int:

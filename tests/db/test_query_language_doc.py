@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.query import run_query
-from sass_tui.db.query_grammar import GRAMMAR
+from sass_tui.db.query.query import run_query
+from sass_tui.db.query.query_grammar import GRAMMAR
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "query-language.md"
 FILES = {"male": "ANSUR_II_MALE_Public.csv", "female": "ANSUR_II_FEMALE_Public.csv"}

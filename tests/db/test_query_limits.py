@@ -8,7 +8,8 @@ from __future__ import annotations
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.query import (
+from sass_tui.db.engine.schema import QUERY_TABLES
+from sass_tui.db.query.query import (
     MAX_COMPARISONS,
     MAX_JOINED_TABLES,
     MAX_NESTING,
@@ -16,7 +17,6 @@ from sass_tui.db.query import (
     QueryError,
     compile_query,
 )
-from sass_tui.db.schema import QUERY_TABLES
 
 
 def test_deep_nesting_is_refused_at_the_parenthesis():
@@ -29,7 +29,7 @@ def test_deep_nesting_is_refused_at_the_parenthesis():
 def test_nesting_at_the_limit_runs(engine_db):
     text = "(" * MAX_NESTING + "stature > 170 cm" + ")" * MAX_NESTING
     # The parentheses change nothing: the count is the table's own (person.stature is
-    # in cm), over the real people a query without a source term reaches (db/scope.py).
+    # in cm), over the real people a query without a source term reaches (db/query/scope.py).
     real = "source != 'synthetic' AND substr(source, 1, 8) != 'virtual:'"
     (expected,) = engine_db.execute(
         f"SELECT count(*) FROM person WHERE stature > 170 AND {real}"

@@ -15,17 +15,17 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
-from sass_tui.db import accelerator
-from sass_tui.db.dialect import dialect_of
-from sass_tui.db.query import (
+from sass_tui.db.engine.dialect import dialect_of
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.query import accelerator
+from sass_tui.db.query.query import (
     QueryError,
     compile_conjuncts,
     compile_query,
     parse_query,
     run_query,
 )
-from sass_tui.db.query_tree import And, Comparison, Or, negation, to_sql
-from sass_tui.db.schema import connect
+from sass_tui.db.query.query_tree import And, Comparison, Or, negation, to_sql
 
 FILES = {"male": "ANSUR_II_MALE_Public.csv", "female": "ANSUR_II_FEMALE_Public.csv"}
 UNITS = pint.UnitRegistry()
@@ -256,7 +256,7 @@ def test_any_tree_written_out_parses_back_to_itself(case):
     assert flattened(parse_query(text)) == flattened(tree)
 
 
-# --- the DuckDB column copy (db/accelerator.py) reads them as SQLite does -------
+# --- the DuckDB column copy (db/query/accelerator.py) reads them as SQLite does -------
 
 DUCKDB_QUERIES = [
     "NOT (gender = male OR branch = 'Combat Arms') AND stature BETWEEN 5 ft 2 in AND 5 ft 8 in",

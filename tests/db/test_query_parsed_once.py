@@ -2,7 +2,7 @@
 query on: `sass query` (its count, rows, the demonstration hint, a target's
 weighted count), `sass fit`, `sass family`, `sass population`, `sass
 target`, and the query screen's lists.  Each parse of the query parser
-(db/_query_parser.py, generated from db/query_grammar.py) is counted by the text it read."""
+(db/query/_query_parser.py, generated from db/query/query_grammar.py) is counted by the text it read."""
 
 from __future__ import annotations
 
@@ -12,10 +12,10 @@ import pytest
 from test_targets import civilian_women, write_sample
 
 from sass_tui.cli import main
-from sass_tui.db import _query_parser
-from sass_tui.db.database import Database
-from sass_tui.db.lists import QueryLists
-from sass_tui.db.query import compile_query, demonstration_hint, parser
+from sass_tui.db.engine.database import Database
+from sass_tui.db.query import _query_parser
+from sass_tui.db.query.lists import QueryLists
+from sass_tui.db.query.query import compile_query, demonstration_hint, parser
 
 STRENGTH = "gender = male AND strength.elbow_flexion.max > 20 ft-lb"
 

@@ -1,4 +1,4 @@
-"""The committed stand-alone parser (db/_query_parser.py) is the grammar's:
+"""The committed stand-alone parser (db/query/_query_parser.py) is the grammar's:
 the same digest, the same trees, positions and errors as lark's own parser
 built from the grammar."""
 
@@ -10,9 +10,9 @@ import lark
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.db import _query_parser
-from sass_tui.db.query import parser
-from sass_tui.db.query_grammar import GRAMMAR
+from sass_tui.db.query import _query_parser
+from sass_tui.db.query.query import parser
+from sass_tui.db.query.query_grammar import GRAMMAR
 
 SAMPLES = [
     "gender = male AND girth.right_upper_arm.z > 28 cm AND strength.elbow_flexion.max > 20 ft-lb",

@@ -10,10 +10,10 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from sass_tui.db.dialect import dialect_of
-from sass_tui.db.query import QueryError, compile_conjuncts, compile_query
-from sass_tui.db.query_tree import And, Comparison, Or, names_field, to_sql
-from sass_tui.db.scope import NOT_VIRTUAL, REAL_PEOPLE
+from sass_tui.db.engine.dialect import dialect_of
+from sass_tui.db.query.query import QueryError, compile_conjuncts, compile_query
+from sass_tui.db.query.query_tree import And, Comparison, Or, names_field, to_sql
+from sass_tui.db.query.scope import NOT_VIRTUAL, REAL_PEOPLE
 
 DB = Path(__file__).resolve().parents[2] / "sass_tui" / "db"
 
@@ -37,7 +37,7 @@ def test_the_report_sample_is_one_tree():
     )
     tree = compiled.tree
     assert isinstance(tree, And)
-    # The real-people scope (db/scope.py) is two more terms of the same tree:
+    # The real-people scope (db/query/scope.py) is two more terms of the same tree:
     # no demonstration people, no virtual people.
     gender, girth, strength, scope, not_virtual = tree.terms
     assert scope == REAL_PEOPLE and not_virtual == NOT_VIRTUAL

@@ -10,8 +10,8 @@ import sqlite3
 import pytest
 from big_flat_files import write_big_flat_files
 
-from sass_tui.db.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.query.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
 
 pytestmark = pytest.mark.sqlite_only("SQLite's read-only open (mode=ro) of a file")
 
@@ -24,7 +24,7 @@ def test_a_read_only_database_is_queried_and_never_changed(default_db_file, tmp_
     path = tmp_path / "sass.db"
     path.write_bytes(default_db_file.read_bytes())
     before = digest(path)
-    with connect(path) as conn:  # the same question, read-write (real people: db/scope.py)
+    with connect(path) as conn:  # the same question, read-write (real people: db/query/scope.py)
         males = conn.execute(
             "SELECT count(*) FROM person WHERE gender = 'male' AND source != 'synthetic' "
             "AND substr(source, 1, 8) != 'virtual:'"

@@ -1,5 +1,5 @@
 """Real people by default: a query without a `source` term counts, lists,
-summarizes and fits the real people only (db/scope.py); `source = synthetic`
+summarizes and fits the real people only (db/query/scope.py); `source = synthetic`
 reaches the 200 demonstration people.  Expected counts come straight from the
 published CSV in ../shared.  On both engines (tests/db/conftest.py)."""
 
@@ -11,11 +11,11 @@ import json
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.fit import fit_test
-from sass_tui.db.lists import QUERY_LIST, QueryLists
-from sass_tui.db.population import population_of
-from sass_tui.db.query import demonstration_hint, run_query
-from sass_tui.db.values import load_values
+from sass_tui.db.people.values import load_values
+from sass_tui.db.populations.fit import fit_test
+from sass_tui.db.populations.population import population_of
+from sass_tui.db.query.lists import QUERY_LIST, QueryLists
+from sass_tui.db.query.query import demonstration_hint, run_query
 
 FILES = {"male": "ANSUR_II_MALE_Public.csv", "female": "ANSUR_II_FEMALE_Public.csv"}
 

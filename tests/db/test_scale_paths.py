@@ -1,4 +1,4 @@
-"""The DuckDB column copy (sass_tui/db/accelerator.py) answers exactly as SQLite does,
+"""The DuckDB column copy (sass_tui/db/query/accelerator.py) answers exactly as SQLite does,
 and never out of step with the SQLite file after a write.
 
 A generated database of 3,000 people with every group, NULLs and missing
@@ -16,11 +16,7 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
-from sass_tui.db import accelerator, column_copy, copy_file
-from sass_tui.db.individual import fetch_individual
-from sass_tui.db.people_store import PeopleBatch, delete_people, store_people
-from sass_tui.db.query import CompiledQuery, Query, compile_query, run_query
-from sass_tui.db.schema import (
+from sass_tui.db.engine.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
     JOINT_LIMIT_NAMES,
@@ -30,7 +26,11 @@ from sass_tui.db.schema import (
     recreate_schema,
     transaction,
 )
-from sass_tui.model.strength import MOTION_NAMES
+from sass_tui.db.people.individual import fetch_individual
+from sass_tui.db.people.people_store import PeopleBatch, delete_people, store_people
+from sass_tui.db.query import accelerator, column_copy, copy_file
+from sass_tui.db.query.query import CompiledQuery, Query, compile_query, run_query
+from sass_tui.model.strength.strength import MOTION_NAMES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS, STRENGTH_TYPES
 
 pytestmark = pytest.mark.sqlite_only("the DuckDB column copy of a SQLite file")
@@ -565,7 +565,7 @@ def test_query_lists_are_found_by_the_copy(db, monkeypatch):
     """The query screen's list (QueryLists.run) takes its people from the
     copy: the same people, in the same order, as SQLite, selected people left
     out, and after a write as well."""
-    from sass_tui.db.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+    from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists
 
     answered = []
     answer = accelerator.answer_in_transaction
@@ -601,7 +601,7 @@ def test_query_lists_are_found_by_the_copy(db, monkeypatch):
 def test_a_flat_file_import_then_an_accelerated_count_equals_sql(db, tmp_path):
     from big_flat_files import write_big_flat_files
 
-    from sass_tui.db.flatfile import import_flat_files
+    from sass_tui.db.people.flatfile import import_flat_files
 
     assert_copy_is_sqlite(db)
     import_flat_files(db, write_big_flat_files(tmp_path / "flat", people=300))
@@ -611,7 +611,7 @@ def test_a_flat_file_import_then_an_accelerated_count_equals_sql(db, tmp_path):
 
 
 def test_an_ansur_import_then_an_accelerated_count_equals_sql(db, ansur_dir):
-    from sass_tui.db.ansur import import_ansur
+    from sass_tui.db.people.ansur import import_ansur
 
     assert_copy_is_sqlite(db)
     import_ansur(db, [ansur_dir / "ANSUR_II_FEMALE_Public.csv"], label="test")
@@ -623,7 +623,7 @@ def test_an_ansur_import_then_an_accelerated_count_equals_sql(db, ansur_dir):
 def test_an_import_cancelled_mid_write_leaves_copy_and_file_alike(db, tmp_path):
     from big_flat_files import write_big_flat_files
 
-    from sass_tui.db.flatfile import import_flat_files
+    from sass_tui.db.people.flatfile import import_flat_files
     from sass_tui.db.progress import Cancelled
 
     class Later:
@@ -660,8 +660,8 @@ def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path):
         f"sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
         "from test_scale_paths import generated_batch\n"
         "from sass_tui.db import schema\n"
-        "from sass_tui.db.people_store import store_people\n"
-        "from sass_tui.db.schema import connect, transaction\n"
+        "from sass_tui.db.people.people_store import store_people\n"
+        "from sass_tui.db.engine.schema import connect, transaction\n"
         "conn = connect(sys.argv[1])\n"
         "conn.execute('PRAGMA cache_size = 5')\n"  # pages spill to the file before COMMIT
         "batch = generated_batch(np.random.default_rng(4), np.arange(600_001, 600_301))\n"

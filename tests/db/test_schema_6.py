@@ -8,11 +8,11 @@ import sqlite3
 
 import pytest
 
-from sass_tui.db.schema import SCHEMA_VERSION, TARGET_TABLES, connect, row_counts
+from sass_tui.db.engine.schema import SCHEMA_VERSION, TARGET_TABLES, connect, row_counts
 
 pytestmark = pytest.mark.sqlite_only("the migration of older SQLite files")
 
-# What schemas 3 and 4 added (db/schema.py before schema 5), enough of it to
+# What schemas 3 and 4 added (db/engine/schema.py before schema 5), enough of it to
 # be dropped: the tables, the view, the one logging trigger and a per-table one.
 OLD_CHANGE_LOG = """
 CREATE TABLE change_gens (gen INTEGER PRIMARY KEY, token INTEGER NOT NULL);

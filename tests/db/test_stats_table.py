@@ -1,4 +1,4 @@
-"""`sass stats` (db/stats.py, cli/stats.py) on both engines: the real
+"""`sass stats` (db/populations/stats.py, cli/stats.py) on both engines: the real
 people's percentiles are numpy's over the ANSUR II CSV; the virtual NHANES
 adults aged 20-59 have NHANES's own weighted 5th/50th/95th stature and mass
 (cumulative weight over the published CSV, computed here); and a target's

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.database import Database
-from sass_tui.db.targets import load_target
+from sass_tui.db.engine.database import Database
+from sass_tui.db.populations.targets import load_target
 from tests._paths import ANSUR, SHARED
 
 NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"

@@ -1,7 +1,7 @@
 """People imported from a flat file whose source says it is synthetic (the
 shipped datasets/db files: "SYNTHETIC (not a real person): drawn by …") are
 demonstration people, out of every answer about real people, on both
-engines, as the default database's are (db/scope.py, `source_label`)."""
+engines, as the default database's are (db/query/scope.py, `source_label`)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.scope import DEMONSTRATION_SOURCE, source_label
+from sass_tui.db.query.scope import DEMONSTRATION_SOURCE, source_label
 
 ROOT = Path(__file__).resolve().parents[2]
 SHIPPED = ROOT / "datasets" / "db"

@@ -15,11 +15,11 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.addresses import is_url
-from sass_tui.db.database import Database
-from sass_tui.db.targets import SHIPPED
+from sass_tui.db.engine.addresses import is_url
+from sass_tui.db.engine.database import Database
+from sass_tui.db.populations.targets import SHIPPED
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import GLOBAL, row_index
-from sass_tui.model.popfile import read_population_file
 
 # U.S. civilian-like adult women: shorter and heavier than the soldiers of
 # ANSUR II (women 162.8 cm, 67.8 kg); mass log-normal as adult masses are.
@@ -246,9 +246,9 @@ def _state(db: str) -> object:
 
 @pytest.mark.sqlite_only("people are deleted by SQLite's people_store.delete_people alone")
 def test_people_deleted_since_drop_out_of_the_sums(made, tmp_path):
-    from sass_tui.db.people_store import delete_people
-    from sass_tui.db.schema import connect, transaction
-    from sass_tui.db.targets import load_target, weighted_count
+    from sass_tui.db.engine.schema import connect, transaction
+    from sass_tui.db.people.people_store import delete_people
+    from sass_tui.db.populations.targets import load_target, weighted_count
 
     db = tmp_path / "sass.db"
     shutil.copyfile(made, db)

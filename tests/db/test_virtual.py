@@ -1,4 +1,4 @@
-"""Virtual populations (db/virtual.py, model/virtual.py): the shipped
+"""Virtual populations (db/populations/virtual.py, model/population/virtual.py): the shipped
 `nhanes-2017-2020`, made by `sass db init` (and on first use in a database
 that lacks it), holds NHANES's own weighted stature
 and mass, a measure NHANES took that the prediction never saw agrees with
@@ -15,11 +15,11 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.database import Database
-from sass_tui.db.dialect import mark_of
-from sass_tui.db.targets import SHIPPED, list_targets, load_target
-from sass_tui.db.values import load_values
-from sass_tui.db.virtual import drop_virtual
+from sass_tui.db.engine.database import Database
+from sass_tui.db.engine.dialect import mark_of
+from sass_tui.db.people.values import load_values
+from sass_tui.db.populations.targets import SHIPPED, list_targets, load_target
+from sass_tui.db.populations.virtual import drop_virtual
 from tests._paths import SHARED
 
 NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"

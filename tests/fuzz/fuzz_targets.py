@@ -169,10 +169,10 @@ ALLOWED = (SassError, OSError)
 
 
 def _population() -> Target:
+    from sass_tui.model.body.figure import Figure
     from sass_tui.model.datasets import FILES
-    from sass_tui.model.figfile import render_fig
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.popfile import parse_population_text
+    from sass_tui.model.files.figfile import render_fig
+    from sass_tui.model.files.popfile import parse_population_text
 
     seeds = [(DATASETS / name).read_text(encoding="utf-8") for name in FILES.values()]
     groups = list(FILES)
@@ -197,7 +197,7 @@ def _population() -> Target:
 def _strength() -> Target:
     import numpy as np
 
-    from sass_tui.model.strength import MOTIONS, parse_strength_text
+    from sass_tui.model.strength.strength import MOTIONS, parse_strength_text
 
     full = (DATASETS / "strength.dat").read_text(encoding="utf-8").split("\n")
     # A short seed (the first section's first rows) mutates faster and still fits.
@@ -219,9 +219,9 @@ def _strength() -> Target:
 
 
 def _fig() -> Target:
-    from sass_tui.model.fig_reader import parse_fig
-    from sass_tui.model.figfile import render_fig
-    from sass_tui.model.figure import Figure
+    from sass_tui.model.body.figure import Figure
+    from sass_tui.model.files.fig_reader import parse_fig
+    from sass_tui.model.files.figfile import render_fig
 
     seed = render_fig(Figure.default())
     return Target("fig", [seed, render_fig(Figure.default("female"))], lambda t: parse_fig(str(t)))
@@ -254,8 +254,8 @@ class _Databases:
         self._with_people: sqlite3.Connection | None = None
 
     def _build(self, fill: bool) -> sqlite3.Connection:
-        from sass_tui.db.default import create_default_database
-        from sass_tui.db.schema import connect
+        from sass_tui.db.engine.schema import connect
+        from sass_tui.db.people.default import create_default_database
 
         with tempfile.TemporaryDirectory() as tmp:
             path = Path(tmp) / "t.db"
@@ -285,7 +285,7 @@ DATABASES = _Databases()
 
 
 def _query() -> Target:
-    from sass_tui.db.query import Query, compile_query
+    from sass_tui.db.query.query import Query, compile_query
 
     seeds = [
         "gender = male",
@@ -304,7 +304,7 @@ def _query() -> Target:
 
 
 def _flat() -> Target:
-    from sass_tui.db.flatfile import FILE_NAMES, FlatFiles, import_flat_files
+    from sass_tui.db.people.flatfile import FILE_NAMES, FlatFiles, import_flat_files
 
     def first_people(name: str) -> str:
         lines = (DATASETS / "db" / name).read_text(encoding="utf-8").splitlines()
@@ -328,7 +328,7 @@ def _flat() -> Target:
 
 def ansur_seed() -> str:
     """Three made-up subjects in the ANSUR II public layout (every required column)."""
-    from sass_tui.db.ansur import MEASUREMENTS
+    from sass_tui.db.people.ansur import MEASUREMENTS
 
     header = ["subjectid", "gender", "weightkg", "age", "writingpreference", *MEASUREMENTS]
     rows = [header]
@@ -343,7 +343,7 @@ def ansur_seed() -> str:
 
 
 def _ansur() -> Target:
-    from sass_tui.db.ansur import import_ansur
+    from sass_tui.db.people.ansur import import_ansur
 
     def run(text: object) -> object:
         with tempfile.TemporaryDirectory() as tmp:
@@ -359,7 +359,7 @@ def _ansur() -> Target:
 
 
 def _ids() -> Target:
-    from sass_tui.db.population import parse_id_list
+    from sass_tui.db.populations.population import parse_id_list
 
     seeds = [
         "10027\n10032\n# a comment\n\n29421\n",
@@ -369,7 +369,7 @@ def _ids() -> Target:
 
 
 def _anderson2007() -> Target:
-    from sass_tui.model.published_strength import (
+    from sass_tui.model.strength.published_strength import (
         LOWER_LIMB_MOTIONS,
         Subject,
         lower_limb_strength,
@@ -387,7 +387,11 @@ def _anderson2007() -> Target:
 
 
 def _hfds2003() -> Target:
-    from sass_tui.model.published_grip import GRIP_MOTIONS, grip_strength, parse_hfds2003_text
+    from sass_tui.model.strength.published_grip import (
+        GRIP_MOTIONS,
+        grip_strength,
+        parse_hfds2003_text,
+    )
 
     seed = (DATASETS / "hfds2003_grip.csv").read_text(encoding="utf-8")
 
@@ -399,7 +403,7 @@ def _hfds2003() -> Target:
 
 
 def _strength_limit() -> Target:
-    from sass_tui.model.published_strength import parse_strength_limit
+    from sass_tui.model.strength.published_strength import parse_strength_limit
 
     seeds = ["strength.knee_extension >= 150 N-m at knee_y=60", "hip_flexion < 80 ft-lb"]
 
@@ -411,7 +415,7 @@ def _strength_limit() -> Target:
 
 # --- the readers, on files of any size -------------------------------------------
 # A reader is a parser behind a file: it must refuse a file over its kind's
-# size unread (model/paths.py LARGEST_*), and read one just under it (a 4 MB
+# size unread (model/files/paths.py LARGEST_*), and read one just under it (a 4 MB
 # line of NULs, a 3 MB field) into a message of a few hundred characters at
 # most, never quoting the whole (a 1 GB file once made a 4 GB message).
 
@@ -479,9 +483,9 @@ def _reader(name: str, seeds: list, largest: int, read: Callable[[Path], object]
 
 
 def _population_file() -> Target:
+    from sass_tui.model.files.paths import LARGEST_TEXT_FILE
+    from sass_tui.model.files.popfile import read_population_file
     from sass_tui.model.names import GIRTH
-    from sass_tui.model.paths import LARGEST_TEXT_FILE
-    from sass_tui.model.popfile import read_population_file
 
     seeds = [(DATASETS / "girth.dat").read_text(encoding="utf-8")]
     return _reader(
@@ -493,8 +497,8 @@ def _population_file() -> Target:
 
 
 def _strength_file() -> Target:
-    from sass_tui.model.paths import LARGEST_TEXT_FILE
-    from sass_tui.model.strength import read_strength_file
+    from sass_tui.model.files.paths import LARGEST_TEXT_FILE
+    from sass_tui.model.strength.strength import read_strength_file
 
     full = (DATASETS / "strength.dat").read_text(encoding="utf-8").split("\n")
     return _reader("strength_file", ["\n".join(full[:60])], LARGEST_TEXT_FILE, read_strength_file)
@@ -502,7 +506,7 @@ def _strength_file() -> Target:
 
 def _ids_file() -> Target:
     from sass_tui.cli.population import read_id_file
-    from sass_tui.model.paths import LARGEST_ID_LIST
+    from sass_tui.model.files.paths import LARGEST_ID_LIST
 
     seeds = ["10027\n10032\n# a comment\n\n29421\n", "id,name\n10027,ANSUR II M 10027\n"]
     return _reader("ids_file", seeds, LARGEST_ID_LIST, lambda path: read_id_file(str(path)))

@@ -10,10 +10,10 @@ from pathlib import Path
 
 import numpy as np
 
-from sass_tui.db.ansur import read_ansur
+from sass_tui.db.people.ansur import read_ansur
 from sass_tui.model.measures import PUBLISHED_TO_CANONICAL
 from sass_tui.model.names import AXES, GIRTH_ROWS
-from sass_tui.model.prediction import predicted_fields
+from sass_tui.model.population.prediction import predicted_fields
 
 
 @dataclass

@@ -13,7 +13,10 @@ from ansur_csv import ansur_values
 from hypothesis import given
 from hypothesis import strategies as st
 
-from sass_tui.model.accommodation import (
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.family_files import write_family
+from sass_tui.model.files.fig_reader import read_fig
+from sass_tui.model.population.accommodation import (
     AccommodationError,
     CoverageEllipsoid,
     build_family,
@@ -24,10 +27,7 @@ from sass_tui.model.accommodation import (
     family_ranges,
     nearest_person,
 )
-from sass_tui.model.family_files import write_family
-from sass_tui.model.fig_reader import read_fig
-from sass_tui.model.figure import Figure
-from sass_tui.model.prediction import Predictor
+from sass_tui.model.population.prediction import Predictor
 
 # chi-square quantiles (NIST/SEMATECH e-Handbook, table 1.3.6.7.4, and the
 # closed form -2 ln(1 - p) for k = 2)

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 from _paths import ROOT
 
-from sass_tui.db.ansur import read_ansur
+from sass_tui.db.people.ansur import read_ansur
 from sass_tui.model.names import GIRTH, ROWS
 
 

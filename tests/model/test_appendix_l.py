@@ -1,4 +1,4 @@
-"""Appendix L.1's center-of-mass rules are defined once (model/appendix_l.py)
+"""Appendix L.1's center-of-mass rules are defined once (model/body/appendix_l.py)
 and are the report's own: its formulas, read from the report's text here, give
 the same numbers; no other module of sass writes their constants."""
 
@@ -10,8 +10,9 @@ from pathlib import Path
 import pytest
 
 import sass_tui
-from sass_tui.model import appendix_l, hanim, popfile
-from sass_tui.model.appendix_l import foot_center, lower_leg_center, toes_implied
+from sass_tui.model.body import appendix_l, hanim
+from sass_tui.model.body.appendix_l import foot_center, lower_leg_center, toes_implied
+from sass_tui.model.files import popfile
 
 PACKAGE = Path(sass_tui.__file__).parent
 
@@ -41,6 +42,6 @@ def test_heel_behind_ankle_is_defined_once():
         or re.search(r"(?<![\d.])0\.2516(?!\d)", line.split("#", 1)[0])
     ]
     assert len(definitions) == 3 and all(
-        d.startswith("model/appendix_l.py") for d in definitions
+        d.startswith("model/body/appendix_l.py") for d in definitions
     ), definitions
     assert popfile.HEEL_BEHIND_ANKLE is appendix_l.HEEL_BEHIND_ANKLE

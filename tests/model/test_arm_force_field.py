@@ -1,4 +1,4 @@
-"""The Arm Force Field (model/arm_force_field.py) against the authors' own
+"""The Arm Force Field (model/strength/arm_force_field.py) against the authors' own
 script (nladelfa/Arm-Force-Field, AFFinPython - v1.0.py), run by
 ../shared/reference/arm-force-field/reference.py on postures other than the
 authors' example.  The script's numbers are written down here (rounded to
@@ -12,7 +12,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.model.arm_force_field import (
+from sass_tui.model.strength.arm_force_field import (
     POSTURE_JOINTS,
     ArmForceError,
     arm_force,

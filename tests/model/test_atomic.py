@@ -14,8 +14,8 @@ import pytest
 from _tmpfs import mounted_tmpfs, remount_read_only
 
 from sass_tui.cli import main
-from sass_tui.model.atomic import OutputFileError, temporary_name, write_text_atomic
 from sass_tui.model.errors import SassError
+from sass_tui.model.files.atomic import OutputFileError, temporary_name, write_text_atomic
 
 
 @pytest.fixture
@@ -151,7 +151,7 @@ def test_a_write_killed_half_way_is_cleaned_by_the_next(tmp_path):
     code = textwrap.dedent(
         f"""
         import os, sys, time
-        import sass_tui.model.atomic as atomic
+        import sass_tui.model.files.atomic as atomic
         real_replace = os.replace
         def hang(src, dst):
             print("ready", flush=True)

@@ -1,4 +1,4 @@
-"""The body's measurements (model/body_measures.py): the shipped table is
+"""The body's measurements (model/body/body_measures.py): the shipped table is
 `sass predict`'s regression on stature and mass, and a person's own values
 win over it."""
 
@@ -10,9 +10,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.db.default import open_database
-from sass_tui.db.predict import open_predictor
-from sass_tui.model.body_measures import (
+from sass_tui.db.people.default import open_database
+from sass_tui.db.populations.predict import open_predictor
+from sass_tui.model.body.body_measures import (
     MEASURED,
     PREDICTED,
     SURFACE_MEASURES,

@@ -1,5 +1,5 @@
 """The exported body's surface passes through the person's own measurements
-(model/body_surface.py), checked from outside: ANSUR II people exported with
+(model/body/body_surface.py), checked from outside: ANSUR II people exported with
 `sass export gltf`, the .glb read back with pygltflib, its closed parts found
 from the triangles alone, cut level at the heights the survey measured at,
 and each cut's tape-measure perimeter (its convex hull) and width compared
@@ -219,7 +219,7 @@ def test_the_limbs_have_the_person_s_girths(people):
             name
         )
         # the stated proxy: halfway between the shoulder's centre (17 % of the
-        # biacromial breadth below the acromion, model/landmarks.py) and the elbow
+        # biacromial breadth below the acromion, model/body/landmarks.py) and the elbow
         shoulder_y = _mm(row, "acromialheight") - 0.17 * _mm(row, "biacromialbreadth")
         biceps = _hull_perimeter(_cut(positions, arm, (shoulder_y + elbow_y) / 2))
         assert biceps == pytest.approx(_mm(row, "bicepscircumferenceflexed"), rel=GIRTH_SHARE), (
@@ -258,8 +258,8 @@ def test_a_percentile_figure_has_the_girths_sass_predict_gives_it(tmp_path, ship
     its chest, waist and buttock cuts have the circumferences `sass predict`
     gives its stature and mass (the predictor fitted on the default
     database, asked here), within 3 %; the file says they were predicted."""
-    from sass_tui.db.default import open_database
-    from sass_tui.db.predict import open_predictor
+    from sass_tui.db.people.default import open_database
+    from sass_tui.db.populations.predict import open_predictor
 
     glb = tmp_path / "m95.glb"
     assert main(["export", "gltf", "--gender", "male", "--percentile", "95", "-o", str(glb)]) == 0

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 from _paths import DATASETS
 
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
-from sass_tui.model.popfile import read_population_file
 
 ROW = re.compile(r"^\s*(-?[\d.]+(?:[,\s]+-?[\d.]+){8})[,\s]*/\*(.*?)\*/")
 
@@ -121,7 +121,7 @@ def _appendix_f_limits(report_lines) -> dict[str, float]:
 def test_each_correction_has_the_reports_evidence(report_lines):
     """The corrected sign is the one appendix J or F prints for the same cell,
     or the one the female table (appendix I) gives the same row."""
-    from sass_tui.model.figfile import joint_limit_variable
+    from sass_tui.model.files.figfile import joint_limit_variable
     from sass_tui.model.names import ROWS
 
     jlimits = appendix_rows(report_lines, "J JLIMITS.H", "K Mass Values")
@@ -144,7 +144,7 @@ def test_each_correction_has_the_reports_evidence(report_lines):
 def test_appendix_f_differences_are_documented(report_lines):
     """Appendix F's limits that are not appendix H's 95th percentile are named
     in docs/model.md (they are not corrected: no second source agrees)."""
-    from sass_tui.model.figfile import joint_limit_variable
+    from sass_tui.model.files.figfile import joint_limit_variable
     from sass_tui.model.names import ROWS
 
     docs = (DATASETS.parent / "docs" / "model.md").read_text()
@@ -187,6 +187,6 @@ def test_reader_holds_every_number(name, group):
 
 
 def test_male_50th_mass_is_what_appendix_f_implies(report_lines):
-    from sass_tui.model.figure import Figure
+    from sass_tui.model.body.figure import Figure
 
     assert Figure.default().mass == pytest.approx(82.2, abs=1e-9)

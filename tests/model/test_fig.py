@@ -10,9 +10,9 @@ import pytest
 from _paths import DATASETS
 
 from sass_tui.cli import main
-from sass_tui.model.fig_reader import parse_fig, read_fig
-from sass_tui.model.figfile import FigParseError, default_fig_name, render_fig
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.fig_reader import parse_fig, read_fig
+from sass_tui.model.files.figfile import FigParseError, default_fig_name, render_fig
 
 # Appendix F misspells three names that BODY.FIG (appendix D) reads otherwise.
 APPENDIX_F_SPELLING = {

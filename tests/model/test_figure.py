@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sass_tui.model.figure import Figure, FigureError
+from sass_tui.model.body.figure import Figure, FigureError
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, MASS_FRACTIONS, row_index
-from sass_tui.model.percentile import PercentileError
+from sass_tui.model.population.percentile import PercentileError
 
 ARM = row_index(GIRTH, "right_upper_arm")
 

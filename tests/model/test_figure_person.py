@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sass_tui.model.figure import Figure, FigureError
+from sass_tui.model.body.figure import Figure, FigureError
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
-from sass_tui.model.percentile_arrays import percentile_of
+from sass_tui.model.population.percentile_arrays import percentile_of
 from sass_tui.model.session import Session
 
 
@@ -71,9 +71,9 @@ def test_person_refused_without_statistics_or_with_wrong_shape():
 
 def test_files_for_a_person_with_unmeasured_values_take_the_population_values(tmp_path):
     """Like an ANSUR II soldier: no joint limits at all, no neck in the database."""
-    from sass_tui.model.fig_reader import read_fig
-    from sass_tui.model.figfile import render_fig, write_fig
-    from sass_tui.model.hanim_x3d import export_hanim
+    from sass_tui.model.files.fig_reader import read_fig
+    from sass_tui.model.files.figfile import render_fig, write_fig
+    from sass_tui.model.files.hanim_x3d import export_hanim
 
     population = Figure.default("male")
     population.set_group_percentile(JOINT_LIMITS, 95)
@@ -106,7 +106,12 @@ def test_unmeasured_joint_limits_are_the_populations_on_the_strength_page():
     """An ANSUR II soldier has no joint limits: the strength page checks angles
     against the population's at the group percentile, and says so; it never
     says "no motion about this axis" for an axis that has motion."""
-    from sass_tui.model.strength import StrengthError, check_angle, joint_limit_range, limits_source
+    from sass_tui.model.strength.strength import (
+        StrengthError,
+        check_angle,
+        joint_limit_range,
+        limits_source,
+    )
 
     population = Figure.default("male")
     population.set_group_percentile(JOINT_LIMITS, 95)

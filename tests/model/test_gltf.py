@@ -1,4 +1,4 @@
-"""glTF 2.0 export (`sass export gltf`, model/gltf.py), checked from outside:
+"""glTF 2.0 export (`sass export gltf`, model/files/gltf.py), checked from outside:
 the Khronos glTF-Validator (npm `gltf-validator`, node/package.json), and the
 files read back with pygltflib against the HAnim export of the same figure
 and against the ANSUR II CSV."""
@@ -258,7 +258,7 @@ def test_sites_are_empty_nodes_at_the_hanim_sites(male50):
 
 def test_mesh_is_the_stature_tall_standing_on_the_floor(male50):
     read, _ = male50
-    from sass_tui.model.figure import Figure
+    from sass_tui.model.body.figure import Figure
 
     stature = Figure.default("male").stature / 100
     p = read.positions()
@@ -284,7 +284,7 @@ def test_segment_masses_and_centres_are_the_hanim_export(male50):
         for s in root.iter("HAnimSegment")
         if s.get("name")
     }
-    from sass_tui.model.figure import Figure
+    from sass_tui.model.body.figure import Figure
 
     assert sum(read.segment_masses().values()) == pytest.approx(
         Figure.default("male").mass, abs=0.005
@@ -390,8 +390,8 @@ def test_other_suffixes_are_refused_before_anything_is_written(tmp_path, capsys)
 
 
 def test_a_figure_that_cannot_bend_90_degrees_is_not_seated(tmp_path):
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.gltf import GltfError, export_gltf
+    from sass_tui.model.body.figure import Figure
+    from sass_tui.model.files.gltf import GltfError, export_gltf
     from sass_tui.model.names import JOINT_LIMITS, row_index
 
     figure = Figure.default("male")
@@ -409,10 +409,10 @@ def test_a_figure_that_cannot_bend_90_degrees_is_not_seated(tmp_path):
     percentile=st.floats(0.5, 99.5),
 )
 def test_any_percentile_figure_is_its_stature_tall_with_normal_weights(gender, percentile):
-    from sass_tui.model.body_surface import body_mesh, figure_surface
-    from sass_tui.model.figure import Figure
-    from sass_tui.model.gltf import render_gltf
-    from sass_tui.model.hanim import build_humanoid
+    from sass_tui.model.body.body_surface import body_mesh, figure_surface
+    from sass_tui.model.body.figure import Figure
+    from sass_tui.model.body.hanim import build_humanoid
+    from sass_tui.model.files.gltf import render_gltf
 
     figure = Figure.default(gender)
     for group in figure.groups:
@@ -439,7 +439,7 @@ def test_any_percentile_figure_is_its_stature_tall_with_normal_weights(gender, p
 
 @given(st.text(max_size=12))
 def test_a_pose_answer_is_a_pose_or_a_clear_refusal(text):
-    from sass_tui.model.gltf import POSES, GltfError, pose_of
+    from sass_tui.model.files.gltf import POSES, GltfError, pose_of
 
     try:
         pose = pose_of(text)
@@ -455,7 +455,7 @@ def test_a_pose_answer_is_a_pose_or_a_clear_refusal(text):
 def test_a_file_name_is_glb_or_gltf_or_refused_by_name(text):
     from pathlib import PurePath
 
-    from sass_tui.model.gltf import GltfError, check_path
+    from sass_tui.model.files.gltf import GltfError, check_path
 
     try:
         path = check_path(text)
@@ -510,7 +510,7 @@ def test_figure_options_reach_the_body(tmp_path, capsys):
 
 
 def test_only_the_export_imports_the_gltf_writer(tmp_path):
-    """sass fig and export hanim never load model/gltf.py; export gltf loads
+    """sass fig and export hanim never load model/files/gltf.py; export gltf loads
     neither Textual nor the query parser (lark) nor pint (no unit typed)."""
     import sys
 
@@ -518,7 +518,7 @@ def test_only_the_export_imports_the_gltf_writer(tmp_path):
         code = (
             "import sys\nfrom sass_tui.cli import main\n"
             f"assert main({argv!r}) == 0\n"
-            "names = ('sass_tui.model.gltf', 'textual', 'lark', 'pint')\n"
+            "names = ('sass_tui.model.files.gltf', 'textual', 'lark', 'pint')\n"
             "print('imported:' + ','.join(m for m in names if m in sys.modules))\n"
         )
         done = subprocess.run(
@@ -530,7 +530,7 @@ def test_only_the_export_imports_the_gltf_writer(tmp_path):
 
     assert imported(["fig", "-o", "X.fig"]) == set()
     assert imported(["export", "hanim", "-o", "X.x3d"]) == set()
-    assert imported(["export", "gltf", "-o", "X.glb"]) == {"sass_tui.model.gltf"}
+    assert imported(["export", "gltf", "-o", "X.glb"]) == {"sass_tui.model.files.gltf"}
 
 
 def test_a_file_that_cannot_be_written_is_named_and_nothing_is_left(tmp_path, capsys):

@@ -13,10 +13,10 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.figfile import FigureIncompleteError
-from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import rotation_matrix
-from sass_tui.model.hanim_x3d import export_hanim
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.hanim import rotation_matrix
+from sass_tui.model.files.figfile import FigureIncompleteError
+from sass_tui.model.files.hanim_x3d import export_hanim
 from sass_tui.model.names import JOINT_LIMITS, MASS_FRACTIONS, row_index
 
 # ISO/IEC 19775-1 (X3D 4.0) HAnimHumanoid field defaults the export relies on.
@@ -400,7 +400,7 @@ def test_axis_angle_round_trips_every_axis_aligned_rotation():
     """The limit frames are axis permutations; several are half turns."""
     from itertools import permutations, product
 
-    from sass_tui.model.hanim import axis_angle
+    from sass_tui.model.body.hanim import axis_angle
 
     count = 0
     for order, signs in product(permutations(range(3)), product((1, -1), repeat=3)):
@@ -516,7 +516,7 @@ def test_def_names_are_the_humanoid_name_and_the_node_name(male50):
 @pytest.mark.parametrize("gender, percentile", [("male", 50), ("female", 5)])
 def test_a_percentile_figure_stands_where_its_body_stands(tmp_path, gender, percentile):
     """Skull vertex at the stature; whole-body centre of mass 54-58 % of it."""
-    from sass_tui.model.hanim import build_humanoid
+    from sass_tui.model.body.hanim import build_humanoid
 
     figure, _, _ = _export(tmp_path, "h.x3d", gender, percentile)
     humanoid = build_humanoid(figure)
@@ -539,7 +539,7 @@ def ansur_measurement(ansur_dir):
 
 
 def test_landmark_fractions_are_the_ansur_means(ansur_measurement, ansur_dir):
-    from sass_tui.model.hanim import LANDMARK_FRACTIONS
+    from sass_tui.model.body.hanim import LANDMARK_FRACTIONS
 
     script, _ = ansur_measurement
     assert script["landmark_fractions"](ansur_dir) == LANDMARK_FRACTIONS
@@ -593,8 +593,8 @@ def test_the_segment_dimensions_the_humanoid_leaves_out_are_exactly_those_listed
     # Every girth cell changed by 10 %: the ones in NOT_IN_HUMANOID leave the
     # export as it was (the joints stand at the stature's landmarks; LOA-1
     # has no clavicle or eye), every other one changes it.
-    from sass_tui.model.hanim import NOT_IN_HUMANOID
-    from sass_tui.model.hanim_x3d import render_hanim
+    from sass_tui.model.body.hanim import NOT_IN_HUMANOID
+    from sass_tui.model.files.hanim_x3d import render_hanim
     from sass_tui.model.names import GIRTH, ROWS
 
     before = render_hanim(Figure.default())
@@ -609,7 +609,7 @@ def test_the_segment_dimensions_the_humanoid_leaves_out_are_exactly_those_listed
 
 
 def test_edits_the_humanoid_leaves_out_are_named():
-    from sass_tui.model.hanim import edits_not_in_humanoid, not_in_humanoid_note
+    from sass_tui.model.body.hanim import edits_not_in_humanoid, not_in_humanoid_note
     from sass_tui.model.names import GIRTH
 
     figure = Figure.default()

@@ -13,12 +13,12 @@ import statistics
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.db.individual import fetch_individual, find_person, person_figure
-from sass_tui.db.schema import connect
-from sass_tui.model.fig_reader import read_fig
-from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import build_humanoid, landmark_heights
-from sass_tui.model.landmarks import BIACROMIAL_FRACTION
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.individual import fetch_individual, find_person, person_figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.hanim import build_humanoid, landmark_heights
+from sass_tui.model.body.landmarks import BIACROMIAL_FRACTION
+from sass_tui.model.files.fig_reader import read_fig
 
 FILES = {"male": "ANSUR_II_MALE_Public.csv", "female": "ANSUR_II_FEMALE_Public.csv"}
 PEOPLE = 20  # of each gender, evenly spread through the file, and F 29390
@@ -218,7 +218,7 @@ def test_a_length_set_by_hand_reaches_the_fig_as_set(people):
     """A person's .fig takes the joints' limb lengths, except one typed on
     the spreadsheet: that one is written as set (and undo brings the joints'
     back, since the record of it is part of the figure's snapshot)."""
-    from sass_tui.model.figfile import girth_variables
+    from sass_tui.model.files.figfile import girth_variables
     from sass_tui.model.names import ROWS, row_index
 
     row, figure = next(iter(_humanoids(people)))

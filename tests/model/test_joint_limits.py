@@ -11,13 +11,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.model.fig_reader import parse_fig
-from sass_tui.model.figfile import joint_limit_variable, render_fig
-from sass_tui.model.figure import Figure
-from sass_tui.model.hanim_x3d import render_hanim
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.fig_reader import parse_fig
+from sass_tui.model.files.figfile import joint_limit_variable, render_fig
+from sass_tui.model.files.hanim_x3d import render_hanim
 from sass_tui.model.names import AXES, JOINT_LIMITS, ROWS
-from sass_tui.model.percentile_arrays import value_at
-from sass_tui.model.strength import StrengthError, check_angle
+from sass_tui.model.population.percentile_arrays import value_at
+from sass_tui.model.strength.strength import StrengthError, check_angle
 
 JOINTS = [row.name[: -len("_ul")] for row in ROWS[JOINT_LIMITS] if row.name.endswith("_ul")]
 PERCENTILES = st.floats(min_value=0.5, max_value=99.5, allow_nan=False)

@@ -14,12 +14,12 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.fig_reader import parse_fig
-from sass_tui.model.figfile import FigParseError, FigValueError, render_fig
-from sass_tui.model.figure import Figure, FigureError
+from sass_tui.model.body.figure import Figure, FigureError
+from sass_tui.model.files.fig_reader import parse_fig
+from sass_tui.model.files.figfile import FigParseError, FigValueError, render_fig
+from sass_tui.model.files.popfile import PopulationFileError, parse_population_text
 from sass_tui.model.names import GIRTH
-from sass_tui.model.popfile import PopulationFileError, parse_population_text
-from sass_tui.model.strength import (
+from sass_tui.model.strength.strength import (
     StrengthData,
     StrengthError,
     StrengthFileError,
@@ -145,7 +145,7 @@ def test_sass_fig_in_huge_units_is_refused(tmp_path, capsys):
 
 
 def test_json_output_refuses_a_stored_infinity(shipped_db_file, tmp_path, capsys):
-    from sass_tui.db.schema import connect
+    from sass_tui.db.engine.schema import connect
 
     db = tmp_path / "s.db"
     shutil.copy(shipped_db_file, db)

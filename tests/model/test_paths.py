@@ -7,7 +7,7 @@ import os
 import pytest
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.paths import regular_file, user_path
+from sass_tui.model.files.paths import regular_file, user_path
 
 
 def test_an_unknown_user_is_a_message_not_a_runtime_error():

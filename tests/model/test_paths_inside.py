@@ -1,4 +1,4 @@
-"""A served session's file names (model/paths.py's `inside`): whatever is
+"""A served session's file names (model/files/paths.py's `inside`): whatever is
 typed, the path given back lies inside the working directory, or the name is
 refused with a message saying why."""
 
@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.model.paths import PathError, inside, regular_file, user_path
+from sass_tui.model.files.paths import PathError, inside, regular_file, user_path
 
 
 @pytest.fixture

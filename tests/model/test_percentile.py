@@ -8,10 +8,10 @@ from _paths import DATASETS
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import GIRTH
-from sass_tui.model.percentile import Z95, PercentileError, has_spread, plausible_range
-from sass_tui.model.percentile_arrays import percentile_of, value_at
-from sass_tui.model.popfile import read_population_file
+from sass_tui.model.population.percentile import Z95, PercentileError, has_spread, plausible_range
+from sass_tui.model.population.percentile_arrays import percentile_of, value_at
 
 percentiles = st.floats(min_value=0.5, max_value=99.5, allow_nan=False)
 values = st.floats(min_value=-500, max_value=500, allow_nan=False)

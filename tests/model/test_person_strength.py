@@ -8,10 +8,10 @@ import sqlite3
 
 import pytest
 
-from sass_tui.db.individual import fetch_individual, find_person, strength_measurements
-from sass_tui.model.figure import Figure
+from sass_tui.db.people.individual import fetch_individual, find_person, strength_measurements
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import GROUPS
-from sass_tui.model.strength import (
+from sass_tui.model.strength.strength import (
     ISOKINETIC_DECAY_PER_DEG_S,
     MOTION_NAMES,
     StrengthError,

@@ -18,11 +18,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.model import datasets
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.floats import divide, median
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS, ROWS
-from sass_tui.model.percentile import Z95, cell_percentile_of, cell_value_at
-from sass_tui.model.popfile import read_population_file
+from sass_tui.model.population.percentile import Z95, cell_percentile_of, cell_value_at
 from sass_tui.model.session import Session
 
 STANDARD = NormalDist()
@@ -150,7 +150,7 @@ class Made:
 
 
 def test_a_strength_sheet_made_later_is_made_once_when_first_asked_for():
-    from sass_tui.model.strength import StrengthSheet, read_strength_file
+    from sass_tui.model.strength.strength import StrengthSheet, read_strength_file
 
     population = Figure.default()
     sheet = StrengthSheet(read_strength_file(), Figure.default("female"))
@@ -169,7 +169,7 @@ def test_a_strength_sheet_made_later_is_made_once_when_first_asked_for():
 def test_a_strength_sheet_set_before_it_is_made_stays():
     # Input Data for strength before anything asked: the file's sheet, not the
     # default made over it afterwards.
-    from sass_tui.model.strength import read_strength_file
+    from sass_tui.model.strength.strength import read_strength_file
 
     later = Made(None)
     session = Session(Figure.default(), strength_later=later)

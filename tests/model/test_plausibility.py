@@ -9,14 +9,14 @@ import pytest
 from _paths import DATASETS
 
 from sass_tui.cli import main
-from sass_tui.model.figure import Figure
-from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
-from sass_tui.model.popfile import (
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.popfile import (
     PopulationFileError,
     check_center_of_mass_rules,
     parse_population_text,
     read_population_file,
 )
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 
 GIRTH_TEXT = (DATASETS / "girth.dat").read_text()
 CMASS_TEXT = (DATASETS / "cmass.dat").read_text()

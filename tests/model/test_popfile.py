@@ -6,9 +6,13 @@ import numpy as np
 import pytest
 from _paths import DATASETS
 
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.popfile import (
+    PopulationFileError,
+    parse_population_text,
+    read_population_file,
+)
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
-from sass_tui.model.popfile import PopulationFileError, parse_population_text, read_population_file
 
 GIRTH_TEXT = (DATASETS / "girth.dat").read_text()
 

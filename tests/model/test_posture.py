@@ -1,5 +1,5 @@
-"""The figure in a posture (model/posture.py): the hand placed on the
-figure's own HAnim humanoid (model/hanim.py), and the posture file."""
+"""The figure in a posture (model/body/posture.py): the hand placed on the
+figure's own HAnim humanoid (model/body/hanim.py), and the posture file."""
 
 from __future__ import annotations
 
@@ -11,11 +11,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.model.figure import Figure
-from sass_tui.model.hanim import build_humanoid
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.hanim import build_humanoid
+from sass_tui.model.body.posture import PostureError, parse_angles, pose_figure, read_posture_file
 from sass_tui.model.names import GIRTH, row_index
-from sass_tui.model.posture import PostureError, parse_angles, pose_figure, read_posture_file
-from sass_tui.model.strength_conditions import StrengthError
+from sass_tui.model.strength.strength_conditions import StrengthError
 
 
 @pytest.fixture(scope="module")

@@ -1,4 +1,4 @@
-"""Conditional prediction (sass_tui/model/prediction.py) on ANSUR II, checked
+"""Conditional prediction (sass_tui/model/population/prediction.py) on ANSUR II, checked
 against direct least squares with numpy and against held-out people."""
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.prediction import (
+from sass_tui.model.population.prediction import (
     MAX_SD,
     FieldUnitError,
     NoDataError,
@@ -22,7 +22,7 @@ from sass_tui.model.prediction import (
     UnknownFieldError,
     split_known,
 )
-from sass_tui.model.student_t import t_quantile
+from sass_tui.model.population.student_t import t_quantile
 
 
 @pytest.fixture(scope="session")
@@ -294,7 +294,7 @@ def test_batch_with_every_measurement_known_matches_one_by_one(values, predictor
 
 
 def test_the_prediction_as_a_figure_leaves_the_population_figure_alone(predictor):
-    from sass_tui.model.figure import Figure
+    from sass_tui.model.body.figure import Figure
     from sass_tui.model.names import GIRTH, row_index
 
     prediction = predictor.predict("male", {"stature": 180.0, "mass": 85.0})

@@ -44,7 +44,7 @@ def test_the_heaviest_get_wider_intervals_than_the_lightest(accuracy, values):
     """The same stature, the top and the bottom BMI decile's mass: the
     girths' intervals widen with the body (with one width for everybody they
     were equal, and covered 86 % of the heaviest tenth)."""
-    from sass_tui.model.prediction import Predictor
+    from sass_tui.model.population.prediction import Predictor
 
     predictor = Predictor.fit(values, values.fields)
     male = np.array([g == "male" for g in values.genders])

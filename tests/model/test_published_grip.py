@@ -21,13 +21,13 @@ from hypothesis import strategies as st
 
 from sass_tui.cli import main
 from sass_tui.model.errors import SassError
-from sass_tui.model.published_grip import (
+from sass_tui.model.strength.published_grip import (
     GRIP_MOTIONS,
     grip_strength,
     parse_hfds2003_text,
     read_hfds2003,
 )
-from sass_tui.model.published_strength import PublishedStrengthError
+from sass_tui.model.strength.published_strength import PublishedStrengthError
 
 # (motion, side) -> (newtons, pounds) as printed; None: the page prints no side.
 PAGE = {

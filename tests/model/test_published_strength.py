@@ -22,8 +22,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
-from sass_tui.model.percent_capable import lower_limb_capable
-from sass_tui.model.published_strength import (
+from sass_tui.model.strength.percent_capable import lower_limb_capable
+from sass_tui.model.strength.published_strength import (
     PublishedStrengthError,
     Subject,
     age_group,
@@ -171,7 +171,7 @@ def test_a_damaged_coefficient_file_is_refused_not_crashed(tmp_path_factory, lin
 
 
 def test_fig_names_the_source_of_every_strength_section(tmp_path):
-    from sass_tui.model.fig_reader import read_fig
+    from sass_tui.model.files.fig_reader import read_fig
 
     out = tmp_path / "m.fig"
     argv = ["fig", "-o", str(out), "--mass", "75", "--stature", "175"]

@@ -1,5 +1,5 @@
 """A population file and a strength file are read by one function
-(model/paths.py `read_user_text`): a regular file only (a FIFO would block
+(model/files/paths.py `read_user_text`): a regular file only (a FIFO would block
 forever), UTF-8 or else Latin-1, and the same words when one cannot be read."""
 
 from __future__ import annotations
@@ -9,9 +9,9 @@ import os
 import pytest
 
 from sass_tui.model import datasets
+from sass_tui.model.files.popfile import PopulationFileError, read_population_file
 from sass_tui.model.names import GIRTH
-from sass_tui.model.popfile import PopulationFileError, read_population_file
-from sass_tui.model.strength import StrengthFileError, read_strength_file
+from sass_tui.model.strength.strength import StrengthFileError, read_strength_file
 
 
 def read_girth(path):

@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import pytest
 
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.errors import SassError
-from sass_tui.model.figure import Figure
 from sass_tui.model.names import GIRTH, JOINT_LIMITS, row_index
 from sass_tui.model.session import Session
-from sass_tui.model.strength import StrengthSheet
+from sass_tui.model.strength.strength import StrengthSheet
 
 ARM = row_index(GIRTH, "right_upper_arm")
 

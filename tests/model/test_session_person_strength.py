@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import GROUPS, ROWS
 from sass_tui.model.session import Session
-from sass_tui.model.strength import StrengthSheet, person_strength_data, read_strength_file
+from sass_tui.model.strength.strength import StrengthSheet, person_strength_data, read_strength_file
 
 MEASURED = [("right", "elbow_flexion", (0, 0, 0, 90, 0, 0, 0), 60.0, ("isometric", 0, 0, 0))]
 

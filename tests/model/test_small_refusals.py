@@ -11,10 +11,10 @@ import pytest
 
 from sass_tui.cli import main
 from sass_tui.model import datasets
-from sass_tui.model.fig_reader import parse_fig
-from sass_tui.model.figfile import FigParseError
+from sass_tui.model.files.fig_reader import parse_fig
+from sass_tui.model.files.figfile import FigParseError
+from sass_tui.model.files.popfile import PopulationFileError, parse_population_text
 from sass_tui.model.names import GIRTH
-from sass_tui.model.popfile import PopulationFileError, parse_population_text
 
 
 def _girth_with_first_value(value: str) -> str:

@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.fig_reader import read_fig
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.fig_reader import read_fig
 from sass_tui.model.names import JOINT_LIMITS
-from sass_tui.model.strength import (
+from sass_tui.model.strength.strength import (
     DEFAULT_NON_DOMINANT_FACTOR,
     MOTION_NAMES,
     STRENGTH_CV,

@@ -1,6 +1,6 @@
-"""Student's t quantile (model/student_t.py) against a published table, and
+"""Student's t quantile (model/population/student_t.py) against a published table, and
 the prediction intervals of a fit on few people that use it
-(model/prediction.py): a 90 % interval from 30-odd people is t(0.95, n - 1)
+(model/population/prediction.py): a 90 % interval from 30-odd people is t(0.95, n - 1)
 standard deviations wide on each side, not z(0.95)'s."""
 
 from __future__ import annotations
@@ -14,9 +14,9 @@ from ansur_csv import CsvValues, ansur_values
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.model import prediction
-from sass_tui.model.prediction import Predictor, Z
-from sass_tui.model.student_t import t_cdf, t_quantile
+from sass_tui.model.population import prediction
+from sass_tui.model.population.prediction import Predictor, Z
+from sass_tui.model.population.student_t import t_cdf, t_quantile
 
 # Upper critical values of Student's t: NIST/SEMATECH e-Handbook of
 # Statistical Methods, §1.3.6.7.2 (three decimals).

@@ -1,6 +1,6 @@
 """A sample's survey weights (sass target --weight): read with their file:line
 errors, and honoured by the calibration exactly as repeating each row as
-many times as its weight says (model/target_sample.py, model/targets.py)."""
+many times as its weight says (model/population/target_sample.py, model/population/targets.py)."""
 
 from __future__ import annotations
 
@@ -9,9 +9,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.model.sample_file import read_sample
-from sass_tui.model.target_sample import SampleError, is_survey_weight
-from sass_tui.model.targets import calibrate, outside_share, weighted_percentile
+from sass_tui.model.files.sample_file import read_sample
+from sass_tui.model.population.target_sample import SampleError, is_survey_weight
+from sass_tui.model.population.targets import calibrate, outside_share, weighted_percentile
 
 FIELDS = ["stature", "mass"]
 HEADER = "id,gender,age,stature[cm],mass[kg],WTMECPRP"

@@ -1,4 +1,4 @@
-"""The target sample's CSV reader (sass_tui/model/target_sample.py): units in
+"""The target sample's CSV reader (sass_tui/model/population/target_sample.py): units in
 the header or on the values, and every error naming file:line and column."""
 
 from __future__ import annotations
@@ -11,8 +11,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.sample_file import read_sample
-from sass_tui.model.target_sample import SampleError
+from sass_tui.model.files.sample_file import read_sample
+from sass_tui.model.population.target_sample import SampleError
 
 FIELDS = ["stature", "mass"]
 # unit spelling -> factor to the canonical unit (cm or kg), written out here

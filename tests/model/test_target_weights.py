@@ -1,4 +1,4 @@
-"""Calibration weights and weighted percentiles (sass_tui/model/targets.py),
+"""Calibration weights and weighted percentiles (sass_tui/model/population/targets.py),
 checked against direct computations with numpy."""
 
 from __future__ import annotations
@@ -8,7 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from sass_tui.model.targets import (
+from sass_tui.model.population.targets import (
     CUT_PERCENTILES,
     TargetError,
     calibrate,

@@ -10,10 +10,16 @@ from statistics import NormalDist
 import numpy as np
 import pytest
 
-from sass_tui.model.arm_force_field import arm_force
-from sass_tui.model.figure import Figure
-from sass_tui.model.posture import parse_angles, pose_figure
-from sass_tui.model.task import CURVE_POINTS, CurveGroup, Population, hand_curves, hand_load
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles, pose_figure
+from sass_tui.model.strength.arm_force_field import arm_force
+from sass_tui.model.strength.task import (
+    CURVE_POINTS,
+    CurveGroup,
+    Population,
+    hand_curves,
+    hand_load,
+)
 
 ANGLES = parse_angles(["shoulder_y=90", "elbow_y=0"])
 LOAD = hand_load("right", 50.0, (0.0, -1.0, 0.0))

@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.task import TaskError, parse_hand_load
+from sass_tui.model.strength.task import TaskError, parse_hand_load
 
 
 @pytest.mark.parametrize(

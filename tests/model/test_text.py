@@ -43,7 +43,7 @@ def test_no_control_character_survives(text):
 
 
 def test_sass_query_table_shows_a_hostile_name_inertly(shipped_db_file, tmp_path, capsys):
-    from sass_tui.db.schema import connect
+    from sass_tui.db.engine.schema import connect
 
     db = tmp_path / "s.db"
     shutil.copy(shipped_db_file, db)

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import GIRTH
 from sass_tui.model.units import (
     _ALIASES,

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from sass_tui.db import query
+from sass_tui.db.query import query
 from sass_tui.model.units import BASE_FACTORS, DISPLAY, GROUP_UNITS, UnitError, convert
 
 

@@ -1,4 +1,4 @@
-"""sass's own directories come from platformdirs (model/paths.py), which
+"""sass's own directories come from platformdirs (model/files/paths.py), which
 follows the XDG base directory variables on Linux; the database's default
 place is the data directory's sass.db."""
 
@@ -8,8 +8,8 @@ import sys
 
 import pytest
 
-from sass_tui.db.schema import default_db_path
-from sass_tui.model.paths import cache_dir, config_dir, data_dir
+from sass_tui.db.engine.schema import default_db_path
+from sass_tui.model.files.paths import cache_dir, config_dir, data_dir
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="XDG directories are Linux's")

@@ -1,4 +1,4 @@
-"""The worksheet file (model/worksheet.py): saved and opened again, the same
+"""The worksheet file (model/files/worksheet.py): saved and opened again, the same
 sheet cell for cell; a file that is not one is refused whole, naming the
 field."""
 
@@ -12,18 +12,18 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.errors import SassError
-from sass_tui.model.figure import Figure
-from sass_tui.model.names import AXES_OF, CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
-from sass_tui.model.session import Session
-from sass_tui.model.strength import StrengthSheet, read_strength_file
-from sass_tui.model.worksheet import (
+from sass_tui.model.files.worksheet import (
     WorksheetError,
     apply_strength,
     parse_worksheet,
     read_worksheet,
     worksheet_text,
 )
+from sass_tui.model.names import AXES_OF, CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
+from sass_tui.model.session import Session
+from sass_tui.model.strength.strength import StrengthSheet, read_strength_file
 
 ARM = row_index(GIRTH, "right_upper_arm")
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from textual import events
 
-from sass_tui.ui.query_screen import QueryScreen
+from sass_tui.ui.query.query_screen import QueryScreen
 from sass_tui.ui.widgets import MessageLine
 
 

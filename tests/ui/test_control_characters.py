@@ -7,9 +7,9 @@ import pytest
 from _screen import settle
 from test_query_screen import SAMPLE, build_sample_query, choose, open_query_screen
 
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import connect
-from sass_tui.ui.query_screen import ListSheet
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.query.query import run_query
+from sass_tui.ui.query.query_screen import ListSheet
 
 HOSTILE = "\x1b[2J\x1b]0;pwned\x07"
 

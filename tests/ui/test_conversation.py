@@ -12,7 +12,7 @@ from _screen import message, wait_until
 from test_query_screen import open_query_screen
 from textual.widgets import Input
 
-from sass_tui.model.fig_reader import read_fig
+from sass_tui.model.files.fig_reader import read_fig
 from sass_tui.ui.widgets import DataSheet, MessageLine
 from sass_tui.ui.widgets.message_line import CANCELLED
 

@@ -9,11 +9,11 @@ import pytest
 from _screen import paste, settle
 from textual.widgets import DataTable
 
-from sass_tui.db.default import open_database
-from sass_tui.db.family import load_family
-from sass_tui.db.values import load_values
-from sass_tui.model.fig_reader import read_fig
-from sass_tui.ui.family_screen import FamilyBuilt, FamilyScreen
+from sass_tui.db.people.default import open_database
+from sass_tui.db.people.values import load_values
+from sass_tui.db.populations.family import load_family
+from sass_tui.model.files.fig_reader import read_fig
+from sass_tui.ui.query.family_screen import FamilyBuilt, FamilyScreen
 
 
 @pytest.mark.slow

@@ -6,11 +6,11 @@ import pytest
 from _screen import wait_until
 from textual_canvas import Canvas
 
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 from sass_tui.ui.app import SassApp
-from sass_tui.ui.figure_screen import FigureScreen
-from sass_tui.ui.figure_view import FILL, OVERLAY, FigureView
+from sass_tui.ui.spreadsheet.figure_screen import FigureScreen
+from sass_tui.ui.spreadsheet.figure_view import FILL, OVERLAY, FigureView
 
 
 def percentile_figure(gender: str, p: float) -> Figure:
@@ -161,7 +161,7 @@ def test_the_panel_is_outlined_once_at_start_and_when_it_comes_back(drive, app_a
     """At start-up the figure is outlined once when the app starts,
     not again for each resize or the first screen resume; a panel hidden by a
     narrow terminal draws the edits made meanwhile when it shows again."""
-    import sass_tui.ui.figure_screen as figure_screen
+    import sass_tui.ui.spreadsheet.figure_screen as figure_screen
 
     outlined = []
 

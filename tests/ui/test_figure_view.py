@@ -8,10 +8,10 @@ import pytest
 from textual.app import App, ComposeResult
 from textual_canvas import Canvas
 
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.outline import OutlineError, figure_outline
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
-from sass_tui.model.outline import OutlineError, figure_outline
-from sass_tui.ui.figure_view import FILL, OVERLAY, FigureView
+from sass_tui.ui.spreadsheet.figure_view import FILL, OVERLAY, FigureView
 
 
 def percentile_figure(gender: str, p: float) -> Figure:

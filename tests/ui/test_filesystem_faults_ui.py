@@ -13,7 +13,7 @@ from _screen import message, settle
 from _tmpfs import fill, remount_read_only
 from textual import events
 
-from sass_tui.ui.query_screen import ListSheet, QueryScreen
+from sass_tui.ui.query.query_screen import ListSheet, QueryScreen
 
 SIZE = (120, 40)
 
@@ -117,7 +117,7 @@ def test_the_query_screen_finishes_a_default_database_build_cut_short(
     """What a disk that filled during the first build leaves: the schema and
     nobody in it.  The Query screen built the default database only when the
     file was missing, and listed nobody for good."""
-    from sass_tui.db.schema import connect
+    from sass_tui.db.engine.schema import connect
 
     path = tmp_path / "sass.db"
     connect(path, create=True).close()  # the schema, no people

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from sass_tui.ui.query_screen import QueryScreen
+from sass_tui.ui.query.query_screen import QueryScreen
 
 
 def footer_text(app) -> str:

@@ -8,10 +8,10 @@ import pytest
 from _screen import message, settle
 from textual import events
 
-from sass_tui.db.individual import fetch_individual
-from sass_tui.db.schema import connect
-from sass_tui.ui.query_builder import QueryPopup
-from sass_tui.ui.query_screen import COMPLETE, QueryScreen
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.individual import fetch_individual
+from sass_tui.ui.query.query_builder import QueryPopup
+from sass_tui.ui.query.query_screen import COMPLETE, QueryScreen
 
 pygltflib = pytest.importorskip("pygltflib")
 

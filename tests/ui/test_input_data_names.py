@@ -8,12 +8,12 @@ import pytest
 from _screen import message, settle, wait_until
 
 from sass_tui.model import datasets
+from sass_tui.model.files.paths import complete_path
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import GIRTH, JOINT_LIMITS
-from sass_tui.model.paths import complete_path
-from sass_tui.model.popfile import read_population_file
-from sass_tui.model.published_grip import GRIP_DATA_SET
-from sass_tui.model.published_strength import DATA_SET, EXAMPLE_DATA_SET
-from sass_tui.ui.spreadsheet_files import STRENGTH_DATA_SETS
+from sass_tui.model.strength.published_grip import GRIP_DATA_SET
+from sass_tui.model.strength.published_strength import DATA_SET, EXAMPLE_DATA_SET
+from sass_tui.ui.spreadsheet.spreadsheet_files import STRENGTH_DATA_SETS
 
 LARGE = (120, 40)
 

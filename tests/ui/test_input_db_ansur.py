@@ -12,9 +12,9 @@ from _screen import message, settle
 from test_query_screen import open_query_screen
 from test_work_progress import HeldWork, _answer, _state
 
-from sass_tui.db.ansur import looks_like_ansur
-from sass_tui.db.default_people import shipped_ansur_files
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.ansur import looks_like_ansur
+from sass_tui.db.people.default_people import shipped_ansur_files
 from sass_tui.ui.progress import WorkBar
 
 SIZE = (120, 40)

@@ -13,8 +13,8 @@ from _tmux import sass_in_tmux
 from textual import events
 
 from sass_tui.model.names import GIRTH
-from sass_tui.model.strength import JOINT_AXIS_LABELS, MOTIONS
-from sass_tui.ui.more_menu import MORE_CHOICES, MoreMenu
+from sass_tui.model.strength.strength import JOINT_AXIS_LABELS, MOTIONS
+from sass_tui.ui.spreadsheet.more_menu import MORE_CHOICES, MoreMenu
 from sass_tui.ui.widgets import DataSheet, GlobalPanel
 
 LARGE = (120, 40)

@@ -12,8 +12,8 @@ from textual import events
 from sass_tui.cli import main
 from sass_tui.model.names import GIRTH, STRENGTH, row_index
 from sass_tui.ui.app import run_app
-from sass_tui.ui.query_screen import QueryScreen
-from sass_tui.ui.spreadsheet import SpreadsheetScreen
+from sass_tui.ui.query.query_screen import QueryScreen
+from sass_tui.ui.spreadsheet.spreadsheet import SpreadsheetScreen
 from sass_tui.ui.widgets import DataSheet, GlobalPanel
 
 LARGE = (120, 40)
@@ -233,9 +233,9 @@ def test_the_write_worker_writes_the_figure_as_it_was_when_asked(
     off the UI thread here waits until the test has edited the figure."""
     import threading
 
-    from sass_tui.model import atomic, figfile
-    from sass_tui.model.fig_reader import read_fig
-    from sass_tui.ui import spreadsheet_files
+    from sass_tui.model.files import atomic, figfile
+    from sass_tui.model.files.fig_reader import read_fig
+    from sass_tui.ui.spreadsheet import spreadsheet_files
 
     edited, working = threading.Event(), threading.Event()
 
@@ -251,7 +251,7 @@ def test_the_write_worker_writes_the_figure_as_it_was_when_asked(
     monkeypatch.setattr(figfile, "render_fig", after_the_edit(figfile.render_fig))
     monkeypatch.setattr(figfile, "write_text_atomic", after_the_edit(figfile.write_text_atomic))
     monkeypatch.setattr(atomic, "write_text_atomic", after_the_edit(atomic.write_text_atomic))
-    # The spreadsheet's write worker (ui/spreadsheet_files.py) holds its own name for it.
+    # The spreadsheet's write worker (ui/spreadsheet/spreadsheet_files.py) holds its own name for it.
     monkeypatch.setattr(
         spreadsheet_files, "write_text_atomic", after_the_edit(atomic.write_text_atomic)
     )

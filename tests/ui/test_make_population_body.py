@@ -12,9 +12,9 @@ from _screen import message, paste, settle
 from test_query_screen import choose
 
 from sass_tui.cli import main
-from sass_tui.db.population_files import global_path
+from sass_tui.db.populations.population_files import global_path
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import GLOBAL, row_index
-from sass_tui.model.popfile import read_population_file
 from sass_tui.ui.widgets import GlobalPanel
 
 SIZE = (120, 40)

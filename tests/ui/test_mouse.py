@@ -91,7 +91,7 @@ async def wheel(pilot, selector: str, event_class) -> None:
 
 
 def test_the_wheel_pages_the_query_list(drive, app_at, db):
-    from sass_tui.ui.query_screen import ListSheet
+    from sass_tui.ui.query.query_screen import ListSheet
 
     async def scenario():
         async with app_at((120, 40), db=True) as (app, pilot):

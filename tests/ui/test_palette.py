@@ -9,11 +9,11 @@ from test_query_screen import open_query_screen
 from textual.command import CommandPalette
 from textual.widgets import DataTable
 
-from sass_tui.model.figure import Figure
-from sass_tui.ui.figure_screen import FigureScreen
-from sass_tui.ui.figure_view import FigureView
+from sass_tui.model.body.figure import Figure
 from sass_tui.ui.palette import SCREENS, HelpScreen, ScreenCommands, class_commands, key_name
-from sass_tui.ui.query_screen import QueryScreen
+from sass_tui.ui.query.query_screen import QueryScreen
+from sass_tui.ui.spreadsheet.figure_screen import FigureScreen
+from sass_tui.ui.spreadsheet.figure_view import FigureView
 
 
 def help_rows(app) -> list[tuple[str, str, str]]:
@@ -244,7 +244,7 @@ def test_a_screen_that_cannot_open_from_here_says_how_to_get_there(drive, app_at
 
 @pytest.mark.slow
 def test_on_the_query_builder_pop_up_the_palette_lists_its_own_commands(drive, app_at, db):
-    from sass_tui.ui.query_builder import QueryBuilderScreen
+    from sass_tui.ui.query.query_builder import QueryBuilderScreen
 
     async def scenario():
         async with app_at((120, 40), db=True) as (app, pilot):

@@ -6,11 +6,11 @@ from __future__ import annotations
 import pytest
 from _screen import typed_query
 
-from sass_tui.db.individual import fetch_individual, strength_measurements
-from sass_tui.db.schema import connect
-from sass_tui.model.strength import MOTION_NAMES
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.individual import fetch_individual, strength_measurements
+from sass_tui.model.strength.strength import MOTION_NAMES
 from sass_tui.model.units import convert
-from sass_tui.ui.query_screen import QueryScreen
+from sass_tui.ui.query.query_screen import QueryScreen
 
 
 async def show_first_person_of(pilot, query: str) -> None:

@@ -13,8 +13,8 @@ import pytest
 from _screen import message
 
 from sass_tui.model import datasets
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, row_index
-from sass_tui.model.popfile import read_population_file
 from sass_tui.ui.widgets import DataSheet, MessageLine
 
 LARGE = (120, 40)

@@ -6,11 +6,11 @@ import numpy as np
 import pytest
 from _screen import wait_until
 
-from sass_tui.db.default import open_database
-from sass_tui.db.predict import open_predictor
-from sass_tui.model.fig_reader import read_fig
+from sass_tui.db.people.default import open_database
+from sass_tui.db.populations.predict import open_predictor
+from sass_tui.model.files.fig_reader import read_fig
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH
-from sass_tui.model.prediction import split_known
+from sass_tui.model.population.prediction import split_known
 
 KNOWN = "stature=180 cm, mass=85 kg"
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from _screen import message, open_query_screen
 
-from sass_tui.ui.query_base import WAIT
+from sass_tui.ui.query.query_base import WAIT
 
 SIZE = (120, 40)
 

@@ -9,11 +9,11 @@ from _screen import settle
 from test_query_measurements import csv_rows
 from test_query_screen import choose
 
-from sass_tui.db.fit import fit_test
-from sass_tui.db.fit_table import format_table
-from sass_tui.db.schema import connect
-from sass_tui.ui.fit_screen import FitScreen
-from sass_tui.ui.query_screen import QueryScreen
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.populations.fit import fit_test
+from sass_tui.db.populations.fit_table import format_table
+from sass_tui.ui.query.fit_screen import FitScreen
+from sass_tui.ui.query.query_screen import QueryScreen
 
 SIZE = (120, 40)
 LIMITS = "measure.sittingheight < 95 cm AND stature > 160"  # as the menus build it

@@ -13,11 +13,11 @@ from hypothesis import given
 from hypothesis import strategies as st
 from textual import events
 
-from sass_tui.db.lists import SORT_COLUMNS
+from sass_tui.db.query.lists import SORT_COLUMNS
 from sass_tui.ui.message_log import MessageLog
-from sass_tui.ui.person_screen import PersonScreen
-from sass_tui.ui.query_list import ListSheet
-from sass_tui.ui.query_people import SortError, sort_column
+from sass_tui.ui.query.person_screen import PersonScreen
+from sass_tui.ui.query.query_list import ListSheet
+from sass_tui.ui.query.query_people import SortError, sort_column
 
 TALL = "gender = female AND stature > 175 cm"
 SIZE = (100, 37)

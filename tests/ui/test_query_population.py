@@ -10,11 +10,11 @@ import pytest
 from _screen import message, paste, settle
 from test_query_screen import choose
 
-from sass_tui.db.individual import fetch_individual
-from sass_tui.db.population_files import cmass_path
-from sass_tui.db.schema import connect
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.individual import fetch_individual
+from sass_tui.db.populations.population_files import cmass_path
+from sass_tui.model.files.popfile import read_population_file
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH
-from sass_tui.model.popfile import read_population_file
 
 SIZE = (120, 40)
 

@@ -9,13 +9,13 @@ from _screen import message, settle
 from textual import events
 from textual.widgets import OptionList
 
-from sass_tui.db.individual import fetch_individual
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import connect
-from sass_tui.model.fig_reader import read_fig
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.people.individual import fetch_individual
+from sass_tui.db.query.query import run_query
+from sass_tui.model.files.fig_reader import read_fig
 from sass_tui.model.names import GIRTH, row_index
-from sass_tui.ui.query_builder import VALUE_PROMPT, QueryBuilderScreen, QueryPopup
-from sass_tui.ui.query_screen import (
+from sass_tui.ui.query.query_builder import VALUE_PROMPT, QueryBuilderScreen, QueryPopup
+from sass_tui.ui.query.query_screen import (
     BUILD_PROMPT,
     COMPLETE,
     NO_DATA,

@@ -1,5 +1,5 @@
 """Query DB on the query screen finds its people through the column copy
-(db/accelerator.py) when the copy can answer: the same count and list as
+(db/query/accelerator.py) when the copy can answer: the same count and list as
 SQLite, driven by key presses."""
 
 from __future__ import annotations
@@ -8,11 +8,11 @@ import pytest
 from _screen import message, settle
 from test_query_screen import SIZE, choose, open_query_screen, summary
 
-from sass_tui.db import accelerator, copy_file
-from sass_tui.db.lists import QUERY_LIST
-from sass_tui.db.query import compile_query
-from sass_tui.db.schema import connect
-from sass_tui.ui.query_screen import COMPLETE
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.query import accelerator, copy_file
+from sass_tui.db.query.lists import QUERY_LIST
+from sass_tui.db.query.query import compile_query
+from sass_tui.ui.query.query_screen import COMPLETE
 
 QUERY = "gender = female AND stature > 165 cm"
 

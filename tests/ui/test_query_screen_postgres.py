@@ -10,10 +10,10 @@ import pytest
 from _screen import message, settle, wait_until
 from textual.widgets import DataTable
 
-from sass_tui.db.database import Database
-from sass_tui.db.family import load_family
-from sass_tui.ui.family_screen import FamilyScreen
-from sass_tui.ui.query_screen import COMPLETE, QueryScreen, SummaryPanel
+from sass_tui.db.engine.database import Database
+from sass_tui.db.populations.family import load_family
+from sass_tui.ui.query.family_screen import FamilyScreen
+from sass_tui.ui.query.query_screen import COMPLETE, QueryScreen, SummaryPanel
 
 QUERY = "gender = female AND stature > 175 cm"
 
@@ -81,7 +81,7 @@ def test_the_family_screen_on_postgresql(drive, initialised, app_at):
 
 @pytest.mark.slow
 def test_the_spreadsheets_predictor_on_postgresql(initialised):
-    from sass_tui.ui.people_work import open_predictor_at
+    from sass_tui.ui.query.people_work import open_predictor_at
 
     predicted = {}
     for engine, target in initialised.items():

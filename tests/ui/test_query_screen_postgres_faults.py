@@ -10,10 +10,10 @@ from __future__ import annotations
 import pytest
 from _screen import message, settle, wait_until
 
-from sass_tui.db.database import Database
+from sass_tui.db.engine.database import Database
 from sass_tui.model.served import READ_ONLY_ENV
 from sass_tui.ui.app import make_app
-from sass_tui.ui.query_screen import COMPLETE, QueryScreen
+from sass_tui.ui.query.query_screen import COMPLETE, QueryScreen
 
 QUERY = "gender = female AND stature > 175 cm"
 

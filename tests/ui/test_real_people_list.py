@@ -8,9 +8,9 @@ from __future__ import annotations
 import pytest
 from _screen import message, settle, typed_query
 
-from sass_tui.db.query import run_query
-from sass_tui.db.schema import connect
-from sass_tui.ui.query_screen import ListSheet, QueryScreen
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.query.query import run_query
+from sass_tui.ui.query.query_screen import ListSheet, QueryScreen
 from sass_tui.ui.widgets import GlobalPanel, MessageLine
 
 

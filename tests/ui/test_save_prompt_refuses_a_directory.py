@@ -1,5 +1,5 @@
 """A save prompt given the name of a directory says at once that it cannot
-write there (model/atomic.py `check_target`); it offered to overwrite the
+write there (model/files/atomic.py `check_target`); it offered to overwrite the
 directory, and refused only after the user said y."""
 
 from __future__ import annotations

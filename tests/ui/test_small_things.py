@@ -8,7 +8,7 @@ from textual import events
 
 from sass_tui.model.names import GIRTH, row_index
 from sass_tui.ui.message_log import MessageLog
-from sass_tui.ui.query_screen import ListSheet, QueryScreen
+from sass_tui.ui.query.query_screen import ListSheet, QueryScreen
 from sass_tui.ui.widgets import DataSheet
 
 LARGE = (120, 40)

@@ -8,11 +8,11 @@ from _screen import message, paste
 from textual import events
 
 from sass_tui.model import datasets
-from sass_tui.model.fig_reader import read_fig
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.fig_reader import read_fig
+from sass_tui.model.files.popfile import parse_population_text, read_population_file
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH, row_index
-from sass_tui.model.popfile import parse_population_text, read_population_file
-from sass_tui.ui.spreadsheet import FIRST_MESSAGE
+from sass_tui.ui.spreadsheet.spreadsheet import FIRST_MESSAGE
 from sass_tui.ui.widgets import DataSheet, GlobalPanel
 
 SMALL = (80, 24)

@@ -1,5 +1,5 @@
-"""Stats on the query screen (ui/stats_screen.py), driven by key presses:
-the table is db/stats.py's over the same people, computed here directly;
+"""Stats on the query screen (ui/query/stats_screen.py), driven by key presses:
+the table is db/populations/stats.py's over the same people, computed here directly;
 with the virtual NHANES population picked (`t`) it is said to be VIRTUAL."""
 
 from __future__ import annotations
@@ -7,11 +7,11 @@ from __future__ import annotations
 import pytest
 from _screen import open_query_screen, settle, wait_until
 
-from sass_tui.db.schema import connect
-from sass_tui.db.stats import EVERY_MEASURE, format_stats, stats_table
-from sass_tui.db.targets import SHIPPED
-from sass_tui.ui.stats_screen import StatsScreen
-from sass_tui.ui.target_picker import TargetPicker
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.populations.stats import EVERY_MEASURE, format_stats, stats_table
+from sass_tui.db.populations.targets import SHIPPED
+from sass_tui.ui.query.stats_screen import StatsScreen
+from sass_tui.ui.query.target_picker import TargetPicker
 
 SIZE = (130, 40)
 

@@ -9,8 +9,8 @@ from statistics import NormalDist
 import pytest
 from textual.widgets import Static
 
-from sass_tui.model.figure import Figure
-from sass_tui.ui.strength_curve_screen import StrengthCurveScreen
+from sass_tui.model.body.figure import Figure
+from sass_tui.ui.spreadsheet.strength_curve_screen import StrengthCurveScreen
 
 
 def young_man() -> Figure:
@@ -92,8 +92,8 @@ def test_the_strength_group_selects_a_data_set_by_name(app_at, drive):
 
 
 def test_a_real_persons_curve_uses_their_own_age_and_is_marked_predicted(app_at, db, drive):
-    from sass_tui.db.individual import fetch_individual
-    from sass_tui.db.schema import connect
+    from sass_tui.db.engine.schema import connect
+    from sass_tui.db.people.individual import fetch_individual
     from tests.ui.test_person_strength_page import show_first_person_of
 
     async def scenario():

@@ -8,10 +8,10 @@ import xml.etree.ElementTree as ET
 import pytest
 from _screen import message, paste
 
-from sass_tui.model.fig_reader import read_fig
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.fig_reader import read_fig
 from sass_tui.model.names import JOINT_LIMITS, STRENGTH
-from sass_tui.model.strength import (
+from sass_tui.model.strength.strength import (
     DEFAULT_NON_DOMINANT_FACTOR,
     StrengthSheet,
     percentile_factor,
@@ -19,7 +19,7 @@ from sass_tui.model.strength import (
     strength_type_factor,
     training_factor,
 )
-from sass_tui.ui.strength_page import StrengthPage
+from sass_tui.ui.spreadsheet.strength_page import StrengthPage
 from sass_tui.ui.widgets import GlobalPanel, MenuItem
 
 SIZE = (100, 37)

@@ -1,4 +1,4 @@
-"""The target picker (ui/target_picker.py) on the query screen and the Fit
+"""The target picker (ui/query/target_picker.py) on the query screen and the Fit
 Test screen, by key presses: the weighted share shown is the database's own
 weighted count and weighted fit test, and the screens say they are weighted."""
 
@@ -9,13 +9,13 @@ import pytest
 from _screen import settle
 
 from sass_tui.cli import main
-from sass_tui.db.fit import fit_test
-from sass_tui.db.fit_table import format_table
-from sass_tui.db.schema import connect
-from sass_tui.db.targets import SHIPPED, load_target, weighted_count
-from sass_tui.ui.fit_screen import FitScreen
-from sass_tui.ui.query_screen import QueryScreen
-from sass_tui.ui.target_picker import NO_TARGET, TargetPicker
+from sass_tui.db.engine.schema import connect
+from sass_tui.db.populations.fit import fit_test
+from sass_tui.db.populations.fit_table import format_table
+from sass_tui.db.populations.targets import SHIPPED, load_target, weighted_count
+from sass_tui.ui.query.fit_screen import FitScreen
+from sass_tui.ui.query.query_screen import QueryScreen
+from sass_tui.ui.query.target_picker import NO_TARGET, TargetPicker
 
 SIZE = (120, 40)
 QUERY = "stature <= 160 cm"
@@ -109,7 +109,7 @@ def test_make_population_weighted_to_a_target(app_at, drive, targeted_db, tmp_pa
     weighted empirical percentiles of the target's people (computed here from the
     stored weights and the people's statures)."""
     from sass_tui.model.names import GIRTH
-    from sass_tui.model.targets import weighted_percentile
+    from sass_tui.model.population.targets import weighted_percentile
 
     with connect(targeted_db) as conn:
         weights = load_target(conn, "civ")

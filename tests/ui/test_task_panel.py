@@ -1,4 +1,4 @@
-"""The strength page's Task panel (T, ui/task_panel.py): the posture is the
+"""The strength page's Task panel (T, ui/spreadsheet/task_panel.py): the posture is the
 strength page's row under its cursor, the loads on the hands and the people
 are cells edited on the message line, and the answer (moments, percent
 capable, the limiting joint, what no model covers) is recomputed in a worker
@@ -13,14 +13,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from textual.widgets import Static
 
-from sass_tui.model.arm_force_field import arm_force
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles, pose_figure
 from sass_tui.model.errors import SassError
-from sass_tui.model.figure import Figure
-from sass_tui.model.posture import parse_angles, pose_figure
-from sass_tui.model.published_strength import GENDER_WORDS
-from sass_tui.ui.strength_page import TASK_PANEL_LINES
-from sass_tui.ui.task_panel import TaskPanel
-from sass_tui.ui.task_words import PEOPLE, answer_lines, parse_people, strength_posture
+from sass_tui.model.strength.arm_force_field import arm_force
+from sass_tui.model.strength.published_strength import GENDER_WORDS
+from sass_tui.ui.spreadsheet.strength_page import TASK_PANEL_LINES
+from sass_tui.ui.spreadsheet.task_panel import TaskPanel
+from sass_tui.ui.spreadsheet.task_words import PEOPLE, answer_lines, parse_people, strength_posture
 from tests._virtual_task import VIRTUAL, right_hand_sums
 
 SIZE = (110, 44)

@@ -10,8 +10,8 @@ from textual.dom import DOMNode
 from textual.widgets import Input
 
 from sass_tui.ui import textual_api
-from sass_tui.ui.query_screen import QueryScreen
-from sass_tui.ui.spreadsheet import SpreadsheetScreen
+from sass_tui.ui.query.query_screen import QueryScreen
+from sass_tui.ui.spreadsheet.spreadsheet import SpreadsheetScreen
 
 MOVED = "Textual moved {what}: sass_tui/ui/textual_api.py reads it; follow the move there"
 

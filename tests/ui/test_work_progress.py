@@ -14,7 +14,7 @@ from test_query_population import query_young_women
 from test_query_screen import open_query_screen
 from textual import events
 
-from sass_tui.db.schema import connect, row_counts
+from sass_tui.db.engine.schema import connect, row_counts
 from sass_tui.ui.progress import Work, WorkBar
 
 SIZE = (120, 40)
@@ -157,7 +157,7 @@ def test_make_population_cancelled_writes_and_loads_nothing(
 
 @pytest.mark.slow
 def test_a_query_shows_people_searched_and_escape_keeps_the_lists(drive, app_at, db, monkeypatch):
-    monkeypatch.setattr("sass_tui.ui.query_screen.QUERY_BAR_AFTER", 0.0)  # show it at once
+    monkeypatch.setattr("sass_tui.ui.query.query_screen.QUERY_BAR_AFTER", 0.0)  # show it at once
     monkeypatch.setattr("sass_tui.ui.progress.MAX_UPDATES", 10**9)  # and every report
     held = HeldWork(monkeypatch, "Query")
     with connect(db) as conn:
@@ -207,7 +207,7 @@ def test_reports_are_thinned_to_the_screen_but_the_last_always_comes():
 def test_a_family_shows_its_steps_and_escape_cancels_it(drive, app_at, db, monkeypatch):
     from textual.widgets import DataTable
 
-    from sass_tui.ui.family_screen import FamilyScreen
+    from sass_tui.ui.query.family_screen import FamilyScreen
 
     monkeypatch.setattr("sass_tui.ui.progress.MAX_UPDATES", 10**9)
     held = HeldWork(monkeypatch, "Family")
@@ -236,8 +236,8 @@ def test_a_family_shows_its_steps_and_escape_cancels_it(drive, app_at, db, monke
 
 
 def test_the_fit_test_shows_its_steps_and_escape_cancels_it(drive, app_at, db, monkeypatch):
-    from sass_tui.ui.fit_screen import FitScreen
-    from sass_tui.ui.query_screen import QueryScreen
+    from sass_tui.ui.query.fit_screen import FitScreen
+    from sass_tui.ui.query.query_screen import QueryScreen
 
     monkeypatch.setattr("sass_tui.ui.progress.MAX_UPDATES", 10**9)
     held = HeldWork(monkeypatch, "Fit Test")

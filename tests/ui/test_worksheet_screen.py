@@ -12,7 +12,7 @@ from _screen import message, paste, settle, wait_until
 from _tmux import sass_in_tmux
 from test_palette import choose_in_palette
 
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import AXES_OF, CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
 from sass_tui.ui.app import SassApp
 

@@ -1,4 +1,4 @@
-"""A served lab stays up (ui/serve.py, ui/serve_session.py): a session whose
+"""A served lab stays up (ui/serve/serve.py, ui/serve/serve_session.py): a session whose
 process dies closes its WebSocket with a word and frees its slot; the
 server's death takes its sessions with it; a terminal size is clamped; every
 response carries framing, referrer and content-security headers; the page's
@@ -24,7 +24,7 @@ from _serve import Served, start_serve, wait_until
 
 aiohttp = pytest.importorskip("aiohttp")
 
-from sass_tui.ui.serve_session import MAX_COLUMNS, MAX_ROWS, clamped_size  # noqa: E402
+from sass_tui.ui.serve.serve_session import MAX_COLUMNS, MAX_ROWS, clamped_size  # noqa: E402
 
 ESCAPES = re.compile(
     r"\x1b\[[0-9;?<>=]*[ -/]*[@-~]|\x1b\][^\x07\x1b]*(?:\x07|\x1b\\)|\x1b[()][0-9A-B]"

@@ -1,5 +1,5 @@
 """`sass serve` refuses whoever lacks this run's token, and pages of other
-sites, before any session process starts (ui/serve.py); remote listening is
+sites, before any session process starts (ui/serve/serve.py); remote listening is
 a choice; a session's process is gone soon after its tab closes.
 
 Each test starts the real server on a free port and talks HTTP and

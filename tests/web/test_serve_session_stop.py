@@ -1,6 +1,6 @@
 """A served session's process that does not quit when its tab closes is
 killed: stopping the session never waits more than twice STOP_WAIT_S
-(ui/serve.py's SessionService.stop), under the 5 s the user guide promises."""
+(ui/serve/serve.py's SessionService.stop), under the 5 s the user guide promises."""
 
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ pytest.importorskip("textual_serve")
 
 from textual_serve.download_manager import DownloadManager
 
-from sass_tui.ui.serve import ServeOptions
-from sass_tui.ui.serve_session import STOP_WAIT_S, SessionService
+from sass_tui.ui.serve.serve import ServeOptions
+from sass_tui.ui.serve.serve_session import STOP_WAIT_S, SessionService
 
 # Says it is a Textual app (textual-serve waits for this line), then reads
 # nothing and ignores SIGTERM: only SIGKILL ends it.

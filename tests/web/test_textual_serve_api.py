@@ -1,5 +1,5 @@
 """The textual-serve internals sass's server overrides or reads
-(ui/serve.py's SassServer, ui/serve_session.py's SessionService) still are
+(ui/serve/serve.py's SassServer, ui/serve/serve_session.py's SessionService) still are
 where, and what, sass expects.  textual-serve calls them itself; a release
 that renames one would leave sass's override silently unused (a shell
 started again, no size clamp, no word when a session dies), so this test
@@ -16,8 +16,8 @@ pytest.importorskip("textual_serve")
 
 from textual_serve import app_service, server
 
-from sass_tui.ui.serve import SassServer
-from sass_tui.ui.serve_session import SessionService
+from sass_tui.ui.serve.serve import SassServer
+from sass_tui.ui.serve.serve_session import SessionService
 
 MOVED = "textual-serve moved {what}: sass_tui/ui/{module} overrides it; follow the move there"
 

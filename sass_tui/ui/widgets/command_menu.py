@@ -12,7 +12,7 @@ from textual.message import Message
 from textual.reactive import reactive
 from textual.widget import Widget
 
-from sass_tui.ui.commands import CommandSpec
+from sass_tui.ui.spreadsheet.commands import CommandSpec
 
 
 class MenuItem(Widget, can_focus=False):

@@ -13,9 +13,9 @@ from textual.message import Message
 from textual.reactive import reactive
 from textual.widget import Widget
 
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import AXES, GROUP_TITLES
-from sass_tui.model.percentile import has_spread
+from sass_tui.model.population.percentile import has_spread
 from sass_tui.model.units import DISPLAY, GROUP_UNITS, convert
 from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 from sass_tui.ui.widgets.formats import (

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 
-from sass_tui.model.percentile import MAX_PERCENTILE, MIN_PERCENTILE
+from sass_tui.model.population.percentile import MAX_PERCENTILE, MIN_PERCENTILE
 from sass_tui.model.text import printable
 
 DECIMALS = {"cm": 2, "in": 2, "deg": 1, "rad": 3}

@@ -11,7 +11,7 @@ from rich.text import Text
 from textual.message import Message
 from textual.widget import Widget
 
-from sass_tui.model.figure import Figure
+from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import GIRTH, STRENGTH
 from sass_tui.model.text import printable
 from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys

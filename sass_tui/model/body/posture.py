@@ -1,0 +1,217 @@
+"""The figure in a posture: its HAnim humanoid (model/body/hanim.py: the joint
+centres, segment masses and centres of mass the HAnim and glTF exports
+carry) with joints turned by the angles of the strength page, or joint
+centres read from a posture file.
+
+Angles (degrees, the strength page's and `sass strength`'s axes, docs/model.md
+"Strength"): shoulder_x (abduction +), shoulder_y (flexion +), shoulder_z
+(lateral rotation +), elbow_y (flexion +), wrist_x (radial deviation +),
+wrist_y (flexion +), wrist_z (pronation +); hip_y, knee_y (flexion +) and
+ankle_y (dorsiflexion +).  `shoulder_y=90` turns both arms, `left_shoulder_y=90`
+the left one.  Each joint turns about its joint-limit frame in the standing
+figure (hanim._LIMIT_AXES, docs/hanim.md), x then y then z applied to the
+limb: R = Rx(x) Ry(y) Rz(z), so an arm flexed forward by y is then swung
+sideways by x.  A joint's turn carries every segment below it; the pelvis and
+the trunk stay where they stand.
+
+A posture file is JSON: HAnim joint centres in metres on HAnim's axes (+x the
+body's left, +y up, +z forward), the ten of arm_force_field.POSTURE_JOINTS.
+
+No Textual import here.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import numpy.typing as npt
+
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.hanim import (
+    LOA1,
+    Humanoid,
+    build_humanoid,
+    humanoid_stature,
+    landmark_heights,
+)
+from sass_tui.model.errors import SassError
+from sass_tui.model.files.paths import PathError, read_user_text
+from sass_tui.model.names import GIRTH, row_index
+from sass_tui.model.strength.arm_force_field import ArmForceError, Posture, check_posture
+from sass_tui.model.strength.strength_conditions import check_angle
+from sass_tui.model.units import parse_quantity
+from sass_tui.model.vocabulary import JOINT_AXES
+
+LEG_AXES: tuple[str, ...] = ("hip_y", "knee_y", "ankle_y")
+POSTURE_AXES: tuple[str, ...] = (*JOINT_AXES, *LEG_AXES)
+_HANIM_JOINT = {
+    "shoulder": "shoulder",
+    "elbow": "elbow",
+    "wrist": "radiocarpal",
+    "hip": "hip",
+    "knee": "knee",
+    "ankle": "talocrural",
+}
+_SIDE_WORDS = {"left": "l", "right": "r"}
+_SEGMENT = {joint: segment for joint, segment, _ in LOA1}
+
+# (side, axis) -> degrees
+Angles = dict[tuple[str, str], float]
+
+
+class PostureError(ArmForceError):
+    """A posture the figure cannot take: an unknown joint, an angle outside
+    the joint limits, a file that is not a posture."""
+
+
+def parse_angles(items: list[str]) -> Angles:
+    """['shoulder_y=90', 'left_elbow_y=1.5 rad'] -> {('left', 'shoulder_y'): 90, ...}."""
+    out: Angles = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        key = name.strip().lower().replace(".", "_")
+        if not sep or not value.strip():
+            raise PostureError(f"{item!r}: expected JOINT=ANGLE, e.g. shoulder_y=90")
+        sides: tuple[str, ...] = ("left", "right")
+        for word in sides:
+            if key.startswith(f"{word}_"):
+                sides, key = (word,), key[len(word) + 1 :]
+                break
+        if key not in POSTURE_AXES:
+            raise PostureError(
+                f"{item!r}: unknown joint {name.strip()!r}; expected one of "
+                f"{', '.join(POSTURE_AXES)} (left_ or right_ before it for one side)"
+            )
+        try:
+            degrees = parse_quantity(value, "deg")
+        except SassError as exc:
+            raise PostureError(f"{item!r}: {exc}") from None
+        if not math.isfinite(degrees):
+            raise PostureError(f"{item!r}: the angle is not a finite number")
+        for side in sides:
+            out[(side, key)] = degrees
+    return out
+
+
+def _rotation(axis: npt.NDArray[np.float64], degrees: float) -> npt.NDArray[np.float64]:
+    """Rodrigues: the matrix turning by `degrees` about the unit `axis`."""
+    a = math.radians(degrees)
+    x, y, z = axis / np.linalg.norm(axis)
+    k = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+    turn: npt.NDArray[np.float64] = np.eye(3) + math.sin(a) * k + (1 - math.cos(a)) * (k @ k)
+    return turn
+
+
+@dataclass(frozen=True)
+class PosedBody:
+    """The humanoid in a posture: joint centres, and each segment's mass and
+    centre of mass, in metres on HAnim's axes (the pelvis where it stands)."""
+
+    centers: dict[str, npt.NDArray[np.float64]]
+    masses: dict[str, float]  # kg, by HAnim segment
+    centers_of_mass: dict[str, npt.NDArray[np.float64]]
+    points: Posture  # the Arm Force Field's ten joint centres
+    angles: Angles
+    body_mass: float  # kg
+    stature: float  # m
+
+    def below(self, joint: str) -> list[str]:
+        """The segments a joint carries (its own and every one further out)."""
+        joints = [joint]
+        for child, _, parent in LOA1:
+            if parent in joints:
+                joints.append(child)
+        return [_SEGMENT[j] for j in joints]
+
+
+def pose_figure(figure: Figure, angles: Angles | None = None) -> PosedBody:
+    """The figure's humanoid with `angles` applied, each checked against the
+    figure's joint limits (StrengthError naming the limit)."""
+    angles = dict(angles or {})
+    for (side, axis), degrees in angles.items():
+        check_angle(figure, side, axis, degrees)
+    humanoid = build_humanoid(figure)
+    local = _local_rotations(humanoid, angles)
+    world: dict[str, npt.NDArray[np.float64]] = {}
+    centers: dict[str, npt.NDArray[np.float64]] = {}
+    for joint, _, parent in LOA1:
+        standing = humanoid.centers[joint]
+        if parent is None:
+            world[joint] = local.get(joint, np.eye(3))
+            centers[joint] = standing.copy()
+            continue
+        offset = standing - humanoid.centers[parent]
+        centers[joint] = centers[parent] + world[parent] @ offset
+        world[joint] = world[parent] @ local.get(joint, np.eye(3))
+    coms = {}
+    masses = {}
+    for joint, segment, _ in LOA1:
+        part = humanoid.segments[segment]
+        masses[segment] = float(part.mass)
+        coms[segment] = centers[joint] + world[joint] @ (
+            part.center_of_mass - humanoid.centers[joint]
+        )
+    heights = landmark_heights(figure.gender, humanoid_stature(figure) / 100.0, figure.landmarks)
+    points: Posture = {}
+    girth = np.asarray(figure.output_values(GIRTH)[0], dtype=float) / 100.0
+    for side, s in _SIDE_WORDS.items():
+        wrist = f"{s}_radiocarpal"
+        palm = float(girth[row_index(GIRTH, f"{side}_hand"), 2])
+        # the third knuckle: the palm's length below the wrist, standing (SASS hand z)
+        knuckle = np.array([0.0, -palm, 0.0])
+        points[f"{s}_metacarpophalangeal_3"] = centers[wrist] + world[wrist] @ knuckle
+        for joint in ("radiocarpal", "elbow", "shoulder"):
+            points[f"{s}_{joint}"] = centers[f"{s}_{joint}"].copy()
+    points["vl5"] = centers["vl5"].copy()
+    # C7/T1 at the cervicale's height on the trunk, above L5
+    points["vc7"] = centers["vl5"] + world["vl5"] @ np.array(
+        [0.0, heights["cervicale"] - heights["vl5"], 0.0]
+    )
+    return PosedBody(
+        centers=centers,
+        masses=masses,
+        centers_of_mass=coms,
+        points=points,
+        angles=angles,
+        body_mass=float(figure.output_mass()),
+        stature=heights["vertex"],
+    )
+
+
+def _local_rotations(humanoid: Humanoid, angles: Angles) -> dict[str, npt.NDArray[np.float64]]:
+    by_joint: dict[str, dict[str, float]] = {}
+    for (side, axis), degrees in angles.items():
+        joint_word, letter = axis.split("_")
+        joint = f"{_SIDE_WORDS[side]}_{_HANIM_JOINT[joint_word]}"
+        by_joint.setdefault(joint, {})[letter] = degrees
+    out = {}
+    for joint, turns in by_joint.items():
+        limits = humanoid.limits[joint]
+        frame = limits.frame
+        # the anatomical z (lateral rotation, pronation): the frame's z, or its
+        # opposite where hanim mirrored it
+        z_axis = -frame[:, 2] if limits.mirrored_z else frame[:, 2]
+        turn = np.eye(3)
+        for letter, about in (("x", frame[:, 0]), ("y", frame[:, 1]), ("z", z_axis)):
+            if letter in turns:
+                turn = turn @ _rotation(about, turns[letter])
+        out[joint] = turn
+    return out
+
+
+def read_posture_file(path: str | Path) -> Posture:
+    """A posture file's ten joint centres (JSON object, metres, HAnim axes)."""
+    try:
+        read, text = read_user_text(path)
+    except PathError as exc:
+        raise PostureError(f"{path}: cannot read: {exc.reason}") from None
+    try:
+        raw = json.loads(text)
+    except ValueError as exc:
+        line = getattr(exc, "lineno", 1)
+        raise PostureError(f"{read}:{line}: not JSON: {exc}") from None
+    return check_posture(raw, str(read))

@@ -1,0 +1,39 @@
+"""A manikin family's files (model/population/accommodation.py builds the family): a
+.fig and an HAnim .x3d per manikin, and family.json.
+
+A module of its own because the X3D writer brings xml.etree, which the
+family's arithmetic goes without: `sass fit` builds families to count their
+coverage and writes none (the `sass fit` row of sass_tui/startup.py).
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+from pathlib import Path
+
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.atomic import write_text_atomic
+from sass_tui.model.files.figfile import write_fig
+from sass_tui.model.files.hanim_x3d import export_hanim
+from sass_tui.model.population.accommodation import Family
+
+
+def write_family(family: Family, directory: str | Path, population: Figure) -> Family:
+    """Write a .fig and an .x3d per manikin and family.json into `directory`
+    (each file atomically); returns the family with each manikin's files."""
+    out = Path(directory)
+    out.mkdir(parents=True, exist_ok=True)
+    manikins = []
+    for manikin in family.manikins:
+        figure = manikin.figure(population)
+        if family.target is not None:  # every file of a weighted family says so
+            figure.person = f"{figure.person}, weighted to target {family.target['name']}"
+        stem = f"{family.gender}_{manikin.name}"
+        write_fig(figure, out / f"{stem}.fig")
+        export_hanim(figure, out / f"{stem}.x3d")
+        manikins.append(replace(manikin, files=(f"{stem}.fig", f"{stem}.x3d")))
+    written = replace(family, manikins=tuple(manikins))
+    text = json.dumps(written.to_json(), indent=1, allow_nan=False) + "\n"
+    write_text_atomic(out / "family.json", text)
+    return written

@@ -1,0 +1,403 @@
+"""The Task panel of the strength page (`T` shows and hides it): can the
+people do it?  The posture is the strength page's: the angles of the row
+under its cursor, on the limb it shows.  Three cells, edited on the message
+line like the page's angles: the load on the left hand, on the right hand
+(a force, then the way it pulls: `60 N down`), and the people (the figure's
+gender, the figure shown, women, men, women and men, `target NAME` or
+`virtual NAME`).  Below them the answer (model/strength/task.py, docs/strength.md
+"A task"): the moments at the elbows, shoulders, hips, knees and ankles,
+the percent capable of each loaded hand (the Arm Force Field) and each hip,
+knee and ankle (Anderson et al. 2007), the limiting one, and what no
+published model covers; or, with `h`, the curve of percent capable against
+the load on a loaded hand, drawn with textual-plotext.
+
+The answer is computed in a worker on a copy of the figure whenever an input
+changes, and posted back (the TUI never blocks).  TaskCells owns the keys
+(the arrows, Enter, a number typed, `h`) and asks the screen for a prompt
+with TaskPanel.EditRequested, as the strength page does.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass
+from pathlib import Path
+
+from rich.text import Text
+from textual import work
+from textual.binding import Binding
+from textual.containers import Vertical
+from textual.message import Message
+from textual.widget import Widget
+from textual.widgets import Static
+from textual_plotext import PlotextPlot
+
+from sass_tui.db.engine.database import Database
+from sass_tui.db.populations.task_people import group_words, weighted_people
+from sass_tui.db.query.scope import VIRTUAL_PREFIX
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles, pose_figure
+from sass_tui.model.errors import SassError
+from sass_tui.model.strength.published_strength import GENDER_WORDS
+from sass_tui.model.strength.task import (
+    CurveGroup,
+    HandLoad,
+    Reference,
+    TaskAnswer,
+    TaskError,
+    assess_populations,
+    assess_task,
+    hand_curves,
+    hand_load,
+    parse_hand_load,
+)
+from sass_tui.ui.spreadsheet.strength_page import TASK_PANEL_LINES
+from sass_tui.ui.spreadsheet.task_words import (
+    PEOPLE,
+    WEIGHTED,
+    answer_lines,
+    load_words,
+    parse_people,
+    posture_words,
+    strength_posture,
+)
+from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
+
+CELLS = ("left", "right", "people")
+CELL_WIDTH = 26
+DEFAULT_LOAD = 60.0  # N on the right hand, down: a bag held out
+
+
+@dataclass(frozen=True)
+class TaskInput:
+    """What the worker gets: a copy of the figure shown and the task."""
+
+    figure: Figure
+    posture: tuple[str, ...]
+    loads: tuple[HandLoad, ...]
+    people: str
+    db_path: str | Path | None  # the database a target or virtual population is read from
+    curve_side: str = ""  # the hand whose percent capable against its load is drawn
+
+
+Curves = dict[str, list[tuple[float, float]]]
+
+
+def references(task: TaskInput) -> list[Reference]:
+    """The figures standing for the people asked for."""
+    figure = task.figure
+    if task.people == "figure":
+        return [Reference(figure.person or "figure shown", figure, None)]
+    genders = {
+        "gender": (figure.gender,),
+        "women": ("female",),
+        "men": ("male",),
+        "women and men": ("female", "male"),
+    }[task.people]
+    return [Reference(GENDER_WORDS[g], Figure.default(g), None) for g in genders]
+
+
+def assess(task: TaskInput) -> tuple[TaskAnswer, Curves]:
+    """The task for the people asked for (a target's or virtual population's
+    read from the database, the shipped one made the first time) and, when
+    asked, the curves of percent capable against the load on a hand."""
+    angles = parse_angles(list(task.posture))
+    loads = list(task.loads)
+    kind, _, name = task.people.partition(" ")
+    together = ""
+    if kind not in WEIGHTED:
+        chosen = references(task)
+        answer = assess_task(chosen, angles, loads)
+        groups = [
+            CurveGroup(r.words, pose_figure(r.figure, angles), r.figure.gender) for r in chosen
+        ]
+    else:
+        db = Database.open(task.db_path)
+        try:
+            with db.connection() as conn:
+                target, people = weighted_people(
+                    conn, f"{VIRTUAL_PREFIX}{name}" if kind == "virtual" else name
+                )
+        finally:
+            db.close()
+        figures = [(Figure.default(group.gender), group) for group in people]
+        together = group_words(target, None)
+        answer = assess_populations(figures, angles, loads, together)
+        groups = [
+            CurveGroup(group.words, pose_figure(figure, angles), group.gender, group)
+            for figure, group in figures
+        ]
+    load = next((x for x in loads if x.side == task.curve_side and x.force > 0), None)
+    return answer, {} if load is None else hand_curves(groups, load, together)
+
+
+class TaskCells(EditorKeys, Widget, can_focus=True):
+    """The panel's first two lines: the posture, and the three cells the
+    arrows move over and Enter (or a number typed) edits; `h` the curve."""
+
+    DEFAULT_CSS = """
+    TaskCells { height: 2; text-wrap: nowrap; text-overflow: clip; }
+    """
+    COMPONENT_CLASSES = {"taskpanel--cursor", "taskpanel--cursor-blur", "taskpanel--header"}
+    BINDINGS = [
+        *CURSOR_BINDINGS,
+        Binding("home", "jump(0)", show=False),
+        EDIT_BINDING,
+        Binding("h", "curve", "Hand curve", tooltip="The task's hand curve or table"),
+    ]
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.cursor = 1  # the right hand's load
+
+    @property
+    def panel(self) -> TaskPanel:
+        parent = self.parent
+        assert isinstance(parent, TaskPanel)
+        return parent
+
+    def render(self) -> Text:
+        panel = self.panel
+        style = self.get_component_rich_style
+        cursor = style("taskpanel--cursor" if self.has_focus else "taskpanel--cursor-blur")
+        head = Text(no_wrap=True, overflow="crop")
+        head.append("Task ", style("taskpanel--header"))
+        status = "computing..., " if panel.computing else ""
+        head.append(f"({status}T hides, h: curve) the strength page's posture: ")
+        head.append(posture_words(panel.posture))
+        cells = Text(no_wrap=True, overflow="crop")
+        for index, (cell, label) in enumerate(zip(CELLS, ("Left hand", "Right hand", "People"))):
+            cells.append(f"{label} ")
+            shown = f"{panel.cell_text(cell):<{CELL_WIDTH - len(label) - 2}}"
+            cells.append(shown, cursor if index == self.cursor else "")
+            cells.append(" ")
+        return Text("\n", no_wrap=True).join([head, cells])
+
+    def edit_request(self, initial: str) -> Message:
+        return TaskPanel.EditRequested(CELLS[self.cursor], initial)
+
+    def cell_at(self, x: int, y: int) -> int | None:
+        if y != 1:
+            return None
+        return min(x // CELL_WIDTH, len(CELLS) - 1)
+
+    def chosen(self) -> int:
+        return self.cursor
+
+    def choose(self, cell: object) -> None:
+        assert isinstance(cell, int)
+        self.cursor = cell
+
+    def action_move(self, rows: int, columns: int) -> None:
+        self.cursor = min(max(self.cursor + columns, 0), len(CELLS) - 1)
+        self.refresh()
+
+    def action_jump(self, cell: int) -> None:
+        self.cursor = cell
+        self.refresh()
+
+    def action_curve(self) -> None:
+        """The task's curve: percent capable against the load on a loaded hand, or the table."""
+        self.panel.next_view()
+
+
+class TaskPanel(Vertical):
+    """The task's inputs and its answer (a table, or a hand's curve), under
+    the strength page; it holds the task and runs the worker."""
+
+    DEFAULT_CSS = f"""
+    TaskPanel {{
+        height: {TASK_PANEL_LINES};
+        padding: 0 1;
+        border-top: solid $panel-lighten-2;
+    }}
+    TaskPanel #task-answer {{ height: 1fr; text-wrap: nowrap; text-overflow: clip; }}
+    TaskPanel #task-curve {{ height: 1fr; display: none; }}
+    """
+
+    class EditRequested(Message):
+        """Edit the cell `cell` (left, right, people); `initial` = typed so far."""
+
+        def __init__(self, cell: str, initial: str = "") -> None:
+            super().__init__()
+            self.cell = cell
+            self.initial = initial
+
+    class Assessed(Message):
+        def __init__(
+            self, task: TaskInput, answer: TaskAnswer | None, curves: Curves, error: str = ""
+        ) -> None:
+            super().__init__()
+            self.task, self.answer, self.curves, self.error = task, answer, curves, error
+
+    class Refused(Message):
+        """The people asked for could not be read: the message line says why."""
+
+        def __init__(self, text: str) -> None:
+            super().__init__()
+            self.text = text
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.loads: dict[str, HandLoad] = {
+            "right": hand_load("right", DEFAULT_LOAD, (0.0, -1.0, 0.0))
+        }
+        self.people = "gender"
+        self.answered_people = "gender"  # the people of the answer shown
+        self.posture: tuple[str, ...] = ()
+        self.figure: Figure | None = None
+        self.answer: TaskAnswer | None = None
+        self.error = ""
+        self.computing = False
+        self.pending: TaskInput | None = None  # the newest task handed to a worker
+        self.curve_side = ""  # "": the table; else the hand whose curve is drawn
+        self.curves: Curves = {}
+
+    def compose(self):
+        yield TaskCells(id="task-cells")
+        yield Static("", id="task-answer")
+        plot = PlotextPlot(id="task-curve")
+        plot.can_focus = False  # the keys are the cells'
+        yield plot
+
+    @property
+    def cells(self) -> TaskCells:
+        return self.query_one(TaskCells)
+
+    # --- what it shows -------------------------------------------------------
+    def show_task(self, figure: Figure, posture: tuple[str, ...]) -> None:
+        """The figure shown and the strength page's posture: a new answer in
+        a worker (on a copy of the figure, which edits change in place)."""
+        self.figure, self.posture = figure, posture
+        self.recompute()
+
+    def follow_row(self, figure: Figure, row: tuple[str, list[float]] | None) -> None:
+        """The figure shown and the strength page's row (its side and angles,
+        StrengthPage.row_angles; None: no row) as the task's posture."""
+        self.show_task(figure, () if row is None else strength_posture(*row))
+
+    def recompute(self) -> None:
+        if self.figure is None:
+            return
+        self.computing = True
+        self.redraw()
+        task = TaskInput(
+            copy.deepcopy(self.figure),
+            self.posture,
+            tuple(self.loads.values()),
+            self.people,
+            getattr(self.app, "db_path", None),
+            self.curve_side,
+        )
+        self.pending = task
+        self.run_task(task)
+
+    @work(thread=True, exclusive=True, group="task", exit_on_error=False)
+    def run_task(self, task: TaskInput) -> None:
+        try:
+            answer, curves = assess(task)
+        except (SassError, OSError) as exc:
+            self.post_message(self.Assessed(task, None, {}, str(exc)))
+            return
+        self.post_message(self.Assessed(task, answer, curves))
+
+    def on_task_panel_assessed(self, event: TaskPanel.Assessed) -> None:
+        event.stop()
+        if event.task is not self.pending:
+            return  # an older task's answer, finished after a newer one was asked for
+        self.computing = False
+        if event.error and event.task.people != self.answered_people:
+            # people that cannot be read: the answer before stays, for its people
+            self.people = self.answered_people
+            self.post_message(self.Refused(f"{event.task.people}: {event.error}"))
+            self.redraw()
+            return
+        self.answer, self.error, self.curves = event.answer, event.error, event.curves
+        if event.answer is not None:
+            self.answered_people = event.task.people
+        self.redraw()
+
+    def redraw(self) -> None:
+        """Draw the cells, the table or the curve from the task held."""
+        self.cells.refresh()
+        self._draw()
+
+    def next_view(self) -> None:
+        """The table, then the curve of each loaded hand in turn, then the table."""
+        order = ["", *(side for side in ("right", "left") if side in self.loads)]
+        self.curve_side = order[(order.index(self.curve_side) + 1) % len(order)]
+        self.recompute()
+
+    def _draw(self) -> None:
+        answer_view = self.query_one("#task-answer", Static)
+        plot = self.query_one("#task-curve", PlotextPlot)
+        curve = bool(self.curve_side) and not self.error
+        answer_view.display, plot.display = not curve, curve
+        if self.error:
+            answer_view.update(Text(self.error))
+        elif self.answer is not None:
+            answer_view.update(Text("\n".join(answer_lines(self.answer)), no_wrap=True))
+        if not curve:
+            return
+        chart = plot.plt
+        chart.clear_data()
+        chart.clear_figure()
+        for words, points in self.curves.items():
+            chart.plot(
+                [x for x, _ in points], [y for _, y in points], marker="braille", label=words
+            )
+        load = self.loads.get(self.curve_side)
+        if load is not None and self.curves:
+            chart.vline(load.force)
+        chart.ylim(0, 100)
+        chart.xlabel(f"load on the {self.curve_side} hand (N), the line at the task's")
+        chart.ylabel("percent capable (%)")
+        chart.title(f"{self.curve_side} hand: La Delfa & Potvin 2017 (Arm Force Field)")
+        plot.refresh()
+
+    # --- the inputs, set from the screen's prompts ----------------------------
+    def cell_text(self, cell: str) -> str:
+        if cell != "people":
+            return load_words(self.loads.get(cell))
+        if self.people == "gender" and self.figure is not None:
+            return f"gender: {GENDER_WORDS[self.figure.gender]}"
+        return self.people
+
+    def prompt(self, cell: str) -> str:
+        """What the message line asks for `cell`."""
+        if cell == "people":
+            return (
+                f"People the task is for ({', '.join(PEOPLE)}, target NAME or "
+                f"virtual NAME) [{self.people}]:"
+            )
+        return (
+            f"Load on the {cell} hand (N, then the way it pulls: down, up, forward, back, "
+            f"left, right or X,Y,Z; 0 = none) [{self.cell_text(cell)}]:"
+        )
+
+    def set_cell(self, cell: str, text: str) -> str:
+        """Take an answer to `prompt`; what the message line says then."""
+        if not text.strip():
+            return f"Task: the {'people' if cell == 'people' else f'{cell} hand'} unchanged."
+        if cell == "people":
+            return f"Task: for {self.set_people(text)}."
+        return f"Task: {load_words(self.set_load(cell, text))} on the {cell} hand."
+
+    def set_load(self, side: str, text: str) -> HandLoad:
+        """`60 N down`, `15 lbf up`, `0` for none; a task keeps one load at least."""
+        load = parse_hand_load(side, text)
+        loads = {**self.loads, side: load}
+        if load.force == 0:
+            del loads[side]
+        if not loads:
+            raise TaskError("a task needs a load on a hand; the loads are unchanged")
+        self.loads = loads
+        if self.curve_side and self.curve_side not in loads:
+            self.curve_side = next(iter(loads))
+        self.recompute()
+        return load
+
+    def set_people(self, text: str) -> str:
+        self.people = parse_people(text)
+        self.recompute()
+        return self.people
