@@ -34,7 +34,7 @@ MAX_FUNCTION_LEVEL_IMPORTS = 41
 # A ticket number in prose: "issue" or "issues", then a number (a "#" allowed).
 ISSUE_REFERENCE = re.compile(r"\bissues?\s+#?\d+", re.IGNORECASE)
 # Generated code is not read or written by hand.
-GENERATED = {PACKAGE / "db" / "_query_parser.py"}
+GENERATED = {PACKAGE / "db" / "query" / "_query_parser.py"}
 
 
 def python_files(folder: Path) -> list[Path]:
