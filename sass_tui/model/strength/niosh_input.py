@@ -33,7 +33,10 @@ def form_of(lengths: Iterable[str | None]) -> Form:
 
 
 def length(text: str, of: Form) -> float:
-    return parse_quantity(text, of.length_unit)
+    value = parse_quantity(text, of.length_unit)
+    if value < 0:
+        raise NioshError(f"length {quoted(text)} is negative")
+    return value
 
 
 def load(text: str, of: Form) -> float:
