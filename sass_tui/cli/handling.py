@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import json
+from types import ModuleType
 from typing import Any
 
 from sass_tui.cli.common.options import SubParsers, add_db_option, add_virtual_option, percentile
@@ -113,16 +114,21 @@ def run(args: argparse.Namespace) -> int:
     if args.target is not None or args.virtual is not None:
         if load is None:
             raise HandlingError("--target and --virtual give the share who accept --load: give it")
-        # deferred: cli.handling_people (the db package, numpy) — off sass handling (sass_tui/startup.py)
-        from sass_tui.cli.handling_people import population_share
-
-        population = population_share(args, answers, load)
+        population = _people().population_share(args, answers, load)
     if args.format == "json":
         print(json.dumps(handling_json(args.task, answers, load, population)))
     else:
         for line in handling_text(args.task, answers, load, population):
             print(line)
     return 0
+
+
+def _people() -> ModuleType:
+    """cli/handling_people.py: a posture's figures and a population's weights."""
+    # deferred: cli.handling_people (numpy, the figure, the db package) — off sass handling (sass_tui/startup.py)
+    from sass_tui.cli import handling_people
+
+    return handling_people
 
 
 def parse_load(text: str, task: str) -> float:
@@ -162,11 +168,8 @@ def task_inputs(args: argparse.Namespace) -> dict[str, Inputs]:
         typed = [o for o, v in (("--h", args.h), ("--v", args.v)) if v is not None]
         if typed:
             raise HandlingError(f"the posture gives H and V; leave out {', '.join(typed)}")
-        # deferred: cli.handling_figure (numpy, the figure's humanoid) — off sass handling (sass_tui/startup.py)
-        from sass_tui.cli.handling_figure import hands_of
-
         out = {}
-        for sex, (hand_h, hand_v) in hands_of(args, sexes).items():
+        for sex, (hand_h, hand_v) in _people().hands_of(args, sexes).items():
             out[sex] = Inputs(
                 args.task,
                 hand_v,

@@ -102,18 +102,16 @@ PUSH_FEMALE = {
         * (0.6086 - ln(f) / 11.95 - ln(f) ** 2 / 304.4)
     ),
 }
-MALE_INITIAL_DF = lambda d, f: (
-    (1.0790 - ln(d) / 9.392)
-    * (  # noqa: E731
-        0.6281 - ln(f) / 13.07 - ln(f) ** 2 / 379.5
-    )
-)
-MALE_SUSTAINED_DF = lambda d, f: (
-    (1.1035 - ln(d) / 7.170)
-    * (  # noqa: E731
-        0.4896 - ln(f) / 10.20 - ln(f) ** 2 / 403.9
-    )
-)
+
+
+def male_initial_df(d, f):
+    return (1.0790 - ln(d) / 9.392) * (0.6281 - ln(f) / 13.07 - ln(f) ** 2 / 379.5)
+
+
+def male_sustained_df(d, f):
+    return (1.1035 - ln(d) / 7.170) * (0.4896 - ln(f) / 10.20 - ln(f) ** 2 / 403.9)
+
+
 SIDEWAYS = {
     ("push", "initial", "female"): (0.214, PUSH_FEMALE["initial"]),
     ("pull", "initial", "female"): (0.234, PUSH_FEMALE["initial"]),
@@ -121,19 +119,19 @@ SIDEWAYS = {
     ("pull", "sustained", "female"): (0.298, PUSH_FEMALE["sustained"]),
     ("push", "initial", "male"): (
         0.231,
-        lambda v, d, f: 70.3 * (1.2737 - v / 1.335 + v**2 / 2.576) * MALE_INITIAL_DF(d, f),
+        lambda v, d, f: 70.3 * (1.2737 - v / 1.335 + v**2 / 2.576) * male_initial_df(d, f),
     ),
     ("push", "sustained", "male"): (
         0.267,
-        lambda v, d, f: 65.3 * (2.2940 - v / 0.3345 + v**2 / 0.6887) * MALE_SUSTAINED_DF(d, f),
+        lambda v, d, f: 65.3 * (2.2940 - v / 0.3345 + v**2 / 0.6887) * male_sustained_df(d, f),
     ),
     ("pull", "initial", "male"): (
         0.238,
-        lambda v, d, f: 69.8 * (1.7186 - v / 0.6888 + v**2 / 2.025) * MALE_INITIAL_DF(d, f),
+        lambda v, d, f: 69.8 * (1.7186 - v / 0.6888 + v**2 / 2.025) * male_initial_df(d, f),
     ),
     ("pull", "sustained", "male"): (
         0.257,
-        lambda v, d, f: 61.0 * (2.1977 - v / 0.3850 + v**2 / 0.9047) * MALE_SUSTAINED_DF(d, f),
+        lambda v, d, f: 61.0 * (2.1977 - v / 0.3850 + v**2 / 0.9047) * male_sustained_df(d, f),
     ),
     ("carry", "", "female"): (
         0.231,
