@@ -20,9 +20,7 @@ Python.
 
 from __future__ import annotations
 
-import json
 import math
-from functools import cache
 from typing import Any, NamedTuple
 
 from sass_tui.model import datasets
@@ -46,11 +44,9 @@ class HandlingError(ValueError, SassError):
         SassError.__init__(self, f"{where}: {message}" if where else message, where=where)
 
 
-@cache
 def table() -> dict[str, Any]:
     """datasets/liberty_mutual.json, read once."""
-    loaded: dict[str, Any] = json.loads(datasets.path(DATA_FILE).read_text(encoding="utf-8"))
-    return loaded
+    return datasets.json_table(DATA_FILE)
 
 
 def source() -> str:

@@ -16,8 +16,6 @@ Plain floats, no numpy: `sass niosh` starts in the time of a bare Python.
 
 from __future__ import annotations
 
-import json
-from functools import cache
 from typing import Any, NamedTuple
 
 from sass_tui.model import datasets
@@ -55,11 +53,9 @@ class Form(NamedTuple):
     low: float  # Tables 5 and 7: V below this (75 cm, 30 in) is "low"
 
 
-@cache
 def table() -> dict[str, Any]:
     """datasets/niosh_lifting.json, read once."""
-    loaded: dict[str, Any] = json.loads(datasets.path(DATA_FILE).read_text(encoding="utf-8"))
-    return loaded
+    return datasets.json_table(DATA_FILE)
 
 
 def source() -> str:
