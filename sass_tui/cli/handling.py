@@ -16,10 +16,10 @@ from __future__ import annotations
 
 import argparse
 import json
-from types import ModuleType
 from typing import Any
 
-from sass_tui.cli.common.options import SubParsers, add_db_option, add_virtual_option, percentile
+from sass_tui.cli.common.figure_hands import add_figure_hands_options, from_figure, posed_people
+from sass_tui.cli.common.options import SubParsers, add_virtual_option
 from sass_tui.model.strength.liberty_mutual import (
     HANDLES,
     SEXES,
@@ -53,13 +53,6 @@ def register(commands: SubParsers) -> None:
     )
     handling.add_argument("task", choices=TASKS, help="the kind of handling")
     handling.add_argument(
-        "angles",
-        nargs="*",
-        metavar="JOINT=ANGLE",
-        help="a posture of the figure (as `sass task`): the hands' H and V are taken from it "
-        "(for lift and lower, the posture at the middle of the lift)",
-    )
-    handling.add_argument(
         "--h", metavar="LEN", help="lift, lower: hand distance from the ankles (m without a unit)"
     )
     handling.add_argument(
@@ -83,15 +76,7 @@ def register(commands: SubParsers) -> None:
         default="handles",
         help="lift, lower: handles (default), poor (poor handles or a slippery hold) or none",
     )
-    handling.add_argument(
-        "--posture", metavar="FILE", help="a posture file (JSON joint centres, `sass task`'s)"
-    )
-    handling.add_argument(
-        "--percentile",
-        type=percentile,
-        default=50.0,
-        help="the figure's percentile for a posture (default 50)",
-    )
+    add_figure_hands_options(handling, "for lift and lower, the posture at the middle of the lift")
     who = handling.add_mutually_exclusive_group()
     who.add_argument("--gender", choices=GENDERS, help="one gender (default: women and men)")
     who.add_argument("--person", metavar="ID", help="a real person's figure for the posture")
@@ -103,7 +88,6 @@ def register(commands: SubParsers) -> None:
     )
     add_virtual_option(who)
     handling.add_argument("--format", choices=("text", "json"), default="text", help="output form")
-    add_db_option(handling)
     handling.set_defaults(func=run)
 
 
@@ -114,21 +98,13 @@ def run(args: argparse.Namespace) -> int:
     if args.target is not None or args.virtual is not None:
         if load is None:
             raise HandlingError("--target and --virtual give the share who accept --load: give it")
-        population = _people().population_share(args, answers, load)
+        population = posed_people().population_share(args, answers, load)
     if args.format == "json":
         print(json.dumps(handling_json(args.task, answers, load, population)))
     else:
         for line in handling_text(args.task, answers, load, population):
             print(line)
     return 0
-
-
-def _people() -> ModuleType:
-    """cli/handling_people.py: a posture's figures and a population's weights."""
-    # deferred: cli.handling_people (numpy, the figure, the db package) — off sass handling (sass_tui/startup.py)
-    from sass_tui.cli import handling_people
-
-    return handling_people
 
 
 def parse_load(text: str, task: str) -> float:
@@ -164,12 +140,12 @@ def task_inputs(args: argparse.Namespace) -> dict[str, Inputs]:
     except ValueError:
         raise HandlingError(f"--f {args.f!r}: expected actions per minute") from None
     sexes = [args.gender] if args.gender else list(SEXES)
-    if args.angles or args.posture is not None or args.person is not None:
+    if from_figure(args):
         typed = [o for o, v in (("--h", args.h), ("--v", args.v)) if v is not None]
         if typed:
             raise HandlingError(f"the posture gives H and V; leave out {', '.join(typed)}")
         out = {}
-        for sex, (hand_h, hand_v) in _people().hands_of(args, sexes).items():
+        for sex, (hand_h, hand_v) in posed_people().hands_of(args, sexes).items():
             out[sex] = Inputs(
                 args.task,
                 hand_v,

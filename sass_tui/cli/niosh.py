@@ -17,6 +17,7 @@ import json
 import math
 from typing import Any
 
+from sass_tui.cli.common.figure_hands import add_figure_hands_options, from_figure, posed_people
 from sass_tui.cli.common.options import SubParsers
 from sass_tui.model.files.paths import LARGEST_TEXT_FILE, read_user_text
 from sass_tui.model.strength import niosh_input
@@ -39,6 +40,8 @@ from sass_tui.model.strength.niosh import (
 )
 from sass_tui.model.strength.niosh_tasks import read_tasks
 from sass_tui.model.text import printable
+from sass_tui.model.units import convert
+from sass_tui.model.vocabulary import GENDERS
 
 LENGTH_HELP = "{what}, e.g. 40cm or 16in (inches: the manual's U.S. form, LC 51 lb; else metric)"
 ORDER = ("LC", "HM", "VM", "DM", "AM", "FM", "CM")
@@ -95,6 +98,12 @@ def register(commands: SubParsers) -> None:
         help="a multi-task job, FILE.json or FILE.csv (columns name, load, load_max, h, v, d, "
         "a, f, coupling, dest_h, dest_v, dest_a, dest_coupling): the composite lifting index",
     )
+    add_figure_hands_options(niosh, "as the origin of the lift")
+    who = niosh.add_mutually_exclusive_group()
+    who.add_argument(
+        "--gender", choices=GENDERS, help="the figure's gender for a posture (default male)"
+    )
+    who.add_argument("--person", metavar="ID", help="a real person's figure for the posture")
     niosh.add_argument("--format", choices=("text", "json"), default="text", help="output form")
     niosh.set_defaults(func=run)
 
@@ -113,16 +122,15 @@ def run(args: argparse.Namespace) -> int:
 
 def single_lift(args: argparse.Namespace) -> Lift:
     """The lift the options describe."""
-    for option, value in (("--h", args.h), ("--v", args.v), ("--f", args.f)):
-        if value is None:
-            raise NioshError(f"a lift needs {option} (or --tasks FILE)")
+    if args.f is None:
+        raise NioshError("a lift needs --f (or --tasks FILE)")
     of = niosh_input.form_of((args.h, args.v, args.d, args.dest_h, args.dest_v))
-    v = niosh_input.length(args.v, of)
+    h, v = _origin(args, of)
     dest_v = None if args.dest_v is None else niosh_input.length(args.dest_v, of)
     f = niosh_input.frequency(args.f)
     if args.lifting_minutes is not None:
         f = special_frequency(f, args.lifting_minutes)
-    origin = Point(niosh_input.length(args.h, of), v, niosh_input.angle(args.a), args.coupling)
+    origin = Point(h, v, niosh_input.angle(args.a), args.coupling)
     destination = None
     if args.dest_h is not None or dest_v is not None:
         if args.dest_h is None or dest_v is None:
@@ -136,6 +144,21 @@ def single_lift(args: argparse.Namespace) -> Lift:
     load = None if args.load is None else niosh_input.load(args.load, of)
     d = niosh_input.travel(args.d, v, dest_v, of)
     return Lift(of, origin, d, f, args.duration, load, destination)
+
+
+def _origin(args: argparse.Namespace, of: Form) -> tuple[float, float]:
+    """H and V at the origin: typed, or where the figure's posture puts the hands."""
+    if not from_figure(args):
+        for option, value in (("--h", args.h), ("--v", args.v)):
+            if value is None:
+                raise NioshError(f"a lift needs {option}, a posture or --tasks FILE")
+        return niosh_input.length(args.h, of), niosh_input.length(args.v, of)
+    typed = [o for o, value in (("--h", args.h), ("--v", args.v)) if value is not None]
+    if typed:
+        raise NioshError(f"the posture gives H and V; leave out {', '.join(typed)}")
+    hands = posed_people().hands_of(args, [args.gender or "male"])
+    h, v = next(iter(hands.values()))
+    return convert(h, "m", of.length_unit), convert(v, "m", of.length_unit)
 
 
 def number(value: float | None, digits: int = 4) -> float | None:
@@ -193,8 +216,8 @@ def lift_text(answer: LiftAnswer) -> list[str]:
         ends.append(("destination", answer.destination))
     form_words = "metric form, cm and kg" if of.name == "metric" else "U.S. form, in and lb"
     lines = [
-        f"Revised NIOSH Lifting Equation ({form_words}): H {lift.origin.h:g}, V "
-        f"{lift.origin.v:g}, D {lift.d:g} {of.length_unit}, A {lift.origin.a:g} deg, "
+        f"Revised NIOSH Lifting Equation ({form_words}): H {lift.origin.h:.4g}, V "
+        f"{lift.origin.v:.4g}, D {lift.d:.4g} {of.length_unit}, A {lift.origin.a:g} deg, "
         f"F {lift.f:g}/min, {lift.duration} duration, {lift.origin.coupling} coupling",
         f"{'':12}" + "".join(f"{name:>13}" for name, _ in ends),
     ]

@@ -72,10 +72,33 @@ def test_a_job_file_gives_the_composite_index(capsys, tmp_path):
     assert "Composite lifting index: " in capsys.readouterr().out
 
 
+def test_a_posture_file_gives_the_origin(capsys, tmp_path):
+    points = {
+        "l_metacarpophalangeal_3": [0.15, 0.80, 0.40],
+        "r_metacarpophalangeal_3": [-0.15, 0.80, 0.40],
+        "l_radiocarpal": [0.15, 0.85, 0.35],
+        "r_radiocarpal": [-0.15, 0.85, 0.35],
+        "l_elbow": [0.17, 1.0, 0.2],
+        "r_elbow": [-0.17, 1.0, 0.2],
+        "l_shoulder": [0.18, 1.4, 0.0],
+        "r_shoulder": [-0.18, 1.4, 0.0],
+        "vl5": [0.0, 1.0, 0.05],
+        "vc7": [0.0, 1.45, 0.0],
+    }
+    posture = tmp_path / "posture.json"
+    posture.write_text(json.dumps(points), encoding="utf-8")
+    answer = niosh(capsys, "--posture", str(posture), "--d", "50cm", "--f", "1")
+    # H from below L5: 0.35 m; V 0.80 m
+    assert answer["inputs"]["h"] == pytest.approx(35.0)
+    assert answer["inputs"]["v"] == pytest.approx(80.0)
+    assert answer["origin"]["multipliers"]["HM"] == pytest.approx(25 / 35, abs=1e-4)
+
+
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
         (["--v", "60cm", "--f", "1"], "a lift needs --h"),
+        (["shoulder_y=60", "--v", "60cm", "--d", "20", "--f", "1"], "leave out --v"),
         (["--h", "40cm", "--v", "60cm", "--f", "1"], "give the vertical travel distance"),
         (["--h", "40cm", "--v", "60cm", "--d", "1kg", "--f", "1"], "not a unit of length"),
         (["--h", "40cm", "--v", "60cm", "--d", "20", "--f", "x"], "expected lifts per minute"),
