@@ -1,6 +1,8 @@
 """A multi-task job file for `sass niosh --tasks`: CSV and JSON read alike,
 the form chosen by the first h with a unit, and any bad row refused with
-its file:line (hypothesis: any text gives tasks or one such message)."""
+its file:line (hypothesis: any text gives tasks or one such message); and
+the options' own readers (lengths, loads, angles, frequencies, couplings of
+`sass niosh`, loads of `sass handling`): any text, a value or a message."""
 
 from __future__ import annotations
 
@@ -10,7 +12,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from sass_tui.cli.handling import parse_load
 from sass_tui.model.errors import SassError
+from sass_tui.model.strength import niosh_input
 from sass_tui.model.strength.niosh import NioshError
 from sass_tui.model.strength.niosh_tasks import read_tasks
 
@@ -105,3 +109,24 @@ def test_any_job_file_gives_tasks_or_one_message(header, rows, as_json):
     assert of.name in ("metric", "us") and 1 <= len(tasks) <= len(rows)
     for _, lift in tasks:
         assert lift.f >= 0 and lift.d >= 0 and lift.load is not None
+
+
+@settings(max_examples=80, deadline=None)
+@given(text=st.one_of(st.text(max_size=12), CELL))
+def test_any_option_text_is_a_value_or_a_message(text):
+    for read in (
+        lambda t: niosh_input.form_of([t]),
+        lambda t: niosh_input.length(t, niosh_input.form_of([])),
+        lambda t: niosh_input.load(t, niosh_input.form_of([])),
+        niosh_input.angle,
+        niosh_input.frequency,
+        niosh_input.coupling,
+        lambda t: parse_load(t, "push"),
+        lambda t: parse_load(t, "lift"),
+    ):
+        try:
+            value = read(text)
+        except SassError as exc:
+            assert str(exc)
+        else:
+            assert value is not None
