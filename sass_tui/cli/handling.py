@@ -46,7 +46,7 @@ def register(commands: SubParsers) -> None:
         "pull, carry",
         description="The Liberty Mutual manual materials handling equations (Potvin, Ciriello, "
         "Snook, Maynard & Brogmus 2021, Ergonomics 64(8):955-970): the maximum acceptable load "
-        "of the 50th percentile woman and man, the loads 75 %% and 90 %% accept and the share "
+        "of the 50th percentile woman and man, the loads 75 % and 90 % accept and the share "
         "who accept --load, each scale factor given.  Inputs outside the ranges the paper "
         "states are refused; its cautions are said.  The hands' H and V can come from a "
         "posture of a sass figure (joint angles as `sass task` takes them, or --posture).",
