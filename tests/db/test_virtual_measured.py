@@ -226,3 +226,40 @@ def test_within_range_leaves_the_flagged_out(shipped_db_file, capsys):
     assert "left out (--within-range)" in within["population"]
     assert main(["stats", "--db", db, "--within-range", "stature"]) == 2
     assert "--within-range" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_a_users_virtual_population_keeps_its_hip(shipped_db_file, tmp_path, capsys):
+    """`sass target NAME --virtual` from a sample with a hip column (NHANES's
+    name for it, in inches here): each virtual person's buttock
+    circumference is the row's own hip, converted; a row without one has it
+    predicted; the report says what was kept."""
+    db = tmp_path / "sass.db"
+    db.write_bytes(shipped_db_file.read_bytes())
+    values, _survey = nhanes("female", "BMXHT", "BMXWT", "BMXHIP")
+    # women the soldiers can be weighted to (the calibration target is made too)
+    rows = values[values[:, 1] < 95][:300]
+    lines = ["stature[cm],mass[kg],hip_circumference[in]"]
+    lines += [f"{s:g},{m:g}," + ("" if np.isnan(h) else f"{h / 2.54:.6f}") for s, m, h in rows]
+    sample = tmp_path / "women.csv"
+    sample.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    argv = ["target", "--db", str(db), "civ", "--gender", "female", "--sample", str(sample)]
+    capsys.readouterr()
+    assert main([*argv, "--virtual", "--within-range"]) == 0
+    assert "their measured buttockcircumference" in capsys.readouterr().out
+    opened = Database.open(str(db))
+    try:
+        with opened.connection() as conn:
+            made = load_values(
+                conn, ["stature", "measure.buttockcircumference"], 'source = "virtual:civ"'
+            )
+    finally:
+        opened.close()
+    assert len(made) == len(rows)
+    order = np.argsort([int(n.rsplit(" ", 1)[1]) for n in made.names])
+    kept = made.matrix[order, 1]
+    has = ~np.isnan(rows[:, 2])
+    assert (~has).any() and has.sum() > 250
+    np.testing.assert_allclose(kept[has], rows[has, 2], atol=1e-4)
+    assert np.isfinite(kept[~has]).all()
+    np.testing.assert_allclose(made.matrix[order, 0], rows[:, 0])

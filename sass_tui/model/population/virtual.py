@@ -27,8 +27,10 @@ residual of each virtual person is drawn
   heights scattered by 4.2 cm, three times the soldiers').
 
 The known values may differ from row to row (NaN: a value the row lacks; a
-civilian survey misses a hip here and there): each pattern of known names is
-its own solve.  A known value beyond the fitted people is kept and predicted
+civilian survey misses a hip here and there): a missing one is drawn first
+from the values the row has (`_fill`: the conditional normal, its scatter
+without the spread model), then every row is predicted from every name in
+one solve, as a joint draw in two steps.  A known value beyond the fitted people is kept and predicted
 (the line goes on), unlike `sass predict`, which refuses one 10 SD out; the
 person is flagged (`outside`) and `beyond` counts them.  A `held` field
 (age: ANSUR II's soldiers are 17-58) enters the prediction clamped to the
@@ -103,21 +105,18 @@ def draw_virtual(
         raise PredictionError("every known value of a virtual person must be a number over 0")
     k_all = [index[n] for n in names]
     ranges = np.array([fitted_range(model, n) for n in names]).reshape(len(names), 2)
-    edge = np.clip(known, ranges[:, 0], ranges[:, 1])
     is_held = np.array([n in held for n in names], dtype=bool)
-    given = np.where(is_held, edge, known)
-    outside = (known != edge) & present & ~is_held
-    values = np.empty((len(known), len(model.fields)))
+    outside = ((known < ranges[:, 0]) | (known > ranges[:, 1])) & present & ~is_held
+    # A value a row lacks is drawn first, from the values it has (the
+    # regression's mean and its conditional scatter); then every row is one
+    # solve from every name (a joint draw, done in two steps).
+    filled = _fill(model, k_all, np.where(is_held, np.clip(known, *ranges.T), known), rng)
+    edge = np.clip(filled, ranges[:, 0], ranges[:, 1])
+    given = np.where(is_held, edge, filled)
     spreads: dict[tuple[str, tuple[int, ...]], tuple[FloatArray, FloatArray]] = {}
-    # one integer per row for the names it knows: one solve per pattern
-    codes = present.astype(np.int64) @ (np.int64(1) << np.arange(len(names), dtype=np.int64))
-    for code in np.unique(codes):
-        rows = np.flatnonzero(codes == code)
-        cols = np.flatnonzero(present[rows[0]])
-        k_idx = [k_all[c] for c in cols]
-        block = np.ix_(rows, cols)
-        values[rows] = _draw(model, k_idx, given[block], edge[block], rng, spreads)
-        values[np.ix_(rows, np.array(k_idx, dtype=np.intp))] = known[block]
+    values = _draw(model, k_all, given, edge, rng, spreads)
+    for c, k in enumerate(k_all):
+        values[:, k] = np.where(present[:, c], known[:, c], filled[:, c])
     constants = np.broadcast_to(
         np.array(list(model.constants.values()), dtype=float), (len(known), len(model.constants))
     )
@@ -132,6 +131,34 @@ def draw_virtual(
     )
 
 
+def _fill(
+    model: GenderModel, k_idx: list[int], known: FloatArray, rng: np.random.Generator
+) -> FloatArray:
+    """`known` (rows, k) with each NaN drawn from the values its row has:
+    the conditional normal of the model's correlation (its mean, and its
+    conditional SD, without the spread model: these are a survey's few
+    missing cells).  A row lacking every value is refused."""
+    out = known.copy()
+    present = ~np.isnan(known)
+    codes = present.astype(np.int64) @ (np.int64(1) << np.arange(len(k_idx), dtype=np.int64))
+    for code in np.unique(codes[~present.all(axis=1)]):
+        rows = np.flatnonzero(codes == code)
+        has = np.flatnonzero(present[rows[0]])
+        lacks = np.flatnonzero(~present[rows[0]])
+        if len(has) == 0:
+            raise PredictionError("a virtual person needs at least one known value")
+        h = [k_idx[c] for c in has]
+        m = [k_idx[c] for c in lacks]
+        inverse, _rank = _pinv(model.corr[np.ix_(h, h)])
+        coef = inverse @ model.corr[np.ix_(h, m)]
+        z = (known[np.ix_(rows, has)] - model.mean[h]) / model.sd[h]
+        scatter = model.corr[np.ix_(m, m)] - model.corr[np.ix_(m, h)] @ coef
+        root = np.linalg.cholesky(scatter + _DETERMINED * np.eye(len(m)))
+        drawn = z @ coef + rng.standard_normal((len(rows), len(m))) @ root.T
+        out[np.ix_(rows, lacks)] = drawn * model.sd[m] + model.mean[m]
+    return out
+
+
 def _draw(
     model: GenderModel,
     k_idx: list[int],
@@ -144,16 +171,17 @@ def _draw(
     `given` (canonical units), plus a residual drawn at the scale of `edge`
     (the known values clamped to the fitted range), capped at CAP."""
     mean_k, sd_k = model.mean[k_idx], model.sd[k_idx]
-    mean, _half = _condition(model, k_idx, (given - mean_k) / sd_k, spreads)
+    cross = model.corr[k_idx]
+    inverse, _rank = _pinv(model.corr[np.ix_(k_idx, k_idx)])
+    # the regression's mean at the given values (_condition's, without its spread)
+    mean = ((given - mean_k) / sd_k) @ (inverse @ cross * model.sd) + model.mean
     # The scatter is known only where people were measured: beyond them it is
     # held at the edge's, while the mean goes on along the line; and the
     # trend is capped at the scale most fitted people have.
     _mean, half = _condition(model, k_idx, (edge - mean_k) / sd_k, spreads)
     _fitted, own = _condition(model, k_idx, model.scores[:, k_idx].astype(np.float64), spreads)
-    half = np.minimum(half, np.quantile(own, CAP, axis=0))
+    half = np.minimum(half, np.quantile(np.ascontiguousarray(own.T), CAP, axis=1))
     # The residuals' correlation given the known fields (standardized).
-    cross = model.corr[k_idx]
-    inverse, _rank = _pinv(model.corr[np.ix_(k_idx, k_idx)])
     conditional = model.corr - cross.T @ inverse @ cross
     variance = np.diag(conditional)
     free = np.flatnonzero(variance > _DETERMINED)
