@@ -8,10 +8,8 @@ weight, not through sass.  On both engines (tests/db/conftest.py)."""
 
 from __future__ import annotations
 
-import csv
 import json
 
-import numpy as np
 import pytest
 
 from sass_tui.cli import main
@@ -20,39 +18,9 @@ from sass_tui.db.engine.dialect import mark_of
 from sass_tui.db.people.values import load_values
 from sass_tui.db.populations.targets import SHIPPED, list_targets, load_target
 from sass_tui.db.populations.virtual import drop_virtual
-from tests._paths import SHARED
+from tests._nhanes import by_cumulative_weight, nhanes
 
-NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
 SOURCE = 'source = "virtual:nhanes-2017-2020"'
-
-
-def nhanes(gender_code: str, *columns: str) -> tuple[np.ndarray, np.ndarray]:
-    """Adults 20+ of one gender with a height and a weight: the columns and WTMECPRP."""
-    lines = [
-        line
-        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
-    rows = [
-        r
-        for r in csv.DictReader(lines)
-        if r["RIAGENDR"] == gender_code
-        and r["RIDAGEYR"] != "NA"
-        and float(r["RIDAGEYR"]) >= 20
-        and r["BMXHT"] != "NA"
-        and r["BMXWT"] != "NA"
-    ]
-    values = np.array([[np.nan if r[c] == "NA" else float(r[c]) for c in columns] for r in rows])
-    return values, np.array([float(r["WTMECPRP"]) for r in rows])
-
-
-def by_cumulative_weight(values: np.ndarray, weights: np.ndarray, q: float) -> float:
-    """The smallest value whose cumulative weight share reaches q."""
-    keep = ~np.isnan(values)
-    values, weights = values[keep], weights[keep]
-    order = np.argsort(values)
-    share = np.cumsum(weights[order]) / weights.sum()
-    return float(values[order][np.searchsorted(share, q)])
 
 
 @pytest.fixture(scope="module")

@@ -17,9 +17,10 @@ from sass_tui.cli import main
 from sass_tui.db.engine.database import Database
 from sass_tui.db.people.values import load_values
 from sass_tui.db.populations.targets import load_target
+from tests._nhanes import NHANES_CSV, by_cumulative_weight
+from tests._nhanes import nhanes as nhanes_of
 from tests._paths import SHARED
 
-NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
 ANSUR = SHARED / "data" / "ansur2"
 NAME = "nhanes-2017-2020"
 SOURCE = f'source = "virtual:{NAME}"'
@@ -36,31 +37,7 @@ pytestmark = pytest.mark.skipif(
 def nhanes(gender: str, *columns: str) -> tuple[np.ndarray, np.ndarray]:
     """Adults 20+ of one gender with a height and a weight: the columns
     (NaN: not measured) and WTMECPRP, in the file's order."""
-    lines = [
-        line
-        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
-    rows = [
-        r
-        for r in csv.DictReader(lines)
-        if r["RIAGENDR"] == CODES[gender]
-        and r["RIDAGEYR"] != "NA"
-        and float(r["RIDAGEYR"]) >= 20
-        and r["BMXHT"] != "NA"
-        and r["BMXWT"] != "NA"
-    ]
-    values = np.array([[np.nan if r[c] == "NA" else float(r[c]) for c in columns] for r in rows])
-    return values, np.array([float(r["WTMECPRP"]) for r in rows])
-
-
-def quantile(values: np.ndarray, weights: np.ndarray, q: float) -> float:
-    """The smallest value whose cumulative weight share reaches q."""
-    keep = ~np.isnan(values)
-    values, weights = values[keep], weights[keep]
-    order = np.argsort(values)
-    share = np.cumsum(weights[order]) / weights.sum()
-    return float(values[order][np.searchsorted(share, q)])
+    return nhanes_of(CODES[gender], *columns)
 
 
 def weighted_sd(values: np.ndarray, weights: np.ndarray) -> float:
@@ -105,8 +82,8 @@ def test_buttock_circumference_is_nhanes_measured_hip(virtual, gender):
     mine = (columns["age"] >= 20) & (columns["age"] < 60)
     theirs = (age >= 20) & (age < 60)
     for q in (0.05, 0.50, 0.95):
-        measured = quantile(hip[theirs], survey[theirs], q)
-        kept = quantile(columns["measure.buttockcircumference"][mine], weights[mine], q)
+        measured = by_cumulative_weight(hip[theirs], survey[theirs], q)
+        kept = by_cumulative_weight(columns["measure.buttockcircumference"][mine], weights[mine], q)
         assert kept == pytest.approx(measured, abs=0.3)
 
 
@@ -137,8 +114,10 @@ def test_adults_over_60_have_nhanes_waists(virtual, gender):
     columns, weights = virtual[gender]
     (waist, age), survey = (lambda v, w: (v.T, w))(*nhanes(gender, "BMXWAIST", "RIDAGEYR"))
     mine, theirs = columns["age"] >= 60, age >= 60
-    measured = quantile(waist[theirs], survey[theirs], 0.5)
-    predicted = quantile(columns["measure.waistcircumference"][mine], weights[mine], 0.5)
+    measured = by_cumulative_weight(waist[theirs], survey[theirs], 0.5)
+    predicted = by_cumulative_weight(
+        columns["measure.waistcircumference"][mine], weights[mine], 0.5
+    )
     assert predicted == pytest.approx(measured, abs=3.0)
 
 
