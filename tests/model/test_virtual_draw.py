@@ -39,8 +39,10 @@ def model():
 
 
 def test_the_scatter_beyond_the_data_is_bounded(model):
-    """At 250 kg (twice the heaviest) the leg's residual SD stays under the
-    largest the data hold (5 cm at 120 kg); at 80 kg, inside, it is the
+    """At 250 kg (twice the heaviest) the leg's residual SD is held near the
+    heaviest people's (4.6-5 cm over the top tenth of masses), neither grown
+    nor collapsed (the log-quadratic spread, left to itself, gives 0.26 cm
+    there on these people); at 80 kg, inside, it is the
     generator's 3 cm within 15 %; every 250 kg person is flagged, nobody at
     80 kg; an age of 80 is held at the oldest (58) and flags nobody."""
     rows = 4000
@@ -58,7 +60,7 @@ def test_the_scatter_beyond_the_data_is_bounded(model):
         sd[where] = float(leg.std())
         flagged[where] = int(drawn.outside.sum())
     assert sd["inside"] == pytest.approx(3.0, rel=0.15)
-    assert sd["beyond"] <= 5.0
+    assert 4.0 <= sd["beyond"] <= 5.0
     assert flagged == {"inside": 0, "beyond": rows}
 
 
