@@ -147,6 +147,14 @@ PATHS: tuple[StartupPath, ...] = (
         " Anderson et al. 2007, no database (only --person and --target open one)",
     ),
     StartupPath(
+        "sass reach",
+        ("reach", "--gender", "female", "--point", "30,120,50"),
+        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "sqlite3", "platformdirs", "numpy.ma",
+         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+        "a figure's reach needs its humanoid and the glTF writer, no database (only"
+        " --person, --target and --virtual open one: cli/reach_people.py)",
+    ),
+    StartupPath(
         "sass query",
         ("query", "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "dataclasses", "inspect",

@@ -409,21 +409,30 @@ def loft(
     """The closed surface through the sections in order, closed by a point
     before the first and one after the last: vertices and outward
     counter-clockwise triangles."""
-    rings = _dense([s.points() for s in sections])
+    return closed_tube(_dense([s.points() for s in sections]), first_cap, last_cap)
+
+
+def closed_tube(
+    rings: list[np.ndarray], first_cap: np.ndarray, last_cap: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The closed surface through rings of equal size in order, closed by a
+    point before the first and one after the last: vertices and outward
+    counter-clockwise triangles (the body's parts, the reach envelope)."""
+    around = len(rings[0])
     vertices = np.vstack([first_cap[None, :], *rings, last_cap[None, :]])
     count = len(rings)
-    first, last = 0, 1 + count * AROUND
-    k = np.arange(AROUND)
-    k1 = (k + 1) % AROUND
-    top = 1 + (count - 1) * AROUND
+    first, last = 0, 1 + count * around
+    k = np.arange(around)
+    k1 = (k + 1) % around
+    top = 1 + (count - 1) * around
     caps = [
-        np.column_stack([np.full(AROUND, first), 1 + k1, 1 + k]),
-        np.column_stack([np.full(AROUND, last), top + k, top + k1]),
+        np.column_stack([np.full(around, first), 1 + k1, 1 + k]),
+        np.column_stack([np.full(around, last), top + k, top + k1]),
     ]
-    # ring r's point k is 1 + r * AROUND + k; each quad between rings a, b:
+    # ring r's point k is 1 + r * around + k; each quad between rings a, b:
     # (a+k, a+k1, b+k1) and (a+k, b+k1, b+k)
-    a = 1 + np.arange(count - 1)[:, None] * AROUND
-    b = a + AROUND
+    a = 1 + np.arange(count - 1)[:, None] * around
+    b = a + around
     quads = [
         np.stack([a + k, a + k1, b + k1], axis=-1).reshape(-1, 3),
         np.stack([a + k, b + k1, b + k], axis=-1).reshape(-1, 3),
