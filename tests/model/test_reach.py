@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.model.body.figure import Figure
@@ -66,6 +66,7 @@ def test_reach_from_the_other_measurements_has_a_small_error(ansur_dir):
 LENGTHS = {"cm": 1.0, "mm": 0.1, "m": 100.0, "in": 2.54}
 
 
+@settings(max_examples=60)
 @given(
     st.lists(st.floats(-500, 500, allow_nan=False), min_size=3, max_size=3),
     st.sampled_from(sorted(LENGTHS)),

@@ -538,3 +538,46 @@ def share_reaching(
         reached |= np.linalg.norm(offsets, axis=1) <= env.radius_towards(offsets)
     w = w[known]
     return float(w[reached].sum()), float(w.sum())
+
+
+# --- on screen ----------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ReachDrawing:
+    """One hand's envelope seen from the side (z forward, y up) and from
+    above (x the body's left, z forward), cm, and a point with its verdict."""
+
+    side: np.ndarray  # (k, 2)
+    top: np.ndarray  # (k, 2)
+    shoulder: np.ndarray  # (3,) cm
+    point: np.ndarray | None = None  # (3,) cm
+    reached: bool | None = None
+
+
+def silhouette(env: Envelope, axes: tuple[int, int], bins: int = 90) -> np.ndarray:
+    """The envelope's outline projected on two axes (cm, (k, 2)): in each of
+    `bins` directions about the shoulder, the farthest sample."""
+    centre = env.centre[list(axes)]
+    d = env.samples[:, list(axes)] - centre
+    angle = np.arctan2(d[:, 1], d[:, 0])
+    index = ((angle + math.pi) / (2 * math.pi) * bins).astype(np.int64) % bins
+    far = np.zeros(bins)
+    np.maximum.at(far, index, np.hypot(d[:, 0], d[:, 1]))
+    middle = -math.pi + (np.arange(bins) + 0.5) * 2 * math.pi / bins
+    keep = far > 0
+    points = centre + far[keep, None] * np.column_stack([np.cos(middle), np.sin(middle)])[keep]
+    out: np.ndarray = points * 100.0
+    return out
+
+
+def reach_drawing(env: Envelope, point: np.ndarray | None = None) -> ReachDrawing:
+    """What the figure view draws of an envelope (and a point, m)."""
+    verdict = None if point is None else point_verdict(env, point).reached
+    return ReachDrawing(
+        side=silhouette(env, (2, 1)),
+        top=silhouette(env, (0, 2)),
+        shoulder=env.centre * 100.0,
+        point=None if point is None else point * 100.0,
+        reached=verdict,
+    )
