@@ -32,6 +32,7 @@ from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.hanim import build_humanoid
 from sass_tui.model.body.reach import (
     GRIP_SHARE,
+    LINKAGE_MEASURES,
     REACH_MEASURES,
     SITTING_HEIGHT_FRACTION,
     TRAVEL,
@@ -44,20 +45,7 @@ from sass_tui.model.body.reach import (
 
 ROOT = Path(__file__).resolve().parents[1]
 FILES = {"male": "ANSUR_II_MALE_Public.csv", "female": "ANSUR_II_FEMALE_Public.csv"}
-INPUTS = (
-    "subjectid",
-    "stature",
-    "sittingheight",
-    "acromialheight",
-    "biacromialbreadth",
-    "acromionradialelength",
-    "wristheight",
-    "handlength",
-    "forearmhandlength",
-    "forearmcenterofgriplength",
-    "chestdepth",
-    "iliocristaleheight",
-)
+INPUTS = ("subjectid", *LINKAGE_MEASURES)
 
 
 def read(folder: Path, gender: str) -> dict[str, np.ndarray]:

@@ -10,12 +10,12 @@ from __future__ import annotations
 import csv
 import json
 import shutil
-import subprocess
 from pathlib import Path
 
 import numpy as np
 import pytest
-from _paths import ROOT
+from _gltf_files import accessor as glb_accessor
+from _gltf_files import khronos_validator
 
 from sass_tui.cli import main
 from sass_tui.model.body.body_measures import figure_measures
@@ -28,8 +28,6 @@ from sass_tui.model.body.reach import (
 
 pygltflib = pytest.importorskip("pygltflib")
 
-VALIDATE = ROOT / "node" / "validate.js"
-VALIDATOR = ROOT / "node" / "node_modules" / "gltf-validator"
 # The brief's tolerance for a person's measured thumb-tip reach.
 MEASURED_REACH = 1.5  # cm
 
@@ -70,18 +68,7 @@ def test_a_person_s_measured_reach_is_reported_within_1_5_cm(ansur_dir, shipped_
 
 @pytest.fixture(scope="module")
 def validator():
-    node = shutil.which("node")
-    if node is None or not VALIDATOR.is_dir():
-        pytest.skip("the glTF-Validator needs Debian's nodejs and `npm ci --prefix node`")
-
-    def validate(files: list[Path]) -> list[dict]:
-        done = subprocess.run(
-            [node, str(VALIDATE), *map(str, files)], capture_output=True, text=True, timeout=300
-        )
-        assert done.returncode in (0, 1), done.stderr
-        return [json.loads(line) for line in done.stdout.splitlines()]
-
-    return validate
+    return khronos_validator()
 
 
 def _meshes(path: Path) -> dict[str, tuple[np.ndarray, np.ndarray]]:
@@ -89,13 +76,7 @@ def _meshes(path: Path) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     blob = gltf.binary_blob()
 
     def accessor(index: int) -> np.ndarray:
-        acc = gltf.accessors[index]
-        view = gltf.bufferViews[acc.bufferView]
-        dtype = {5126: "<f4", 5123: "<u2", 5125: "<u4"}[acc.componentType]
-        width = {"SCALAR": 1, "VEC3": 3}[acc.type]
-        start = (view.byteOffset or 0) + (acc.byteOffset or 0)
-        data = np.frombuffer(blob, dtype, acc.count * width, start)
-        return data.reshape(acc.count, width) if width > 1 else data
+        return glb_accessor(gltf, blob, index)
 
     out = {}
     for mesh in gltf.meshes:

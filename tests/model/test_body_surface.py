@@ -13,6 +13,7 @@ import shutil
 
 import numpy as np
 import pytest
+from _gltf_files import accessor as glb_accessor
 
 from sass_tui.cli import main
 
@@ -56,13 +57,7 @@ def _read(path):
     primitive = gltf.meshes[0].primitives[0]
 
     def accessor(index: int) -> np.ndarray:
-        acc = gltf.accessors[index]
-        view = gltf.bufferViews[acc.bufferView]
-        dtype = {5126: "<f4", 5123: "<u2", 5125: "<u4"}[acc.componentType]
-        width = {"SCALAR": 1, "VEC3": 3}[acc.type]
-        start = (view.byteOffset or 0) + (acc.byteOffset or 0)
-        data = np.frombuffer(blob, dtype, acc.count * width, start)
-        return data.reshape(acc.count, width) if width > 1 else data
+        return glb_accessor(gltf, blob, index)
 
     positions = accessor(primitive.attributes.POSITION).astype(float)
     triangles = accessor(primitive.indices).astype(np.int64).reshape(-1, 3)

@@ -63,6 +63,20 @@ if TYPE_CHECKING:
     from sass_tui.model.body.hanim import Humanoid
 
 REACH_MEASURES: tuple[str, ...] = ("thumbtipreach", "overheadfingertipreachsitting", "span")
+# The ANSUR II measurements linkage_from_measures builds an arm from (no reach among them).
+LINKAGE_MEASURES: tuple[str, ...] = (
+    "stature",
+    "sittingheight",
+    "acromialheight",
+    "biacromialbreadth",
+    "acromionradialelength",
+    "wristheight",
+    "handlength",
+    "forearmhandlength",
+    "forearmcenterofgriplength",
+    "chestdepth",
+    "iliocristaleheight",
+)
 HAND_POINTS: tuple[str, ...] = ("fingertip", "grip", "thumbtip")
 SIDES: tuple[str, ...] = ("right", "left")
 
@@ -206,7 +220,7 @@ def _hand_points(gender: str, hand: np.ndarray, grip: np.ndarray | None) -> dict
 def linkage_from_measures(
     gender: str, values: Mapping[str, np.ndarray], limits: ArmLimits, side: str = "right"
 ) -> Linkage:
-    """The arms of n people from their ANSUR II measurements (cm arrays):
+    """The arms of n people from their ANSUR II measurements (LINKAGE_MEASURES, cm arrays):
     the same placements as the humanoid's (model/body/landmarks.py), with
     no reach measure among them (scripts/reach_validation.py)."""
 
