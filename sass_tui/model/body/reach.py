@@ -454,8 +454,22 @@ def envelope(
     polar, around = _bins(offsets)
     radius = np.full((POLAR_BINS, AROUND_BINS), -1.0)
     np.maximum.at(radius, (polar, around), np.linalg.norm(offsets, axis=1))
-    radius = _fill(radius)
+    radius = _near_the_poles(_fill(radius))
     return Envelope(centre, radius, samples, linkage.side, point, seated, trunk)
+
+
+def _near_the_poles(radius: np.ndarray) -> np.ndarray:
+    """Each bin the farthest of the bins of its ring within about one bin's
+    width of arc (5 degrees): near the poles a ring's bins are narrow, and a
+    sample falls in one and not its neighbour."""
+    out = radius.copy()
+    for row in range(POLAR_BINS):
+        polar = (row + 0.5) * math.pi / POLAR_BINS
+        half = min(AROUND_BINS // 2, math.ceil(0.5 / math.sin(polar))) - 1
+        if half > 0:
+            ring = radius[row]
+            out[row] = np.max([np.roll(ring, k) for k in range(-half, half + 1)], axis=0)
+    return out
 
 
 def _fill(radius: np.ndarray) -> np.ndarray:
