@@ -1,6 +1,8 @@
 """`sass reach --point P --target/--virtual NAME`: the share of a target's (or
-virtual population's) people whose hand reaches the point, each person the
-gender's figure scaled to their own stature (model/body/reach.py), weighted.
+virtual population's) people whose hand reaches the point, each with their
+own shoulder and arm (their own measurements: a virtual person's are
+predicted from their stature and mass) and the gender's figure's joint
+ranges (model/body/reach.py own_arms_reaching), weighted.
 
 A module of its own because it brings the db package, which `sass reach`
 for a figure goes without."""
@@ -14,10 +16,19 @@ import numpy as np
 
 from sass_tui.cli.common.database_access import open_db
 from sass_tui.cli.common.options import weighting_name
-from sass_tui.db.populations.task_people import group_words, weighted_people
+from sass_tui.db.populations.task_people import group_words, weighted_values
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.hanim import humanoid_stature
-from sass_tui.model.body.reach import SIDES, envelope, linkage_of, share_reaching
+from sass_tui.model.body.reach import (
+    LINKAGE_MEASURES,
+    SIDES,
+    envelope,
+    linkage_from_measures,
+    linkage_of,
+    own_arms_reaching,
+)
+
+# The query language's names of the measurements an arm is built from.
+FIELDS = ["stature", *(f"measure.{name}" for name in LINKAGE_MEASURES if name != "stature")]
 
 
 def population_shares(args: argparse.Namespace, point: np.ndarray) -> dict[str, Any]:
@@ -26,23 +37,27 @@ def population_shares(args: argparse.Namespace, point: np.ndarray) -> dict[str, 
     assert name is not None  # --target or --virtual was given
     conn = open_db(args)
     try:
-        target, people = weighted_people(conn, name)
+        target, groups = weighted_values(conn, name, FIELDS)
     finally:
         conn.close()
     sides = SIDES if args.hand == "both" else (args.hand,)
     shares: dict[str, float] = {}
     total_reached = total = 0.0
-    for group in people:
-        figure = Figure.default(group.gender)
-        envs = [
-            envelope(linkage_of(figure, side), args.hand_point, args.seated, args.trunk)
-            for side in sides
-        ]
-        stature = humanoid_stature(figure) / 100.0
-        reached, weight = share_reaching(envs, stature, group.statures, group.weights, point)
-        shares[group.words] = round(100.0 * reached / weight, 1)
-        total_reached, total = total_reached + reached, total + weight
-    if len(people) > 1:
+    left_out = 0
+    for gender, values, weights in groups:
+        figure = Figure.default(gender)
+        measures = dict(zip(LINKAGE_MEASURES, values.matrix.T, strict=True))
+        figure_arms, arms = [], []
+        for side in sides:
+            linkage = linkage_of(figure, side)
+            figure_arms.append(
+                (envelope(linkage, args.hand_point, args.seated, args.trunk), linkage)
+            )
+            arms.append(linkage_from_measures(gender, measures, linkage.limits, side))
+        reached, weight, missing = own_arms_reaching(figure_arms, arms, weights, point)
+        shares[group_words(target, gender)] = round(100.0 * reached / weight, 1)
+        total_reached, total, left_out = total_reached + reached, total + weight, left_out + missing
+    if len(groups) > 1:
         shares[group_words(target, None)] = round(100.0 * total_reached / total, 1)
     return {
         "value": [round(float(v) * 100, 1) for v in point],
@@ -53,5 +68,6 @@ def population_shares(args: argparse.Namespace, point: np.ndarray) -> dict[str, 
         "handPoint": args.hand_point,
         "hands": list(sides),
         "shares": shares,
+        "leftOut": left_out,
         "note": target.words(),
     }

@@ -168,8 +168,9 @@ def test_a_point_is_reached_or_missed_by_how_much(capsys):
 
 @pytest.mark.slow
 def test_a_population_s_share_reaching_a_point(shipped_db_file, tmp_path, capsys):
-    """The virtual civilians: nobody reaches 3 m ahead, everyone a point by
-    the shoulder; farther ahead fewer; men before women."""
+    """The virtual civilians, each with their own shoulder and arm: nobody
+    reaches 3 m ahead, everyone a point by the shoulder; farther ahead
+    fewer; men before women."""
     db = tmp_path / "sass.db"
     shutil.copy(shipped_db_file, db)
     shares = []
@@ -177,6 +178,7 @@ def test_a_population_s_share_reaching_a_point(shipped_db_file, tmp_path, capsys
         answer = _json(
             capsys, "--db", str(db), "--virtual", "nhanes-2017-2020", f"--point=-18,125,{ahead}"
         )
+        assert answer["point"]["leftOut"] == 0
         shares.append(answer["point"]["shares"])
     assert all(share == 100.0 for share in shares[0].values())
     assert all(share == 0.0 for share in shares[-1].values())

@@ -568,6 +568,39 @@ def share_reaching(
     return float(w[reached].sum()), float(w.sum())
 
 
+def own_arms_reaching(
+    figure_arms: list[tuple[Envelope, Linkage]],
+    people: list[Linkage],
+    weights: np.ndarray,
+    point: np.ndarray,
+) -> tuple[float, float, int]:
+    """(the weight of the people who reach `point` (m) with any hand, the
+    weight of everyone counted, how many were left out for want of a
+    measurement): each person with their own shoulder and their own arm's
+    length, the figure's joint ranges -- the figure's envelope about the
+    person's shoulder, its radius scaled by their arm's length over the
+    figure's.  `people[k]` is the side of `figure_arms[k]`."""
+    w = np.asarray(weights, dtype=float)
+    reached = np.zeros(len(w), dtype=bool)
+    known = np.isfinite(w)
+    for (env, figure), arm in zip(figure_arms, people, strict=True):
+        shoulder = arm.shoulder.copy()
+        if env.seated:
+            shoulder[:, 1] = arm.sitting_shoulder
+        ratio = arm.reach_length(env.point) / float(figure.reach_length(env.point)[0])
+        offsets = point[None, :] - shoulder
+        ok = np.isfinite(offsets).all(axis=1) & np.isfinite(ratio) & (ratio > 0)
+        known &= ok
+        inside = np.zeros(len(w), dtype=bool)
+        inside[ok] = np.linalg.norm(offsets[ok], axis=1) <= (
+            env.radius_towards(offsets[ok]) * ratio[ok]
+        )
+        reached |= inside
+    if not known.any() or float(w[known].sum()) <= 0:
+        raise ReachError("no person with the arm's measurements and a weight to count")
+    return float(w[known & reached].sum()), float(w[known].sum()), int((~known).sum())
+
+
 # --- on screen ----------------------------------------------------------------------
 
 
