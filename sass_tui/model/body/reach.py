@@ -544,30 +544,6 @@ def point_verdict(env: Envelope, point: np.ndarray) -> PointVerdict:
     return PointVerdict(point, reached, miss)
 
 
-def share_reaching(
-    envelopes: list[Envelope],
-    stature: float,
-    statures: np.ndarray,
-    weights: np.ndarray,
-    point: np.ndarray,
-) -> tuple[float, float]:
-    """(the weight of the people who reach `point` (m) with any of the
-    envelopes' hands, the weight of everyone counted): each person is the
-    envelopes' figure (`stature` m tall) scaled to their own stature about
-    the frame's origin."""
-    scale = np.asarray(statures, dtype=float) / stature
-    w = np.asarray(weights, dtype=float)
-    known = np.isfinite(scale) & (scale > 0) & np.isfinite(w)
-    if not known.any() or float(w[known].sum()) <= 0:
-        raise ReachError("no person with a stature and a weight to count")
-    reached = np.zeros(int(known.sum()), dtype=bool)
-    for env in envelopes:
-        offsets = point[None, :] / scale[known, None] - env.centre
-        reached |= np.linalg.norm(offsets, axis=1) <= env.radius_towards(offsets)
-    w = w[known]
-    return float(w[reached].sum()), float(w.sum())
-
-
 def own_arms_reaching(
     figure_arms: list[tuple[Envelope, Linkage]],
     people: list[Linkage],
