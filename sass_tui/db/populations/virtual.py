@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import numpy.typing as npt
 
-from sass_tui.db.engine import database
+from sass_tui.db.engine import staging
 from sass_tui.db.engine.dialect import dialect_of, mark_of, writing
 from sass_tui.db.engine.schema import PERSON_TABLES, SQLITE_ONLY_TABLES
 from sass_tui.db.people.ansur import derived_girth
@@ -203,14 +203,14 @@ def store_virtual_in(conn: sqlite3.Connection, population: VirtualPopulation) ->
 
 def store_virtual(conn: sqlite3.Connection, population: VirtualPopulation) -> None:
     """Store a virtual population in its own transaction, on either engine
-    (db/engine/database.py's store_people decides how: on PostgreSQL through a
+    (db/engine/staging.py's store_people decides how: on PostgreSQL through a
     staging file, copied in one transaction)."""
 
     def load(into: sqlite3.Connection) -> None:
         with writing(into):
             store_virtual_in(into, population)
 
-    database.store_people(conn, load)
+    staging.store_people(conn, load)
 
 
 def shipped_sample() -> Sample:
