@@ -147,6 +147,14 @@ PATHS: tuple[StartupPath, ...] = (
         " Anderson et al. 2007, no database (only --person and --target open one)",
     ),
     StartupPath(
+        "sass reach",
+        ("reach", "--gender", "female", "--point", "30,120,50"),
+        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "sqlite3", "platformdirs", "numpy.ma",
+         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+        "a figure's reach needs its humanoid and the glTF writer, no database (only"
+        " --person, --target and --virtual open one: cli/reach_people.py)",
+    ),
+    StartupPath(
         "sass niosh",
         ("niosh", "--h", "40cm", "--v", "60cm", "--d", "80cm", "--f", "2", "--load", "12kg"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
