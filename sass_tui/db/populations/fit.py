@@ -20,6 +20,11 @@ shares below are the expected ones (the mean of each person's probability):
   the same measured people: what univariate percentiles suggest.
 - Weighted by the mix (default equal): sum of mix[g] * percent[g] over the
   genders the population has (the mix renormalised over them).
+- With a target population (`--target`, `--virtual`): every share is weighted
+  by the people's survey weights, and the headline weighted share has the
+  genders in the survey's own proportions (the mix is each gender's weight
+  over the measured people's), unless a mix is given: then it is that mix of
+  the per-gender weighted shares.
 - Per limit: `excluded`, the measured people failing it (whatever the other
   limits say), and `only_limit`, those it alone excludes (they pass every
   other limit).
@@ -42,6 +47,7 @@ from sass_tui.db.engine.dialect import dialect_of, ids_in
 from sass_tui.db.people.values import load_values
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query.query import (
+    CompiledQuery,
     ParsedQuery,
     compile_conjuncts,
     joined,
@@ -221,36 +227,11 @@ def fit_test(
     (docs/strength.md), after the query's."""
     # Each query parsed once; a query's errors point into its own text.
     limit_query = parsed(limits)
-    people_query = parsed(population)
-    if target is not None:
-        base = target.target.base_query
-        people_query = (
-            parsed(base)
-            if people_query.text == target.target.population
-            else joined(people_query, base, text=f"({people_query.text}) AND {base}")
-        )
+    people_query = target_population(parsed(population), target)
     steps = Steps(progress, cancel, "the fit test")
     steps(0, 3)
     weights = check_mix(mix)
-    # One compilation of both, so the population's terms share the limits' joins
-    # and its WHERE runs inline (a subquery for it costs half as much again).
-    people, *terms = compile_conjuncts(limit_query, first=people_query)
-    # The population's term is compiled as a part, unscoped: real people unless it names a source.
-    people = real_people_only(people)
-    # The body a strength limit predicts from, only when there is one.
-    body = "p.age, p.mass, p.stature, " if strength_limits else ""
-    # Each limit is a column: 1/0 (SQLite) or true/false (PostgreSQL), NULL unmeasured.
-    dialect = dialect_of(conn)
-    limit_sql = [t.sql(dialect) for t in terms]
-    where, where_params = people.sql(dialect)
-    columns = body + ", ".join(f"({condition})" for condition, _ in limit_sql)
-    sql = (
-        f"SELECT p.id_num, p.gender, {columns} FROM {people.from_clause()} "
-        f"WHERE {where} ORDER BY p.id_num"
-    )
-    params = tuple(v for _, values in limit_sql for v in values) + where_params
-    with interruptible(conn, cancel, "the fit test"):
-        rows = conn.execute(sql, params).fetchall()
+    rows, terms = _limit_rows(conn, limit_query, people_query, cancel, bool(strength_limits))
     steps(1, 3)
     if not rows:
         raise FitError(f"the population {people_query.text!r} selects nobody")
@@ -271,16 +252,77 @@ def fit_test(
         passes = np.hstack([passes, np.column_stack(predicted)])
         texts += tuple(f"{limit.text} (predicted)" for limit in strength_limits)
     steps(2, 3)
-    # A virtual population's people stand for their survey's: each gender's
-    # shares are weighted by them (a real target's are given beside, unweighted).
-    virtual = target.of(ids) if target is not None and target.target.is_virtual else None
+    # A target's people stand for their survey's: every share is weighted by
+    # them, the genders in the survey's proportions unless a mix is given.
+    survey = target.of(ids) if target is not None else None
     result = _summarise(
-        conn, texts, people_query.text, weights, ids, gender, passes, failing, virtual
+        conn,
+        texts,
+        people_query.text,
+        weights,
+        ids,
+        gender,
+        passes,
+        failing,
+        survey,
+        survey_mix=target is not None and mix is None,
     )
     if target is not None:
         result = replace(result, target=_target_share(target, ids, passes))
     steps(3, 3)
     return result
+
+
+def _limit_rows(
+    conn: sqlite3.Connection,
+    limit_query: ParsedQuery,
+    people_query: ParsedQuery,
+    cancel: Cancel | None,
+    body: bool,
+) -> tuple[list[Any], list[CompiledQuery]]:
+    """One row per person of the population: id, gender, (with `body` age, mass,
+    stature,) then each limit 1/0 (SQLite) or true/false (PostgreSQL), NULL
+    not measured; and the limits compiled."""
+    # One compilation of both, so the population's terms share the limits' joins
+    # and its WHERE runs inline (a subquery for it costs half as much again).
+    people, *terms = compile_conjuncts(limit_query, first=people_query)
+    # The population's term is compiled as a part, unscoped: real people unless it names a source.
+    people = real_people_only(people)
+    dialect = dialect_of(conn)
+    limit_sql = [t.sql(dialect) for t in terms]
+    where, where_params = people.sql(dialect)
+    columns = ("p.age, p.mass, p.stature, " if body else "") + ", ".join(
+        f"({condition})" for condition, _ in limit_sql
+    )
+    sql = (
+        f"SELECT p.id_num, p.gender, {columns} FROM {people.from_clause()} "
+        f"WHERE {where} ORDER BY p.id_num"
+    )
+    params = tuple(v for _, values in limit_sql for v in values) + where_params
+    with interruptible(conn, cancel, "the fit test"):
+        rows: list[Any] = conn.execute(sql, params).fetchall()
+    return rows, terms
+
+
+def limit_verdicts(
+    conn: sqlite3.Connection, limits: ParsedQuery, people: ParsedQuery
+) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64]]:
+    """The people of `people` (id order) and, per limit of `limits`, 1.0 if they
+    pass it, 0.0 if not, NaN not measured: the fit test's own evaluation."""
+    rows, terms = _limit_rows(conn, limits, people, None, False)
+    ids = np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows))
+    passes = np.array([r[2:] for r in rows], dtype=float).reshape(len(rows), len(terms))
+    return ids, passes
+
+
+def target_population(people: ParsedQuery, target: TargetWeights | None) -> ParsedQuery:
+    """The people a fit test (or a design) runs over: `people`, within the target's."""
+    if target is None:
+        return people
+    base = target.target.base_query
+    if people.text == target.target.population:
+        return parsed(base)
+    return joined(people, base, text=f"({people.text}) AND {base}")
 
 
 def _target_share(
@@ -309,6 +351,7 @@ def _summarise(
     passes: npt.NDArray[np.float64],
     want_failing: bool,
     person_weights: npt.NDArray[np.float64] | None = None,
+    survey_mix: bool = False,
 ) -> FitResult:
     w = np.ones(len(ids)) if person_weights is None else person_weights
     unmeasured = np.isnan(passes)
@@ -345,6 +388,8 @@ def _summarise(
             percent=100.0 * float((w[counted] * fits[counted]).sum()) / weight if n else None,
             naive_percent=naive,
         )
+    if survey_mix:  # each gender's share of the measured people's weight
+        weights = {g: float(w[(gender == g) & measured].sum()) for g in genders}
     used = {g: w for g, w in weights.items() if g in genders and genders[g].n > 0 and w > 0}
     total = sum(used.values())
     mix = {g: w / total for g, w in used.items()} if total > 0 else {}

@@ -20,27 +20,41 @@ def format_table(result: FitResult) -> str:
             f"Not measured for {result.not_measured} people (lacking a limited value): "
             "left out of every share"
         )
+    mix = ", ".join(f"{g} {100 * w:.0f} %" for g, w in result.mix.items())
+    if result.target is not None:
+        # One headline: the target's people weighted by their survey's weights.
+        survey_share, headline = result.target.percent, result.weighted_percent
+        survey = (
+            survey_share is not None
+            and headline is not None
+            and abs(survey_share - headline) < 1e-9
+        )
+        genders = "the survey's proportions" if survey else "the mix given"
+        lines.append(
+            f"Accommodated: {_percent(result.weighted_percent)} "
+            f"(weighted: {result.target.words}; genders in {genders}: {mix})"
+        )
     lines += ["", f"{'':<10} {'people':>7} {'fit':>7} {'accommodated':>13} {'naive':>9}"]
     for share in result.genders.values():
         lines.append(
             f"{share.gender:<10} {share.n:>7} {share.fit:>7} {_percent(share.percent):>13} "
             f"{_percent(share.naive_percent):>9}"
         )
-    mix = ", ".join(f"{g} {100 * w:.0f} %" for g, w in result.mix.items())
     lines.append(
         f"{'weighted':<10} {'':>7} {'':>7} {_percent(result.weighted_percent):>13} "
         f"{_percent(result.naive_percent):>9}   ({mix})"
     )
     if result.target is not None:
-        lines.append(
-            f"{'target':<10} {'':>7} {'':>7} {_percent(result.target.percent):>13} "
-            f"{'':>9}   (weighted: {result.target.words})"
-        )
-        if result.target.virtual:
+        if not survey:
             lines.append(
-                "VIRTUAL people: each gender's accommodated share is weighted by their "
-                "survey's weights; people and fit are counts"
+                f"{'survey':<10} {'':>7} {'':>7} {_percent(result.target.percent):>13} "
+                f"{'':>9}   (the genders in the survey's proportions)"
             )
+        lines.append(
+            ("VIRTUAL people: " if result.target.virtual else "")
+            + "each accommodated share is weighted by the survey's weights; "
+            "people and fit are counts"
+        )
     lines += [
         "",
         "naive = the product of each limit's own share (what univariate percentiles suggest)",
