@@ -10,19 +10,22 @@ The method (docs/accommodation.md, "Design"):
 
 - Each limit with an unknown is given a share of the population to exclude
   on its own (its *marginal* exclusion e_k, over the measured people with
-  their weights).  An unknown upper end is the weighted quantile Q(1 - e_k)
-  of its measure, an unknown lower end Q(e_k): model/population/targets.py's
-  `weighted_percentile`, the one `sass stats --target` gives.
+  their weights).  An unknown upper end is the smallest value of a person
+  with at most e_k of the weight above it, an unknown lower end the largest
+  with at most e_k below it.
 - A range with both ends unknown (`BETWEEN ? AND ?`) splits its e_k between
   its ends so that the range is the shortest holding 1 - e_k of the people
   (searched on a grid of 200 splits), unless a split is given.
 - The limits' shares are e_k = s * split_k, equal by default (split_k = 1) or
   in the proportions `--split` gives; one scale s is found by bisection so
   that the joint share (the people passing every limit, fixed ones too) is
-  the largest design not below the share asked for.  People fail several
+  the largest design not below the share asked for; where the people's
+  weights come in large steps, single ends are then moved inward by one
+  person's value at a time while the share stays at or above it.  People fail several
   limits at once, so the e_k add up to more than the share excluded.
 - One unknown end and no fixed limit: the weighted quantile itself, exactly
-  (Q(PCT) for `<= ?`, Q(100 - PCT) for `>= ?`).
+  (Q(PCT) for `<= ?`, Q(100 - PCT) for `>= ?`): model/population/targets.py's
+  `weighted_percentile`, the one `sass stats --target` gives.
 
 No database, no printing; numpy only.
 """
@@ -30,7 +33,7 @@ No database, no printing; numpy only.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Final
 
@@ -45,6 +48,7 @@ BoolArray = npt.NDArray[np.bool_]
 
 RANGE_SPLITS: Final = 200  # the grid on which a range's shortest split is searched
 BISECTIONS: Final = 60
+TIGHTEN_STEPS: Final = 20  # one person's value at a time (_tighten)
 
 
 class DesignError(ValueError, SassError):
@@ -84,27 +88,36 @@ class Design:
     split: tuple[float, ...]  # each limit's share of the exclusion (sums to 1 over the unknown)
 
 
-class _Quantiles:
-    """One column's weighted quantile function (weighted_percentile's positions),
-    evaluated many times without sorting again."""
+class _Cuts:
+    """One column's cuts by weight: `lower(e)`, the largest value with at most
+    the share e of the weight below it, and `upper(e)`, the smallest value with
+    at most e above it (the people's own values, so the share a limit excludes
+    is what was asked as nearly as the people's weights allow)."""
 
     def __init__(self, values: FloatArray, weights: FloatArray) -> None:
         order = np.argsort(values, kind="stable")
-        self.x = values[order]
-        w = weights[order]
-        cumulative = np.cumsum(w)
-        span = cumulative[-1] - w[0] / 2 - w[-1] / 2
-        self.position = (
-            (cumulative - w / 2 - w[0] / 2) / span if span > 0 else np.zeros(len(self.x))
-        )
+        x, w = values[order], weights[order]
+        self.x, first = np.unique(x, return_index=True)
+        per_value = np.add.reduceat(w, first)
+        cumulative = np.cumsum(per_value) / float(per_value.sum())
+        self.through = cumulative  # share at or below each value
+        self.before = np.concatenate([[0.0], cumulative[:-1]])  # share below each value
 
-    def __call__(self, q: npt.ArrayLike) -> FloatArray:
-        result: FloatArray = np.interp(np.asarray(q, dtype=float), self.position, self.x)
+    def lower(self, share: npt.ArrayLike) -> FloatArray:
+        e = np.asarray(share, dtype=float)
+        k = np.searchsorted(self.before, e + 1e-12, side="right") - 1
+        result: FloatArray = self.x[np.clip(k, 0, len(self.x) - 1)]
+        return result
+
+    def upper(self, share: npt.ArrayLike) -> FloatArray:
+        e = np.asarray(share, dtype=float)
+        k = np.searchsorted(self.through, 1.0 - e - 1e-12, side="left")
+        result: FloatArray = self.x[np.clip(k, 0, len(self.x) - 1)]
         return result
 
 
 def _ends(
-    spec: LimitSpec, quantile: _Quantiles, share: float, low_fraction: float | None
+    spec: LimitSpec, cuts: _Cuts, share: float, low_fraction: float | None
 ) -> tuple[float | None, float | None]:
     """The limit's ends when it alone excludes `share` (0-1) of the people."""
     low_unknown = spec.low is not None and math.isnan(spec.low)
@@ -112,13 +125,13 @@ def _ends(
     if low_unknown and high_unknown:
         if low_fraction is None:
             below = np.linspace(0.0, share, RANGE_SPLITS + 1)
-            width = quantile(1.0 - share + below) - quantile(below)
+            width = cuts.upper(share - below) - cuts.lower(below)
             a = float(below[int(np.argmin(width))])
         else:
             a = share * low_fraction
-        return float(quantile(a)), float(quantile(1.0 - share + a))
-    low = float(quantile(share)) if low_unknown else spec.low
-    high = float(quantile(1.0 - share)) if high_unknown else spec.high
+        return float(cuts.lower(a)), float(cuts.upper(share - a))
+    low = float(cuts.lower(share)) if low_unknown else spec.low
+    high = float(cuts.upper(share)) if high_unknown else spec.high
     return low, high
 
 
@@ -173,7 +186,7 @@ def solve(
         raise DesignError("--split: the shares of the limits with a ? add up to 0")
     shares = shares / shares.sum()
     fractions = list(range_split) if range_split is not None else [None] * k
-    quantiles = [_Quantiles(values[:, j], w) if solving[j] else None for j in range(k)]
+    quantiles = [_Cuts(values[:, j], w) if solving[j] else None for j in range(k)]
     total = float(w.sum())
 
     def design(scale: float) -> list[tuple[float | None, float | None]]:
@@ -219,7 +232,46 @@ def solve(
             low, best, reached = middle, ends, share
         else:
             high = middle
-    return finish(best)
+    return finish(_tighten(specs, quantiles, best, joint, target, reached))
+
+
+def _tighten(
+    specs: Sequence[LimitSpec],
+    cuts: Sequence[_Cuts | None],
+    ends: list[tuple[float | None, float | None]],
+    joint: Callable[[list[tuple[float | None, float | None]]], float],
+    target: float,
+    reached: float,
+) -> list[tuple[float | None, float | None]]:
+    """Where people's weights come in steps (a target's few heavy people), the
+    split's scale can stop well above the share asked for: move one unknown
+    end inward by one person's value at a time while the joint share stays at
+    or above the target, each time the move that comes closest to it."""
+    for _ in range(TIGHTEN_STEPS):
+        best: tuple[float, list[tuple[float | None, float | None]]] | None = None
+        for j, spec in enumerate(specs):
+            c = cuts[j]
+            if c is None:
+                continue
+            low, high = ends[j]
+            moves = []
+            if spec.low is not None and math.isnan(spec.low) and low is not None:
+                k = int(np.searchsorted(c.x, low, side="right"))
+                if k < len(c.x) and (high is None or c.x[k] <= high):
+                    moves.append((float(c.x[k]), high))
+            if spec.high is not None and math.isnan(spec.high) and high is not None:
+                k = int(np.searchsorted(c.x, high, side="left")) - 1
+                if k >= 0 and (low is None or c.x[k] >= low):
+                    moves.append((low, float(c.x[k])))
+            for move in moves:
+                trial = [*ends[:j], move, *ends[j + 1 :]]
+                share = joint(trial)
+                if target <= share < reached and (best is None or share < best[0]):
+                    best = (share, trial)
+        if best is None:
+            return ends
+        reached, ends = best
+    return ends
 
 
 def _design(

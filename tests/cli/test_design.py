@@ -1,0 +1,148 @@
+"""`sass design`: one unknown is NHANES adults' weighted percentile computed
+here from the published CSV (../shared/data/nhanes) by cumulative weight;
+several unknowns give, through `sass fit` itself, the share asked for, for
+real (ANSUR II), target (NHANES-weighted) and virtual people."""
+
+from __future__ import annotations
+
+import csv
+import json
+
+import numpy as np
+import pytest
+
+from sass_tui.cli import main
+from tests._paths import SHARED
+
+NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
+VIRTUAL = "nhanes-2017-2020"
+SEAT = (
+    "measure.poplitealheight BETWEEN ? AND ? AND measure.buttockpopliteallength >= ? "
+    "AND measure.hipbreadthsitting <= ?"
+)
+
+
+def nhanes_adults() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Adults 20+ with a height and a weight (the virtual population's people):
+    stature (cm), gender code (1 male, 2 female) and WTMECPRP."""
+    if not NHANES_CSV.is_file():
+        pytest.skip("../shared/data/nhanes is absent")
+    lines = [
+        line
+        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
+        if not line.startswith("#")
+    ]
+    rows = [
+        r
+        for r in csv.DictReader(lines)
+        if r["RIDAGEYR"] != "NA"
+        and float(r["RIDAGEYR"]) >= 20
+        and r["BMXHT"] != "NA"
+        and r["BMXWT"] != "NA"
+    ]
+    return (
+        np.array([float(r["BMXHT"]) for r in rows]),
+        np.array([int(r["RIAGENDR"]) for r in rows]),
+        np.array([float(r["WTMECPRP"]) for r in rows]),
+    )
+
+
+def by_cumulative_weight(values: np.ndarray, weights: np.ndarray, q: float) -> float:
+    """The smallest value whose cumulative weight share reaches q."""
+    order = np.argsort(values)
+    share = np.cumsum(weights[order]) / weights.sum()
+    return float(values[order][np.searchsorted(share, q)])
+
+
+def run_json(capsys, *argv: str) -> dict:
+    assert main(list(argv)) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_one_unknown_is_the_weighted_95th_percentile_of_nhanes_adults(people_db, capsys):
+    stature, _gender, weight = nhanes_adults()
+    expected = by_cumulative_weight(stature, weight, 0.95)
+    answer = run_json(
+        capsys,
+        *("--db", str(people_db), "design", "--virtual", VIRTUAL),
+        *("--accommodate", "95", "--format", "json", "stature <= ?"),
+    )
+    (limit,) = answer["limits"]
+    assert limit["measure"] == "stature" and limit["low"] is None
+    assert limit["high"]["unit"] == "cm"
+    assert limit["high"]["value"] == pytest.approx(expected, abs=0.3)
+    assert limit["text"] == f"stature <= {limit['high']['value']:.1f} cm"
+    assert answer["accommodate"] == 95
+    assert answer["accommodated"]["percent"] == pytest.approx(95, abs=0.3)
+    assert limit["excluded_above"] == pytest.approx(5, abs=0.3)
+
+
+def test_women_at_least_their_weighted_5th_percentile(people_db, capsys):
+    stature, gender, weight = nhanes_adults()
+    women = gender == 2
+    expected = by_cumulative_weight(stature[women], weight[women], 0.05)
+    answer = run_json(
+        capsys,
+        *("--db", str(people_db), "design", "--virtual", VIRTUAL, "--gender", "female"),
+        *("--accommodate", "95", "--format", "json", "stature >= ?"),
+    )
+    (limit,) = answer["limits"]
+    assert limit["low"]["value"] == pytest.approx(expected, abs=0.3)
+    assert set(answer["accommodated"]) == {"percent", "female"}
+
+
+@pytest.mark.parametrize("percent", [90, 95])
+@pytest.mark.parametrize(
+    "people", [(), ("--target", "nhanes-2017-2020"), ("--virtual", VIRTUAL)], ids=str
+)
+def test_three_unknowns_give_the_share_in_sass_fit(people_db, capsys, percent, people):
+    db = ("--db", str(people_db))
+    answer = run_json(
+        capsys,
+        *db,
+        "design",
+        *people,
+        *("--accommodate", str(percent), "--format", "json", SEAT),
+    )
+    texts = [limit["text"] for limit in answer["limits"]]
+    assert len(texts) == 3
+    assert all("?" not in text for text in texts)
+    # Equal split: each limit with ? excludes the same share on its own, as
+    # nearly as the weights allow (the NHANES-weighted soldiers' weights come in
+    # steps of several percent: there a limit excludes at most its share).
+    own = [limit["excluded_below"] + limit["excluded_above"] for limit in answer["limits"]]
+    if "--target" not in people:
+        assert max(own) - min(own) < 0.5
+    fit = run_json(capsys, *db, "fit", *people, "--format", "json", " AND ".join(texts))
+    headline = fit["accommodated"]["weighted"]["percent"]
+    assert headline == pytest.approx(percent, abs=0.3)
+    assert answer["accommodated"]["percent"] == pytest.approx(headline, abs=1e-9)
+
+
+def test_fixed_limits_count_and_the_table_says_how(people_db, capsys):
+    argv = ["--db", str(people_db), "design", "--accommodate", "90"]
+    assert main([*argv, "stature <= 185 cm AND mass <= ?"]) == 0
+    out = capsys.readouterr().out
+    assert "stature <= 185 cm" in out and "(fixed)" in out
+    assert "Accommodated (checked with sass fit): 90." in out
+
+
+@pytest.mark.parametrize(
+    ("limits", "says"),
+    [
+        ("gender = ?", "? is solved only"),
+        ("stature = ?", "? is solved only"),
+        ("(stature <= ? OR mass <= ?)", "a limit with ? is one field's"),
+        ("stature <= 180 cm", "no limit has an unknown"),
+    ],
+)
+def test_bad_designs_are_one_line(people_db, capsys, limits, says):
+    argv = ["--db", str(people_db), "design", "--accommodate", "95", limits]
+    assert main(argv) != 0
+    err = capsys.readouterr().err
+    assert says in err and "Traceback" not in err
+
+
+def test_sass_fit_refuses_an_unknown(people_db, capsys):
+    assert main(["--db", str(people_db), "fit", "stature <= ?"]) != 0
+    assert "sass design" in capsys.readouterr().err
