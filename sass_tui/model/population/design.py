@@ -254,7 +254,7 @@ def _tighten(
             if c is None:
                 continue
             low, high = ends[j]
-            moves = []
+            moves: list[tuple[float | None, float | None]] = []
             if spec.low is not None and math.isnan(spec.low) and low is not None:
                 k = int(np.searchsorted(c.x, low, side="right"))
                 if k < len(c.x) and (high is None or c.x[k] <= high):
