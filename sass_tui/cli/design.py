@@ -16,6 +16,7 @@ from sass_tui.cli.common.options import (
 from sass_tui.cli.fit import DEFAULT_POPULATION, mix_argument
 from sass_tui.db.populations.design import Designed, design
 from sass_tui.db.populations.fit import check_mix
+from sass_tui.db.populations.shipped import load_weights
 from sass_tui.db.query.query import joined, parse, parse_option
 from sass_tui.model.population.design import DesignError
 from sass_tui.model.vocabulary import GENDERS
@@ -127,9 +128,6 @@ def run(args: argparse.Namespace) -> int:
     conn = open_db(args)
     target = None
     if weighting is not None:
-        # deferred: db.shipped (db.targets) — as sass fit: made the first time it is asked for
-        from sass_tui.db.populations.shipped import load_weights
-
         target = load_weights(conn, weighting)
         if target.target.is_virtual and args.population == DEFAULT_POPULATION:
             population = parse_option(target.target.population, weighting)
