@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 
 from sass_tui.cli.common.database_access import open_db
@@ -43,13 +44,17 @@ def split_argument(text: str) -> tuple[list[float], list[float | None]]:
         try:
             value = float(share)
             fraction = None if not low else _fraction(low)
-        except ValueError:
+        except (ValueError, ZeroDivisionError):
             raise argparse.ArgumentTypeError(
                 f"{item.strip()!r}: expected a share >= 0, or SHARE:LOW/HIGH for a range "
                 "(e.g. 1:1/3: a third of its share below the range), e.g. 2,1,1"
             ) from None
-        if value < 0 or (fraction is not None and not 0.0 <= fraction <= 1.0):
-            raise argparse.ArgumentTypeError(f"{item.strip()!r}: shares are >= 0")
+        if not math.isfinite(value) or value < 0:
+            raise argparse.ArgumentTypeError(f"{item.strip()!r}: a share is a number >= 0")
+        if fraction is not None and not 0.0 <= fraction <= 1.0:
+            raise argparse.ArgumentTypeError(
+                f"{item.strip()!r}: the share below a range is from 0 to 1, e.g. 1/3"
+            )
         shares.append(value)
         below.append(fraction)
     return shares, below
