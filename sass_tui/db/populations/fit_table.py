@@ -10,6 +10,10 @@ def _percent(value: float | None) -> str:
     return "-" if value is None else f"{value:.1f} %"
 
 
+def _number(value: float | None, unit: str) -> str:
+    return "-" if value is None else f"{value:.1f} {unit}"
+
+
 def format_table(result: FitResult) -> str:
     lines = [
         f"Design limits: {' AND '.join(result.limits)}",
@@ -75,11 +79,33 @@ def format_table(result: FitResult) -> str:
             f"{b.limit:<{width}} {b.excluded:>9} {b.only_limit:>11} {b.not_measured:>13}"
             + "".join(f" {_percent(b.percent.get(g)):>13}" for g in result.genders)
         )
+    sided = [b for b in result.by_limit if b.below is not None or b.above is not None]
+    if sided and result.failing is None:
+        lines += [
+            "",
+            "Who each limit excludes (share of the weighted people; their median "
+            "stature and mass; genders):",
+        ]
+        for b in sided:
+            for word, side in (("below", b.below), ("above", b.above)):
+                if side is None or side.n == 0:
+                    continue
+                genders = ", ".join(f"{g} {v:.0f} %" for g, v in side.genders.items())
+                lines.append(
+                    f"  {b.limit}: {word} {side.n} people, {side.percent:.1f} %; median "
+                    f"{_number(side.median_stature, 'cm')}, {_number(side.median_mass, 'kg')}; "
+                    f"{genders}"
+                )
     if result.failing is not None:
         lines += ["", f"{len(result.failing)} people fail a limit:"]
         for person in result.failing:
+            failed = [
+                x.limit
+                if x.measure is None or x.value is None
+                else f"{x.measure} {x.value:g} {x.unit} {x.side} ({x.limit})".replace("  ", " ")
+                for x in person.failed
+            ] or list(person.limits)
             lines.append(
-                f"{person.id:>7}  {person.name:<20.20} {person.gender:<6} "
-                + "; ".join(person.limits)
+                f"{person.id:>7}  {person.name:<20.20} {person.gender:<6} " + "; ".join(failed)
             )
     return "\n".join(lines) + "\n"
