@@ -146,3 +146,20 @@ def test_bad_designs_are_one_line(people_db, capsys, limits, says):
 def test_sass_fit_refuses_an_unknown(people_db, capsys):
     assert main(["--db", str(people_db), "fit", "stature <= ?"]) != 0
     assert "sass design" in capsys.readouterr().err
+
+
+def test_a_civilian_figure_in_one_step(people_db, tmp_path, capsys):
+    """`sass fig --virtual --gender female --percentile 5`: the women's
+    weighted 5th percentile of stature, from the published CSV."""
+    stature, gender, weight = nhanes_adults()
+    women = gender == 2
+    expected = by_cumulative_weight(stature[women], weight[women], 0.05)
+    out = tmp_path / "f5.fig"
+    argv = ["--db", str(people_db), "fig", "--virtual", VIRTUAL, "--gender", "female"]
+    assert main([*argv, "--percentile", "5", "-o", str(out)]) == 0
+    text = out.read_text(encoding="utf-8")
+    written = float(text.split(" cm (mass percentile")[0].rsplit("stature ", 1)[1])
+    assert written == pytest.approx(expected, abs=0.3)
+    assert "VIRTUAL people" in text and "; female;" in text
+    assert main([*argv, "--girth", "x.dat", "-o", str(out)]) != 0
+    assert "leave out --girth" in capsys.readouterr().err
