@@ -12,7 +12,7 @@ from sass_tui.cli.common.options import (
     add_virtual_option,
     weighting_name,
 )
-from sass_tui.db.populations.family import load_family
+from sass_tui.db.populations.family import BOTH, load_family
 from sass_tui.db.query.query import parse_option
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.files.family_files import write_family
@@ -54,7 +54,13 @@ def register(commands: SubParsers) -> None:
     )
     add_db_option(family)
     family.add_argument(
-        "--gender", choices=GENDERS, required=True, help="the gender of the people covered"
+        "--gender",
+        choices=GENDERS,
+        help="the gender of the people covered (default: one family of both genders, "
+        "weighted: equal genders, or a target's survey weights)",
+    )
+    family.add_argument(
+        "--gltf", action="store_true", help="write each manikin's body as glTF (.glb) too"
     )
     family.add_argument(
         "--measures",
@@ -109,24 +115,29 @@ def run(args: argparse.Namespace) -> int:
         if weighted_to.target.is_virtual and args.population == DEFAULT_POPULATION:
             # its virtual people
             population = parse_option(weighted_to.target.population, weighting)
+    gender = args.gender or BOTH
     family = load_family(
         conn,
-        args.gender,
+        gender,
         args.measures,
         args.coverage / 100.0,
         args.kind,
         population,
         weighted_to=weighted_to,
     )
-    written = write_family(family, args.output, Figure.default(args.gender))
+    written = write_family(
+        family, args.output, Figure.default(args.gender or "male"), gltf=args.gltf
+    )
     out = sys.stdout
     coverage = written.coverage
     people = "people" if weighted_to is None else "people unweighted"
     out.write(
-        f"{args.gender} {args.kind} family over {', '.join(written.measures)}: "
+        f"{gender} {args.kind} family over {', '.join(written.measures)}: "
         f"{len(written.manikins)} manikins in {args.output}\n"
         + (f"weighted: {weighted_to.target.words()}\n" if weighted_to is not None else "")
-        + f"coverage of the {coverage.n} {args.gender} people"
+        + f"fitted with {written.to_json()['space']}\n"
+        + "".join(f"note: {note}\n" for note in written.notes)
+        + f"coverage of the {coverage.n} {'' if gender == BOTH else gender + ' '}people"
         + (" (weighted shares)" if weighted_to is not None else "")
         + (f" ({coverage.missing} not measured, left out)" if coverage.missing else "")
         + ":\n"

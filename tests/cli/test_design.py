@@ -148,6 +148,7 @@ def test_sass_fit_refuses_an_unknown(people_db, capsys):
     assert "sass design" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_a_civilian_figure_in_one_step(people_db, tmp_path, capsys):
     """`sass fig --virtual --gender female --percentile 5`: the women's
     weighted 5th percentile of stature, from the published CSV."""
@@ -163,3 +164,60 @@ def test_a_civilian_figure_in_one_step(people_db, tmp_path, capsys):
     assert "VIRTUAL people" in text and "; female;" in text
     assert main([*argv, "--girth", "x.dat", "-o", str(out)]) != 0
     assert "leave out --girth" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("gender", ["female", "male"])
+def test_family_manikins_lie_inside_the_peoples_mass_and_bmi(people_db, tmp_path, gender):
+    """Boundary manikins of NHANES adults (the virtual people's stature and
+    mass are NHANES's own) at 99 %: no mass or BMI beyond the CSV's adults'."""
+    stature, code, _weight = nhanes_adults()
+    mass = nhanes_mass()
+    mine = code == (2 if gender == "female" else 1)
+    bmi = mass[mine] / (stature[mine] / 100) ** 2
+    out = tmp_path / gender
+    argv = ["--db", str(people_db), "family", "--virtual", VIRTUAL, "--gender", gender]
+    assert main([*argv, "--measures", "stature,mass", "--coverage", "99", "-o", str(out)]) == 0
+    family = json.loads((out / "family.json").read_text(encoding="utf-8"))
+    assert family["space"] == "log mass"
+    for manikin in family["manikins"]:
+        m, s = manikin["values"]["mass"], manikin["values"]["stature"]
+        assert mass[mine].min() - 0.05 <= m <= mass[mine].max() + 0.05
+        assert bmi.min() - 0.05 <= m / (s / 100) ** 2 <= bmi.max() + 0.05
+
+
+@pytest.mark.slow
+def test_a_family_of_both_genders_counts_with_survey_weights(people_db, tmp_path):
+    stature, _code, weight = nhanes_adults()
+    mass = nhanes_mass()
+    out = tmp_path / "both"
+    argv = ["--db", str(people_db), "family", "--virtual", VIRTUAL, "--measures", "stature,mass"]
+    assert main([*argv, "--coverage", "95", "-o", str(out)]) == 0
+    family = json.loads((out / "family.json").read_text(encoding="utf-8"))
+    assert family["gender"] == "both"
+    (s_low, s_high), (m_low, m_high) = family["ranges"]["stature"], family["ranges"]["mass"]
+    within = (stature >= s_low) & (stature <= s_high) & (mass >= m_low) & (mass <= m_high)
+    own = 100 * weight[within].sum() / weight.sum()
+    # the family's ranges are rounded to 1e-4 in family.json: a person on an edge may differ
+    assert family["coverage"]["within_ranges"] == pytest.approx(own, abs=0.05)
+    genders = {m["name"]: m["nearest"]["name"].split()[-2] for m in family["manikins"]}
+    assert set(genders.values()) == {"M", "F"}
+
+
+def nhanes_mass() -> np.ndarray:
+    """BMXWT of the same adults as nhanes_adults(), in its order."""
+    lines = [
+        line
+        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
+        if not line.startswith("#")
+    ]
+    return np.array(
+        [
+            float(r["BMXWT"])
+            for r in csv.DictReader(lines)
+            if r["RIDAGEYR"] != "NA"
+            and float(r["RIDAGEYR"]) >= 20
+            and r["BMXHT"] != "NA"
+            and r["BMXWT"] != "NA"
+        ]
+    )

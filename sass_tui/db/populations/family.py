@@ -26,6 +26,8 @@ from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.population.targets import kish_effective_n
 from sass_tui.model.vocabulary import GENDERS
 
+BOTH = "both"  # a family of both genders' people (sass family without --gender)
+
 if TYPE_CHECKING:
     from sass_tui.db.engine.database import Database
     from sass_tui.db.populations.targets import TargetWeights
@@ -51,20 +53,32 @@ def load_family(
     `progress(steps done, 3)`: the people read, the model, the family built;
     `cancel` stops it with Cancelled between them (it writes nothing).
     `weighted_to` (a target population of `gender`): the target's people, weighted."""
-    if gender not in GENDERS:
-        raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
+    if gender not in (*GENDERS, BOTH):
+        raise FitError(f"gender must be {' or '.join(GENDERS)} (or {BOTH}), not {gender!r}")
     fields = [measure_field(m) for m in measures]
     people_query = parsed(population)  # its own error, before the combined query's
     if weighted_to is not None:
         made = weighted_to.target
-        if gender not in made.genders:
+        if gender != BOTH and gender not in made.genders:
             raise FitError(f"the target {made.name} is of {made.gender} people, not {gender}")
         if people_query.text != made.population:
             people_query = joined(people_query, made.population)
     steps = Steps(progress, cancel, "the family")
     steps(0, 3)
     with interruptible(conn, cancel, "the family"):
-        values = load_values(conn, fields, joined(people_query, f"gender = {gender}"))
+        # the people's stature and mass beside: the manikins are kept inside their ranges
+        body_fields = ["stature", "mass"]
+        selected = people_query if gender == BOTH else joined(people_query, f"gender = {gender}")
+        loaded = load_values(conn, fields + body_fields, selected)
+    values = Values(
+        ids=loaded.ids,
+        names=loaded.names,
+        genders=loaded.genders,
+        fields=loaded.fields[: len(fields)],
+        units=loaded.units[: len(fields)],
+        matrix=loaded.matrix[:, : len(fields)],
+    )
+    body = loaded.matrix[:, len(fields) :]
     steps(1, 3)
     if len(values) == 0:
         raise FitError(f"the population {people_query.text!r} has no {gender} people")
@@ -72,8 +86,24 @@ def load_family(
         model = predictor if predictor is not None else open_predictor(conn)
     steps(2, 3)
     weights = None if weighted_to is None else weighted_to.of(values.ids)
+    if gender == BOTH and weighted_to is None:
+        # the genders weighed equally, as the fit test's default mix
+        sexes = np.array(values.genders, dtype=object)
+        weights = np.array(
+            [1.0 / max(1, int((sexes == g).sum())) for g in values.genders], dtype=float
+        )
     family = build_family(
-        gender, fields, values.ids, values.names, values.matrix, target, model, kind, weights
+        gender,
+        fields,
+        values.ids,
+        values.names,
+        values.matrix,
+        target,
+        model,
+        kind,
+        weights,
+        body=body,
+        genders=values.genders if gender == BOTH else None,
     )
     if weighted_to is not None and weights is not None:
         used = ~np.isnan(values.matrix).any(axis=1)
