@@ -60,6 +60,13 @@ def register(commands: SubParsers) -> None:
         "weighted: equal genders, or a target's survey weights)",
     )
     family.add_argument(
+        "--space",
+        choices=("log-mass", "measured"),
+        default="log-mass",
+        help="where the coverage ellipsoid is fitted: log-mass (default: mass as its "
+        "logarithm, near normal; no manikin lighter than a living adult) or measured",
+    )
+    family.add_argument(
         "--gltf", action="store_true", help="write each manikin's body as glTF (.glb) too"
     )
     family.add_argument(
@@ -124,6 +131,7 @@ def run(args: argparse.Namespace) -> int:
         args.kind,
         population,
         weighted_to=weighted_to,
+        space="log mass" if args.space == "log-mass" else "as measured",
     )
     written = write_family(
         family, args.output, Figure.default(args.gender or "male"), gltf=args.gltf

@@ -21,7 +21,7 @@ from sass_tui.db.populations.fit import DEFAULT_POPULATION, FitError
 from sass_tui.db.populations.predict import open_predictor
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query.query import ParsedQuery, joined, parsed
-from sass_tui.model.population.accommodation import Family, build_family
+from sass_tui.model.population.accommodation import SPACES, Family, build_family
 from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.population.targets import kish_effective_n
 from sass_tui.model.vocabulary import GENDERS
@@ -45,6 +45,7 @@ def load_family(
     progress: Progress | None = None,
     cancel: Cancel | None = None,
     weighted_to: TargetWeights | None = None,
+    space: str = SPACES[0],
 ) -> Family:
     """The manikin family of `gender` over `measures` (see
     `sass_tui.model.population.accommodation`): the population's people of that gender,
@@ -104,6 +105,7 @@ def load_family(
         weights,
         body=body,
         genders=values.genders if gender == BOTH else None,
+        space=space,
     )
     if weighted_to is not None and weights is not None:
         used = ~np.isnan(values.matrix).any(axis=1)

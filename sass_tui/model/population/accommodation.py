@@ -357,6 +357,7 @@ class Family:
     manikins: tuple[Manikin, ...]
     target: dict[str, Any] | None = None  # the target population it is weighted to (JSON)
     notes: tuple[str, ...] = ()  # manikins moved inside the people's own ranges
+    space: str = "as measured"  # where the ellipsoid was fitted (SPACES)
 
     @property
     def measures(self) -> tuple[str, ...]:
@@ -397,7 +398,7 @@ class Family:
                 }
                 for m in self.manikins
             ],
-            "space": "log mass" if LOG_MASS in self.measures else "as measured",
+            "space": self.space if LOG_MASS in self.measures else SPACES[1],
             "notes": list(self.notes),
         } | ({} if self.target is None else {"target": self.target})
 
@@ -409,25 +410,30 @@ class Family:
 
 
 LOG_MASS: Final = "mass"  # the measure whose logarithm the ellipsoid is fitted on
+SPACES: Final = ("log mass", "as measured")  # where the ellipsoid is fitted (build_family)
 INSIDE_STEPS: Final = 30  # bisection steps moving a manikin inward (_inside)
 
 
-def _to_space(measures: tuple[str, ...] | list[str], matrix: FloatArray) -> FloatArray:
+def _to_space(
+    measures: tuple[str, ...] | list[str], matrix: FloatArray, space: str = SPACES[0]
+) -> FloatArray:
     """The values where the population is near normal: mass as its natural
     logarithm (mass is right-skewed; a normal ellipsoid over it runs below
     any living adult), every other measure as it is."""
     out = np.array(matrix, dtype=float, copy=True)
     for k, m in enumerate(measures):
-        if m == LOG_MASS:
+        if m == LOG_MASS and space == SPACES[0]:
             with np.errstate(invalid="ignore", divide="ignore"):
                 out[:, k] = np.where(out[:, k] > 0, np.log(out[:, k]), np.nan)
     return out
 
 
-def _from_space(measures: tuple[str, ...] | list[str], values: FloatArray) -> FloatArray:
+def _from_space(
+    measures: tuple[str, ...] | list[str], values: FloatArray, space: str = SPACES[0]
+) -> FloatArray:
     out = np.array(values, dtype=float, copy=True)
     for k, m in enumerate(measures):
-        if m == LOG_MASS:
+        if m == LOG_MASS and space == SPACES[0]:
             out[k] = math.exp(out[k])
     return out
 
@@ -471,6 +477,7 @@ def build_family(
     weights: FloatArray | None = None,
     body: FloatArray | None = None,
     genders: tuple[str, ...] | list[str] | None = None,
+    space: str = SPACES[0],
 ) -> Family:
     """The family of one gender's people (`matrix`: people x `measures`, query-language
     field names as the predictor knows them), each point completed by `predictor`;
@@ -481,19 +488,25 @@ def build_family(
     the last point inside, and a note says so.  `gender` "both" with `genders`
     (each person's): one family of both genders; each manikin is predicted as
     its nearest person's gender."""
-    space = _to_space(measures, matrix)
-    ellipsoid = CoverageEllipsoid.fit(measures, space, target, weights)
+    if space not in SPACES:
+        raise AccommodationError(f"unknown space {space!r}; expected {' or '.join(SPACES)}")
+    fitted_in = space
+    space_values = _to_space(measures, matrix, fitted_in)
+    ellipsoid = CoverageEllipsoid.fit(measures, space_values, target, weights)
     points = family_points(ellipsoid, kind)
     ranges = _body_ranges(body)
     notes: list[str] = []
     manikins = []
     kept_points = []
     for point in points:
-        row, distance = nearest_person(ellipsoid, point.values, space)
+        row, distance = nearest_person(ellipsoid, point.values, space_values)
         sex = gender if genders is None else str(genders[row])
 
         def predict(values: FloatArray, sex: str = sex) -> tuple[dict[str, float], Prediction]:
-            known = {m: float(v) for m, v in zip(ellipsoid.measures, _from_space(measures, values))}
+            known = {
+                m: float(v)
+                for m, v in zip(ellipsoid.measures, _from_space(measures, values, fitted_in))
+            }
             return known, predictor.predict(sex, known)
 
         known, prediction = predict(point.values)
@@ -511,7 +524,7 @@ def build_family(
             point = ManikinPoint(
                 point.name, point.scores * low, ellipsoid.point(point.scores * low)
             )
-            row, distance = nearest_person(ellipsoid, point.values, space)
+            row, distance = nearest_person(ellipsoid, point.values, space_values)
             known, prediction = predict(point.values)
             notes.append(f"{point.name}: {said}; moved inward to {low:.2f} of its radius")
         kept_points.append(point)
@@ -523,5 +536,7 @@ def build_family(
                 prediction=prediction,
             )
         )
-    coverage = family_coverage(ellipsoid, kept_points, space, weights)
-    return Family(gender, kind, ellipsoid, coverage, tuple(manikins), notes=tuple(notes))
+    coverage = family_coverage(ellipsoid, kept_points, space_values, weights)
+    return Family(
+        gender, kind, ellipsoid, coverage, tuple(manikins), notes=tuple(notes), space=fitted_in
+    )
