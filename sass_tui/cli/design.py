@@ -12,12 +12,10 @@ from sass_tui.cli.common.options import (
     SubParsers,
     add_db_option,
     add_virtual_option,
-    weighting_name,
 )
-from sass_tui.cli.fit import DEFAULT_POPULATION, mix_argument
+from sass_tui.cli.fit import DEFAULT_POPULATION, mix_argument, weighted_population
 from sass_tui.db.populations.design import Designed, design
 from sass_tui.db.populations.fit import check_mix
-from sass_tui.db.populations.shipped import load_weights
 from sass_tui.db.query.query import joined, parse, parse_option
 from sass_tui.model.population.design import DesignError
 from sass_tui.model.vocabulary import GENDERS
@@ -129,13 +127,8 @@ def run(args: argparse.Namespace) -> int:
     check_mix(args.mix)
     if args.gender is not None and args.mix is not None:
         raise DesignError("give --gender or --mix, not both")
-    weighting = weighting_name(args)
     conn = open_db(args)
-    target = None
-    if weighting is not None:
-        target = load_weights(conn, weighting)
-        if target.target.is_virtual and args.population == DEFAULT_POPULATION:
-            population = parse_option(target.target.population, weighting)
+    target, population = weighted_population(conn, args, population)
     mix = args.mix
     if args.gender is not None:
         population = joined(

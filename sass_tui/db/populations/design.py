@@ -37,6 +37,7 @@ from sass_tui.db.populations.fit import (
     check_mix,
     fit_test,
     limit_verdicts,
+    one_field,
     target_population,
 )
 from sass_tui.db.query.query import (
@@ -99,17 +100,10 @@ def _is_unknown(c: Comparison) -> bool:
 
 def limit_spec(text: str, expr: Expr, query: str) -> LimitSpec | None:
     """The term's limit with unknowns, or None for a term without `?`."""
-    comparisons = list(expr.comparisons())
-    if not any(_is_unknown(c) for c in comparisons):
+    if not any(_is_unknown(c) for c in expr.comparisons()):
         return None
-    shape = isinstance(expr, Comparison) or (
-        isinstance(expr, And)
-        and len(comparisons) == 2  # a range: its two ends
-        and all(isinstance(t, Comparison) for t in expr.terms)
-        and comparisons[0].field == comparisons[1].field
-        and {c.op[0] for c in comparisons} == {"<", ">"}
-    )
-    if not shape:
+    comparisons = one_field(expr)
+    if comparisons is None:
         raise QueryError(
             f"{text}: a limit with ? is one field's: FIELD <= ?, FIELD >= ?, "
             "FIELD BETWEEN ? AND ? (joined to the other limits by AND)",

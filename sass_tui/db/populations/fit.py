@@ -97,9 +97,9 @@ class LimitBounds:
     index: int = 0  # which of the fields read per person (fit_test's `read` columns)
 
 
-def limit_bounds(expr: Expr) -> LimitBounds | None:
-    """The bounds of a limit on one numeric field (None for any other limit:
-    words, an OR, several fields)."""
+def one_field(expr: Expr) -> list[Comparison] | None:
+    """The comparisons of a limit on one field: `FIELD op v`, or a range
+    (`BETWEEN`, or `FIELD > a AND FIELD < b` in parentheses); None otherwise."""
     comparisons = list(expr.comparisons())
     one = isinstance(expr, Comparison) or (
         isinstance(expr, And)
@@ -108,7 +108,14 @@ def limit_bounds(expr: Expr) -> LimitBounds | None:
         and comparisons[0].field == comparisons[1].field
         and {c.op[0] for c in comparisons} == {"<", ">"}
     )
-    if not one or any(
+    return comparisons if one else None
+
+
+def limit_bounds(expr: Expr) -> LimitBounds | None:
+    """The bounds of a limit on one numeric field (None for any other limit:
+    words, an OR, several fields)."""
+    comparisons = one_field(expr)
+    if comparisons is None or any(
         isinstance(c.value, str) or c.op not in ("<", "<=", ">", ">=") for c in comparisons
     ):
         return None
