@@ -16,7 +16,8 @@ left in the survey's own proportions.  The share solved is the one `sass
 fit` prints first for the same limits, and the fit test is run on the
 solved limits to report it (`Designed.fit`).
 
-No Textual, no argument parsing, no printing.
+No Textual, no argument parsing; `format_design` is the text `sass design`
+prints and the Fit Test screen shows.
 """
 
 from __future__ import annotations
@@ -246,3 +247,43 @@ def _fixed(
     known = found & ~np.isnan(rows).any(axis=1)
     ok = known & (np.nan_to_num(rows, nan=0.0) > 0.5).all(axis=1)
     return ok, known
+
+
+def _share(value: float | None) -> str:
+    return "-" if value is None else f"{value:.1f} %"
+
+
+def format_design(result: Designed) -> str:
+    fit = result.fit
+    lines = [
+        f"Design for {result.percent:g} % of: {fit.population} ({fit.population_size} people)",
+        f"Weighted: {result.weighted_by}",
+        "",
+    ]
+    width = max(len("limit"), *(len(t) for t in result.texts))
+    lines.append(f"{'limit':<{width}}  {'excludes below':>14}  {'excludes above':>14}")
+    for text, limit in zip(result.texts, result.solved):
+        if limit is None:
+            lines.append(f"{text:<{width}}  {'(fixed)':>14}  {'':>14}")
+            continue
+        below = "-" if limit.low is None else _share(100.0 * limit.excluded_below)
+        above = "-" if limit.high is None else _share(100.0 * limit.excluded_above)
+        lines.append(f"{text:<{width}}  {below:>14}  {above:>14}")
+    solving = [s for s in result.design.split if s > 0]
+    how = (
+        "the weighted quantile"
+        if len(solving) == 1 and sum(1 for s in result.solved if s is not None) == 1
+        else "exclusion split "
+        + ("equally" if len(set(solving)) == 1 else "as --split gives")
+        + " between the limits with ?"
+    )
+    lines += [
+        f"Solved: {how}; a range with both ends ? is the shortest for its share; "
+        "values rounded outward (0.1)",
+        "",
+        f"Accommodated (checked with sass fit): {_share(fit.weighted_percent)}   "
+        + ", ".join(f"{g} {_share(s.percent)}" for g, s in fit.genders.items()),
+    ]
+    if fit.not_measured:
+        lines.append(f"Not measured for {fit.not_measured} people: left out of every share")
+    return "\n".join(lines) + "\n"

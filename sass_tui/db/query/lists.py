@@ -38,6 +38,7 @@ from sass_tui.db.engine.schema import DatabaseError, connect, transaction
 from sass_tui.db.people.ansur import import_ansur_into
 from sass_tui.db.people.flatfile import FlatFiles, import_flat_into
 from sass_tui.db.people.individual import fetch_individual, person_record
+from sass_tui.db.populations.design import Designed, design
 from sass_tui.db.populations.fit import fit_test, limit_histograms
 from sass_tui.db.populations.population import population_of
 from sass_tui.db.populations.shipped import load_weights
@@ -489,6 +490,22 @@ class QueryLists:
             self._conn, limits, population, progress=progress, cancel=cancel, target=weights
         )
         return result, limit_histograms(self._conn, limits, population, cancel=cancel)
+
+    @_serialised
+    def design(
+        self,
+        limits: str,
+        percent: float,
+        population: str,
+        cancel: Cancel | None = None,
+        target: str | None = None,
+    ) -> tuple[Designed, tuple[LimitHistogram, ...]]:
+        """The `?` of `limits` solved for `percent` of `population` as `sass
+        design` solves them (db/populations/design.py), and the histograms of
+        the solved limits."""
+        designed = design(self._conn, limits, percent, population, None, self._target(target))
+        solved = " AND ".join(designed.texts)
+        return designed, limit_histograms(self._conn, solved, population, cancel=cancel)
 
     @_serialised
     def population_of(
