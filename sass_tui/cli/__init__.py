@@ -55,6 +55,16 @@ VERBS: tuple[Verb, ...] = (
     ),
     Verb("task", "a task's joint moments and the percent capable of doing it", "task"),
     Verb(
+        "niosh",
+        "the Revised NIOSH Lifting Equation: recommended weight limit and lifting index",
+        "niosh",
+    ),
+    Verb(
+        "handling",
+        "Liberty Mutual equations: loads women and men accept to lift, lower, push, pull, carry",
+        "handling",
+    ),
+    Verb(
         "family",
         "manikin family: boundary figures of a coverage ellipsoid, coverage counted",
         "family",
