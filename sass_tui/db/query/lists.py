@@ -158,6 +158,11 @@ def lost_lists(counts: dict[str, int]) -> str | None:
     )
 
 
+def _target(conn: Any, name: str | None) -> TargetWeights | None:
+    """The target population (or virtual one) `name` and its weights; None without."""
+    return None if not name else load_weights(conn, name)
+
+
 class QueryLists:
     def __init__(self, conn: Any):
         # sqlite3's connection, or db/engine/postgres.py's PostgresConnection
@@ -485,7 +490,7 @@ class QueryLists:
     ) -> tuple[FitResult, tuple[LimitHistogram, ...]]:
         """The fit test of `limits` over `population` and its histograms
         (db/populations/fit.py); with a `target`'s name, weighted to it too (db/populations/targets.py)."""
-        weights = self._target(target)
+        weights = _target(self._conn, target)
         result = fit_test(
             self._conn, limits, population, progress=progress, cancel=cancel, target=weights
         )
@@ -503,7 +508,9 @@ class QueryLists:
         """The `?` of `limits` solved for `percent` of `population` as `sass
         design` solves them (db/populations/design.py), and the histograms of
         the solved limits."""
-        designed = design(self._conn, limits, percent, population, None, self._target(target))
+        designed = design(
+            self._conn, limits, percent, population, None, _target(self._conn, target)
+        )
         solved = " AND ".join(designed.texts)
         return designed, limit_histograms(self._conn, solved, population, cancel=cancel)
 
@@ -524,7 +531,7 @@ class QueryLists:
             title=title,
             progress=progress,
             cancel=cancel,
-            target=self._target(target),
+            target=_target(self._conn, target),
         )
 
     @_serialised
@@ -537,12 +544,11 @@ class QueryLists:
         """The percentile table of every measure over the query's people
         (db/populations/stats.py), weighted to a target or a virtual population by name."""
         with interruptible(self._conn, cancel, "the table"):
-            return stats_table(self._conn, list(EVERY_MEASURE), query, weights=self._target(target))
+            return stats_table(
+                self._conn, list(EVERY_MEASURE), query, weights=_target(self._conn, target)
+            )
 
     # --- target populations and the real-people scope ----------------------
-    def _target(self, name: str | None) -> TargetWeights | None:
-        return None if not name else load_weights(self._conn, name)
-
     @_serialised
     def target_names(self) -> list[str]:
         """The names of the target populations and virtual populations
