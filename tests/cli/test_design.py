@@ -5,7 +5,6 @@ real (ANSUR II), target (NHANES-weighted) and virtual people."""
 
 from __future__ import annotations
 
-import csv
 import json
 
 import numpy as np
@@ -13,6 +12,7 @@ import pytest
 
 from sass_tui.cli import main
 from tests._paths import SHARED
+from tests.db.test_virtual import by_cumulative_weight, nhanes
 
 NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
 VIRTUAL = "nhanes-2017-2020"
@@ -23,35 +23,20 @@ SEAT = (
 
 
 def nhanes_adults() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Adults 20+ with a height and a weight (the virtual population's people):
-    stature (cm), gender code (1 male, 2 female) and WTMECPRP."""
+    """Adults 20+ with a height and a weight (the virtual population's people,
+    tests/db/test_virtual.py's reading of the CSV): stature (cm), gender code
+    (1 male, 2 female) and WTMECPRP."""
     if not NHANES_CSV.is_file():
         pytest.skip("../shared/data/nhanes is absent")
-    lines = [
-        line
-        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
-    rows = [
-        r
-        for r in csv.DictReader(lines)
-        if r["RIDAGEYR"] != "NA"
-        and float(r["RIDAGEYR"]) >= 20
-        and r["BMXHT"] != "NA"
-        and r["BMXWT"] != "NA"
-    ]
-    return (
-        np.array([float(r["BMXHT"]) for r in rows]),
-        np.array([int(r["RIAGENDR"]) for r in rows]),
-        np.array([float(r["WTMECPRP"]) for r in rows]),
-    )
+    (men, men_w), (women, women_w) = nhanes("1", "BMXHT", "BMXWT"), nhanes("2", "BMXHT", "BMXWT")
+    stature = np.concatenate([men[:, 0], women[:, 0]])
+    code = np.concatenate([np.ones(len(men), int), np.full(len(women), 2)])
+    return stature, code, np.concatenate([men_w, women_w])
 
 
-def by_cumulative_weight(values: np.ndarray, weights: np.ndarray, q: float) -> float:
-    """The smallest value whose cumulative weight share reaches q."""
-    order = np.argsort(values)
-    share = np.cumsum(weights[order]) / weights.sum()
-    return float(values[order][np.searchsorted(share, q)])
+def nhanes_mass() -> np.ndarray:
+    """BMXWT of the same adults as nhanes_adults(), in its order."""
+    return np.concatenate([nhanes(code, "BMXWT")[0][:, 0] for code in ("1", "2")])
 
 
 def run_json(capsys, *argv: str) -> dict:
@@ -202,22 +187,3 @@ def test_a_family_of_both_genders_counts_with_survey_weights(people_db, tmp_path
     assert family["coverage"]["within_ranges"] == pytest.approx(own, abs=0.05)
     genders = {m["name"]: m["nearest"]["name"].split()[-2] for m in family["manikins"]}
     assert set(genders.values()) == {"M", "F"}
-
-
-def nhanes_mass() -> np.ndarray:
-    """BMXWT of the same adults as nhanes_adults(), in its order."""
-    lines = [
-        line
-        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
-    return np.array(
-        [
-            float(r["BMXWT"])
-            for r in csv.DictReader(lines)
-            if r["RIDAGEYR"] != "NA"
-            and float(r["RIDAGEYR"]) >= 20
-            and r["BMXHT"] != "NA"
-            and r["BMXWT"] != "NA"
-        ]
-    )
