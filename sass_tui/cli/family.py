@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from types import ModuleType
 
 from sass_tui.cli.common.database_access import open_db
 from sass_tui.cli.common.options import (
@@ -113,12 +114,14 @@ def run(args: argparse.Namespace) -> int:
     population = parse_option(args.population, "--population")  # parsed once, passed on
     weighting = weighting_name(args)
     conn = open_db(args)
+    extras: ModuleType | None = None
+    if weighting is not None or args.gltf:
+        # deferred: cli.common.family_extras (db.shipped, model.gltf) — off sass family (sass_tui/startup.py)
+        from sass_tui.cli.common import family_extras as extras
     weighted_to = None
     if weighting is not None:
-        # deferred: db.shipped (db.targets) — off sass family (sass_tui/startup.py)
-        from sass_tui.db.populations.shipped import load_weights
-
-        weighted_to = load_weights(conn, weighting)
+        assert extras is not None
+        weighted_to = extras.load_weights(conn, weighting)
         if weighted_to.target.is_virtual and args.population == DEFAULT_POPULATION:
             # its virtual people
             population = parse_option(weighted_to.target.population, weighting)
@@ -134,7 +137,10 @@ def run(args: argparse.Namespace) -> int:
         space="log mass" if args.space == "log-mass" else "as measured",
     )
     written = write_family(
-        family, args.output, Figure.default(args.gender or "male"), gltf=args.gltf
+        family,
+        args.output,
+        Figure.default(args.gender or "male"),
+        gltf=extras.export_gltf if extras is not None and args.gltf else None,
     )
     out = sys.stdout
     coverage = written.coverage

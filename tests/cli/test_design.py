@@ -177,9 +177,12 @@ def test_a_family_of_both_genders_counts_with_survey_weights(people_db, tmp_path
     mass = nhanes_mass()
     out = tmp_path / "both"
     argv = ["--db", str(people_db), "family", "--virtual", VIRTUAL, "--measures", "stature,mass"]
-    assert main([*argv, "--coverage", "95", "-o", str(out)]) == 0
+    assert main([*argv, "--coverage", "95", "--gltf", "-o", str(out)]) == 0
     family = json.loads((out / "family.json").read_text(encoding="utf-8"))
     assert family["gender"] == "both"
+    for manikin in family["manikins"]:  # --gltf: each body as .glb too
+        glb = next(f for f in manikin["files"] if f.endswith(".glb"))
+        assert (out / glb).read_bytes()[:4] == b"glTF"
     (s_low, s_high), (m_low, m_high) = family["ranges"]["stature"], family["ranges"]["mass"]
     within = (stature >= s_low) & (stature <= s_high) & (mass >= m_low) & (mass <= m_high)
     own = 100 * weight[within].sum() / weight.sum()

@@ -9,21 +9,26 @@ coverage and writes none (the `sass fit` row of sass_tui/startup.py).
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.files.atomic import write_text_atomic
 from sass_tui.model.files.figfile import write_fig
-from sass_tui.model.files.gltf import export_gltf
 from sass_tui.model.files.hanim_x3d import export_hanim
 from sass_tui.model.population.accommodation import Family
 
 
 def write_family(
-    family: Family, directory: str | Path, population: Figure, gltf: bool = False
+    family: Family,
+    directory: str | Path,
+    population: Figure,
+    gltf: Callable[[Figure, Path], object] | None = None,
 ) -> Family:
-    """Write a .fig and an .x3d per manikin (with `gltf` a .glb too) and
+    """Write a .fig and an .x3d per manikin (with `gltf`, model/files/gltf.py's
+    export_gltf, a .glb too: the caller imports it, `sass family` only for
+    --gltf) and
     family.json into `directory` (each file atomically); returns the family
     with each manikin's files.  A family of both genders sizes each manikin
     against its own gender's population figure."""
@@ -39,8 +44,8 @@ def write_family(
         write_fig(figure, out / f"{stem}.fig")
         export_hanim(figure, out / f"{stem}.x3d")
         files = [f"{stem}.fig", f"{stem}.x3d"]
-        if gltf:
-            export_gltf(figure, out / f"{stem}.glb")
+        if gltf is not None:
+            gltf(figure, out / f"{stem}.glb")
             files.append(f"{stem}.glb")
         manikins.append(replace(manikin, files=tuple(files)))
     written = replace(family, manikins=tuple(manikins))
