@@ -48,6 +48,11 @@ VERBS: tuple[Verb, ...] = (
         "predict",
     ),
     Verb("fit", "fit test: the share of a population that design limits accommodate", "fit"),
+    Verb(
+        "design",
+        "design limits: solve the ? of limits so that they accommodate a share",
+        "design",
+    ),
     Verb("task", "a task's joint moments and the percent capable of doing it", "task"),
     Verb("reach", "where the figure's hands can go: reach measures, a point, an envelope", "reach"),
     Verb(

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from types import ModuleType
 
 from sass_tui.cli.common.database_access import open_db
 from sass_tui.cli.common.options import (
@@ -14,7 +15,7 @@ from sass_tui.cli.common.options import (
     weighting_name,
     within_range_of,
 )
-from sass_tui.db.populations.family import load_family
+from sass_tui.db.populations.family import BOTH, load_family
 from sass_tui.db.query.query import parse_option
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.files.family_files import write_family
@@ -56,7 +57,20 @@ def register(commands: SubParsers) -> None:
     )
     add_db_option(family)
     family.add_argument(
-        "--gender", choices=GENDERS, required=True, help="the gender of the people covered"
+        "--gender",
+        choices=GENDERS,
+        help="the gender of the people covered (default: one family of both genders, "
+        "weighted: equal genders, or a target's survey weights)",
+    )
+    family.add_argument(
+        "--space",
+        choices=("log-mass", "measured"),
+        default="log-mass",
+        help="where the coverage ellipsoid is fitted: log-mass (default: mass as its "
+        "logarithm, near normal; no manikin lighter than a living adult) or measured",
+    )
+    family.add_argument(
+        "--gltf", action="store_true", help="write each manikin's body as glTF (.glb) too"
     )
     family.add_argument(
         "--measures",
@@ -104,33 +118,44 @@ def run(args: argparse.Namespace) -> int:
     weighting = weighting_name(args)
     within_range = within_range_of(args)
     conn = open_db(args)
+    extras: ModuleType | None = None
+    if weighting is not None or args.gltf:
+        # deferred: cli.common.family_extras (db.shipped, model.gltf) — off sass family (sass_tui/startup.py)
+        from sass_tui.cli.common import family_extras as extras
     weighted_to = None
     if weighting is not None:
-        # deferred: db.shipped (db.targets) — off sass family (sass_tui/startup.py)
-        from sass_tui.db.populations.shipped import load_weights
-
-        weighted_to = load_weights(conn, weighting, only_within_range=within_range)
+        assert extras is not None
+        weighted_to = extras.load_weights(conn, weighting, only_within_range=within_range)
         if weighted_to.target.is_virtual and args.population == DEFAULT_POPULATION:
             # its virtual people
             population = parse_option(weighted_to.target.population, weighting)
+    gender = args.gender or BOTH
     family = load_family(
         conn,
-        args.gender,
+        gender,
         args.measures,
         args.coverage / 100.0,
         args.kind,
         population,
         weighted_to=weighted_to,
+        space="log mass" if args.space == "log-mass" else "as measured",
     )
-    written = write_family(family, args.output, Figure.default(args.gender))
+    written = write_family(
+        family,
+        args.output,
+        Figure.default(args.gender or "male"),
+        gltf=extras.export_gltf if extras is not None and args.gltf else None,
+    )
     out = sys.stdout
     coverage = written.coverage
     people = "people" if weighted_to is None else "people unweighted"
     out.write(
-        f"{args.gender} {args.kind} family over {', '.join(written.measures)}: "
+        f"{gender} {args.kind} family over {', '.join(written.measures)}: "
         f"{len(written.manikins)} manikins in {args.output}\n"
         + (f"weighted: {weighted_to.target.words()}\n" if weighted_to is not None else "")
-        + f"coverage of the {coverage.n} {args.gender} people"
+        + f"fitted with {written.to_json()['space']}\n"
+        + "".join(f"note: {note}\n" for note in written.notes)
+        + f"coverage of the {coverage.n} {'' if gender == BOTH else gender + ' '}people"
         + (" (weighted shares)" if weighted_to is not None else "")
         + (f" ({coverage.missing} not measured, left out)" if coverage.missing else "")
         + ":\n"

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from sass_tui.cli.common.database_access import open_db
 from sass_tui.cli.common.options import (
@@ -18,12 +18,12 @@ from sass_tui.cli.common.options import (
 )
 from sass_tui.db.populations.fit import check_mix, fit_test
 from sass_tui.db.populations.fit_table import format_table
-from sass_tui.db.query.query import compile_conjuncts, parse, parse_option
+from sass_tui.db.query.query import ParsedQuery, compile_conjuncts, parse, parse_option
 from sass_tui.model.strength.published_strength import parse_strength_limit
 from sass_tui.model.vocabulary import GENDERS
 
 if TYPE_CHECKING:
-    pass
+    from sass_tui.db.populations.targets import TargetWeights
 
 DEFAULT_POPULATION = (
     "source = ansur2"  # = sass_tui.db.populations.fit.DEFAULT_POPULATION (no import here)
@@ -100,6 +100,24 @@ def register(commands: SubParsers) -> None:
     fit.set_defaults(func=run)
 
 
+def weighted_population(
+    conn: Any, args: argparse.Namespace, population: ParsedQuery
+) -> tuple[TargetWeights | None, ParsedQuery]:
+    """The target `--target`/`--virtual` names (None without) and the people
+    to test: a virtual population's own people unless --population says."""
+    weighting = weighting_name(args)
+    if weighting is None:
+        return None, population
+    # deferred: db.shipped (db.targets) — off sass fit (sass_tui/startup.py)
+    from sass_tui.db.populations.shipped import load_weights
+
+    target = load_weights(conn, weighting, only_within_range=within_range_of(args))
+    if target.target.is_virtual and args.population == DEFAULT_POPULATION:
+        # its virtual people, not the soldiers
+        population = parse_option(target.target.population, weighting)
+    return target, population
+
+
 def run(args: argparse.Namespace) -> int:
     # Check everything before opening the database: a bad query touches nothing.
     # Each query is parsed here once and passed on parsed.
@@ -108,18 +126,8 @@ def run(args: argparse.Namespace) -> int:
     population = parse_option(args.population, "--population")
     check_mix(args.mix)
     strength = [parse_strength_limit(text) for text in args.strength]
-    weighting = weighting_name(args)
-    within_range = within_range_of(args)
     conn = open_db(args)
-    target = None
-    if weighting is not None:
-        # deferred: db.shipped (db.targets) — off sass fit (sass_tui/startup.py)
-        from sass_tui.db.populations.shipped import load_weights
-
-        target = load_weights(conn, weighting, only_within_range=within_range)
-        if target.target.is_virtual and args.population == DEFAULT_POPULATION:
-            # its virtual people, not the soldiers
-            population = parse_option(target.target.population, weighting)
+    target, population = weighted_population(conn, args, population)
     result = fit_test(
         conn,
         limits,

@@ -24,9 +24,11 @@ def test_the_center_manikin_is_the_mens_mean(people_db, ansur_dir, tmp_path, cap
     assert center["values"]["stature"] == pytest.approx(
         np.mean([float(r["stature"]) for r in men]) / 10, abs=1e-3
     )  # mm in the CSV
+    # fitted with log mass (the default space): the center is the geometric mean
     assert center["values"]["mass"] == pytest.approx(
-        np.mean([float(r["weightkg"]) for r in men]) / 10, abs=1e-3
+        np.exp(np.mean([np.log(float(r["weightkg"]) / 10) for r in men])), abs=1e-3
     )  # the CSV's weightkg is in tenths of a kg
+    assert family["space"] == "log mass"
     assert family["coverage"]["people"] == len(men)
     for manikin in family["manikins"]:
         assert all((out / name).is_file() for name in manikin["files"])

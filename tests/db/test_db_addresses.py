@@ -62,6 +62,7 @@ def test_sass_serve_read_only_on_an_address_tries_the_server(tmp_path, monkeypat
     "argv",
     [
         ["fit", "stature <= 190 cm"],
+        ["design", "--accommodate", "95", "stature <= ?"],
         ["family", "--gender", "female", "--measures", "stature,mass", "-o", "F"],
         ["population", "--query", "stature > 1", "-o", "x.dat"],
         ["predict", "--gender", "male", "--known", "stature=180cm"],

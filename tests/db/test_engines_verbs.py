@@ -62,6 +62,12 @@ LIMITS = (
             "source = synthetic",
             "strength.elbow_flexion.max > 20 ft-lb AND girth.right_upper_arm.z > 28 cm",
         ],
+        [
+            "design",
+            "--accommodate",
+            "90",
+            "stature <= 190 cm AND mass <= ? AND measure.hipbreadthsitting BETWEEN ? AND ?",
+        ],
     ],  # fmt: skip
 )
 def test_fit_prints_the_same_on_both_engines(initialised, capsys, argv):

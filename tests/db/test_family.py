@@ -43,7 +43,8 @@ def written(shared_target, tmp_path_factory):
     out = tmp_path_factory.mktemp("family") / "seat"
     done = _sass(
         "family", "--db", shared_target, "--gender", "male", "--measures",
-        "stature,weightkg,hipbreadthsitting", "--coverage", "95", "-o", str(out),
+        "stature,weightkg,hipbreadthsitting", "--coverage", "95", "--space", "measured",
+        "-o", str(out),
     )  # fmt: skip
     assert done.returncode == 0, done.stderr
     return out, done.stdout
@@ -99,7 +100,12 @@ def test_nearest_people_are_in_the_population(written, conn):
 
 def test_population_chooses_the_people(conn):
     family = load_family(
-        conn, "female", ["stature", "mass"], 0.9, population="source = ansur2 AND age < 30"
+        conn,
+        "female",
+        ["stature", "mass"],
+        0.9,
+        population="source = ansur2 AND age < 30",
+        space="as measured",
     )
     assert (
         family.coverage.n

@@ -96,9 +96,18 @@ def test_the_weighted_share_is_the_samples(made, sample, capsys, q, r):
     assert result["target"]["name"] == "civ"
     assert abs(result["target"]["percent"] - own) <= 3.0
     assert 0 < result["target"]["effective_n"] < result["accommodated"]["female"]["n"]
-    # The unweighted soldiers beside it fail the same check: the weighting did it.
+    # Every share is weighted, the women's too (the target is women only), and
+    # it is the headline; the unweighted soldiers fail the same check: the
+    # weighting did it.
+    assert result["accommodated"]["female"]["percent"] == pytest.approx(
+        result["target"]["percent"], abs=1e-6
+    )
+    assert result["accommodated"]["weighted"]["percent"] == pytest.approx(
+        result["target"]["percent"], abs=1e-6
+    )
     if q == 50:
-        assert abs(result["accommodated"]["female"]["percent"] - own) > 3.0
+        plain = run_json(capsys, "fit", "--db", made, "--format", "json", limits)
+        assert abs(plain["accommodated"]["female"]["percent"] - own) > 3.0
 
 
 def test_the_weighted_population_has_the_samples_median(made, sample, tmp_path, capsys):

@@ -197,7 +197,9 @@ def test_a_written_family_reads_back_and_counts_right(csv_values, predictor, ans
     columns = [csv_values.fields.index(f) for f in FIELDS]
     matrix = csv_values.matrix[women][:, columns]
     names = [n for n, w in zip(csv_values.names, women) if w]
-    family = build_family("female", FIELDS, csv_values.ids[women], names, matrix, 0.9, predictor)
+    family = build_family(
+        "female", FIELDS, csv_values.ids[women], names, matrix, 0.9, predictor, space="as measured"
+    )
     written = write_family(family, tmp_path / "family", Figure.default("female"))
     data = json.loads((tmp_path / "family" / "family.json").read_text())
     assert data["gender"] == "female" and data["measures"] == FIELDS

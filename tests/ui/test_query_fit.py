@@ -10,6 +10,7 @@ from test_query_measurements import csv_rows
 from test_query_screen import choose
 
 from sass_tui.db.engine.schema import connect
+from sass_tui.db.populations.design import design, format_design
 from sass_tui.db.populations.fit import fit_test
 from sass_tui.db.populations.fit_table import format_table
 from sass_tui.ui.query.fit_screen import FitScreen
@@ -156,5 +157,34 @@ def test_the_fit_screen_says_when_it_is_done_and_f1_lists_its_keys(drive, app_at
             await pilot.press("escape")
             await settle(pilot)
             assert isinstance(app.screen, QueryScreen)
+
+    drive(scenario())
+
+
+@pytest.mark.slow
+def test_design_limits_typed_on_the_fit_screen_are_solved_as_sass_design(drive, app_at, db):
+    """`e`, limits with ? and a share, Enter: the screen shows what sass design
+    answers for them over the same people (and its fit test)."""
+    limits = "stature <= ? AND measure.hipbreadthsitting <= ?"
+    with connect(db) as conn:
+        expected = design(conn, limits, 90.0, "source = ansur2")
+
+    async def scenario():
+        async with app_at(SIZE, db=True) as (app, pilot):
+            await open_fit_screen(pilot)
+            screen = app.screen
+            await pilot.press("e")
+            await pilot.pause()
+            assert app.focused is screen.query_one("#fit-limits")
+            screen.query_one("#fit-limits").value = limits
+            screen.query_one("#fit-accommodate").value = "90"
+            await pilot.press("enter")
+            await settle(pilot)
+            shown = str(screen.query_one("#fit-table").render())
+            assert shown.startswith(format_design(expected).strip().splitlines()[0])
+            for text in expected.texts:
+                assert text in shown
+            assert "Accommodated (checked with sass fit): 90." in shown
+            assert screen.limits == limits
 
     drive(scenario())

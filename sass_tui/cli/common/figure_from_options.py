@@ -4,7 +4,9 @@ a Session as the TUI builds it: `sass fig` and `sass export`."""
 from __future__ import annotations
 
 import argparse
+from types import ModuleType
 
+from sass_tui.cli.common.options import weighting_name
 from sass_tui.model.body.figure import Figure, FigureError
 from sass_tui.model.files.popfile import PopulationData, read_global_beside, read_population_file
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
@@ -15,6 +17,28 @@ from sass_tui.model.units import parse_quantity
 def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
     """Build the figure the options describe, through a Session as the TUI
     does (each edit checked the same way); returns it and the load warnings."""
+    weighting = weighting_name(args)
+    db_side: ModuleType | None = None
+    if args.person is not None or weighting is not None:
+        # deferred: cli.person_option (the db package, numpy) — off sass fig, sass export hanim, sass export gltf (sass_tui/startup.py)
+        from sass_tui.cli.common import person_option as db_side
+    if weighting is not None:
+        given = [
+            o
+            for o, v in (
+                ("--person", args.person),
+                ("--girth", args.girth),
+                ("--jntlmt", args.jntlmt),
+                ("--cmass", args.cmass),
+                ("--global", args.global_file),
+            )
+            if v
+        ]
+        if given:
+            raise FigureError(
+                f"--{'virtual' if args.virtual else 'target'} sizes the figure from its people; "
+                f"leave out {', '.join(given)}"
+            )
     if args.person is not None:
         given = [o for o, v in (("--mass", args.mass), ("--stature", args.stature)) if v]
         given += [o for o, v in (("--gender", args.gender),) if v]
@@ -29,6 +53,10 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
         )
         if option
     }
+    weighted = None
+    if db_side is not None and weighting is not None:
+        weighted = db_side.weighted_groups(args, weighting)
+        files = {g: weighted[g] for g in (GIRTH, CENTER_OF_MASS) if g in weighted}
     gender = args.gender
     if gender is None and args.person is None and files:
         # A population of one gender (e.g. `sass population` over women) sizes that gender.
@@ -41,7 +69,9 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
         warnings += [w for w in data.warnings if w not in warnings]
     # The people's own stature and mass `sass population` wrote beside its girth file.
     stature_and_mass: PopulationData | None
-    if args.global_file:
+    if weighted is not None:
+        stature_and_mass = weighted.get(GLOBAL)
+    elif args.global_file:
         stature_and_mass = read_population_file(args.global_file, GLOBAL)
     else:
         beside = read_global_beside(args.girth) if args.girth else None
@@ -79,9 +109,6 @@ def figure_from_args(args: argparse.Namespace) -> tuple[Figure, list[str]]:
                 f"0.5th-99.5th percentile range, {outside[0]:.1f}-{outside[1]:.1f} {unit}; "
                 "accepted"
             )
-    if args.person is not None:
-        # deferred: cli.person_option (the db package, numpy) — off sass fig, sass export hanim, sass export gltf (sass_tui/startup.py)
-        from sass_tui.cli.common.person_option import person_figure
-
-        return person_figure(args, session.figure), warnings
+    if db_side is not None and args.person is not None:
+        return db_side.person_figure(args, session.figure), warnings
     return session.figure, warnings

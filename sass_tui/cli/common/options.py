@@ -180,6 +180,14 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--jntlmt", metavar="F", help="joint-limit population file")
     parser.add_argument("--cmass", metavar="F", help="center-of-mass population file")
     parser.add_argument(
+        "--target",
+        metavar="NAME",
+        help="size the figure from a target population's people (sass target), weighted: "
+        "stature, mass, girths and centers of mass at the weighted --percentile of --gender, "
+        "as sass population --target then --girth/--cmass/--global give",
+    )
+    add_virtual_option(parser)
+    parser.add_argument(
         "--global",
         dest="global_file",
         metavar="F",

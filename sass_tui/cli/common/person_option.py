@@ -12,7 +12,10 @@ import argparse
 from sass_tui.cli.common.database_access import open_db
 from sass_tui.db.people.individual import fetch_individual, find_person, person_record
 from sass_tui.db.people.individual import person_figure as figure_of
+from sass_tui.db.populations.population import population_of
+from sass_tui.db.populations.shipped import load_weights
 from sass_tui.model.body.figure import Figure
+from sass_tui.model.files.popfile import PopulationData
 
 
 def person_figure(args: argparse.Namespace, population: Figure) -> Figure:
@@ -25,6 +28,17 @@ def person_figure(args: argparse.Namespace, population: Figure) -> Figure:
     figure = figure_of(person, population)
     figure.set_figure_type(population.figure_type)
     return figure
+
+
+def weighted_groups(args: argparse.Namespace, weighting: str) -> dict[str, PopulationData]:
+    """The population files `sass population --target NAME` (or `--virtual`)
+    would write, in memory: girth, center of mass and the people's own
+    stature and mass, their weighted 5th, 50th and 95th percentiles."""
+    conn = open_db(args)
+    try:
+        return dict(population_of(conn, target=load_weights(conn, weighting)).groups)
+    finally:
+        conn.close()
 
 
 def named_person_record(args: argparse.Namespace) -> dict[str, object]:

@@ -15,6 +15,7 @@ POSTGRES_COMMANDS = (
     "query",
     "person",
     "fit",
+    "design",
     "target",
     "population",
     "predict",

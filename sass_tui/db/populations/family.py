@@ -21,10 +21,12 @@ from sass_tui.db.populations.fit import DEFAULT_POPULATION, FitError
 from sass_tui.db.populations.predict import open_predictor
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query.query import ParsedQuery, joined, parsed
-from sass_tui.model.population.accommodation import Family, build_family
+from sass_tui.model.population.accommodation import SPACES, Family, build_family
 from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.population.targets import kish_effective_n
 from sass_tui.model.vocabulary import GENDERS
+
+BOTH = "both"  # a family of both genders' people (sass family without --gender)
 
 if TYPE_CHECKING:
     from sass_tui.db.engine.database import Database
@@ -43,6 +45,7 @@ def load_family(
     progress: Progress | None = None,
     cancel: Cancel | None = None,
     weighted_to: TargetWeights | None = None,
+    space: str = SPACES[0],
 ) -> Family:
     """The manikin family of `gender` over `measures` (see
     `sass_tui.model.population.accommodation`): the population's people of that gender,
@@ -51,23 +54,35 @@ def load_family(
     `progress(steps done, 3)`: the people read, the model, the family built;
     `cancel` stops it with Cancelled between them (it writes nothing).
     `weighted_to` (a target population of `gender`): the target's people, weighted."""
-    if gender not in GENDERS:
-        raise FitError(f"gender must be {' or '.join(GENDERS)}, not {gender!r}")
+    if gender not in (*GENDERS, BOTH):
+        raise FitError(f"gender must be {' or '.join(GENDERS)} (or {BOTH}), not {gender!r}")
     fields = [measure_field(m) for m in measures]
     people_query = parsed(population)  # its own error, before the combined query's
     if weighted_to is not None:
         made = weighted_to.target
-        if gender not in made.genders:
+        if gender != BOTH and gender not in made.genders:
             raise FitError(f"the target {made.name} is of {made.gender} people, not {gender}")
         if people_query.text != made.population:
             people_query = joined(people_query, made.population)
     steps = Steps(progress, cancel, "the family")
     steps(0, 3)
     with interruptible(conn, cancel, "the family"):
-        values = load_values(conn, fields, joined(people_query, f"gender = {gender}"))
+        # the people's stature and mass beside: the manikins are kept inside their ranges
+        body_fields = ["stature", "mass"]
+        selected = people_query if gender == BOTH else joined(people_query, f"gender = {gender}")
+        loaded = load_values(conn, fields + body_fields, selected)
     if weighted_to is not None and weighted_to.target.is_virtual:
         # a virtual population's people are its weighted ones (--within-range leaves some out)
-        values = values.only(weighted_to.ids)
+        loaded = loaded.only(weighted_to.ids)
+    values = Values(
+        ids=loaded.ids,
+        names=loaded.names,
+        genders=loaded.genders,
+        fields=loaded.fields[: len(fields)],
+        units=loaded.units[: len(fields)],
+        matrix=loaded.matrix[:, : len(fields)],
+    )
+    body = loaded.matrix[:, len(fields) :]
     steps(1, 3)
     if len(values) == 0:
         raise FitError(f"the population {people_query.text!r} has no {gender} people")
@@ -75,8 +90,25 @@ def load_family(
         model = predictor if predictor is not None else open_predictor(conn)
     steps(2, 3)
     weights = None if weighted_to is None else weighted_to.of(values.ids)
+    if gender == BOTH and weighted_to is None:
+        # the genders weighed equally, as the fit test's default mix
+        sexes = np.array(values.genders, dtype=object)
+        weights = np.array(
+            [1.0 / max(1, int((sexes == g).sum())) for g in values.genders], dtype=float
+        )
     family = build_family(
-        gender, fields, values.ids, values.names, values.matrix, target, model, kind, weights
+        gender,
+        fields,
+        values.ids,
+        values.names,
+        values.matrix,
+        target,
+        model,
+        kind,
+        weights,
+        body=body,
+        genders=values.genders if gender == BOTH else None,
+        space=space,
     )
     if weighted_to is not None and weights is not None:
         used = ~np.isnan(values.matrix).any(axis=1)

@@ -20,6 +20,11 @@ shares below are the expected ones (the mean of each person's probability):
   the same measured people: what univariate percentiles suggest.
 - Weighted by the mix (default equal): sum of mix[g] * percent[g] over the
   genders the population has (the mix renormalised over them).
+- With a target population (`--target`, `--virtual`): every share is weighted
+  by the people's survey weights, and the headline weighted share has the
+  genders in the survey's own proportions (the mix is each gender's weight
+  over the measured people's), unless a mix is given: then it is that mix of
+  the per-gender weighted shares.
 - Per limit: `excluded`, the measured people failing it (whatever the other
   limits say), and `only_limit`, those it alone excludes (they pass every
   other limit).
@@ -43,15 +48,18 @@ from sass_tui.db.engine.dialect import dialect_of, ids_in
 from sass_tui.db.people.values import load_values
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query.query import (
+    CompiledQuery,
     ParsedQuery,
     compile_conjuncts,
     joined,
     parse_query,
     parsed,
     real_people_only,
+    resolve_field,
 )
+from sass_tui.db.query.query_tree import And, Comparison, Expr
 from sass_tui.model.errors import SassError
-from sass_tui.model.population.targets import kish_effective_n
+from sass_tui.model.population.targets import kish_effective_n, weighted_percentile
 from sass_tui.model.strength.percent_capable import strength_limit_probability
 from sass_tui.model.vocabulary import GENDERS
 
@@ -79,12 +87,88 @@ class GenderShare:
 
 
 @dataclass(frozen=True)
+class LimitBounds:
+    """A limit on one numeric field's value: `FIELD op v` or a range of two."""
+
+    field: str
+    column: tuple[str, str]  # (table, column) it reads
+    unit: str
+    low: float | None
+    high: float | None
+    index: int = 0  # which of the fields read per person (fit_test's `read` columns)
+
+
+def one_field(expr: Expr) -> list[Comparison] | None:
+    """The comparisons of a limit on one field: `FIELD op v`, or a range
+    (`BETWEEN`, or `FIELD > a AND FIELD < b` in parentheses); None otherwise."""
+    comparisons = list(expr.comparisons())
+    one = isinstance(expr, Comparison) or (
+        isinstance(expr, And)
+        and len(comparisons) == 2  # a range: its two ends
+        and all(isinstance(t, Comparison) for t in expr.terms)
+        and comparisons[0].field == comparisons[1].field
+        and {c.op[0] for c in comparisons} == {"<", ">"}
+    )
+    return comparisons if one else None
+
+
+def limit_bounds(expr: Expr) -> LimitBounds | None:
+    """The bounds of a limit on one numeric field (None for any other limit:
+    words, an OR, several fields)."""
+    comparisons = one_field(expr)
+    if comparisons is None or any(
+        isinstance(c.value, str) or c.op not in ("<", "<=", ">", ">=") for c in comparisons
+    ):
+        return None
+    low = high = None
+    for c in comparisons:
+        if c.op[0] == ">":
+            low = float(c.value)
+        else:
+            high = float(c.value)
+    first = comparisons[0]
+    _table, _column, unit, _words = resolve_field(first.field.split("."))
+    return LimitBounds(first.field, (first.table, first.column), unit or "", low, high)
+
+
+@dataclass(frozen=True)
+class ExcludedSide:
+    """The people a limit excludes at one end (below its low or above its high)."""
+
+    n: int
+    percent: float  # their weight over the measured people's (the headline's weighting)
+    median_stature: float | None  # weighted, cm
+    median_mass: float | None  # weighted, kg
+    genders: dict[str, float]  # each gender's share of them (percent of their weight)
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "n": self.n,
+            "percent": round(self.percent, 4),
+            "median_stature": _round(self.median_stature),
+            "median_mass": _round(self.median_mass),
+            "genders": {g: round(v, 4) for g, v in self.genders.items()},
+        }
+
+
+@dataclass(frozen=True)
 class LimitShare:
     limit: str
     excluded: float  # measured people failing this limit (expected, for a strength limit)
     only_limit: float  # measured people failing this limit and no other
     not_measured: int  # population people lacking the value(s) it reads
     percent: dict[str, float | None]  # its own share per gender (measured people)
+    below: ExcludedSide | None = None  # a one-field numeric limit's excluded, by end
+    above: ExcludedSide | None = None
+
+
+@dataclass(frozen=True)
+class FailedLimit:
+    limit: str
+    measure: str | None  # None: not one field's numeric limit
+    value: float | None
+    unit: str
+    side: str | None  # "below" its low end, "above" its high end
 
 
 @dataclass(frozen=True)
@@ -93,6 +177,7 @@ class FailingPerson:
     name: str
     gender: str
     limits: tuple[str, ...]
+    failed: tuple[FailedLimit, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -172,12 +257,31 @@ class FitResult:
                     "only_limit": b.only_limit,
                     "not_measured": b.not_measured,
                     "percent": {g: _round(p) for g, p in b.percent.items()},
+                    "below": None if b.below is None else b.below.to_json(),
+                    "above": None if b.above is None else b.above.to_json(),
                 }
                 for b in self.by_limit
             ],
             "failing": None
             if self.failing is None
-            else [{"id": f.id, "name": f.name, "limits": list(f.limits)} for f in self.failing],
+            else [
+                {
+                    "id": f.id,
+                    "name": f.name,
+                    "limits": list(f.limits),
+                    "failed": [
+                        {
+                            "limit": x.limit,
+                            "measure": x.measure,
+                            "value": _round(x.value),
+                            "unit": x.unit,
+                            "side": x.side,
+                        }
+                        for x in f.failed
+                    ],
+                }
+                for f in self.failing
+            ],
         } | ({} if self.target is None else {"target": self.target.to_json()})
 
 
@@ -233,36 +337,11 @@ def fit_test(
     (docs/strength.md), after the query's."""
     # Each query parsed once; a query's errors point into its own text.
     limit_query = parsed(limits)
-    people_query = parsed(population)
-    if target is not None:
-        base = target.target.base_query
-        people_query = (
-            parsed(base)
-            if people_query.text == target.target.population
-            else joined(people_query, base, text=f"({people_query.text}) AND {base}")
-        )
+    people_query = target_population(parsed(population), target)
     steps = Steps(progress, cancel, "the fit test")
     steps(0, 3)
     weights = check_mix(mix)
-    # One compilation of both, so the population's terms share the limits' joins
-    # and its WHERE runs inline (a subquery for it costs half as much again).
-    people, *terms = compile_conjuncts(limit_query, first=people_query)
-    # The population's term is compiled as a part, unscoped: real people unless it names a source.
-    people = real_people_only(people)
-    # The body a strength limit predicts from, only when there is one.
-    body = "p.age, p.mass, p.stature, " if strength_limits else ""
-    # Each limit is a column: 1/0 (SQLite) or true/false (PostgreSQL), NULL unmeasured.
-    dialect = dialect_of(conn)
-    limit_sql = [t.sql(dialect) for t in terms]
-    where, where_params = people.sql(dialect)
-    columns = body + ", ".join(f"({condition})" for condition, _ in limit_sql)
-    sql = (
-        f"SELECT p.id_num, p.gender, {columns} FROM {people.from_clause()} "
-        f"WHERE {where} ORDER BY p.id_num"
-    )
-    params = tuple(v for _, values in limit_sql for v in values) + where_params
-    with interruptible(conn, cancel, "the fit test"):
-        rows = conn.execute(sql, params).fetchall()
+    rows, terms, bounds = _limit_rows(conn, limit_query, people_query, cancel)
     if target is not None and target.target.is_virtual:
         # a virtual population's people are its weighted ones (--within-range leaves some out)
         member = frozenset(target.ids.tolist())
@@ -274,8 +353,10 @@ def fit_test(
     gender = np.array([r[1] for r in rows], dtype=object)
     # (people, limits): 1.0 passes, 0.0 fails, NaN not measured; a strength
     # limit's column is each person's probability of meeting it (docs/strength.md).
-    first = 5 if strength_limits else 2
+    first = len(rows[0]) - len(terms)
     passes = np.array([r[first:] for r in rows], dtype=float).reshape(len(rows), len(terms))
+    # age, mass, stature, then the limits' fields: who is excluded, and how
+    read = np.array([r[2:first] for r in rows], dtype=float).reshape(len(rows), first - 2)
     texts = tuple(t.text for t in terms)
     if strength_limits:
         body_of = [
@@ -286,17 +367,88 @@ def fit_test(
         ]
         passes = np.hstack([passes, np.column_stack(predicted)])
         texts += tuple(f"{limit.text} (predicted)" for limit in strength_limits)
+        bounds += [None] * len(strength_limits)
     steps(2, 3)
-    # A virtual population's people stand for their survey's: each gender's
-    # shares are weighted by them (a real target's are given beside, unweighted).
-    virtual = target.of(ids) if target is not None and target.target.is_virtual else None
+    # A target's people stand for their survey's: every share is weighted by
+    # them, the genders in the survey's proportions unless a mix is given.
+    survey = target.of(ids) if target is not None else None
     result = _summarise(
-        conn, texts, people_query.text, weights, ids, gender, passes, failing, virtual
+        conn,
+        texts,
+        people_query.text,
+        weights,
+        ids,
+        gender,
+        passes,
+        failing,
+        survey,
+        survey_mix=target is not None and mix is None,
+        read=read,
+        bounds=bounds,
     )
     if target is not None:
         result = replace(result, target=_target_share(target, ids, passes, gender))
     steps(3, 3)
     return result
+
+
+def _limit_rows(
+    conn: sqlite3.Connection,
+    limit_query: ParsedQuery,
+    people_query: ParsedQuery,
+    cancel: Cancel | None,
+) -> tuple[list[Any], list[CompiledQuery], list[LimitBounds | None]]:
+    """One row per person of the population: id, gender, age, mass, stature,
+    the value of each one-field numeric limit's field (`bounds`), then each
+    limit 1/0 (SQLite) or true/false (PostgreSQL), NULL not measured; the
+    limits compiled, and each one's bounds (None: not one field's numbers)."""
+    # One compilation of both, so the population's terms share the limits' joins
+    # and its WHERE runs inline (a subquery for it costs half as much again).
+    people, *terms = compile_conjuncts(limit_query, first=people_query)
+    # The population's term is compiled as a part, unscoped: real people unless it names a source.
+    people = real_people_only(people)
+    dialect = dialect_of(conn)
+    limit_sql = [t.sql(dialect) for t in terms]
+    where, where_params = people.sql(dialect)
+    bounds = [limit_bounds(t.tree) for t in terms]
+    alias_of = {"person": "p"} | {table: alias for alias, table in people.tables}
+    read = list(dict.fromkeys(b.column for b in bounds if b is not None))
+    columns = ", ".join(
+        ["p.age", "p.mass", "p.stature"]
+        + [f"{alias_of[table]}.{column}" for table, column in read]
+        + [f"({condition})" for condition, _ in limit_sql]
+    )
+    sql = (
+        f"SELECT p.id_num, p.gender, {columns} FROM {people.from_clause()} "
+        f"WHERE {where} ORDER BY p.id_num"
+    )
+    params = tuple(v for _, values in limit_sql for v in values) + where_params
+    with interruptible(conn, cancel, "the fit test"):
+        rows: list[Any] = conn.execute(sql, params).fetchall()
+    bounds = [None if b is None else replace(b, index=read.index(b.column)) for b in bounds]
+    return rows, terms, bounds
+
+
+def limit_verdicts(
+    conn: sqlite3.Connection, limits: ParsedQuery, people: ParsedQuery
+) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.float64]]:
+    """The people of `people` (id order) and, per limit of `limits`, 1.0 if they
+    pass it, 0.0 if not, NaN not measured: the fit test's own evaluation."""
+    rows, terms, _bounds = _limit_rows(conn, limits, people, None)
+    ids = np.fromiter((r[0] for r in rows), dtype=np.int64, count=len(rows))
+    first = len(rows[0]) - len(terms) if rows else 0
+    passes = np.array([r[first:] for r in rows], dtype=float).reshape(len(rows), len(terms))
+    return ids, passes
+
+
+def target_population(people: ParsedQuery, target: TargetWeights | None) -> ParsedQuery:
+    """The people a fit test (or a design) runs over: `people`, within the target's."""
+    if target is None:
+        return people
+    base = target.target.base_query
+    if people.text == target.target.population:
+        return parsed(base)
+    return joined(people, base, text=f"({people.text}) AND {base}")
 
 
 def _target_share(
@@ -331,6 +483,9 @@ def _summarise(
     passes: npt.NDArray[np.float64],
     want_failing: bool,
     person_weights: npt.NDArray[np.float64] | None = None,
+    survey_mix: bool = False,
+    read: npt.NDArray[np.float64] | None = None,
+    bounds: Sequence[LimitBounds | None] = (),
 ) -> FitResult:
     w = np.ones(len(ids)) if person_weights is None else person_weights
     unmeasured = np.isnan(passes)
@@ -367,11 +522,27 @@ def _summarise(
             percent=100.0 * float((w[counted] * fits[counted]).sum()) / weight if n else None,
             naive_percent=naive,
         )
+    if survey_mix:  # each gender's share of the measured people's weight
+        weights = {g: float(w[(gender == g) & measured].sum()) for g in genders}
     used = {g: w for g, w in weights.items() if g in genders and genders[g].n > 0 and w > 0}
     total = sum(used.values())
     mix = {g: w / total for g, w in used.items()} if total > 0 else {}
     weighted = _weighted(mix, {g: s.percent for g, s in genders.items()})
     naive = _weighted(mix, {g: s.naive_percent for g, s in genders.items()})
+    # The headline's weight of each person: theirs (or 1) scaled to the mix.
+    headline = np.zeros(len(ids))
+    for name, share in mix.items():
+        mine = (gender == name) & measured
+        total_g = float(w[mine].sum())
+        if total_g > 0:
+            headline[mine] = w[mine] * share / total_g
+    padded = (list(bounds) + [None] * len(limits))[: len(limits)]
+    sides = [
+        (None, None)
+        if read is None or b is None
+        else _sides(read, b, fails[:, k], headline, gender)
+        for k, b in enumerate(padded)
+    ]
     by_limit = tuple(
         LimitShare(
             limit=limit,
@@ -379,10 +550,14 @@ def _summarise(
             only_limit=_count(float(alone[k][measured].sum())),
             not_measured=int(unmeasured[:, k].sum()),
             percent=limit_percent[k],
+            below=sides[k][0],
+            above=sides[k][1],
         )
         for k, limit in enumerate(limits)
     )
-    failing = _failing(conn, limits, ids, gender, fails) if want_failing else None
+    failing = (
+        _failing(conn, limits, ids, gender, fails, read, list(bounds)) if want_failing else None
+    )
     return FitResult(
         limits=limits,
         population=population,
@@ -393,6 +568,57 @@ def _summarise(
         by_limit=by_limit,
         failing=failing,
     )
+
+
+def _below(bounds: LimitBounds, value: npt.NDArray[np.float64]) -> npt.NDArray[np.bool_]:
+    """Of people failing the limit: who fails its low end (the rest fail its high end)."""
+    if bounds.low is None:
+        return np.zeros(len(value), dtype=bool)
+    if bounds.high is None:
+        return np.ones(len(value), dtype=bool)
+    with np.errstate(invalid="ignore"):
+        below: npt.NDArray[np.bool_] = value <= bounds.low
+    return below
+
+
+def _sides(
+    read: npt.NDArray[np.float64],
+    bounds: LimitBounds,
+    fails: npt.NDArray[np.bool_],
+    headline: npt.NDArray[np.float64],
+    gender: npt.NDArray[Any],
+) -> tuple[ExcludedSide | None, ExcludedSide | None]:
+    """Who a one-field limit excludes below its low end and above its high end."""
+    below = _below(bounds, read[:, 3 + bounds.index])
+    total = float(headline.sum())
+    out: list[ExcludedSide | None] = []
+    for end, beyond in ((bounds.low, fails & below), (bounds.high, fails & ~below)):
+        if end is None:
+            out.append(None)
+            continue
+        mine = beyond & (headline > 0)
+        weight = float(headline[mine].sum())
+        out.append(
+            ExcludedSide(
+                n=int(mine.sum()),
+                percent=100.0 * weight / total if total > 0 else 0.0,
+                median_stature=_median(read[mine, 2], headline[mine]),
+                median_mass=_median(read[mine, 1], headline[mine]),
+                genders={
+                    str(g): 100.0 * float(headline[mine & (gender == g)].sum()) / weight
+                    for g in GENDERS
+                    if weight > 0 and bool((mine & (gender == g)).any())
+                },
+            )
+        )
+    return out[0], out[1]
+
+
+def _median(values: npt.NDArray[np.float64], weights: npt.NDArray[np.float64]) -> float | None:
+    keep = ~np.isnan(values)
+    if not keep.any():
+        return None
+    return float(weighted_percentile(values[keep], weights[keep], [50.0])[0])
 
 
 def _count(expected: float) -> float:
@@ -419,6 +645,8 @@ def _failing(
     ids: npt.NDArray[np.int64],
     gender: npt.NDArray[Any],
     fails: npt.NDArray[np.bool_],
+    read: npt.NDArray[np.float64] | None = None,
+    bounds: list[LimitBounds | None] | None = None,
 ) -> tuple[FailingPerson, ...]:
     rows = np.flatnonzero(fails.any(axis=1))
     condition, listed = ids_in(conn, "id_num", [int(i) for i in ids[rows]])
@@ -431,9 +659,25 @@ def _failing(
             name=names.get(int(ids[r]), ""),
             gender=str(gender[r]),
             limits=tuple(limit for k, limit in enumerate(limits) if fails[r, k]),
+            failed=tuple(
+                _failed(limit, read, int(r), (bounds or [])[k] if k < len(bounds or []) else None)
+                for k, limit in enumerate(limits)
+                if fails[r, k]
+            ),
         )
         for r in rows
     )
+
+
+def _failed(
+    limit: str, read: npt.NDArray[np.float64] | None, row: int, bounds: LimitBounds | None
+) -> FailedLimit:
+    """The person's value of the limit's field, and which end they fail."""
+    if bounds is None or read is None:
+        return FailedLimit(limit, None, None, "", None)
+    value = read[row : row + 1, 3 + bounds.index]
+    side = "below" if bool(_below(bounds, value)[0]) else "above"
+    return FailedLimit(limit, bounds.field, float(value[0]), bounds.unit, side)
 
 
 @dataclass(frozen=True)

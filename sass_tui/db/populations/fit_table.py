@@ -21,6 +21,10 @@ def outside_line(shares: dict[str, float]) -> str:
     )
 
 
+def _number(value: float | None, unit: str) -> str:
+    return "-" if value is None else f"{value:.1f} {unit}"
+
+
 def format_table(result: FitResult) -> str:
     lines = [
         f"Design limits: {' AND '.join(result.limits)}",
@@ -31,29 +35,43 @@ def format_table(result: FitResult) -> str:
             f"Not measured for {result.not_measured} people (lacking a limited value): "
             "left out of every share"
         )
+    mix = ", ".join(f"{g} {100 * w:.0f} %" for g, w in result.mix.items())
+    if result.target is not None:
+        # One headline: the target's people weighted by their survey's weights.
+        survey_share, headline = result.target.percent, result.weighted_percent
+        survey = (
+            survey_share is not None
+            and headline is not None
+            and abs(survey_share - headline) < 1e-9
+        )
+        genders = "the survey's proportions" if survey else "the mix given"
+        lines.append(
+            f"Accommodated: {_percent(result.weighted_percent)} "
+            f"(weighted: {result.target.words}; genders in {genders}: {mix})"
+        )
     lines += ["", f"{'':<10} {'people':>7} {'fit':>7} {'accommodated':>13} {'naive':>9}"]
     for share in result.genders.values():
         lines.append(
             f"{share.gender:<10} {share.n:>7} {share.fit:>7} {_percent(share.percent):>13} "
             f"{_percent(share.naive_percent):>9}"
         )
-    mix = ", ".join(f"{g} {100 * w:.0f} %" for g, w in result.mix.items())
     lines.append(
         f"{'weighted':<10} {'':>7} {'':>7} {_percent(result.weighted_percent):>13} "
         f"{_percent(result.naive_percent):>9}   ({mix})"
     )
     if result.target is not None:
-        lines.append(
-            f"{'target':<10} {'':>7} {'':>7} {_percent(result.target.percent):>13} "
-            f"{'':>9}   (weighted: {result.target.words})"
-        )
         if result.target.outside_share:
             lines.append(outside_line(result.target.outside_share))
-        if result.target.virtual:
+        if not survey:
             lines.append(
-                "VIRTUAL people: each gender's accommodated share is weighted by their "
-                "survey's weights; people and fit are counts"
+                f"{'survey':<10} {'':>7} {'':>7} {_percent(result.target.percent):>13} "
+                f"{'':>9}   (the genders in the survey's proportions)"
             )
+        lines.append(
+            ("VIRTUAL people: " if result.target.virtual else "")
+            + "each accommodated share is weighted by the survey's weights; "
+            "people and fit are counts"
+        )
     lines += [
         "",
         "naive = the product of each limit's own share (what univariate percentiles suggest)",
@@ -74,11 +92,33 @@ def format_table(result: FitResult) -> str:
             f"{b.limit:<{width}} {b.excluded:>9} {b.only_limit:>11} {b.not_measured:>13}"
             + "".join(f" {_percent(b.percent.get(g)):>13}" for g in result.genders)
         )
+    sided = [b for b in result.by_limit if b.below is not None or b.above is not None]
+    if sided and result.failing is None:
+        lines += [
+            "",
+            "Who each limit excludes (share of the weighted people; their median "
+            "stature and mass; genders):",
+        ]
+        for b in sided:
+            for word, side in (("below", b.below), ("above", b.above)):
+                if side is None or side.n == 0:
+                    continue
+                genders = ", ".join(f"{g} {v:.0f} %" for g, v in side.genders.items())
+                lines.append(
+                    f"  {b.limit}: {word} {side.n} people, {side.percent:.1f} %; median "
+                    f"{_number(side.median_stature, 'cm')}, {_number(side.median_mass, 'kg')}; "
+                    f"{genders}"
+                )
     if result.failing is not None:
         lines += ["", f"{len(result.failing)} people fail a limit:"]
         for person in result.failing:
+            failed = [
+                x.limit
+                if x.measure is None or x.value is None
+                else f"{x.measure} {x.value:g} {x.unit} {x.side} ({x.limit})".replace("  ", " ")
+                for x in person.failed
+            ] or list(person.limits)
             lines.append(
-                f"{person.id:>7}  {person.name:<20.20} {person.gender:<6} "
-                + "; ".join(person.limits)
+                f"{person.id:>7}  {person.name:<20.20} {person.gender:<6} " + "; ".join(failed)
             )
     return "\n".join(lines) + "\n"

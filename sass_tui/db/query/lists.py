@@ -38,6 +38,7 @@ from sass_tui.db.engine.schema import DatabaseError, connect, transaction
 from sass_tui.db.people.ansur import import_ansur_into
 from sass_tui.db.people.flatfile import FlatFiles, import_flat_into
 from sass_tui.db.people.individual import fetch_individual, person_record
+from sass_tui.db.populations.design import Designed, design
 from sass_tui.db.populations.fit import fit_test, limit_histograms
 from sass_tui.db.populations.population import population_of
 from sass_tui.db.populations.shipped import load_weights
@@ -155,6 +156,11 @@ def lost_lists(counts: dict[str, int]) -> str | None:
         + " and ".join(held)
         + " went with the old connection."
     )
+
+
+def _target(conn: Any, name: str | None) -> TargetWeights | None:
+    """The target population (or virtual one) `name` and its weights; None without."""
+    return None if not name else load_weights(conn, name)
 
 
 class QueryLists:
@@ -484,11 +490,29 @@ class QueryLists:
     ) -> tuple[FitResult, tuple[LimitHistogram, ...]]:
         """The fit test of `limits` over `population` and its histograms
         (db/populations/fit.py); with a `target`'s name, weighted to it too (db/populations/targets.py)."""
-        weights = self._target(target)
+        weights = _target(self._conn, target)
         result = fit_test(
             self._conn, limits, population, progress=progress, cancel=cancel, target=weights
         )
         return result, limit_histograms(self._conn, limits, population, cancel=cancel)
+
+    @_serialised
+    def design(
+        self,
+        limits: str,
+        percent: float,
+        population: str,
+        cancel: Cancel | None = None,
+        target: str | None = None,
+    ) -> tuple[Designed, tuple[LimitHistogram, ...]]:
+        """The `?` of `limits` solved for `percent` of `population` as `sass
+        design` solves them (db/populations/design.py), and the histograms of
+        the solved limits."""
+        designed = design(
+            self._conn, limits, percent, population, None, _target(self._conn, target)
+        )
+        solved = " AND ".join(designed.texts)
+        return designed, limit_histograms(self._conn, solved, population, cancel=cancel)
 
     @_serialised
     def population_of(
@@ -507,7 +531,7 @@ class QueryLists:
             title=title,
             progress=progress,
             cancel=cancel,
-            target=self._target(target),
+            target=_target(self._conn, target),
         )
 
     @_serialised
@@ -520,12 +544,11 @@ class QueryLists:
         """The percentile table of every measure over the query's people
         (db/populations/stats.py), weighted to a target or a virtual population by name."""
         with interruptible(self._conn, cancel, "the table"):
-            return stats_table(self._conn, list(EVERY_MEASURE), query, weights=self._target(target))
+            return stats_table(
+                self._conn, list(EVERY_MEASURE), query, weights=_target(self._conn, target)
+            )
 
     # --- target populations and the real-people scope ----------------------
-    def _target(self, name: str | None) -> TargetWeights | None:
-        return None if not name else load_weights(self._conn, name)
-
     @_serialised
     def target_names(self) -> list[str]:
         """The names of the target populations and virtual populations

@@ -196,9 +196,12 @@ class _TreeBuilder(Transformer[Token, Expr]):
     """The lark parse -> the typed tree, every field resolved and every value
     checked and converted to its stored unit (errors point at the token)."""
 
-    def __init__(self, text: str):
+    def __init__(self, text: str, unknowns: bool = False):
         super().__init__()
         self.text = text
+        # `?` is an unknown only where a command solves for it (sass design): its
+        # comparison holds NaN, which no SQL is ever made of (design_limits).
+        self.unknowns = unknowns
         self.tables: dict[str, None] = {}  # tables named so far, in order
         self._field_token: Token | None = None
 
@@ -246,6 +249,16 @@ class _TreeBuilder(Transformer[Token, Expr]):
         return ("text", value, ())
 
     @v_args(inline=True)
+    def unknown(self, value: Token) -> _Value:
+        if not self.unknowns:
+            self._fail(
+                "? is an unknown for sass design to solve; give a number here, "
+                "e.g. stature <= 190 cm",
+                value,
+            )
+        return ("unknown", value, ())
+
+    @v_args(inline=True)
     def comparison(self, names: list[Token], op: Token, value: _Value) -> Comparison:
         return self._comparison(names, _OPERATORS[str(op)], op, value)
 
@@ -253,7 +266,7 @@ class _TreeBuilder(Transformer[Token, Expr]):
     def between(self, names: list[Token], low: _Value, high: _Value) -> Expr:
         """`field BETWEEN low AND high`: `field >= low AND field <= high`, as SQL defines it."""
         for kind, token, _parts in (low, high):
-            if kind != "number":
+            if kind not in ("number", "unknown"):
                 self._fail(
                     f"BETWEEN takes two numbers, not {str(token)!r}; for words write "
                     f"{'.'.join(names)} = ... OR {'.'.join(names)} = ...",
@@ -276,6 +289,14 @@ class _TreeBuilder(Transformer[Token, Expr]):
         table, column, unit, words = self._resolve(names)
         field = ".".join(str(n).lower() for n in names)
         kind, token, parts = value
+        if kind == "unknown":
+            if words is not None or sql_op not in ("<", "<=", ">", ">="):
+                self._fail(
+                    f"? is solved only as a number limit: {'.'.join(names)} <= ?, >= ?, "
+                    "< ?, > ? or BETWEEN ? AND ?",
+                    token,
+                )
+            return Comparison(field, table, column, sql_op, math.nan)
         if words is TEXT:
             if kind not in ("word", "text"):
                 self._fail(
@@ -539,8 +560,10 @@ class ParsedQuery(NamedTuple):  # not a dataclass: see model.names.Row
     or_column: int | None  # the column of an OR at the top level: no terms to split
 
 
-def parse(text: str) -> ParsedQuery:
-    """Parse and check a query; raises QueryError pointing at the bad token."""
+def parse(text: str, unknowns: bool = False) -> ParsedQuery:
+    """Parse and check a query; raises QueryError pointing at the bad token.
+    With `unknowns`, a `?` may stand for a limit's value (`stature <= ?`,
+    `BETWEEN ? AND ?`): its comparison's value is NaN (sass design solves it)."""
     if not text.strip():
         raise QueryError(
             "the query is empty; expected e.g. gender = male AND stature > 180 cm", text, 1
@@ -563,7 +586,7 @@ def parse(text: str) -> ParsedQuery:
         ) from None
     except UnexpectedInput as exc:  # pragma: no cover - other lark errors
         raise QueryError(str(exc), text, getattr(exc, "column", None)) from None
-    builder = _TreeBuilder(text)
+    builder = _TreeBuilder(text, unknowns)
     try:
         expr: Expr = builder.transform(tree)
     except VisitError as exc:
@@ -661,6 +684,7 @@ _TOKEN_WORDS = {
     "NUMBER": "a number",
     "UNIT": "a unit",
     "STRING": "a quoted text",
+    "UNKNOWN": "? (an unknown, sass design only)",
     "LPAR": "(",
     "RPAR": ")",
     "DOT": ".",

@@ -19,6 +19,7 @@ field: NAME ("." NAME)*
 value: NUMBER (UNIT NUMBER)* UNIT?   -> number
      | NAME                          -> word
      | STRING                        -> quoted
+     | UNKNOWN                       -> unknown
 _OR.3: /or\b/i
 _AND.3: /and\b/i
 _NOT.3: /not\b/i
@@ -26,6 +27,7 @@ _BETWEEN.3: /between\b/i
 OP: "<=" | ">=" | "!=" | "<>" | "<" | ">" | "=" | "≤" | "≥" | "≠"
 NAME.2: /[A-Za-z_][A-Za-z0-9_]*/
 STRING: /'[^']*'|"[^"]*"/
+UNKNOWN: "?"
 NUMBER: /[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?/
 UNIT: /(ft|lbf?|N|n)[-·*]?(lbf?|lbs|m|ft)\b|deg\/s|rad\/s|°\/s|[A-Za-z°"]+/
 %import common.WS

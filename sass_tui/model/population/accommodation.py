@@ -356,6 +356,8 @@ class Family:
     coverage: FamilyCoverage
     manikins: tuple[Manikin, ...]
     target: dict[str, Any] | None = None  # the target population it is weighted to (JSON)
+    notes: tuple[str, ...] = ()  # manikins moved inside the people's own ranges
+    space: str = "as measured"  # where the ellipsoid was fitted (SPACES)
 
     @property
     def measures(self) -> tuple[str, ...]:
@@ -396,6 +398,8 @@ class Family:
                 }
                 for m in self.manikins
             ],
+            "space": self.space if LOG_MASS in self.measures else SPACES[1],
+            "notes": list(self.notes),
         } | ({} if self.target is None else {"target": self.target})
 
     def points(self) -> list[ManikinPoint]:
@@ -403,6 +407,62 @@ class Family:
             ManikinPoint(m.name, np.zeros(0), np.array([m.values[f] for f in self.measures]))
             for m in self.manikins
         ]
+
+
+LOG_MASS: Final = "mass"  # the measure whose logarithm the ellipsoid is fitted on
+SPACES: Final = ("log mass", "as measured")  # where the ellipsoid is fitted (build_family)
+INSIDE_STEPS: Final = 30  # bisection steps moving a manikin inward (_inside)
+
+
+def _to_space(
+    measures: tuple[str, ...] | list[str], matrix: FloatArray, space: str = SPACES[0]
+) -> FloatArray:
+    """The values where the population is near normal: mass as its natural
+    logarithm (mass is right-skewed; a normal ellipsoid over it runs below
+    any living adult), every other measure as it is."""
+    out = np.array(matrix, dtype=float, copy=True)
+    for k, m in enumerate(measures):
+        if m == LOG_MASS and space == SPACES[0]:
+            with np.errstate(invalid="ignore", divide="ignore"):
+                out[:, k] = np.where(out[:, k] > 0, np.log(out[:, k]), np.nan)
+    return out
+
+
+def _from_space(
+    measures: tuple[str, ...] | list[str], values: FloatArray, space: str = SPACES[0]
+) -> FloatArray:
+    out = np.array(values, dtype=float, copy=True)
+    for k, m in enumerate(measures):
+        if m == LOG_MASS and space == SPACES[0]:
+            out[k] = math.exp(out[k])
+    return out
+
+
+def _body_ranges(body: FloatArray | None) -> tuple[tuple[float, float], tuple[float, float]] | None:
+    """The population's own range of mass (kg) and BMI (kg/m^2), from its
+    people's stature (cm) and mass (columns of `body`)."""
+    if body is None:
+        return None
+    both = body[~np.isnan(body).any(axis=1)]
+    if len(both) == 0:
+        return None
+    bmi = both[:, 1] / (both[:, 0] / 100.0) ** 2
+    return (float(both[:, 1].min()), float(both[:, 1].max())), (float(bmi.min()), float(bmi.max()))
+
+
+def _outside(
+    prediction: Prediction, ranges: tuple[tuple[float, float], tuple[float, float]]
+) -> str:
+    """What of the manikin lies outside the people's own ranges ('' if nothing)."""
+    (mass_low, mass_high), (bmi_low, bmi_high) = ranges
+    mass, stature = prediction.mass, prediction.stature
+    bmi = mass / (stature / 100.0) ** 2
+    said = []
+    if not mass_low <= mass <= mass_high:
+        said.append(f"mass {mass:.1f} kg outside the people's {mass_low:.1f}-{mass_high:.1f} kg")
+    if not bmi_low <= bmi <= bmi_high:
+        said.append(f"BMI {bmi:.1f} outside the people's {bmi_low:.1f}-{bmi_high:.1f}")
+    return "; ".join(said)
 
 
 def build_family(
@@ -415,24 +475,68 @@ def build_family(
     predictor: Predictor,
     kind: str = "boundary",
     weights: FloatArray | None = None,
+    body: FloatArray | None = None,
+    genders: tuple[str, ...] | list[str] | None = None,
+    space: str = SPACES[0],
 ) -> Family:
     """The family of one gender's people (`matrix`: people x `measures`, query-language
     field names as the predictor knows them), each point completed by `predictor`;
     with `weights` (a target population's), the ellipsoid and coverage of the weighted
-    people."""
-    ellipsoid = CoverageEllipsoid.fit(measures, matrix, target, weights)
+    people.  The ellipsoid is fitted with mass as its logarithm (`_to_space`).
+    With `body` (the same people's stature and mass), a manikin whose mass or BMI
+    falls outside the people's own range is moved inward along its direction to
+    the last point inside, and a note says so.  `gender` "both" with `genders`
+    (each person's): one family of both genders; each manikin is predicted as
+    its nearest person's gender."""
+    if space not in SPACES:
+        raise AccommodationError(f"unknown space {space!r}; expected {' or '.join(SPACES)}")
+    fitted_in = space
+    space_values = _to_space(measures, matrix, fitted_in)
+    ellipsoid = CoverageEllipsoid.fit(measures, space_values, target, weights)
     points = family_points(ellipsoid, kind)
-    coverage = family_coverage(ellipsoid, points, matrix, weights)
+    ranges = _body_ranges(body)
+    notes: list[str] = []
     manikins = []
+    kept_points = []
     for point in points:
-        known = {m: float(v) for m, v in zip(ellipsoid.measures, point.values)}
-        row, distance = nearest_person(ellipsoid, point.values, matrix)
+        row, distance = nearest_person(ellipsoid, point.values, space_values)
+        sex = gender if genders is None else str(genders[row])
+
+        def predict(values: FloatArray, sex: str = sex) -> tuple[dict[str, float], Prediction]:
+            known = {
+                m: float(v)
+                for m, v in zip(ellipsoid.measures, _from_space(measures, values, fitted_in))
+            }
+            return known, predictor.predict(sex, known)
+
+        known, prediction = predict(point.values)
+        said = "" if ranges is None else _outside(prediction, ranges)
+        if said:
+            low, high = 0.0, 1.0
+            for _ in range(INSIDE_STEPS):
+                middle = 0.5 * (low + high)
+                if _outside(
+                    predict(ellipsoid.point(point.scores * middle))[1], ranges or ((0, 0), (0, 0))
+                ):
+                    high = middle
+                else:
+                    low = middle
+            point = ManikinPoint(
+                point.name, point.scores * low, ellipsoid.point(point.scores * low)
+            )
+            row, distance = nearest_person(ellipsoid, point.values, space_values)
+            known, prediction = predict(point.values)
+            notes.append(f"{point.name}: {said}; moved inward to {low:.2f} of its radius")
+        kept_points.append(point)
         manikins.append(
             Manikin(
                 name=point.name,
                 values=known,
                 nearest=Nearest(int(ids[row]), str(names[row]), distance),
-                prediction=predictor.predict(gender, known),
+                prediction=prediction,
             )
         )
-    return Family(gender, kind, ellipsoid, coverage, tuple(manikins))
+    coverage = family_coverage(ellipsoid, kept_points, space_values, weights)
+    return Family(
+        gender, kind, ellipsoid, coverage, tuple(manikins), notes=tuple(notes), space=fitted_in
+    )

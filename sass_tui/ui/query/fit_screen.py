@@ -6,18 +6,22 @@ population, per gender, with its limit(s) drawn as vertical lines; `l` shows
 the next limited measurement.  The test runs in a worker, with a progress
 bar; Escape returns to the query screen (cancelling the test if it runs).
 `t` picks a target population (ui/query/target_picker.py): the test is run again
-on its people, weighted, and the title says so."""
+on its people, weighted, and the title says so.  `e` edits the design limits
+on the screen (Enter runs them): a `?` is an unknown, solved for the share
+typed beside (default 95 %) as `sass design` solves it
+(db/populations/design.py), and the solved limits are then fit-tested."""
 
 from __future__ import annotations
 
 from rich.text import Text
 from textual import work
 from textual.binding import Binding
-from textual.containers import ScrollableContainer
+from textual.containers import Horizontal, ScrollableContainer
 from textual.message import Message
-from textual.widgets import Static
+from textual.widgets import Input, Static
 from textual_plotext import PlotextPlot
 
+from sass_tui.db.populations.design import format_design
 from sass_tui.db.populations.fit import LimitHistogram
 from sass_tui.db.populations.fit_table import format_table
 from sass_tui.db.query.lists import DB_ERRORS, QueryLists
@@ -51,12 +55,17 @@ class FitScreen(WeightedWorkScreen):
     FitScreen #fit-title { padding: 0 1; text-style: bold; color: $text-accent; }
     FitScreen #fit-plot-title { padding: 0 1; color: $text-muted; }
     FitScreen #fit-plot { height: 1fr; min-height: 6; }
+    FitScreen #fit-edit { height: auto; }
+    FitScreen #fit-limits { width: 1fr; }
+    FitScreen #fit-accommodate { width: 12; }
     """
     BINDINGS = [
         Binding("escape", "back", "Back to the query"),
         Binding("l", "next_limit", "Next limit"),
         Binding("t", "choose_target", "Target", show=False),  # F1 lists it; the footer as it was
+        Binding("e", "edit_limits", "Edit limits", show=False),
     ]
+    AUTO_FOCUS = "#fit-scroll"  # the keys above, not the limits' input, until e
 
     TITLE_ID = "fit-title"
     ANSWER_ID = "fit-table"
@@ -70,6 +79,7 @@ class FitScreen(WeightedWorkScreen):
         super().__init__(lists, target, id="fit-screen")
         self.limits = limits
         self.population = population
+        self.percent = 95.0  # the share a `?` is solved for
         self.histograms: tuple[LimitHistogram, ...] = ()
         self.shown = 0  # which histogram is drawn
         # What was last handed to plotext: bin centers and, per gender, the counts.
@@ -77,6 +87,14 @@ class FitScreen(WeightedWorkScreen):
 
     def compose(self):
         yield Static(self.title_text(), id="fit-title")
+        with Horizontal(id="fit-edit"):
+            yield Input(
+                self.limits,
+                placeholder="design limits; ? to solve, e.g. stature <= ?",
+                id="fit-limits",
+                compact=True,
+            )
+            yield Input("95", placeholder="share %", id="fit-accommodate", compact=True)
         with ScrollableContainer(id="fit-scroll"):
             yield Static(f"Testing over {self.population}, please wait...", id="fit-table")
         yield Static("", id="fit-plot-title")
@@ -91,18 +109,46 @@ class FitScreen(WeightedWorkScreen):
     def run_work(self, work: Work) -> None:
         self.run_fit(self.lists, self.limits, self.population, work, self.target)
 
+    def action_edit_limits(self) -> None:
+        self.query_one("#fit-limits", Input).focus()
+
+    def on_input_submitted(self, event: Input.Submitted) -> None:
+        """Enter in either input: test (or solve) the limits typed."""
+        event.stop()
+        limits = self.query_one("#fit-limits", Input).value.strip()
+        if not limits:
+            self.complain("Type design limits, e.g. stature <= 190 cm or stature <= ?")
+            return
+        share = self.query_one("#fit-accommodate", Input).value.strip().removesuffix("%")
+        try:
+            self.percent = float(share)
+        except ValueError:
+            self.complain(f"The share {share!r} is no percentage; type e.g. 95")
+            return
+        self.limits = limits
+        self.query_one("#fit-title", Static).update(self.title_text())
+        self.query_one("#fit-scroll").focus()
+        self.start_work()
+
     @work(thread=True, exclusive=True, group="fit", exit_on_error=False)
     def run_fit(
         self, lists: QueryLists, limits: str, population: str, work: Work, target: str | None
     ) -> None:
         try:
-            result, histograms = lists.fit_test(
-                limits, population, work.report, work.cancel, target=target
-            )
+            if "?" in limits:
+                designed, histograms = lists.design(
+                    limits, self.percent, population, work.cancel, target=target
+                )
+                text = format_design(designed) + "\n" + format_table(designed.fit)
+            else:
+                result, histograms = lists.fit_test(
+                    limits, population, work.report, work.cancel, target=target
+                )
+                text = format_table(result)
         except DB_ERRORS as exc:
             self.post_message(FitDone(error=str(exc)))
             return
-        self.post_message(FitDone(format_table(result), histograms))
+        self.post_message(FitDone(text, histograms))
 
     def on_fit_done(self, event: FitDone) -> None:
         event.stop()
