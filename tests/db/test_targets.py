@@ -156,7 +156,17 @@ def test_the_weighted_count(made, sample, capsys):
 
 def test_the_weighted_family(made, sample, tmp_path, capsys):
     capsys.readouterr()
-    argv = ["family", "--db", made, "--gender", "female", "--measures", "stature,mass"]
+    argv = [
+        "family",
+        "--db",
+        made,
+        "--gender",
+        "female",
+        "--measures",
+        "stature,mass",
+        "--space",
+        "measured",
+    ]
     assert main([*argv, "--target", "civ", "-o", str(tmp_path / "w")]) == 0
     assert "weighted: target civ" in capsys.readouterr().out
     weighted = json.loads((tmp_path / "w" / "family.json").read_text(encoding="utf-8"))
