@@ -24,7 +24,7 @@ from tests._paths import ANSUR
 from tests._virtual_task import VIRTUAL, right_hand_sums
 from tests.db.test_targets import civilian_women, write_sample
 
-POSTURE = ["shoulder_y=90", "elbow_y=0"]
+POSTURE = ["shoulder_y=90", "elbow_y=0", "ankle_y=0"]  # ankle_y given: no lean
 
 
 @pytest.fixture(scope="module")

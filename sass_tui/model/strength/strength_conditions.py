@@ -244,4 +244,3 @@ def parse_joint_axis(text: str) -> int:
     raise StrengthError(
         f"unknown joint axis {quoted(text.strip())}; expected one of {', '.join(JOINT_AXES)}"
     )
-

@@ -36,7 +36,7 @@ from sass_tui.db.engine.database import Database
 from sass_tui.db.populations.task_people import group_words, weighted_people
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.posture import parse_angles, pose_figure
+from sass_tui.model.body.posture import parse_angles
 from sass_tui.model.errors import SassError
 from sass_tui.model.strength.published_strength import GENDER_WORDS
 from sass_tui.model.strength.task import (
@@ -44,12 +44,12 @@ from sass_tui.model.strength.task import (
     HandLoad,
     Reference,
     TaskAnswer,
-    TaskError,
     assess_populations,
     assess_task,
     hand_curves,
     hand_load,
     parse_hand_load,
+    pose_task,
 )
 from sass_tui.ui.spreadsheet.strength_page import TASK_PANEL_LINES
 from sass_tui.ui.spreadsheet.task_words import (
@@ -65,7 +65,7 @@ from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 
 CELLS = ("left", "right", "people")
 CELL_WIDTH = 26
-DEFAULT_LOAD = 60.0  # N on the right hand, down: a bag held out
+DEFAULT_LOAD = 60.0  # N the right hand exerts up: a bag held out
 
 
 @dataclass(frozen=True)
@@ -109,7 +109,8 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves]:
         chosen = references(task)
         answer = assess_task(chosen, angles, loads)
         groups = [
-            CurveGroup(r.words, pose_figure(r.figure, angles), r.figure.gender) for r in chosen
+            CurveGroup(r.words, pose_task(r.figure, angles, loads)[0], r.figure.gender)
+            for r in chosen
         ]
     else:
         db = Database.open(task.db_path)
@@ -124,7 +125,7 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves]:
         together = group_words(target, None)
         answer = assess_populations(figures, angles, loads, together)
         groups = [
-            CurveGroup(group.words, pose_figure(figure, angles), group.gender, group)
+            CurveGroup(group.words, pose_task(figure, angles, loads)[0], group.gender, group)
             for figure, group in figures
         ]
     load = next((x for x in loads if x.side == task.curve_side and x.force > 0), None)
@@ -240,7 +241,7 @@ class TaskPanel(Vertical):
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
         self.loads: dict[str, HandLoad] = {
-            "right": hand_load("right", DEFAULT_LOAD, (0.0, -1.0, 0.0))
+            "right": hand_load("right", DEFAULT_LOAD, (0.0, 1.0, 0.0))
         }
         self.people = "gender"
         self.answered_people = "gender"  # the people of the answer shown
@@ -371,8 +372,8 @@ class TaskPanel(Vertical):
                 f"virtual NAME) [{self.people}]:"
             )
         return (
-            f"Load on the {cell} hand (N, then the way it pulls: down, up, forward, back, "
-            f"left, right or X,Y,Z; 0 = none) [{self.cell_text(cell)}]:"
+            f"Force the {cell} hand exerts (N, then the way it exerts it: up, down, forward, "
+            f"back, left, right or X,Y,Z; or a mass held, kg; 0 = none) [{self.cell_text(cell)}]:"
         )
 
     def set_cell(self, cell: str, text: str) -> str:
@@ -388,12 +389,10 @@ class TaskPanel(Vertical):
         load = parse_hand_load(side, text)
         loads = {**self.loads, side: load}
         if load.force == 0:
-            del loads[side]
-        if not loads:
-            raise TaskError("a task needs a load on a hand; the loads are unchanged")
+            del loads[side]  # a posture with no hand load is a task too
         self.loads = loads
         if self.curve_side and self.curve_side not in loads:
-            self.curve_side = next(iter(loads))
+            self.curve_side = next(iter(loads), "")
         self.recompute()
         return load
 
