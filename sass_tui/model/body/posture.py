@@ -178,14 +178,19 @@ class PosedBody:
         return [_SEGMENT[j] for j in joints]
 
 
-def pose_figure(figure: Figure, angles: Angles | None = None, seated: bool = False) -> PosedBody:
+def pose_figure(
+    figure: Figure,
+    angles: Angles | None = None,
+    seated: bool = False,
+    humanoid: Humanoid | None = None,
+) -> PosedBody:
     """The figure's humanoid with `angles` applied, each checked against the
     figure's joint limits (StrengthError naming the limit); standing on the
     floor or seated (module docstring)."""
     angles = dict(angles or {})
     for (side, axis), degrees in angles.items():
         check_angle(figure, side, axis, degrees)
-    humanoid = build_humanoid(figure)
+    humanoid = humanoid or build_humanoid(figure)  # a caller posing it often builds it once
     local = _local_rotations(humanoid, angles)
     world: dict[str, npt.NDArray[np.float64]] = {}
     centers: dict[str, npt.NDArray[np.float64]] = {}

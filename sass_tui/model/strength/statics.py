@@ -43,9 +43,18 @@ def weights(body: PosedBody, segments: list[str] | None = None) -> list[Force]:
 
 
 def moment_about(point: Vector, forces: list[Force]) -> Vector:
-    total = np.zeros(3)
-    for where, force in forces:
-        total += np.cross(where - point, force)
+    if not forces:
+        return np.zeros(3)
+    r = np.array([where for where, _ in forces]) - point
+    f = np.array([force for _, force in forces])
+    # r x f, row by row, summed
+    total: Vector = np.array(
+        [
+            float((r[:, 1] * f[:, 2] - r[:, 2] * f[:, 1]).sum()),
+            float((r[:, 2] * f[:, 0] - r[:, 0] * f[:, 2]).sum()),
+            float((r[:, 0] * f[:, 1] - r[:, 1] * f[:, 0]).sum()),
+        ]
+    )
     return total
 
 

@@ -35,7 +35,7 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.hanim import LOA1
+from sass_tui.model.body.hanim import LOA1, build_humanoid
 from sass_tui.model.body.posture import Angles, PosedBody, pose_figure
 from sass_tui.model.errors import SassError
 from sass_tui.model.strength.arm_force_field import (
@@ -247,7 +247,8 @@ def _leg_moment(
     if side in stance.feet:
         forces.append(stance.feet[side])
     free = np.array([0.0, 0.5 * stance.free_moment, 0.0])
-    return -(moment_about(point, forces) + free)
+    above: npt.NDArray[np.float64] = -(moment_about(point, forces) + free)
+    return above
 
 
 def _triple(v: npt.ArrayLike) -> tuple[float, float, float]:
@@ -343,7 +344,7 @@ def _legs(moments: list[JointMoment]) -> list[tuple[JointMoment, str, str]]:
     return out
 
 
-LEAN_STEPS = 24  # bisection: the lean to 1e-6 of the ankle's range
+LEAN_STEPS = 14  # bisection: the lean to 1/16000 of the ankle's range (~0.005 deg)
 
 
 def pose_task(
@@ -359,9 +360,11 @@ def pose_task(
         body = pose_figure(figure, angles)
         return body, balance(body, hand_forces(body, loads)), angles, None
 
+    humanoid = build_humanoid(figure)
+
     def stand(lean: float) -> tuple[PosedBody, Balance, Angles]:
         leaned = {**angles, ("left", "ankle_y"): lean, ("right", "ankle_y"): lean}
-        body = pose_figure(figure, leaned)
+        body = pose_figure(figure, leaned, humanoid=humanoid)
         return body, balance(body, hand_forces(body, loads)), leaned
 
     def ahead(stance: Balance, body: PosedBody) -> float:
