@@ -129,3 +129,17 @@ def test_bad_tasks_say_what_is_wrong(capsys, argv, message):
     assert main(["task", *argv]) == 2
     err = capsys.readouterr().err
     assert message in err and "Traceback" not in err
+
+
+def test_the_hands_share_is_the_same_in_task_and_arm_force(capsys):
+    """One convention: the force the hand exerts, in both verbs, the same
+    posture (ankle_y given: the task's body does not lean; 20 N keeps it in
+    balance) and force."""
+    posture = ["shoulder_y=90", "elbow_y=0", "ankle_y=0"]
+    answer = task(capsys, *posture, "--right-load", "20N", "--right-direction", "forward",
+                  "--gender", "female")  # fmt: skip
+    hand = next(c for c in answer["capable"] if c["what"] == "right hand")
+    assert main(["strength", "arm_force", *posture, "--side", "right", "--direction", "forward",
+                 "--load", "20N", "--gender", "female", "--format", "json"]) == 0  # fmt: skip
+    arm = json.loads(capsys.readouterr().out)
+    assert hand["percent"]["women"] == arm["percent_capable"]

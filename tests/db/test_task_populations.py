@@ -138,3 +138,30 @@ def test_target_and_virtual_together_are_refused(virtual_task, capsys):
     with pytest.raises(SystemExit):
         main([*argv, "--target", "civ"])
     assert "not allowed with argument" in capsys.readouterr().err
+
+
+def test_a_real_persons_elbow_moment_is_de_levas_from_their_own_forearm(shared_target, capsys):
+    """100 N held, the forearm level: the elbow's moment within 5 % of a
+    hand computation from the man's own forearm (radiale-stylion) and hand
+    lengths with de Leva (1996)'s proportions: forearm 1.62 % of the body,
+    its centre 45.74 % from the elbow; hand 0.61 %, its centre 36.24 % of
+    the hand length; the grip (MET3) at 36.24 / 79.00 of the hand length."""
+    if not ANSUR.is_dir():
+        pytest.skip(f"the independent ANSUR II copy is not at {ANSUR}")
+    with open(ANSUR / "ANSUR_II_MALE_Public.csv", encoding="latin-1", newline="") as handle:
+        row = next(csv.DictReader(handle))
+    name = f"ANSUR II M {row.get('subjectid') or row['SubjectId']}"
+    forearm = float(row["radialestylionlength"]) / 1000
+    hand = float(row["handlength"]) / 1000
+    mass = float(row["weightkg"]) / 10
+    by_hand = (
+        100.0 * (forearm + hand * 36.24 / 79.00)
+        + 0.0162 * mass * 9.81 * 0.4574 * forearm
+        + 0.0061 * mass * 9.81 * (forearm + 0.3624 * hand)
+    )
+    argv = ["task", "right_elbow_y=90", "ankle_y=0", "--db", shared_target, "--right-load",
+            "100N", "--person", name, "--format", "json"]  # fmt: skip
+    assert main(argv) == 0
+    answer = json.loads(capsys.readouterr().out)
+    elbow = next(m for m in answer["moments_N_m"] if m["joint"] == "right elbow")
+    assert abs(elbow["moment"][0]) == pytest.approx(by_hand, rel=0.05)
