@@ -244,3 +244,42 @@ def test_task_panel_snapshot(snap_compare, new_app):
         await answered(pilot, panel)
 
     assert snap_compare(new_app(), run_before=run_before, terminal_size=SIZE)
+
+
+@pytest.mark.slow
+def test_the_task_panels_own_posture_is_kept_for_the_worksheet(app_at, drive):
+    """The posture cell: the task's own posture in place of the strength
+    page's row (`row` again follows it); the settings go to the session,
+    which the worksheet saves (model/files/task_settings.py)."""
+
+    async def scenario():
+        async with app_at(SIZE) as (app, pilot):
+            screen = app.screen
+            await pilot.press("T")
+            await wait_until(pilot, lambda: screen.task_panel is not None, "a task panel")
+            panel = screen.task_panel
+            await answered(pilot, panel)
+            await pilot.press("home", "enter")
+            await answer(pilot, "trunk_y=30 hip_y=60 shoulder_y=90")
+            await wait_until(
+                pilot,
+                lambda: (
+                    panel.posture == ("trunk_y=30", "hip_y=60", "shoulder_y=90")
+                    and not panel.computing
+                ),
+                "the task's own posture",
+            )
+            assert panel.answer.low_back.moment[0] > 20.0  # a stoop loads the low back
+            assert screen.session.task.posture == panel.posture
+            assert "trunk (L5/S1)" in cells_and_answer(panel)
+            # a bad posture is refused and the posture kept
+            await pilot.press("enter")
+            await answer(pilot, "trunk_q=3")
+            await wait_until(pilot, lambda: "trunk_q" in message(app), '"trunk_q" in message(app)')
+            assert panel.posture == ("trunk_y=30", "hip_y=60", "shoulder_y=90")
+            await pilot.press("enter")
+            await answer(pilot, "row")
+            await wait_until(pilot, lambda: not panel.own_posture, "the row's posture again")
+            assert screen.session.task.posture == ()
+
+    drive(scenario())

@@ -11,6 +11,7 @@ from sass_tui.ui.spreadsheet.spreadsheet_base import SheetScreenBase
 from sass_tui.ui.spreadsheet.strength_page import StrengthPage
 
 if TYPE_CHECKING:  # numpy-heavy: mounted the first time T is pressed
+    from sass_tui.model.files.task_settings import TaskSettings
     from sass_tui.ui.spreadsheet.task_panel import TaskPanel
 
 
@@ -27,7 +28,18 @@ class TaskCommands(SheetScreenBase):
         panel = self.task_panel
         if panel is None or not panel.display:
             return
+        kept = self.session.task
+        if panel.keep_settings is None:
+            panel.keep_settings = self._keep_task
+        if kept is not None and kept != panel.settings():
+            try:  # a worksheet's settings, opened since
+                panel.take_settings(kept)
+            except SassError as exc:
+                self.complain(f"the worksheet's task: {exc}; the Task panel keeps its own")
         panel.follow_row(self.figure, self.strength_page.row_angles())
+
+    def _keep_task(self, settings: TaskSettings) -> None:
+        self.session.task = settings
 
     def on_strength_page_row_chosen(self, event: StrengthPage.RowChosen) -> None:
         event.stop()

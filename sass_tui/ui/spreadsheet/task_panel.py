@@ -20,6 +20,7 @@ with TaskPanel.EditRequested, as the strength page does.
 from __future__ import annotations
 
 import copy
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -36,8 +37,9 @@ from sass_tui.db.engine.database import Database
 from sass_tui.db.populations.task_people import group_words, weighted_people
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.posture import parse_angles
+from sass_tui.model.body.posture import parse_angles, pose_figure
 from sass_tui.model.errors import SassError
+from sass_tui.model.files.task_settings import TaskSettings
 from sass_tui.model.strength.published_strength import GENDER_WORDS
 from sass_tui.model.strength.task import (
     CurveGroup,
@@ -63,8 +65,10 @@ from sass_tui.ui.spreadsheet.task_words import (
 )
 from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 
-CELLS = ("left", "right", "people")
+CELLS = ("posture", "left", "right", "people")
+LABELS = ("Posture", "Left hand", "Right hand", "People")
 CELL_WIDTH = 26
+FOLLOW_ROW = "row"  # the posture cell's word for the strength page's row
 DEFAULT_LOAD = 60.0  # N the right hand exerts up: a bag held out
 
 
@@ -149,7 +153,7 @@ class TaskCells(EditorKeys, Widget, can_focus=True):
 
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
-        self.cursor = 1  # the right hand's load
+        self.cursor = 2  # the right hand's load
 
     @property
     def panel(self) -> TaskPanel:
@@ -164,10 +168,11 @@ class TaskCells(EditorKeys, Widget, can_focus=True):
         head = Text(no_wrap=True, overflow="crop")
         head.append("Task ", style("taskpanel--header"))
         status = "computing..., " if panel.computing else ""
-        head.append(f"({status}T hides, h: curve) the strength page's posture: ")
-        head.append(posture_words(panel.posture))
+        whose = "the task's own" if panel.own_posture else "the strength page's"
+        head.append(f"({status}T hides, h: curve) {whose} posture: ")
+        head.append(" ".join(panel.own_posture) or posture_words(panel.row_posture))
         cells = Text(no_wrap=True, overflow="crop")
-        for index, (cell, label) in enumerate(zip(CELLS, ("Left hand", "Right hand", "People"))):
+        for index, (cell, label) in enumerate(zip(CELLS, LABELS)):
             cells.append(f"{label} ")
             shown = f"{panel.cell_text(cell):<{CELL_WIDTH - len(label) - 2}}"
             cells.append(shown, cursor if index == self.cursor else "")
@@ -245,7 +250,10 @@ class TaskPanel(Vertical):
         }
         self.people = "gender"
         self.answered_people = "gender"  # the people of the answer shown
-        self.posture: tuple[str, ...] = ()
+        # the screen's keeper of the settings (the session, for the worksheet)
+        self.keep_settings: Callable[[TaskSettings], None] | None = None
+        self.row_posture: tuple[str, ...] = ()  # the strength page's row
+        self.own_posture: tuple[str, ...] = ()  # typed in the posture cell; () follows the row
         self.figure: Figure | None = None
         self.answer: TaskAnswer | None = None
         self.error = ""
@@ -265,11 +273,16 @@ class TaskPanel(Vertical):
     def cells(self) -> TaskCells:
         return self.query_one(TaskCells)
 
+    @property
+    def posture(self) -> tuple[str, ...]:
+        """The task's posture: its own (the posture cell), or the strength page's row."""
+        return self.own_posture or self.row_posture
+
     # --- what it shows -------------------------------------------------------
     def show_task(self, figure: Figure, posture: tuple[str, ...]) -> None:
         """The figure shown and the strength page's posture: a new answer in
         a worker (on a copy of the figure, which edits change in place)."""
-        self.figure, self.posture = figure, posture
+        self.figure, self.row_posture = figure, posture
         self.recompute()
 
     def follow_row(self, figure: Figure, row: tuple[str, list[float]] | None) -> None:
@@ -278,6 +291,8 @@ class TaskPanel(Vertical):
         self.show_task(figure, () if row is None else strength_posture(*row))
 
     def recompute(self) -> None:
+        if self.keep_settings is not None:
+            self.keep_settings(self.settings())
         if self.figure is None:
             return
         self.computing = True
@@ -358,6 +373,8 @@ class TaskPanel(Vertical):
 
     # --- the inputs, set from the screen's prompts ----------------------------
     def cell_text(self, cell: str) -> str:
+        if cell == "posture":
+            return " ".join(self.own_posture) or FOLLOW_ROW
         if cell != "people":
             return load_words(self.loads.get(cell))
         if self.people == "gender" and self.figure is not None:
@@ -366,6 +383,11 @@ class TaskPanel(Vertical):
 
     def prompt(self, cell: str) -> str:
         """What the message line asks for `cell`."""
+        if cell == "posture":
+            return (
+                "The task's posture, JOINT=ANGLE ... (trunk_y=30 hip_y=60 shoulder_y=90; "
+                f"`{FOLLOW_ROW}`: the strength page's row) [{self.cell_text(cell)}]:"
+            )
         if cell == "people":
             return (
                 f"People the task is for ({', '.join(PEOPLE)}, target NAME or "
@@ -379,7 +401,10 @@ class TaskPanel(Vertical):
     def set_cell(self, cell: str, text: str) -> str:
         """Take an answer to `prompt`; what the message line says then."""
         if not text.strip():
-            return f"Task: the {'people' if cell == 'people' else f'{cell} hand'} unchanged."
+            what = cell if cell in ("people", "posture") else f"{cell} hand"
+            return f"Task: the {what} unchanged."
+        if cell == "posture":
+            return f"Task: posture {' '.join(self.set_posture(text)) or 'of the row'}."
         if cell == "people":
             return f"Task: for {self.set_people(text)}."
         return f"Task: {load_words(self.set_load(cell, text))} on the {cell} hand."
@@ -395,6 +420,37 @@ class TaskPanel(Vertical):
             self.curve_side = next(iter(loads), "")
         self.recompute()
         return load
+
+    def settings(self) -> TaskSettings:
+        return TaskSettings(
+            self.own_posture,
+            tuple((side, load_words(load)) for side, load in sorted(self.loads.items())),
+            self.people,
+        )
+
+    def take_settings(self, settings: TaskSettings) -> None:
+        """A worksheet's settings: each word checked as when typed (SassError)."""
+        parse_angles(list(settings.posture))  # refuse a bad word before taking any
+        own = settings.posture
+        loads = {side: parse_hand_load(side, text) for side, text in settings.loads}
+        people = parse_people(settings.people)
+        self.own_posture, self.people = own, people
+        self.loads = {side: load for side, load in loads.items() if load.force > 0}
+        self.curve_side = ""
+        self.recompute()
+
+    def set_posture(self, text: str) -> tuple[str, ...]:
+        """`trunk_y=30 hip_y=60 ...` (checked as `sass task` checks it, and
+        against the figure's joint limits), or `row`: follow the strength page."""
+        words = tuple(text.split())
+        if words == (FOLLOW_ROW,):
+            words = ()
+        angles = parse_angles(list(words))
+        if self.figure is not None:
+            pose_figure(self.figure, angles)  # refuse what the figure cannot take
+        self.own_posture = words
+        self.recompute()
+        return words
 
     def set_people(self, text: str) -> str:
         self.people = parse_people(text)
