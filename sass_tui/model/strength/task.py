@@ -56,6 +56,7 @@ from sass_tui.model.strength.published_strength import (
 from sass_tui.model.strength.published_strength import (
     CITATION as ANDERSON,
 )
+from sass_tui.model.strength.rula import Rula, rula
 from sass_tui.model.strength.statics import (
     GRAVITY,
     Balance,
@@ -281,6 +282,7 @@ class TaskAnswer:
     stance: Balance | None = None  # on the first population's figure; None seated
     lean: float | None = None  # deg at the ankles sass chose, standing
     unstable: dict[str, str] = field(default_factory=dict)  # population -> why it tips
+    rula: list[Rula] = field(default_factory=list)  # each arm, on the first figure
 
     def limiting(self, population: str) -> Capability | None:
         """The covered joint or hand the fewest of `population` can do (a
@@ -421,6 +423,7 @@ def assess_task(
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
             answer.notes += _posture_notes(seated, lean, stance)
+            answer.rula = _rula(ref.figure, body, used, loads, stance, seated, lean)
         answer.populations.append(ref.words)
         if stance is not None and not stance.stable:
             answer.unstable[ref.words] = stance.reason
@@ -448,6 +451,44 @@ def assess_task(
             answer.notes.append(f"{ref.words}: age not given, {ANDERSON}'s 18-25 group")
     assert answer is not None  # at least one reference
     return answer
+
+
+def _rula(
+    figure: Figure,
+    body: PosedBody,
+    angles: Angles,
+    loads: list[HandLoad],
+    stance: Balance | None,
+    seated: bool,
+    lean: float | None,
+) -> list[Rula]:
+    """Each arm's RULA score of the posture (model/strength/rula.py): the
+    trunk's inclination without the lean sass chose at the ankles (the
+    posture as the user gave it)."""
+    forces = {load.side: load.force for load in loads}
+    up = (np.eye(3) if body.turns is None else body.turns["vl5"])[:, 1]
+    a = math.radians(lean or 0.0)
+    up = np.array(
+        [
+            up[0],
+            up[1] * math.cos(a) + up[2] * math.sin(a),
+            -up[1] * math.sin(a) + up[2] * math.cos(a),
+        ]
+    )
+    stable = stance is None or stance.stable
+    return [
+        rula(
+            side,
+            angles,
+            up,
+            joint_limit_range(figure, side, "wrist_z"),
+            seated,
+            stable,
+            forces.get(side, 0.0),
+            sum(forces.values()),
+        )
+        for side in ("right", "left")
+    ]
 
 
 def _posture_notes(seated: bool, lean: float | None, stance: Balance | None) -> list[str]:
@@ -502,6 +543,7 @@ def assess_populations(
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
             answer.notes += _posture_notes(seated, lean, stance)
+            answer.rula = _rula(figure, body, used, loads, stance, seated, lean)
         answer.populations.append(people.words)
         if people.note not in answer.notes:
             answer.notes.append(people.note)

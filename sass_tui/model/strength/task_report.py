@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from sass_tui.model.strength.low_back import LowBack, limit_words
+from sass_tui.model.strength.rula import ASSUMED as RULA_ASSUMED
 from sass_tui.model.strength.statics import Balance
 from sass_tui.model.strength.task import UNCOVERED, HandLoad, TaskAnswer
 
@@ -96,6 +97,27 @@ def task_json(answer: TaskAnswer, posture: list[str]) -> dict[str, object]:
         "low_back": low_back_json(answer.low_back),
         "balance": balance_json(answer.stance, answer.lean),
         "out_of_balance": answer.unstable,
+        "rula": [
+            {
+                "side": r.side,
+                "score": r.score,
+                "action_level": r.action_level,
+                "posture_a": r.posture_a,
+                "posture_b": r.posture_b,
+                "upper_arm": r.upper_arm,
+                "lower_arm": r.lower_arm,
+                "wrist": r.wrist,
+                "wrist_twist": r.wrist_twist,
+                "neck": r.neck,
+                "trunk": r.trunk,
+                "legs": r.legs,
+                "force_a": r.force_a,
+                "force_b": r.force_b,
+                "assumed": RULA_ASSUMED,
+                "source": "McAtamney & Corlett 1993",
+            }
+            for r in answer.rula
+        ],
         "not_covered": [m.joint for m in answer.moments if m.covered_by == UNCOVERED],
         "notes": answer.notes,
     }
@@ -122,6 +144,13 @@ def task_text(answer: TaskAnswer, posture: list[str]) -> list[str]:
         )
     lines += _low_back_lines(answer.low_back)
     lines += _balance_lines(answer.stance)
+    lines += [
+        f"RULA (McAtamney & Corlett 1993), {r.side} arm: {r.score} (action level "
+        f"{r.action_level}; A {r.posture_a}, B {r.posture_b})"
+        for r in answer.rula
+    ]
+    if answer.rula:
+        lines.append(f"  RULA assumes: {RULA_ASSUMED}")
     # a column as wide as its population's name (a target's are long), 20 at least
     width = max([20, *(len(p) + 2 for p in answer.populations)])
     heads = "".join(f"{p:>{width}}" for p in answer.populations)

@@ -1,0 +1,61 @@
+"""RULA (McAtamney & Corlett 1993) from a task's posture
+(model/strength/rula.py, datasets/rula.json).  Each case is scored here by
+hand with the paper's rules and its tables' cells, typed from the paper."""
+
+from __future__ import annotations
+
+import pytest
+
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles
+from sass_tui.model.strength.rula import (
+    force_score,
+    lower_arm_score,
+    read_tables,
+    trunk_score,
+    upper_arm_score,
+    wrist_score,
+)
+from sass_tui.model.strength.task import Reference, assess_task, load_of
+
+# (table, indices 1-based) -> the paper's cell
+CELLS = [
+    ("a", (1, 1, 1), 1), ("a", (3, 2, 1), 3), ("a", (5, 3, 8), 8), ("a", (6, 1, 8), 9),
+    ("b", (1, 1), 1), ("b", (1, 7), 5), ("b", (4, 12), 8), ("b", (6, 8), 9),
+    ("c", (4, 7), 6), ("c", (1, 1), 1), ("c", (8, 7), 7), ("c", (5, 4), 5),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("table, where, value", CELLS)
+def test_the_tables_are_the_papers(table, where, value):
+    cells = getattr(read_tables(), table)
+    for i in where:
+        cells = cells[i - 1]
+    assert cells == value
+
+
+def test_the_body_part_scores_follow_the_paper():
+    assert [upper_arm_score(f, 0) for f in (0, 30, -30, 60, 120)] == [1, 2, 2, 3, 4]
+    assert upper_arm_score(60, 45) == 4  # abducted: +1
+    assert [lower_arm_score(e) for e in (0, 80, 120)] == [2, 1, 2]
+    assert [wrist_score(w, 0) for w in (0, 10, -30)] == [1, 2, 3]
+    assert wrist_score(10, 20) == 3  # bent from the midline: +1
+    assert [trunk_score(t, 0, 0) for t in (0, 10, 40, 80)] == [1, 2, 3, 4]
+    assert trunk_score(10, 20, 10) == 4  # twisted and side-bent
+    assert [force_score(n) for n in (10, 50, 150)] == [0, 1, 3]
+
+
+def test_standing_upright_and_a_stoop_with_20_kg():
+    women = [Reference("women", Figure.default("female"), None)]
+    upright = assess_task(women, {}, [])
+    # arms hanging: upper arm 1, lower arm 2 (elbow 0), wrist 1, twist 1: A = 2;
+    # neck 1, trunk 1, legs 1: B = 1; C 2, D 1 -> Table C = 2
+    assert [(r.posture_a, r.posture_b, r.score) for r in upright.rula] == [(2, 1, 2)] * 2
+    angles = parse_angles(["trunk_y=30", "hip_y=60", "shoulder_y=90"])
+    stoop = assess_task(women, angles, [load_of("left", "10 kg"), load_of("right", "10 kg")])
+    # upper arm 3 (90 deg to the trunk), lower arm 2, wrist 1, twist 1: A = 3, +1
+    # (10 kg in the hand) = 4; trunk 4 (90 deg), neck 1, legs 1: B = 5, +3 (20 kg) = 8 -> 7;
+    # Table C (4, 7) = 6, action level 3
+    right = stoop.rula[0]
+    assert (right.upper_arm, right.trunk, right.posture_a, right.posture_b) == (3, 4, 3, 5)
+    assert (right.score, right.action_level) == (6, 3)
