@@ -56,6 +56,7 @@ from sass_tui.model.strength.published_strength import (
 from sass_tui.model.strength.published_strength import (
     CITATION as ANDERSON,
 )
+from sass_tui.model.strength.reba import Reba, reba
 from sass_tui.model.strength.rula import Rula, rula
 from sass_tui.model.strength.statics import (
     GRAVITY,
@@ -283,6 +284,7 @@ class TaskAnswer:
     lean: float | None = None  # deg at the ankles sass chose, standing
     unstable: dict[str, str] = field(default_factory=dict)  # population -> why it tips
     rula: list[Rula] = field(default_factory=list)  # each arm, on the first figure
+    reba: list[Reba] = field(default_factory=list)
 
     def limiting(self, population: str) -> Capability | None:
         """The covered joint or hand the fewest of `population` can do (a
@@ -423,7 +425,7 @@ def assess_task(
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
             answer.notes += _posture_notes(seated, lean, stance)
-            answer.rula = _rula(ref.figure, body, used, loads, stance, seated, lean)
+            answer.rula, answer.reba = _scores(ref.figure, body, used, loads, stance, seated, lean)
         answer.populations.append(ref.words)
         if stance is not None and not stance.stable:
             answer.unstable[ref.words] = stance.reason
@@ -453,7 +455,7 @@ def assess_task(
     return answer
 
 
-def _rula(
+def _scores(
     figure: Figure,
     body: PosedBody,
     angles: Angles,
@@ -461,10 +463,10 @@ def _rula(
     stance: Balance | None,
     seated: bool,
     lean: float | None,
-) -> list[Rula]:
-    """Each arm's RULA score of the posture (model/strength/rula.py): the
-    trunk's inclination without the lean sass chose at the ankles (the
-    posture as the user gave it)."""
+) -> tuple[list[Rula], list[Reba]]:
+    """Each arm's RULA and REBA scores of the posture (model/strength/rula.py,
+    reba.py): the trunk's inclination without the lean sass chose at the
+    ankles (the posture as the user gave it)."""
     forces = {load.side: load.force for load in loads}
     up = (np.eye(3) if body.turns is None else body.turns["vl5"])[:, 1]
     a = math.radians(lean or 0.0)
@@ -476,6 +478,9 @@ def _rula(
         ]
     )
     stable = stance is None or stance.stable
+    inclination = math.degrees(math.acos(float(np.clip(up[1], -1.0, 1.0))))
+    both = sum(forces.values())
+    rebas = [reba(side, angles, inclination, seated, stable, both) for side in ("right", "left")]
     return [
         rula(
             side,
@@ -485,10 +490,10 @@ def _rula(
             seated,
             stable,
             forces.get(side, 0.0),
-            sum(forces.values()),
+            both,
         )
         for side in ("right", "left")
-    ]
+    ], rebas
 
 
 def _posture_notes(seated: bool, lean: float | None, stance: Balance | None) -> list[str]:
@@ -543,7 +548,7 @@ def assess_populations(
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
             answer.notes += _posture_notes(seated, lean, stance)
-            answer.rula = _rula(figure, body, used, loads, stance, seated, lean)
+            answer.rula, answer.reba = _scores(figure, body, used, loads, stance, seated, lean)
         answer.populations.append(people.words)
         if people.note not in answer.notes:
             answer.notes.append(people.note)

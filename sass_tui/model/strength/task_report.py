@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from sass_tui.model.strength.low_back import LowBack, limit_words
+from sass_tui.model.strength.reba import ASSUMED as REBA_ASSUMED
 from sass_tui.model.strength.rula import ASSUMED as RULA_ASSUMED
 from sass_tui.model.strength.statics import Balance
 from sass_tui.model.strength.task import UNCOVERED, HandLoad, TaskAnswer
@@ -118,6 +119,25 @@ def task_json(answer: TaskAnswer, posture: list[str]) -> dict[str, object]:
             }
             for r in answer.rula
         ],
+        "reba": [
+            {
+                "side": r.side,
+                "score": r.score,
+                "action_level": r.action_level,
+                "score_a": r.score_a,
+                "score_b": r.score_b,
+                "trunk": r.trunk,
+                "neck": r.neck,
+                "legs": r.legs,
+                "load": r.load,
+                "upper_arm": r.upper_arm,
+                "lower_arm": r.lower_arm,
+                "wrist": r.wrist,
+                "assumed": REBA_ASSUMED,
+                "source": "Hignett & McAtamney 2000",
+            }
+            for r in answer.reba
+        ],
         "not_covered": [m.joint for m in answer.moments if m.covered_by == UNCOVERED],
         "notes": answer.notes,
     }
@@ -151,6 +171,13 @@ def task_text(answer: TaskAnswer, posture: list[str]) -> list[str]:
     ]
     if answer.rula:
         lines.append(f"  RULA assumes: {RULA_ASSUMED}")
+    lines += [
+        f"REBA (Hignett & McAtamney 2000), {r.side} arm: {r.score} (action level "
+        f"{r.action_level}; A {r.score_a}, B {r.score_b})"
+        for r in answer.reba
+    ]
+    if answer.reba:
+        lines.append(f"  REBA assumes: {REBA_ASSUMED}")
     # a column as wide as its population's name (a target's are long), 20 at least
     width = max([20, *(len(p) + 2 for p in answer.populations)])
     heads = "".join(f"{p:>{width}}" for p in answer.populations)
