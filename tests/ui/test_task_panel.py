@@ -283,3 +283,24 @@ def test_the_task_panels_own_posture_is_kept_for_the_worksheet(app_at, drive):
             assert screen.session.task.posture == ()
 
     drive(scenario())
+
+
+def test_the_figure_beside_takes_the_tasks_posture():
+    """The posed outline: a stoop (hips flexed 60, trunk 30) puts the head
+    forward of the feet, each solid where its joint's turn carries it."""
+    from sass_tui.model.body.hanim import build_humanoid
+    from sass_tui.model.body.posed_outline import posed_outline
+    from sass_tui.model.strength.task import pose_task
+
+    figure = Figure.default("female")
+    humanoid = build_humanoid(figure)
+    standing = posed_outline(humanoid, pose_task(figure, {}, [])[0], "standing", 162.6)
+    body = pose_task(figure, parse_angles(["trunk_y=30", "hip_y=60"]), [])[0]
+    stoop = posed_outline(humanoid, body, "stoop", 162.6)
+
+    def head(outline):  # the skull: the one ellipse
+        return next(s for s in outline.side.shapes if s.kind == "ellipse")
+
+    assert head(stoop).x > head(standing).x + 40.0
+    assert head(stoop).y < head(standing).y - 40.0
+    assert stoop.height < standing.height

@@ -40,6 +40,22 @@ class TaskCommands(SheetScreenBase):
 
     def _keep_task(self, settings: TaskSettings) -> None:
         self.session.task = settings
+        self.redraw_figure_panel()
+
+    def redraw_figure_panel(self) -> None:
+        """With the Task panel shown, the figure beside it in the task's posture."""
+        panel, figure_panel = self.task_panel, self.figure_panel
+        if panel is None or not panel.display or figure_panel is None:
+            super().redraw_figure_panel()
+            return
+        try:
+            outline = panel.task_outline()
+        except SassError:
+            outline = None  # a posture the figure cannot take: drawn standing
+        if outline is None:
+            super().redraw_figure_panel()
+        elif (outline,) != figure_panel.outlines:
+            figure_panel.outlines = (outline,)
 
     def on_strength_page_row_chosen(self, event: StrengthPage.RowChosen) -> None:
         event.stop()

@@ -37,6 +37,9 @@ from sass_tui.db.engine.database import Database
 from sass_tui.db.populations.task_people import group_words, weighted_people
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
 from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.hanim import build_humanoid
+from sass_tui.model.body.outline import Outline
+from sass_tui.model.body.posed_outline import posed_outline
 from sass_tui.model.body.posture import parse_angles, pose_figure
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.task_settings import TaskSettings
@@ -438,6 +441,18 @@ class TaskPanel(Vertical):
         self.loads = {side: load for side, load in loads.items() if load.force > 0}
         self.curve_side = ""
         self.recompute()
+
+    def task_outline(self) -> Outline | None:
+        """The figure shown in the task's posture, standing as the task stands
+        (for the figure panel beside it); None: nothing to pose."""
+        if self.figure is None:
+            return None
+        figure = self.figure
+        angles = parse_angles(list(self.posture))
+        loads = list(self.loads.values())
+        body, _, _, _ = pose_task(figure, angles, loads)
+        label = f"{figure.person or 'figure'} in the task's posture"
+        return posed_outline(build_humanoid(figure), body, label, float(figure.stature))
 
     def set_posture(self, text: str) -> tuple[str, ...]:
         """`trunk_y=30 hip_y=60 ...` (checked as `sass task` checks it, and
