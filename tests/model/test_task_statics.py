@@ -14,6 +14,7 @@ from sass_tui.model.body.hanim_mass import DE_LEVA
 from sass_tui.model.body.posture import parse_angles, pose_figure
 from sass_tui.model.strength.task import (
     Reference,
+    arm_demand,
     assess_task,
     hand_load,
     load_of,
@@ -165,8 +166,6 @@ def test_a_straight_knee_under_the_body_is_passive_not_limiting(women):
 
 
 def test_the_hand_exerts_the_force_in_task_and_arm_force(women):
-    from sass_tui.model.strength.task import arm_demand
-
     angles = parse_angles(["shoulder_y=90", "elbow_y=0"])
     push = load_of("right", "40 N", "forward")
     answer = assess_task(women, angles, [push])

@@ -14,6 +14,8 @@ from hypothesis import strategies as st
 from textual.widgets import Static
 
 from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.hanim import build_humanoid
+from sass_tui.model.body.posed_outline import posed_outline
 from sass_tui.model.body.posture import parse_angles
 from sass_tui.model.errors import SassError
 from sass_tui.model.strength.arm_force_field import arm_force
@@ -288,10 +290,6 @@ def test_the_task_panels_own_posture_is_kept_for_the_worksheet(app_at, drive):
 def test_the_figure_beside_takes_the_tasks_posture():
     """The posed outline: a stoop (hips flexed 60, trunk 30) puts the head
     forward of the feet, each solid where its joint's turn carries it."""
-    from sass_tui.model.body.hanim import build_humanoid
-    from sass_tui.model.body.posed_outline import posed_outline
-    from sass_tui.model.strength.task import pose_task
-
     figure = Figure.default("female")
     humanoid = build_humanoid(figure)
     standing = posed_outline(humanoid, pose_task(figure, {}, [])[0], "standing", 162.6)
