@@ -147,6 +147,33 @@ PATHS: tuple[StartupPath, ...] = (
         " Anderson et al. 2007, no database (only --person and --target open one)",
     ),
     StartupPath(
+        "sass reach",
+        ("reach", "--gender", "female", "--point", "30,120,50"),
+        (*NEVER, *UI, *ENGINES, "logging", "asyncio", "sqlite3", "platformdirs", "numpy.ma",
+         "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
+        "a figure's reach needs its humanoid and the glTF writer, no database (only"
+        " --person, --target and --virtual open one: cli/reach_people.py)",
+    ),
+    StartupPath(
+        "sass niosh",
+        ("niosh", "--h", "40cm", "--v", "60cm", "--d", "80cm", "--f", "2", "--load", "12kg"),
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
+         "platformdirs", "numpy", "dataclasses", "inspect", "statistics",
+         "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui", "sass_tui.model.body"),
+        "the lifting equation is plain floats and two tables: no numpy, no database (the"
+        " job file's csv reader, ~1 ms, rides along rather than cost a deferred import)",
+    ),
+    StartupPath(
+        "sass handling",
+        ("handling", "lift", "--h", "0.38", "--v", "1.03", "--d", "0.51", "--load", "10kg"),
+        (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
+         "platformdirs", "numpy", "csv", "dataclasses", "inspect", "statistics",
+         "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui", "sass_tui.model.body"),
+        "the Liberty Mutual equations are plain floats and math.erf: numpy and the figure"
+        " only for a posture (cli/handling_figure.py), the database only for --target and"
+        " --virtual (cli/handling_people.py)",
+    ),
+    StartupPath(
         "sass query",
         ("query", "(stature > 70 in OR mass < 60 kg) AND girth.right_upper_arm.z > 20 cm"),
         (*NEVER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "pickle", "dataclasses", "inspect",

@@ -23,7 +23,7 @@ from pathlib import Path
 
 from sass_tui.db.query.query_grammar import GRAMMAR
 
-OUT = Path(__file__).resolve().parents[1] / "sass_tui" / "db" / "_query_parser.py"
+OUT = Path(__file__).resolve().parents[1] / "sass_tui" / "db" / "query" / "_query_parser.py"
 
 
 def grammar_digest() -> str:

@@ -6,10 +6,11 @@ itself (docs/target-populations.md, "Virtual populations: the check").
 For each gender, weighted 5th/50th/95th percentiles (cumulative weight, by
 WTMECPRP) of
 - stature and mass: NHANES's own, kept by every virtual person;
-- two things NHANES measured that the prediction never used, against the
-  virtual people's predicted ANSUR II measure of the nearest definition:
-  hip circumference (BMXHIP) / buttockcircumference, and upper arm length
-  (BMXARML, acromion to olecranon) / shoulderelbowlength.
+- hip circumference (BMXHIP) / buttockcircumference: NHANES's own, kept
+  (predicted for the rows without one);
+- upper arm length (BMXARML, acromion to olecranon) / shoulderelbowlength,
+  which the virtual people have predicted (NHANES's is not used: a
+  different landmark; scripts/virtual_validation.py validates the rest).
 NHANES is read from ../shared/data/nhanes (the published file), not through sass.
 """
 

@@ -55,11 +55,12 @@ def test_the_checks_see_what_they_look_for(tmp_path):
 
 def test_one_caller_decides_how_an_import_is_staged():
     # PostgreSQL stages an import in a SQLite file and copies it in one
-    # transaction; whether to is decided once, in db/engine/database.py's
+    # transaction; whether to is decided once, in db/engine/staging.py's
     # store_people, for the command line (Database) and the screens
     # (QueryLists) alike, and PostgreSQL's `sass db init` (init_postgres).
     callers = set()
-    for path in (Path(__file__).resolve().parent.parent / "sass_tui").rglob("*.py"):
+    package = Path(__file__).resolve().parent.parent / "sass_tui"
+    for path in package.rglob("*.py"):
         for function in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if isinstance(function, ast.FunctionDef):
                 for call in ast.walk(function):
@@ -68,5 +69,5 @@ def test_one_caller_decides_how_an_import_is_staged():
                         and getattr(call.func, "id", getattr(call.func, "attr", None))
                         == "import_staged"
                     ):
-                        callers.add(f"{path.parent.name}/{path.name}:{function.name}")
-    assert callers == {"db/engine/database.py:store_people"}
+                        callers.add(f"{path.relative_to(package).as_posix()}:{function.name}")
+    assert callers == {"db/engine/staging.py:store_people"}

@@ -14,7 +14,7 @@ import sass_tui.model
 CLI_MODULES = [
     "sass_tui.cli",
     *(
-        f"sass_tui.cli.{m}"
+        f"sass_tui.cli.{m}" if m not in {"options", "progress"} else f"sass_tui.cli.common.{m}"
         for m in (
             "db",
             "export",

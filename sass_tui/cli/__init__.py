@@ -49,6 +49,17 @@ VERBS: tuple[Verb, ...] = (
     ),
     Verb("fit", "fit test: the share of a population that design limits accommodate", "fit"),
     Verb("task", "a task's joint moments and the percent capable of doing it", "task"),
+    Verb("reach", "where the figure's hands can go: reach measures, a point, an envelope", "reach"),
+    Verb(
+        "niosh",
+        "the Revised NIOSH Lifting Equation: recommended weight limit and lifting index",
+        "niosh",
+    ),
+    Verb(
+        "handling",
+        "Liberty Mutual equations: loads women and men accept to lift, lower, push, pull, carry",
+        "handling",
+    ),
     Verb(
         "family",
         "manikin family: boundary figures of a coverage ellipsoid, coverage counted",

@@ -10,7 +10,9 @@ from sass_tui.cli.common.options import (
     SubParsers,
     add_db_option,
     add_virtual_option,
+    add_within_range_option,
     weighting_name,
+    within_range_of,
 )
 from sass_tui.db.populations.family import load_family
 from sass_tui.db.query.query import parse_option
@@ -90,6 +92,7 @@ def register(commands: SubParsers) -> None:
         "and the coverage of the weighted people",
     )
     add_virtual_option(family)
+    add_within_range_option(family)
     family.add_argument("-o", "--output", metavar="DIR", required=True, help="output directory")
     family.set_defaults(func=run)
 
@@ -99,13 +102,14 @@ def run(args: argparse.Namespace) -> int:
         measure_field(name)  # a typo is reported before the database is opened
     population = parse_option(args.population, "--population")  # parsed once, passed on
     weighting = weighting_name(args)
+    within_range = within_range_of(args)
     conn = open_db(args)
     weighted_to = None
     if weighting is not None:
         # deferred: db.shipped (db.targets) — off sass family (sass_tui/startup.py)
         from sass_tui.db.populations.shipped import load_weights
 
-        weighted_to = load_weights(conn, weighting)
+        weighted_to = load_weights(conn, weighting, only_within_range=within_range)
         if weighted_to.target.is_virtual and args.population == DEFAULT_POPULATION:
             # its virtual people
             population = parse_option(weighted_to.target.population, weighting)

@@ -12,7 +12,9 @@ from sass_tui.cli.common.options import (
     SubParsers,
     add_db_option,
     add_virtual_option,
+    add_within_range_option,
     weighting_name,
+    within_range_of,
 )
 from sass_tui.db.populations.fit import check_mix, fit_test
 from sass_tui.db.populations.fit_table import format_table
@@ -76,6 +78,7 @@ def register(commands: SubParsers) -> None:
         "the unweighted figures beside",
     )
     add_virtual_option(fit)
+    add_within_range_option(fit)
     fit.add_argument(
         "--format", choices=("table", "json"), default="table", help="output format (default table)"
     )
@@ -106,13 +109,14 @@ def run(args: argparse.Namespace) -> int:
     check_mix(args.mix)
     strength = [parse_strength_limit(text) for text in args.strength]
     weighting = weighting_name(args)
+    within_range = within_range_of(args)
     conn = open_db(args)
     target = None
     if weighting is not None:
         # deferred: db.shipped (db.targets) — off sass fit (sass_tui/startup.py)
         from sass_tui.db.populations.shipped import load_weights
 
-        target = load_weights(conn, weighting)
+        target = load_weights(conn, weighting, only_within_range=within_range)
         if target.target.is_virtual and args.population == DEFAULT_POPULATION:
             # its virtual people, not the soldiers
             population = parse_option(target.target.population, weighting)

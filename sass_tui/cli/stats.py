@@ -30,7 +30,9 @@ from sass_tui.cli.common.options import (
     SubParsers,
     add_db_option,
     add_virtual_option,
+    add_within_range_option,
     weighting_name,
+    within_range_of,
 )
 from sass_tui.db.populations.shipped import load_weights
 from sass_tui.db.populations.stats import EVERY_MEASURE, check_unit, format_stats, stats_table
@@ -89,6 +91,7 @@ def register(commands: SubParsers) -> None:
         "of the target beyond every person (outside_share)",
     )
     add_virtual_option(stats)
+    add_within_range_option(stats)
     stats.add_argument(
         "--percentiles",
         type=percentile_list,
@@ -121,9 +124,14 @@ def run(args: argparse.Namespace) -> int:
             raise error from None
     unit = check_unit(args.unit)
     weighting = weighting_name(args)
+    within_range = within_range_of(args)
     conn = open_db(args)
     try:
-        weights = None if weighting is None else load_weights(conn, weighting)
+        weights = (
+            None
+            if weighting is None
+            else load_weights(conn, weighting, only_within_range=within_range)
+        )
         table = stats_table(
             conn,
             fields,

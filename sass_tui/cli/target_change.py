@@ -27,7 +27,7 @@ from sass_tui.db.populations.targets import (
     store_target,
     target_exists,
 )
-from sass_tui.db.populations.virtual import drop_virtual, make_virtual, store_virtual
+from sass_tui.db.populations.virtual import MEASURED, drop_virtual, make_virtual, store_virtual
 from sass_tui.db.query.query import parse_option
 from sass_tui.model.datasets import NHANES, NHANES_NAME, shipped_text
 from sass_tui.model.errors import SassError
@@ -107,6 +107,7 @@ def _make(args: argparse.Namespace) -> int:
         weight=args.weight,
         gender=args.gender,
         need_gender=args.gender is None,
+        optional=MEASURED if args.virtual else (),
     )
     for column in sample.unused_weights:
         print(
@@ -139,10 +140,13 @@ def _make(args: argparse.Namespace) -> int:
     _report(target, weightings, sample.incomplete, sys.stdout)
     if virtual is not None:
         beyond = ", ".join(f"{n} {g}" for g, n in virtual.beyond.items())
+        kept = [f.removeprefix("measure.") for f in sample.optional_fields]
+        measured = f", and their measured {' and '.join(kept)}" if kept else ""
         print(
             f"virtual population {args.name}: {len(virtual.people)} VIRTUAL people (their own "
-            f"stature, mass, age and gender; every other measure predicted from the real "
-            f"people); beyond the range the prediction was fitted on: {beyond}; "
+            f"stature, mass, age and gender{measured}; every other measure predicted from the "
+            f"real people); beyond the range the prediction was fitted on: {beyond} "
+            f"(flagged: --within-range leaves them out); "
             f"effective n {virtual.target.effective_n:.0f} (sass fit --virtual {args.name})"
         )
     return 0

@@ -4,7 +4,10 @@ copied into the package as `sass_tui/datasets/` when a wheel is built."""
 from __future__ import annotations
 
 import gzip
+import json
+from functools import cache
 from pathlib import Path
+from typing import Any
 
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 
@@ -48,3 +51,11 @@ def shipped_text(name: str) -> str:
 def is_shipped(file: str | Path) -> bool:
     """Whether `file` names one of the shipped data sets (the report's)."""
     return bool(str(file)) and Path(file).resolve().parent == directory().resolve()
+
+
+@cache
+def json_table(name: str) -> dict[str, Any]:
+    """A shipped JSON data set (an object), read once: the NIOSH lifting
+    equation's and the Liberty Mutual equations' tables."""
+    loaded: dict[str, Any] = json.loads(path(name).read_text(encoding="utf-8"))
+    return loaded

@@ -206,6 +206,15 @@ def parse_quantity(text: str, unit: str) -> float:
     return converted
 
 
+def quantity_unit(text: str) -> str | None:
+    """The registry name of the unit typed after a quantity's number ("16 in"
+    -> "in"); None for a bare number; UnitError for text that is no quantity."""
+    match = _NUMBER.match(text) if len(text) <= MAX_QUANTITY_LENGTH else None
+    if not match:
+        raise UnitError(f"expected a number with an optional unit, got {quoted(text.strip())}")
+    return unit_name(match.group(2)) if match.group(2) else None
+
+
 # "12.5 cm", "17.98 ft-lb": a quantity is short; a pasted file is not one.
 MAX_QUANTITY_LENGTH = 200
 

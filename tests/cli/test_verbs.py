@@ -26,6 +26,8 @@ SHARED = {  # parts of a verb; what verbs share lives in cli/common/
     "strength_arm",  # sass strength arm_force
     "target_change",  # sass target NAME --sample, --drop
     "task_people",  # sass task --person, --target, --virtual
+    "handling_people",  # sass handling from a posture, --person, --target, --virtual
+    "reach_people",  # sass reach --target, --virtual
 }
 
 

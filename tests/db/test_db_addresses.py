@@ -69,6 +69,8 @@ def test_sass_serve_read_only_on_an_address_tries_the_server(tmp_path, monkeypat
         ["fig", "--person", "17", "-o", "x.fig"],
         ["export", "hanim", "--person", "17", "-o", "x.x3d"],
         ["strength", "--person", "17", "knee_extension", "knee_y=60"],
+        ["reach", "--person", "17"],
+        ["reach", "--point", "30,120,50", "--virtual", "nhanes-2017-2020"],
     ],
 )
 def test_the_verbs_that_take_an_address_try_the_server(capsys, tmp_path, monkeypatch, argv):

@@ -29,7 +29,7 @@ QUERY = "gender = male AND girth.right_upper_arm.z > 28 cm AND stature > 170 cm"
 # how its last count was answered on stderr.
 CHILD = (
     "import sys\n"
-    "from sass_tui.db import accelerator\n"
+    "from sass_tui.db.query import accelerator\n"
     "accelerator.MIN_PEOPLE = 0\n"
     "from sass_tui.cli import main\n"
     "status = main(sys.argv[1:])\n"

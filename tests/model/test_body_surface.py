@@ -13,6 +13,7 @@ import shutil
 
 import numpy as np
 import pytest
+from _gltf_files import accessor as glb_accessor
 
 from sass_tui.cli import main
 
@@ -30,7 +31,8 @@ def _bmi(row: dict[str, str]) -> float:
 @pytest.fixture(scope="module")
 def people(ansur_dir, shipped_db_file, tmp_path_factory):
     """Three men and three women: the thinnest, the median and the heaviest
-    by BMI (2nd, 50th and 98th percentile of their gender), each exported
+    by BMI (2nd, 50th and 98th percentile of their gender), and a heavy man
+    with a thick neck (M 27150, neck circumference 48.4 cm), each exported
     from the default database as a .glb, read back."""
     folder = tmp_path_factory.mktemp("surface")
     out = []
@@ -38,8 +40,9 @@ def people(ansur_dir, shipped_db_file, tmp_path_factory):
         with open(ansur_dir / f"ANSUR_II_{gender}_Public.csv", encoding="latin-1") as handle:
             rows = [{k.lower(): v for k, v in row.items()} for row in csv.DictReader(handle)]
         rows.sort(key=_bmi)
-        for share in (0.02, 0.5, 0.98):
-            row = rows[int(share * (len(rows) - 1))]
+        chosen = [rows[int(share * (len(rows) - 1))] for share in (0.02, 0.5, 0.98)]
+        chosen += [row for row in rows if letter == "M" and row["subjectid"] == "27150"]
+        for row in chosen:
             name = f"ANSUR II {letter} {row['subjectid']}"
             glb = folder / f"{letter}{row['subjectid']}.glb"
             args = ["export", "gltf", "--db", str(shipped_db_file), "--person", name]
@@ -54,13 +57,7 @@ def _read(path):
     primitive = gltf.meshes[0].primitives[0]
 
     def accessor(index: int) -> np.ndarray:
-        acc = gltf.accessors[index]
-        view = gltf.bufferViews[acc.bufferView]
-        dtype = {5126: "<f4", 5123: "<u2", 5125: "<u4"}[acc.componentType]
-        width = {"SCALAR": 1, "VEC3": 3}[acc.type]
-        start = (view.byteOffset or 0) + (acc.byteOffset or 0)
-        data = np.frombuffer(blob, dtype, acc.count * width, start)
-        return data.reshape(acc.count, width) if width > 1 else data
+        return glb_accessor(gltf, blob, index)
 
     positions = accessor(primitive.attributes.POSITION).astype(float)
     triangles = accessor(primitive.indices).astype(np.int64).reshape(-1, 3)
@@ -173,6 +170,62 @@ def test_the_trunk_is_cut_to_the_person_s_chest_waist_and_buttock(people):
             if breadth is not None:
                 width = cut[:, 0].max() - cut[:, 0].min()
                 assert abs(width - _mm(row, breadth)) <= tolerance, (name, breadth, width)
+
+
+def _arms_and_hands(positions, parts, row) -> list[np.ndarray]:
+    """The parts that are arms (reaching up near the acromion, not the trunk)
+    or hands (short parts well off the floor), found by where they are."""
+    top = positions[:, 1].argmax()
+    out = []
+    for tri in parts:
+        if top in tri:
+            continue
+        y = positions[np.unique(tri), 1]
+        if y.max() > _mm(row, "acromialheight") - 0.1 or (np.ptp(y) < 0.4 and y.min() > 0.3):
+            out.append(tri)
+    return out
+
+
+@pytest.mark.slow
+def test_the_body_at_the_buttocks_is_the_person_s_hip_breadth(people):
+    """Cut level at the buttock height, the body without its arms and hands
+    (trunk and thighs) is the measured hip breadth wide within 20 mm, each
+    thigh within the hip breadth and the two apart."""
+    for name, row, (positions, triangles) in people:
+        parts = _parts(positions, triangles)
+        arms = {id(tri) for tri in _arms_and_hands(positions, parts, row)}
+        assert len(arms) == 4, name
+        height = _mm(row, "buttockheight")
+        cuts = [_cut(positions, tri, height) for tri in parts if id(tri) not in arms]
+        x = np.concatenate([cut[:, 0] for cut in cuts if len(cut)])
+        breadth = _mm(row, "hipbreadth")
+        assert abs(np.ptp(x) - breadth) <= HIP_BREADTH, (name, np.ptp(x), breadth)
+        top = positions[:, 1].argmax()
+        thighs = [
+            cut[:, 0]
+            for tri, cut in zip((t for t in parts if id(t) not in arms), cuts, strict=True)
+            if len(cut) and top not in tri
+        ]
+        assert len(thighs) == 2, name
+        for thigh in thighs:
+            assert np.abs(thigh).max() <= breadth / 2 + 0.001, name
+            assert thigh.min() * thigh.max() > 0, name  # one side of the midline
+
+
+@pytest.mark.slow
+def test_the_neck_s_narrowest_girth_is_the_measured_one(people):
+    """Between the cervicale and the tragion the trunk's narrowest cut (a
+    tape round the neck) is the measured neck circumference within 3 %."""
+    for name, row, (positions, triangles) in people:
+        parts = _parts(positions, triangles)
+        top = positions[:, 1].argmax()
+        trunk = next(tri for tri in parts if top in tri)
+        low = _mm(row, "cervicaleheight")
+        high = _mm(row, "stature") - _mm(row, "tragiontopofhead")
+        narrowest = min(
+            _hull_perimeter(_cut(positions, trunk, y)) for y in np.linspace(low, high, 40)[1:-1]
+        )
+        assert narrowest == pytest.approx(_mm(row, "neckcircumference"), rel=GIRTH_SHARE), name
 
 
 @pytest.mark.slow

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _gltf_files import khronos_validator
 from _paths import ROOT
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -23,26 +24,13 @@ from sass_tui.cli import main
 
 pygltflib = pytest.importorskip("pygltflib")
 
-VALIDATE = ROOT / "node" / "validate.js"
-VALIDATOR = ROOT / "node" / "node_modules" / "gltf-validator"
 LOA1_JOINTS = 18  # ISO 19774-1, 4.8.5: the joints of LOA-1
 PERCENTILES = [(g, p) for g in ("male", "female") for p in (1, 50, 99)]
 
 
 @pytest.fixture(scope="module")
 def validator():
-    node = shutil.which("node")
-    if node is None or not VALIDATOR.is_dir():
-        pytest.skip("the glTF-Validator needs Debian's nodejs and `npm ci --prefix node`")
-
-    def validate(files: list[Path]) -> list[dict]:
-        done = subprocess.run(
-            [node, str(VALIDATE), *map(str, files)], capture_output=True, text=True, timeout=300
-        )
-        assert done.returncode in (0, 1), done.stderr
-        return [json.loads(line) for line in done.stdout.splitlines()]
-
-    return validate
+    return khronos_validator()
 
 
 @pytest.fixture(scope="module")

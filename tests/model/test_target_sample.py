@@ -102,3 +102,37 @@ TOKENS = ["stature", "mass", "[cm]", "[in]", "[", "]", ",", "\n", "1", "170", " 
 @given(st.lists(st.sampled_from(TOKENS), max_size=60))
 def test_csv_like_text_is_read_or_refused_with_a_place(parts):
     _read_or_refused("".join(parts))
+
+
+MEASURED = ("measure.buttockcircumference", "measure.waistcircumference")
+HIP_CELLS = ["", "100", "39 in", "1000 mm", "-3", "0", "abc", "1e400", "nan", '"', "38.5in"]
+
+
+@given(st.lists(st.sampled_from(HIP_CELLS), min_size=1, max_size=8))
+def test_a_measured_column_is_read_or_refused_with_a_place(cells):
+    """The optional measured columns a virtual population keeps (NHANES's
+    name hip_circumference; model/files/sample_file.py's NHANES_COLUMNS): a
+    row is never left out for lacking one; a value is read in cm or the
+    row's line and column are named."""
+    lines = ["stature,mass,hip_circumference[cm]"] + [f"160,60,{c}" for c in cells]
+    text = "\n".join(lines) + "\n"
+    try:
+        sample = read_sample(text, FIELDS, "s.csv", optional=MEASURED)
+    except SassError as exc:
+        assert str(exc).startswith("s.csv:")
+        return
+    assert sample.optional_fields == ("measure.buttockcircumference",)
+    assert sample.optional is not None and sample.optional.shape == (len(sample.matrix), 1)
+    hips = sample.optional[:, 0]
+    assert all(math.isnan(v) or (math.isfinite(v) and v > 0) for v in hips)
+    if "39 in" in cells and len(sample.matrix) == len(cells):
+        assert hips[cells.index("39 in")] == pytest.approx(99.06)
+
+
+def test_a_measured_column_is_passed_over_unless_asked():
+    text = "stature,mass,hip_circumference[in]\n160,60,40\n161,61,\n"
+    assert read_sample(text, FIELDS, "s.csv").optional is None
+    kept = read_sample(text, FIELDS, "s.csv", optional=MEASURED)
+    assert kept.optional is not None
+    assert kept.optional[0, 0] == pytest.approx(101.6) and math.isnan(kept.optional[1, 0])
+    assert len(kept.matrix) == 2

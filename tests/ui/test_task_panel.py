@@ -101,7 +101,7 @@ def test_the_task_panel_follows_the_strength_page_and_its_cells(app_at, drive):
             for joint in ("right elbow", "right shoulder", "left hip", "right knee", "left ankle"):
                 assert joint in shown
             assert f"Limiting: {words} " in shown
-            assert "Not covered, no published model in sass covers it (N-m): left wrist" in shown
+            assert "not covered (N-m): left wrist" in shown
             assert "trunk (L5/S1)" in shown
 
             # h: the right hand's curve of percent capable against its load

@@ -81,7 +81,7 @@ def test_the_attributes_sass_reads_are_set_where_expected():
 
 
 def test_the_static_files_the_page_names_are_shipped():
-    """sass's page (ui/serve_page/app_index.html) loads textual-serve's
+    """sass's page (ui/serve/serve_page/app_index.html) loads textual-serve's
     script, stylesheet and fonts; the script still asks for Roboto Mono."""
     static = Path(server.__file__).parent / "static"
     page = (Path(inspect.getfile(SassServer)).parent / "serve_page" / "app_index.html").read_text()

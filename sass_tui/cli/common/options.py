@@ -65,6 +65,31 @@ def add_virtual_option(parser: argparse.ArgumentParser | argparse._ArgumentGroup
     )
 
 
+def add_within_range_option(parser: argparse.ArgumentParser | argparse._ArgumentGroup) -> None:
+    """`--within-range`: with `--virtual NAME`, leave out the virtual people
+    predicted from a value beyond the real people's range (the answer says
+    how many); read by `within_range_of`."""
+    parser.add_argument(
+        "--within-range",
+        action="store_true",
+        help="with --virtual: leave out the VIRTUAL people predicted from a stature, mass, "
+        "hip or waist beyond every real person's of their gender (flagged when made; "
+        "the answer says how many)",
+    )
+
+
+def within_range_of(args: argparse.Namespace) -> bool:
+    """Whether `--within-range` was given (refused without --virtual)."""
+    wanted = bool(getattr(args, "within_range", False))
+    if wanted and getattr(args, "virtual", None) is None:
+        raise WeightingArgumentError(
+            "--within-range leaves out VIRTUAL people beyond the real people's range: "
+            "give --virtual NAME too",
+            where="--within-range",
+        )
+    return wanted
+
+
 def weighting_name(args: argparse.Namespace) -> str | None:
     """The stored weights `--target NAME` or `--virtual NAME` asks for (a
     virtual population's are stored as the target `virtual:NAME`)."""

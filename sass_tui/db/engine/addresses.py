@@ -23,6 +23,7 @@ POSTGRES_COMMANDS = (
     "export",
     "strength",
     "task",
+    "reach",
     "stats",
 )
 POSTGRES_VERBS = (

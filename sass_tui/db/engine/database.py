@@ -17,17 +17,18 @@ from __future__ import annotations
 import os
 import sys
 import threading
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from sass_tui.db.engine.addresses import is_url, shown
 from sass_tui.db.engine.schema import DatabaseError, transaction
+from sass_tui.db.engine.staging import store_people
 from sass_tui.db.people.default import fill_default, open_database
 
 if TYPE_CHECKING:
-    from sass_tui.db.progress import Cancel, Progress
+    from sass_tui.db.progress import Progress
     from sass_tui.db.query.query import CompiledQuery, Query
     from sass_tui.db.query.query_tree import Dialect
     from sass_tui.model.population.prediction import Predictor
@@ -162,31 +163,6 @@ class Database:
 
         with self.connection() as conn:
             return open_predictor(conn)
-
-
-def store_people(
-    conn: Any, load: Callable[[Any], T], cancel: Cancel | None = None, *, replace_all: bool = False
-) -> T:
-    """The one place that decides how an import stores people, for the command
-    line and the screens alike (db/people/ansur.py's import_ansur_into and
-    db/people/flatfile.py's import_flat_into, which QueryLists's imports call, and
-    init_postgres): on SQLite `load` runs on
-    the file's own connection (its transaction is the import's); on
-    PostgreSQL it runs on a SQLite staging file whose people are then copied
-    in one transaction (db/engine/postgres.py's import_staged), so a failure or a
-    cancel stores nothing.  `replace_all` (PostgreSQL's `sass db init` only;
-    SQLite's rebuilds the file, db/people/default.py): everyone stored before goes."""
-    # db/engine/dialect.py's dialect_of, which imports db/engine/postgres.py: off sass query.
-    if getattr(conn, "dialect", "sqlite") == "postgresql":
-        # deferred: db.postgres — off sass query, sass db init (sass_tui/startup.py)
-        from sass_tui.db.engine.postgres import import_staged
-
-        return import_staged(conn, load, cancel=cancel, replace_all=replace_all)
-    if replace_all:
-        raise ValueError(
-            "replace_all is PostgreSQL's: a SQLite file is rebuilt (db/people/default.py)"
-        )
-    return load(conn)
 
 
 def init_postgres(url: str, progress: Progress | None = None, *, force: bool) -> dict[str, int]:

@@ -22,11 +22,11 @@ import math
 import sqlite3
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import Any, BinaryIO, NoReturn, cast
+from typing import TYPE_CHECKING, Any, BinaryIO, NoReturn, cast
 
 import numpy as np
 
-from sass_tui.db.engine import database
+from sass_tui.db.engine import staging
 from sass_tui.db.engine.schema import GIRTH_NAMES, PERSON_ATTRIBUTES, check_writable, transaction
 from sass_tui.db.people.people_store import PeopleBatch, girth_mass_fractions, store_people
 from sass_tui.db.progress import Cancel, Progress, Steps
@@ -34,6 +34,9 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.files.paths import PathError, regular_file
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES, PUBLISHED_TO_CANONICAL
 from sass_tui.model.text import control_character, printable, quoted
+
+if TYPE_CHECKING:
+    from sass_tui.db.engine.database import Database
 
 ANSUR_HANDEDNESS = {
     "right hand": "right",
@@ -577,7 +580,7 @@ def import_ansur(
 
 
 def import_ansur_into(
-    db: database.Database,
+    db: Database,
     files: Sequence[str | Path],
     *,
     label: str,
@@ -585,10 +588,10 @@ def import_ansur_into(
     cancel: Cancel | None = None,
 ) -> dict[str, int]:
     """Import ANSUR II format files into `db` in one transaction, as
-    db/engine/database.py's store_people decides (on PostgreSQL through a staging
+    db/engine/staging.py's store_people decides (on PostgreSQL through a staging
     file); people per gender."""
     with db.connection() as conn:
-        return database.store_people(
+        return staging.store_people(
             conn,
             lambda storing: import_ansur(storing, files, progress, label=label, cancel=cancel),
             cancel,

@@ -31,11 +31,11 @@ from collections.abc import Iterator, Sequence
 from contextvars import ContextVar
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, NoReturn
+from typing import TYPE_CHECKING, Any, NoReturn
 
 import numpy as np
 
-from sass_tui.db.engine import database
+from sass_tui.db.engine import staging
 from sass_tui.db.engine.schema import (
     CENTER_OF_MASS_NAMES,
     GIRTH_NAMES,
@@ -55,6 +55,9 @@ from sass_tui.model.text import control_character, quoted
 from sass_tui.model.units import UnitError, convert, unit_name
 from sass_tui.model.vocabulary import GENDERS, SIDES, STRENGTH_TYPES
 from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
+
+if TYPE_CHECKING:
+    from sass_tui.db.engine.database import Database
 
 NO_VALUE = 999.0
 # Ids stay below 10^12: exact in a float, and far from SQLite's 64-bit limit
@@ -451,16 +454,16 @@ def import_flat_files(
 
 
 def import_flat_into(
-    db: database.Database,
+    db: Database,
     files: FlatFiles,
     progress: Progress | None = None,
     cancel: Cancel | None = None,
 ) -> int:
     """Import legacy flat files into `db` in one transaction, as
-    db/engine/database.py's store_people decides (on PostgreSQL through a staging
+    db/engine/staging.py's store_people decides (on PostgreSQL through a staging
     file); how many people."""
     with db.connection() as conn:
-        return database.store_people(
+        return staging.store_people(
             conn, lambda storing: import_flat_files(storing, files, progress, cancel), cancel
         )
 

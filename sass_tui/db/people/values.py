@@ -49,6 +49,18 @@ class Values:
     def __len__(self) -> int:
         return len(self.ids)
 
+    def only(self, ids: np.ndarray) -> Values:
+        """These values of the people among `ids` alone (their order kept)."""
+        keep = np.isin(self.ids, ids)
+        return Values(
+            ids=self.ids[keep],
+            names=tuple(n for n, k in zip(self.names, keep) if k),
+            genders=tuple(g for g, k in zip(self.genders, keep) if k),
+            fields=self.fields,
+            units=self.units,
+            matrix=self.matrix[keep],
+        )
+
     def column(self, field: str) -> np.ndarray:
         return self.matrix[:, self.fields.index(field)]
 

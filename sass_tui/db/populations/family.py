@@ -65,6 +65,9 @@ def load_family(
     steps(0, 3)
     with interruptible(conn, cancel, "the family"):
         values = load_values(conn, fields, joined(people_query, f"gender = {gender}"))
+    if weighted_to is not None and weighted_to.target.is_virtual:
+        # a virtual population's people are its weighted ones (--within-range leaves some out)
+        values = values.only(weighted_to.ids)
     steps(1, 3)
     if len(values) == 0:
         raise FitError(f"the population {people_query.text!r} has no {gender} people")

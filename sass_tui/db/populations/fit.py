@@ -29,6 +29,7 @@ No Textual, no argument parsing, no printing.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import sqlite3
 from collections.abc import Sequence
@@ -104,13 +105,24 @@ class TargetShare:
     percent: float | None
     effective_n: float  # Kish, over the measured people of the target
     virtual: bool = False  # a virtual population's people: the per-gender shares are weighted
+    # per --by field: the share of the target beyond every person weighted
+    # (Target.outside_shares); `percent` is of the rest, which the people cover
+    outside_share: dict[str, float] = dataclasses.field(default_factory=dict)
 
     def to_json(self) -> dict[str, Any]:
-        return {
-            "name": self.name,
-            "percent": _round(self.percent),
-            "effective_n": round(self.effective_n, 2),
-        } | ({"virtual": True, "people": self.words} if self.virtual else {})
+        return (
+            {
+                "name": self.name,
+                "percent": _round(self.percent),
+                "effective_n": round(self.effective_n, 2),
+            }
+            | ({"virtual": True, "people": self.words} if self.virtual else {})
+            | (
+                {"outside_share": {f: round(x, 6) for f, x in self.outside_share.items()}}
+                if not self.virtual
+                else {}
+            )
+        )
 
 
 @dataclass(frozen=True)
@@ -251,6 +263,10 @@ def fit_test(
     params = tuple(v for _, values in limit_sql for v in values) + where_params
     with interruptible(conn, cancel, "the fit test"):
         rows = conn.execute(sql, params).fetchall()
+    if target is not None and target.target.is_virtual:
+        # a virtual population's people are its weighted ones (--within-range leaves some out)
+        member = frozenset(target.ids.tolist())
+        rows = [r for r in rows if r[0] in member]
     steps(1, 3)
     if not rows:
         raise FitError(f"the population {people_query.text!r} selects nobody")
@@ -278,24 +294,30 @@ def fit_test(
         conn, texts, people_query.text, weights, ids, gender, passes, failing, virtual
     )
     if target is not None:
-        result = replace(result, target=_target_share(target, ids, passes))
+        result = replace(result, target=_target_share(target, ids, passes, gender))
     steps(3, 3)
     return result
 
 
 def _target_share(
-    target: TargetWeights, ids: npt.NDArray[np.int64], passes: npt.NDArray[np.float64]
+    target: TargetWeights,
+    ids: npt.NDArray[np.int64],
+    passes: npt.NDArray[np.float64],
+    genders: npt.NDArray[np.object_],
 ) -> TargetShare:
     w = target.of(ids)
     measured = ~np.isnan(passes).any(axis=1)
     fits = np.where(measured, np.nan_to_num(passes, nan=1.0).prod(axis=1), 0.0)
     total = float(w[measured].sum())
+    gender = np.asarray(genders, dtype=object)
+    weight_of = {g: float(w[measured & (gender == g)].sum()) for g in GENDERS}
     return TargetShare(
         name=target.target.name,
         words=target.target.words(),
         percent=100.0 * float((w * fits).sum()) / total if total > 0 else None,
         effective_n=kish_effective_n(w[measured]),
         virtual=target.target.is_virtual,
+        outside_share=target.target.outside_shares(weight_of),
     )
 
 

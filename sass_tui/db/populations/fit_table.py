@@ -10,6 +10,17 @@ def _percent(value: float | None) -> str:
     return "-" if value is None else f"{value:.1f} %"
 
 
+def outside_line(shares: dict[str, float]) -> str:
+    """What of a target the weighted people cannot reach, beside its accommodated share."""
+    each = ", ".join(
+        f"{100 * share:.1f} % beyond every person's {f}" for f, share in shares.items()
+    )
+    return (
+        f"outside: {each}; the weighted people cannot stand for them, and the target's "
+        "share is of the rest"
+    )
+
+
 def format_table(result: FitResult) -> str:
     lines = [
         f"Design limits: {' AND '.join(result.limits)}",
@@ -36,6 +47,8 @@ def format_table(result: FitResult) -> str:
             f"{'target':<10} {'':>7} {'':>7} {_percent(result.target.percent):>13} "
             f"{'':>9}   (weighted: {result.target.words})"
         )
+        if result.target.outside_share:
+            lines.append(outside_line(result.target.outside_share))
         if result.target.virtual:
             lines.append(
                 "VIRTUAL people: each gender's accommodated share is weighted by their "

@@ -182,19 +182,10 @@ def _outside(
     """The target's outside_share of `field` over the genders selected, each
     gender counted by its share of the selected weight; None when the target
     was not made over `field` (or is a virtual population)."""
-    if weights is None or weights.target.is_virtual:
+    if weights is None:
         return None
-    total = float(w.sum())
-    share = 0.0
-    for g in GENDERS:
-        mine = float(w[genders == g].sum())
-        if mine <= 0:
-            continue
-        outside = weights.target.outside_share(g, field)
-        if outside is None:
-            return None
-        share += outside * mine / total
-    return share
+    weight_of = {g: float(w[genders == g].sum()) for g in GENDERS}
+    return weights.target.outside_shares(weight_of).get(field)
 
 
 def percentile_key(p: float) -> str:

@@ -20,7 +20,7 @@ from __future__ import annotations
 import datetime as _dt
 import json
 import sqlite3
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -89,6 +89,22 @@ class Target:
         share = of_gender.get(field, {}).get("outside_share")
         return None if share is None else float(share)
 
+    def outside_shares(self, weight_of: Mapping[Any, float]) -> dict[str, float]:
+        """Per `--by` field, the share of the target's weight beyond every
+        person weighted, over the genders of `weight_of` (gender -> its
+        weight among the people asked about), each gender counted by its
+        share of that weight; a field some such gender lacks a share of is
+        left out (a target made before sass said it; a virtual population)."""
+        total = sum(w for w in weight_of.values() if w > 0)
+        out: dict[str, float] = {}
+        if self.is_virtual or total <= 0:
+            return out
+        for field in self.fields:
+            shares = {g: self.outside_share(g, field) for g, w in weight_of.items() if w > 0}
+            if all(share is not None for share in shares.values()):
+                out[field] = sum(float(x or 0.0) * weight_of[g] / total for g, x in shares.items())
+        return out
+
     @property
     def base_query(self) -> str:
         return base_query(self.population, self.gender)
@@ -107,11 +123,20 @@ class Target:
         if self.is_virtual:
             virtual = self.summary.get("virtual", {})
             beyond = sum(virtual.get("beyond", {}).values())
+            measured = " and ".join(k.removeprefix("measure.") for k in virtual.get("kept", []))
+            kept = f", and its measured {measured} where it has them" if measured else ""
+            left_out = virtual.get("left_out")
+            where = (
+                f"{beyond} beyond the range the prediction was fitted on"
+                if left_out is None
+                else f"{left_out} beyond the range the prediction was fitted on left out "
+                "(--within-range)"
+            )
             return (
                 f"VIRTUAL people, not measured: {self.name.removeprefix(VIRTUAL_PREFIX)} "
-                f"({self.people} virtual people with {self.sample}'s own stature and mass, every "
-                f"other measure predicted from the real people; {beyond} beyond the range the "
-                f"prediction was fitted on; weighted by {self.weighted_by or 'nothing'}; "
+                f"({self.people} virtual people with {self.sample}'s own stature and mass{kept}, "
+                f"every other measure predicted from the real people; {where}; "
+                f"weighted by {self.weighted_by or 'nothing'}; "
                 f"effective n {self.effective_n:.0f})"
             )
         who = "both genders" if self.gender == BOTH else self.gender

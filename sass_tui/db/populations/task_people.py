@@ -7,7 +7,9 @@ from __future__ import annotations
 
 import sqlite3
 
-from sass_tui.db.people.values import load_values
+import numpy as np
+
+from sass_tui.db.people.values import Values, load_values
 from sass_tui.db.populations.shipped import load_weights
 from sass_tui.db.populations.targets import Target, base_query
 from sass_tui.model.strength.published_strength import GENDER_WORDS
@@ -23,26 +25,37 @@ def group_words(target: Target, gender: str | None) -> str:
     return f"{target.name} {who}"
 
 
+def weighted_values(
+    conn: sqlite3.Connection, name: str, fields: list[str]
+) -> tuple[Target, list[tuple[str, Values, np.ndarray]]]:
+    """The target (or virtual population `virtual:NAME`) `name`, made first if
+    it is the shipped one, and for each of its genders its people's `fields`
+    (query-language names) and weights."""
+    weights = load_weights(conn, name)
+    target = weights.target
+    out = []
+    for gender in target.genders:
+        values = load_values(conn, fields, base_query(target.population, gender))
+        out.append((gender, values, weights.of(values.ids)))
+    return target, out
+
+
 def weighted_people(conn: sqlite3.Connection, name: str) -> tuple[Target, list[Population]]:
     """The target (or virtual population `virtual:NAME`) `name`, made first if
     it is the shipped one, and its people of each of its genders, weighted."""
-    weights = load_weights(conn, name)
-    target = weights.target
-    groups = []
-    for gender in target.genders:
-        values = load_values(
-            conn, ["age", "mass", "stature"], base_query(target.population, gender)
-        )
+    target, groups = weighted_values(conn, name, ["age", "mass", "stature"])
+    people = []
+    for gender, values, weights in groups:
         age, mass, stature = values.matrix.T
-        groups.append(
+        people.append(
             Population(
                 words=group_words(target, gender),
                 gender=gender,
                 ages=age,
                 masses=mass,
                 statures=stature / 100.0,
-                weights=weights.of(values.ids),
+                weights=weights,
                 note=target.words(),
             )
         )
-    return target, groups
+    return target, people

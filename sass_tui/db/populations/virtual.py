@@ -3,11 +3,16 @@
 
 A virtual population NAME is one virtual person per sample row with a
 gender, a stature and a mass: the row's own stature, mass, age and gender,
-the 91 other ANSUR II measures predicted from stature and mass by sass's
-regression fitted on the real people of that gender (model/population/prediction.py)
-plus a residual drawn from its heteroscedastic scatter (seed SEED: the same
-database gives the same people), and the girth relation derived from the
-measures as ANSUR II people's is (db/people/ansur.py's derived_girth).
+and its own hip (as buttock circumference) and waist circumference where the
+sample measured them (MEASURED), the other ANSUR II measures predicted from
+those and the age (clamped to the soldiers' 17-58) by sass's regression
+fitted on the real people of that gender (model/population/prediction.py)
+plus a residual drawn from its bounded heteroscedastic scatter (seed SEED:
+the same database gives the same people), and the girth relation derived
+from the measures as ANSUR II people's is (db/people/ansur.py's derived_girth).
+A person with a known value beyond the real people's range is flagged:
+the target's summary lists them (`outside_range`), `within_range` leaves
+them out of a weighted answer.
 
 They are stored as people, as ANSUR II people are (the person, measure and
 girth tables), under the source `virtual:NAME` (db/query/scope.py: out of every
@@ -28,7 +33,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 import numpy.typing as npt
 
-from sass_tui.db.engine import database
+from sass_tui.db.engine import staging
 from sass_tui.db.engine.dialect import dialect_of, mark_of, writing
 from sass_tui.db.engine.schema import PERSON_TABLES, SQLITE_ONLY_TABLES
 from sass_tui.db.people.ansur import derived_girth
@@ -59,6 +64,11 @@ from sass_tui.model.vocabulary import GENDERS
 
 SEED = 20172020
 PREDICTED_FROM = ("stature", "mass")
+# What a civilian survey measured as ANSUR II does, kept and predicted from
+# when the sample has the column (model/files/sample_file.py's NHANES_COLUMNS).
+MEASURED = ("measure.buttockcircumference", "measure.waistcircumference")
+# Predicted from too, clamped to the fitted people's range (ANSUR II: 17-58).
+HELD = ("age",)
 # The fields the regression predicts: ANSUR II's measures, stature and mass
 # as the person table holds them (model/population/prediction.py's ALIASES).
 FIELDS = (
@@ -66,6 +76,8 @@ FIELDS = (
     "mass",
     *(f"measure.{m}" for m in MEASURES if m not in ("stature", "weightkg")),
 )
+# What the regression is fitted on: those and the held fields.
+FITTED = (*FIELDS, *HELD)
 # Whom the regression learns from: every real person (db/query/scope.py), each gender its own.
 TRAINING = "gender = male OR gender = female"
 
@@ -76,6 +88,7 @@ class VirtualPopulation:
     weights: npt.NDArray[np.float64]  # mean 1, the batch's order
     target: Target  # the target `virtual:NAME` that carries the weights
     beyond: dict[str, int]  # per gender: people beyond the range the regression was fitted on
+    outside: npt.NDArray[np.bool_]  # per person, the batch's order: beyond that range
 
 
 def virtual_name(name: str) -> str:
@@ -101,8 +114,8 @@ def make_virtual(
                 where=sample_name,
             )
         sample = replace(sample, genders=(gender,) * len(sample.matrix))
-    values = load_values(conn, FIELDS, TRAINING)
-    predictor = Predictor.fit(values, FIELDS)
+    values = load_values(conn, FITTED, TRAINING)
+    predictor = Predictor.fit(values, FITTED)
     rng = np.random.default_rng(SEED)
     parts: list[tuple[str, Sample, VirtualPeople]] = []
     beyond: dict[str, int] = {}
@@ -112,17 +125,19 @@ def make_virtual(
         if len(rows.matrix) == 0:
             continue
         model = predictor.model(gender)
-        drawn = draw_virtual(model, PREDICTED_FROM, rows.matrix[:, :2], rng)
+        names, known = _known(rows, model.index())
+        drawn = draw_virtual(model, names, known, rng, held=HELD)
         beyond[gender] = drawn.beyond
         fitted[gender] = {
             "people": drawn.fitted_on,
-            **{field: list(fitted_range(model, field)) for field in PREDICTED_FROM},
+            **{field: list(fitted_range(model, field)) for field in names},
         }
         parts.append((gender, rows, drawn))
     if not parts:
         raise TargetError(f"{sample_name}: no row with a gender, a stature and a mass")
     people = _batch(name, parts)
     raw = np.concatenate([rows.row_weights for _, rows, _ in parts])
+    outside = np.concatenate([drawn.outside for _, _, drawn in parts])
     weights = raw * len(raw) / raw.sum()
     label = virtual_name(name)
     target = Target(
@@ -138,7 +153,11 @@ def make_virtual(
             "virtual": {
                 "beyond": beyond,
                 "fitted_on": fitted,
-                "predicted_from": list(PREDICTED_FROM),
+                "predicted_from": [*PREDICTED_FROM, *sample.optional_fields, *HELD],
+                "kept": list(sample.optional_fields),
+                "held": list(HELD),
+                # the batch's offsets (source_key virtual:NAME:OFFSET) beyond the range
+                "outside_range": [int(k) for k in np.flatnonzero(outside)],
                 "seed": SEED,
             },
             WEIGHTED_BY: sample.weighted_by,
@@ -146,7 +165,23 @@ def make_virtual(
         created=_dt.datetime.now(_dt.UTC).isoformat(timespec="seconds"),
         weighted_by=sample.weighted_by,
     )
-    return VirtualPopulation(people, weights, target, beyond)
+    return VirtualPopulation(people, weights, target, beyond, outside)
+
+
+def _known(rows: Sample, index: dict[str, int]) -> tuple[tuple[str, ...], npt.NDArray[np.float64]]:
+    """The names and values (NaN: not measured) a gender's rows are predicted
+    from: stature and mass, the MEASURED fields the sample has and the model
+    knows, and the age when the sample has one."""
+    names: list[str] = list(PREDICTED_FROM)
+    columns = [rows.matrix[:, :2]]
+    for j, field in enumerate(rows.optional_fields):
+        if field in MEASURED and field in index and rows.optional is not None:
+            names.append(field)
+            columns.append(rows.optional[:, j : j + 1])
+    if rows.ages is not None and "age" in index:
+        names.append("age")
+        columns.append(rows.ages[:, None])
+    return tuple(names), np.hstack(columns)
 
 
 def _batch(name: str, parts: list[tuple[str, Sample, VirtualPeople]]) -> PeopleBatch:
@@ -181,6 +216,8 @@ def _measures(fields: tuple[str, ...], values: npt.NDArray[np.float64]) -> npt.N
     column = {"stature": "stature", "mass": "weightkg"}
     out = np.full((len(values), len(MEASURES)), np.nan)
     for j, field in enumerate(fields):
+        if field in HELD:
+            continue  # the row's own, stored as the person's
         name = column.get(field, field.removeprefix("measure."))
         out[:, MEASURES.index(name)] = values[:, j]
     return out
@@ -203,14 +240,14 @@ def store_virtual_in(conn: sqlite3.Connection, population: VirtualPopulation) ->
 
 def store_virtual(conn: sqlite3.Connection, population: VirtualPopulation) -> None:
     """Store a virtual population in its own transaction, on either engine
-    (db/engine/database.py's store_people decides how: on PostgreSQL through a
+    (db/engine/staging.py's store_people decides how: on PostgreSQL through a
     staging file, copied in one transaction)."""
 
     def load(into: sqlite3.Connection) -> None:
         with writing(into):
             store_virtual_in(into, population)
 
-    database.store_people(conn, load)
+    staging.store_people(conn, load)
 
 
 def shipped_sample() -> Sample:
@@ -222,6 +259,7 @@ def shipped_sample() -> Sample:
         NHANES_NAME,
         weight=NHANES_WEIGHT,
         need_gender=True,
+        optional=MEASURED,
     )
 
 
@@ -261,6 +299,36 @@ def store_shipped(conn: sqlite3.Connection) -> None:
     weights, population = make_shipped(conn)
     store_target(conn, weights, replace=True)
     store_virtual(conn, population)
+
+
+def within_range(conn: sqlite3.Connection, weights: TargetWeights) -> TargetWeights:
+    """A virtual population's weights without its people predicted from a
+    value beyond the real people's range (the summary's `outside_range`):
+    they weigh nothing, and the target's words say how many were left out.
+    Refused for a target of real people (whose `sass target --within-range`
+    is made so)."""
+    target = weights.target
+    if not target.is_virtual:
+        raise TargetError(
+            f"--within-range leaves out VIRTUAL people predicted beyond the real people; "
+            f"{target.name} is a target of real people: give --virtual NAME",
+            where="--within-range",
+        )
+    virtual = dict(target.summary.get("virtual", {}))
+    outside = {int(k) for k in virtual.get("outside_range", [])}
+    prefix = f"{target.name}:"  # virtual:NAME:OFFSET, as _batch keys them
+    rows = conn.execute(
+        f"SELECT id_num, source_key FROM person WHERE source = {mark_of(conn)}",
+        (target.name,),
+    ).fetchall()
+    gone = np.array(
+        sorted(int(i) for i, key in rows if int(str(key).removeprefix(prefix)) in outside),
+        dtype=np.int64,
+    )
+    keep = ~np.isin(weights.ids, gone)
+    virtual["left_out"] = int((~keep).sum())
+    summary = target.summary | {"virtual": virtual}
+    return TargetWeights(replace(target, summary=summary), weights.ids[keep], weights.weights[keep])
 
 
 def drop_virtual(conn: sqlite3.Connection, name: str) -> int:

@@ -74,6 +74,10 @@ _ASSUMED = {
     "forearm_down": 0.25,
     # the wrist's and hand's thickness over their breadth (front to back)
     "wrist_thickness": 0.65,
+    # the thigh's top stays this far (m) inside the hip breadth (the skin
+    # over the greater trochanter), and the two thighs this far apart
+    "thigh_inside_hips": 0.005,
+    "thighs_apart": 0.004,
 }
 
 
@@ -249,18 +253,17 @@ def trunk_sections(m: BodyMeasures, humanoid: Humanoid, stature: float) -> list[
     head_length, head_breadth = m.m("headlength"), m.m("headbreadth")
     forward = A["head_forward"] * head_length
     face = m.m("bizygomaticbreadth")
-    sections.append(_level("chin", chin, 0.75 * face / 2, 0.7 * head_length / 2, 2.2, forward))
+    # the chin and cheeks at least as far round as the neck below them, so
+    # the neck's narrowest girth is the measured one (a thick neck under a
+    # small face would otherwise narrow under the jaw)
+    neck_girth = m.m("neckcircumference")
+    for name, y, a, b in (
+        ("chin", chin, 0.75 * face / 2, 0.7 * head_length / 2),
+        ("cheek", (chin + tragion) / 2, 0.95 * face / 2, 0.9 * head_length / 2),
+    ):
+        grow = max(1.0, 1.01 * neck_girth / perimeter(a, b, 2.2))
+        sections.append(_level(name, y, grow * a, grow * b, 2.2, forward))
     girth_y = tragion + A["head_girth_up"] * (stature - tragion)
-    sections.append(
-        _level(
-            "cheek",
-            (chin + tragion) / 2,
-            0.95 * face / 2,
-            0.9 * head_length / 2,
-            2.2,
-            forward,
-        )
-    )
     sections.append(
         _level(
             "tragion",
@@ -301,6 +304,22 @@ def _round_section(name: str, centre: np.ndarray, circumference: float) -> Secti
     return Section(name, centre, _X, _Z, r, r, 2.0)
 
 
+def _upper_thigh(name: str, centre: np.ndarray, girth: float, inside: float) -> Section:
+    """The thigh's top, round unless that stands out past `inside` (m from
+    the mid-sagittal plane: within the hip breadth) or across the midline:
+    then narrower and deeper, the same girth, its centre moved in between."""
+    r = girth / perimeter(1.0, 1.0, 2.0)
+    side = 1.0 if centre[0] >= 0 else -1.0
+    x = abs(float(centre[0]))
+    gap = _ASSUMED["thighs_apart"] / 2
+    if x + r <= inside and x - r >= gap:
+        return _round_section(name, centre, girth)
+    a = min(r, (inside - gap) / 2)
+    x = min(max(x, gap + a), inside - a)
+    b = _solve(a, girth, lambda d: perimeter(a, d, 2.0), girth)
+    return Section(name, np.array([side * x, centre[1], centre[2]]), _X, _Z, a, b, 2.0)
+
+
 def leg_sections(m: BodyMeasures, humanoid: Humanoid, side: str) -> list[Section]:
     """Hip centre down to the ankle (highest first): girths at the heights
     ANSUR II measured them or at the stated proxies."""
@@ -316,9 +335,10 @@ def leg_sections(m: BodyMeasures, humanoid: Humanoid, side: str) -> list[Section
     knee_y, ankle_y = float(knee[1]), float(ankle[1])
     thigh, lower = m.m("thighcircumference"), m.m("lowerthighcircumference")
     calf, least = m.m("calfcircumference"), m.m("anklecircumference")
+    inside = m.m("hipbreadth") / 2 - A["thigh_inside_hips"]
     return [
-        _round_section("hip", at(hip[1]), thigh),
-        _round_section("thigh", at(crotch), thigh),
+        _upper_thigh("hip", at(hip[1]), thigh, inside),
+        _upper_thigh("thigh", at(crotch), thigh, inside),
         _round_section("lower_thigh", at(knee_y + A["lower_thigh_up"] * (crotch - knee_y)), lower),
         # no girth is measured at the knee: the lesser of its neighbours'
         _round_section("knee", at(knee_y), min(lower, calf)),
@@ -409,21 +429,30 @@ def loft(
     """The closed surface through the sections in order, closed by a point
     before the first and one after the last: vertices and outward
     counter-clockwise triangles."""
-    rings = _dense([s.points() for s in sections])
+    return closed_tube(_dense([s.points() for s in sections]), first_cap, last_cap)
+
+
+def closed_tube(
+    rings: list[np.ndarray], first_cap: np.ndarray, last_cap: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The closed surface through rings of equal size in order, closed by a
+    point before the first and one after the last: vertices and outward
+    counter-clockwise triangles (the body's parts, the reach envelope)."""
+    around = len(rings[0])
     vertices = np.vstack([first_cap[None, :], *rings, last_cap[None, :]])
     count = len(rings)
-    first, last = 0, 1 + count * AROUND
-    k = np.arange(AROUND)
-    k1 = (k + 1) % AROUND
-    top = 1 + (count - 1) * AROUND
+    first, last = 0, 1 + count * around
+    k = np.arange(around)
+    k1 = (k + 1) % around
+    top = 1 + (count - 1) * around
     caps = [
-        np.column_stack([np.full(AROUND, first), 1 + k1, 1 + k]),
-        np.column_stack([np.full(AROUND, last), top + k, top + k1]),
+        np.column_stack([np.full(around, first), 1 + k1, 1 + k]),
+        np.column_stack([np.full(around, last), top + k, top + k1]),
     ]
-    # ring r's point k is 1 + r * AROUND + k; each quad between rings a, b:
+    # ring r's point k is 1 + r * around + k; each quad between rings a, b:
     # (a+k, a+k1, b+k1) and (a+k, b+k1, b+k)
-    a = 1 + np.arange(count - 1)[:, None] * AROUND
-    b = a + AROUND
+    a = 1 + np.arange(count - 1)[:, None] * around
+    b = a + around
     quads = [
         np.stack([a + k, a + k1, b + k1], axis=-1).reshape(-1, 3),
         np.stack([a + k, b + k1, b + k], axis=-1).reshape(-1, 3),

@@ -63,9 +63,21 @@ _PLACING: tuple[str, ...] = (
     "lateralmalleolusheight",
     "bimalleolarbreadth",
 )
+# What a person's reach takes beyond those (model/body/reach.py): the
+# sitting height, the grip's place in the hand and the survey's own reach
+# measures, which set the person's shoulder travel.
+REACH_LANDMARKS: tuple[str, ...] = (
+    "sittingheight",
+    "forearmhandlength",
+    "forearmcenterofgriplength",
+    "thumbtipreach",
+    "overheadfingertipreachsitting",
+    "span",
+)
 LANDMARK_MEASURES: tuple[str, ...] = (
     *_PLACING,
     *(name for name in SURFACE_MEASURES if name not in _PLACING),
+    *REACH_LANDMARKS,
 )
 
 # Rab, Petuskey & Bagley (2002): the shoulder centre below the acromion, as a

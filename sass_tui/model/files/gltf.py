@@ -45,8 +45,8 @@ SUFFIXES = (".glb", ".gltf")
 SEATED_FLEXION = math.pi / 2
 
 # glTF component types and buffer-view targets (spec 5.1.3, 5.11.4)
-_FLOAT, _UNSIGNED_BYTE, _UNSIGNED_SHORT, _UNSIGNED_INT = 5126, 5121, 5123, 5125
-_ARRAY_BUFFER, _ELEMENT_ARRAY_BUFFER = 34962, 34963
+FLOAT, _UNSIGNED_BYTE, _UNSIGNED_SHORT, UNSIGNED_INT = 5126, 5121, 5123, 5125
+ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
 _GLB_MAGIC, _GLB_JSON, _GLB_BIN = 0x46546C67, 0x4E4F534A, 0x004E4942
 
 
@@ -194,23 +194,23 @@ def render_gltf(figure: Figure, pose: str = "standing") -> GltfDocument:
 
     surface = figure_surface(figure, humanoid)
     mesh = body_mesh(humanoid, surface)
-    packer = _Packer()
+    packer = Packer()
     inverse_bind = np.zeros((len(joints), 4, 4), dtype=np.float32)
     for i, joint in enumerate(joints):
         inverse_bind[i] = np.eye(4)
         inverse_bind[i, :3, 3] = -centers[joint]
     # glTF matrices are column-major (spec 3.6.2.4): the transpose, row by row
-    ibm = packer.add(inverse_bind.transpose(0, 2, 1), "MAT4", _FLOAT, None)
-    position = packer.add(mesh.positions, "VEC3", _FLOAT, _ARRAY_BUFFER, bounds=True)
-    normal = packer.add(mesh.normals, "VEC3", _FLOAT, _ARRAY_BUFFER)
-    joint_slots = packer.add(mesh.joints, "VEC4", _UNSIGNED_BYTE, _ARRAY_BUFFER)
-    weights = packer.add(mesh.weights, "VEC4", _FLOAT, _ARRAY_BUFFER)
+    ibm = packer.add(inverse_bind.transpose(0, 2, 1), "MAT4", FLOAT, None)
+    position = packer.add(mesh.positions, "VEC3", FLOAT, ARRAY_BUFFER, bounds=True)
+    normal = packer.add(mesh.normals, "VEC3", FLOAT, ARRAY_BUFFER)
+    joint_slots = packer.add(mesh.joints, "VEC4", _UNSIGNED_BYTE, ARRAY_BUFFER)
+    weights = packer.add(mesh.weights, "VEC4", FLOAT, ARRAY_BUFFER)
     wide = len(mesh.positions) > 65535
     indices = packer.add(
         mesh.triangles.reshape(-1),
         "SCALAR",
-        _UNSIGNED_INT if wide else _UNSIGNED_SHORT,
-        _ELEMENT_ARRAY_BUFFER,
+        UNSIGNED_INT if wide else _UNSIGNED_SHORT,
+        ELEMENT_ARRAY_BUFFER,
     )
     body = len(nodes)
     nodes.append({"name": f"{humanoid.name}_body", "mesh": 0, "skin": 0})
@@ -251,7 +251,7 @@ def render_gltf(figure: Figure, pose: str = "standing") -> GltfDocument:
                 "name": "skin",
                 "pbrMetallicRoughness": {
                     # glTF colour factors are linear; SKIN is sRGB as X3D writes it
-                    "baseColorFactor": [*(_linear(c) for c in skin_colour), 1.0],
+                    "baseColorFactor": [*(linear(c) for c in skin_colour), 1.0],
                     "metallicFactor": 0.0,
                     "roughnessFactor": 0.8,
                 },
@@ -366,17 +366,18 @@ def sass_version() -> str:
 # --- packing -------------------------------------------------------------------
 
 
-class _Packer:
+class Packer:
     """One buffer, one buffer view per accessor, each view 4-byte aligned
-    (spec 3.6.2.4: an accessor's offset is a multiple of its component size)."""
+    (spec 3.6.2.4: an accessor's offset is a multiple of its component size);
+    `asset` given, its buffer, views and accessors go on."""
 
-    _DTYPES = {_FLOAT: "<f4", _UNSIGNED_BYTE: "u1", _UNSIGNED_SHORT: "<u2", _UNSIGNED_INT: "<u4"}
+    _DTYPES = {FLOAT: "<f4", _UNSIGNED_BYTE: "u1", _UNSIGNED_SHORT: "<u2", UNSIGNED_INT: "<u4"}
     _WIDTH = {"SCALAR": 1, "VEC3": 3, "VEC4": 4, "MAT4": 16}
 
-    def __init__(self) -> None:
-        self.data = bytearray()
-        self.views: list[dict[str, Any]] = []
-        self.accessors: list[dict[str, Any]] = []
+    def __init__(self, asset: GltfDocument | None = None) -> None:
+        self.data = bytearray(asset.buffer if asset else b"")
+        self.views: list[dict[str, Any]] = list(asset.document["bufferViews"]) if asset else []
+        self.accessors: list[dict[str, Any]] = list(asset.document["accessors"]) if asset else []
 
     def add(
         self,
@@ -387,7 +388,7 @@ class _Packer:
         bounds: bool = False,
     ) -> int:
         array = np.ascontiguousarray(values, dtype=self._DTYPES[component])
-        if component == _FLOAT and not np.isfinite(array).all():
+        if component == FLOAT and not np.isfinite(array).all():
             raise GltfError("cannot write the glTF: a coordinate is not a number")
         self.data += b"\0" * (-len(self.data) % 4)
         raw = array.tobytes()
@@ -434,7 +435,7 @@ def _quaternion(axis: Any, angle: float) -> np.ndarray:
     return q
 
 
-def _linear(srgb: float) -> float:
+def linear(srgb: float) -> float:
     """sRGB to linear (IEC 61966-2-1), for glTF's baseColorFactor."""
     linear = srgb / 12.92 if srgb <= 0.04045 else ((srgb + 0.055) / 1.055) ** 2.4
     return round(linear, 4)

@@ -40,9 +40,22 @@ GENDER_WORDS = {"male": "male", "m": "male", "female": "female", "f": "female"}
 MAX_AGE = 130.0
 
 
+# NHANES's body-measure columns that stand for ANSUR II measures
+# (docs/target-populations.md, "Keep what NHANES measured"): its hip is
+# ANSUR II's buttock circumference (both at the buttocks' maximum
+# protrusion); its waist, at the iliac crest, is taken for ANSUR II's at
+# omphalion, a cross-walk the validation checks.
+NHANES_COLUMNS = {
+    "hip_circumference": "measure.buttockcircumference",
+    "waist_circumference": "measure.waistcircumference",
+}
+
+
 def header_field(name: str) -> str | None:
     """The field a column name stands for, None for a column passed over."""
     word = name.strip().lower()
+    if word in NHANES_COLUMNS:
+        return NHANES_COLUMNS[word]
     if word not in ("stature", "mass") and not word.startswith("measure."):
         return None
     return measure_field(word)
@@ -56,11 +69,14 @@ def read_sample(
     weight: str | None = None,
     gender: str | None = None,
     need_gender: bool = False,
+    optional: Sequence[str] = (),
 ) -> Sample:
     """The values of `fields` (query-language names) in the CSV `text` (the
     file `where`): with `gender`, only that gender's rows when the sample has
     a gender column; `need_gender`: the sample must have one.  `weight` names
-    the survey weight column.  SampleError says file:line and the column."""
+    the survey weight column.  `optional` fields are read too when the file
+    has their columns (an empty cell: NaN; a row is not left out for lacking
+    one).  SampleError says file:line and the column."""
     fields = tuple(fields)
     reader = csv.reader(io.StringIO(text.removeprefix("\ufeff"), newline=""))
     try:
@@ -120,7 +136,9 @@ def read_sample(
             "with the unit in brackets, e.g. stature[cm], mass[lb]",
             where=f"{where}:1",
         )
+    extra = tuple(f for f in optional if f in columns and f not in fields)
     values: list[list[float]] = []
+    measured: list[list[float]] = []
     weights: list[float] = []
     genders: list[str] = []
     ages: list[float] = []
@@ -142,6 +160,7 @@ def read_sample(
                 genders.append(word)
             rows += 1
             values.append([_cell(row, columns[f], f, field_unit(f), where, line) for f in fields])
+            measured.append([_cell(row, columns[f], f, field_unit(f), where, line) for f in extra])
             if weight_column is not None:
                 weights.append(_weight(row, weight_column, header, where, line))
             if age_column is not None:
@@ -167,6 +186,10 @@ def read_sample(
         np.array(ages)[complete] if age_column is not None else None,
         header[weight_column].strip() if weight_column is not None else None,
         unused,
+        extra,
+        np.array(measured, dtype=float).reshape(len(measured), len(extra))[complete]
+        if extra
+        else None,
     )
 
 

@@ -44,6 +44,10 @@ class Sample:
     ages: npt.NDArray[np.float64] | None = None
     weighted_by: str | None = None  # the --weight column
     unused_weights: tuple[str, ...] = ()  # columns named like a survey weight, not used
+    # Measured values read when the file has their columns (read_sample's
+    # `optional`): (complete rows, optional fields), NaN where a row lacks one.
+    optional_fields: tuple[str, ...] = ()
+    optional: npt.NDArray[np.float64] | None = None
 
     @property
     def row_weights(self) -> npt.NDArray[np.float64]:
@@ -65,6 +69,8 @@ class Sample:
             None if self.ages is None else self.ages[keep],
             self.weighted_by,
             self.unused_weights,
+            self.optional_fields,
+            None if self.optional is None else self.optional[keep],
         )
 
 

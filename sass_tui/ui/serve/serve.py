@@ -21,7 +21,7 @@ origin checks), as a subclass and a middleware, not a fork:
 - every response forbids framing by other pages, sends no Referer and holds
   the page to its own scripts, styles, fonts and socket (`SECURITY_HEADERS`,
   `content_security_policy`); the page's font is the one textual-serve ships,
-  not Google's (ui/serve_page/app_index.html);
+  not Google's (ui/serve/serve_page/app_index.html);
 - each session's process runs in the served working directory, which its
   prompts do not leave (model/served.py, model/files/paths.py's `inside`), and is
   told whether the database is read-only.
@@ -210,7 +210,7 @@ def _page_script_hash() -> str:
     §8.3), so that no other inline script runs."""
     page = (PAGE_DIRECTORY / "app_index.html").read_text(encoding="utf-8")
     found = re.search(r"<script>(.*?)</script>", page, re.DOTALL)
-    assert found is not None, "ui/serve_page/app_index.html lost its inline script"
+    assert found is not None, "ui/serve/serve_page/app_index.html lost its inline script"
     digest = hashlib.sha256(found.group(1).encode("utf-8")).digest()
     return f"'sha256-{base64.b64encode(digest).decode('ascii')}'"
 
@@ -232,7 +232,7 @@ def content_security_policy(websocket_origins: str, script_hash: str) -> str:
 
 class SassServer(Server):
     """textual-serve's server behind the checks above, with sessions of
-    ui/serve/serve_session.py and the page of ui/serve_page."""
+    ui/serve/serve_session.py and the page of ui/serve/serve_page."""
 
     session_class = SessionService
 

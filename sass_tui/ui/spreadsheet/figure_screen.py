@@ -4,7 +4,10 @@ Opened from the spreadsheet (`b`, or "See Figure" in the command palette).
 It draws `session.figure` each time it is shown and after each edit made
 here (undo), and can lay a second figure over it: the population at the
 50th, 5th or 95th percentile (`o` cycles), so a person or a tuned figure is
-seen against the population it was drawn from.  The overlay chosen is the
+seen against the population it was drawn from.  `r` shows where the right
+hand reaches (model/body/reach.py: its fingertip's envelope over the side
+view and seen from above); `p` asks for a point and says whether the hand
+reaches it and, if not, by how much it misses.  The overlay chosen is the
 app's (`SassApp.figure_overlay`): the spreadsheet's figure panel, drawn live
 beside the data on a wide terminal, shows the same (`session_outlines`).
 """
@@ -13,10 +16,20 @@ from __future__ import annotations
 
 import copy
 
+import numpy as np
 from textual.binding import Binding
 
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.outline import Outline, figure_outline
+from sass_tui.model.body.reach import (
+    Envelope,
+    envelope,
+    linkage_of,
+    own_travel,
+    parse_point,
+    point_verdict,
+    reach_drawing,
+)
 from sass_tui.model.errors import SassError
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
 from sass_tui.ui.base import SassScreen
@@ -72,6 +85,8 @@ class FigureScreen(SassScreen):
         Binding("b", "close", "Back", show=False),
         Binding("o", "cycle_overlay", "Overlay"),
         Binding("g", "switch_gender", "Gender"),
+        Binding("r", "toggle_reach", "Reach", show=False),
+        Binding("p", "reach_point", "Point", show=False),
         Binding("u", "undo", "Undo"),
         Binding("q", "app.quit", "Quit"),
     ]
@@ -79,6 +94,8 @@ class FigureScreen(SassScreen):
     def __init__(self, session) -> None:
         super().__init__()
         self.session = session
+        self.reach_shown = False
+        self.point: np.ndarray | None = None  # m, the body's frame
 
     def compose(self):
         yield FigureView(id="figure-view")
@@ -109,7 +126,21 @@ class FigureScreen(SassScreen):
             self.complain(f"The figure cannot be drawn: {exc}")
             return
         self.view.outlines = outlines
+        self.view.reach = self.right_reach() if self.reach_shown else None
         self.say(self.status())
+
+    def right_reach(self):
+        """The right fingertip's reach of the figure shown (and the point's verdict)."""
+        env = self.envelope()
+        return None if env is None else reach_drawing(env, self.point)
+
+    def envelope(self) -> Envelope | None:
+        figure = self.session.figure
+        try:
+            return envelope(own_travel(linkage_of(figure, "right"), figure.landmarks or {}))
+        except SassError as exc:
+            self.complain(f"No reach for this figure: {exc}")
+            return None
 
     def status_overlay(self) -> str:
         return "no overlay" if self.overlay is None else f"over the {ordinal(self.overlay)}"
@@ -118,6 +149,38 @@ class FigureScreen(SassScreen):
         return (
             f"Front and side, to scale ({self.status_overlay()}). o: overlay, g: gender, Esc: back."
         )
+
+    def action_toggle_reach(self) -> None:
+        """Show or hide where the right hand reaches (side and from above)."""
+        self.reach_shown = not self.reach_shown
+        self.redraw()
+
+    def action_reach_point(self) -> None:
+        """Ask for a point (cm, the body's frame) and say whether the right hand reaches it."""
+
+        def answer(text: str) -> None:
+            try:
+                point = parse_point(text)
+            except SassError as exc:
+                self.complain(f"The point is unchanged: {exc}")
+                return
+            env = self.envelope()
+            if env is None:
+                return
+            self.point, self.reach_shown = point, True
+            self.redraw()
+            verdict = point_verdict(env, point)
+            where = ", ".join(f"{v * 100:g}" for v in point)
+            if verdict.reached:
+                self.say(f"({where}) cm: the right fingertip reaches it. p: another point.")
+            else:
+                self.say(
+                    f"({where}) cm: the right fingertip misses it by {verdict.miss * 100:.1f} cm. "
+                    "p: another point."
+                )
+
+        shown = "" if self.point is None else ",".join(f"{v * 100:g}" for v in self.point)
+        self.ask("Point X,Y,Z (cm; +X the body's left, +Y up, +Z forward):", answer, shown)
 
     def action_close(self) -> None:
         """Back to the spreadsheet."""

@@ -19,6 +19,8 @@ from textual.containers import Vertical
 from textual.reactive import reactive
 from textual.widgets import Static
 
+from sass_tui.ui.spreadsheet.reach_drawing import draw_reach, side_extent, top_extent
+
 if TYPE_CHECKING:
     # The canvas: imported with the first one, ~17 ms (it reads its version).
     # The outlines: what the figure screen's module builds (model/body/outline.py,
@@ -26,6 +28,7 @@ if TYPE_CHECKING:
     from textual_canvas import Canvas
 
     from sass_tui.model.body.outline import Outline, Shape, View
+    from sass_tui.model.body.reach import ReachDrawing
 
 FILL = Color.parse("#5f87af")
 OVERLAY = Color.parse("#ffaf00")
@@ -44,6 +47,8 @@ class FigureView(Vertical):
     """
 
     outlines: reactive[tuple[Outline, ...]] = reactive((), always_update=True)
+    # a hand's reach over the side view and seen from above (None: not shown)
+    reach: reactive[ReachDrawing | None] = reactive(None, always_update=True)
 
     def __init__(
         self, *, canvas_focus: bool = True, canvas_later: bool = False, id: str | None = None
@@ -82,6 +87,9 @@ class FigureView(Vertical):
     def watch_outlines(self) -> None:
         self.redraw()
 
+    def watch_reach(self) -> None:
+        self.redraw()
+
     def on_resize(self) -> None:
         self.redraw()
 
@@ -106,12 +114,18 @@ class FigureView(Vertical):
         ruler_x = 1
         front_cm = max(_view_width(o.front) for o in self.outlines)
         side_left = min(o.side.extent()[0] for o in self.outlines)
-        side_cm = max(o.side.extent()[1] for o in self.outlines) - side_left
+        side_right = max(o.side.extent()[1] for o in self.outlines)
+        reach, top_cm, gaps = self.reach, 0.0, 2
+        if reach is not None:
+            side_left = min(side_left, side_extent(reach)[0])
+            side_right = max(side_right, side_extent(reach)[1])
+            top_cm, gaps = top_extent(reach)[1] - top_extent(reach)[0], 3
+        side_cm = side_right - side_left
         # Pixels per cm: the full height, unless front and side would then be
         # wider than the view (a narrow panel beside the spreadsheet).
         scale = (height - 2) / tallest
-        if front_cm + side_cm > 0:
-            scale = min(scale, (width - 2 - ruler_x - 2 * GAP) / (front_cm + side_cm))
+        if front_cm + side_cm + top_cm > 0:
+            scale = min(scale, (width - 2 - ruler_x - gaps * GAP) / (front_cm + side_cm + top_cm))
         floor = height - 1
         front_width = front_cm * scale
         front_centre = ruler_x + GAP + front_width / 2
@@ -127,6 +141,9 @@ class FigureView(Vertical):
                     if filled:
                         pixels = [_to_pixel(x, y, origin, floor, scale) for x, y in view.joints]
                         _set(canvas, pixels, JOINT)
+            if reach is not None:
+                top_origin = side_origin + side_right * scale + GAP - top_extent(reach)[0] * scale
+                draw_reach(canvas, reach, side_origin, top_origin, floor, scale)
 
     def caption(self) -> str:
         if not self.outlines:
@@ -137,7 +154,8 @@ class FigureView(Vertical):
             colour = "#5f87af" if index == 0 else "#ffaf00"
             mark = "■" if index == 0 else "□"
             parts.append(f"[{colour}]{mark}[/] {outline.label}{stature}")
-        return "Front | side.  " + "   ".join(parts) + "   (ruler: 10 cm ticks)"
+        views = "Front | side | reach from above.  " if self.reach else "Front | side.  "
+        return views + "   ".join(parts) + "   (ruler: 10 cm ticks)"
 
 
 def _view_width(view: View) -> float:

@@ -30,8 +30,9 @@ SOURCE_LETTER = {"stored": "s", "predicted": "p", "no data": ""}
 JOINT_SPANS = (("Shoulder", 3), ("Elbow", 1), ("Wrist", 3))
 # The Task panel under the page (ui/spreadsheet/task_panel.py, T): its border 1, the
 # posture and inputs 2, the table's header 1, 12 hands and joints, limiting
-# and not covered 2.  Fixed: the page's rows follow from the terminal's height.
-TASK_PANEL_LINES = 18
+# and not covered 2, the manual-handling line 1 (ui/spreadsheet/task_handling.py).
+# Fixed: the page's rows follow from the terminal's height.
+TASK_PANEL_LINES = 19
 
 
 def format_angle(degrees: float, width: int = ANGLE_WIDTH - 1) -> str:

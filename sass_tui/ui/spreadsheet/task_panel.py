@@ -57,6 +57,7 @@ from sass_tui.model.strength.task import (
     pose_task,
 )
 from sass_tui.ui.spreadsheet.strength_page import TASK_PANEL_LINES
+from sass_tui.ui.spreadsheet.task_handling import handling_line
 from sass_tui.ui.spreadsheet.task_words import (
     PEOPLE,
     WEIGHTED,
@@ -355,7 +356,10 @@ class TaskPanel(Vertical):
         if self.error:
             answer_view.update(Text(self.error))
         elif self.answer is not None:
-            answer_view.update(Text("\n".join(answer_lines(self.answer)), no_wrap=True))
+            lines = answer_lines(self.answer)
+            if self.figure is not None:
+                lines.append(handling_line(self.figure, self.posture, self.loads.values()))
+            answer_view.update(Text("\n".join(lines), no_wrap=True))
         if not curve:
             return
         chart = plot.plt

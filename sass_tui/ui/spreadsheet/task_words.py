@@ -125,8 +125,11 @@ def answer_lines(answer: TaskAnswer) -> list[str]:
     balance = "seated" if stance is None else "in balance" if stance.stable else "OUT OF BALANCE"
     scores = " ".join(f"{r.side[0]} {r.score}" for r in answer.rula)
     rebas = " ".join(f"{r.side[0]} {r.score}" for r in answer.reba)
-    lines.append(f"Balance: {balance}; RULA {scores}; REBA {rebas}")
-    lines.append(f"Limiting: {'; '.join(limiting)}")
     uncovered = [f"{m.joint} {m.size:.1f}" for m in answer.moments if m.covered_by == UNCOVERED]
-    lines.append(f"Not covered, {UNCOVERED} (N-m): {', '.join(uncovered)}")
+    # one line: the panel's rows are counted (TASK_PANEL_LINES)
+    lines.append(
+        f"Balance: {balance}; RULA {scores}; REBA {rebas}; not covered (N-m): "
+        f"{', '.join(uncovered)}"
+    )
+    lines.append(f"Limiting: {'; '.join(limiting)}")
     return lines
