@@ -14,8 +14,9 @@ from sass_tui.db.engine.database import Database
 from sass_tui.db.people.values import load_values
 from sass_tui.db.populations.targets import load_target
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.posture import parse_angles, pose_figure
+from sass_tui.model.body.posture import parse_angles
 from sass_tui.model.strength.arm_force_field import arm_force
+from sass_tui.model.strength.task import hand_load, pose_task
 
 VIRTUAL = "nhanes-2017-2020"
 
@@ -38,7 +39,9 @@ def right_hand_sums(db: str, gender: str, posture: list[str], load: float) -> tu
     people holding `load` N down in the right hand in `posture`."""
     mass, weights = virtual_people(db, gender)
     assert len(mass) > 1000  # NHANES 2017-2020's adults of one gender
-    body = pose_figure(Figure.default(gender), parse_angles(posture))
+    # standing as the task stands: leaning at the ankles unless ankle_y is given
+    held = [hand_load("right", load, (0.0, 1.0, 0.0))]
+    body, _, _, _ = pose_task(Figure.default(gender), parse_angles(posture), held)
     arm = arm_force(body.points, "right", (0, 1, 0), gender, body.body_mass)
     z = (load - arm.gravity * mass / body.body_mass - arm.mean) / arm.sd
     each = np.array([0.5 * (1 - math.erf(v / math.sqrt(2))) for v in z])

@@ -6,7 +6,9 @@ Anderson et al. 2007 for hips, knees and ankles), the limiting one named
 (model/strength/task.py, docs/strength.md "A task").
 
     sass task shoulder_y=60 elbow_y=30 --right-load 100N
-    sass task knee_y=60 hip_y=70 shoulder_y=45 --left-load 60N --right-load 60N
+    sass task trunk_y=30 hip_y=60 shoulder_y=60 --left-load "10 kg" --right-load "10 kg"
+    sass task shoulder_y=90 elbow_y=0 --right-load 40N --right-direction forward
+    sass task trunk_y=20 hip_y=90 --seated
     sass task shoulder_y=90 elbow_y=0 --right-load "15 lbf" --person "ANSUR II F 10037"
     sass task shoulder_y=90 --right-load 50N --target nasa-women
     sass task shoulder_y=90 --right-load 50N --virtual nhanes-2017-2020
@@ -20,23 +22,19 @@ import json
 from sass_tui.cli.common.options import SubParsers, add_db_option, add_virtual_option
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.posture import parse_angles
-from sass_tui.model.strength.arm_force_field import parse_direction
 from sass_tui.model.strength.published_strength import GENDER_WORDS
-from sass_tui.model.strength.task import (
-    Reference,
-    TaskError,
-    assess_task,
-    hand_load,
-    task_json,
-    task_text,
-)
+from sass_tui.model.strength.task import Reference, TaskError, assess_task, load_of
+from sass_tui.model.strength.task_report import task_json, task_text
 from sass_tui.model.units import parse_quantity
 from sass_tui.model.vocabulary import GENDERS
 
-LOAD_HELP = "the load on the {side} hand, e.g. 60N or '15 lbf' (N without a unit)"
+LOAD_HELP = (
+    "the force the {side} hand exerts on the object, e.g. 60N or '15 lbf' (N without a "
+    "unit), or a mass held, e.g. '10 kg' (its weight, exerted up)"
+)
 DIRECTION_HELP = (
-    "the direction the load on the {side} hand acts: up, down (default: a weight held), "
-    "forward, back, left, right or X,Y,Z on HAnim's axes; the hand exerts the opposite"
+    "the direction the {side} hand exerts its force: up (default: a weight held), down, "
+    "forward (a push), back (a pull), left, right or X,Y,Z on HAnim's axes"
 )
 
 
@@ -44,28 +42,35 @@ def register(commands: SubParsers) -> None:
     task = commands.add_parser(
         "task",
         help="a task's joint moments and the percent capable of doing it",
-        description="The static moments of a posture with loads on the hands, from the "
-        "figure's own segment masses, and the share of women and men (or a person, or a "
-        "target population) able to exert them where a published model covers the joint: "
-        "the Arm Force Field (La Delfa & Potvin 2017) for each loaded hand, Anderson et al. "
-        "2007 for hips, knees and ankles.  A target or virtual population's people are each "
-        "scaled to their own stature and mass and weighted: each gender and everyone.  The "
-        "trunk and the wrists have no published model in sass: their moments are given and "
-        "said to be uncovered (docs/strength.md).",
+        description="The static moments of a posture, standing on the floor or seated, "
+        "with the forces the hands exert, from the figure's own segment masses and the "
+        "floor's force under each foot; the low back's L5/S1 compression and shear against "
+        "the NIOSH and Gallagher & Marras limits; the balance over the feet; and the share "
+        "of women and men (or a person, or a target population) able to exert them where a "
+        "published model covers the joint: the Arm Force Field (La Delfa & Potvin 2017) for "
+        "each hand, Anderson et al. 2007 for hips, knees and ankles (a joint at the end of "
+        "its range carries its moment passively).  A posture that would tip is said to, not "
+        "scored.  A target or virtual population's people are each scaled to their own "
+        "stature and mass and weighted: each gender and everyone (docs/task.md).",
     )
     task.add_argument(
         "angles",
         nargs="*",
         metavar="JOINT=ANGLE",
         help="the posture: shoulder_x/y/z, elbow_y, wrist_x/y/z, hip_y, knee_y, ankle_y "
-        "(deg; both sides, or left_/right_ before the joint); standing if none",
+        "(deg; both sides, or left_/right_ before the joint), trunk_x (bend right), trunk_y "
+        "(flexion), trunk_z (twist left); standing upright if none",
+    )
+    task.add_argument(
+        "--seated",
+        action="store_true",
+        help="seated: the pelvis on a seat, which carries the legs (no leg joint, no balance)",
     )
     for side in ("left", "right"):
         task.add_argument(f"--{side}-load", metavar="FORCE", help=LOAD_HELP.format(side=side))
         task.add_argument(
             f"--{side}-direction",
             metavar="DIR",
-            default="down",
             help=DIRECTION_HELP.format(side=side),
         )
     who = task.add_mutually_exclusive_group()
@@ -88,20 +93,21 @@ def register(commands: SubParsers) -> None:
 
 def run(args: argparse.Namespace) -> int:
     angles = parse_angles(args.angles)
+    for side in ("left", "right"):
+        if getattr(args, f"{side}_load") is None and getattr(args, f"{side}_direction"):
+            raise TaskError(f"--{side}-direction without --{side}-load: give the force too")
     loads = [
-        hand_load(side, parse_quantity(text, "N"), parse_direction(direction))
+        load_of(side, text, direction)
         for side, text, direction in (
             ("left", args.left_load, args.left_direction),
             ("right", args.right_load, args.right_direction),
         )
         if text is not None
     ]
-    if not loads:
-        raise TaskError("a task needs a load on a hand: --left-load or --right-load")
     if args.person is None and args.target is None and args.virtual is None:
         genders = [args.gender] if args.gender else ["female", "male"]
         references = [Reference(GENDER_WORDS[g], _figure(args, g), args.age) for g in genders]
-        answer = assess_task(references, angles, loads)
+        answer = assess_task(references, angles, loads, args.seated)
     else:
         # deferred: cli.task_people (the db package, numpy) — off sass task (sass_tui/startup.py)
         from sass_tui.cli.task_people import people_answer

@@ -32,7 +32,7 @@ FigureOf = Callable[[argparse.Namespace, str], Figure]
 def people_answer(args: argparse.Namespace, angles, loads, figure_of: FigureOf) -> TaskAnswer:
     """The task for --person, or for the people of --target or --virtual."""
     if args.person is not None:
-        return assess_task(_person_references(args, figure_of), angles, loads)
+        return assess_task(_person_references(args, figure_of), angles, loads, args.seated)
     return _weighted_answer(args, angles, loads, figure_of)
 
 
@@ -71,4 +71,4 @@ def _weighted_answer(args: argparse.Namespace, angles, loads, figure_of: FigureO
     finally:
         conn.close()
     groups = [(figure_of(args, group.gender), group) for group in people]
-    return assess_populations(groups, angles, loads, group_words(target, None))
+    return assess_populations(groups, angles, loads, group_words(target, None), args.seated)

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, TypeVar
 
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.files.popfile import PopulationData
+from sass_tui.model.files.task_settings import TaskSettings
 from sass_tui.model.names import AXES, GROUP_TITLES, ROWS
 from sass_tui.model.units import GROUP_UNITS
 from sass_tui.model.vocabulary import JOINT_AXES
@@ -236,6 +237,8 @@ class Session:
         self.strength_sheets = StrengthSheets(strength_sheet, strength_later, lambda: self.figure)
         self.warnings: list[str] = []
         self._journal = Journal()
+        # the Task panel's settings (model/files/task_settings.py), saved in the worksheet
+        self.task: TaskSettings | None = None
 
     @property
     def strength_sheet(self) -> StrengthSheet | None:

@@ -24,7 +24,7 @@ from tests._paths import ANSUR
 from tests._virtual_task import VIRTUAL, right_hand_sums
 from tests.db.test_targets import civilian_women, write_sample
 
-POSTURE = ["shoulder_y=90", "elbow_y=0"]
+POSTURE = ["shoulder_y=90", "elbow_y=0", "ankle_y=0"]  # ankle_y given: no lean
 
 
 @pytest.fixture(scope="module")
@@ -74,7 +74,8 @@ def test_a_real_person_does_the_task_with_her_own_body(shared_target, capsys):
 
 def test_a_fit_tests_strength_limit_is_weighted_by_the_target(with_target, capsys):
     """`sass fit --target --strength`: the target's share is the weighted mean
-    of each person's probability (Table 3: knee extension C1 and its SD)."""
+    of each person's probability (Table 3: knee extension C1 and its SD, the
+    spread between people floored at the large groups' pooled CV)."""
     opened = Database.open(with_target)
     try:
         with opened.connection() as conn:
@@ -84,6 +85,10 @@ def test_a_fit_tests_strength_limit_is_weighted_by_the_target(with_target, capsy
         opened.close()
     table3 = {"18-25": (0.159, 1.187, 1.274, 0.028), "55-65": (0.128, 1.286, 1.141, 0.016),
               "over-65": (0.124, 1.347, 1.140, 0.018)}  # fmt: skip
+    # the spread between people: no group's CV below the pooled CV of the two
+    # groups of 14 (18-25 and 55-65; docs/strength.md)
+    pooled = math.sqrt(((0.028 / 0.159) ** 2 + (0.016 / 0.128) ** 2) / 2)
+    table3 = {g: (c1, c2, c3, max(sd, pooled * c1)) for g, (c1, c2, c3, sd) in table3.items()}
     total = capable = 0.0
     for (age, mass, stature), w in zip(values.matrix, weights.of(values.ids)):
         if not 18 <= age <= 100 or w == 0:
@@ -138,3 +143,30 @@ def test_target_and_virtual_together_are_refused(virtual_task, capsys):
     with pytest.raises(SystemExit):
         main([*argv, "--target", "civ"])
     assert "not allowed with argument" in capsys.readouterr().err
+
+
+def test_a_real_persons_elbow_moment_is_de_levas_from_their_own_forearm(shared_target, capsys):
+    """100 N held, the forearm level: the elbow's moment within 5 % of a
+    hand computation from the man's own forearm (radiale-stylion) and hand
+    lengths with de Leva (1996)'s proportions: forearm 1.62 % of the body,
+    its centre 45.74 % from the elbow; hand 0.61 %, its centre 36.24 % of
+    the hand length; the grip (MET3) at 36.24 / 79.00 of the hand length."""
+    if not ANSUR.is_dir():
+        pytest.skip(f"the independent ANSUR II copy is not at {ANSUR}")
+    with open(ANSUR / "ANSUR_II_MALE_Public.csv", encoding="latin-1", newline="") as handle:
+        row = next(csv.DictReader(handle))
+    name = f"ANSUR II M {row.get('subjectid') or row['SubjectId']}"
+    forearm = float(row["radialestylionlength"]) / 1000
+    hand = float(row["handlength"]) / 1000
+    mass = float(row["weightkg"]) / 10
+    by_hand = (
+        100.0 * (forearm + hand * 36.24 / 79.00)
+        + 0.0162 * mass * 9.81 * 0.4574 * forearm
+        + 0.0061 * mass * 9.81 * (forearm + 0.3624 * hand)
+    )
+    argv = ["task", "right_elbow_y=90", "ankle_y=0", "--db", shared_target, "--right-load",
+            "100N", "--person", name, "--format", "json"]  # fmt: skip
+    assert main(argv) == 0
+    answer = json.loads(capsys.readouterr().out)
+    elbow = next(m for m in answer["moments_N_m"] if m["joint"] == "right elbow")
+    assert abs(elbow["moment"][0]) == pytest.approx(by_hand, rel=0.05)

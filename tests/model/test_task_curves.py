@@ -22,7 +22,8 @@ from sass_tui.model.strength.task import (
 )
 
 ANGLES = parse_angles(["shoulder_y=90", "elbow_y=0"])
-LOAD = hand_load("right", 50.0, (0.0, -1.0, 0.0))
+# the hand exerts 50 N up: a weight held
+LOAD = hand_load("right", 50.0, (0.0, 1.0, 0.0))
 
 
 def people(gender: str, masses: list[float], weights: list[float]) -> Population:

@@ -1,5 +1,6 @@
-"""A task's hand loads (model/task.parse_hand_load): a force, then the way
-it pulls ('60 N down', '15 lbf up', '40 N 0,0,2')."""
+"""A task's hand loads (model/task.parse_hand_load): the force the hand
+exerts, then the way it exerts it ('60 N forward', '15 lbf up', '40 N 0,0,2'),
+or a mass held ('10 kg': its weight, exerted up)."""
 
 from __future__ import annotations
 
@@ -15,8 +16,8 @@ from sass_tui.model.strength.task import TaskError, parse_hand_load
 
 @pytest.mark.parametrize(
     "text, force, direction",
-    [("60 N down", 60.0, (0, -1, 0)), ("60N", 60.0, (0, -1, 0)), ("15 lbf up", 66.72, (0, 1, 0)),
-     ("40 N 0,0,2", 40.0, (0, 0, 1))],
+    [("60 N down", 60.0, (0, -1, 0)), ("60N", 60.0, (0, 1, 0)), ("15 lbf up", 66.72, (0, 1, 0)),
+     ("40 N 0,0,2", 40.0, (0, 0, 1)), ("10 kg", 98.1, (0, 1, 0)), ("22.0462 lb up", 98.1, (0, 1, 0))],
 )  # fmt: skip
 def test_a_hand_load_is_a_force_then_its_direction(text, force, direction):
     load = parse_hand_load("left", text)
@@ -24,10 +25,15 @@ def test_a_hand_load_is_a_force_then_its_direction(text, force, direction):
     assert tuple(load.direction) == pytest.approx(direction)
 
 
-@pytest.mark.parametrize("text", ["", "abc", "60 N sideways", "-3 N", "nan N"])
+@pytest.mark.parametrize("text", ["", "abc", "60 N sideways", "-3 N", "nan N", "3 m"])
 def test_a_bad_hand_load_is_refused(text):
     with pytest.raises(TaskError if text in ("", "-3 N") else SassError, match="."):
         parse_hand_load("left", text)
+
+
+def test_a_mass_is_held_up_and_another_way_is_refused():
+    with pytest.raises(TaskError, match="is a mass: the hand holds its weight up"):
+        parse_hand_load("left", "10 kg forward")
 
 
 @settings(max_examples=80, deadline=None)

@@ -7,12 +7,30 @@ Angles (degrees, the strength page's and `sass strength`'s axes, docs/model.md
 "Strength"): shoulder_x (abduction +), shoulder_y (flexion +), shoulder_z
 (lateral rotation +), elbow_y (flexion +), wrist_x (radial deviation +),
 wrist_y (flexion +), wrist_z (pronation +); hip_y, knee_y (flexion +) and
-ankle_y (dorsiflexion +).  `shoulder_y=90` turns both arms, `left_shoulder_y=90`
-the left one.  Each joint turns about its joint-limit frame in the standing
+ankle_y (dorsiflexion +); trunk_x (lateral bend to the right +), trunk_y
+(flexion +) and trunk_z (twist to the left +) at the lumbar joint (HAnim vl5,
+the waist's joint limits).  `shoulder_y=90` turns both arms, `left_shoulder_y=90`
+the left one; the trunk has no side.  Each joint turns about its joint-limit frame in the standing
 figure (hanim._LIMIT_AXES, docs/hanim.md), x then y then z applied to the
 limb: R = Rx(x) Ry(y) Rz(z), so an arm flexed forward by y is then swung
-sideways by x.  A joint's turn carries every segment below it; the pelvis and
-the trunk stay where they stand.
+sideways by x.  A joint's turn carries every segment below it.
+
+Standing (the default), the feet stay flat on the floor where they stood:
+the whole body turns about the lateral axis until the feet are level (the
+mean of the two feet's pitch) and moves so the lower sole is on the floor
+and the ankles' midpoint keeps its place, so `hip_y=60` is a stoop (the
+pelvis and trunk tip forward over straight legs) and hip, knee and ankle
+flexion together a squat.  Seated, the pelvis stays where it stands (on the
+seat) and the legs swing from it.
+
+The hand's grip point is the third knuckle (de Leva 1996's MET3, the end of
+his hand segment): along the hand from the wrist centre at the fraction of
+the wrist-fingertip length that de Leva's two hand definitions put it (the
+centre of mass at 79.00 % of wrist-MET3 and 36.24 % of wrist-fingertip for
+men, 74.74 % and 34.27 % for women: MET3 at 36.24 / 79.00 = 45.9 % of the
+hand length), so the grip and the hand's centre of mass (hanim_mass.py,
+36.24 % of the same length) are one hand.  A handle held in a power grip
+lies across the palm under these knuckles: sass places the load there.
 
 A posture file is JSON: HAnim joint centres in metres on HAnim's axes (+x the
 body's left, +y up, +z forward), the ten of arm_force_field.POSTURE_JOINTS.
@@ -47,7 +65,9 @@ from sass_tui.model.units import parse_quantity
 from sass_tui.model.vocabulary import JOINT_AXES
 
 LEG_AXES: tuple[str, ...] = ("hip_y", "knee_y", "ankle_y")
-POSTURE_AXES: tuple[str, ...] = (*JOINT_AXES, *LEG_AXES)
+TRUNK_AXES: tuple[str, ...] = ("trunk_x", "trunk_y", "trunk_z")
+POSTURE_AXES: tuple[str, ...] = (*JOINT_AXES, *LEG_AXES, *TRUNK_AXES)
+TRUNK = ""  # the trunk's side in Angles: it has none
 _HANIM_JOINT = {
     "shoulder": "shoulder",
     "elbow": "elbow",
@@ -55,7 +75,19 @@ _HANIM_JOINT = {
     "hip": "hip",
     "knee": "knee",
     "ankle": "talocrural",
+    "trunk": "vl5",
 }
+# de Leva (1996) table 4, the hand's centre of mass from the wrist centre:
+# % of wrist-MET3 (third metacarpale) and % of wrist-fingertip (DA3)
+DE_LEVA_HAND_COM = {"male": (79.00, 36.24), "female": (74.74, 34.27)}
+
+
+def grip_fraction(gender: str) -> float:
+    """The third knuckle's place along the wrist-fingertip length (de Leva 1996)."""
+    to_knuckle, to_fingertip = DE_LEVA_HAND_COM[gender]
+    return to_fingertip / to_knuckle
+
+
 _SIDE_WORDS = {"left": "l", "right": "r"}
 _SEGMENT = {joint: segment for joint, segment, _ in LOA1}
 
@@ -81,6 +113,10 @@ def parse_angles(items: list[str]) -> Angles:
             if key.startswith(f"{word}_"):
                 sides, key = (word,), key[len(word) + 1 :]
                 break
+        if key in TRUNK_AXES:
+            if len(sides) == 1:
+                raise PostureError(f"{item!r}: the trunk has no side; write {key}=ANGLE")
+            sides = (TRUNK,)
         if key not in POSTURE_AXES:
             raise PostureError(
                 f"{item!r}: unknown joint {name.strip()!r}; expected one of "
@@ -118,6 +154,20 @@ class PosedBody:
     angles: Angles
     body_mass: float  # kg
     stature: float  # m
+    # the soles' corners on the floor (side -> 4 x 3, m), heel to toe tip
+    soles: dict[str, npt.NDArray[np.float64]]
+    seated: bool = False
+    # each joint's turn in the world (for the trunk's axis at L5/S1)
+    turns: dict[str, npt.NDArray[np.float64]] | None = None
+
+    def grip(self, side: str) -> npt.NDArray[np.float64]:
+        """Where a load on the hand acts: the third knuckle (module docstring)."""
+        return self.points[f"{side[0]}_metacarpophalangeal_3"]
+
+    def center_of_mass(self) -> npt.NDArray[np.float64]:
+        total = sum(self.masses.values())
+        weighted = sum(m * self.centers_of_mass[s] for s, m in self.masses.items())
+        return np.asarray(weighted, dtype=float) / total
 
     def below(self, joint: str) -> list[str]:
         """The segments a joint carries (its own and every one further out)."""
@@ -128,13 +178,19 @@ class PosedBody:
         return [_SEGMENT[j] for j in joints]
 
 
-def pose_figure(figure: Figure, angles: Angles | None = None) -> PosedBody:
+def pose_figure(
+    figure: Figure,
+    angles: Angles | None = None,
+    seated: bool = False,
+    humanoid: Humanoid | None = None,
+) -> PosedBody:
     """The figure's humanoid with `angles` applied, each checked against the
-    figure's joint limits (StrengthError naming the limit)."""
+    figure's joint limits (StrengthError naming the limit); standing on the
+    floor or seated (module docstring)."""
     angles = dict(angles or {})
     for (side, axis), degrees in angles.items():
         check_angle(figure, side, axis, degrees)
-    humanoid = build_humanoid(figure)
+    humanoid = humanoid or build_humanoid(figure)  # a caller posing it often builds it once
     local = _local_rotations(humanoid, angles)
     world: dict[str, npt.NDArray[np.float64]] = {}
     centers: dict[str, npt.NDArray[np.float64]] = {}
@@ -155,14 +211,20 @@ def pose_figure(figure: Figure, angles: Angles | None = None) -> PosedBody:
         coms[segment] = centers[joint] + world[joint] @ (
             part.center_of_mass - humanoid.centers[joint]
         )
+    soles = _soles(humanoid, centers, world)
+    if not seated:
+        _stand(humanoid, centers, coms, world, soles)
     heights = landmark_heights(figure.gender, humanoid_stature(figure) / 100.0, figure.landmarks)
     points: Posture = {}
     girth = np.asarray(figure.output_values(GIRTH)[0], dtype=float) / 100.0
     for side, s in _SIDE_WORDS.items():
         wrist = f"{s}_radiocarpal"
-        palm = float(girth[row_index(GIRTH, f"{side}_hand"), 2])
-        # the third knuckle: the palm's length below the wrist, standing (SASS hand z)
-        knuckle = np.array([0.0, -palm, 0.0])
+        hand = float(
+            girth[row_index(GIRTH, f"{side}_hand"), 2]
+            + girth[row_index(GIRTH, f"{side}_knuckles"), 2]
+        )
+        # the third knuckle, down the hand from the wrist standing
+        knuckle = np.array([0.0, -grip_fraction(figure.gender) * hand, 0.0])
         points[f"{s}_metacarpophalangeal_3"] = centers[wrist] + world[wrist] @ knuckle
         for joint in ("radiocarpal", "elbow", "shoulder"):
             points[f"{s}_{joint}"] = centers[f"{s}_{joint}"].copy()
@@ -179,14 +241,70 @@ def pose_figure(figure: Figure, angles: Angles | None = None) -> PosedBody:
         angles=angles,
         body_mass=float(figure.output_mass()),
         stature=heights["vertex"],
+        soles=soles,
+        seated=seated,
+        turns=world,
     )
+
+
+def _soles(
+    humanoid: Humanoid,
+    centers: dict[str, npt.NDArray[np.float64]],
+    world: dict[str, npt.NDArray[np.float64]],
+) -> dict[str, npt.NDArray[np.float64]]:
+    """Each sole's corners (heel to toe tip, the foot's width), carried by
+    the foot's turn from where they stand on the floor."""
+    out = {}
+    for side, s in _SIDE_WORDS.items():
+        ankle = f"{s}_talocrural"
+        (_, foot_centre, foot_size), *_ = humanoid.segments[f"{s}_talus"].shapes
+        (_, toe_centre, toe_size), *_ = humanoid.segments[f"{s}_tarsal_proximal_phalanx_2"].shapes
+        heel = foot_centre[2] - foot_size[2] / 2
+        tip = toe_centre[2] + toe_size[2] / 2
+        half = foot_size[0] / 2
+        corners = np.array(
+            [[foot_centre[0] + dx, 0.0, z] for z in (heel, tip) for dx in (-half, half)]
+        )
+        standing = humanoid.centers[ankle]
+        out[side] = np.array([centers[ankle] + world[ankle] @ (c - standing) for c in corners])
+    return out
+
+
+def _stand(
+    humanoid: Humanoid,
+    centers: dict[str, npt.NDArray[np.float64]],
+    coms: dict[str, npt.NDArray[np.float64]],
+    world: dict[str, npt.NDArray[np.float64]],
+    soles: dict[str, npt.NDArray[np.float64]],
+) -> None:
+    """Turn and move the whole body (in place) so the feet are flat on the floor."""
+    pitches = []
+    for s in _SIDE_WORDS.values():
+        forward = world[f"{s}_talocrural"] @ np.array([0.0, 0.0, 1.0])
+        pitches.append(math.degrees(math.atan2(forward[1], forward[2])))
+    level = _rotation(np.array([1.0, 0.0, 0.0]), float(np.mean(pitches)))
+    ankles = [f"{s}_talocrural" for s in _SIDE_WORDS.values()]
+    before = np.mean([humanoid.centers[a] for a in ankles], axis=0)
+    for points in (centers, coms, soles):
+        for key in points:
+            points[key] = points[key] @ level.T
+    for key in world:
+        world[key] = level @ world[key]
+    floor = min(float(corners[:, 1].min()) for corners in soles.values())
+    after = np.mean([centers[a] for a in ankles], axis=0)
+    shift = np.array([before[0] - after[0], -floor, before[2] - after[2]])
+    for points in (centers, coms, soles):
+        for key in points:
+            points[key] = points[key] + shift
 
 
 def _local_rotations(humanoid: Humanoid, angles: Angles) -> dict[str, npt.NDArray[np.float64]]:
     by_joint: dict[str, dict[str, float]] = {}
     for (side, axis), degrees in angles.items():
         joint_word, letter = axis.split("_")
-        joint = f"{_SIDE_WORDS[side]}_{_HANIM_JOINT[joint_word]}"
+        joint = _HANIM_JOINT[joint_word]
+        if side != TRUNK:
+            joint = f"{_SIDE_WORDS[side]}_{joint}"
         by_joint.setdefault(joint, {})[letter] = degrees
     out = {}
     for joint, turns in by_joint.items():

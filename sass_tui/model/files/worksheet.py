@@ -30,6 +30,11 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.files.gltf import sass_version
 from sass_tui.model.files.paths import PathError, read_user_text
 from sass_tui.model.files.popfile import Cells, PopulationData
+from sass_tui.model.files.task_settings import (
+    TaskSettings,
+    read_task_settings,
+    task_settings_out,
+)
 from sass_tui.model.names import AXES_OF, GLOBAL, GROUPS, ROWS, STRENGTH
 from sass_tui.model.session import Session
 from sass_tui.model.strength.strength import (
@@ -95,6 +100,7 @@ class Worksheet:
     figure: Figure
     strength: StrengthSettings | None
     sass_version: str
+    task: TaskSettings | None = None  # the Task panel's (model/files/task_settings.py)
 
 
 # --- writing --------------------------------------------------------------------
@@ -116,6 +122,7 @@ def worksheet_text(session: Session) -> str:
         "global_statistics": _statistics_out(figure.global_stats),
         "groups": {group: _group_out(figure.groups[group]) for group in GROUPS},
         "strength": _strength_out(session),
+        "task": task_settings_out(session.task),
     }
     return _rows_on_one_line(json.dumps(document, indent=2, ensure_ascii=False)) + "\n"
 
@@ -241,6 +248,7 @@ def parse_worksheet(text: str, name: str = "<text>") -> Worksheet:
         figure=figure,
         strength=None if strength is None else reader.strength(strength),
         sass_version=reader.text(top.get("sass_version"), "sass_version"),
+        task=read_task_settings(top.get("task"), name),
     )
 
 

@@ -23,6 +23,7 @@ from sass_tui.model.strength.published_strength import (
     StrengthLimit,
     Subject,
     age_group,
+    c1_spread,
     lower_limb_strength,
     read_anderson2007,
 )
@@ -83,7 +84,7 @@ def lower_limb_capable(
                 out[mine] = np.where(torques[mine] > 0, 0.0, 1.0)
                 continue
             needed = torques[mine] / (per_c1 * masses[mine] * statures[mine])
-            out[mine] = normal_survival((needed - data.mean[key].c1) / data.sd[key].c1)
+            out[mine] = normal_survival((needed - data.mean[key].c1) / c1_spread(data, key))
     return out
 
 

@@ -271,6 +271,31 @@ def _c1_at(mean: float, sd: float, percentile: float, where: str) -> float:
     return c1
 
 
+# The between-person spread of C1 (docs/strength.md "The spread between
+# people"): Table 3's SD of each group, but never a coefficient of variation
+# below the pooled one of the two groups with the most people (18-25 and
+# 55-65, 14 people each; over 65, 6): the root mean square of their two CVs
+# (equal sizes, equal weights), for the same motion and gender.
+LARGE_GROUPS = ("18-25", "55-65")
+
+
+def pooled_cv(data: Anderson2007, motion: str, gender: str) -> float:
+    """The pooled coefficient of variation of C1 of LARGE_GROUPS."""
+    cvs = [
+        data.sd[(motion, gender, group)].c1 / data.mean[(motion, gender, group)].c1
+        for group in LARGE_GROUPS
+        if (motion, gender, group) in data.sd and data.mean[(motion, gender, group)].c1 > 0
+    ]
+    return math.sqrt(sum(cv * cv for cv in cvs) / len(cvs)) if cvs else 0.0
+
+
+def c1_spread(data: Anderson2007, key: tuple[str, str, str]) -> float:
+    """The SD of C1 between people of one group: Table 3's, floored at the
+    pooled coefficient of variation times the group's mean."""
+    motion, gender, _ = key
+    return max(data.sd[key].c1, pooled_cv(data, motion, gender) * data.mean[key].c1)
+
+
 def lower_limb_strength(
     motion: str,
     subject: Subject,
@@ -293,8 +318,13 @@ def lower_limb_strength(
     data = data or read_anderson2007()
     group = age_group(subject.age)
     key = (motion, subject.gender, group)
-    mean, sd = data.mean[key], data.sd[key]
-    c1 = _c1_at(mean.c1, sd.c1, percentile, f"{motion} ({GENDER_WORDS[subject.gender]} {group})")
+    mean = data.mean[key]
+    c1 = _c1_at(
+        mean.c1,
+        c1_spread(data, key),
+        percentile,
+        f"{motion} ({GENDER_WORDS[subject.gender]} {group})",
+    )
     peak = math.degrees(mean.c3)
     at = peak if angle is None else float(angle)
     theta = math.radians(at)
@@ -334,7 +364,7 @@ def lower_limb_percent_capable(
     per_c1 = mean_c1.torque / mean_c1.c1
     if per_c1 <= 0:
         return 0.0 if torque > 0 else 100.0
-    z = (torque / per_c1 - data.mean[key].c1) / data.sd[key].c1
+    z = (torque / per_c1 - data.mean[key].c1) / c1_spread(data, key)
     return 100.0 * (1.0 - _STANDARD.cdf(z))
 
 

@@ -183,8 +183,10 @@ def _joint_limit_range(figure: Figure, side: str, joint_axis: str) -> tuple[floa
     joint, axis = joint_axis.split("_")
     column = "xyz".index(axis)
     values, filled = figure.output_values(JOINT_LIMITS)
-    upper_row = row_index(JOINT_LIMITS, f"{side}_{joint}_ul")
-    lower_row = row_index(JOINT_LIMITS, f"{side}_{joint}_ll")
+    # the trunk (no side) turns at the waist's joint (HAnim vl5)
+    stem = "waist" if joint == "trunk" else f"{side}_{joint}"
+    upper_row = row_index(JOINT_LIMITS, f"{stem}_ul")
+    lower_row = row_index(JOINT_LIMITS, f"{stem}_ll")
     from_population = bool(filled[upper_row, column] or filled[lower_row, column])
     return (
         float(values[lower_row, column]),
@@ -199,7 +201,7 @@ def check_angle(figure: Figure, side: str, joint_axis: str, degrees: float) -> N
     whose joint limits were not measured)."""
     lower, upper, from_population = _joint_limit_range(figure, side, joint_axis)
     joint, axis = joint_axis.split("_")
-    what = f"{side} {joint} {axis}"
+    what = f"{side} {joint} {axis}".strip()
     percentile = figure.groups[JOINT_LIMITS].percentile
     if math.isnan(lower) or math.isnan(upper):
         if degrees != 0:
@@ -213,12 +215,12 @@ def check_angle(figure: Figure, side: str, joint_axis: str, degrees: float) -> N
         )
     if degrees > upper:
         raise StrengthError(
-            f"{what} {degrees:g} deg is above the {side} {joint} upper limit "
+            f"{what} {degrees:g} deg is above the {f'{side} {joint}'.strip()} upper limit "
             f"{upper:g} deg ({source})"
         )
     if degrees < lower:
         raise StrengthError(
-            f"{what} {degrees:g} deg is below the {side} {joint} lower limit "
+            f"{what} {degrees:g} deg is below the {f'{side} {joint}'.strip()} lower limit "
             f"{lower:g} deg ({source})"
         )
 

@@ -1,21 +1,27 @@
-"""A task: a posture, the loads on the hands, and who is to do it.  The
+"""A task: a posture, the forces the hands exert and who is to do it.  The
 static moments at the joints from the figure's own segment masses and
-centres of mass (model/body/posture.py on the HAnim humanoid) plus the loads, and
-the percent capable where a published model covers the joint
-(docs/strength.md, "A task"):
+centres of mass (model/body/posture.py on the HAnim humanoid), the floor's
+force under each foot, the low back and the balance (model/strength/statics.py,
+model/strength/low_back.py), and the percent capable where a published model
+covers the joint (docs/task.md):
 
-- each loaded hand: the Arm Force Field (La Delfa & Potvin 2017) for a force
-  opposite to the load, gravity included;
+- each hand that exerts a force: the Arm Force Field (La Delfa & Potvin
+  2017) for that force, gravity included;
 - hip, knee and ankle: Anderson et al. 2007 for the motion that resists the
   moment (extension against a moment tipping the body forward), at the
-  posture's angle.  Both feet on the ground share the body above the hips
-  and the loads equally (an assumption: the task gives no foot forces);
-  each leg also carries its own segments above the joint.
+  posture's angle; a joint at the end of its range carrying a moment that
+  turns it further (a straight knee under the body's weight) carries it
+  passively (ligaments, bone on bone): reported passive, never limiting.
 
-The elbow's and shoulder's moments are reported; their capability is the
-Arm Force Field's (the arm as a whole, at the hand).  No published model in
-sass covers the trunk (L5/S1) or the wrist: their moments are given and said
-to be uncovered.
+One convention: a force is what the hand exerts on the object (a box lifted:
+the hand exerts its weight up); the object pushes back on the hand with the
+opposite.  A load given as a mass is its weight, held up.
+
+Standing, the body leans at the ankles, when the posture gives no ankle
+angle, until the floor's centre of pressure lies where quiet standing holds
+it, 5 cm ahead of the ankles (the ankle strategy; Winter 1995), as far as
+the ankles' range allows; a posture that would still tip is said to and not
+scored.  Seated, the seat carries the legs: no leg joint and no balance.
 
 No Textual import here.
 """
@@ -29,8 +35,9 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.hanim import LOA1
+from sass_tui.model.body.hanim import LOA1, build_humanoid
 from sass_tui.model.body.posture import Angles, PosedBody, pose_figure
+from sass_tui.model.errors import SassError
 from sass_tui.model.strength.arm_force_field import (
     DIRECTIONS,
     ArmForce,
@@ -39,6 +46,7 @@ from sass_tui.model.strength.arm_force_field import (
     check_direction,
     parse_direction,
 )
+from sass_tui.model.strength.low_back import LowBack, low_back
 from sass_tui.model.strength.percent_capable import lower_limb_capable, normal_survival
 from sass_tui.model.strength.published_strength import (
     AGE_GROUPS,
@@ -48,60 +56,107 @@ from sass_tui.model.strength.published_strength import (
 from sass_tui.model.strength.published_strength import (
     CITATION as ANDERSON,
 )
+from sass_tui.model.strength.reba import Reba, reba
+from sass_tui.model.strength.rula import Rula, rula
+from sass_tui.model.strength.statics import (
+    GRAVITY,
+    Balance,
+    Force,
+    balance,
+    moment_about,
+    weights,
+)
+from sass_tui.model.strength.strength_conditions import joint_limit_range
 from sass_tui.model.units import parse_quantity
 
-GRAVITY = 9.81
-DOWN = np.array([0.0, -1.0, 0.0])
-# The legs' segments: what a foot on the ground carries below the hips.
-_LEG_SEGMENTS = ("thigh", "calf", "talus", "tarsal_proximal_phalanx_2")
 # joint word -> (HAnim joint, Anderson et al. 2007's motions resisting a
 # moment that tips the body above forward (+x) and one that tips it back),
-# its axis.  Tipping the trunk forward over the thighs flexes the hips; the
-# thighs forward over the shanks extend the knees (the hips go forward, not
-# back as in a squat); the shanks forward over the feet dorsiflex the ankles.
+# its axis, and which way a forward-tipping moment turns it (+1: the angle
+# grows).  Tipping the trunk forward over the thighs flexes the hips; the
+# thighs forward over the shanks extend the knees; the shanks forward over
+# the feet dorsiflex the ankles.
 LEG_JOINTS = {
-    "hip": ("hip", ("hip_extension", "hip_flexion"), "hip_y"),
-    "knee": ("knee", ("knee_flexion", "knee_extension"), "knee_y"),
-    "ankle": ("talocrural", ("ankle_plantarflexion", "ankle_dorsiflexion"), "ankle_y"),
+    "hip": ("hip", ("hip_extension", "hip_flexion"), "hip_y", 1.0),
+    "knee": ("knee", ("knee_flexion", "knee_extension"), "knee_y", -1.0),
+    "ankle": ("talocrural", ("ankle_plantarflexion", "ankle_dorsiflexion"), "ankle_y", 1.0),
 }
+# A joint within this of the end of its range, turned further by its moment,
+# carries the moment passively.
+PASSIVE_MARGIN_DEG = 5.0
+PASSIVE = "passive, at the end of its range"
+# Quiet standing's centre of pressure ahead of the ankles (Winter 1995)
+QUIET_STANCE_COP_M = 0.05
 ARM_WORDS = "La Delfa & Potvin 2017 (Arm Force Field): women as published, men x 1.66"
 UNCOVERED = "no published model in sass covers it"
+LOW_BACK_WORDS = "single equivalent muscle (Chaffin, Andersson & Martin 2006)"
+MASS_UNITS_WORDS = "a mass (kg, lb) is its weight, held up"
 
 
 class TaskError(ArmForceError):
-    """A task sass cannot assess (a load without a direction, no load at all)."""
+    """A task sass cannot assess (a load without a direction, a bad mass)."""
 
 
 @dataclass(frozen=True)
 class HandLoad:
-    """The load on one hand: `force` N along the unit `direction` (HAnim
-    axes): a 10 kg box held is 98 N down; the hand exerts the opposite."""
+    """The force one hand exerts on the object: `force` N along the unit
+    `direction` (HAnim axes).  A 10 kg box held: 98.1 N up (`mass` 10)."""
 
     side: str
     force: float
     direction: npt.NDArray[np.float64]
+    mass: float | None = None  # kg, when the load was given as a mass
 
     @property
     def vector(self) -> npt.NDArray[np.float64]:
+        """The force the hand exerts on the object."""
         return self.force * self.direction
 
+    @property
+    def on_body(self) -> npt.NDArray[np.float64]:
+        """What the object pushes back on the hand."""
+        return -self.vector
 
-def hand_load(side: str, force: float, direction: npt.ArrayLike) -> HandLoad:
+
+def hand_load(
+    side: str, force: float, direction: npt.ArrayLike, mass: float | None = None
+) -> HandLoad:
     if not (math.isfinite(force) and force >= 0):
         raise TaskError(f"--{side}-load {force!r} N: expected a force of 0 or more")
-    return HandLoad(side, float(force), check_direction(direction, f"--{side}-direction"))
+    return HandLoad(side, float(force), check_direction(direction, f"--{side}-direction"), mass)
+
+
+def load_of(side: str, text: str, direction: str | None = None) -> HandLoad:
+    """A hand's load from a quantity ('60 N', '15 lbf', '10 kg', '22 lb') and
+    the direction the hand exerts it (default up: a weight held).  A mass is
+    its weight held up: another direction is refused."""
+    try:
+        force = parse_quantity(text, "N")
+        mass = None
+    except SassError as as_force:
+        try:
+            mass = parse_quantity(text, "kg")
+        except SassError:
+            raise TaskError(f"--{side}-load {text.strip()!r}: {as_force}") from None
+        force = mass * GRAVITY
+    if mass is not None and direction is not None and direction.strip().lower() != "up":
+        raise TaskError(
+            f"--{side}-load {text.strip()!r} is a mass: the hand holds its weight up; "
+            f"give a force (N, lbf) to exert it {direction.strip()}"
+        )
+    return hand_load(side, force, parse_direction(direction or "up"), mass)
 
 
 def parse_hand_load(side: str, text: str) -> HandLoad:
-    """'60 N down', '60N', '15 lbf up', '40 N 0,-1,0.2': the force (N without
-    a unit), then the direction it acts in (default down: a weight held)."""
+    """'60 N forward', '60N', '15 lbf down', '10 kg', '40 N 0,-1,0.2': the
+    force the hand exerts (N without a unit) or a mass held, then the
+    direction the hand exerts it (default up: a weight held)."""
     words = text.split()
     if not words:
-        raise TaskError(f"the {side} hand: expected a force and a direction, e.g. 60 N down")
-    direction = "down"
+        raise TaskError(f"the {side} hand: expected a force and a direction, e.g. 60 N forward")
+    direction = None
     if len(words) > 1 and (words[-1].lower() in DIRECTIONS or "," in words[-1]):
         direction = words.pop()
-    return hand_load(side, parse_quantity(" ".join(words), "N"), parse_direction(direction))
+    return load_of(side, " ".join(words), direction)
 
 
 @dataclass(frozen=True)
@@ -119,22 +174,6 @@ class JointMoment:
         return float(np.linalg.norm(self.moment))
 
 
-def _moment_about(
-    point: npt.NDArray[np.float64],
-    forces: list[tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]],
-) -> npt.NDArray[np.float64]:
-    total = np.zeros(3)
-    for where, force in forces:
-        total += np.cross(where - point, force)
-    return total
-
-
-def _weights(
-    body: PosedBody, segments: list[str]
-) -> list[tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]]:
-    return [(body.centers_of_mass[s], body.masses[s] * GRAVITY * DOWN) for s in segments]
-
-
 def _segments_below(joint: str) -> list[str]:
     joints = [joint]
     for child, _, parent in LOA1:
@@ -143,75 +182,80 @@ def _segments_below(joint: str) -> list[str]:
     return [segment for j, segment, _ in LOA1 if j in joints]
 
 
-def task_moments(body: PosedBody, loads: list[HandLoad]) -> list[JointMoment]:
-    """The static moments of the posture and loads (the loads at the hands'
-    grip centres: the third knuckle, where the Arm Force Field places the hand)."""
-    grip = {load.side: body.points[f"{load.side[0]}_metacarpophalangeal_3"] for load in loads}
-    applied = {load.side: (grip[load.side], load.vector) for load in loads}
+def hand_forces(body: PosedBody, loads: list[HandLoad]) -> list[Force]:
+    """What the objects push back on the hands, at the grips (the third knuckle)."""
+    return [(body.grip(load.side), load.on_body) for load in loads]
+
+
+def task_moments(
+    body: PosedBody, loads: list[HandLoad], stance: Balance | None = None
+) -> list[JointMoment]:
+    """The static moments of the posture and loads: the arms' from their
+    segments outward and the hands' forces; the low back's from everything
+    above it; each leg's from below, its segments and the floor's force
+    under its foot (`stance`, standing)."""
+    applied = {load.side: (body.grip(load.side), load.on_body) for load in loads}
     out = []
 
-    def add(
-        name: str,
-        point: npt.NDArray[np.float64],
-        segments: list[str],
-        sides: tuple[str, ...],
-        share: float,
-        covered: str,
-    ) -> None:
-        loads_here = [applied[s] for s in sides if s in applied]
-        from_loads = share * _moment_about(point, loads_here)
-        total = share * _moment_about(point, _weights(body, segments)) + from_loads
+    def arm(name: str, point: npt.NDArray[np.float64], segments: list[str], side: str) -> None:
+        loads_here = [applied[side]] if side in applied else []
+        from_loads = moment_about(point, loads_here)
+        total = moment_about(point, weights(body, segments)) + from_loads
+        covered = UNCOVERED if name.endswith("wrist") else "the Arm Force Field, at the hand"
         out.append(JointMoment(name, _triple(total), _triple(from_loads), covered))
 
     for side in ("left", "right"):
         s = side[0]
-        aff = "the Arm Force Field, at the hand"
-        add(
-            f"{side} wrist",
-            body.centers[f"{s}_radiocarpal"],
-            [f"{s}_carpal"],
-            (side,),
-            1.0,
-            UNCOVERED,
-        )
-        add(
-            f"{side} elbow",
-            body.centers[f"{s}_elbow"],
-            [f"{s}_forearm", f"{s}_carpal"],
-            (side,),
-            1.0,
-            aff,
-        )
-        add(
+        arm(f"{side} wrist", body.centers[f"{s}_radiocarpal"], [f"{s}_carpal"], side)
+        arm(f"{side} elbow", body.centers[f"{s}_elbow"], [f"{s}_forearm", f"{s}_carpal"], side)
+        arm(
             f"{side} shoulder",
             body.centers[f"{s}_shoulder"],
             _segments_below(f"{s}_shoulder"),
-            (side,),
-            1.0,
-            aff,
+            side,
         )
-    upper = [seg for _, seg, _ in LOA1 if not any(seg.endswith(leg) for leg in _LEG_SEGMENTS)]
-    trunk = [seg for seg in upper if seg not in ("sacrum", "pelvis")]
-    add("trunk (L5/S1)", body.centers["vl5"], trunk, ("left", "right"), 1.0, UNCOVERED)
+    back_total = low_back(body, list(applied.values()))
+    back_bare = low_back(body, [])
+    out.append(
+        JointMoment(
+            "trunk (L5/S1)",
+            back_total.moment,
+            _triple(np.subtract(back_total.moment, back_bare.moment)),
+            LOW_BACK_WORDS,
+        )
+    )
+    if stance is None or not stance.feet:
+        return out
+    bare = balance(body, [])
     for side in ("left", "right"):
         s = side[0]
-        own: list[str] = []
-        for word, (joint, _, _) in LEG_JOINTS.items():
+        for word, (joint, _, _, _) in LEG_JOINTS.items():
             point = body.centers[f"{s}_{joint}"]
-            # half the body above the hips and of the loads; the leg's own segments above
-            half = 0.5 * (
-                _moment_about(point, _weights(body, upper))
-                + _moment_about(point, list(applied.values()))
+            below = _segments_below(f"{s}_{joint}")
+            total = _leg_moment(body, point, below, stance, side)
+            unloaded = _leg_moment(body, point, below, bare, side) if bare.feet else total
+            out.append(
+                JointMoment(f"{side} {word}", _triple(total), _triple(total - unloaded), ANDERSON)
             )
-            from_loads = 0.5 * _moment_about(point, list(applied.values()))
-            total = half + _moment_about(point, _weights(body, own))
-            out.append(JointMoment(f"{side} {word}", _triple(total), _triple(from_loads), ANDERSON))
-            own.append(f"{s}_{'thigh' if word == 'hip' else 'calf'}")
     return out
 
 
-def _triple(v: npt.NDArray[np.float64]) -> tuple[float, float, float]:
-    return (float(v[0]), float(v[1]), float(v[2]))
+def _leg_moment(
+    body: PosedBody, point: npt.NDArray[np.float64], below: list[str], stance: Balance, side: str
+) -> npt.NDArray[np.float64]:
+    """The moment on the body above a leg joint: the opposite of the moment
+    of what acts below it (its segments' weights, the floor under its foot)."""
+    forces = weights(body, below)
+    if side in stance.feet:
+        forces.append(stance.feet[side])
+    free = np.array([0.0, 0.5 * stance.free_moment, 0.0])
+    above: npt.NDArray[np.float64] = -(moment_about(point, forces) + free)
+    return above
+
+
+def _triple(v: npt.ArrayLike) -> tuple[float, float, float]:
+    a = np.asarray(v, dtype=float)
+    return (float(a[0]), float(a[1]), float(a[2]))
 
 
 @dataclass(frozen=True)
@@ -219,11 +263,12 @@ class Capability:
     """One covered hand or leg joint: what it must exert and who can."""
 
     what: str  # "left hand", "right knee"
-    motion: str  # "force against the load" or an Anderson et al. 2007 motion
+    motion: str  # "force exerted" or an Anderson et al. 2007 motion
     demand: float  # N for a hand, N-m for a leg joint (on the first population's figure)
     unit: str
     percent: dict[str, float]  # population words -> percent capable
     source: str
+    passive: bool = False  # carried at the end of the joint's range, not by muscle
 
 
 @dataclass
@@ -234,10 +279,19 @@ class TaskAnswer:
     capabilities: list[Capability] = field(default_factory=list)
     populations: list[str] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    low_back: LowBack | None = None  # on the first population's figure
+    stance: Balance | None = None  # on the first population's figure; None seated
+    lean: float | None = None  # deg at the ankles sass chose, standing
+    unstable: dict[str, str] = field(default_factory=dict)  # population -> why it tips
+    rula: list[Rula] = field(default_factory=list)  # each arm, on the first figure
+    reba: list[Reba] = field(default_factory=list)
 
     def limiting(self, population: str) -> Capability | None:
-        """The covered joint or hand the fewest of `population` can do."""
-        covered = [c for c in self.capabilities if population in c.percent]
+        """The covered joint or hand the fewest of `population` can do (a
+        joint carried passively never is; a posture that tips has none)."""
+        if population in self.unstable:
+            return None
+        covered = [c for c in self.capabilities if population in c.percent and not c.passive]
         return min(covered, key=lambda c: c.percent[population], default=None)
 
     def record(self, found: Capability, population: str, percent: float) -> None:
@@ -258,16 +312,30 @@ class Reference:
 
 
 def arm_demand(body: PosedBody, load: HandLoad, gender: str) -> ArmForce:
-    """The Arm Force Field for the hand exerting against `load`."""
-    return arm_force(body.points, load.side, -load.direction, gender, body.body_mass)
+    """The Arm Force Field for the hand exerting `load`."""
+    return arm_force(body.points, load.side, load.direction, gender, body.body_mass)
 
 
 def leg_demand(moment: JointMoment, word: str) -> tuple[str, float]:
     """(Anderson et al. 2007's motion, torque N-m) resisting the moment about
     the lateral axis (+x: a positive moment tips the body above forward)."""
-    _, (forward, back), _ = LEG_JOINTS[word]
+    _, (forward, back), _, _ = LEG_JOINTS[word]
     sagittal = moment.moment[0]
     return (forward, sagittal) if sagittal >= 0 else (back, -sagittal)
+
+
+def is_passive(figure: Figure, side: str, word: str, angle: float, moment: JointMoment) -> bool:
+    """A leg joint within PASSIVE_MARGIN_DEG of the end of its range that
+    its moment turns further toward that end (a straight knee, the thighs
+    tipped forward over the shanks)."""
+    _, _, axis, turns = LEG_JOINTS[word]
+    lower, upper = joint_limit_range(figure, side, axis)
+    way = turns * moment.moment[0]
+    if math.isnan(lower) or math.isnan(upper) or way == 0:
+        return False
+    return (way > 0 and angle >= upper - PASSIVE_MARGIN_DEG) or (
+        way < 0 and angle <= lower + PASSIVE_MARGIN_DEG
+    )
 
 
 def _legs(moments: list[JointMoment]) -> list[tuple[JointMoment, str, str]]:
@@ -280,29 +348,104 @@ def _legs(moments: list[JointMoment]) -> list[tuple[JointMoment, str, str]]:
     return out
 
 
-def assess_task(references: list[Reference], angles: Angles, loads: list[HandLoad]) -> TaskAnswer:
+LEAN_STEPS = 12  # regula falsi steps at most
+LEAN_TOLERANCE_M = 1e-4  # the centre of pressure within 0.1 mm of its place
+
+
+def pose_task(
+    figure: Figure, angles: Angles, loads: list[HandLoad], seated: bool = False
+) -> tuple[PosedBody, Balance | None, Angles, float | None]:
+    """The figure in the task's posture: seated (no balance), standing as
+    given (an ankle angle given), or leaning at the ankles until the floor's
+    centre of pressure lies QUIET_STANCE_COP_M ahead of them, within the
+    ankles' range (the module docstring).  (body, balance, angles, lean)."""
+    if seated:
+        return pose_figure(figure, angles, seated=True), None, angles, None
+    if any(axis == "ankle_y" for _, axis in angles):
+        body = pose_figure(figure, angles)
+        return body, balance(body, hand_forces(body, loads)), angles, None
+
+    humanoid = build_humanoid(figure)
+
+    def stand(lean: float) -> tuple[PosedBody, Balance, Angles]:
+        leaned = {**angles, ("left", "ankle_y"): lean, ("right", "ankle_y"): lean}
+        body = pose_figure(figure, leaned, humanoid=humanoid)
+        return body, balance(body, hand_forces(body, loads)), leaned
+
+    def ahead(stance: Balance, body: PosedBody) -> float:
+        ankles = (body.centers["l_talocrural"][2] + body.centers["r_talocrural"][2]) / 2
+        return float(stance.center_of_pressure[2] - ankles - QUIET_STANCE_COP_M)
+
+    low = max(joint_limit_range(figure, s, "ankle_y")[0] for s in ("left", "right"))
+    high = min(joint_limit_range(figure, s, "ankle_y")[1] for s in ("left", "right"))
+    body, stance, leaned = stand(0.0)
+    here = ahead(stance, body)
+    if abs(here) <= LEAN_TOLERANCE_M:
+        return body, stance, leaned, 0.0
+    # the centre of pressure moves forward as the body leans forward: bracket
+    # the lean between upright and the ankle's limit that way, then regula falsi
+    # (the Illinois variant), nearly linear so a few steps
+    end = low if here > 0 else high
+    far_body, far_stance, far_leaned = stand(end)
+    there = ahead(far_stance, far_body)
+    if (there > 0) == (here > 0):  # even the limit does not reach it
+        return far_body, far_stance, far_leaned, end
+    a, fa, b, fb = 0.0, here, end, there
+    lean, side = 0.0, 0
+    for _ in range(LEAN_STEPS):
+        lean = (a * fb - b * fa) / (fb - fa)
+        body, stance, leaned = stand(lean)
+        now = ahead(stance, body)
+        if abs(now) <= LEAN_TOLERANCE_M:
+            break
+        if (now > 0) == (fb > 0):
+            b, fb = lean, now
+            if side == -1:
+                fa /= 2
+            side = -1
+        else:
+            a, fa = lean, now
+            if side == 1:
+                fb /= 2
+            side = 1
+    return body, stance, leaned, lean
+
+
+def assess_task(
+    references: list[Reference], angles: Angles, loads: list[HandLoad], seated: bool = False
+) -> TaskAnswer:
     """The moments (on the first reference's figure) and, for each reference,
     the percent capable of each loaded hand and each hip, knee and ankle."""
-    _check_loads(loads)
     answer: TaskAnswer | None = None
     for ref in references:
-        body = pose_figure(ref.figure, angles)
-        moments = task_moments(body, loads)
+        body, stance, used, lean = pose_task(ref.figure, angles, loads, seated)
+        moments = task_moments(body, loads, stance)
         if answer is None:
             answer = TaskAnswer(loads, moments, _figure_words(ref.figure))
+            answer.low_back = low_back(body, hand_forces(body, loads))
+            answer.stance, answer.lean = stance, lean
+            answer.notes += _posture_notes(seated, lean, stance)
+            answer.rula, answer.reba = _scores(ref.figure, body, used, loads, stance, seated, lean)
         answer.populations.append(ref.words)
+        if stance is not None and not stance.stable:
+            answer.unstable[ref.words] = stance.reason
+            continue
         for load in loads:
             if load.force > 0:
                 arm = arm_demand(body, load, ref.figure.gender)
                 found = Capability(
-                    f"{load.side} hand", "force against the load", load.force, "N", {}, ARM_WORDS
+                    f"{load.side} hand", "force exerted", load.force, "N", {}, ARM_WORDS
                 )
                 answer.record(found, ref.words, arm.percent_capable(load.force))
         age = ref.age if ref.age is not None else AGE_GROUPS[0][1]
         subject = Subject(ref.figure.gender, age, ref.figure.output_mass(), body.stature)
         for moment, side, word in _legs(moments):
             motion, torque = leg_demand(moment, word)
-            angle = angles.get((side, LEG_JOINTS[word][2]), 0.0)
+            angle = used.get((side, LEG_JOINTS[word][2]), 0.0)
+            if is_passive(ref.figure, side, word, angle, moment):
+                found = Capability(moment.joint, PASSIVE, torque, "N-m", {}, ANDERSON, True)
+                answer.record(found, ref.words, 100.0)
+                continue
             share = lower_limb_percent_capable(motion, subject, torque, angle)
             found = Capability(moment.joint, motion, torque, "N-m", {}, ANDERSON)
             answer.record(found, ref.words, share)
@@ -312,9 +455,57 @@ def assess_task(references: list[Reference], angles: Angles, loads: list[HandLoa
     return answer
 
 
-def _check_loads(loads: list[HandLoad]) -> None:
-    if not any(load.force > 0 for load in loads):
-        raise TaskError("a task needs a load on a hand: --left-load or --right-load")
+def _scores(
+    figure: Figure,
+    body: PosedBody,
+    angles: Angles,
+    loads: list[HandLoad],
+    stance: Balance | None,
+    seated: bool,
+    lean: float | None,
+) -> tuple[list[Rula], list[Reba]]:
+    """Each arm's RULA and REBA scores of the posture (model/strength/rula.py,
+    reba.py): the trunk's inclination without the lean sass chose at the
+    ankles (the posture as the user gave it)."""
+    forces = {load.side: load.force for load in loads}
+    up = (np.eye(3) if body.turns is None else body.turns["vl5"])[:, 1]
+    a = math.radians(lean or 0.0)
+    up = np.array(
+        [
+            up[0],
+            up[1] * math.cos(a) + up[2] * math.sin(a),
+            -up[1] * math.sin(a) + up[2] * math.cos(a),
+        ]
+    )
+    stable = stance is None or stance.stable
+    inclination = math.degrees(math.acos(float(np.clip(up[1], -1.0, 1.0))))
+    both = sum(forces.values())
+    rebas = [reba(side, angles, inclination, seated, stable, both) for side in ("right", "left")]
+    return [
+        rula(
+            side,
+            angles,
+            up,
+            joint_limit_range(figure, side, "wrist_z"),
+            seated,
+            stable,
+            forces.get(side, 0.0),
+            both,
+        )
+        for side in ("right", "left")
+    ], rebas
+
+
+def _posture_notes(seated: bool, lean: float | None, stance: Balance | None) -> list[str]:
+    if seated:
+        return ["seated: the seat carries the legs; no leg joint and no balance"]
+    if lean is None or stance is None:
+        return []
+    return [
+        f"standing: the body leans {lean:.1f} deg at the ankles, toward the floor's centre of "
+        f"pressure {QUIET_STANCE_COP_M * 100:g} cm ahead of them where quiet standing holds it "
+        "(Winter 1995), as far as the ankles' range allows; give ankle_y to fix the lean"
+    ]
 
 
 def _figure_words(figure: Figure) -> str:
@@ -340,22 +531,35 @@ def assess_populations(
     angles: Angles,
     loads: list[HandLoad],
     together: str = "",
+    seated: bool = False,
 ) -> TaskAnswer:
     """Percent capable over many people, one population per gender, each
-    scaled from its own gender's figure; the moments are on the first
-    group's figure.  With `together`, a column of the groups' people
-    together: every person's probability by their weight, over all groups."""
-    _check_loads(loads)
+    scaled from its own gender's figure (in that figure's posture and
+    balance); the moments are on the first group's figure.  With `together`,
+    a column of the groups' people together: every person's probability by
+    their weight, over all groups."""
     answer: TaskAnswer | None = None
     sums: dict[str, tuple[Capability, float, float]] = {}
     for figure, people in groups:
-        body = pose_figure(figure, angles)
+        body, stance, used, lean = pose_task(figure, angles, loads, seated)
+        moments = task_moments(body, loads, stance)
         if answer is None:
-            answer = TaskAnswer(loads, task_moments(body, loads), _figure_words(figure))
+            answer = TaskAnswer(loads, moments, _figure_words(figure))
+            answer.low_back = low_back(body, hand_forces(body, loads))
+            answer.stance, answer.lean = stance, lean
+            answer.notes += _posture_notes(seated, lean, stance)
+            answer.rula, answer.reba = _scores(figure, body, used, loads, stance, seated, lean)
         answer.populations.append(people.words)
         if people.note not in answer.notes:
             answer.notes.append(people.note)
-        for found, capable, weight in _population_shares(body, people, angles, loads):
+        if stance is not None and not stance.stable:
+            answer.unstable[people.words] = stance.reason
+            if together:
+                answer.unstable[together] = stance.reason
+            continue
+        for found, capable, weight in _population_shares(
+            figure, body, people, used, loads, moments
+        ):
             answer.record(found, people.words, 100.0 * capable / weight)
             _, c, w = sums.get(found.what, (found, 0.0, 0.0))
             sums[found.what] = (found, c + capable, w + weight)
@@ -368,32 +572,37 @@ def assess_populations(
 
 
 def _population_shares(
-    body: PosedBody, people: Population, angles: Angles, loads: list[HandLoad]
+    figure: Figure,
+    body: PosedBody,
+    people: Population,
+    angles: Angles,
+    loads: list[HandLoad],
+    moments: list[JointMoment],
 ) -> list[tuple[Capability, float, float]]:
     """(capability, sum of weight x probability, sum of weight) over the
     people the model covers: each person's moments are the figure's scaled
     to their own size (segment weights by mass x stature, the loads' lever
     arms by stature), their arm's weight by their mass."""
     out = []
-    moments = task_moments(body, loads)
-    bare = task_moments(body, [])
     m, h, w = people.masses, people.statures, people.weights
     for load in loads:
         if load.force <= 0 or not _known(people).any():
             continue
         arm = arm_demand(body, load, people.gender)
         capable, weight = _hand_sums(arm, body, people, np.array([load.force]))
-        found = Capability(
-            f"{load.side} hand", "force against the load", load.force, "N", {}, ARM_WORDS
-        )
+        found = Capability(f"{load.side} hand", "force exerted", load.force, "N", {}, ARM_WORDS)
         out.append((found, float(capable[0]), weight))
     scale_body = m * h / (body.body_mass * body.stature)
-    for (moment, side, word), unloaded in zip(_legs(moments), _legs(bare)):
+    for moment, side, word in _legs(moments):
         motion, torque = leg_demand(moment, word)
         sign = 1.0 if motion == LEG_JOINTS[word][1][0] else -1.0
-        own = sign * unloaded[0].moment[0]
+        own = sign * (moment.moment[0] - moment.from_loads[0])
         scaled = own * scale_body + (torque - own) * h / body.stature
         angle = angles.get((side, LEG_JOINTS[word][2]), 0.0)
+        if is_passive(figure, side, word, angle, moment):
+            found = Capability(moment.joint, PASSIVE, torque, "N-m", {}, ANDERSON, True)
+            out.append((found, float(w.sum()), float(w.sum())))
+            continue
         capable = lower_limb_capable(
             motion, np.full(len(m), people.gender, dtype=object), people.ages, m, h, scaled, angle
         )
@@ -467,93 +676,3 @@ def hand_curves(
             (float(f), float(p)) for f, p in zip(forces, 100.0 * pooled / pooled_weight)
         ]
     return curves
-
-
-# --- what the answer says -------------------------------------------------------
-
-MOMENT_DECIMALS = 1  # N-m: segment masses and lengths carry three figures
-PERCENT_DECIMALS = 1
-
-
-def task_json(answer: TaskAnswer, posture: list[str]) -> dict[str, object]:
-    def triple(v: tuple[float, float, float]) -> list[float]:
-        return [round(x, MOMENT_DECIMALS) + 0.0 for x in v]
-
-    return {
-        "posture": posture,
-        "loads": [
-            {
-                "side": load.side,
-                "force_N": round(load.force, 1),
-                "direction": [round(float(x), 4) + 0.0 for x in load.direction],
-            }
-            for load in answer.loads
-        ],  # fmt: skip
-        "figure": answer.figure_words,
-        "moments_N_m": [
-            {
-                "joint": m.joint,
-                "moment": triple(m.moment),
-                "size": round(m.size, MOMENT_DECIMALS),
-                "from_loads": triple(m.from_loads),
-                "covered_by": m.covered_by,
-            }
-            for m in answer.moments
-        ],
-        "capable": [
-            {
-                "what": c.what,
-                "motion": c.motion,
-                "demand": round(c.demand, MOMENT_DECIMALS),
-                "unit": c.unit,
-                "percent": {k: round(v, PERCENT_DECIMALS) for k, v in c.percent.items()},
-                "source": c.source,
-            }
-            for c in answer.capabilities
-        ],
-        "limiting": {
-            p: None if (c := answer.limiting(p)) is None else c.what for p in answer.populations
-        },
-        "not_covered": [m.joint for m in answer.moments if m.covered_by == UNCOVERED],
-        "notes": answer.notes,
-    }
-
-
-def task_text(answer: TaskAnswer, posture: list[str]) -> list[str]:
-    loads = "; ".join(
-        f"{load.side} hand {load.force:.1f} N along "
-        f"({', '.join(f'{x:.2f}' for x in load.direction)})"
-        for load in answer.loads
-    )
-    lines = [
-        f"Task: posture {' '.join(posture) or 'standing'}; loads on the hands: {loads}",
-        f"Moments (N-m, HAnim axes: x left, y up, z forward) on {answer.figure_words}:",
-        f"  {'joint':<16} {'x':>8} {'y':>8} {'z':>8} {'size':>8} {'loads':>8}  covered by",
-    ]
-    for m in answer.moments:
-        x, y, z = m.moment
-        lines.append(
-            f"  {m.joint:<16} {x:>8.1f} {y:>8.1f} {z:>8.1f} {m.size:>8.1f} "
-            f"{float(np.linalg.norm(m.from_loads)):>8.1f}  {m.covered_by}"
-        )
-    # a column as wide as its population's name (a target's are long), 20 at least
-    width = max([20, *(len(p) + 2 for p in answer.populations)])
-    heads = "".join(f"{p:>{width}}" for p in answer.populations)
-    lines += ["", f"Percent capable{'':<33}{heads}"]
-    for c in answer.capabilities:
-        what = f"{c.what}: {c.motion.replace('_', ' ')} {c.demand:.1f} {c.unit}"
-        cells = "".join(
-            f"{c.percent[p]:>{width - 2}.1f} %" if p in c.percent else f"{'-':>{width}}"
-            for p in answer.populations
-        )
-        lines.append(f"  {what:<46}{cells}")
-    for p in answer.populations:
-        worst = answer.limiting(p)
-        if worst is not None:
-            lines.append(f"limiting for {p}: {worst.what} ({worst.percent[p]:.1f} % capable)")
-    uncovered = [m.joint for m in answer.moments if m.covered_by == UNCOVERED]
-    lines.append(f"not covered: {', '.join(uncovered)}: {UNCOVERED}")
-    sources = sorted({c.source.split(";")[0] for c in answer.capabilities})
-    lines.append(f"sources: {'; '.join(sources)}")
-    lines += [f"note: {n}" for n in answer.notes]
-    return lines

@@ -161,6 +161,7 @@ class FigureWork:
             strength,
             None if settings is None else lambda sheet: apply_strength(settings, sheet),
         )
+        session.task = worksheet.task
 
     # --- the figure drawn ----------------------------------------------------------
     def outlines(self, session: Session, overlay: float | None) -> tuple[Outline, ...]:

@@ -208,8 +208,8 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
         self.show_task_panel()
         self.set_focus(panel.cells)
         self.say(
-            "Task: the strength page's row is its posture; ← → Enter: the loads and the "
-            "people; h: curve; shift+Tab: the page."
+            "Task: its posture (its cell, or the strength page's row); ← → Enter: the "
+            "posture, the loads and the people; h: curve; shift+Tab: the page."
         )
 
     def _place_task_panel(self) -> None:
@@ -217,6 +217,7 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
         panel = self.task_panel
         if panel is not None:
             panel.display = self.task_shown and self.data_group == STRENGTH
+            self.redraw_figure_panel()  # in the task's posture, or standing again
         self._set_page_rows(self.app.size.height)
 
     def check_action(self, action: str, parameters: tuple[object, ...]) -> bool | None:

@@ -11,6 +11,7 @@ from sass_tui.ui.spreadsheet.spreadsheet_base import SheetScreenBase
 from sass_tui.ui.spreadsheet.strength_page import StrengthPage
 
 if TYPE_CHECKING:  # numpy-heavy: mounted the first time T is pressed
+    from sass_tui.model.files.task_settings import TaskSettings
     from sass_tui.ui.spreadsheet.task_panel import TaskPanel
 
 
@@ -27,7 +28,34 @@ class TaskCommands(SheetScreenBase):
         panel = self.task_panel
         if panel is None or not panel.display:
             return
+        kept = self.session.task
+        if panel.keep_settings is None:
+            panel.keep_settings = self._keep_task
+        if kept is not None and kept != panel.settings():
+            try:  # a worksheet's settings, opened since
+                panel.take_settings(kept)
+            except SassError as exc:
+                self.complain(f"the worksheet's task: {exc}; the Task panel keeps its own")
         panel.follow_row(self.figure, self.strength_page.row_angles())
+
+    def _keep_task(self, settings: TaskSettings) -> None:
+        self.session.task = settings
+        self.redraw_figure_panel()
+
+    def redraw_figure_panel(self) -> None:
+        """With the Task panel shown, the figure beside it in the task's posture."""
+        panel, figure_panel = self.task_panel, self.figure_panel
+        if panel is None or not panel.display or figure_panel is None:
+            super().redraw_figure_panel()
+            return
+        try:
+            outline = panel.task_outline()
+        except SassError:
+            outline = None  # a posture the figure cannot take: drawn standing
+        if outline is None:
+            super().redraw_figure_panel()
+        elif (outline,) != figure_panel.outlines:
+            figure_panel.outlines = (outline,)
 
     def on_strength_page_row_chosen(self, event: StrengthPage.RowChosen) -> None:
         event.stop()

@@ -1,5 +1,5 @@
 """The Task panel's manual-handling line: the task it holds (the posture's
-hands, the weight of the loads pulling down) as a lift, rated by the NIOSH
+hands, the weight the hands hold up) as a lift, rated by the NIOSH
 lifting equation (its lifting index) and the Liberty Mutual equations (the
 share of women and of men who accept it), docs/manual-handling.md.  The
 panel holds no distance, frequency or duration, so the line says what it
@@ -22,15 +22,16 @@ STANDARD_GRAVITY = 9.80665
 
 
 def lifted_kg(loads: Iterable[HandLoad]) -> float:
-    """The mass the loads weigh: their downward parts, N / g."""
-    return sum(max(0.0, -float(load.vector[1])) for load in loads) / STANDARD_GRAVITY
+    """The mass the hands hold: the upward parts of the forces they exert
+    (a force is what the hand exerts on the object), N / g."""
+    return sum(max(0.0, float(load.vector[1])) for load in loads) / STANDARD_GRAVITY
 
 
 def handling_line(figure: Figure, posture: tuple[str, ...], loads: Iterable[HandLoad]) -> str:
     """One line: the lifting index and the percent of women and men who accept the lift."""
     kg = lifted_kg(loads)
     if kg <= 0:
-        return "Lifting: no load pulls down (NIOSH, Liberty Mutual rate a lift)"
+        return "Lifting: no load held up (NIOSH, Liberty Mutual rate a lift)"
     try:
         h, v = body_h_v(pose_figure(figure, parse_angles(list(posture))))
         metric = niosh.form("metric")

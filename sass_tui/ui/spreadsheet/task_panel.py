@@ -20,6 +20,7 @@ with TaskPanel.EditRequested, as the strength page does.
 from __future__ import annotations
 
 import copy
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -36,20 +37,24 @@ from sass_tui.db.engine.database import Database
 from sass_tui.db.populations.task_people import group_words, weighted_people
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
 from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.hanim import build_humanoid
+from sass_tui.model.body.outline import Outline
+from sass_tui.model.body.posed_outline import posed_outline
 from sass_tui.model.body.posture import parse_angles, pose_figure
 from sass_tui.model.errors import SassError
+from sass_tui.model.files.task_settings import TaskSettings
 from sass_tui.model.strength.published_strength import GENDER_WORDS
 from sass_tui.model.strength.task import (
     CurveGroup,
     HandLoad,
     Reference,
     TaskAnswer,
-    TaskError,
     assess_populations,
     assess_task,
     hand_curves,
     hand_load,
     parse_hand_load,
+    pose_task,
 )
 from sass_tui.ui.spreadsheet.strength_page import TASK_PANEL_LINES
 from sass_tui.ui.spreadsheet.task_handling import handling_line
@@ -64,9 +69,11 @@ from sass_tui.ui.spreadsheet.task_words import (
 )
 from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 
-CELLS = ("left", "right", "people")
+CELLS = ("posture", "left", "right", "people")
+LABELS = ("Posture", "Left hand", "Right hand", "People")
 CELL_WIDTH = 26
-DEFAULT_LOAD = 60.0  # N on the right hand, down: a bag held out
+FOLLOW_ROW = "row"  # the posture cell's word for the strength page's row
+DEFAULT_LOAD = 60.0  # N the right hand exerts up: a bag held out
 
 
 @dataclass(frozen=True)
@@ -110,7 +117,8 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves]:
         chosen = references(task)
         answer = assess_task(chosen, angles, loads)
         groups = [
-            CurveGroup(r.words, pose_figure(r.figure, angles), r.figure.gender) for r in chosen
+            CurveGroup(r.words, pose_task(r.figure, angles, loads)[0], r.figure.gender)
+            for r in chosen
         ]
     else:
         db = Database.open(task.db_path)
@@ -125,7 +133,7 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves]:
         together = group_words(target, None)
         answer = assess_populations(figures, angles, loads, together)
         groups = [
-            CurveGroup(group.words, pose_figure(figure, angles), group.gender, group)
+            CurveGroup(group.words, pose_task(figure, angles, loads)[0], group.gender, group)
             for figure, group in figures
         ]
     load = next((x for x in loads if x.side == task.curve_side and x.force > 0), None)
@@ -149,7 +157,7 @@ class TaskCells(EditorKeys, Widget, can_focus=True):
 
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
-        self.cursor = 1  # the right hand's load
+        self.cursor = 2  # the right hand's load
 
     @property
     def panel(self) -> TaskPanel:
@@ -164,10 +172,11 @@ class TaskCells(EditorKeys, Widget, can_focus=True):
         head = Text(no_wrap=True, overflow="crop")
         head.append("Task ", style("taskpanel--header"))
         status = "computing..., " if panel.computing else ""
-        head.append(f"({status}T hides, h: curve) the strength page's posture: ")
-        head.append(posture_words(panel.posture))
+        whose = "the task's own" if panel.own_posture else "the strength page's"
+        head.append(f"({status}T hides, h: curve) {whose} posture: ")
+        head.append(" ".join(panel.own_posture) or posture_words(panel.row_posture))
         cells = Text(no_wrap=True, overflow="crop")
-        for index, (cell, label) in enumerate(zip(CELLS, ("Left hand", "Right hand", "People"))):
+        for index, (cell, label) in enumerate(zip(CELLS, LABELS)):
             cells.append(f"{label} ")
             shown = f"{panel.cell_text(cell):<{CELL_WIDTH - len(label) - 2}}"
             cells.append(shown, cursor if index == self.cursor else "")
@@ -241,11 +250,14 @@ class TaskPanel(Vertical):
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
         self.loads: dict[str, HandLoad] = {
-            "right": hand_load("right", DEFAULT_LOAD, (0.0, -1.0, 0.0))
+            "right": hand_load("right", DEFAULT_LOAD, (0.0, 1.0, 0.0))
         }
         self.people = "gender"
         self.answered_people = "gender"  # the people of the answer shown
-        self.posture: tuple[str, ...] = ()
+        # the screen's keeper of the settings (the session, for the worksheet)
+        self.keep_settings: Callable[[TaskSettings], None] | None = None
+        self.row_posture: tuple[str, ...] = ()  # the strength page's row
+        self.own_posture: tuple[str, ...] = ()  # typed in the posture cell; () follows the row
         self.figure: Figure | None = None
         self.answer: TaskAnswer | None = None
         self.error = ""
@@ -265,11 +277,16 @@ class TaskPanel(Vertical):
     def cells(self) -> TaskCells:
         return self.query_one(TaskCells)
 
+    @property
+    def posture(self) -> tuple[str, ...]:
+        """The task's posture: its own (the posture cell), or the strength page's row."""
+        return self.own_posture or self.row_posture
+
     # --- what it shows -------------------------------------------------------
     def show_task(self, figure: Figure, posture: tuple[str, ...]) -> None:
         """The figure shown and the strength page's posture: a new answer in
         a worker (on a copy of the figure, which edits change in place)."""
-        self.figure, self.posture = figure, posture
+        self.figure, self.row_posture = figure, posture
         self.recompute()
 
     def follow_row(self, figure: Figure, row: tuple[str, list[float]] | None) -> None:
@@ -278,6 +295,8 @@ class TaskPanel(Vertical):
         self.show_task(figure, () if row is None else strength_posture(*row))
 
     def recompute(self) -> None:
+        if self.keep_settings is not None:
+            self.keep_settings(self.settings())
         if self.figure is None:
             return
         self.computing = True
@@ -361,6 +380,8 @@ class TaskPanel(Vertical):
 
     # --- the inputs, set from the screen's prompts ----------------------------
     def cell_text(self, cell: str) -> str:
+        if cell == "posture":
+            return " ".join(self.own_posture) or FOLLOW_ROW
         if cell != "people":
             return load_words(self.loads.get(cell))
         if self.people == "gender" and self.figure is not None:
@@ -369,20 +390,28 @@ class TaskPanel(Vertical):
 
     def prompt(self, cell: str) -> str:
         """What the message line asks for `cell`."""
+        if cell == "posture":
+            return (
+                "The task's posture, JOINT=ANGLE ... (trunk_y=30 hip_y=60 shoulder_y=90; "
+                f"`{FOLLOW_ROW}`: the strength page's row) [{self.cell_text(cell)}]:"
+            )
         if cell == "people":
             return (
                 f"People the task is for ({', '.join(PEOPLE)}, target NAME or "
                 f"virtual NAME) [{self.people}]:"
             )
         return (
-            f"Load on the {cell} hand (N, then the way it pulls: down, up, forward, back, "
-            f"left, right or X,Y,Z; 0 = none) [{self.cell_text(cell)}]:"
+            f"Force the {cell} hand exerts (N, then the way it exerts it: up, down, forward, "
+            f"back, left, right or X,Y,Z; or a mass held, kg; 0 = none) [{self.cell_text(cell)}]:"
         )
 
     def set_cell(self, cell: str, text: str) -> str:
         """Take an answer to `prompt`; what the message line says then."""
         if not text.strip():
-            return f"Task: the {'people' if cell == 'people' else f'{cell} hand'} unchanged."
+            what = cell if cell in ("people", "posture") else f"{cell} hand"
+            return f"Task: the {what} unchanged."
+        if cell == "posture":
+            return f"Task: posture {' '.join(self.set_posture(text)) or 'of the row'}."
         if cell == "people":
             return f"Task: for {self.set_people(text)}."
         return f"Task: {load_words(self.set_load(cell, text))} on the {cell} hand."
@@ -392,14 +421,55 @@ class TaskPanel(Vertical):
         load = parse_hand_load(side, text)
         loads = {**self.loads, side: load}
         if load.force == 0:
-            del loads[side]
-        if not loads:
-            raise TaskError("a task needs a load on a hand; the loads are unchanged")
+            del loads[side]  # a posture with no hand load is a task too
         self.loads = loads
         if self.curve_side and self.curve_side not in loads:
-            self.curve_side = next(iter(loads))
+            self.curve_side = next(iter(loads), "")
         self.recompute()
         return load
+
+    def settings(self) -> TaskSettings:
+        return TaskSettings(
+            self.own_posture,
+            tuple((side, load_words(load)) for side, load in sorted(self.loads.items())),
+            self.people,
+        )
+
+    def take_settings(self, settings: TaskSettings) -> None:
+        """A worksheet's settings: each word checked as when typed (SassError)."""
+        parse_angles(list(settings.posture))  # refuse a bad word before taking any
+        own = settings.posture
+        loads = {side: parse_hand_load(side, text) for side, text in settings.loads}
+        people = parse_people(settings.people)
+        self.own_posture, self.people = own, people
+        self.loads = {side: load for side, load in loads.items() if load.force > 0}
+        self.curve_side = ""
+        self.recompute()
+
+    def task_outline(self) -> Outline | None:
+        """The figure shown in the task's posture, standing as the task stands
+        (for the figure panel beside it); None: nothing to pose."""
+        if self.figure is None:
+            return None
+        figure = self.figure
+        angles = parse_angles(list(self.posture))
+        loads = list(self.loads.values())
+        body, _, _, _ = pose_task(figure, angles, loads)
+        label = f"{figure.person or 'figure'} in the task's posture"
+        return posed_outline(build_humanoid(figure), body, label, float(figure.stature))
+
+    def set_posture(self, text: str) -> tuple[str, ...]:
+        """`trunk_y=30 hip_y=60 ...` (checked as `sass task` checks it, and
+        against the figure's joint limits), or `row`: follow the strength page."""
+        words = tuple(text.split())
+        if words == (FOLLOW_ROW,):
+            words = ()
+        angles = parse_angles(list(words))
+        if self.figure is not None:
+            pose_figure(self.figure, angles)  # refuse what the figure cannot take
+        self.own_posture = words
+        self.recompute()
+        return words
 
     def set_people(self, text: str) -> str:
         self.people = parse_people(text)

@@ -113,7 +113,23 @@ def answer_lines(answer: TaskAnswer) -> list[str]:
         worst = answer.limiting(p)
         if worst is not None:
             limiting.append(f"{p} {worst.what} {worst.percent[p]:.1f} %")
-    lines.append(f"Limiting: {'; '.join(limiting)}")
+    back = answer.low_back
+    if back is not None:
+        lines.append(
+            f"{'trunk (L5/S1)':<15}{back.moment[0]:6.1f}  compression {back.compression:.0f} N, "
+            f"shear {back.shear:.0f} N" + ("" if all(back.limits.values()) else ": above a limit")
+        )
+    stance = answer.stance
+    if stance is not None and not stance.stable:
+        limiting = [f"{p} out of balance" for p in answer.unstable]
+    balance = "seated" if stance is None else "in balance" if stance.stable else "OUT OF BALANCE"
+    scores = " ".join(f"{r.side[0]} {r.score}" for r in answer.rula)
+    rebas = " ".join(f"{r.side[0]} {r.score}" for r in answer.reba)
     uncovered = [f"{m.joint} {m.size:.1f}" for m in answer.moments if m.covered_by == UNCOVERED]
-    lines.append(f"Not covered, {UNCOVERED} (N-m): {', '.join(uncovered)}")
+    # one line: the panel's rows are counted (TASK_PANEL_LINES)
+    lines.append(
+        f"Balance: {balance}; RULA {scores}; REBA {rebas}; not covered (N-m): "
+        f"{', '.join(uncovered)}"
+    )
+    lines.append(f"Limiting: {'; '.join(limiting)}")
     return lines

@@ -1,0 +1,63 @@
+"""`sass task` for a virtual population (spec: under 1 s), beside a baseline
+measured in the same run: `sass task --gender female` (the figure alone),
+each in fresh processes, interleaved (A, B, A, B, ...) so both see the same
+machine load.  The first `--virtual` run makes the virtual population in a
+temporary database and is not counted.
+
+    python benchmarks/task_virtual.py [--runs 7]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import resource
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+PY = sys.executable
+SASS = shutil.which("sass", path=str(Path(PY).parent)) or shutil.which("sass")
+TASK = ["task", "shoulder_y=90", "elbow_y=0", "--right-load", "40N", "--right-direction", "forward"]
+
+
+def timed(command: list[str], env: dict[str, str]) -> tuple[float, float]:
+    """(wall s, CPU s of the child): on a shared machine the CPU time is the
+    command's own work, the wall time adds the other processes' load."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    done = subprocess.run(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    elapsed = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if done.returncode:
+        raise RuntimeError(f"{' '.join(command)}: {done.stderr.decode()[-500:]}")
+    cpu = after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
+    return elapsed, cpu
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--runs", type=int, default=7)
+    args = parser.parse_args()
+    assert SASS, "the sass console script (pip install -e .)"
+    with tempfile.TemporaryDirectory() as folder:
+        env = {**os.environ, "SASS_DB": str(Path(folder) / "task.db"), "HOME": folder}
+        virtual = [SASS, *TASK, "--virtual", "nhanes-2017-2020"]
+        baseline = [SASS, *TASK, "--gender", "female"]
+        timed(virtual, env)  # makes the virtual population
+        pairs = [(timed(virtual, env), timed(baseline, env)) for _ in range(args.runs)]
+    for words, index in (("wall", 0), ("CPU", 1)):
+        a = statistics.median(p[0][index] for p in pairs)
+        b = statistics.median(p[1][index] for p in pairs)
+        print(
+            f"{words}: sass task --virtual nhanes-2017-2020 {a:.3f} s (target under 1 s); "
+            f"--gender female (baseline) {b:.3f} s; ratio {a / b:.2f}"
+        )
+
+
+if __name__ == "__main__":
+    main()
