@@ -19,7 +19,6 @@ from sass_tui.cli.common.figure_from_options import figure_from_args
 from sass_tui.cli.common.options import (
     SubParsers,
     add_figure_options,
-    add_virtual_option,
     print_warnings,
 )
 from sass_tui.model.body.figure import Figure
@@ -78,14 +77,6 @@ def register(commands: SubParsers) -> None:
         "follows, e.g. '0.4,1.3,0.6 m'; a negative X as --point=-20,130,60): reached, or missed "
         "by how much",
     )
-    people = reach.add_mutually_exclusive_group()
-    people.add_argument(
-        "--target",
-        metavar="NAME",
-        help="the share of a target population's people reaching --point "
-        "(each the gender's figure scaled to their stature)",
-    )
-    add_virtual_option(people)
     reach.add_argument(
         "-o",
         "--output",
@@ -112,9 +103,9 @@ def run(args: argparse.Namespace) -> int:
         raise ReachError("--with-body goes with -o FILE.glb")
     if args.with_body and args.seated:
         raise ReachError("the body is written standing: leave out --seated or --with-body")
-    if args.target is not None or args.virtual is not None:
-        if point is None:
-            raise ReachError("--target and --virtual count who reaches --point: give --point")
+    # With --point, --target and --virtual count who of their people reach it
+    # (each person's own linkage); without, they size the figure as for sass fig.
+    if point is not None and (args.target is not None or args.virtual is not None):
         # deferred: cli.reach_people (the db package) — off sass reach (sass_tui/startup.py)
         from sass_tui.cli.reach_people import population_shares
 

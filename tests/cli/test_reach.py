@@ -205,7 +205,6 @@ def test_a_population_s_share_reaching_a_point(shipped_db_file, tmp_path, capsys
 @pytest.mark.parametrize(
     "argv, words",
     [
-        (["--virtual", "nhanes-2017-2020"], "give --point"),
         (["--point", "1,2"], "expected X,Y,Z"),
         (["--point", "1,2,3 kg"], "not a unit of length"),
         (["--seated", "--with-body", "-o", "x.glb"], "the body is written standing"),
