@@ -109,6 +109,8 @@ class SassScreen(Screen):
         dismissed with."""
         chosen: asyncio.Future[T | None] = asyncio.get_running_loop().create_future()
         self.app.push_screen(screen, chosen.set_result)
+        # The keys typed after the last answer are the pop-up's, once it has the focus.
+        self.call_after_refresh(self.message_line.release_keys)
         return await chosen
 
     async def answer_to(
