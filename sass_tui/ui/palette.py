@@ -10,6 +10,13 @@ spreadsheet by the command that opens it) and runs it once that screen can
 take it (`SassScreen.run_when_ready`); a screen that only opens from
 another's answer (the fit test) says how to get there instead.
 
+The palette finds a command by its name (Textual's fuzzy match, best
+first), and also by the words of its name and help as an engineer says
+them: each word typed must begin a word of the command's, or one of its
+synonyms (SYNONYMS: "stats" finds the percentile table, "civilian" the
+target population, "accommodate" the fit test).  A few things done outside
+the TUI (`sass serve`) are listed too, and say how.
+
 A command's name is its menu label (`CommandSpec.label`) when the screen has
 a menu button for it, else the binding's tooltip (the full name of a short
 footer label), else its description, else its action's name; its help text
@@ -44,6 +51,108 @@ KEY_NAMES = {
     "pageup": "PgUp",
     "enter": "Enter",
 }
+
+
+# An engineer's word -> words the commands' names and help use.  A typed
+# word finds a command when it, or one of these, begins one of its words.
+SYNONYMS: dict[str, tuple[str, ...]] = {
+    "stats": ("percentile", "table"),
+    "statistics": ("percentile", "table"),
+    "summary": ("percentile", "table"),
+    "mean": ("percentile", "table"),
+    "civilian": ("target", "population"),
+    "civilians": ("target", "population"),
+    "nhanes": ("target", "population"),
+    "ansur": ("target", "query", "input"),
+    "army": ("target", "query"),
+    "soldier": ("target", "query"),
+    "survey": ("target", "population"),
+    "weight": ("weighted", "target"),
+    "weights": ("weighted", "target"),
+    "virtual": ("target", "population"),
+    "accommodate": ("fit", "design", "limits", "family"),
+    "accommodation": ("fit", "design", "limits", "family"),
+    "design": ("fit", "design"),
+    "spec": ("fit", "design", "limits"),
+    "limit": ("fit", "design", "limits"),
+    "manikin": ("family", "figure"),
+    "mannequin": ("family", "figure"),
+    "boundary": ("family",),
+    "cases": ("family",),
+    "serve": ("serve", "web", "browser"),
+    "web": ("serve", "web", "browser"),
+    "browser": ("serve", "web", "browser"),
+    "share": ("serve", "web"),
+    "load": ("input", "open", "read"),
+    "open": ("input", "open", "read"),
+    "import": ("input",),
+    "read": ("input", "open", "read"),
+    "write": ("write", "save", "export", "create"),
+    "export": ("export", "write", "create"),
+    "3d": ("gltf", "hanim", "export"),
+    "mesh": ("gltf", "export"),
+    "model": ("gltf", "hanim", "export", "predict"),
+    "body": ("gltf", "hanim", "figure"),
+    "units": ("units", "cm", "in"),
+    "inches": ("units", "in"),
+    "metric": ("units", "cm"),
+    "imperial": ("units", "in"),
+    "draw": ("figure", "draw"),
+    "picture": ("figure", "draw"),
+    "view": ("figure", "show"),
+    "search": ("query", "jump", "type"),
+    "find": ("query", "jump", "type"),
+    "filter": ("query", "type"),
+    "select": ("select", "query"),
+    "posture": ("task", "strength"),
+    "lift": ("task", "strength"),
+    "niosh": ("task",),
+    "force": ("strength", "torque", "task"),
+    "torque": ("strength", "torque"),
+    "capable": ("capable", "task"),
+    "regression": ("predict",),
+    "estimate": ("predict",),
+    "history": ("message", "log", "undo"),
+}
+
+
+def words_of(text: str) -> list[str]:
+    """The words of a command's name or help, lowercase."""
+    return re.findall(r"[a-z0-9]+", text.lower())
+
+
+def word_score(query: str, name: str, help_text: str) -> float:
+    """How well the words typed name a command, 0 to 1: 0 when one of them
+    (with its synonyms) begins no word of its name or help.  A word in the
+    name counts twice one in the help; a synonym listed later a little less."""
+    typed = words_of(query)
+    if not typed:
+        return 0.0
+    in_name, in_help = words_of(name), words_of(help_text)
+    score = 0.0
+    for word in typed:
+        best = 0.0
+        for rank, want in enumerate((word, *SYNONYMS.get(word, ()))):
+            weight = 1.0 - 0.05 * rank
+            if any(w.startswith(want) for w in in_name):
+                best = max(best, weight)
+            elif any(w.startswith(want) for w in in_help):
+                best = max(best, weight / 2)
+        if best == 0.0:
+            return 0.0
+        score += best
+    return score / len(typed)
+
+
+# Done outside the TUI: listed so that the palette finds them, and says how.
+OUTSIDE: tuple[tuple[str, str, str], ...] = (
+    (
+        "Serve sass in a web browser",
+        "sass serve, in a shell: the spreadsheet in browser tabs (docs/user-guide.md).",
+        "In a shell: `sass serve` serves this spreadsheet to web browsers, one session a "
+        "tab (pip install 'sass-tui[serve]'); it prints the address to open.",
+    ),
+)
 
 
 @dataclass(frozen=True)
@@ -296,6 +405,8 @@ class ScreenCommands(Provider):
                 if _elsewhere(command):
                     run = partial(run_elsewhere, self.app, route, command.action, command.name)
                     found.append((command.name, _help_line(command, route.title), run))
+        say = getattr(screen, "say", None) or self.app.notify
+        found += [(name, help_text, partial(say, how)) for name, help_text, how in OUTSIDE]
         return found
 
     async def discover(self) -> Hits:
@@ -305,9 +416,15 @@ class ScreenCommands(Provider):
     async def search(self, query: str) -> Hits:
         matcher = self.matcher(query)
         for name, help_text, callback in self._commands():
-            score = matcher.match(name)
+            # Words typed that begin the command's words (or their synonyms)
+            # first, scored 0.5-1; then Textual's fuzzy match of the name
+            # (letters scattered; its score has no upper bound), under 0.5.
+            words = word_score(query, name, help_text)
+            fuzzy = matcher.match(name)
+            score = 0.5 + words / 2 if words > 0 else fuzzy / (1 + fuzzy) / 2
             if score > 0:
-                yield Hit(score, matcher.highlight(name), callback, help=help_text)
+                shown = matcher.highlight(name) if fuzzy > 0 else name
+                yield Hit(score, shown, callback, help=help_text)
 
 
 HELP_SCROLLBAR = 2
