@@ -262,6 +262,20 @@ class QueryBuilder:
         return "".join(reversed(pieces))
 
 
+def filtered_labels(menu: Menu, typed: str) -> list[str]:
+    """The items of `menu` holding every word typed; first those where each
+    word begins the label or one of its words ("poplit": poplitealheight
+    before buttockpopliteallength), each kind in the menu's order."""
+    words = typed.lower().split()
+    found = [item.label for item in menu.items if all(w in item.label.lower() for w in words)]
+
+    def begins(label: str) -> bool:
+        starts = re.findall(r"\w+", label.lower())
+        return all(any(start.startswith(w) for start in starts) for w in words)
+
+    return sorted(found, key=lambda label: not begins(label))
+
+
 class MenuSearch(Input):
     """The filter above a searchable menu: typing narrows the items, the arrow
     keys move in the menu below, Enter chooses the highlighted item."""
@@ -326,10 +340,7 @@ class QueryPopup(Vertical):
         (self.search if menu is not None and menu.searchable else self.options).focus()
 
     def _fill(self, menu: Menu, typed: str) -> None:
-        words = typed.lower().split()
-        labels = [
-            item.label for item in menu.items if all(word in item.label.lower() for word in words)
-        ] + ([PREVIOUS] if menu.previous else [])
+        labels = filtered_labels(menu, typed) + ([PREVIOUS] if menu.previous else [])
         options = self.options
         options.clear_options()
         options.add_options([Option(label, id=f"opt-{i}") for i, label in enumerate(labels)])

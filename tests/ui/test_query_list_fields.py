@@ -1,0 +1,94 @@
+"""The query list shows the measurements a query compared as columns, sorts
+by any field `sass query --fields` lists, shows a source whole, and finds a
+person by any part of a name; the measurement menu's filter puts the names
+that begin with what was typed first."""
+
+from __future__ import annotations
+
+import csv
+
+import pytest
+from _screen import message, open_query_screen, paste, settle
+
+from sass_tui.ui.query.query_builder import MEASUREMENTS_MENU, filtered_labels
+from sass_tui.ui.query.query_list import ListSheet
+from sass_tui.ui.query.query_people import SortError, sort_column
+
+QUERY = "gender = female AND measure.poplitealheight > 440 mm"
+SIZE = (100, 37)
+
+
+def popliteal_heights_in_the_csv(ansur_dir) -> list[float]:
+    """Straight from ANSUR II's CSV (mm): the women's popliteal heights over
+    440 mm, in cm as the database stores them."""
+    with open(ansur_dir / "ANSUR_II_FEMALE_Public.csv", encoding="latin-1") as file:
+        heights = (float(r["poplitealheight"]) for r in csv.DictReader(file))
+        return [height / 10 for height in heights if height > 440]
+
+
+async def typed_query(pilot, text: str) -> None:
+    await open_query_screen(pilot)
+    await pilot.press("slash")
+    await paste(pilot, text)
+    await pilot.press("enter")
+    await settle(pilot)
+
+
+def test_sort_by_the_measurement_just_queried(drive, app_at, ansur_dir):
+    async def scenario():
+        async with app_at(SIZE, db=True) as (app, pilot):
+            await typed_query(pilot, QUERY)
+            expected = sorted(popliteal_heights_in_the_csv(ansur_dir), reverse=True)
+            sheet = app.screen.query_one(ListSheet)
+            # The measurement is a column of the list, after the source.
+            header = str(sheet.render()).splitlines()[0]
+            assert "poplitealheight cm" in header, header
+            await pilot.press("o")
+            await paste(pilot, "-measure.poplitealheight")
+            await pilot.press("enter")
+            await settle(pilot)
+            assert "sorted by measure.poplitealheight, largest first" in message(app)
+            shown = [row["measure.poplitealheight"] for row in sheet.rows]
+            assert shown == pytest.approx(expected[: len(shown)])
+            assert "poplitealheight ▼" in str(sheet.render()).splitlines()[0]
+            # The measurement's name alone sorts by it too, smallest first.
+            await pilot.press("o")
+            await paste(pilot, "poplitealheight")
+            await pilot.press("enter")
+            await settle(pilot)
+            assert sheet.rows[0]["measure.poplitealheight"] == pytest.approx(min(expected))
+
+    drive(scenario())
+
+
+def test_a_source_is_shown_whole_and_a_name_found_by_any_word(drive, app_at):
+    async def scenario():
+        async with app_at((80, 24), db=True) as (app, pilot):
+            await typed_query(pilot, "source = 'virtual:nhanes-2017-2020'")
+            sheet = app.screen.query_one(ListSheet)
+            text = str(sheet.render())
+            assert "virtual:nhanes-2017-2020" in text, text
+            # The number that ends a name ("virtual nhanes-2017-2020 F 4216").
+            number = sheet.rows[-1]["name"].split()[-1]
+            await pilot.press("j")
+            await paste(pilot, number)
+            await pilot.press("enter")
+            await settle(pilot)
+            assert sheet.highlighted["name"].split()[-1] == number, message(app)
+
+    drive(scenario())
+
+
+def test_a_sort_that_names_nothing_says_what_it_takes():
+    assert sort_column("measure.poplitealheight") == ("measure.poplitealheight", False)
+    assert sort_column("-girth.neck.x") == ("girth.neck.x", True)
+    assert sort_column("stat") == ("stature", False)
+    with pytest.raises(SortError, match="sass query --fields"):
+        sort_column("measure.nosuchthing")
+
+
+def test_the_filter_puts_the_names_that_begin_so_first():
+    labels = filtered_labels(MEASUREMENTS_MENU, "poplit")
+    assert labels[0].startswith("poplitealheight"), labels
+    assert any(label.startswith("buttockpopliteallength") for label in labels)
+    assert filtered_labels(MEASUREMENTS_MENU, "zzz") == []
