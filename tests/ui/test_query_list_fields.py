@@ -10,7 +10,14 @@ import csv
 import pytest
 from _screen import message, open_query_screen, paste, settle
 
-from sass_tui.ui.query.query_builder import MEASUREMENTS_MENU, filtered_labels
+from sass_tui.db.query.query import compile_query
+from sass_tui.ui.query.query_builder import (
+    MEASUREMENTS_MENU,
+    TYPE_A_SOURCE,
+    QueryBuilder,
+    QueryPopup,
+    filtered_labels,
+)
 from sass_tui.ui.query.query_list import ListSheet
 from sass_tui.ui.query.query_people import SortError, sort_column
 
@@ -92,3 +99,31 @@ def test_the_filter_puts_the_names_that_begin_so_first():
     assert labels[0].startswith("poplitealheight"), labels
     assert any(label.startswith("buttockpopliteallength") for label in labels)
     assert filtered_labels(MEASUREMENTS_MENU, "zzz") == []
+
+
+def test_the_builders_source_is_picked_from_the_databases(drive, app_at):
+    async def scenario():
+        async with app_at(SIZE, db=True) as (app, pilot):
+            await open_query_screen(pilot)
+            await pilot.press("d", "b")
+            await settle(pilot)
+            popup = app.screen.query_one(QueryPopup)
+            for label in ("Global Information", "Source"):
+                await pilot.press(*["down"] * popup.labels.index(label), "enter")
+                await pilot.pause()
+            assert popup.labels[:3] == ["ansur2", "synthetic", "virtual:nhanes-2017-2020"]
+            assert TYPE_A_SOURCE in popup.labels
+            await pilot.press("down", "down", "enter")
+            await pilot.pause()
+            assert app.screen.builder.text == "source = 'virtual:nhanes-2017-2020'"
+            assert popup.menu_key == "conjunction"
+
+    drive(scenario())
+
+
+def test_a_source_with_a_quote_is_quoted_the_other_way():
+    builder = QueryBuilder(sources=("O'Brien survey",))
+    for label in ("Global Information", "Source", "O'Brien survey"):
+        builder.choose(label)
+    assert builder.text == 'source = "O\'Brien survey"'
+    compile_query(builder.text)  # the query language takes it

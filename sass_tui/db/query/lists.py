@@ -404,6 +404,15 @@ class QueryLists:
         return None
 
     @_serialised
+    def sources(self) -> list[str]:
+        """The sources of the database's people (ansur2, synthetic, an
+        import's label), sorted: what a query's source may be."""
+        rows = self._conn.execute(
+            "SELECT DISTINCT source FROM person WHERE source IS NOT NULL ORDER BY source"
+        )
+        return [str(row[0]) for row in rows]
+
+    @_serialised
     def person_record(self, id_num: int) -> dict[str, object]:
         """Everything stored about the person `id_num` (db/people/individual.py's
         person_record: what `sass person` prints)."""

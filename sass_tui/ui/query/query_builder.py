@@ -108,7 +108,7 @@ MENUS: dict[str, Menu] = {
                 Item("Mass (kg)", "mass", _NUMERIC),
                 Item("Stature (cm)", "stature", _NUMERIC),
                 Item("Age (years)", "age", _NUMERIC),
-                Item("Source", "source", _TEXT),
+                Item("Source", "source", "source"),
                 Item("Component", "component", _TEXT),
                 Item("Branch", "branch", _TEXT),
                 Item("Writing Preference", "writingpreference", "handedness"),
@@ -180,12 +180,28 @@ class Step:
     text: str
 
 
+TYPE_A_SOURCE = "Another: type it (= or ≠)"
+
+
+def sources_menu(sources: Iterable[str]) -> Menu:
+    """The Source menu: the sources the database holds, each a choice, and
+    a typed one (a source yet to be imported, or ≠)."""
+    items = tuple(
+        Item(source, f" = {quote}{source}{quote}", "conjunction")
+        for source in sources
+        for quote in ['"' if "'" in source else "'"]
+    )
+    return Menu("source", "Source", (*items, Item(TYPE_A_SOURCE, "", _TEXT)))
+
+
 @dataclass
 class QueryBuilder:
-    """Where the user is in the menus and the query built so far."""
+    """Where the user is in the menus and the query built so far; `sources`:
+    the sources of the database's people, offered by the Source menu."""
 
     steps: list[Step] = field(default_factory=list)
     current: str = "query"  # a menu key, or "value" while the constraint is typed
+    sources: tuple[str, ...] = ()
 
     @property
     def text(self) -> str:
@@ -193,6 +209,8 @@ class QueryBuilder:
 
     @property
     def menu(self) -> Menu | None:
+        if self.current == "source":
+            return sources_menu(self.sources)
         return MENUS.get(self.current)
 
     def choose(self, label: str) -> str:

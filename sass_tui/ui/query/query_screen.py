@@ -24,7 +24,7 @@ from sass_tui.db.query.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryL
 from sass_tui.model.text import printable
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import QUERY_BAR_AFTER, Work, WorkBar
-from sass_tui.ui.query.query_base import WAIT
+from sass_tui.ui.query.query_base import WAIT, Busy
 from sass_tui.ui.query.query_builder import QueryBuilder, QueryBuilderScreen
 from sass_tui.ui.query.query_commands import QUERY_COMMANDS, QueryCommandMenu
 from sass_tui.ui.query.query_input_db import InputDbCommands
@@ -225,7 +225,13 @@ class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
         if self.ready_lists() is None:
             return
         self.awaiting_build = True
-        self.builder = QueryBuilder()
+        sources: tuple[str, ...] = ()
+        try:
+            with self._database() as lists:
+                sources = tuple(lists.sources())
+        except (*DB_ERRORS, Busy):
+            pass  # the Source menu then takes a typed source only
+        self.builder = QueryBuilder(sources=sources)
         self.say(f"{BUILD_PROMPT} (or press b)")
 
     def action_build(self, x: int | None = None, y: int | None = None) -> None:
