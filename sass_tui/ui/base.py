@@ -70,8 +70,9 @@ class SassScreen(Screen):
         on_cancel: Callable[[], None] | None = None,
         kind: str = "prompt",
         complete: Completer | None = None,
+        cursor: int | None = None,
     ) -> None:
-        self.message_line.ask(prompt, on_answer, initial, on_cancel, kind, complete)
+        self.message_line.ask(prompt, on_answer, initial, on_cancel, kind, complete, cursor)
 
     def converse(self, questions: Coroutine[Any, Any, None]) -> None:
         """Run a command that asks several questions in turn: `questions` is

@@ -127,3 +127,28 @@ def test_a_source_with_a_quote_is_quoted_the_other_way():
         builder.choose(label)
     assert builder.text == 'source = "O\'Brien survey"'
     compile_query(builder.text)  # the query language takes it
+
+
+def test_the_query_line_offers_the_last_query_selected_and_keeps_a_failed_one(drive, app_at):
+    async def scenario():
+        async with app_at(SIZE, db=True) as (app, pilot):
+            await typed_query(pilot, "stature > 190 cm")
+            await pilot.press("slash")
+            answer = app.screen.query_one("#answer")
+            assert answer.value == "stature > 190 cm"
+            assert answer.selected_text == "stature > 190 cm"
+            # Typing replaces it: the error is in the text typed, which stays.
+            await pilot.press(*"mass > 9x0 kg", "enter")
+            await pilot.pause()
+            assert app.screen.message_line.prompting
+            assert answer.value == "mass > 9x0 kg"
+            assert message(app).startswith("Not run:"), message(app)
+            assert "at the cursor" in message(app)
+            assert answer.cursor_position == "mass > 9x0 kg".index("x")
+            # Fixed where the cursor is, it runs.
+            await pilot.press("delete", "enter")
+            await settle(pilot)
+            assert "people found" in message(app), message(app)
+            assert app.screen.lists.last_query == "mass > 90 kg"
+
+    drive(scenario())

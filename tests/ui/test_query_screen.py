@@ -280,7 +280,8 @@ def test_query_text_edited_before_done_then_re_executed(drive, app_at, db):
             await pilot.press("e")  # edit the query as text on the message line
             answer = app.screen.query_one("#answer")
             assert answer.display and answer.value == "gender = male"
-            await pilot.press(*["backspace"] * 4, *"female AND stature > 165 cm", "enter")
+            assert answer.selected_text == "gender = male"  # typing would replace it
+            await pilot.press("end", *["backspace"] * 4, *"female AND stature > 165 cm", "enter")
             assert screen.builder.text == "gender = female AND stature > 165 cm"
             assert app.screen.query_one(QueryPopup).border_title == "Conjunction Menu"
             await choose(pilot, "Done")

@@ -509,4 +509,6 @@ class QueryBuilderScreen(SassScreen, ModalScreen[str | None]):
             self.builder.replace_text(text)
             self._show_current()
 
-        self.ask("Query:", edited, on_cancel=self._show_current, initial=self.builder.text)
+        self.ask(
+            "Query:", edited, on_cancel=self._show_current, initial=self.builder.text, cursor=-1
+        )

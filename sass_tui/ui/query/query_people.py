@@ -5,7 +5,7 @@ column (`o`), jump to an id or a name (`j`), and the message log (`L`)."""
 from __future__ import annotations
 
 from sass_tui.db.query.lists import SORT_COLUMNS
-from sass_tui.db.query.query import QueryError, field_column
+from sass_tui.db.query.query import QueryError, compile_query, field_column
 from sass_tui.ui.message_log import MessageLog
 from sass_tui.ui.query.person_screen import PersonScreen
 from sass_tui.ui.query.query_base import QueryScreenBase
@@ -57,11 +57,26 @@ class PeopleCommands(QueryScreenBase):
         if self.ready_lists() is None:
             return
         last = self.lists.last_query if self.lists is not None else None
-        self.ask("Query:", self._free_query, initial=last or "")
+        # The last query selected: typing replaces it, an arrow keeps it to edit.
+        self.ask("Query:", self._free_query, initial=last or "", cursor=-1)
 
     def _free_query(self, text: str) -> None:
         if not text.strip():
             self.say("No query given; nothing was run.")
+            return
+        try:
+            compile_query(text.strip())
+        except QueryError as exc:
+            # Asked again with the text as typed, the cursor where the error is.
+            reason = str(exc).partition(": ")[2] if exc.column else str(exc)
+            column = exc.column - 1 + len(text) - len(text.lstrip()) if exc.column else None
+            self.ask(
+                f"Not run: {reason} (at the cursor). Query:",
+                self._free_query,
+                initial=text,
+                kind="error",
+                cursor=column if column is not None else len(text),
+            )
             return
         self.start_query(text.strip())
 

@@ -14,6 +14,7 @@ from textual.containers import Horizontal
 from textual.message import Message
 from textual.widget import Widget
 from textual.widgets import Input, Label
+from textual.widgets.input import Selection
 
 from sass_tui.model.errors import SassError
 from sass_tui.ui.textual_api import forward_event
@@ -182,10 +183,21 @@ class MessageLine(Horizontal):
         on_cancel: Callable[[], None] | None = None,
         kind: str = "prompt",
         complete: Completer | None = None,
+        cursor: int | None = None,
     ) -> None:
-        """`complete`: what Tab completes the answer from (None: nothing)."""
+        """`complete`: what Tab completes the answer from (None: nothing).
+        `initial` is typed already (the cursor after it); with `cursor`, a
+        text offered to edit: selected (-1), so that typing replaces it and
+        an arrow keeps it, or with the cursor at that column (an error's)."""
         self._on_answer, self._on_cancel = on_answer, on_cancel
         self._open(prompt, initial, kind, complete)
+        answer = self.answer
+        if cursor is None or answer.value != initial:
+            return  # what was typed ahead stays as typed
+        if cursor < 0:
+            answer.selection = Selection(0, len(initial))
+        else:
+            answer.cursor_position = min(cursor, len(initial))
 
     def _open(
         self, prompt: str, initial: str, kind: str, complete: Completer | None = None
@@ -274,16 +286,18 @@ class MessageLine(Horizontal):
         if answer.closing or not self.prompting:
             self.later(key, character, text)
             return
-        if text:
-            answer.insert_text_at_cursor(text)
-        elif key == "enter":
+        if key == "enter":
             answer.submit()
         elif key == "escape":
             answer.action_cancel()
         elif key == "backspace":
             answer.action_delete_left()
-        elif character and character.isprintable():
-            answer.insert_text_at_cursor(character)
+        elif text or (character and character.isprintable()):
+            typed = text or character or ""
+            if answer.selection.is_empty:
+                answer.insert_text_at_cursor(typed)
+            else:  # typing replaces what is selected, as in the answer itself
+                answer.replace(typed, *answer.selection)
 
     def later(self, key: str, character: str | None, text: str = "") -> None:
         """A key that is not the open answer's: held while an answer is being
