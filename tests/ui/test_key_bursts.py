@@ -14,7 +14,7 @@ from textual import events
 
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import GIRTH
-from sass_tui.ui.widgets import DataSheet
+from sass_tui.ui.widgets import DataSheet, GlobalPanel
 
 LARGE = (120, 40)
 VALUES = [f"{40 + row}" for row in range(10)]
@@ -105,3 +105,21 @@ def test_ten_values_down_a_column_in_one_tmux_write(tmp_path):
         pane.wait_for(landed, "not every value landed")
         pane.send("u")
         pane.wait_for(lambda text: "Undone:" in text and "49.00" not in text, "u undid nothing")
+
+
+def test_a_word_typed_on_a_word_cell_is_its_value_not_commands(drive, app_at):
+    """`female` on Gender: the f does not ask for a figure file."""
+
+    async def scenario():
+        async with app_at(LARGE) as (app, pilot):
+            panel = app.query_one(GlobalPanel)
+            panel.select("gender")
+            panel.focus()
+            await pilot.pause()
+            for character in "female":
+                app.post_message(events.Key(character, character))
+            app.post_message(events.Key("enter", "\r"))
+            await wait_until(pilot, lambda: app.figure.gender == "female", "still male")
+            assert not app.message_line.prompting
+
+    drive(scenario())

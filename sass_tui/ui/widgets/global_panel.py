@@ -45,6 +45,8 @@ GLOBAL_CELLS: tuple[GlobalCell, ...] = (
     GlobalCell("fatigue_level", "Fatigue level", 5, 2, "Fatigue"),
 )
 GLOBAL_ROWS = 6
+# The cells whose value is a word: a letter typed on one starts its value.
+WORD_FIELDS = frozenset(("figure_type", "gender", "strength_type", "handedness"))
 # Column widths: left label, value, percentile, gap, right label, right value.
 _LABEL_A, _SLOT0, _SLOT1, _GAP = 12, 9, 8, 1
 _LABEL_B, _SHORT_LABEL_B = 15, 10
@@ -190,6 +192,13 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
             if 0 <= index < len(same_row):
                 self.cursor = same_row[index]
         self.refresh()
+
+    def starts_value(self, character: str) -> bool:
+        """A word cell (figure type, gender, strength type, handedness) takes
+        any letter: `female` typed on Gender is its value, not f's command."""
+        if self.chosen().field in WORD_FIELDS:
+            return character.isalpha() or super().starts_value(character)
+        return super().starts_value(character)
 
     def edit_request(self, initial: str) -> Message:
         return self.EditRequested(self.cursor.field, initial)
