@@ -11,12 +11,13 @@ from textual.command import CommandPalette
 
 from sass_tui.ui.palette import SYNONYMS, ScreenCommands, word_score, words_of
 
+PICKER = "Population: virtual U.S. civilians (NHANES), targets, ANSUR II"
 WORDS = {
     "stats": "Percentile table of the query's people",
     "statistics": "Percentile table of the query's people",
-    "civilian": "Target population",
-    "NHANES": "Target population",
-    "virtual": "Target population",
+    "civilian": PICKER,
+    "NHANES": PICKER,
+    "virtual": PICKER,
     "accommodate": "Fit Test",
     "design": "Fit Test",
     "design limits": "Fit Test",

@@ -588,6 +588,25 @@ class QueryLists:
         return stored + [name for name in SHIPPED if name not in stored]
 
     @_serialised
+    def target_people(self, name: str) -> tuple[int, ...]:
+        """The ids of the people a target (or virtual population) weights,
+        made first if it is a shipped one not made yet."""
+        weights = load_weights(self._conn, name)
+        return tuple(int(i) for i, w in zip(weights.ids, weights.weights, strict=True) if w > 0)
+
+    @_serialised
+    def people_of(self, text: str) -> tuple[int, ...]:
+        """The ids of the people a query finds (its scope: real people unless
+        it names a source), the lists left as they are."""
+        compiled = self._compile(text)
+        where, params = compiled.sql(self.dialect)
+        rows = self._conn.execute(
+            f"SELECT p.id_num FROM {compiled.from_clause()} WHERE {where} ORDER BY p.id_num",
+            params,
+        )
+        return tuple(int(row[0]) for row in rows)
+
+    @_serialised
     def weighted_count(self, query: str, target: str) -> WeightedCount:
         """The query's people weighted to the target `target` (db/populations/targets.py)."""
         weights = load_weights(self._conn, target)

@@ -61,6 +61,12 @@ class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
         ),
         Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         Binding("t", "choose_target", "Target", show=False, tooltip="Target population"),
+        Binding(
+            "P",
+            "pick_population",
+            show=False,
+            tooltip="Population: virtual U.S. civilians (NHANES), targets, ANSUR II",
+        ),
         Binding("q", "app.quit", "Quit"),
         Binding("escape", "cancel_work", "Cancel work", show=False),
         Binding("pagedown", "next_page", show=False),

@@ -97,6 +97,12 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
         Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         Binding("t", "strength_curve", show=False),
         Binding("T", "task", show=False, tooltip="Task panel"),
+        Binding(
+            "P",
+            "population",
+            show=False,
+            tooltip="Population: virtual U.S. civilians (NHANES), targets, ANSUR II",
+        ),
         Binding("M", "assumed_modifiers", show=False),
         *(
             Binding(spec.key, spec.action, spec.footer)
