@@ -9,7 +9,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 from textual.command import CommandPalette
 
-from sass_tui.ui.palette import SYNONYMS, ScreenCommands, word_score, words_of
+from sass_tui.ui.palette import ScreenCommands
+from sass_tui.ui.palette_words import SYNONYMS, word_score, words_of
 
 PICKER = "Population: virtual U.S. civilians (NHANES), targets, ANSUR II"
 WORDS = {

@@ -11,15 +11,10 @@ import pytest
 from _screen import message, open_query_screen, paste, settle
 
 from sass_tui.db.query.query import compile_query
-from sass_tui.ui.query.query_builder import (
-    MEASUREMENTS_MENU,
-    TYPE_A_SOURCE,
-    QueryBuilder,
-    QueryPopup,
-    filtered_labels,
-)
+from sass_tui.ui.query.query_builder import MEASUREMENTS_MENU, TYPE_A_SOURCE, QueryBuilder
 from sass_tui.ui.query.query_list import ListSheet
 from sass_tui.ui.query.query_people import SortError, sort_column
+from sass_tui.ui.query.query_popup import QueryPopup, filtered_labels
 
 QUERY = "gender = female AND measure.poplitealheight > 440 mm"
 SIZE = (100, 37)

@@ -404,15 +404,6 @@ class QueryLists:
         return None
 
     @_serialised
-    def sources(self) -> list[str]:
-        """The sources of the database's people (ansur2, synthetic, an
-        import's label), sorted: what a query's source may be."""
-        rows = self._conn.execute(
-            "SELECT DISTINCT source FROM person WHERE source IS NOT NULL ORDER BY source"
-        )
-        return [str(row[0]) for row in rows]
-
-    @_serialised
     def person_record(self, id_num: int) -> dict[str, object]:
         """Everything stored about the person `id_num` (db/people/individual.py's
         person_record: what `sass person` prints)."""
@@ -581,30 +572,10 @@ class QueryLists:
         return None if not name else load_weights(self._conn, name)
 
     @_serialised
-    def target_names(self) -> list[str]:
-        """The names of the target populations and virtual populations
-        (`virtual:NAME`) stored (`sass target`), and the shipped ones not made yet."""
-        stored = [t.name for t in list_targets(self._conn)]
-        return stored + [name for name in SHIPPED if name not in stored]
-
-    @_serialised
-    def target_people(self, name: str) -> tuple[int, ...]:
-        """The ids of the people a target (or virtual population) weights,
-        made first if it is a shipped one not made yet."""
-        weights = load_weights(self._conn, name)
-        return tuple(int(i) for i, w in zip(weights.ids, weights.weights, strict=True) if w > 0)
-
-    @_serialised
-    def people_of(self, text: str) -> tuple[int, ...]:
-        """The ids of the people a query finds (its scope: real people unless
-        it names a source), the lists left as they are."""
-        compiled = self._compile(text)
-        where, params = compiled.sql(self.dialect)
-        rows = self._conn.execute(
-            f"SELECT p.id_num FROM {compiled.from_clause()} WHERE {where} ORDER BY p.id_num",
-            params,
-        )
-        return tuple(int(row[0]) for row in rows)
+    def read(self, reader: Callable[..., R], *args: Any) -> R:
+        """`reader(connection, *args)`, a read of the database (target_names,
+        sources, target_people, people_of below) in turn with the lists' work."""
+        return reader(self._conn, *args)
 
     @_serialised
     def weighted_count(self, query: str, target: str) -> WeightedCount:
@@ -625,3 +596,39 @@ class QueryLists:
         if self._compiled is None or self._compiled.text != text:
             self._compiled = compile_query(text)
         return self._compiled
+
+
+# --- reads of the database, run by QueryLists.read ------------------------------------
+def target_names(conn: Any) -> list[str]:
+    """The names of the target populations and virtual populations
+    (`virtual:NAME`) stored (`sass target`), and the shipped ones not made yet."""
+    stored = [t.name for t in list_targets(conn)]
+    return stored + [name for name in SHIPPED if name not in stored]
+
+
+def sources(conn: Any) -> list[str]:
+    """The sources of the database's people (ansur2, synthetic, an import's
+    label), sorted: what a query's source may be."""
+    rows = conn.execute(
+        "SELECT DISTINCT source FROM person WHERE source IS NOT NULL ORDER BY source"
+    )
+    return [str(row[0]) for row in rows]
+
+
+def target_people(conn: Any, name: str) -> tuple[int, ...]:
+    """The ids of the people a target (or virtual population) weights, made
+    first if it is a shipped one not made yet."""
+    weights = load_weights(conn, name)
+    return tuple(int(i) for i, w in zip(weights.ids, weights.weights, strict=True) if w > 0)
+
+
+def people_of(conn: Any, text: str) -> tuple[int, ...]:
+    """The ids of the people a query finds (its scope: real people unless it
+    names a source), the lists left as they are."""
+    compiled = compile_query(text)
+    where, params = compiled.sql(dialect_of(conn))
+    rows = conn.execute(
+        f"SELECT p.id_num FROM {compiled.from_clause()} WHERE {where} ORDER BY p.id_num",
+        params,
+    )
+    return tuple(int(row[0]) for row in rows)

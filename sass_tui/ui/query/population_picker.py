@@ -21,7 +21,7 @@ from textual.screen import ModalScreen
 from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
-from sass_tui.db.query.lists import QueryLists
+from sass_tui.db.query.lists import QueryLists, people_of, target_names, target_people
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
 
 SURVEY_QUERY = "source = ansur2"
@@ -37,9 +37,9 @@ class PopulationChoice:
     def people(self, lists: QueryLists) -> tuple[int, ...]:
         """The choice's people (in a worker: a target may be made first)."""
         if self.target is not None:
-            return lists.target_people(self.target)
+            return lists.read(target_people, self.target)
         assert self.query is not None
-        return lists.people_of(self.query)
+        return lists.read(people_of, self.query)
 
     def file_name(self) -> str:
         """A file name for its girth population (the others go beside it)."""
@@ -105,7 +105,7 @@ class PopulationPicker(ModalScreen[PopulationChoice | None]):
 def read_choices(lists: QueryLists) -> list[PopulationChoice]:
     """The picker's choices, from the database (a short read); OSError or a
     database error when it cannot be read."""
-    return population_choices(lists.target_names(), lists.last_query)
+    return population_choices(lists.read(target_names), lists.last_query)
 
 
 def population_path(database: Path, choice: PopulationChoice) -> Path:

@@ -21,6 +21,7 @@ from textual.binding import Binding
 from textual.containers import Horizontal
 
 from sass_tui.db.query.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.query.lists import sources as database_sources
 from sass_tui.model.text import printable
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import QUERY_BAR_AFTER, Work, WorkBar
@@ -234,7 +235,7 @@ class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
         sources: tuple[str, ...] = ()
         try:
             with self._database() as lists:
-                sources = tuple(lists.sources())
+                sources = tuple(lists.read(database_sources))
         except (*DB_ERRORS, Busy):
             pass  # the Source menu then takes a typed source only
         self.builder = QueryBuilder(sources=sources)
