@@ -105,3 +105,23 @@ def test_start_screen_160x50_snapshot(snap_compare, new_app):
         await wait_until(pilot, drawn, "no figure")
 
     assert snap_compare(new_app(), run_before=run_before, terminal_size=MEDIUM)
+
+
+def test_an_answered_question_does_not_stay_on_the_line(drive, app_at):
+    """A question whose handler says nothing (it opened another screen)
+    leaves the line empty, not showing the question answered."""
+
+    async def scenario():
+        async with app_at((120, 40)) as (app, pilot):
+            line = app.message_line
+            line.ask("Population to test:", lambda text: None)
+            await pilot.pause()
+            await pilot.press("x", "enter")
+            await pilot.pause()
+            assert message(app) == ""
+            line.ask("Name:", lambda text: line.say(f"Hello {text}."))
+            await pilot.press("y", "enter")
+            await pilot.pause()
+            assert message(app) == "Hello y."
+
+    drive(scenario())

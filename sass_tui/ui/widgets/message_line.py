@@ -313,6 +313,15 @@ class MessageLine(Horizontal):
             target = self.app.screen
         forward_event(target, events.Paste(text) if text else events.Key(key, character))
 
+    def _clear_stale_prompt(self, prompt: str) -> None:
+        """The question answered still on the line (its handler said nothing,
+        or went to another screen): it is no longer current."""
+        if not self.answer.display and self.showing(prompt + " "):
+            label = self.query_one("#message", Label)
+            label.update("")
+            for name in ("info", "error", "warning", "prompt"):
+                label.set_class(False, f"-{name}")
+
     def _answered(self) -> None:
         """An answer or cancel handled: the line says so, and the keys held
         meanwhile go on to what has the keys now.  In a conversation they
@@ -353,9 +362,11 @@ class MessageLine(Horizontal):
             self._settle(event.value)
             self._answered()
             return
+        prompt = self._prompt
         on_answer, _ = self._close()
         if on_answer is not None:
             self._run(lambda: on_answer(event.value))
+        self._clear_stale_prompt(prompt)
         self._answered()
 
     def on_answer_input_completion_asked(self, event: AnswerInput.CompletionAsked) -> None:
