@@ -8,7 +8,7 @@ from __future__ import annotations
 import csv
 
 import pytest
-from _screen import message, open_query_screen, paste, settle
+from _screen import message, open_query_screen, paste, settle, slash_query
 
 from sass_tui.db.query.query import compile_query
 from sass_tui.ui.query.query_builder import MEASUREMENTS_MENU, TYPE_A_SOURCE, QueryBuilder
@@ -28,18 +28,10 @@ def popliteal_heights_in_the_csv(ansur_dir) -> list[float]:
         return [height / 10 for height in heights if height > 440]
 
 
-async def typed_query(pilot, text: str) -> None:
-    await open_query_screen(pilot)
-    await pilot.press("slash")
-    await paste(pilot, text)
-    await pilot.press("enter")
-    await settle(pilot)
-
-
 def test_sort_by_the_measurement_just_queried(drive, app_at, ansur_dir):
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):
-            await typed_query(pilot, QUERY)
+            await slash_query(pilot, QUERY)
             expected = sorted(popliteal_heights_in_the_csv(ansur_dir), reverse=True)
             sheet = app.screen.query_one(ListSheet)
             # The measurement is a column of the list, after the source.
@@ -66,7 +58,7 @@ def test_sort_by_the_measurement_just_queried(drive, app_at, ansur_dir):
 def test_a_source_is_shown_whole_and_a_name_found_by_any_word(drive, app_at):
     async def scenario():
         async with app_at((80, 24), db=True) as (app, pilot):
-            await typed_query(pilot, "source = 'virtual:nhanes-2017-2020'")
+            await slash_query(pilot, "source = 'virtual:nhanes-2017-2020'")
             sheet = app.screen.query_one(ListSheet)
             text = str(sheet.render())
             assert "virtual:nhanes-2017-2020" in text, text
@@ -127,7 +119,7 @@ def test_a_source_with_a_quote_is_quoted_the_other_way():
 def test_the_query_line_offers_the_last_query_selected_and_keeps_a_failed_one(drive, app_at):
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):
-            await typed_query(pilot, "stature > 190 cm")
+            await slash_query(pilot, "stature > 190 cm")
             await pilot.press("slash")
             answer = app.screen.query_one("#answer")
             assert answer.value == "stature > 190 cm"
