@@ -21,7 +21,6 @@ WORDS = {
     "virtual": PICKER,
     "accommodate": "Fit Test",
     "design": "Fit Test",
-    "design limits": "Fit Test",
     "serve": "Serve sass in a web browser",
     "web": "Serve sass in a web browser",
     "manikin": "Family",
