@@ -70,8 +70,9 @@ class SassScreen(Screen):
         on_cancel: Callable[[], None] | None = None,
         kind: str = "prompt",
         complete: Completer | None = None,
+        cursor: int | None = None,
     ) -> None:
-        self.message_line.ask(prompt, on_answer, initial, on_cancel, kind, complete)
+        self.message_line.ask(prompt, on_answer, initial, on_cancel, kind, complete, cursor)
 
     def converse(self, questions: Coroutine[Any, Any, None]) -> None:
         """Run a command that asks several questions in turn: `questions` is
@@ -109,6 +110,8 @@ class SassScreen(Screen):
         dismissed with."""
         chosen: asyncio.Future[T | None] = asyncio.get_running_loop().create_future()
         self.app.push_screen(screen, chosen.set_result)
+        # The keys typed after the last answer are the pop-up's, once it has the focus.
+        self.call_after_refresh(self.message_line.release_keys)
         return await chosen
 
     async def answer_to(

@@ -10,6 +10,13 @@ spreadsheet by the command that opens it) and runs it once that screen can
 take it (`SassScreen.run_when_ready`); a screen that only opens from
 another's answer (the fit test) says how to get there instead.
 
+The palette finds a command by its name (Textual's fuzzy match, best
+first), and also by the words of its name and help as an engineer says
+them: each word typed must begin a word of the command's, or one of its
+synonyms (SYNONYMS: "stats" finds the percentile table, "civilian" the
+target population, "accommodate" the fit test).  A few things done outside
+the TUI (`sass serve`) are listed too, and say how.
+
 A command's name is its menu label (`CommandSpec.label`) when the screen has
 a menu button for it, else the binding's tooltip (the full name of a short
 footer label), else its description, else its action's name; its help text
@@ -33,6 +40,7 @@ from textual.containers import Vertical
 from textual.screen import ModalScreen, Screen
 from textual.widgets import DataTable, Static
 
+from sass_tui.ui.palette_words import OUTSIDE, word_score
 from sass_tui.ui.textual_api import bindings_of, class_bindings
 from sass_tui.ui.widgets import CommandMenu
 
@@ -296,6 +304,8 @@ class ScreenCommands(Provider):
                 if _elsewhere(command):
                     run = partial(run_elsewhere, self.app, route, command.action, command.name)
                     found.append((command.name, _help_line(command, route.title), run))
+        say = getattr(screen, "say", None) or self.app.notify
+        found += [(name, help_text, partial(say, how)) for name, help_text, how in OUTSIDE]
         return found
 
     async def discover(self) -> Hits:
@@ -305,9 +315,15 @@ class ScreenCommands(Provider):
     async def search(self, query: str) -> Hits:
         matcher = self.matcher(query)
         for name, help_text, callback in self._commands():
-            score = matcher.match(name)
+            # Words typed that begin the command's words (or their synonyms)
+            # first, scored 0.5-1; then Textual's fuzzy match of the name
+            # (letters scattered; its score has no upper bound), under 0.5.
+            words = word_score(query, name, help_text)
+            fuzzy = matcher.match(name)
+            score = 0.5 + words / 2 if words > 0 else fuzzy / (1 + fuzzy) / 2
             if score > 0:
-                yield Hit(score, matcher.highlight(name), callback, help=help_text)
+                shown = matcher.highlight(name) if fuzzy > 0 else name
+                yield Hit(score, shown, callback, help=help_text)
 
 
 HELP_SCROLLBAR = 2

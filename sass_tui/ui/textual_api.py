@@ -13,12 +13,18 @@ when a Textual release renames or reshapes either.
 The footer (ui/footer.py) skips a rebuild that would draw the same keys; it
 asks whether Textual's `Footer` has its bindings yet (`Footer._bindings_ready`,
 set once the screen first publishes them), also here only.
+
+A key held back while an answer is being handled is passed on afterwards
+(ui/widgets/message_line.py) as the app passes a key on: marked forwarded
+(`Message._set_forwarded`), so that the app does not route it a second time
+when it bubbles up unhandled.
 """
 
 from __future__ import annotations
 
 from textual.binding import BindingsMap
 from textual.dom import DOMNode
+from textual.events import Event
 from textual.widgets import Footer
 
 
@@ -37,3 +43,9 @@ def footer_bindings_ready(footer: Footer) -> bool:
     """Whether Textual's footer has been given its screen's bindings (before
     that its compose draws no keys)."""
     return bool(footer._bindings_ready)
+
+
+def forward_event(node: DOMNode, event: Event) -> None:
+    """Give `node` a key (or paste) as the app gives the focused widget one."""
+    event._set_forwarded()
+    node.post_message(event)

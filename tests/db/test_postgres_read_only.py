@@ -19,7 +19,7 @@ from sass_tui.db.engine.database import Database
 from sass_tui.db.engine.schema import DatabaseError
 from sass_tui.db.people.ansur import import_ansur_into
 from sass_tui.db.people.individual import person_records
-from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST, QueryLists, target_names
 from sass_tui.model.served import READ_ONLY_ENV
 
 QUERY = "gender = female AND stature > 170 cm"
@@ -67,7 +67,7 @@ def work_of(lists: QueryLists) -> dict[str, object]:
         "person": (person.id_num, person.name, person.stature),
         "population": (population.counts, population.modelled),
         "weighted": lists.weighted_count(QUERY, "civ"),
-        "targets": lists.target_names(),
+        "targets": lists.read(target_names),
     }
 
 

@@ -56,3 +56,13 @@ async def typed_query(pilot, text: str) -> None:
     labels = [str(o.prompt) for o in app.screen.query_one("#popup-options").options]
     await pilot.press(*["down"] * labels.index("Done"), "enter")
     await settle(pilot)
+
+
+async def slash_query(pilot, text: str) -> None:
+    """From the spreadsheet: Query DB, the query typed whole (`/`), run; the
+    query screen stays, its list filled."""
+    await open_query_screen(pilot)
+    await pilot.press("slash")
+    await paste(pilot, text)
+    await pilot.press("enter")
+    await settle(pilot)

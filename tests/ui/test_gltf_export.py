@@ -10,7 +10,7 @@ from textual import events
 
 from sass_tui.db.engine.schema import connect
 from sass_tui.db.people.individual import fetch_individual
-from sass_tui.ui.query.query_builder import QueryPopup
+from sass_tui.ui.query.query_popup import QueryPopup
 from sass_tui.ui.query.query_screen import COMPLETE, QueryScreen
 
 pygltflib = pytest.importorskip("pygltflib")

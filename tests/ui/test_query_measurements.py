@@ -11,7 +11,7 @@ from _paths import ANSUR
 from _screen import message, settle
 from test_query_screen import choose, popup_labels, summary
 
-from sass_tui.ui.query.query_builder import MenuSearch, QueryPopup
+from sass_tui.ui.query.query_popup import MenuSearch, QueryPopup
 from sass_tui.ui.query.query_screen import ListSheet
 
 SIZE = (120, 40)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import csv
 
 import pytest
-from _screen import message, open_query_screen, paste, settle, wait_until
+from _screen import message, open_query_screen, paste, settle, slash_query, wait_until
 from hypothesis import given
 from hypothesis import strategies as st
 from textual import events
@@ -30,14 +30,6 @@ def tall_women_in_the_csv(ansur_dir) -> list[float]:
         return [float(r["stature"]) for r in csv.DictReader(file) if float(r["stature"]) > 1750]
 
 
-async def typed_query(pilot, text: str) -> None:
-    await open_query_screen(pilot)
-    await pilot.press("slash")
-    await paste(pilot, text)
-    await pilot.press("enter")
-    await settle(pilot)
-
-
 def rows(app) -> list[dict]:
     return app.screen.query_one(ListSheet).rows
 
@@ -46,7 +38,7 @@ def rows(app) -> list[dict]:
 def test_slash_runs_a_typed_query(drive, app_at, ansur_dir):
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):
-            await typed_query(pilot, TALL)
+            await slash_query(pilot, TALL)
             expected = len(tall_women_in_the_csv(ansur_dir))
             assert expected == 67  # the tall women
             assert message(app).startswith(f"Query execution is complete. {expected} people")
@@ -61,7 +53,7 @@ def test_slash_runs_a_typed_query(drive, app_at, ansur_dir):
 def test_down_enter_in_one_read_shows_every_value_of_the_next_person(drive, app_at, db):
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):
-            await typed_query(pilot, TALL)
+            await slash_query(pilot, TALL)
             second = rows(app)[1]
             app.post_message(events.Key("down", None))
             app.post_message(events.Key("enter", "\r"))
@@ -84,7 +76,7 @@ def test_down_enter_in_one_read_shows_every_value_of_the_next_person(drive, app_
 def test_sort_by_stature_largest_first_and_back(drive, app_at, ansur_dir):
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):
-            await typed_query(pilot, TALL)
+            await slash_query(pilot, TALL)
             await pilot.press("o")
             await paste(pilot, "-stature")
             await pilot.press("enter")
@@ -111,7 +103,7 @@ def test_sort_by_stature_largest_first_and_back(drive, app_at, ansur_dir):
 def test_jump_to_a_name_on_a_later_page(drive, app_at, db):
     async def scenario():
         async with app_at(NARROW, db=True) as (app, pilot):
-            await typed_query(pilot, TALL)
+            await slash_query(pilot, TALL)
             sheet = app.screen.query_one(ListSheet)
             assert sheet.total > sheet.page_size  # the person is on a later page
             lists = app.screen.lists

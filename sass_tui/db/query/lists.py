@@ -46,7 +46,13 @@ from sass_tui.db.populations.stats import EVERY_MEASURE, stats_table
 from sass_tui.db.populations.targets import SHIPPED, list_targets, weighted_count
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query import accelerator
-from sass_tui.db.query.query import LIST_FIELDS, CompiledQuery, compile_query, demonstration_hint
+from sass_tui.db.query.query import (
+    LIST_FIELDS,
+    CompiledQuery,
+    compile_query,
+    demonstration_hint,
+    field_column,
+)
 from sass_tui.model.errors import SassError
 
 if TYPE_CHECKING:
@@ -119,13 +125,39 @@ SORT_COLUMNS = {
 }
 
 
+def field_sql(key: str) -> str:
+    """The SQL of a list column (a SORT_COLUMNS key) or of any field of the
+    query language (`measure.poplitealheight`, `girth.neck.x`): the person's
+    value, NULL when there is none.  QueryError when `key` is neither; the
+    table and column names are the compiler's own, never the text typed."""
+    if key in SORT_COLUMNS:
+        return SORT_COLUMNS[key]
+    table, column, _unit = field_column(key)
+    if table == "person":
+        return f"p.{column}"
+    if table == "strength_q":
+        return f"sq.{column}"
+    return f"(SELECT f.{column} FROM {table} f WHERE f.id_num = p.id_num)"
+
+
 def order_by(which: str, sort: tuple[str, bool] | None) -> str:
-    """The ORDER BY of a list: its own order, or `sort` (column key,
-    descending) first; a key not in SORT_COLUMNS is a bug (KeyError)."""
+    """The ORDER BY of a list: its own order, or `sort` (a column key or a
+    field, descending) first."""
     if sort is None:
         return _ORDER[which]
-    column = SORT_COLUMNS[sort[0]]
+    column = field_sql(sort[0])
     return f"({column} IS NULL), {column}{' DESC' if sort[1] else ''}, {_ORDER[which]}"
+
+
+def shown_fields(compiled: CompiledQuery) -> tuple[str, ...]:
+    """The fields a query compares that the lists have no column for (its
+    measurements, segments, joints), in the query's order: the lists show
+    them beside the person's own."""
+    fields: dict[str, None] = {}
+    for comparison in compiled.tree.comparisons():
+        if comparison.table not in ("person", "strength_q"):
+            fields.setdefault(comparison.field, None)
+    return tuple(fields)
 
 
 def list_tables(dialect: str) -> tuple[str, str]:
@@ -178,6 +210,9 @@ class QueryLists:
         self._lock = threading.Lock()
         self._owner: int | None = None  # the thread holding _lock
         self.last_query: str | None = None
+        # The fields the last query compared that no list column shows
+        # (shown_fields): the lists' pages carry them too.
+        self.query_fields: tuple[str, ...] = ()
         # The last query compiled: the count, the hint and the weighted count of
         # one run of the query screen parse its text once.
         self._compiled: CompiledQuery | None = None
@@ -296,6 +331,7 @@ class QueryLists:
                 )
         self._counts[QUERY_LIST] = int(count)
         self.last_query = text
+        self.query_fields = shown_fields(compiled)
         return int(count)
 
     def _run_in_ranges(
@@ -326,14 +362,19 @@ class QueryLists:
         self, which: str, offset: int, limit: int = 25, sort: tuple[str, bool] | None = None
     ) -> list[dict[str, Any]]:
         """One page of a list, in its own order or sorted by `sort` (a
-        SORT_COLUMNS key, descending)."""
+        column key or a field, descending); each row has the list's columns
+        and the fields the last query compared (`query_fields`)."""
+        fields = self.query_fields
+        extra = "".join(f", {field_sql(field)}" for field in fields)
         sql = (
-            f"SELECT {_SELECT} FROM {_TABLES[which]} l JOIN person p ON p.id_num = l.id_num "
+            f"SELECT {_SELECT}{extra} FROM {_TABLES[which]} l "
+            f"JOIN person p ON p.id_num = l.id_num "
             f"LEFT JOIN strength_q sq ON sq.id_num = l.id_num "
             f"ORDER BY {order_by(which, sort)} LIMIT {self._mark} OFFSET {self._mark}"
         )
+        names = LIST_FIELDS + fields
         return [
-            dict(zip(LIST_FIELDS, row))
+            dict(zip(names, row, strict=True))
             for row in self._conn.execute(sql, (int(limit), int(offset)))
         ]
 
@@ -341,7 +382,8 @@ class QueryLists:
     def position(self, which: str, key: str, sort: tuple[str, bool] | None = None) -> int | None:
         """Where in a list (0-based, in the order shown) the person `key`
         names is: a database id, else a name in any case, else the first name
-        that starts with it.  None: nobody in the list."""
+        that starts with it, holds it as a word, or holds it at all.  None:
+        nobody in the list."""
         m = self._mark
         numbered = (
             f"SELECT l.id_num, lower(p.name) AS name, "
@@ -355,6 +397,9 @@ class QueryLists:
             (f"id_num = {m}", int(text) if text.isdigit() else -1),
             (f"name = {m}", text),
             (f"name LIKE {m} ESCAPE '\\'", escaped + "%"),
+            # A word of the name ("4216" of "virtual nhanes-2017-2020 F 4216"), then any part.
+            (f"(' ' || name || ' ') LIKE {m} ESCAPE '\\'", f"% {escaped} %"),
+            (f"name LIKE {m} ESCAPE '\\'", f"%{escaped}%"),
         ):
             row = self._conn.execute(
                 f"SELECT place FROM ({numbered}) t WHERE {condition} ORDER BY place LIMIT 1",
@@ -550,11 +595,10 @@ class QueryLists:
 
     # --- target populations and the real-people scope ----------------------
     @_serialised
-    def target_names(self) -> list[str]:
-        """The names of the target populations and virtual populations
-        (`virtual:NAME`) stored (`sass target`), and the shipped ones not made yet."""
-        stored = [t.name for t in list_targets(self._conn)]
-        return stored + [name for name in SHIPPED if name not in stored]
+    def read(self, reader: Callable[..., R], *args: Any) -> R:
+        """`reader(connection, *args)`, a read of the database (target_names,
+        sources, target_people, people_of below) in turn with the lists' work."""
+        return reader(self._conn, *args)
 
     @_serialised
     def weighted_count(self, query: str, target: str) -> WeightedCount:
@@ -575,3 +619,39 @@ class QueryLists:
         if self._compiled is None or self._compiled.text != text:
             self._compiled = compile_query(text)
         return self._compiled
+
+
+# --- reads of the database, run by QueryLists.read ------------------------------------
+def target_names(conn: Any) -> list[str]:
+    """The names of the target populations and virtual populations
+    (`virtual:NAME`) stored (`sass target`), and the shipped ones not made yet."""
+    stored = [t.name for t in list_targets(conn)]
+    return stored + [name for name in SHIPPED if name not in stored]
+
+
+def sources(conn: Any) -> list[str]:
+    """The sources of the database's people (ansur2, synthetic, an import's
+    label), sorted: what a query's source may be."""
+    rows = conn.execute(
+        "SELECT DISTINCT source FROM person WHERE source IS NOT NULL ORDER BY source"
+    )
+    return [str(row[0]) for row in rows]
+
+
+def target_people(conn: Any, name: str) -> tuple[int, ...]:
+    """The ids of the people a target (or virtual population) weights, made
+    first if it is a shipped one not made yet."""
+    weights = load_weights(conn, name)
+    return tuple(int(i) for i, w in zip(weights.ids, weights.weights, strict=True) if w > 0)
+
+
+def people_of(conn: Any, text: str) -> tuple[int, ...]:
+    """The ids of the people a query finds (its scope: real people unless it
+    names a source), the lists left as they are."""
+    compiled = compile_query(text)
+    where, params = compiled.sql(dialect_of(conn))
+    rows = conn.execute(
+        f"SELECT p.id_num FROM {compiled.from_clause()} WHERE {where} ORDER BY p.id_num",
+        params,
+    )
+    return tuple(int(row[0]) for row in rows)

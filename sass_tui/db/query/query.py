@@ -429,6 +429,17 @@ def resolve_field(names: list[str]) -> FieldInfo:
     return QUERY_TABLES[group][row], axis, unit, None
 
 
+def field_column(name: str) -> tuple[str, str, str | None]:
+    """The table, column and stored unit of the field `name` (any name
+    `sass query --fields` lists, e.g. measure.poplitealheight); QueryError
+    naming the field when it is none."""
+    try:
+        table, column, unit, _words = resolve_field(name.strip().split("."))
+    except _FieldError as exc:
+        raise QueryError(str(exc)) from None
+    return table, column, unit
+
+
 # Words people use for a field under another name.
 _FIELD_SYNONYMS = {
     "weight": "mass",

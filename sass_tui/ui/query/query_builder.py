@@ -25,11 +25,7 @@ from typing import Protocol
 
 from textual.app import ComposeResult
 from textual.binding import Binding
-from textual.containers import Vertical
-from textual.message import Message
 from textual.screen import ModalScreen
-from textual.widgets import Input, OptionList
-from textual.widgets.option_list import Option
 
 from sass_tui.db.query.query import QueryError, compile_query
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES
@@ -39,26 +35,10 @@ from sass_tui.model.vocabulary import PERSON_HANDEDNESS as HANDEDNESS
 from sass_tui.model.vocabulary import STRENGTH_TYPES
 from sass_tui.ui.base import SassScreen
 from sass_tui.ui.footer import Footer
+from sass_tui.ui.query.query_popup import PREVIOUS, Item, Menu, QueryPopup
 from sass_tui.ui.widgets import MessageLine
 
-PREVIOUS = "Previous Menu"
 VALUE_PROMPT = "Type in the constraint value:"
-
-
-@dataclass(frozen=True)
-class Item:
-    label: str
-    text: str  # the piece of query text this choice adds
-    next: str  # the menu (or "value", "done", ...) that follows
-
-
-@dataclass(frozen=True)
-class Menu:
-    key: str
-    title: str
-    items: tuple[Item, ...]
-    previous: bool = True  # every menu but the Query Menu has Previous Menu
-    searchable: bool = False  # too long for a plain menu: typing filters it
 
 
 class _Row(Protocol):
@@ -108,7 +88,7 @@ MENUS: dict[str, Menu] = {
                 Item("Mass (kg)", "mass", _NUMERIC),
                 Item("Stature (cm)", "stature", _NUMERIC),
                 Item("Age (years)", "age", _NUMERIC),
-                Item("Source", "source", _TEXT),
+                Item("Source", "source", "source"),
                 Item("Component", "component", _TEXT),
                 Item("Branch", "branch", _TEXT),
                 Item("Writing Preference", "writingpreference", "handedness"),
@@ -180,12 +160,28 @@ class Step:
     text: str
 
 
+TYPE_A_SOURCE = "Another: type it (= or ≠)"
+
+
+def sources_menu(sources: Iterable[str]) -> Menu:
+    """The Source menu: the sources the database holds, each a choice, and
+    a typed one (a source yet to be imported, or ≠)."""
+    items = tuple(
+        Item(source, f" = {quote}{source}{quote}", "conjunction")
+        for source in sources
+        for quote in ['"' if "'" in source else "'"]
+    )
+    return Menu("source", "Source", (*items, Item(TYPE_A_SOURCE, "", _TEXT)))
+
+
 @dataclass
 class QueryBuilder:
-    """Where the user is in the menus and the query built so far."""
+    """Where the user is in the menus and the query built so far; `sources`:
+    the sources of the database's people, offered by the Source menu."""
 
     steps: list[Step] = field(default_factory=list)
     current: str = "query"  # a menu key, or "value" while the constraint is typed
+    sources: tuple[str, ...] = ()
 
     @property
     def text(self) -> str:
@@ -193,6 +189,8 @@ class QueryBuilder:
 
     @property
     def menu(self) -> Menu | None:
+        if self.current == "source":
+            return sources_menu(self.sources)
         return MENUS.get(self.current)
 
     def choose(self, label: str) -> str:
@@ -260,101 +258,6 @@ class QueryBuilder:
                 break
             pieces.append(step.text)
         return "".join(reversed(pieces))
-
-
-class MenuSearch(Input):
-    """The filter above a searchable menu: typing narrows the items, the arrow
-    keys move in the menu below, Enter chooses the highlighted item."""
-
-    BINDINGS = [
-        Binding("down", "move(1)", show=False),
-        Binding("up", "move(-1)", show=False),
-    ]
-
-    def action_move(self, rows: int) -> None:
-        options = self.screen.query_one("#popup-options", OptionList)
-        if options.option_count:
-            current = options.highlighted if options.highlighted is not None else -1
-            options.highlighted = max(0, min(current + rows, options.option_count - 1))
-
-
-class QueryPopup(Vertical):
-    """One pop-up menu at a time: shows the menu its screen hands it and posts
-    `Chosen` for the item picked."""
-
-    class Chosen(Message):
-        def __init__(self, label: str, menu: str | None = None) -> None:
-            super().__init__()
-            self.label = label
-            self.menu = menu  # the menu it was chosen in (None: the current one)
-
-    def compose(self) -> ComposeResult:
-        search = MenuSearch(placeholder="type to filter", id="popup-search", compact=True)
-        search.display = False
-        yield search
-        yield OptionList(id="popup-options")
-
-    menu: Menu | None = None
-
-    @property
-    def menu_key(self) -> str | None:
-        return self.menu.key if self.menu is not None else None
-
-    @property
-    def options(self) -> OptionList:
-        return self.query_one("#popup-options", OptionList)
-
-    @property
-    def search(self) -> MenuSearch:
-        return self.query_one(MenuSearch)
-
-    def show_menu(self, menu: Menu) -> None:
-        self.menu = menu
-        self.border_title = menu.title
-        search = self.search
-        search.display = menu.searchable
-        self.set_class(menu.searchable, "-searchable")
-        with search.prevent(Input.Changed):
-            search.value = ""
-        self._fill(menu, "")
-        self.display = True
-        self.focus_menu()
-
-    def focus_menu(self) -> None:
-        """The keys go to the filter of a searchable menu, else to the menu."""
-        menu = self.menu
-        (self.search if menu is not None and menu.searchable else self.options).focus()
-
-    def _fill(self, menu: Menu, typed: str) -> None:
-        words = typed.lower().split()
-        labels = [
-            item.label for item in menu.items if all(word in item.label.lower() for word in words)
-        ] + ([PREVIOUS] if menu.previous else [])
-        options = self.options
-        options.clear_options()
-        options.add_options([Option(label, id=f"opt-{i}") for i, label in enumerate(labels)])
-        options.highlighted = 0
-
-    @property
-    def labels(self) -> list[str]:
-        options = self.options
-        return [str(options.get_option_at_index(i).prompt) for i in range(options.option_count)]
-
-    def on_input_changed(self, event: Input.Changed) -> None:
-        event.stop()
-        if self.menu is not None:
-            self._fill(self.menu, event.value)
-
-    def on_input_submitted(self, event: Input.Submitted) -> None:
-        event.stop()
-        options = self.options
-        if options.highlighted is not None and options.option_count:
-            prompt = options.get_option_at_index(options.highlighted).prompt
-            self.post_message(self.Chosen(str(prompt), self.menu_key))
-
-    def on_option_list_option_selected(self, event: OptionList.OptionSelected) -> None:
-        event.stop()
-        self.post_message(self.Chosen(str(event.option.prompt), self.menu_key))
 
 
 class QueryBuilderScreen(SassScreen, ModalScreen[str | None]):
@@ -480,4 +383,6 @@ class QueryBuilderScreen(SassScreen, ModalScreen[str | None]):
             self.builder.replace_text(text)
             self._show_current()
 
-        self.ask("Query:", edited, on_cancel=self._show_current, initial=self.builder.text)
+        self.ask(
+            "Query:", edited, on_cancel=self._show_current, initial=self.builder.text, cursor=-1
+        )

@@ -14,6 +14,7 @@ from textual.widget import Widget
 from textual.widgets import Static
 
 from sass_tui.db.query.lists import QUERY_LIST, SELECTED_LIST
+from sass_tui.db.query.query import field_column
 from sass_tui.model.text import printable
 
 LIST_TITLES = {QUERY_LIST: "Query List", SELECTED_LIST: "Selected List"}
@@ -68,6 +69,23 @@ def _cell(row: dict, key: str) -> str:
     return printable(value)  # names and sources come from files
 
 
+def query_field_columns(rows: list[dict]) -> list[tuple[str, str]]:
+    """(title, key) of each field a page's rows carry beyond the list's own
+    columns: the fields the last query compared (dotted names), titled by
+    their name without the group and their stored unit (`poplitealheight
+    mm`, `neck.x cm`)."""
+    if not rows:
+        return []
+    columns = []
+    for key in rows[0]:
+        if "." in key:
+            unit = field_column(key)[2]
+            name = key.partition(".")[2]
+            shown = unit.replace("N_m", "N·m") if unit else ""
+            columns.append((f"{name} {shown}".rstrip(), key))
+    return columns
+
+
 class ListSheet(Widget, can_focus=True):
     """One page of the query or selected list; only the page's rows are held."""
 
@@ -116,12 +134,20 @@ class ListSheet(Widget, can_focus=True):
         header = self.get_component_rich_style("listsheet--header")
         cursor = self.get_component_rich_style("listsheet--cursor")
         page_style = self.get_component_rich_style("listsheet--page")
-        # The name column is as wide as the longest name on the page: a name
-        # ("ANSUR II F 11533") is shown whole, never cut.
-        longest = max((len(_cell(row, "name")) for row in self.rows), default=0)
+        # The name and source columns are as wide as the longest on the page:
+        # a name ("ANSUR II F 11533") or a source ("virtual:nhanes-2017-2020")
+        # is shown whole, never cut.
+        longest = {
+            key: max((len(_cell(row, key)) for row in self.rows), default=0)
+            for key in ("name", "source")
+        }
         columns = [
-            (title, key, max(width, longest + 1) if key == "name" else width, align)
+            (title, key, max(width, longest[key] + 1) if key in longest else width, align)
             for title, key, width, align in LIST_COLUMNS
+        ]
+        # The fields the query compared (measure.poplitealheight), after the source.
+        columns[2:2] = [
+            (title, key, len(title) + 1, ">") for title, key in query_field_columns(self.rows)
         ]
         top = Text(no_wrap=True, overflow="crop")
         for title, key, width, align in columns:

@@ -5,6 +5,7 @@ column (`o`), jump to an id or a name (`j`), and the message log (`L`)."""
 from __future__ import annotations
 
 from sass_tui.db.query.lists import SORT_COLUMNS
+from sass_tui.db.query.query import QueryError, compile_query, field_column
 from sass_tui.ui.message_log import MessageLog
 from sass_tui.ui.query.person_screen import PersonScreen
 from sass_tui.ui.query.query_base import QueryScreenBase
@@ -17,8 +18,10 @@ SORT_TITLES = {key: title for title, key, _, _ in LIST_COLUMNS if key in SORT_CO
 
 def sort_column(text: str) -> tuple[str, bool] | None:
     """A sort asked for: `stature`, `-stature` (largest first), a column's
-    start (`stat`); None for the list's own order (empty).  SortError when
-    the words name no column, or more than one."""
+    start (`stat`), or any field `sass query --fields` lists
+    (`measure.poplitealheight`, or the measurement's name alone); None for
+    the list's own order (empty).  SortError when the words name no column
+    or field, or more than one column."""
     word = text.strip().lower()
     descending = word.startswith("-")
     word = word.lstrip("-+ ").replace(" ", "_")
@@ -28,11 +31,20 @@ def sort_column(text: str) -> tuple[str, bool] | None:
     exact = [key for key, spellings in names.items() if word in spellings]
     starts = [key for key, spellings in names.items() if any(s.startswith(word) for s in spellings)]
     found = exact or starts
-    if len(found) != 1:
-        choices = ", ".join(SORT_TITLES)
-        what = "more than one column" if found else "no column"
-        raise SortError(f"{text.strip()!r} names {what}; sort by one of {choices}")
-    return found[0], descending
+    if len(found) == 1:
+        return found[0], descending
+    for field in (word, f"measure.{word}"):
+        try:
+            field_column(field)
+        except QueryError:
+            continue
+        return field, descending
+    choices = ", ".join(SORT_TITLES)
+    what = "more than one column" if found else "no column or field"
+    raise SortError(
+        f"{text.strip()!r} names {what}; sort by one of {choices}, or a field "
+        "(sass query --fields), e.g. measure.poplitealheight"
+    )
 
 
 class SortError(ValueError):
@@ -45,11 +57,26 @@ class PeopleCommands(QueryScreenBase):
         if self.ready_lists() is None:
             return
         last = self.lists.last_query if self.lists is not None else None
-        self.ask("Query:", self._free_query, initial=last or "")
+        # The last query selected: typing replaces it, an arrow keeps it to edit.
+        self.ask("Query:", self._free_query, initial=last or "", cursor=-1)
 
     def _free_query(self, text: str) -> None:
         if not text.strip():
             self.say("No query given; nothing was run.")
+            return
+        try:
+            compile_query(text.strip())
+        except QueryError as exc:
+            # Asked again with the text as typed, the cursor where the error is.
+            reason = str(exc).partition(": ")[2] if exc.column else str(exc)
+            column = exc.column - 1 + len(text) - len(text.lstrip()) if exc.column else None
+            self.ask(
+                f"Not run: {reason} (at the cursor). Query:",
+                self._free_query,
+                initial=text,
+                kind="error",
+                cursor=column if column is not None else len(text),
+            )
             return
         self.start_query(text.strip())
 
@@ -74,7 +101,8 @@ class PeopleCommands(QueryScreenBase):
         """Sort the list by a column (-column: largest first)."""
         columns = ", ".join(title.split()[0].lower() for title in SORT_TITLES.values())
         self.ask(
-            f"Sort by ({columns}; -stature: largest first; empty: the list's order):",
+            f"Sort by ({columns}, or a field such as measure.poplitealheight; "
+            "-stature: largest first; empty: the list's order):",
             self._sort_by,
         )
 
@@ -94,7 +122,8 @@ class PeopleCommands(QueryScreenBase):
                 self.say(f"{LIST_TITLES[self.which]} in its own order.")
             else:
                 way = "largest first" if sort[1] else "smallest first"
-                self.say(f"{LIST_TITLES[self.which]} sorted by {SORT_TITLES[sort[0]]}, {way}.")
+                title = SORT_TITLES.get(sort[0], sort[0])
+                self.say(f"{LIST_TITLES[self.which]} sorted by {title}, {way}.")
 
         self._list_command(resort)
 

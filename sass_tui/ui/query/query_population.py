@@ -8,6 +8,9 @@ from pathlib import Path
 
 from textual import work
 
+from sass_tui.db.engine.addresses import is_url
+from sass_tui.db.engine.database import configured_target
+from sass_tui.db.engine.schema import default_db_path
 from sass_tui.db.populations.fit import DEFAULT_POPULATION
 from sass_tui.db.populations.population import people_words
 from sass_tui.db.populations.population_files import write_population_files
@@ -16,10 +19,17 @@ from sass_tui.db.query.lists import DB_ERRORS, QueryLists
 from sass_tui.model.names import GLOBAL, GROUP_TITLES
 from sass_tui.ui.progress import Work
 from sass_tui.ui.query.fit_screen import FitScreen
+from sass_tui.ui.query.population_picker import (
+    PopulationChoice,
+    PopulationPicker,
+    population_path,
+    read_choices,
+)
 from sass_tui.ui.query.query_base import WAIT, Busy, QueryScreenBase
 from sass_tui.ui.query.query_messages import PopulationMade
 from sass_tui.ui.query.stats_screen import StatsScreen
 from sass_tui.ui.query.target_picker import pick_target, weighted_words
+from sass_tui.ui.widgets import MessageLine
 
 
 class PopulationCommands(QueryScreenBase):
@@ -123,13 +133,79 @@ class PopulationCommands(QueryScreenBase):
             f"{GROUP_TITLES[group].lower()} {path}" for group, path in event.paths.items()
         )
         figure = session.population
-        self.say(
+        said = (
             f"Population of {people_words(event.result.counts)} written ({files}) and loaded: "
             f"Stature {figure.stature:.1f} cm and Mass {figure.mass:.1f} kg are theirs "
             f"(percentiles {figure.stature_percentile:g} and {figure.mass_percentile:g}); "
             "Create Figure now sizes this subpopulation; joint limits and strength keep "
             "the loaded population."
         )
+        if self._back_after_population:  # the picker: the sheet shows its figure
+            self._back_after_population = False
+            self.app.pop_screen()
+            refresh = getattr(self.app.screen, "refresh_screen", None)
+            if refresh is not None:
+                refresh()
+            self.app.screen.query_one(MessageLine).say(said)
+            return
+        self.say(said)
+
+    # --- the population picker: the sheet a population's figure in one step -----
+    # After the population is loaded, back to the spreadsheet (set by the picker).
+    _back_after_population = False
+
+    def action_pick_population(self) -> None:
+        """Population: U.S. civilians (virtual), a target, ANSUR II or the last query, as the sheet's figure."""
+        if self.running:
+            self.say(WAIT)
+            return
+        lists = self.ready_lists()
+        if lists is not None:
+            self.converse(self._pick_population(lists))
+
+    async def _pick_population(self, lists: QueryLists) -> None:
+        try:
+            choices = read_choices(lists)
+        except DB_ERRORS as exc:
+            self.complain(f"Cannot read the populations: {exc}")
+            return
+        choice = await self.choose(PopulationPicker(choices))
+        if choice is None:
+            self.say("Population unchanged.")
+            return
+        self._make_picked(lists, choice)
+
+    def _make_picked(self, lists: QueryLists, choice: PopulationChoice) -> None:
+        app = self.sass_app
+        database = configured_target(self.db_path) or default_db_path()
+        if app.workdir is not None or is_url(str(database)):
+            path = app.user_path(choice.file_name())  # a served session, or PostgreSQL
+        else:
+            path = population_path(Path(database), choice)
+        work = self.begin_work("Population")
+        self._back_after_population = True
+        self.say(f"Making the population {choice.label} (Esc cancels)...")
+        self.make_picked_population(lists, choice, path, work)
+
+    @work(thread=True, exclusive=True, group="query-db", exit_on_error=False)
+    def make_picked_population(
+        self, lists: QueryLists, choice: PopulationChoice, path: Path, work: Work
+    ) -> None:
+        try:
+            ids = choice.people(lists)
+            if not ids:
+                self.post_message(PopulationMade(error=f"{choice.label}: nobody in the database"))
+                return
+            result = lists.population_of(
+                ids, choice.title, work.report, work.cancel, target=choice.target
+            )
+            Steps(cancel=work.cancel, what="making the population").check()
+            path.parent.mkdir(parents=True, exist_ok=True)
+            paths = write_population_files(result, path)
+        except DB_ERRORS as exc:
+            self.post_message(PopulationMade(error=str(exc)))
+            return
+        self.post_message(PopulationMade(result, paths))
 
     # --- Fit Test ------------------------------------------------------------
     def action_fit_test(self) -> None:

@@ -21,10 +21,11 @@ from textual.binding import Binding
 from textual.containers import Horizontal
 
 from sass_tui.db.query.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
+from sass_tui.db.query.lists import sources as database_sources
 from sass_tui.model.text import printable
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import QUERY_BAR_AFTER, Work, WorkBar
-from sass_tui.ui.query.query_base import WAIT
+from sass_tui.ui.query.query_base import WAIT, Busy
 from sass_tui.ui.query.query_builder import QueryBuilder, QueryBuilderScreen
 from sass_tui.ui.query.query_commands import QUERY_COMMANDS, QueryCommandMenu
 from sass_tui.ui.query.query_input_db import InputDbCommands
@@ -61,6 +62,12 @@ class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
         ),
         Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         Binding("t", "choose_target", "Target", show=False, tooltip="Target population"),
+        Binding(
+            "P",
+            "pick_population",
+            show=False,
+            tooltip="Population: virtual U.S. civilians (NHANES), targets, ANSUR II",
+        ),
         Binding("q", "app.quit", "Quit"),
         Binding("escape", "cancel_work", "Cancel work", show=False),
         Binding("pagedown", "next_page", show=False),
@@ -225,7 +232,13 @@ class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
         if self.ready_lists() is None:
             return
         self.awaiting_build = True
-        self.builder = QueryBuilder()
+        sources: tuple[str, ...] = ()
+        try:
+            with self._database() as lists:
+                sources = tuple(lists.read(database_sources))
+        except (*DB_ERRORS, Busy):
+            pass  # the Source menu then takes a typed source only
+        self.builder = QueryBuilder(sources=sources)
         self.say(f"{BUILD_PROMPT} (or press b)")
 
     def action_build(self, x: int | None = None, y: int | None = None) -> None:

@@ -16,6 +16,7 @@ from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
 from sass_tui.db.query.lists import DB_ERRORS, QueryLists
+from sass_tui.db.query.lists import target_names as stored_target_names
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
 
 if TYPE_CHECKING:  # for the annotation only
@@ -26,7 +27,7 @@ NO_TARGET = "No target (unweighted)"
 
 def target_names(lists: QueryLists) -> list[str]:
     """The stored targets' names (a short read)."""
-    return lists.target_names()
+    return lists.read(stored_target_names)
 
 
 def weighted_words(name: str | None) -> str:

@@ -47,7 +47,8 @@ from sass_tui.ui.widgets import (
     MessageLine,
 )
 
-FIRST_MESSAGE = "Press left-mouse to select items."
+# The report's first message (§12.2), and the keys that do the same.
+FIRST_MESSAGE = "Press left-mouse to select items. The arrows and Enter too; ctrl+p: commands."
 GROUP_KEYS = ((GIRTH, "g"), (JOINT_LIMITS, "j"), (CENTER_OF_MASS, "m"), (STRENGTH, "s"))
 STRENGTH_NOT_LOADED = (
     "Strength data is not loaded; SASS runs without it (Create Figure leaves strength out)."
@@ -55,14 +56,22 @@ STRENGTH_NOT_LOADED = (
 # Lines of the screen that are not data rows: group bar 1, global panel and
 # command menu 6, the data section's border 1 and header 2, message line 1,
 # footer 1 (sass.tcss).  The page size follows from the terminal's height.
-FIXED_LINES = 1 + 6 + 1 + DataSheet.HEADER_LINES + 1 + 1
+TOP_LINES = 6
+FIXED_LINES = 1 + TOP_LINES + 1 + DataSheet.HEADER_LINES + 1 + 1
+# The strength rows kept beside the Task panel on a short terminal.
+MIN_STRENGTH_ROWS = 2
 # From this many columns the figure is drawn live beside the data, in a panel
-# FIGURE_PANEL_WIDTH wide (sass.tcss): the data keep their 80 columns.
+# 40 columns wide (sass.tcss) or, on a larger terminal, all the data leave
+# (DATA_WIDTH): the figure is drawn as large as the height allows.
 FIGURE_PANEL_MIN_WIDTH = 120
+FIGURE_PANEL_WIDTH = 40
+DATA_WIDTH = 84
 
 
 class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCommands):
     """Figure 4: group bar, global data | command menu, data section, message line."""
+
+    _group_said = ""  # the last "Girth: 25 rows, 3 pages." said (redone on a resize)
 
     # The footer at 80 columns (beside ctrl+p): n p f d|o u w b q, and r on
     # the strength page; the menu buttons show the rest.  A short footer label
@@ -88,6 +97,12 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
         Binding("G", "export_gltf", "glTF", tooltip="Export glTF", show=False),
         Binding("t", "strength_curve", show=False),
         Binding("T", "task", show=False, tooltip="Task panel"),
+        Binding(
+            "P",
+            "population",
+            show=False,
+            tooltip="Population: virtual U.S. civilians (NHANES), targets, ANSUR II",
+        ),
         Binding("M", "assumed_modifiers", show=False),
         *(
             Binding(spec.key, spec.action, spec.footer)
@@ -147,8 +162,11 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
         self.sass_app.first_screen_drawn()
 
     def on_resize(self, event: events.Resize) -> None:
+        said = self._group_said
         self._set_page_rows(event.size.height)
         self._place_figure_panel(event.size.width)
+        if said and self.message_line.showing(said):
+            self._say_group_shown()  # its page count is the new size's
 
     def on_screen_suspend(self) -> None:
         self._covered = True
@@ -170,13 +188,25 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
             self.query_one("#body", Horizontal).mount(panel)
         if panel is not None:
             panel.display = wide
+            panel.styles.width = max(FIGURE_PANEL_WIDTH, width - DATA_WIDTH)
             if wide and (new or not shown):  # coming on the screen; edits redraw it
                 self.redraw_figure_panel()
 
     def _set_page_rows(self, height: int) -> None:
         self.sheet.page_rows = height - FIXED_LINES
-        task = TASK_PANEL_LINES if self.task_shown else 0
-        self.strength_page.page_rows = max(1, height - FIXED_LINES - task)
+        task_shown = self.task_shown and self.data_group == STRENGTH
+        task = TASK_PANEL_LINES if task_shown else 0
+        # A terminal too short for the page and the Task panel (80x24): the
+        # global data and the menu make room while the panel is shown, so that
+        # the page keeps its rows beside the panel's answer.
+        short = task_shown and height - FIXED_LINES - task < MIN_STRENGTH_ROWS
+        self.query_one("#top").display = not short
+        fixed = FIXED_LINES - (TOP_LINES if short else 0)
+        panel = self.task_panel
+        if panel is not None:  # the panel gives up its last lines (a note) before the page its rows
+            task = min(task, height - fixed - MIN_STRENGTH_ROWS) if short else task
+            panel.styles.height = task if short else None
+        self.strength_page.page_rows = max(1, height - fixed - task)
 
     # --- the strength page's Task panel (spreadsheet_task.py) --------------------
     async def action_task(self) -> None:
@@ -283,6 +313,7 @@ class SpreadsheetScreen(EditCommands, WorksheetCommands, PeopleCommands, TaskCom
             message += f" {strength.side.capitalize()} limb: {strength.data.label}."
         elif self.data_group == STRENGTH and self.session.strength_sheets.missing:
             message += f" {self.session.strength_sheets.missing}"
+        self._group_said = message
         self.say(message)
 
     # --- commands ---------------------------------------------------------------

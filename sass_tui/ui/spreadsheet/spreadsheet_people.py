@@ -42,6 +42,17 @@ class PeopleCommands(SheetScreenBase):
         """Open the database query spreadsheet."""
         self.sass_app.open_query_screen()
 
+    def action_population(self) -> None:
+        """Population: U.S. civilians (virtual), a target, ANSUR II or a query, as the sheet's figure."""
+        if self.session.person is not None:
+            self.say(self.why_not("query") or "Disp. Pop. (o) first.")
+            return
+        self.sass_app.open_query_screen()
+        opened = self.app.screen
+        when_ready = getattr(opened, "run_when_ready", None)
+        if when_ready is not None:
+            when_ready("pick_population")  # once the database is open (built on first use)
+
     def action_see_figure(self) -> None:
         """Open the figure view: the figure drawn front and side, to scale."""
         self.sass_app.open_figure_screen()

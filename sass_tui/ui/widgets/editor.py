@@ -91,6 +91,11 @@ class EditorKeys:
         """Put the cursor on `cell` (one that `cell_at` gave)."""
         raise NotImplementedError
 
+    def starts_value(self, character: str) -> bool:
+        """Whether typing `character` on the cursor's cell starts its value
+        (a number's first character; a word cell's any letter)."""
+        return character in NUMBER_START
+
     def request_edit(self, message: Message) -> None:
         self._typing_ahead = True
         self.post_message(message)  # type: ignore[attr-defined]
@@ -109,7 +114,7 @@ class EditorKeys:
             event.stop()
             event.prevent_default()
             self.post_message(TypedAhead(event.key, event.character))  # type: ignore[attr-defined]
-        elif event.character and event.character in NUMBER_START:
+        elif event.character and self.starts_value(event.character):
             event.stop()
             event.prevent_default()
             self.start_typing(event.character)

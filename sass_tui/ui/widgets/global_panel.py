@@ -14,6 +14,7 @@ from textual.widget import Widget
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import GIRTH, STRENGTH
 from sass_tui.model.text import printable
+from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS, HANDEDNESS, STRENGTH_TYPES
 from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 from sass_tui.ui.widgets.formats import (
     format_percentile,
@@ -45,6 +46,14 @@ GLOBAL_CELLS: tuple[GlobalCell, ...] = (
     GlobalCell("fatigue_level", "Fatigue level", 5, 2, "Fatigue"),
 )
 GLOBAL_ROWS = 6
+# The cells whose value is a word, and its words: the first letter of one,
+# typed on the cell, starts its value (any other letter is a command).
+WORD_FIELDS: dict[str, tuple[str, ...]] = {
+    "figure_type": FIGURE_TYPES,
+    "gender": GENDERS,
+    "strength_type": STRENGTH_TYPES,
+    "handedness": HANDEDNESS,
+}
 # Column widths: left label, value, percentile, gap, right label, right value.
 _LABEL_A, _SLOT0, _SLOT1, _GAP = 12, 9, 8, 1
 _LABEL_B, _SHORT_LABEL_B = 15, 10
@@ -190,6 +199,14 @@ class GlobalPanel(EditorKeys, Widget, can_focus=True):
             if 0 <= index < len(same_row):
                 self.cursor = same_row[index]
         self.refresh()
+
+    def starts_value(self, character: str) -> bool:
+        """On a word cell (figure type, gender, strength type, handedness) the
+        first letter of one of its words starts the value: `female` typed on
+        Gender is its value, not f's command."""
+        words = WORD_FIELDS.get(self.chosen().field, ())
+        starts = {word[0] for word in words} | {word[0].upper() for word in words}
+        return character in starts or super().starts_value(character)
 
     def edit_request(self, initial: str) -> Message:
         return self.EditRequested(self.cursor.field, initial)

@@ -8,21 +8,38 @@ from collections.abc import AsyncIterator, Callable
 from contextlib import asynccontextmanager
 
 from rich.text import Text
+from textual import events
 from textual.binding import Binding
 from textual.containers import Horizontal
 from textual.message import Message
 from textual.widget import Widget
 from textual.widgets import Input, Label
+from textual.widgets.input import Selection
 
 from sass_tui.model.errors import SassError
+from sass_tui.ui.textual_api import forward_event
+from sass_tui.ui.widgets.editor import run_own_binding
 from sass_tui.ui.widgets.formats import printable_lines
 
 
 class AnswerInput(Input):
+    """The answer typed on the message line.
+
+    Its keys apply in the order they came, also when they arrive in one read
+    (a paste, a burst): its own bindings (Enter, Escape, the arrows) run as
+    the key is handled, not once it has bubbled up to the app, which would be
+    after the characters that followed it.  From an Enter or Escape until the
+    line has handled that answer (`closing`), the keys that come are not this
+    answer's: the line holds them and passes them on, in order, to whatever
+    has the keys after the answer (the sheet, a follow-up question)."""
+
     BINDINGS = [
         Binding("escape", "cancel", "Cancel", show=False),
         Binding("tab", "complete", "Complete", show=False),
     ]
+
+    # An Enter or Escape given; the line has not handled the answer yet.
+    closing = False
 
     class Cancelled(Message):
         pass
@@ -30,7 +47,35 @@ class AnswerInput(Input):
     class CompletionAsked(Message):
         pass
 
+    @property
+    def line(self) -> MessageLine:
+        parent = self.parent
+        assert isinstance(parent, MessageLine)
+        return parent
+
+    # Textual runs each class's handler in turn (Input's after these) unless
+    # one prevents the default.
+    async def _on_key(self, event: events.Key) -> None:
+        if self.closing or not self.display:
+            event.stop()
+            event.prevent_default()
+            self.line.later(event.key, event.character)
+        elif await run_own_binding(self, event.key):
+            event.stop()
+            event.prevent_default()
+
+    def _on_paste(self, event: events.Paste) -> None:
+        if self.closing or not self.display:
+            event.stop()
+            event.prevent_default()
+            self.line.later("paste", None, event.text)
+
+    async def action_submit(self) -> None:
+        self.closing = True
+        await super().action_submit()
+
     def action_cancel(self) -> None:
+        self.closing = True
         self.post_message(self.Cancelled())
 
     def action_complete(self) -> None:
@@ -40,6 +85,7 @@ class AnswerInput(Input):
     def submit(self) -> None:
         """Enter, from code that cannot await: what Input.action_submit (a
         coroutine) does for an input without validators."""
+        self.closing = True
         self.post_message(self.Submitted(self, self.value))
 
 
@@ -83,6 +129,9 @@ class MessageLine(Horizontal):
         self._held = False
         self._future: asyncio.Future[str | None] | None = None
         self._early: list[str | None] = []
+        # Keys that came after an Enter or Escape, before its answer was
+        # handled: (key, character, pasted text), passed on afterwards.
+        self._later: list[tuple[str, str | None, str]] = []
         # What was said, oldest first: one line is cut at the terminal's width,
         # the message log (`l`) shows it whole.
         self.history: list[tuple[str, str]] = []
@@ -134,10 +183,21 @@ class MessageLine(Horizontal):
         on_cancel: Callable[[], None] | None = None,
         kind: str = "prompt",
         complete: Completer | None = None,
+        cursor: int | None = None,
     ) -> None:
-        """`complete`: what Tab completes the answer from (None: nothing)."""
+        """`complete`: what Tab completes the answer from (None: nothing).
+        `initial` is typed already (the cursor after it); with `cursor`, a
+        text offered to edit: selected (-1), so that typing replaces it and
+        an arrow keeps it, or with the cursor at that column (an error's)."""
         self._on_answer, self._on_cancel = on_answer, on_cancel
         self._open(prompt, initial, kind, complete)
+        answer = self.answer
+        if cursor is None or answer.value != initial:
+            return  # what was typed ahead stays as typed
+        if cursor < 0:
+            answer.selection = Selection(0, len(initial))
+        else:
+            answer.cursor_position = min(cursor, len(initial))
 
     def _open(
         self, prompt: str, initial: str, kind: str, complete: Completer | None = None
@@ -182,6 +242,7 @@ class MessageLine(Horizontal):
             if self.is_attached:
                 self._close()
                 self.post_message(self.Answered())
+                self.release_keys()
 
     async def answer_to(
         self,
@@ -197,6 +258,7 @@ class MessageLine(Horizontal):
         future: asyncio.Future[str | None] = asyncio.get_running_loop().create_future()
         self._future = future
         self._open(prompt, initial, kind, complete)
+        self.release_keys()  # what was typed after the last answer is this one's
         try:
             return await future
         finally:
@@ -220,19 +282,61 @@ class MessageLine(Horizontal):
 
     def type_ahead(self, key: str, character: str | None, text: str = "") -> None:
         """A key that reached another widget before the answer had the focus."""
-        if not self.prompting:
-            return
         answer = self.answer
-        if text:
-            answer.insert_text_at_cursor(text)
-        elif key == "enter":
+        if answer.closing or not self.prompting:
+            self.later(key, character, text)
+            return
+        if key == "enter":
             answer.submit()
         elif key == "escape":
             answer.action_cancel()
         elif key == "backspace":
             answer.action_delete_left()
-        elif character and character.isprintable():
-            answer.insert_text_at_cursor(character)
+        elif text or (character and character.isprintable()):
+            typed = text or character or ""
+            if answer.selection.is_empty:
+                answer.insert_text_at_cursor(typed)
+            else:  # typing replaces what is selected, as in the answer itself
+                answer.replace(typed, *answer.selection)
+
+    def later(self, key: str, character: str | None, text: str = "") -> None:
+        """A key that is not the open answer's: held while an answer is being
+        handled, else given now to what has the keys (never dropped)."""
+        if self.answer.closing:
+            self._later.append((key, character, text))
+        else:
+            self._pass_on(key, character, text)
+
+    def _pass_on(self, key: str, character: str | None, text: str) -> None:
+        target = self.app.focused
+        if target is None or (target is self.answer and not self.answer.display):
+            target = self.app.screen
+        forward_event(target, events.Paste(text) if text else events.Key(key, character))
+
+    def _clear_stale_prompt(self, prompt: str) -> None:
+        """The question answered still on the line (its handler said nothing,
+        or went to another screen): it is no longer current."""
+        if not self.answer.display and self.showing(prompt + " "):
+            label = self.query_one("#message", Label)
+            label.update("")
+            for name in ("info", "error", "warning", "prompt"):
+                label.set_class(False, f"-{name}")
+
+    def _answered(self) -> None:
+        """An answer or cancel handled: the line says so, and the keys held
+        meanwhile go on to what has the keys now.  In a conversation they
+        wait for its next question, or its end: the work between two
+        questions may take a while (a query, a file)."""
+        self.post_message(self.Answered())
+        if not self._held:
+            self.release_keys()
+
+    def release_keys(self) -> None:
+        """The keys held since the last answer, in order, to what has the keys."""
+        self.answer.closing = False
+        held, self._later = self._later, []
+        for key, character, text in held:
+            self._pass_on(key, character, text)
 
     def _close(self) -> tuple[Handler | None, Callable[[], None] | None]:
         handlers = self._on_answer, self._on_cancel
@@ -256,12 +360,14 @@ class MessageLine(Horizontal):
         event.stop()
         if self._held:
             self._settle(event.value)
-            self.post_message(self.Answered())
+            self._answered()
             return
+        prompt = self._prompt
         on_answer, _ = self._close()
         if on_answer is not None:
             self._run(lambda: on_answer(event.value))
-        self.post_message(self.Answered())
+        self._clear_stale_prompt(prompt)
+        self._answered()
 
     def on_answer_input_completion_asked(self, event: AnswerInput.CompletionAsked) -> None:
         """Tab: the answer goes on as far as every completion agrees; the
@@ -291,11 +397,11 @@ class MessageLine(Horizontal):
         event.stop()
         if self._held:
             self._settle(None)
-            self.post_message(self.Answered())
+            self._answered()
             return
         _, on_cancel = self._close()
         if on_cancel is not None:
             self._run(on_cancel)
         else:
             self.say(CANCELLED)
-        self.post_message(self.Answered())
+        self._answered()
