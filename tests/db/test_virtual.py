@@ -20,19 +20,14 @@ from sass_tui.db.engine.dialect import mark_of
 from sass_tui.db.people.values import load_values
 from sass_tui.db.populations.targets import SHIPPED, list_targets, load_target
 from sass_tui.db.populations.virtual import drop_virtual
-from tests._paths import SHARED
+from tests._paths import nhanes_lines
 
-NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
 SOURCE = 'source = "virtual:nhanes-2017-2020"'
 
 
 def nhanes(gender_code: str, *columns: str) -> tuple[np.ndarray, np.ndarray]:
     """Adults 20+ of one gender with a height and a weight: the columns and WTMECPRP."""
-    lines = [
-        line
-        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
+    lines = nhanes_lines()
     rows = [
         r
         for r in csv.DictReader(lines)
