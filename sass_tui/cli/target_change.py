@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import gzip
+import io
 import sys
 from typing import TYPE_CHECKING, TextIO
 
@@ -31,7 +32,7 @@ from sass_tui.db.populations.virtual import drop_virtual, make_virtual, store_vi
 from sass_tui.db.query.query import parse_option
 from sass_tui.model.datasets import NHANES, NHANES_NAME, shipped_text
 from sass_tui.model.errors import SassError
-from sass_tui.model.files.paths import regular_file
+from sass_tui.model.files.paths import LARGEST_PEOPLE_TABLE, regular_file
 from sass_tui.model.files.sample_file import read_sample
 from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.population.target_sample import SampleError, is_weighting_field
@@ -150,14 +151,21 @@ def _make(args: argparse.Namespace) -> int:
 
 def sample_text(name: str) -> str:
     """The text of a sample: the shipped NHANES adults by name, a .gz file
-    decompressed, else the file."""
+    decompressed, else the file; at most LARGEST_PEOPLE_TABLE bytes, a .gz
+    file by what it expands to (a 1 MB file held a 1 GiB field)."""
     if name == NHANES_NAME:
         return shipped_text(NHANES)
-    path = regular_file(name)
+    path = regular_file(name, largest=LARGEST_PEOPLE_TABLE, kind="a sample")
     try:
         data = path.read_bytes()
         if name.endswith(".gz"):
-            data = gzip.decompress(data)
+            with gzip.GzipFile(fileobj=io.BytesIO(data)) as expanding:
+                data = expanding.read(LARGEST_PEOPLE_TABLE + 1)
+            if len(data) > LARGEST_PEOPLE_TABLE:
+                raise SampleError(
+                    f"{name}: expands to more than {LARGEST_PEOPLE_TABLE // 2**20} MB; "
+                    "a sample is at most that"
+                )
         return data.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise SampleError(f"{name}: not UTF-8 text ({exc.reason})") from None

@@ -3,7 +3,9 @@ do not go together."""
 
 from __future__ import annotations
 
-from sass_tui.cli import main
+import gzip
+
+from sass_tui.cli import main, target_change
 from sass_tui.db.populations.targets import SHIPPED
 
 
@@ -24,3 +26,19 @@ def test_dropping_a_target_that_is_not_stored_says_so(people_db, capsys):
 def test_list_takes_no_other_argument(people_db, capsys):
     assert main(["--db", str(people_db), "target", "--list", "NAME"]) == 2
     assert "--list and --drop NAME take no other arguments" in capsys.readouterr().err
+
+
+def test_a_sample_is_bounded_by_what_it_expands_to(people_db, tmp_path, monkeypatch, capsys):
+    """A .csv.gz is read only as far as the largest sample: a 1 MB file held a
+    1 GiB field.  (The bound made small here: the file need not be large.)"""
+    monkeypatch.setattr(target_change, "LARGEST_PEOPLE_TABLE", 1000)
+    bomb = tmp_path / "s.csv.gz"
+    bomb.write_bytes(gzip.compress(b"stature,mass\n" + b"170,70\n" * 1000))
+    plain = tmp_path / "s.csv"
+    plain.write_bytes(b"stature,mass\n" + b"170,70\n" * 1000)
+    for sample, says in ((bomb, "expands to more than"), (plain, "")):
+        argv = ["--db", str(people_db), "target", "t", "--sample", str(sample), "--gender", "male"]
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert err.startswith("sass target: error:") and str(sample) in err and says in err
+        assert len(err.splitlines()) == 1
