@@ -42,3 +42,28 @@ def test_a_sample_is_bounded_by_what_it_expands_to(people_db, tmp_path, monkeypa
         err = capsys.readouterr().err
         assert err.startswith("sass target: error:") and str(sample) in err and says in err
         assert len(err.splitlines()) == 1
+
+
+def test_names_that_impersonate_a_virtual_population_are_refused(people_db, tmp_path, capsys):
+    """`virtual:foo` named a target of real people that was then listed as
+    VIRTUAL; `foo --virtual` replaced `virtual:foo` without --force."""
+    sample = tmp_path / "s.csv"
+    sample.write_text("stature,mass,gender\n170,70,male\n160,60,female\n")
+    argv = ["--db", str(people_db), "target", "virtual:foo", "--sample", str(sample)]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert "'virtual:' begins the name of a virtual population" in err
+    assert main(["--db", str(people_db), "target", "--list"]) == 0
+    assert "virtual:foo" not in capsys.readouterr().out
+
+
+def test_virtual_people_are_bounded_before_the_sample_is_read(
+    people_db, tmp_path, monkeypatch, capsys
+):
+    monkeypatch.setattr(target_change, "MAX_VIRTUAL_PEOPLE", 2)
+    sample = tmp_path / "s.csv"
+    sample.write_text("stature,mass,gender\n170,70,male\n160,60,female\n\n165,65,female\n")
+    argv = ["--db", str(people_db), "target", "foo", "--sample", str(sample), "--virtual"]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert f"{sample}: 3 rows; --virtual makes one person a row, at most 2" in err

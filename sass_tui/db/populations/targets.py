@@ -174,6 +174,15 @@ def check_name(name: str) -> str:
             "without spaces at either end",
             where=printable(name),
         )
+    if name.startswith(
+        VIRTUAL_PREFIX
+    ):  # the virtual population's own name: a target is real people
+        raise TargetError(
+            f"target name {printable(name)!r}: {VIRTUAL_PREFIX!r} begins the name of a virtual "
+            f"population (`sass target NAME --virtual` makes {VIRTUAL_PREFIX}NAME); name the "
+            "target without it",
+            where=printable(name),
+        )
     return name
 
 
