@@ -19,6 +19,7 @@ from sass_tui.model.files.worksheet import (
     apply_strength,
     parse_worksheet,
     read_worksheet,
+    read_worksheet_and_strength,
     worksheet_text,
 )
 from sass_tui.model.names import AXES_OF, CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
@@ -274,3 +275,30 @@ def test_numbers_json_allows_but_no_figure_has_are_refused(swap, expected):
     assert str(caught.value).startswith("day.json")
     assert expected in str(caught.value)
     assert len(str(caught.value)) < 200
+
+
+@pytest.mark.parametrize(
+    ("named", "refused"),
+    [
+        ("/etc/hostname", "give a name inside"),
+        ("../../etc/hostname", "'..' is refused"),
+        ("strength.dat", None),
+        ("{workdir}/strength.dat", None),
+    ],
+)
+def test_a_served_worksheet_reads_only_files_inside_the_workdir(tmp_path, named, refused):
+    """A worksheet handed to a served session named /etc/shadow as its
+    strength file, and its first word was shown to the web user."""
+    workdir = tmp_path / "work"
+    workdir.mkdir()
+    shipped = read_strength_file()
+    (workdir / "strength.dat").write_text(open(shipped.path, encoding="utf-8").read())
+    document = json.loads(saved_text())
+    document["strength"]["file"] = named.format(workdir=workdir)
+    sheet = workdir / "w.json"
+    sheet.write_text(json.dumps(document))
+    _, strength, unread = read_worksheet_and_strength(sheet, workdir)
+    if refused is None:
+        assert unread is None and strength is not None
+    else:
+        assert strength is None and refused in str(unread) and str(workdir) in str(unread)

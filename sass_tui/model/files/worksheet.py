@@ -32,9 +32,10 @@ from typing import Any
 
 from sass_tui.model.body.figure import Figure, GroupState
 from sass_tui.model.body.human import MAX_STATURE_CM, not_human
+from sass_tui.model.datasets import is_shipped
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.gltf import sass_version
-from sass_tui.model.files.paths import PathError, read_user_text
+from sass_tui.model.files.paths import PathError, read_user_text, regular_file
 from sass_tui.model.files.popfile import Cells, PopulationData
 from sass_tui.model.names import AXES_OF, GLOBAL, GROUPS, ROWS, STRENGTH
 from sass_tui.model.session import Session
@@ -447,29 +448,53 @@ def apply_strength(settings: StrengthSettings, sheet: StrengthSheet) -> None:
         sheet.angles[row] = angles
 
 
+def named_file(text: str | Path, workdir: Path | None = None) -> Path:
+    """A file a worksheet names (its strength file), as the path to read.
+    In a served session (`workdir`) it must lie inside the workdir, as a
+    typed name must (paths.inside): a worksheet handed in named /etc/shadow
+    and ../../etc/hostname, and their first word was shown to the web
+    user.  A name saved there absolute is taken relative to the workdir; a
+    shipped data set (datasets/) is read wherever sass is installed."""
+    if workdir is not None and is_shipped(text):
+        return Path(text)
+    if workdir is not None and Path(text).is_absolute():
+        try:
+            text = Path(text).relative_to(workdir.resolve())
+        except ValueError:
+            pass  # refused by `inside`, naming the workdir
+    return regular_file(text, workdir)
+
+
 def read_worksheet_and_strength(
-    path: str | Path,
+    path: str | Path, workdir: Path | None = None
 ) -> tuple[Worksheet, StrengthData | None, SassError | OSError | None]:
-    """A worksheet and the strength file it names: that file's data, or None
-    and why it could not be read (a file moved since the worksheet was saved
-    leaves the strength page as it is; the worksheet still opens)."""
+    """A worksheet and the strength file it names (inside `workdir`, when
+    served): that file's data, or None and why it could not be read (a file
+    moved since the worksheet was saved leaves the strength page as it is;
+    the worksheet still opens)."""
     worksheet = read_worksheet(path)
     if worksheet.strength is None:
         return worksheet, None, None
     try:
-        return worksheet, read_strength_file(worksheet.strength.path), None
+        return worksheet, read_strength_file(named_file(worksheet.strength.path, workdir)), None
     except (SassError, OSError) as exc:
         return worksheet, None, exc
 
 
 def population_strength_sheet(
-    path: str | Path | None, figure: Figure, settings: StrengthSettings | None
+    path: str | Path | None,
+    figure: Figure,
+    settings: StrengthSettings | None,
+    workdir: Path | None = None,
 ) -> StrengthSheet:
     """The population's strength sheet from the strength file `path` (None:
-    the shipped datasets/strength.dat), set as a worksheet saved it, its
-    equations fitted now rather than on the first look at the page (a gender
-    the file has no data for is said when the page is shown)."""
-    sheet = StrengthSheet(read_strength_file(path), figure)
+    the shipped datasets/strength.dat; inside `workdir` when served), set as
+    a worksheet saved it, its equations fitted now rather than on the first
+    look at the page (a gender the file has no data for is said when the
+    page is shown)."""
+    sheet = StrengthSheet(
+        read_strength_file(None if path is None else named_file(path, workdir)), figure
+    )
     if settings is not None:
         apply_strength(settings, sheet)
     try:
