@@ -35,7 +35,7 @@ from sass_tui.model.body.human import MAX_STATURE_CM, not_human
 from sass_tui.model.datasets import is_shipped
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.gltf import sass_version
-from sass_tui.model.files.paths import PathError, read_user_text, regular_file
+from sass_tui.model.files.paths import PathError, inside, read_user_text
 from sass_tui.model.files.popfile import Cells, PopulationData
 from sass_tui.model.names import AXES_OF, GLOBAL, GROUPS, ROWS, STRENGTH
 from sass_tui.model.session import Session
@@ -455,14 +455,14 @@ def named_file(text: str | Path, workdir: Path | None = None) -> Path:
     and ../../etc/hostname, and their first word was shown to the web
     user.  A name saved there absolute is taken relative to the workdir; a
     shipped data set (datasets/) is read wherever sass is installed."""
-    if workdir is not None and is_shipped(text):
+    if workdir is None or is_shipped(text):
         return Path(text)
-    if workdir is not None and Path(text).is_absolute():
+    if Path(text).is_absolute():
         try:
             text = Path(text).relative_to(workdir.resolve())
         except ValueError:
             pass  # refused by `inside`, naming the workdir
-    return regular_file(text, workdir)
+    return inside(workdir, text)
 
 
 def read_worksheet_and_strength(
