@@ -253,7 +253,7 @@ def make_target(
         gender=gender,
         population=chosen.text,
         fields=tuple(sample.fields),
-        sample=sample_name,
+        sample=printable(sample_name),  # a file's name may hold ESC: shown by every verb
         sample_rows=sum(w.sample_rows for w in weightings.values()),
         people=people,
         effective_n=kish_effective_n(weights),
@@ -349,18 +349,22 @@ _COLUMNS = (
 
 def _target(row: Sequence[Any]) -> Target:
     name, gender, population, fields, sample, rows, people, effective_n, summary, created = row
+    # Every text made printable here, where a target is read: a shared
+    # PostgreSQL database or an older file may hold a sample file's name with
+    # ESC and BEL, which target --list, stats, task, fit, query --count,
+    # population (and its .dat files) and the Stats screen printed raw.
     return Target(
-        name=name,
-        gender=gender,
-        population=population,
-        fields=tuple(json.loads(fields)),
-        sample=sample,
+        name=printable(name),
+        gender=printable(gender),
+        population=printable(population),
+        fields=tuple(printable(f) for f in json.loads(fields)),
+        sample=printable(sample),
         sample_rows=int(rows),
         people=int(people),
         effective_n=float(effective_n),
         summary=json.loads(summary),
-        created=created,
-        weighted_by=json.loads(summary).get(WEIGHTED_BY),
+        created=printable(created),
+        weighted_by=None if (by := json.loads(summary).get(WEIGHTED_BY)) is None else printable(by),
     )
 
 

@@ -48,6 +48,7 @@ from sass_tui.model.population.percentile import (
     grid_at,
     plausible_range,
 )
+from sass_tui.model.text import printable
 from sass_tui.model.units import GROUP_UNITS
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS, HANDEDNESS, STRENGTH_TYPES
 
@@ -235,6 +236,13 @@ class Figure:
         survey's names: model/body/landmarks.py)."""
         arrays = _arrays()
         gender = _check_choice(gender, GENDERS, "gender")
+        # A stored name may hold ESC or BEL (a shared database, an older file):
+        # it goes on into task and strength output, .fig comments and X3D.
+        name = printable(name)
+        for what, size in (("stature", stature), ("mass", mass)):
+            refused = None if math.isnan(size) else not_human(what, size)
+            if refused:  # a stored stature of 1e6 cm made an export of 4.5 GB
+                raise FigureError(f"{name}: {refused}")
         person = Figure(
             gender=gender,
             figure_type=self.figure_type,
