@@ -271,6 +271,8 @@ def _gender_shares(sample: Sample, genders: tuple[str, ...]) -> dict[str, float]
     of = np.array(sample.genders, dtype=object)
     w = sample.row_weights
     total = float(w.sum())
+    if not total > 0:  # a header alone, or blank lines
+        raise TargetError("the sample has no rows; a target of both genders needs both")
     shares = {g: float(w[of == g].sum()) / total for g in genders}
     empty = [g for g, share in shares.items() if share <= 0]
     if empty:

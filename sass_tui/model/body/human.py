@@ -9,7 +9,8 @@ percentile a value stands with a warning (`Figure.implausible_range`).
 The ranges: statures 50-300 cm (a newborn to beyond the tallest recorded
 man, 272 cm); masses above 0 and at most 500 kg (the database importers'
 ceiling, model/files and db/people); a joint at most 3 m from the body's
-root (no limb reaches farther; a posture file's 1e15 m elbow is refused).
+root joint (no limb reaches farther; a posture file's elbow at 1e15 m gave
+a negative strength).
 """
 
 from __future__ import annotations
@@ -40,12 +41,12 @@ def not_human(name: str, value: float) -> str | None:
     return f"{name} {value:g} {unit} is not a human one; expected {low:g}-{high:g} {unit}"
 
 
-def joint_too_far(name: str, distance_m: float) -> str | None:
-    """Why a joint `distance_m` metres from the body's root cannot be a
-    human's, or None when it may be."""
+def joint_too_far(name: str, distance_m: float, root: str) -> str | None:
+    """Why a joint `distance_m` metres from the body's root joint `root`
+    cannot be a human's, or None when it may be."""
     if math.isfinite(distance_m) and distance_m <= MAX_JOINT_DISTANCE_M:
         return None
     return (
-        f"joint {name} is {distance_m:g} m from the pelvis; a human's joints are "
-        f"within {MAX_JOINT_DISTANCE_M:g} m of it"
+        f"{name} is {distance_m:g} m from {root}; a human's joints are within "
+        f"{MAX_JOINT_DISTANCE_M:g} m of it"
     )

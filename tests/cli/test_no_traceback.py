@@ -1,0 +1,52 @@
+"""Inputs that left a traceback: each is a one-line message now, nothing stored."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from sass_tui.cli import main
+
+POSTURE = {
+    "l_metacarpophalangeal_3": [0.3, 1.0, 0.4], "l_radiocarpal": [0.3, 1.0, 0.3],
+    "l_elbow": [0.25, 1.1, 0.1], "l_shoulder": [0.2, 1.4, 0.0],
+    "r_metacarpophalangeal_3": [-0.3, 1.0, 0.4], "r_radiocarpal": [-0.3, 1.0, 0.3],
+    "r_elbow": [-0.25, 1.1, 0.1], "r_shoulder": [-0.2, 1.4, 0.0],
+    "vc7": [0.0, 1.45, -0.05], "vl5": [0.0, 1.0, 0.0],
+}  # fmt: skip
+
+
+def _one_line_error(capsys, verb: str) -> str:
+    err = capsys.readouterr().err
+    assert err.startswith(f"sass {verb}: error:") and len(err.splitlines()) == 1, err
+    return err
+
+
+@pytest.mark.parametrize("key", ["99999999999999999999999", "²"])
+def test_a_person_id_no_database_holds(people_db, capsys, key):
+    assert main(["--db", str(people_db), "person", key]) == 2
+    assert "no person with id or name" in _one_line_error(capsys, "person")
+
+
+@pytest.mark.parametrize(
+    ("text", "says"),
+    [
+        ("[" * 100_000 + "]" * 100_000, "nested too deep"),
+        (json.dumps(POSTURE).replace("0.25, 1.1", "1" + "0" * 3000 + ", 1.1", 1), "not three finite"),
+        (json.dumps({**POSTURE, "l_elbow": [1e15, 1.1, 0.1]}), "l_elbow is 1e+15 m from vl5"),
+    ],
+)  # fmt: skip
+def test_a_posture_no_body_has(tmp_path, capsys, text, says):
+    path = tmp_path / "p.json"
+    path.write_text(text)
+    assert main(["strength", "arm_force", "--posture", str(path), "--direction", "up"]) == 2
+    assert says in _one_line_error(capsys, "strength")
+
+
+@pytest.mark.parametrize("text", ["stature,mass,gender\n", "stature,mass,gender\n\n\n"])
+def test_a_sample_of_no_rows(people_db, tmp_path, capsys, text):
+    path = tmp_path / "s.csv"
+    path.write_text(text)
+    assert main(["--db", str(people_db), "target", "t", "--sample", str(path)]) == 2
+    assert "the sample has no rows" in _one_line_error(capsys, "target")
