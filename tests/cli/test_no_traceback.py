@@ -50,3 +50,18 @@ def test_a_sample_of_no_rows(people_db, tmp_path, capsys, text):
     path.write_text(text)
     assert main(["--db", str(people_db), "target", "t", "--sample", str(path)]) == 2
     assert "the sample has no rows" in _one_line_error(capsys, "target")
+
+
+@pytest.mark.parametrize(
+    ("query", "note"),
+    [
+        ("stature <= 1.9", "stature 1.9 cm is not a human one; expected 50-300 cm; did you mean `stature <= 1.9 m`?"),
+        ("mass > 70000", "did you mean `mass > 70000 g`?"),
+        ("stature <= 1.9 m", None),
+    ],
+)  # fmt: skip
+def test_a_bare_number_no_human_has_gets_a_note(people_db, capsys, query, note):
+    """`stature <= 1.9` asked for 1.9 cm and answered 0 without a word."""
+    assert main(["--db", str(people_db), "query", "--count", query]) == 0
+    err = capsys.readouterr().err
+    assert (note in err) if note else "note:" not in err
