@@ -65,3 +65,21 @@ def test_a_bare_number_no_human_has_gets_a_note(people_db, capsys, query, note):
     assert main(["--db", str(people_db), "query", "--count", query]) == 0
     err = capsys.readouterr().err
     assert (note in err) if note else "note:" not in err
+
+
+@pytest.mark.parametrize(
+    ("options", "says"),
+    [
+        (["--percentiles", "50.00001,50.00002"], "'50.00002' is shown as p50, as 50.00001 is"),
+        (["--unit", "kg"], "--unit kg is a unit of mass, and no measure asked is a mass"),
+    ],
+)
+def test_stats_options_that_would_be_passed_over(people_db, capsys, options, says):
+    """Two p50 columns (and one JSON key); a mass unit on a length, ignored."""
+    try:
+        status = main(["--db", str(people_db), "stats", "stature", *options])
+    except SystemExit as exc:  # argparse's refusal: the usage, then the error
+        status = exc.code
+    assert status == 2
+    last = capsys.readouterr().err.splitlines()[-1]
+    assert last.startswith("sass stats: error:") and says in last
