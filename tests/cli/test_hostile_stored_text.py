@@ -75,3 +75,22 @@ def test_a_stored_stature_no_human_has_is_refused(people_db, tmp_path, capsys):
     err = capsys.readouterr().err
     assert "stature 1e+06 cm is not a human one; expected 50-300 cm" in err
     assert len(err.splitlines()) == 1
+
+
+def test_a_stored_name_reaches_strength_and_task_escaped(people_db, capsys):
+    id_num, _ = _first_person(people_db)
+    _update(people_db, "UPDATE person SET name = ? WHERE id_num = ?", f"Eve{RETITLE}", id_num)
+    capsys.readouterr()
+    for argv in (
+        ["strength", "knee_extension", "--person", str(id_num)],
+        ["task", "--person", str(id_num), "--right-load", "20N"],
+    ):
+        main(
+            ["--db", str(people_db), *argv]
+            if argv[0] == "task"
+            else [*argv, "--db", str(people_db)]
+        )
+        captured = capsys.readouterr()
+        text = captured.out + captured.err
+        assert "\x1b" not in text and "\x07" not in text
+        assert "Eve^[]0;pwned^G" in text, text

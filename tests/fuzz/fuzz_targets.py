@@ -571,6 +571,9 @@ def _verb(verb: str, seeds: list[str], database: bool) -> Target:
     a posture file's text after a line `--posture`)."""
     from sass_tui.cli import main
 
+    if database:  # built now (seconds), not in the first input's time limit
+        DATABASES.default_file()
+
     def run(text: object) -> object:
         lines = str(text).split("\n")
         argv = [verb, *(["--db", str(DATABASES.default_file())] if database else [])]
