@@ -198,11 +198,23 @@ def command_line() -> int:
     return status
 
 
+# The most words a command line may hold (a verb takes some tens).
+MAX_ARGUMENTS = 1000
+
+
 def main(argv: list[str] | None = None) -> int:
     gc.set_threshold(COLLECT_AFTER_OBJECTS, *gc.get_threshold()[1:])
     words = sys.argv[1:] if argv is None else argv
     if not words:  # plain `sass`: the TUI, with no parser to build (a sooner first screen)
         return run_tui(None)
+    if len(words) > MAX_ARGUMENTS:
+        # argparse's time grows with the square of the arguments: 54,000 took 35 s
+        print(
+            f"sass: error: {len(words):,} arguments; sass takes at most {MAX_ARGUMENTS:,} "
+            "(a list of people or measures goes in a file)",
+            file=sys.stderr,
+        )
+        return 2
     parser = build_parser(words)
     args = parser.parse_args(words)
     if args.command is None:
