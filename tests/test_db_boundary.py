@@ -55,7 +55,7 @@ def test_the_checks_see_what_they_look_for(tmp_path):
 
 def test_one_caller_decides_how_an_import_is_staged():
     # PostgreSQL stages an import in a SQLite file and copies it in one
-    # transaction; whether to is decided once, in db/engine/database.py's
+    # transaction; whether to is decided once, in db/engine/staging.py's
     # store_people, for the command line (Database) and the screens
     # (QueryLists) alike, and PostgreSQL's `sass db init` (init_postgres).
     callers = set()
@@ -69,4 +69,4 @@ def test_one_caller_decides_how_an_import_is_staged():
                         == "import_staged"
                     ):
                         callers.add(f"{path.parent.name}/{path.name}:{function.name}")
-    assert callers == {"db/engine/database.py:store_people"}
+    assert callers == {"engine/staging.py:store_people"}
