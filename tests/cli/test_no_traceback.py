@@ -58,6 +58,7 @@ def test_a_sample_of_no_rows(people_db, tmp_path, capsys, text):
         ("stature <= 1.9", "stature 1.9 cm is not a human one; expected 50-300 cm; did you mean `stature <= 1.9 m`?"),
         ("mass > 70000", "did you mean `mass > 70000 g`?"),
         ("stature <= 1.9 m", None),
+        ("mass > 0 AND stature > 0", None),
     ],
 )  # fmt: skip
 def test_a_bare_number_no_human_has_gets_a_note(people_db, capsys, query, note):

@@ -67,3 +67,13 @@ def test_virtual_people_are_bounded_before_the_sample_is_read(
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert f"{sample}: 3 rows; --virtual makes one person a row, at most 2" in err
+
+
+def test_an_unknown_virtual_population_is_named_as_typed(people_db, capsys):
+    """The `virtual:` prefix the user never typed stayed out of the message."""
+    assert main(["--db", str(people_db), "stats", "--virtual", "nosuch"]) == 2
+    err = capsys.readouterr().err
+    assert (
+        "no virtual population named 'nosuch'; the virtual populations are nhanes-2017-2020" in err
+    )
+    assert "virtual:" not in err

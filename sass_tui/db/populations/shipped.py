@@ -18,6 +18,7 @@ from sass_tui.db.populations.targets import (
     load_target,
     target_exists,
 )
+from sass_tui.db.query.scope import VIRTUAL_PREFIX
 from sass_tui.model.datasets import NHANES_NAME, NHANES_WEIGHT
 
 # The command that makes the shipped pair again as `sass db init` does
@@ -25,15 +26,17 @@ from sass_tui.model.datasets import NHANES_NAME, NHANES_WEIGHT
 # mass, NHANES's examination weights, within the people's range).
 REMAKE = (
     f"sass target {NHANES_NAME} --sample {NHANES_NAME} --weight {NHANES_WEIGHT} "
-    "--within-range --virtual"
+    "--within-range --virtual --force"
 )
 
 
 def not_stored(name: str) -> str:
     """What to say of a shipped target this database does not hold."""
+    kind = "virtual population" if name.startswith(VIRTUAL_PREFIX) else "target"
     return (
-        f"the shipped {name!r} is not in this database (dropped, or the database was "
-        f"built without it); `sass db init` or `{REMAKE}` makes it again"
+        f"the shipped {kind} {name.removeprefix(VIRTUAL_PREFIX)!r} is not in this database "
+        f"(dropped, or the database was built without it); `sass db init` or `{REMAKE}` "
+        "makes it again"
     )
 
 

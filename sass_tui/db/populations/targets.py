@@ -371,11 +371,21 @@ def _target(row: Sequence[Any]) -> Target:
 
 
 def _unknown(conn: sqlite3.Connection, name: str) -> UnknownTargetError:
-    names = [t.name for t in list_targets(conn)]
-    known = f"; the targets are {', '.join(names)}" if names else "; none is stored yet"
+    """No target (or, named `virtual:NAME`, no virtual population) `name`:
+    the message names those of its kind, without the prefix the user never typed."""
+    virtual = name.startswith(VIRTUAL_PREFIX)
+    names = [
+        t.name.removeprefix(VIRTUAL_PREFIX) for t in list_targets(conn) if t.is_virtual == virtual
+    ]
+    kind, make = (
+        ("virtual population", "`sass target NAME --virtual`")
+        if virtual
+        else ("target", "`sass target`")
+    )
+    known = f"; the {kind}s are {', '.join(names)}" if names else "; none is stored yet"
+    shown = printable(name.removeprefix(VIRTUAL_PREFIX))
     return UnknownTargetError(
-        f"no target named {printable(name)!r}{known} (make one with `sass target`)",
-        where=printable(name),
+        f"no {kind} named {shown!r}{known} (make one with {make})", where=shown
     )
 
 

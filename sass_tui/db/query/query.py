@@ -631,8 +631,10 @@ def unlikely_numbers(expr: Expr) -> list[str]:
             meant = f"{value:g} m" if 0 < value < 3 else f"{value:g} mm" if value > 300 else ""
         else:
             meant = f"{value:g} g" if value > 500 else ""
-        hint = f"; did you mean `{c.field} {c.op} {meant}`?" if meant else ""
-        notes.append(f"note: {c.field} {c.op} {value:g}: {refused}{hint}")
+        if meant:  # `mass > 0`, a bound no one lies beyond, is no mistake
+            notes.append(
+                f"note: {c.field} {c.op} {value:g}: {refused}; did you mean `{c.field} {c.op} {meant}`?"
+            )
     return notes
 
 
