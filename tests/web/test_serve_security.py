@@ -199,6 +199,8 @@ def test_a_served_session_starts_in_the_working_directory(tmp_path):
         asyncio.run(scenario())
     finally:
         served.stop()
+    # Nothing saved in it: the folder this run made goes with it (every run left one).
+    assert not workdir.exists()
 
 
 def sass_serve(*options: str, cwd: Path) -> subprocess.CompletedProcess:
