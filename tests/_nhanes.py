@@ -7,20 +7,14 @@ import csv
 
 import numpy as np
 
-from tests._paths import SHARED
-
-NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
+from tests._paths import nhanes_lines
 
 
 def nhanes(gender_code: str, *columns: str) -> tuple[np.ndarray, np.ndarray]:
     """Adults 20+ of one gender (RIAGENDR: "1" male, "2" female) with a
     height and a weight: the columns (NaN: not measured) and WTMECPRP, in
     the file's order."""
-    lines = [
-        line
-        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
+    lines = nhanes_lines()  # the test skips, naming the file, without ../shared
     rows = [
         r
         for r in csv.DictReader(lines)

@@ -21,11 +21,11 @@ CLI_MODULES = [
             "family",
             "fig",
             "fit",
-            "options",
+            "common.options",
             "person",
             "population",
             "predict",
-            "progress",
+            "common.progress",
             "query",
             "strength",
         )

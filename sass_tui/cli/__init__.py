@@ -11,6 +11,7 @@ when run.
 from __future__ import annotations
 
 import argparse
+import errno
 import gc
 import os
 import sys
@@ -213,11 +214,23 @@ def command_line() -> int:
     return status
 
 
+# The most words a command line may hold (a verb takes some tens).
+MAX_ARGUMENTS = 1000
+
+
 def main(argv: list[str] | None = None) -> int:
     gc.set_threshold(COLLECT_AFTER_OBJECTS, *gc.get_threshold()[1:])
     words = sys.argv[1:] if argv is None else argv
     if not words:  # plain `sass`: the TUI, with no parser to build (a sooner first screen)
         return run_tui(None)
+    if len(words) > MAX_ARGUMENTS:
+        # argparse's time grows with the square of the arguments: 54,000 took 35 s
+        print(
+            f"sass: error: {len(words):,} arguments; sass takes at most {MAX_ARGUMENTS:,} "
+            "(a list of people or measures goes in a file)",
+            file=sys.stderr,
+        )
+        return 2
     parser = build_parser(words)
     args = parser.parse_args(words)
     if args.command is None:
@@ -244,6 +257,10 @@ def run_tui(db: str | None, worksheet: str | None = None) -> int:
         gc.enable()  # also when the app ended before its first screen
 
 
+# An OSError naming no file while a verb runs: its output could not be written.
+_OUTPUT_FULL = (errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EIO)
+
+
 def run_verb(args: argparse.Namespace) -> int:
     """Run the chosen verb; every error a user can cause ends here as a message."""
     try:
@@ -259,7 +276,11 @@ def run_verb(args: argparse.Namespace) -> int:
         return 130
     except (SassError, OSError) as exc:
         # Messages quote file names and file text: show no control characters.
-        print(f"sass {args.command}: error: {printable(exc)}", file=sys.stderr)
+        said = exc
+        if isinstance(exc, OSError) and exc.filename is None and exc.errno in _OUTPUT_FULL:
+            # a full disk or quota under `> file`: it said only "[Errno 28] ..."
+            said = OSError(f"cannot write the output (standard output): {exc.strerror}")
+        print(f"sass {args.command}: error: {printable(said)}", file=sys.stderr)
         pointer = exc.pointer() if isinstance(exc, SassError) else ""
         for line in pointer.splitlines():
             print(printable(line), file=sys.stderr)

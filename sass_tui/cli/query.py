@@ -15,7 +15,12 @@ from sass_tui.cli.common.options import (
     add_virtual_option,
     weighting_name,
 )
-from sass_tui.db.query.query import QueryError, compile_query, demonstration_hint
+from sass_tui.db.query.query import (
+    QueryError,
+    compile_query,
+    demonstration_hint,
+    unlikely_numbers,
+)
 from sass_tui.db.query.query_fields import FieldDoc, field_reference
 from sass_tui.model.text import is_printable_lines, printable
 
@@ -63,6 +68,8 @@ def run(args: argparse.Namespace) -> int:
     if args.query is None:
         raise QueryError('give a QUERY, e.g. "stature > 180 cm", or --fields to list the fields')
     compiled = compile_query(args.query)  # before opening: a bad query touches nothing
+    for note in unlikely_numbers(compiled.tree):
+        print(note, file=sys.stderr)
     db = open_database(args)
     with db.connection() as conn:  # engine errors (a server gone mid-listing) as messages
         _answer(args, db.query(compiled), conn)

@@ -65,7 +65,16 @@ def start(args: argparse.Namespace, *, token: str, loopback: bool, ssl_context) 
         file=err,
         flush=True,
     )
-    return serve(options)
+    try:
+        return serve(options)
+    finally:
+        if args.workdir is None:
+            # The folder sass made for this run: left behind by every run; gone
+            # when the sessions saved nothing in it, kept (and named) when they did.
+            try:
+                workdir.rmdir()
+            except OSError:
+                print(f"sass serve: the sessions' files stay in {workdir}", file=err)
 
 
 def served_workdir(name: str | None) -> Path:

@@ -63,6 +63,12 @@ def percentile_list(text: str) -> tuple[float, ...]:
             raise argparse.ArgumentTypeError(f"{word!r}: a percentile must be over 0 and under 100")
         if value in values:
             raise argparse.ArgumentTypeError(f"{word!r} is listed twice")
+        same = [v for v in values if _key(v) == _key(value)]
+        if same:  # 50.00001 and 50.00002: two p50 columns, one JSON key
+            raise argparse.ArgumentTypeError(
+                f"{word!r} is shown as p{_key(value)}, as {same[0]!r} is; give percentiles that "
+                "differ within 6 significant digits"
+            )
         values.append(value)
     return tuple(values)
 

@@ -16,6 +16,7 @@ from typing import TextIO
 
 from sass_tui.cli.common.database_access import open_db
 from sass_tui.cli.common.options import SubParsers, add_db_option
+from sass_tui.db.populations.shipped import REMAKE
 from sass_tui.db.populations.targets import SHIPPED, list_targets
 from sass_tui.model.datasets import NHANES_NAME, NHANES_WEIGHT
 from sass_tui.model.vocabulary import GENDERS
@@ -117,4 +118,7 @@ def _list(conn, out: TextIO) -> None:  # conn: the database layer's connection
         )
     for name in SHIPPED:
         if name not in stored:
-            out.write(f"{name}  shipped (NHANES 2017-March 2020 adults): made on first use\n")
+            out.write(
+                f"{name}  shipped (NHANES 2017-March 2020 adults), not stored: "
+                f"`sass db init` or `{REMAKE}` makes it again\n"
+            )

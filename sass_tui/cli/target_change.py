@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import gzip
+import io
 import sys
 from typing import TYPE_CHECKING, TextIO
 
@@ -27,11 +28,16 @@ from sass_tui.db.populations.targets import (
     store_target,
     target_exists,
 )
-from sass_tui.db.populations.virtual import MEASURED, drop_virtual, make_virtual, store_virtual
+from sass_tui.db.populations.virtual import (
+    MEASURED,
+    drop_virtual,
+    make_virtual,
+    store_target_and_virtual,
+)
 from sass_tui.db.query.query import parse_option
 from sass_tui.model.datasets import NHANES, NHANES_NAME, shipped_text
 from sass_tui.model.errors import SassError
-from sass_tui.model.files.paths import regular_file
+from sass_tui.model.files.paths import LARGEST_PEOPLE_TABLE, regular_file
 from sass_tui.model.files.sample_file import read_sample
 from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.population.target_sample import SampleError, is_weighting_field
@@ -39,6 +45,12 @@ from sass_tui.model.population.target_sample import SampleError, is_weighting_fi
 if TYPE_CHECKING:
     from sass_tui.db.populations.targets import Target
     from sass_tui.model.population.targets import Weighting
+
+
+# The most rows `--virtual` makes people of (one person a row): a million
+# took 5 min, 7.4 GB of memory and grew the database by 4.1 GB; the shipped
+# NHANES sample has 8,381.  Counted before the sample is read.
+MAX_VIRTUAL_PEOPLE = 100_000
 
 
 class TargetArgumentError(ValueError, SassError):
@@ -100,8 +112,16 @@ def _make(args: argparse.Namespace) -> int:
     fields = by_fields(args.by)
     population = parse_option(args.population, "--population")  # parsed once, passed on
     gender = args.gender or BOTH
+    text = sample_text(args.sample)
+    rows = sum(1 for line in text.splitlines() if line.strip()) - 1
+    if args.virtual and rows > MAX_VIRTUAL_PEOPLE:
+        raise TargetArgumentError(
+            f"{args.sample}: {rows:,} rows; --virtual makes one person a row, at most "
+            f"{MAX_VIRTUAL_PEOPLE:,} (a million took 5 min and 4 GB of database); weight "
+            "the sample without --virtual, or take a sample of its rows"
+        )
     sample = read_sample(
-        sample_text(args.sample),
+        text,
         fields,
         args.sample,
         weight=args.weight,
@@ -117,7 +137,10 @@ def _make(args: argparse.Namespace) -> int:
         )
     conn = open_db(args)
     try:
-        if target_exists(conn, args.name) and not args.force and not _replace(args.name):
+        taken = target_exists(conn, args.name) or (
+            args.virtual and target_exists(conn, VIRTUAL_PREFIX + args.name)
+        )
+        if taken and not args.force and not _replace(args.name):
             print("nothing changed", file=sys.stderr)
             return 1
         target, weights, weightings = make_target(
@@ -129,12 +152,12 @@ def _make(args: argparse.Namespace) -> int:
             population,
             within_range=args.within_range,
         )
-        virtual = None
         if args.virtual:
             virtual = make_virtual(conn, args.name, sample, args.sample, gender)
-        store_target(conn, weights, replace=True)
-        if virtual is not None:
-            store_virtual(conn, virtual)
+            store_target_and_virtual(conn, weights, virtual)
+        else:
+            virtual = None
+            store_target(conn, weights, replace=True)
     finally:
         conn.close()
     _report(target, weightings, sample.incomplete, sys.stdout)
@@ -154,14 +177,21 @@ def _make(args: argparse.Namespace) -> int:
 
 def sample_text(name: str) -> str:
     """The text of a sample: the shipped NHANES adults by name, a .gz file
-    decompressed, else the file."""
+    decompressed, else the file; at most LARGEST_PEOPLE_TABLE bytes, a .gz
+    file by what it expands to (a 1 MB file held a 1 GiB field)."""
     if name == NHANES_NAME:
         return shipped_text(NHANES)
-    path = regular_file(name)
+    path = regular_file(name, largest=LARGEST_PEOPLE_TABLE, kind="a sample")
     try:
         data = path.read_bytes()
         if name.endswith(".gz"):
-            data = gzip.decompress(data)
+            with gzip.GzipFile(fileobj=io.BytesIO(data)) as expanding:
+                data = expanding.read(LARGEST_PEOPLE_TABLE + 1)
+            if len(data) > LARGEST_PEOPLE_TABLE:
+                raise SampleError(
+                    f"{name}: expands to more than {LARGEST_PEOPLE_TABLE // 2**20} MB; "
+                    "a sample is at most that"
+                )
         return data.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise SampleError(f"{name}: not UTF-8 text ({exc.reason})") from None

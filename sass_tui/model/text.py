@@ -54,6 +54,18 @@ def printable(text: object) -> str:
     return _control().sub(_escape, string)
 
 
+# What XML 1.0 allows no document to hold (clause 2.2, Char): the C0
+# controls but tab, line feed and carriage return, surrogates, U+FFFE/FFFF.
+_NOT_XML = "[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]"
+
+
+def xml_safe(text: str) -> str:
+    """`text` (an XML document, or a value for one) with every character XML
+    1.0 forbids shown as printable() shows it: a name holding ESC made an
+    X3D file no XML reader opens."""
+    return re.sub(_NOT_XML, _escape, text)
+
+
 def is_printable(text: str) -> bool:
     """Whether printable() would leave `text` as it is (one check for many values joined)."""
     return text.isprintable() or _control().search(text) is None

@@ -121,7 +121,9 @@ class SassApp(App):
     def _make_strength_sheet(self, figure: Figure, path: str | Path | None) -> StrengthSheet | None:
         """The population's strength sheet from `path` (None =
         datasets/strength.dat), or None and why in strength_error."""
-        sheet, problem = self.figure_work.strength_sheet(path, figure, self._opened_strength)
+        sheet, problem = self.figure_work.strength_sheet(
+            path, figure, self._opened_strength, self.workdir
+        )
         if sheet is None:
             self._strength_error = problem
         return sheet

@@ -9,19 +9,13 @@ import sqlite3
 import pytest
 
 from sass_tui.cli import main
-from tests._paths import SHARED
-
-NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
+from tests._paths import nhanes_lines
 
 
 def nhanes_adults() -> int:
     """NHANES 2017-March 2020 adults (20+) with a height and a weight, counted
     from the published CSV: one virtual person each."""
-    lines = [
-        line
-        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
+    lines = nhanes_lines()
     return sum(
         1
         for r in csv.DictReader(lines)

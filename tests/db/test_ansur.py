@@ -24,8 +24,8 @@ from sass_tui.db.engine.schema import row_counts
 from sass_tui.db.people.ansur import AnsurImportError, ellipse_axes, import_ansur_into
 from sass_tui.db.people.individual import fetch_individual
 from sass_tui.model.names import GIRTH, row_index
+from tests._paths import SHARED
 
-SHARED = Path(__file__).resolve().parents[1].parent.parent / "shared"
 FILES = ("ANSUR_II_MALE_Public.csv", "ANSUR_II_FEMALE_Public.csv")
 
 

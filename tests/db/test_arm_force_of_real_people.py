@@ -10,13 +10,15 @@ import json
 import pytest
 
 from sass_tui.cli import main
-from tests._paths import ANSUR
+from tests._paths import ANSUR, shared_file
 
 
 def first_woman() -> dict[str, str]:
     if not ANSUR.is_dir():
         pytest.skip(f"the independent ANSUR II copy is not at {ANSUR}")
-    with open(ANSUR / "ANSUR_II_FEMALE_Public.csv", encoding="latin-1", newline="") as handle:
+    with open(
+        shared_file(ANSUR / "ANSUR_II_FEMALE_Public.csv"), encoding="latin-1", newline=""
+    ) as handle:
         row = next(csv.DictReader(handle))
     return {**row, "name": f"ANSUR II F {row.get('subjectid') or row['SubjectId']}"}
 

@@ -659,7 +659,6 @@ def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path):
         "import numpy as np\n"
         f"sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
         "from test_scale_paths import generated_batch\n"
-        "from sass_tui.db.engine import schema\n"
         "from sass_tui.db.people.people_store import store_people\n"
         "from sass_tui.db.engine.schema import connect, transaction\n"
         "conn = connect(sys.argv[1])\n"

@@ -15,17 +15,11 @@ import numpy as np
 import pytest
 
 from sass_tui.cli import main
-from tests._paths import ANSUR, SHARED
-
-NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
+from tests._paths import ANSUR, nhanes_lines, shared_file
 
 
 def nhanes_rows(code: str, low_age: float, high_age: float) -> list[dict[str, str]]:
-    lines = [
-        line
-        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
+    lines = nhanes_lines()
     return [
         r
         for r in csv.DictReader(lines)
@@ -58,7 +52,9 @@ def shipped(template_target, copy_database) -> str:
 
 
 def test_the_real_womens_table_is_numpys_over_the_csv(shared_target, capsys):
-    with (ANSUR / "ANSUR_II_FEMALE_Public.csv").open(encoding="latin-1", newline="") as handle:
+    with shared_file(ANSUR / "ANSUR_II_FEMALE_Public.csv").open(
+        encoding="latin-1", newline=""
+    ) as handle:
         rows = list(csv.DictReader(handle))
     stature = np.array([float(r["stature"]) / 10 for r in rows])
     sitting = np.array([float(r["sittingheight"]) / 10 for r in rows])
@@ -129,7 +125,9 @@ def test_outside_share_of_the_weighted_real_women(shipped, capsys):
     rows = nhanes_rows("2", 20, 200)
     mass = np.array([float(r["BMXWT"]) for r in rows])
     weights = np.array([float(r["WTMECPRP"]) for r in rows])
-    with (ANSUR / "ANSUR_II_FEMALE_Public.csv").open(encoding="latin-1", newline="") as handle:
+    with shared_file(ANSUR / "ANSUR_II_FEMALE_Public.csv").open(
+        encoding="latin-1", newline=""
+    ) as handle:
         soldiers = np.array([float(r["weightkg"]) / 10 for r in csv.DictReader(handle)])
     beyond = (mass > soldiers.max()) | (mass < soldiers.min())
     expected = weights[beyond].sum() / weights.sum()

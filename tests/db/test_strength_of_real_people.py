@@ -16,7 +16,7 @@ from statistics import NormalDist
 import pytest
 
 from sass_tui.cli import main
-from tests._paths import ANSUR
+from tests._paths import ANSUR, shared_file
 
 # Table 3, knee extension: (gender, age group) -> C1, C2, C3 (rad).
 KNEE_EXTENSION = {
@@ -108,7 +108,9 @@ def test_a_fit_test_takes_a_strength_limit_on_real_people(shared_target, capsys)
         pytest.skip(f"the independent ANSUR II copy is not at {ANSUR}")
     expected = {}
     for gender in ("MALE", "FEMALE"):
-        with open(ANSUR / f"ANSUR_II_{gender}_Public.csv", encoding="latin-1", newline="") as f:
+        with open(
+            shared_file(ANSUR / f"ANSUR_II_{gender}_Public.csv"), encoding="latin-1", newline=""
+        ) as f:
             rows = list(csv.DictReader(f))
         n, fit = 0, 0.0
         for row in rows:

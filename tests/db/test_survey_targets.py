@@ -14,17 +14,11 @@ import pytest
 from sass_tui.cli import main
 from sass_tui.db.engine.database import Database
 from sass_tui.db.populations.targets import load_target
-from tests._paths import ANSUR, SHARED
-
-NHANES_CSV = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
+from tests._paths import ANSUR, nhanes_lines, shared_file
 
 
 def nhanes_adults(gender_code: str) -> list[dict[str, str]]:
-    lines = [
-        line
-        for line in NHANES_CSV.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
+    lines = nhanes_lines()
     return [
         r
         for r in csv.DictReader(lines)
@@ -33,7 +27,7 @@ def nhanes_adults(gender_code: str) -> list[dict[str, str]]:
 
 
 def ansur_masses(name: str) -> np.ndarray:
-    with (ANSUR / name).open(encoding="latin-1", newline="") as handle:
+    with shared_file(ANSUR / name).open(encoding="latin-1", newline="") as handle:
         return np.array([float(r["weightkg"]) / 10 for r in csv.DictReader(handle)])
 
 

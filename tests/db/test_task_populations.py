@@ -20,7 +20,7 @@ from sass_tui.db.populations.targets import load_target
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.posture import parse_angles, pose_figure
 from sass_tui.model.strength.arm_force_field import arm_force
-from tests._paths import ANSUR
+from tests._paths import ANSUR, shared_file
 from tests._virtual_task import VIRTUAL, right_hand_sums
 from tests.db.test_targets import civilian_women, write_sample
 
@@ -61,7 +61,9 @@ def test_a_target_population_is_weighted_to_its_sample(with_target, sample, caps
 def test_a_real_person_does_the_task_with_her_own_body(shared_target, capsys):
     if not ANSUR.is_dir():
         pytest.skip(f"the independent ANSUR II copy is not at {ANSUR}")
-    with open(ANSUR / "ANSUR_II_FEMALE_Public.csv", encoding="latin-1", newline="") as handle:
+    with open(
+        shared_file(ANSUR / "ANSUR_II_FEMALE_Public.csv"), encoding="latin-1", newline=""
+    ) as handle:
         row = next(csv.DictReader(handle))
     name = f"ANSUR II F {row.get('subjectid') or row['SubjectId']}"
     argv = ["task", *POSTURE, "--db", shared_target, "--right-load", "40N", "--person", name]

@@ -1,5 +1,5 @@
 """Virtual populations (db/populations/virtual.py, model/population/virtual.py): the shipped
-`nhanes-2017-2020`, made by `sass db init` (and on first use in a database
+`nhanes-2017-2020`, made by `sass db init` (and again by `sass target` in a database
 that lacks it), holds NHANES's own weighted stature
 and mass, a measure NHANES took that the prediction never saw agrees with
 it, and its people never count among real people.  Expected numbers are
@@ -16,6 +16,7 @@ from sass_tui.cli import main
 from sass_tui.db.engine.database import Database
 from sass_tui.db.engine.dialect import mark_of
 from sass_tui.db.people.values import load_values
+from sass_tui.db.populations.shipped import REMAKE
 from sass_tui.db.populations.targets import SHIPPED, list_targets, load_target
 from sass_tui.db.populations.virtual import drop_virtual
 from tests._nhanes import by_cumulative_weight, nhanes
@@ -99,9 +100,13 @@ def test_both_engines_test_databases_agree(default_db_file, cluster, postgres_te
 
 
 @pytest.mark.slow
-def test_a_database_without_them_makes_them_on_first_use(engine_target, capsys):
-    """A database built before `sass db init` made them (here: both dropped)
-    makes them the first time a command names them, as db init would."""
+def test_a_database_without_them_says_so_and_the_target_verb_makes_them_again(
+    engine_target, capsys
+):
+    """Both dropped: a verb that reads them reports them missing and stores
+    nothing (a read never writes; it made 8,381 people); the `sass target`
+    command the message gives makes them again, the same as `sass db init`
+    made them, in one transaction."""
     made = shipped_state(engine_target)
     capsys.readouterr()
     assert main(["target", "--db", engine_target, "--drop", "nhanes-2017-2020"]) == 0
@@ -111,10 +116,19 @@ def test_a_database_without_them_makes_them_on_first_use(engine_target, capsys):
             assert drop_virtual(conn, "nhanes-2017-2020") == 8381
     finally:
         opened.close()
+    dropped = shipped_state(engine_target)
     assert main(["target", "--db", engine_target, "--list"]) == 0
-    assert capsys.readouterr().out.count("made on first use") == 2
-    argv = ["query", "--db", engine_target, "--count", "--virtual", "nhanes-2017-2020"]
-    assert main([*argv, "mass > 0"]) == 0
+    assert capsys.readouterr().out.count(f"not stored: `sass db init` or `{REMAKE}`") == 2
+    for argv in (
+        ["query", "--db", engine_target, "--count", "--virtual", "nhanes-2017-2020", "mass > 0"],
+        ["stats", "--db", engine_target, "--target", "nhanes-2017-2020"],
+    ):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert "is not in this database" in err and "sass db init" in err
+        assert len(err.splitlines()) == 1
+    assert shipped_state(engine_target) == dropped
+    assert main([*REMAKE.split()[1:], "--db", engine_target]) == 0
     again = shipped_state(engine_target)
     assert again["targets"] == made["targets"]
     assert again["people"] == made["people"]

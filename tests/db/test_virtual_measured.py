@@ -17,11 +17,10 @@ from sass_tui.cli import main
 from sass_tui.db.engine.database import Database
 from sass_tui.db.people.values import load_values
 from sass_tui.db.populations.targets import load_target
-from tests._nhanes import NHANES_CSV, by_cumulative_weight
+from tests._nhanes import by_cumulative_weight
 from tests._nhanes import nhanes as nhanes_of
-from tests._paths import SHARED
+from tests._paths import ANSUR, NHANES_CSV
 
-ANSUR = SHARED / "data" / "ansur2"
 NAME = "nhanes-2017-2020"
 SOURCE = f'source = "virtual:{NAME}"'
 CODES = {"female": "2", "male": "1"}

@@ -13,6 +13,8 @@ exception is a traceback for the user, and a run that does not end is a hang.
 
 from __future__ import annotations
 
+import contextlib
+import io
 import random
 import re
 import sqlite3
@@ -252,16 +254,14 @@ class _Databases:
     def __init__(self) -> None:
         self._template: sqlite3.Connection | None = None
         self._with_people: sqlite3.Connection | None = None
+        self._file: Path | None = None
+        self._folder: tempfile.TemporaryDirectory[str] | None = None
 
-    def _build(self, fill: bool) -> sqlite3.Connection:
+    def _build(self) -> sqlite3.Connection:
         from sass_tui.db.engine.schema import connect
-        from sass_tui.db.people.default import create_default_database
 
         with tempfile.TemporaryDirectory() as tmp:
-            path = Path(tmp) / "t.db"
-            if fill:
-                create_default_database(path)
-            conn = connect(path, create=True)
+            conn = connect(Path(tmp) / "t.db", create=True)
             memory = sqlite3.connect(":memory:", isolation_level=None)
             conn.backup(memory)
             conn.close()
@@ -269,15 +269,31 @@ class _Databases:
 
     def empty(self) -> sqlite3.Connection:
         if self._template is None:
-            self._template = self._build(fill=False)
+            self._template = self._build()
         copy = sqlite3.connect(":memory:", isolation_level=None)
         self._template.backup(copy)
         return copy
 
+    def default_file(self) -> Path:
+        """The default database as a file (the verbs open a path), built once:
+        the verbs fuzzed here only read it."""
+        if self._file is None:
+            from sass_tui.db.people.default import create_default_database
+
+            self._folder = tempfile.TemporaryDirectory()
+            self._file = Path(self._folder.name) / "sass.db"
+            create_default_database(self._file)
+        return self._file
+
     def default(self) -> sqlite3.Connection:
         """The default database (200 people), shared: queries only read it."""
         if self._with_people is None:
-            self._with_people = self._build(fill=True)
+            from sass_tui.db.engine.schema import connect
+
+            conn = connect(self.default_file())
+            self._with_people = sqlite3.connect(":memory:", isolation_level=None)
+            conn.backup(self._with_people)
+            conn.close()
         return self._with_people
 
 
@@ -512,6 +528,111 @@ def _ids_file() -> Target:
     return _reader("ids_file", seeds, LARGEST_ID_LIST, lambda path: read_id_file(str(path)))
 
 
+# --- files and verbs a colleague hands over (worksheets, samples, postures) ------
+
+
+def _worksheet() -> Target:
+    from sass_tui.model.body.figure import Figure
+    from sass_tui.model.files.worksheet import parse_worksheet, worksheet_text
+    from sass_tui.model.session import Session
+    from sass_tui.model.strength.strength import StrengthSheet
+
+    figure = Figure.default("female")
+    seed = worksheet_text(Session(figure, StrengthSheet.default(figure)))
+    return Target("worksheet", [seed], lambda text: parse_worksheet(str(text), "w.json"))
+
+
+def _sample() -> Target:
+    from sass_tui.model.files.sample_file import read_sample
+
+    plausible = "stature,mass[lb],gender,age,WTMECPRP\n" + "".join(
+        f"{150 + 3 * i},{110 + 7 * i},{'male' if i % 2 else 'female'},{20 + i},{1000 * (i + 1)}\n"
+        for i in range(12)
+    )
+    seeds = [plausible, "stature[in],mass\n64 in,60\n70,80 kg\n"]
+
+    def run(text: object) -> object:
+        return read_sample(str(text), ("stature", "mass"), "s.csv", weight=None)
+
+    return Target("sample", seeds, run)
+
+
+POSTURE_SEED = (
+    '{"l_metacarpophalangeal_3": [0.3, 1.0, 0.4], "l_radiocarpal": [0.3, 1.0, 0.3], '
+    '"l_elbow": [0.25, 1.1, 0.1], "l_shoulder": [0.2, 1.4, 0.0], '
+    '"r_metacarpophalangeal_3": [-0.3, 1.0, 0.4], "r_radiocarpal": [-0.3, 1.0, 0.3], '
+    '"r_elbow": [-0.25, 1.1, 0.1], "r_shoulder": [-0.2, 1.4, 0.0], '
+    '"vc7": [0.0, 1.45, -0.05], "vl5": [0.0, 1.0, 0.0]}'
+)
+
+
+def _verb(verb: str, seeds: list[str], database: bool) -> Target:
+    """A verb run as a user runs it: the input is its arguments (one a line;
+    a posture file's text after a line `--posture`)."""
+    from sass_tui.cli import main
+
+    if database:  # built now (seconds), not in the first input's time limit
+        DATABASES.default_file()
+
+    def run(text: object) -> object:
+        lines = str(text).split("\n")
+        argv = [verb, *(["--db", str(DATABASES.default_file())] if database else [])]
+        with tempfile.TemporaryDirectory() as tmp:
+            if "--posture" in lines:
+                at = lines.index("--posture")
+                posture = Path(tmp) / "p.json"
+                posture.write_text("\n".join(lines[at + 1 :]), errors="surrogatepass")
+                lines = [*lines[:at], "--posture", str(posture)]
+            # What the verb prints is its answer, not a stray library's line.
+            with (
+                contextlib.redirect_stdout(io.StringIO()),
+                contextlib.redirect_stderr(io.StringIO()),
+            ):
+                try:
+                    status = main([*argv, *(line for line in lines if line)])
+                except SystemExit as exc:  # argparse's own refusal: a usage message, exit 2
+                    status = exc.code
+        if status not in (0, 1, 2):
+            raise AssertionError(f"sass {verb} exited {status}")
+        if status == 2:
+            raise _Refused(verb)
+        return status
+
+    return Target(verb, seeds, run)
+
+
+class _Refused(SassError):
+    """A verb that printed its one-line error and exited 2."""
+
+
+def _stats() -> Target:
+    seeds = [
+        "stature\nmass\n--percentiles\n5,50,95",
+        "--target\nnhanes-2017-2020\nsittingheight\n--unit\nin",
+        "--virtual\nnhanes-2017-2020\n--gender\nfemale\n--format\njson\nstature",
+        "--query\nstature > 180 cm\n--format\ncsv\nmass",
+    ]
+    return _verb("stats", seeds, database=True)
+
+
+def _task() -> Target:
+    seeds = [
+        "--left-load\n60N\nshoulder_y=45\nelbow_y=30",
+        "--right-load\n15 lbf\n--right-direction\nforward\n--gender\nfemale\nknee_y=20",
+        "--target\nnhanes-2017-2020\n--left-load\n40\nhip_y=30",
+        "--mass\n70 kg\n--stature\n175 cm\n--format\njson\n--right-load\n20N",
+    ]
+    return _verb("task", seeds, database=True)
+
+
+def _arm_force() -> Target:
+    seeds = [
+        f"arm_force\n--direction\nup\n--posture\n{POSTURE_SEED}",
+        f"arm_force\n--side\nleft\n--direction=-0.2,-0.3,0.9\n--posture\n{POSTURE_SEED}",
+    ]
+    return _verb("strength", seeds, database=False)
+
+
 TARGET_MAKERS: dict[str, Callable[[], Target]] = {
     "population": _population,
     "strength": _strength,
@@ -527,6 +648,11 @@ TARGET_MAKERS: dict[str, Callable[[], Target]] = {
     "population_file": _population_file,
     "strength_file": _strength_file,
     "ids_file": _ids_file,
+    "worksheet": _worksheet,
+    "sample": _sample,
+    "stats": _stats,
+    "task": _task,
+    "arm_force": _arm_force,
 }
 _BUILT: dict[str, Target] = {}
 

@@ -12,23 +12,17 @@ import runpy
 import numpy as np
 
 from sass_tui.model import datasets
-from tests._paths import ROOT, SHARED
-
-PUBLISHED = SHARED / "data" / "nhanes" / "nhanes_p_demo_bmx_2020.csv"
+from tests._paths import NHANES_CSV, ROOT, nhanes_lines, shared_file
 
 
 def published_rows() -> list[dict[str, str]]:
-    lines = [
-        line
-        for line in PUBLISHED.read_text(encoding="utf-8").splitlines()
-        if not line.startswith("#")
-    ]
+    lines = nhanes_lines()
     return list(csv.DictReader(lines))
 
 
 def test_the_script_regenerates_the_shipped_file_byte_for_byte(tmp_path):
     script = runpy.run_path(str(ROOT / "scripts" / "make_nhanes.py"))
-    script["main"]([str(PUBLISHED), str(tmp_path / "out.csv.gz")])
+    script["main"]([str(shared_file(NHANES_CSV)), str(tmp_path / "out.csv.gz")])
     # The CSV inside, byte for byte: the compressed bytes depend on the zlib
     # Python was built with (3.11's and 3.13's differ here).
     made = gzip.decompress((tmp_path / "out.csv.gz").read_bytes())

@@ -12,7 +12,7 @@ from sass_tui.model.files.popfile import (
     parse_population_text,
     read_population_file,
 )
-from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS
+from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
 
 GIRTH_TEXT = (DATASETS / "girth.dat").read_text()
 
@@ -147,3 +147,22 @@ def test_a_refused_file_leaves_the_figure_as_it_was(tmp_path):
 def test_missing_file_is_a_clear_error(tmp_path):
     with pytest.raises(PopulationFileError, match="cannot read"):
         read_population_file(tmp_path / "nope.dat", GIRTH)
+
+
+@pytest.mark.parametrize(
+    ("row", "message"),
+    [
+        ("164.8 175.5 1e6 /* stature */\n62.6 82.2 107.6 /* mass */",
+         "g.dat:3: male stature 1e+06 cm is not a human one; expected 50-300 cm"),
+        ("1.6 1.75 1.87 /* stature */\n62.6 82.2 107.6 /* mass */",
+         "g.dat:3: male stature 1.6 cm is not a human one"),
+        ("164.8 175.5 187 /* stature */\n62.6 82.2 -5 /* mass */",
+         "g.dat:4: male mass -5 kg is not a human one; expected 0-500 kg"),
+    ],
+)  # fmt: skip
+def test_a_global_file_s_statures_and_masses_are_human_ones(row, message):
+    """A global file's stature of 1e6 cm went on into the exported body's
+    mesh (8.7 GB); it is refused as a typed one is, at its line."""
+    with pytest.raises(PopulationFileError) as caught:
+        parse_population_text(f"C g\nT MALE\n{row}\n", GLOBAL, "g.dat")
+    assert str(caught.value).startswith(message)

@@ -48,6 +48,13 @@ def test_survey_names_are_the_persons_stature_and_mass():
         ("measure.sitingheight,stature,mass\n1,2,3\n", "s.csv:1: column 1", "sittingheight"),
         ("stature,stature[in],mass\n1,2,3\n", "s.csv:1: column 2", "repeats column 1"),
         ("", "s.csv:1", "empty"),
+        (
+            "stature,mass\n1e6,60\n",
+            "s.csv:2: column 1 'stature'",
+            "stature 1e+06 cm is not a human one",
+        ),
+        ("stature,mass\n1.9,60\n", "s.csv:2: column 1 'stature'", "expected 50-300 cm"),
+        ("stature,mass\n160,6e4\n", "s.csv:2: column 2 'mass'", "mass 60000 kg is not a human one"),
     ],
 )
 def test_bad_samples_say_where(text, where, says):

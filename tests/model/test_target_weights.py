@@ -11,6 +11,7 @@ from hypothesis import strategies as st
 from sass_tui.model.population.targets import (
     CUT_PERCENTILES,
     TargetError,
+    _features,
     calibrate,
     kish_effective_n,
     weighted_percentile,
@@ -125,3 +126,15 @@ def test_too_few_rows_are_refused():
     base, sample = _base_and_sample(shift=1)
     with pytest.raises(TargetError, match="at least 30"):
         calibrate(["stature", "mass"], base, sample[:29], where="s.csv")
+
+
+def test_cuts_made_fewer_by_very_unequal_weights_still_give_features():
+    """A 60-row sample whose survey weights differ by 10^12 makes quartiles
+    coincide, np.unique leaves two cuts of five, and the pair's joint shares
+    raised IndexError; they are asked of the cuts both fields still have."""
+    x = np.random.default_rng(3).normal(170, 8, (50, 2))
+    cuts = [np.array([160.0, 175.0]), np.array([150.0, 160.0, 170.0, 180.0, 190.0])]
+    g = _features(x, x.mean(axis=0), x.std(axis=0), cuts)
+    # 2 z, 3 products, 2 + 5 cuts, the pair below both of cut 1 (the only shared quartile)
+    assert g.shape == (50, 2 + 3 + 7 + 1)
+    assert np.array_equal(g[:, -1], ((x[:, 0] <= 175.0) & (x[:, 1] <= 160.0)).astype(float))

@@ -19,6 +19,7 @@ from sass_tui.model.files.worksheet import (
     apply_strength,
     parse_worksheet,
     read_worksheet,
+    read_worksheet_and_strength,
     worksheet_text,
 )
 from sass_tui.model.names import AXES_OF, CENTER_OF_MASS, GIRTH, GROUPS, JOINT_LIMITS, row_index
@@ -213,3 +214,91 @@ def test_any_damage_is_a_worksheet_error_or_opens(path, value):
 @functools.cache
 def saved_text() -> str:
     return worksheet_text(edited_session())
+
+
+@pytest.mark.parametrize(
+    ("change", "expected"),
+    [
+        (lambda d: d["figure"].update(stature=1e308), "figure.stature: stature 1e+308 cm is not a human one"),
+        (lambda d: d["figure"].update(stature=-170), "figure.stature: stature -170 cm is not a human one"),
+        (lambda d: d["figure"].update(mass=0), "figure.mass: mass 0 kg is not a human one"),
+        (lambda d: d["figure"].update(stature_percentile=500), "figure.stature_percentile: expected a percentile"),
+        (lambda d: d["figure"].update(motion_speed=-1), "figure.motion_speed: expected a number of at least 0"),
+        (lambda d: d.update(format_version=True), "format_version True: this sass opens version 1"),
+        (lambda d: d.update(format_version=1.0), "format_version 1.0: this sass opens version 1"),
+        (lambda d: d["figure"]["landmarks"].update(stature=1e6), "figure.landmarks.stature: expected a number 0-300 cm"),
+        (lambda d: d["groups"]["girth"]["values"][ARM].__setitem__(2, 1e9),
+         f"groups.girth.values[{ARM}][2]: expected a number of at most 300 in size"),
+        (lambda d: d["groups"]["girth"]["percentile"].__class__ and d["groups"]["girth"].update(percentile=100),
+         "groups.girth.percentile: expected a percentile between 0 and 100"),
+        (lambda d: d["global_statistics"]["by_gender"]["male"][0][0].__setitem__(2, 250.0)
+         or d["global_statistics"]["by_gender"]["male"][1][0].__setitem__(1, 5e3),
+         "global_statistics.by_gender.male[1]: mass 5000 kg is not a human one"),
+        (lambda d: d["global_statistics"]["by_gender"]["male"][1][0].__setitem__(1, 0),
+         "global_statistics.by_gender.male[1]: mass 0 kg is not a human one"),
+        (lambda d: d["strength"].update(percentile=-3), "strength.percentile: expected a percentile"),
+        (lambda d: d["strength"].update(non_dominant_factor=9), "strength.non_dominant_factor: expected a number 0-2"),
+    ],
+)  # fmt: skip
+def test_every_number_is_checked_as_a_typed_one_is(change, expected):
+    """A worksheet is what engineers hand each other: its numbers are checked
+    as typed ones are (a stature of 1e308 drew a ruler of 11 GB)."""
+    document = json.loads(saved_text())
+    change(document)
+    with pytest.raises(WorksheetError) as caught:
+        parse_worksheet(json.dumps(document), "day.json")
+    assert str(caught.value).startswith("day.json: ")
+    assert expected in str(caught.value)
+
+
+@pytest.mark.parametrize(
+    ("swap", "expected"),
+    [
+        ('"stature": NaN', "figure.stature: expected a finite number, not NaN"),
+        ('"stature": Infinity', "figure.stature: expected a finite number, not Infinity"),
+        ('"stature": 1e400', "figure.stature: expected a finite number"),
+        ('"stature": 1' + "0" * 1000, "figure.stature: expected a finite number, not 1000"),
+        ('"stature": 1' + "0" * 5000, "not a sass worksheet (JSON: Exceeds the limit"),
+        (
+            '"stature": ' + "[" * 100_000 + "]" * 100_000,
+            "not a sass worksheet (JSON: nested too deep)",
+        ),
+    ],
+)
+def test_numbers_json_allows_but_no_figure_has_are_refused(swap, expected):
+    text = saved_text()
+    stature = json.dumps(json.loads(text)["figure"]["stature"])
+    changed = text.replace(f'"stature": {stature}', swap, 1)
+    assert changed != text
+    with pytest.raises(WorksheetError) as caught:
+        parse_worksheet(changed, "day.json")
+    assert str(caught.value).startswith("day.json")
+    assert expected in str(caught.value)
+    assert len(str(caught.value)) < 200
+
+
+@pytest.mark.parametrize(
+    ("named", "refused"),
+    [
+        ("/etc/hostname", "give a name inside"),
+        ("../../etc/hostname", "'..' is refused"),
+        ("strength.dat", None),
+        ("{workdir}/strength.dat", None),
+    ],
+)
+def test_a_served_worksheet_reads_only_files_inside_the_workdir(tmp_path, named, refused):
+    """A worksheet handed to a served session named /etc/shadow as its
+    strength file, and its first word was shown to the web user."""
+    workdir = tmp_path / "work"
+    workdir.mkdir()
+    shipped = read_strength_file()
+    (workdir / "strength.dat").write_text(open(shipped.path, encoding="utf-8").read())
+    document = json.loads(saved_text())
+    document["strength"]["file"] = named.format(workdir=workdir)
+    sheet = workdir / "w.json"
+    sheet.write_text(json.dumps(document))
+    _, strength, unread = read_worksheet_and_strength(sheet, workdir)
+    if refused is None:
+        assert unread is None and strength is not None
+    else:
+        assert strength is None and refused in str(unread) and str(workdir) in str(unread)

@@ -98,6 +98,7 @@ def test_another_sites_page_is_refused_before_a_process_starts(server):
         ("/ws", {**UPGRADE, "Origin": "http://evil.example"}),
         ("/ws", {**UPGRADE, "Origin": f"http://localhost:{server.port + 1}"}),
         ("/ws", {**UPGRADE, "Origin": server.origin, "Sec-Fetch-Site": "cross-site"}),
+        ("/ws", UPGRADE),  # no Origin: no browser's page (it was accepted with the token)
         ("/download/0123456789abcdef", {"Origin": "http://evil.example"}),
         ("/download/0123456789abcdef", {"Sec-Fetch-Site": "cross-site"}),
     ):
@@ -198,6 +199,8 @@ def test_a_served_session_starts_in_the_working_directory(tmp_path):
         asyncio.run(scenario())
     finally:
         served.stop()
+    # Nothing saved in it: the folder this run made goes with it (every run left one).
+    assert not workdir.exists()
 
 
 def sass_serve(*options: str, cwd: Path) -> subprocess.CompletedProcess:

@@ -16,6 +16,7 @@ from sass_tui.db.populations.population import population_of
 from sass_tui.db.populations.shipped import load_weights
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.files.popfile import PopulationData
+from sass_tui.model.text import printable
 
 
 def person_figure(args: argparse.Namespace, population: Figure) -> Figure:
@@ -45,6 +46,8 @@ def named_person_record(args: argparse.Namespace) -> dict[str, object]:
     """The database record (gender, age, mass, stature, ...) of the person `--person` names."""
     conn = open_db(args)
     try:
-        return person_record(conn, find_person(conn, args.person))
+        record = person_record(conn, find_person(conn, args.person))
     finally:
         conn.close()
+    # A stored name may hold ESC and BEL (a shared database, an older file).
+    return {**record, "name": printable(record["name"])}

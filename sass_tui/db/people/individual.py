@@ -197,7 +197,7 @@ def find_person(conn: sqlite3.Connection, key: str) -> int:
         if dialect_of(conn) == "sqlite"
         else f"lower(name) = lower({m})"
     )
-    if text.isdigit():
+    if text.isascii() and text.isdigit() and int(text) < 2**63:  # SQLite's INTEGER
         row = conn.execute(f"SELECT id_num FROM person WHERE id_num = {m}", (int(text),)).fetchone()
         if row is not None:
             return int(row[0])

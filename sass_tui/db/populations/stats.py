@@ -118,7 +118,16 @@ def stats_table(
 ) -> StatsTable:
     """The table of `fields` (query-language names) over the people `query`
     selects (of `gender`; of the target's or virtual population's people,
-    weighted, with `weights`)."""
+    weighted, with `weights`).  A `unit` no field is shown in (`--unit kg`
+    of lengths alone) is refused rather than passed over in silence."""
+    if unit is not None and fields and all(shown_unit(f, unit) != unit for f in fields):
+        kind = "mass" if field_unit(fields[0]) == "kg" else "length"
+        other = "length" if kind == "mass" else "mass"
+        raise StatsError(
+            f"--unit {unit} is a unit of {other}, and no measure asked is a {other} "
+            f"({fields[0].removeprefix('measure.')} is a {kind}); give a unit of {kind}",
+            where=unit,
+        )
     where = stats_query(query, gender, weights)
     values = load_values(conn, list(fields), where)
     w = np.ones(len(values)) if weights is None else weights.of(values.ids)

@@ -199,6 +199,15 @@ def check_name(name: str) -> str:
             "without spaces at either end",
             where=printable(name),
         )
+    if name.startswith(
+        VIRTUAL_PREFIX
+    ):  # the virtual population's own name: a target is real people
+        raise TargetError(
+            f"target name {printable(name)!r}: {VIRTUAL_PREFIX!r} begins the name of a virtual "
+            f"population (`sass target NAME --virtual` makes {VIRTUAL_PREFIX}NAME); name the "
+            "target without it",
+            where=printable(name),
+        )
     return name
 
 
@@ -269,7 +278,7 @@ def make_target(
         gender=gender,
         population=chosen.text,
         fields=tuple(sample.fields),
-        sample=sample_name,
+        sample=printable(sample_name),  # a file's name may hold ESC: shown by every verb
         sample_rows=sum(w.sample_rows for w in weightings.values()),
         people=people,
         effective_n=kish_effective_n(weights),
@@ -287,6 +296,8 @@ def _gender_shares(sample: Sample, genders: tuple[str, ...]) -> dict[str, float]
     of = np.array(sample.genders, dtype=object)
     w = sample.row_weights
     total = float(w.sum())
+    if not total > 0:  # a header alone, or blank lines
+        raise TargetError("the sample has no rows; a target of both genders needs both")
     shares = {g: float(w[of == g].sum()) / total for g in genders}
     empty = [g for g, share in shares.items() if share <= 0]
     if empty:
@@ -365,27 +376,41 @@ _COLUMNS = (
 
 def _target(row: Sequence[Any]) -> Target:
     name, gender, population, fields, sample, rows, people, effective_n, summary, created = row
+    # Every text made printable here, where a target is read: a shared
+    # PostgreSQL database or an older file may hold a sample file's name with
+    # ESC and BEL, which target --list, stats, task, fit, query --count,
+    # population (and its .dat files) and the Stats screen printed raw.
     return Target(
-        name=name,
-        gender=gender,
-        population=population,
-        fields=tuple(json.loads(fields)),
-        sample=sample,
+        name=printable(name),
+        gender=printable(gender),
+        population=printable(population),
+        fields=tuple(printable(f) for f in json.loads(fields)),
+        sample=printable(sample),
         sample_rows=int(rows),
         people=int(people),
         effective_n=float(effective_n),
         summary=json.loads(summary),
-        created=created,
-        weighted_by=json.loads(summary).get(WEIGHTED_BY),
+        created=printable(created),
+        weighted_by=None if (by := json.loads(summary).get(WEIGHTED_BY)) is None else printable(by),
     )
 
 
 def _unknown(conn: sqlite3.Connection, name: str) -> UnknownTargetError:
-    names = [t.name for t in list_targets(conn)]
-    known = f"; the targets are {', '.join(names)}" if names else "; none is stored yet"
+    """No target (or, named `virtual:NAME`, no virtual population) `name`:
+    the message names those of its kind, without the prefix the user never typed."""
+    virtual = name.startswith(VIRTUAL_PREFIX)
+    names = [
+        t.name.removeprefix(VIRTUAL_PREFIX) for t in list_targets(conn) if t.is_virtual == virtual
+    ]
+    kind, make = (
+        ("virtual population", "`sass target NAME --virtual`")
+        if virtual
+        else ("target", "`sass target`")
+    )
+    known = f"; the {kind}s are {', '.join(names)}" if names else "; none is stored yet"
+    shown = printable(name.removeprefix(VIRTUAL_PREFIX))
     return UnknownTargetError(
-        f"no target named {printable(name)!r}{known} (make one with `sass target`)",
-        where=printable(name),
+        f"no {kind} named {shown!r}{known} (make one with {make})", where=shown
     )
 
 

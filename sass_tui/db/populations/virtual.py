@@ -48,7 +48,6 @@ from sass_tui.db.populations.targets import (
     check_name,
     insert_target,
     make_target,
-    store_target,
     target_exists,
 )
 from sass_tui.db.progress import Progress
@@ -292,13 +291,20 @@ def store_shipped_in(conn: sqlite3.Connection, progress: Progress | None = None)
     return len(population.weights)
 
 
-def store_shipped(conn: sqlite3.Connection) -> None:
-    """Make and store the shipped target and virtual population in a
-    database that lacks them (one built before `sass db init` made them, or
-    by imports alone), each in its own transaction, on either engine."""
-    weights, population = make_shipped(conn)
-    store_target(conn, weights, replace=True)
-    store_virtual(conn, population)
+def store_target_and_virtual(
+    conn: sqlite3.Connection, weights: TargetWeights, population: VirtualPopulation
+) -> None:
+    """A target's real people's weights and the virtual population made from
+    the same sample in one transaction, on either engine: a kill or a full
+    disk between the two stores neither (they were two, and a target was
+    left without its people).  On PostgreSQL the staged people's copy
+    (db/engine/postgres.py's import_staged) nests in this transaction."""
+    with writing(conn):
+        insert_target(conn, weights)
+        if dialect_of(conn) == "sqlite":
+            store_virtual_in(conn, population)
+        else:
+            store_virtual(conn, population)
 
 
 def within_range(conn: sqlite3.Connection, weights: TargetWeights) -> TargetWeights:

@@ -80,6 +80,7 @@ from sass_tui.db.query.query_tree import (
     to_sql,
 )
 from sass_tui.db.query.scope import demonstration_query, demonstration_tree, real_only
+from sass_tui.model.body.human import not_human
 from sass_tui.model.errors import SassError
 from sass_tui.model.measures import MEASURE_UNITS, suggest
 from sass_tui.model.units import LARGEST_NUMBER, UnitError, convert, unit_name
@@ -647,6 +648,28 @@ def joined(*queries: str | ParsedQuery, text: str | None = None) -> ParsedQuery:
         text = " AND ".join(f"({part.text})" for part in parts)
     terms = tuple((f"({' '.join(part.text.split())})", part.tree) for part in parts)
     return ParsedQuery(text, And(tuple(part.tree for part in parts)), terms, None)
+
+
+def unlikely_numbers(expr: Expr) -> list[str]:
+    """A note for each stature or mass the query compares with a number no
+    human has (model/body/human.py): `stature <= 1.9` asks for 1.9 cm and
+    answers 0 % without a word; the note says which unit was likely meant."""
+    notes = []
+    for c in expr.comparisons():
+        if c.table != PERSON_TABLE or c.column not in ("stature", "mass"):
+            continue
+        if isinstance(c.value, str) or not (refused := not_human(c.column, float(c.value))):
+            continue
+        value = float(c.value)
+        if c.column == "stature":
+            meant = f"{value:g} m" if 0 < value < 3 else f"{value:g} mm" if value > 300 else ""
+        else:
+            meant = f"{value:g} g" if value > 500 else ""
+        if meant:  # `mass > 0`, a bound no one lies beyond, is no mistake
+            notes.append(
+                f"note: {c.field} {c.op} {value:g}: {refused}; did you mean `{c.field} {c.op} {meant}`?"
+            )
+    return notes
 
 
 def parse_query(text: str) -> Expr:

@@ -47,6 +47,9 @@ if TYPE_CHECKING:
 AROUND = 32
 # The greatest distance (m) between neighbouring rings of a part.
 RING_SPACING = 0.02
+# The most rings _dense puts between two: 3 m (model/body/human.py's farthest
+# joint) at RING_SPACING.
+MAX_RINGS_BETWEEN = 150
 # Superellipse exponents: 2 is an ellipse; the solver keeps n in this range.
 _N_MIN, _N_MAX = 1.2, 12.0
 
@@ -469,7 +472,11 @@ def _dense(rings: list[np.ndarray]) -> list[np.ndarray]:
     out = [rings[0]]
     for lower, upper in zip(rings, rings[1:], strict=False):
         gap = float(np.linalg.norm(upper.mean(axis=0) - lower.mean(axis=0)))
-        steps = max(1, math.ceil(gap / RING_SPACING))
+        # At most MAX_RINGS_BETWEEN however far apart: a stature of 1e6 cm
+        # asked for millions of rings (8.7 GB); no human gap needs more.
+        steps = (
+            min(max(1, math.ceil(gap / RING_SPACING)), MAX_RINGS_BETWEEN) if gap < math.inf else 1
+        )
         out += [lower + (upper - lower) * (k / steps) for k in range(1, steps + 1)]
     return out
 

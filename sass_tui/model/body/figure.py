@@ -19,6 +19,7 @@ from types import ModuleType
 from typing import TYPE_CHECKING
 
 from sass_tui.model import datasets
+from sass_tui.model.body.human import not_human
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.popfile import (
     PopulationData,
@@ -47,15 +48,12 @@ from sass_tui.model.population.percentile import (
     grid_at,
     plausible_range,
 )
+from sass_tui.model.text import printable
 from sass_tui.model.units import GROUP_UNITS
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS, HANDEDNESS, STRENGTH_TYPES
 
 if TYPE_CHECKING:
     import numpy as np
-
-# A stature outside these is a typing error (2 for 200, metres for cm), not a person.
-MIN_STATURE_CM = 50.0
-MAX_STATURE_CM = 300.0
 
 
 class FigureError(ValueError, SassError):
@@ -238,6 +236,13 @@ class Figure:
         survey's names: model/body/landmarks.py)."""
         arrays = _arrays()
         gender = _check_choice(gender, GENDERS, "gender")
+        # A stored name may hold ESC or BEL (a shared database, an older file):
+        # it goes on into task and strength output, .fig comments and X3D.
+        name = printable(name)
+        for what, size in (("stature", stature), ("mass", mass)):
+            refused = None if math.isnan(size) else not_human(what, size)
+            if refused:  # a stored stature of 1e6 cm made an export of 4.5 GB
+                raise FigureError(f"{name}: {refused}")
         person = Figure(
             gender=gender,
             figure_type=self.figure_type,
@@ -293,6 +298,8 @@ class Figure:
     def set_mass(self, kg: float) -> None:
         if not kg > 0:
             raise FigureError(f"mass must be positive, got {kg:g} kg")
+        if refused := not_human("mass", kg):
+            raise FigureError(refused)
         self.mass = float(kg)
         self.mass_percentile = _global_percentile(self.global_stats, self.gender, "mass", kg)
 
@@ -302,11 +309,8 @@ class Figure:
         self.mass = _global_value(self.global_stats, self.gender, "mass", p)
 
     def set_stature(self, cm: float) -> None:
-        if not MIN_STATURE_CM <= cm <= MAX_STATURE_CM:
-            raise FigureError(
-                f"stature {cm:g} cm is not a human one; expected "
-                f"{MIN_STATURE_CM:g}-{MAX_STATURE_CM:g} cm"
-            )
+        if refused := not_human("stature", cm):
+            raise FigureError(refused)
         self.stature = float(cm)
         self.stature_percentile = _global_percentile(self.global_stats, self.gender, "stature", cm)
 

@@ -332,4 +332,6 @@ def read_posture_file(path: str | Path) -> Posture:
     except ValueError as exc:
         line = getattr(exc, "lineno", 1)
         raise PostureError(f"{read}:{line}: not JSON: {exc}") from None
+    except RecursionError:  # [[[... 100,000 deep
+        raise PostureError(f"{read}: not JSON sass reads: nested too deep") from None
     return check_posture(raw, str(read))

@@ -33,6 +33,7 @@ from sass_tui.model.names import (
     center_of_mass_variable,
     joint_limit_variable,
 )
+from sass_tui.model.text import printable
 
 if TYPE_CHECKING:
     from sass_tui.model.body.figure import Figure
@@ -126,8 +127,14 @@ def _whose_stature_and_mass(figure: Figure) -> str:
         return ""
     return (
         f" (mass percentile {figure.mass_percentile:g}, stature percentile "
-        f"{figure.stature_percentile:g} of {figure.global_stats.title})"
+        f"{figure.stature_percentile:g} of {_comment(figure.global_stats.title)})"
     )
+
+
+def _comment(text: str) -> str:
+    """A name for a /* comment */: printable (a stored name may hold ESC and
+    BEL), and no `*/` that would end the comment early."""
+    return printable(text).replace("*/", "* /")
 
 
 def render_fig(figure: Figure, extra_sections: Sequence[FigSection] = ()) -> str:
@@ -137,7 +144,7 @@ def render_fig(figure: Figure, extra_sections: Sequence[FigSection] = ()) -> str
             f"cannot create a figure: {', '.join(missing)} not loaded for {figure.gender}"
         )
     groups = figure.groups
-    who = figure.person or figure.population
+    who = _comment(figure.person or figure.population)
     lines = [
         "/* body description file written by sass */",
         f"/* {who}; {figure.gender}; figure type {figure.figure_type} */",
@@ -161,7 +168,7 @@ def render_fig(figure: Figure, extra_sections: Sequence[FigSection] = ()) -> str
     if counts:
         lines.append(
             f"/* not measured for {who}, so taken from the population "
-            f"({figure.population}): {'; '.join(counts)} */"
+            f"({_comment(figure.population)}): {'; '.join(counts)} */"
         )
     joints = person_joint_lengths(figure)
     if joints:

@@ -17,6 +17,7 @@ from sass_tui.model.body.body_surface import SKIN, BodyMesh, body_mesh, figure_s
 from sass_tui.model.body.hanim import LOA1, HAnimError, Humanoid, Site, build_humanoid
 from sass_tui.model.files.atomic import write_text_atomic
 from sass_tui.model.names import GIRTH
+from sass_tui.model.text import xml_safe
 
 if TYPE_CHECKING:
     from sass_tui.model.body.figure import Figure
@@ -235,7 +236,7 @@ def scene_document(humanoids: list[tuple[ET.Element, float]], title: str, height
         else:
             scene.append(element)
     ET.indent(x3d)
-    body = ET.tostring(x3d, encoding="unicode")
+    body = xml_safe(ET.tostring(x3d, encoding="unicode"))
     return (
         '<?xml version="1.0" encoding="UTF-8"?>\n'
         '<!DOCTYPE X3D PUBLIC "ISO//Web3D//DTD X3D 4.0//EN" '

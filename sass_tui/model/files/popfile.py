@@ -29,6 +29,7 @@ from sass_tui.model.body.appendix_l import (
     lower_leg_center,
     toes_implied,
 )
+from sass_tui.model.body.human import not_human
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.paths import PathError, read_user_text
 from sass_tui.model.floats import divide, median
@@ -195,6 +196,7 @@ def parse_population_text(text: str, group: str, name: str = "<text>") -> Popula
             entries, gender, group, lookup, name, section_line, data.warnings
         )
     _refuse_negative_sizes(data, name)
+    _refuse_inhuman_globals(data, name)
     _check_rows(data, name)
     _check_cross_gender(data, name)
     return data
@@ -216,6 +218,22 @@ def _refuse_negative_sizes(data: PopulationData, name: str) -> None:
                         f"{name}:{data.lines[gender][i]}: {row.label} {axis}: "
                         f"{'/'.join(f'{v:g}' for v in cell)} cm; a segment size cannot "
                         "be negative; nothing was loaded"
+                    )
+
+
+def _refuse_inhuman_globals(data: PopulationData, name: str) -> None:
+    """A global file's statures and masses pass the check a typed one does
+    (model/body/human.py): a stature of 1e6 cm went on into the body's mesh
+    (gigabytes, minutes)."""
+    if data.group != GLOBAL:
+        return
+    for gender in data.sections:
+        for i, row in enumerate(ROWS[GLOBAL]):
+            for value in data.cell(gender, i, 0):
+                refused = None if math.isnan(value) else not_human(row.name, value)
+                if refused:
+                    raise PopulationFileError(
+                        f"{name}:{data.lines[gender][i]}: {gender} {refused}; nothing was loaded"
                     )
 
 

@@ -27,6 +27,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from sass_tui.model.body.human import MAX_STATURE_CM, not_human
 from sass_tui.model.errors import SassError
 from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.population.prediction import field_unit
@@ -270,4 +271,15 @@ def _cell(
             f"{place}: column {c + 1} {name!r}: {quoted(text)}: a {field} must be greater than 0",
             where=place,
         )
+    # The check a typed stature or mass gets (model/body/human.py); no other
+    # measure of a body is longer than its tallest stature.
+    if canonical == "kg" or field == "stature":
+        refused = not_human("mass" if canonical == "kg" else "stature", value)
+    elif value > MAX_STATURE_CM:
+        refused = f"{field} {value:g} cm is longer than any body's ({MAX_STATURE_CM:g} cm at most)"
+    else:
+        refused = None
+    if refused:
+        place = f"{where}:{line}"
+        raise SampleError(f"{place}: column {c + 1} {name!r}: {refused}", where=place)
     return value

@@ -13,7 +13,12 @@ in deg); JSON's `null` is "no value" (999 in a population file).
 
 A file that is not a worksheet, or one whose cells do not fit the model's
 rows, is refused whole with `WorksheetError` naming the file and the field;
-nothing already open changes.
+nothing already open changes.  Every number goes through the checks a typed
+one does: finite, a stature and a mass a human's (model/body/human.py), a
+percentile between 0 and 100, a length or an angle no body has beyond
+(`LARGEST_CELL`), a version a whole number: worksheets are what engineers
+hand each other, and one with a stature of 1e308 made the figure's ruler
+take 11 GB.
 """
 
 from __future__ import annotations
@@ -26,9 +31,11 @@ from pathlib import Path
 from typing import Any
 
 from sass_tui.model.body.figure import Figure, GroupState
+from sass_tui.model.body.human import MAX_STATURE_CM, not_human
+from sass_tui.model.datasets import is_shipped
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.gltf import sass_version
-from sass_tui.model.files.paths import PathError, read_user_text
+from sass_tui.model.files.paths import PathError, inside, read_user_text
 from sass_tui.model.files.popfile import Cells, PopulationData
 from sass_tui.model.files.task_settings import (
     TaskSettings,
@@ -43,7 +50,7 @@ from sass_tui.model.strength.strength import (
     StrengthSheet,
     read_strength_file,
 )
-from sass_tui.model.units import GROUP_UNITS
+from sass_tui.model.units import GROUP_UNITS, LARGEST_NUMBER
 from sass_tui.model.vocabulary import (
     FIGURE_TYPES,
     GENDERS,
@@ -74,6 +81,12 @@ GLOBAL_WORDS = {
     "handedness": HANDEDNESS,
 }
 STRENGTH_SIDES = ("right", "left")
+# The largest size of a cell in its canonical unit: no segment, center of
+# mass or landmark is longer than the tallest stature; no joint turns more
+# than a full turn.
+LARGEST_CELL = {"cm": MAX_STATURE_CM, "deg": 360.0}
+GLOBAL_PERCENTILES = ("mass_percentile", "stature_percentile")
+HUMAN_GLOBALS = ("mass", "stature")
 
 
 class WorksheetError(ValueError, SassError):
@@ -211,10 +224,14 @@ def parse_worksheet(text: str, name: str = "<text>") -> Worksheet:
         raise WorksheetError(
             f"{name}:{exc.lineno}: not a sass worksheet (JSON: {exc.msg})"
         ) from None
+    except (ValueError, RecursionError) as exc:  # a number of 5,000 digits; [[[... 100,000 deep
+        why = "nested too deep" if isinstance(exc, RecursionError) else str(exc).split(";")[0]
+        raise WorksheetError(f"{name}: not a sass worksheet (JSON: {why})") from None
     reader = _Reader(name)
     if not isinstance(document, dict) or document.get("format") != FORMAT:
         raise WorksheetError(f'{name}: not a sass worksheet (no "format": "{FORMAT}")')
-    if document.get("format_version") != FORMAT_VERSION:
+    version = document.get("format_version")
+    if isinstance(version, bool) or not isinstance(version, int) or version != FORMAT_VERSION:
         raise WorksheetError(
             f"{name}: format_version {document.get('format_version')!r}: this sass "
             f"opens version {FORMAT_VERSION}"
@@ -228,7 +245,7 @@ def parse_worksheet(text: str, name: str = "<text>") -> Worksheet:
     for field, words in GLOBAL_WORDS.items():
         setattr(figure, field, reader.word(figure_data.get(field), f"figure.{field}", words))
     for field in GLOBAL_NUMBERS:
-        setattr(figure, field, reader.number(figure_data.get(field), f"figure.{field}"))
+        setattr(figure, field, reader.global_number(figure_data.get(field), field))
     girth_rows = {row.name for row in ROWS[GROUPS[0]]}
     lengths = reader.sequence(figure_data.get("hand_set_lengths", []), "figure.hand_set_lengths")
     figure.hand_set_lengths = frozenset(
@@ -236,7 +253,7 @@ def parse_worksheet(text: str, name: str = "<text>") -> Worksheet:
     )
     landmarks = reader.mapping(figure_data.get("landmarks", {}), "figure.landmarks")
     figure.landmarks = {
-        str(key): reader.finite(value, f"figure.landmarks.{key}")
+        str(key): reader.bounded(value, f"figure.landmarks.{key}", 0.0, MAX_STATURE_CM, "cm")
         for key, value in landmarks.items()
     }
     figure.global_stats = reader.statistics(top.get("global_statistics"), GLOBAL)
@@ -287,21 +304,59 @@ class _Reader:
             raise self.fail(field, " or ".join(f'"{w}"' for w in sorted(words)), value)
         return str(value)
 
-    def number(self, value: object, field: str) -> float:
-        """A number, or null for no value."""
+    def number(self, value: object, field: str, largest: float = LARGEST_NUMBER) -> float:
+        """A number at most `largest` in size, or null for no value."""
         if value is None:
             return float("nan")
-        return self.finite(value, field)
+        return self.finite(value, field, largest)
 
-    def finite(self, value: object, field: str) -> float:
+    def finite(self, value: object, field: str, largest: float = LARGEST_NUMBER) -> float:
         if isinstance(value, bool) or not isinstance(value, int | float):
             raise self.fail(field, "a number", value)
-        return float(value)
+        try:
+            number = float(value)
+        except OverflowError:  # an integer of 1,000 digits
+            number = math.inf
+        if not math.isfinite(number):
+            raise self.fail(field, "a finite number", value)
+        if abs(number) > largest:
+            raise self.fail(field, f"a number of at most {largest:g} in size", value)
+        return number
 
-    def grid(self, value: object, field: str, rows: int, axes: int) -> list[list[float]]:
+    def bounded(self, value: object, field: str, low: float, high: float, unit: str) -> float:
+        number = self.finite(value, field)
+        if not low <= number <= high:
+            raise self.fail(field, f"a number {low:g}-{high:g}{' ' + unit if unit else ''}", value)
+        return number
+
+    def percentile(self, value: object, field: str) -> float:
+        number = self.finite(value, field)
+        if not 0 < number < 100:
+            raise self.fail(field, "a percentile between 0 and 100", value)
+        return number
+
+    def global_number(self, value: object, name: str) -> float:
+        """One of the figure's global numbers, checked as a typed one is."""
+        field = f"figure.{name}"
+        if name in HUMAN_GLOBALS:
+            number = self.number(value, field, math.inf)
+            refused = None if math.isnan(number) else not_human(name, number)
+            if refused:
+                raise WorksheetError(f"{self.name}: {field}: {refused}")
+            return number
+        if name in GLOBAL_PERCENTILES:
+            return float("nan") if value is None else self.percentile(value, field)
+        number = self.number(value, field)
+        if number < 0:  # motion speed, training and fatigue levels (Figure.set_strength_parameter)
+            raise self.fail(field, "a number of at least 0", value)
+        return number
+
+    def grid(
+        self, value: object, field: str, rows: int, axes: int, largest: float = LARGEST_NUMBER
+    ) -> list[list[float]]:
         return [
             [
-                self.number(cell, f"{field}[{r}][{a}]")
+                self.number(cell, f"{field}[{r}][{a}]", largest)
                 for a, cell in enumerate(self.sequence(row, f"{field}[{r}]", axes))
             ]
             for r, row in enumerate(self.sequence(value, field, rows))
@@ -315,16 +370,20 @@ class _Reader:
         rows, axes = len(ROWS[group]), AXES_OF[group]
         sections: dict[str, Cells | Any] = {}
         by_gender = self.mapping(data.get("by_gender"), f"{field}.by_gender")
+        # A global file's statures and masses: not_human below.
+        largest = math.inf if group == GLOBAL else LARGEST_CELL[GROUP_UNITS[group][0]]
         for gender, cells in by_gender.items():
             where = f"{field}.by_gender.{gender}"
             self.word(gender, f"{field}.by_gender", GENDERS)
             sections[gender] = [
                 [
-                    (*self.grid([triple], f"{where}[{r}][{a}]", 1, 3)[0],)
+                    (*self.grid([triple], f"{where}[{r}][{a}]", 1, 3, largest)[0],)
                     for a, triple in enumerate(self.sequence(row, f"{where}[{r}]", axes))
                 ]
                 for r, row in enumerate(self.sequence(cells, where, rows))
             ]
+            if group == GLOBAL:
+                self._human_globals(sections[gender], where)
         return PopulationData(
             group,
             self.text(data.get("title"), f"{field}.title"),
@@ -333,6 +392,13 @@ class _Reader:
             notes=self._notes(data.get("notes", {}), f"{field}.notes"),
             row_notes=self._notes(data.get("row_notes", {}), f"{field}.row_notes"),
         )
+
+    def _human_globals(self, cells: Cells, where: str) -> None:
+        for r, row in enumerate(ROWS[GLOBAL]):
+            for value in cells[r][0]:
+                refused = None if math.isnan(value) else not_human(row.name, value)
+                if refused:
+                    raise WorksheetError(f"{self.name}: {where}[{r}]: {refused}")
 
     def _notes(self, value: object, field: str) -> dict[str, list[str]]:
         notes = self.mapping(value, field)
@@ -344,10 +410,7 @@ class _Reader:
     def group(self, state: GroupState, data: dict[str, Any]) -> None:
         field = f"groups.{state.group}"
         rows, axes = len(state.rows), AXES_OF[state.group]
-        percentile = self.finite(data.get("percentile"), f"{field}.percentile")
-        if not 0 < percentile < 100:
-            raise self.fail(f"{field}.percentile", "a percentile between 0 and 100", percentile)
-        state.percentile = percentile
+        state.percentile = self.percentile(data.get("percentile"), f"{field}.percentile")
         state.unit = self.word(data.get("unit"), f"{field}.unit", GROUP_UNITS[state.group])
         state.source = self.statistics(data.get("statistics"), state.group)
         values, percentiles = data.get("values"), data.get("percentiles")
@@ -356,15 +419,18 @@ class _Reader:
             return
         if state.source is None:
             raise self.fail(f"{field}.statistics", "the statistics its values came from", None)
-        state.values = self.grid(values, f"{field}.values", rows, axes)
-        state.percentiles = self.grid(percentiles, f"{field}.percentiles", rows, axes)
+        largest = LARGEST_CELL[GROUP_UNITS[state.group][0]]
+        state.values = self.grid(values, f"{field}.values", rows, axes, largest)
+        state.percentiles = self.grid(percentiles, f"{field}.percentiles", rows, axes, 100.0)
 
     def strength(self, value: object) -> StrengthSettings:
         data = self.mapping(value, "strength")
-        factor = self.finite(data.get("non_dominant_factor"), "strength.non_dominant_factor")
+        factor = self.bounded(
+            data.get("non_dominant_factor"), "strength.non_dominant_factor", 0.0, 2.0, ""
+        )
         rows = self.sequence(data.get("angles"), "strength.angles", len(MOTION_NAMES))
         angles = [
-            [self.finite(a, f"strength.angles[{r}][{c}]") for c, a in enumerate(row)]
+            [self.finite(a, f"strength.angles[{r}][{c}]", 360.0) for c, a in enumerate(row)]
             for r, row in enumerate(
                 self.sequence(row, f"strength.angles[{r}]", len(JOINT_AXES))
                 for r, row in enumerate(rows)
@@ -374,7 +440,7 @@ class _Reader:
             path=self.text(data.get("file"), "strength.file"),
             side=self.word(data.get("side"), "strength.side", STRENGTH_SIDES),
             unit=self.word(data.get("unit"), "strength.unit", GROUP_UNITS[STRENGTH]),
-            percentile=self.finite(data.get("percentile"), "strength.percentile"),
+            percentile=self.percentile(data.get("percentile"), "strength.percentile"),
             non_dominant_factor=factor,
             angles=angles,
         )
@@ -390,29 +456,53 @@ def apply_strength(settings: StrengthSettings, sheet: StrengthSheet) -> None:
         sheet.angles[row] = angles
 
 
+def named_file(text: str | Path, workdir: Path | None = None) -> Path:
+    """A file a worksheet names (its strength file), as the path to read.
+    In a served session (`workdir`) it must lie inside the workdir, as a
+    typed name must (paths.inside): a worksheet handed in named /etc/shadow
+    and ../../etc/hostname, and their first word was shown to the web
+    user.  A name saved there absolute is taken relative to the workdir; a
+    shipped data set (datasets/) is read wherever sass is installed."""
+    if workdir is None or is_shipped(text):
+        return Path(text)
+    if Path(text).is_absolute():
+        try:
+            text = Path(text).relative_to(workdir.resolve())
+        except ValueError:
+            pass  # refused by `inside`, naming the workdir
+    return inside(workdir, text)
+
+
 def read_worksheet_and_strength(
-    path: str | Path,
+    path: str | Path, workdir: Path | None = None
 ) -> tuple[Worksheet, StrengthData | None, SassError | OSError | None]:
-    """A worksheet and the strength file it names: that file's data, or None
-    and why it could not be read (a file moved since the worksheet was saved
-    leaves the strength page as it is; the worksheet still opens)."""
+    """A worksheet and the strength file it names (inside `workdir`, when
+    served): that file's data, or None and why it could not be read (a file
+    moved since the worksheet was saved leaves the strength page as it is;
+    the worksheet still opens)."""
     worksheet = read_worksheet(path)
     if worksheet.strength is None:
         return worksheet, None, None
     try:
-        return worksheet, read_strength_file(worksheet.strength.path), None
+        return worksheet, read_strength_file(named_file(worksheet.strength.path, workdir)), None
     except (SassError, OSError) as exc:
         return worksheet, None, exc
 
 
 def population_strength_sheet(
-    path: str | Path | None, figure: Figure, settings: StrengthSettings | None
+    path: str | Path | None,
+    figure: Figure,
+    settings: StrengthSettings | None,
+    workdir: Path | None = None,
 ) -> StrengthSheet:
     """The population's strength sheet from the strength file `path` (None:
-    the shipped datasets/strength.dat), set as a worksheet saved it, its
-    equations fitted now rather than on the first look at the page (a gender
-    the file has no data for is said when the page is shown)."""
-    sheet = StrengthSheet(read_strength_file(path), figure)
+    the shipped datasets/strength.dat; inside `workdir` when served), set as
+    a worksheet saved it, its equations fitted now rather than on the first
+    look at the page (a gender the file has no data for is said when the
+    page is shown)."""
+    sheet = StrengthSheet(
+        read_strength_file(None if path is None else named_file(path, workdir)), figure
+    )
     if settings is not None:
         apply_strength(settings, sheet)
     try:

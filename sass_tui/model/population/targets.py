@@ -198,9 +198,13 @@ def _features(
     below = [x[:, i, None] <= cuts[i][None, :] for i in range(k)]
     columns += [b.astype(float).T for b in below]
     # Each pair's joint share below both of its quartiles (25th, 50th, 75th).
+    # Very unequal survey weights make cuts coincide (np.unique leaves fewer):
+    # the pair is then asked of the cuts both still have, the same for the
+    # sample and the people (a 60-row sample raised IndexError here).
     for i in range(k):
         for j in range(i + 1, k):
-            joint = below[i][:, JOINT_CUTS] & below[j][:, JOINT_CUTS]
+            both = [c for c in JOINT_CUTS if c < min(len(cuts[i]), len(cuts[j]))]
+            joint = below[i][:, both] & below[j][:, both]
             columns.append(joint.astype(float).T)
     flat: list[FloatArray] = []
     for column in columns:

@@ -40,8 +40,10 @@ import numpy as np
 import numpy.typing as npt
 
 from sass_tui.model import datasets
+from sass_tui.model.body.human import joint_too_far
 from sass_tui.model.errors import SassError
 from sass_tui.model.population.percentile import _STANDARD
+from sass_tui.model.text import quoted
 
 FILE_NAME = "arm_force_field.json"
 CITATION = "La Delfa & Potvin 2017 (Arm Force Field)"
@@ -174,14 +176,29 @@ def check_posture(points: dict[str, object], where: str = "posture") -> Posture:
         numbers: list[float] = []
         if isinstance(value, (list, tuple)) and len(value) == 3:
             numbers = [
-                float(v) for v in value if isinstance(v, (int, float)) and not isinstance(v, bool)
+                _float(v) for v in value if isinstance(v, (int, float)) and not isinstance(v, bool)
             ]
+        shown = quoted(repr(value))
         if len(numbers) != 3:
-            raise ArmForceError(f"{where}: {name}: expected [x, y, z] in metres, got {value!r}")
+            raise ArmForceError(f"{where}: {name}: expected [x, y, z] in metres, got {shown}")
         if not all(math.isfinite(v) for v in numbers):
-            raise ArmForceError(f"{where}: {name}: {value!r} is not three finite numbers")
+            raise ArmForceError(f"{where}: {name}: {shown} is not three finite numbers")
         out[name] = np.array(numbers, dtype=float)
+    # One check of a joint's place for every verb (model/body/human.py).
+    root = POSTURE_JOINTS[-1]
+    for name in POSTURE_JOINTS:
+        refused = joint_too_far(name, float(np.linalg.norm(out[name] - out[root])), root)
+        if refused:
+            raise ArmForceError(f"{where}: {refused}")
     return out
+
+
+def _float(value: float) -> float:
+    """float(value), infinity for an integer too large for one (3,000 digits)."""
+    try:
+        return float(value)
+    except OverflowError:
+        return math.inf
 
 
 def parse_direction(text: str) -> npt.NDArray[np.float64]:

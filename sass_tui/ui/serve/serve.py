@@ -158,17 +158,23 @@ def token_matches(options: ServeOptions, given: str | None) -> bool:
 
 
 def origin_refusal(
-    options: ServeOptions, host_header: str, origin: str | None, fetch_site: str | None
+    options: ServeOptions,
+    host_header: str,
+    origin: str | None,
+    fetch_site: str | None,
+    *,
+    websocket: bool = False,
 ) -> str | None:
     """Why a WebSocket upgrade or a download does not come from this server's
     own pages, or None.  Browsers send `Origin` with every WebSocket upgrade
     (RFC 6455 §4.1) and `Sec-Fetch-Site` with every request they make (W3C
-    Fetch Metadata); a client that is not a browser (a script with the token)
-    sends neither."""
+    Fetch Metadata): an upgrade without `Origin` comes from no page of ours
+    and is refused; a download by a client that is not a browser (a script
+    with the token) sends neither and is served."""
     if fetch_site is not None and fetch_site not in ("same-origin", "none"):
         return f"Sec-Fetch-Site {fetch_site!r}: the request came from another site"
     if origin is None:
-        return None
+        return "a WebSocket upgrade without Origin (every browser sends one)" if websocket else None
     own = {f"{options.scheme}://{host_header}".lower()}
     if options.public_url:
         parts = urlsplit(options.public_url)
@@ -290,6 +296,7 @@ class SassServer(Server):
                 host,
                 request.headers.get("Origin"),
                 request.headers.get("Sec-Fetch-Site"),
+                websocket=route == "websocket",
             )
         if problem is not None:
             log.warning(

@@ -121,6 +121,8 @@ class FigureView(Vertical):
             side_right = max(side_right, side_extent(reach)[1])
             top_cm, gaps = top_extent(reach)[1] - top_extent(reach)[0], 3
         side_cm = side_right - side_left
+        if not all(math.isfinite(v) for v in (tallest, front_cm, side_cm)):
+            return  # no picture of what no figure measures (the caption says the stature)
         # Pixels per cm: the full height, unless front and side would then be
         # wider than the view (a narrow panel beside the spreadsheet).
         scale = (height - 2) / tallest
@@ -190,8 +192,9 @@ def _draw_shape(
     cx, cy = (left + right) / 2, (top + bottom) / 2
     rx, ry = max((right - left) / 2, 0.5), max((bottom - top) / 2, 0.5)
     pixels = []
-    for y in range(y0, y1 + 1):
-        for x in range(x0, x1 + 1):
+    # Only the pixels on the canvas are visited, however large the shape.
+    for y in range(max(y0, 0), min(y1, canvas.height - 1) + 1):
+        for x in range(max(x0, 0), min(x1, canvas.width - 1) + 1):
             if shape.kind == "ellipse":
                 inside = ((x - cx) / rx) ** 2 + ((y - cy) / ry) ** 2 <= 1.0
                 edge = inside and (
@@ -207,6 +210,10 @@ def _draw_shape(
 
 
 def _draw_ruler(canvas: Canvas, x: int, floor: int, scale: float, tallest: float) -> None:
+    # The ticks on the canvas only: a figure 1e308 cm tall drew 1e307 ticks.
+    if not (math.isfinite(tallest) and scale > 0):
+        return
+    tallest = min(tallest, floor / scale)
     top = floor - round(tallest * scale)
     pixels = [(x, y) for y in range(max(top, 0), floor + 1)]
     for cm in range(0, int(tallest) + 1, 10):

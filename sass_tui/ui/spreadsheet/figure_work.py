@@ -68,12 +68,16 @@ class FigureWork:
 
     # --- the strength sheet and its data -----------------------------------------
     def strength_sheet(
-        self, path: str | Path | None, figure: Figure, settings: StrengthSettings | None
+        self,
+        path: str | Path | None,
+        figure: Figure,
+        settings: StrengthSettings | None,
+        workdir: Path | None = None,
     ) -> tuple[StrengthSheet | None, str]:
         """The population's strength sheet from `path` (None =
-        datasets/strength.dat), or None and why."""
+        datasets/strength.dat; inside `workdir` when served), or None and why."""
         try:
-            return population_strength_sheet(path, figure, settings), ""
+            return population_strength_sheet(path, figure, settings, workdir), ""
         except (SassError, OSError) as exc:
             return None, f"Strength data is not loaded ({exc}); SASS runs without it."
 
@@ -146,9 +150,9 @@ class FigureWork:
         return worksheet_text(session)
 
     def read_worksheet_and_strength(
-        self, path: Path
+        self, path: Path, workdir: Path | None = None
     ) -> tuple[Worksheet, StrengthData | None, SassError | OSError | None]:
-        return read_worksheet_and_strength(path)
+        return read_worksheet_and_strength(path, workdir)
 
     def open_worksheet(
         self, session: Session, worksheet: Worksheet, strength: StrengthData | None

@@ -115,7 +115,9 @@ class WorksheetCommands(FileCommands):
     def read_worksheet_file(self, path: Path) -> None:
         figure_work = self.sass_app.figure_work
         try:
-            worksheet, strength, unread = figure_work.read_worksheet_and_strength(path)
+            worksheet, strength, unread = figure_work.read_worksheet_and_strength(
+                path, self.sass_app.workdir
+            )
         except (SassError, OSError) as exc:
             self.post_message(WorkerSaid(f"{exc}; the sheet is unchanged.", "error"))
             return
