@@ -13,15 +13,15 @@ from functools import cache
 from types import MappingProxyType
 from typing import NamedTuple
 
+from sass_tui.model.vocabulary import CENTER_OF_MASS as CENTER_OF_MASS
+from sass_tui.model.vocabulary import GIRTH as GIRTH
+from sass_tui.model.vocabulary import GLOBAL as GLOBAL
+from sass_tui.model.vocabulary import JOINT_LIMITS as JOINT_LIMITS
 from sass_tui.model.vocabulary import MOTION_NAMES
+from sass_tui.model.vocabulary import STRENGTH as STRENGTH
 
 AXES = ("x", "y", "z")
 
-GIRTH = "girth"
-JOINT_LIMITS = "joint_limits"
-CENTER_OF_MASS = "center_of_mass"
-STRENGTH = "strength"
-GLOBAL = "global"
 GROUPS = (GIRTH, JOINT_LIMITS, CENTER_OF_MASS)
 GROUP_TITLES = {
     GIRTH: "Girth",

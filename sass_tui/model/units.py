@@ -18,8 +18,8 @@ from functools import cache
 from typing import TYPE_CHECKING, overload
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.names import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH
 from sass_tui.model.text import quoted
+from sass_tui.model.vocabulary import CENTER_OF_MASS, GIRTH, JOINT_LIMITS, STRENGTH
 
 if TYPE_CHECKING:
     import numpy as np

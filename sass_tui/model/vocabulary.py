@@ -8,6 +8,15 @@ from __future__ import annotations
 
 from typing import Final, Literal, get_args
 
+# The groups of a person's measures (and the strength sheet, and the global
+# statistics): here, not in model/names.py, so that the unit table
+# (model/units.py) names them without building names.py's row tables.
+GIRTH = "girth"
+JOINT_LIMITS = "joint_limits"
+CENTER_OF_MASS = "center_of_mass"
+STRENGTH = "strength"
+GLOBAL = "global"
+
 Gender = Literal["male", "female"]
 GENDERS: Final[tuple[Gender, ...]] = get_args(Gender)
 

@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 from typing import Any, NamedTuple
 
-from sass_tui.model import datasets
+from sass_tui.model import shipped
 from sass_tui.model.errors import SassError
 
 DATA_FILE = "liberty_mutual.json"
@@ -46,7 +46,7 @@ class HandlingError(ValueError, SassError):
 
 def table() -> dict[str, Any]:
     """datasets/liberty_mutual.json, read once."""
-    return datasets.json_table(DATA_FILE)
+    return shipped.json_table(DATA_FILE)
 
 
 def source() -> str:

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from sass_tui.model import datasets
+from sass_tui.model import shipped
 from sass_tui.model.errors import SassError
 
 DATA_FILE = "niosh_lifting.json"
@@ -55,7 +55,7 @@ class Form(NamedTuple):
 
 def table() -> dict[str, Any]:
     """datasets/niosh_lifting.json, read once."""
-    return datasets.json_table(DATA_FILE)
+    return shipped.json_table(DATA_FILE)
 
 
 def source() -> str:
