@@ -2,6 +2,11 @@
 (the issue's target: under 2x) and against the command line's own floor,
 `python -c "import sass_tui.cli"` (argparse and the verb table every verb
 pays), in fresh processes, interleaved so both sides see the same load.
+Wall and CPU time (user + system of the child): on a loaded machine the CPU
+time is the steadier of the two.  Run as a user runs sass: with bytecode
+caching (PYTHONDONTWRITEBYTECODE, set in some shells and CI, is dropped for
+the children, and the warm-up run writes the .pyc files): without it every
+sass module is compiled from source on every run, ~25 ms of each verb.
 
     python benchmarks/handling_verbs.py [--runs 15]
 """
@@ -10,6 +15,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import statistics
 import subprocess
 import sys
@@ -32,10 +38,17 @@ BASELINES = {
 }
 
 
-def timed(command: list[str]) -> float:
+ENV = {name: value for name, value in os.environ.items() if name != "PYTHONDONTWRITEBYTECODE"}
+
+
+def timed(command: list[str]) -> tuple[float, float]:
+    """The wall time and the CPU time (user + system) of one run."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-    return time.perf_counter() - start
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, env=ENV)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return wall, after.ru_utime - before.ru_utime + after.ru_stime - before.ru_stime
 
 
 def main() -> int:
@@ -46,20 +59,27 @@ def main() -> int:
     for command in commands.values():  # warm the page cache
         timed(command)
     times: dict[str, list[float]] = {name: [] for name in commands}
+    cpu: dict[str, list[float]] = {name: [] for name in commands}
     for _ in range(args.runs):
         for name, command in commands.items():
-            times[name].append(timed(command))
+            wall, used = timed(command)
+            times[name].append(wall)
+            cpu[name].append(used)
     median = {name: statistics.median(found) for name, found in times.items()}
+    median_cpu = {name: statistics.median(found) for name, found in cpu.items()}
     print(
         f"{time.strftime('%Y-%m-%d')}, {os.cpu_count()} cores, Python "
-        f"{sys.version.split()[0]}; medians of {args.runs} interleaved runs.\n"
+        f"{sys.version.split()[0]}, load average {os.getloadavg()[0]:.1f}; "
+        f"medians of {args.runs} interleaved runs.\n"
     )
-    print("| command | median | / python -c pass | / import sass_tui.cli |")
-    print("| --- | --- | --- | --- |")
+    print("| command | wall | / python -c pass | CPU | / python -c pass | / import sass_tui.cli |")
+    print("| --- | --- | --- | --- | --- | --- |")
     for name in commands:
         print(
             f"| `{name}` | {median[name] * 1000:.0f} ms "
             f"| {median[name] / median['python -c pass']:.2f} "
+            f"| {median_cpu[name] * 1000:.0f} ms "
+            f"| {median_cpu[name] / median_cpu['python -c pass']:.2f} "
             f"| {median[name] / median[FLOOR]:.2f} |"
         )
     return 0

@@ -83,7 +83,7 @@ PATHS: tuple[StartupPath, ...] = (
         "sass --help",
         ("--help",),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "numpy", "sqlite3",
-         "platformdirs",
+         "platformdirs", "pathlib", "urllib.parse", "ipaddress",
          "pickle", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
         "the verbs are listed from the light table in sass_tui/cli/__init__.py: no verb's"
         " module is imported (each imports what it needs at its top;"
@@ -158,18 +158,24 @@ PATHS: tuple[StartupPath, ...] = (
         "sass niosh",
         ("niosh", "--h", "40cm", "--v", "60cm", "--d", "80cm", "--f", "2", "--load", "12kg"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
-         "platformdirs", "numpy", "dataclasses", "inspect", "statistics",
-         "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui", "sass_tui.model.body"),
-        "the lifting equation is plain floats and two tables: no numpy, no database (the"
-        " job file's csv reader, ~1 ms, rides along rather than cost a deferred import)",
+         "platformdirs", "numpy", "dataclasses", "inspect", "statistics", "gzip", "string",
+         "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui", "sass_tui.model.body",
+         "sass_tui.model.datasets", "sass_tui.model.names"),
+        "the lifting equation is plain floats and two tables read by model/shipped.py: no"
+        " numpy, no database, no row tables (the job file's csv reader, ~1 ms, and"
+        " model/files/paths.py's pathlib, ~4 ms, ride along rather than cost a deferred"
+        " import)",
     ),
     StartupPath(
         "sass handling",
         ("handling", "lift", "--h", "0.38", "--v", "1.03", "--d", "0.51", "--load", "10kg"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
-         "platformdirs", "numpy", "csv", "dataclasses", "inspect", "statistics",
-         "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui", "sass_tui.model.body"),
-        "the Liberty Mutual equations are plain floats and math.erf: numpy and the figure"
+         "platformdirs", "numpy", "csv", "dataclasses", "inspect", "statistics", "gzip",
+         "string", "pathlib", "urllib.parse", "ipaddress",
+         "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui", "sass_tui.model.body",
+         "sass_tui.model.datasets", "sass_tui.model.names", "sass_tui.model.files"),
+        "the Liberty Mutual equations are plain floats and math.erf, their table read by"
+        " model/shipped.py (os.path, not pathlib): numpy and the figure"
         " only for a posture (cli/handling_figure.py), the database only for --target and"
         " --virtual (cli/handling_people.py)",
     ),
