@@ -8,7 +8,12 @@ caching (PYTHONDONTWRITEBYTECODE, set in some shells and CI, is dropped for
 the children, and the warm-up run writes the .pyc files): without it every
 sass module is compiled from source on every run, ~25 ms of each verb.
 
-    python benchmarks/handling_verbs.py [--runs 15]
+    python benchmarks/handling_verbs.py [--runs 15] [--against TREE]
+
+--against TREE (another checkout, e.g. `git worktree add --detach /tmp/main
+main`) adds each verb run from that tree and from this one the same way
+(`python -c "...command_line()"` with the tree first on sys.path), so a
+change's effect is measured interleaved, under the same load.
 """
 
 from __future__ import annotations
@@ -38,6 +43,15 @@ BASELINES = {
 }
 
 
+def from_tree(tree: str, argv: list[str]) -> list[str]:
+    """`sass ARGV` run with `tree`'s sass_tui (first on sys.path)."""
+    code = (
+        f"import sys; sys.path.insert(0, {tree!r}); sys.argv = {['sass', *argv]!r}; "
+        "from sass_tui.cli import command_line; sys.exit(command_line())"
+    )
+    return [PY, "-c", code]
+
+
 ENV = {name: value for name, value in os.environ.items() if name != "PYTHONDONTWRITEBYTECODE"}
 
 
@@ -54,8 +68,14 @@ def timed(command: list[str]) -> tuple[float, float]:
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=15)
+    parser.add_argument("--against", metavar="TREE", help="another checkout to compare with")
     args = parser.parse_args()
     commands = {**VERBS, **BASELINES}
+    if args.against:
+        here = str(Path(__file__).resolve().parent.parent)
+        for side, tree in (("against", args.against), ("this tree", here)):
+            for name, command in VERBS.items():
+                commands[f"{name} ({side})"] = from_tree(tree, command[1:])
     for command in commands.values():  # warm the page cache
         timed(command)
     times: dict[str, list[float]] = {name: [] for name in commands}
