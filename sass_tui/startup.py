@@ -152,7 +152,7 @@ PATHS: tuple[StartupPath, ...] = (
         (*NEVER, *UI, *ENGINES, "logging", "asyncio", "sqlite3", "platformdirs", "numpy.ma",
          "secrets", "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui"),
         "a figure's reach needs its humanoid and the glTF writer, no database (only"
-        " --person, --target and --virtual open one: cli/reach_people.py)",
+        " --person, --known, --target and --virtual open one: cli/reach_people.py)",
     ),
     StartupPath(
         "sass niosh",

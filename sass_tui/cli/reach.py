@@ -5,13 +5,14 @@ sass reach --person 'ANSUR II M 10037' --format json
 sass reach --gender male --point 40,140,60 --hand both
 sass reach --point '0.5,1.3,0.4 m' --virtual nhanes-2017-2020
 sass reach --gender female -o reach.glb --with-body
+sass reach --gender male --known stature=175cm --known mass=80kg
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -38,6 +39,9 @@ from sass_tui.model.files.gltf import check_path, write_gltf
 from sass_tui.model.files.paths import user_path
 from sass_tui.model.files.reach_gltf import render_reach_gltf
 
+if TYPE_CHECKING:
+    from sass_tui.model.population.prediction import Estimate
+
 HAND_CHOICES = ("right", "left", "both")
 
 
@@ -52,6 +56,15 @@ def register(commands: SubParsers) -> None:
         "population reaching it, and the envelope as glTF (docs/reach.md).",
     )
     add_figure_options(reach)
+    reach.add_argument(
+        "--known",
+        metavar="NAME=VALUE",
+        action="append",
+        default=[],
+        help="a predicted person (sass predict's --known, with --gender): e.g. "
+        "stature=175cm, mass=80kg, measure.handlength=19cm (repeat for more); the arm "
+        "from their predicted measurements",
+    )
     reach.add_argument(
         "--hand", choices=HAND_CHOICES, default="right", help="which hand (default right)"
     )
@@ -105,23 +118,66 @@ def run(args: argparse.Namespace) -> int:
         raise ReachError("the body is written standing: leave out --seated or --with-body")
     # With --point, --target and --virtual count who of their people reach it
     # (each person's own linkage); without, they size the figure as for sass fig.
-    if point is not None and (args.target is not None or args.virtual is not None):
+    shares = point is not None and (args.target is not None or args.virtual is not None)
+    if args.known:
+        _check_known(args)
+    if shares or args.known:
         # deferred: cli.reach_people (the db package) — off sass reach (sass_tui/startup.py)
-        from sass_tui.cli.reach_people import population_shares
+        from sass_tui.cli import reach_people
 
-        answer: dict[str, Any] = {"point": population_shares(args, point)}
-        _print(args, answer, None)
-        return 0
-    figure, warnings = figure_from_args(args)
-    print_warnings(warnings)
+        if shares and point is not None:
+            answer: dict[str, Any] = {"point": reach_people.population_shares(args, point)}
+            _print(args, answer, None)
+            return 0
+        figure, regression = reach_people.predicted_figure(args)
+    else:
+        figure, warnings = figure_from_args(args)
+        print_warnings(warnings)
     envelopes: list[Envelope] = []
     answer = _figure_answer(args, figure, point, envelopes)
+    if args.known:
+        _add_regression(answer, regression)
     if output is not None:
         body = figure if args.with_body else None
         asset = render_reach_gltf(envelopes, f"{_who(figure)} reach", body)
         answer["written"] = [str(path) for path in write_gltf(asset, output)]
     _print(args, answer, figure)
     return 0
+
+
+# The figure options a predicted person (--known) does not go with: the
+# prediction gives the stature, mass, girths and centres of mass itself.
+NOT_WITH_KNOWN = (
+    ("--person", "person"),
+    ("--target", "target"),
+    ("--virtual", "virtual"),
+    ("--girth", "girth"),
+    ("--jntlmt", "jntlmt"),
+    ("--cmass", "cmass"),
+    ("--global", "global_file"),
+    ("--stature", "stature"),
+    ("--mass", "mass"),
+    ("--stature-percentile", "stature_percentile"),
+    ("--mass-percentile", "mass_percentile"),
+    ("--girth-percentile", "girth_percentile"),
+    ("--joint-limit-percentile", "joint_limit_percentile"),
+    ("--cmass-percentile", "cmass_percentile"),
+)
+
+
+def _check_known(args: argparse.Namespace) -> None:
+    given = [option for option, name in NOT_WITH_KNOWN if getattr(args, name) is not None]
+    if args.percentile != 50.0:  # the joint ranges are the gender's default figure's
+        given.insert(0, "--percentile")
+    if given:
+        raise ReachError(
+            f"--known predicts the person (sass predict): leave out {', '.join(given)}; "
+            "a known stature or mass is --known stature=… / mass=…"
+        )
+    if args.gender is None:
+        raise ReachError(
+            "--known needs --gender male|female: the people the prediction learns from"
+        )
 
 
 def _who(figure: Figure) -> str:
@@ -175,6 +231,29 @@ def _figure_answer(
     return answer
 
 
+def _add_regression(answer: dict[str, Any], regression: dict[str, Estimate]) -> None:
+    """A predicted person's reach is the model's, from their predicted arm
+    (a known reach measure is theirs): said so, with `sass predict`'s own
+    estimate of the measure beside it."""
+    answer["basis"] = (
+        "the arm placed by the measurements sass predict gives; each reach measure "
+        "the model's from that arm unless known"
+    )
+    for name in REACH_MEASURES:
+        entry = answer[name]
+        if entry["source"] == "measured":
+            entry["source"] = "known"
+            entry.pop("model", None)
+        estimate = regression.get(name)
+        if estimate is not None and not estimate.known:
+            entry["predicted"] = {
+                "value": round(estimate.value, 1),
+                "low": round(estimate.low, 1),
+                "high": round(estimate.high, 1),
+                "unit": "cm",
+            }
+
+
 def _frame(seated: bool) -> str:
     if seated:
         return "seated: origin on the seat below the hips' midpoint, +Y up, +Z forward, +X left"
@@ -189,11 +268,21 @@ def _print(args: argparse.Namespace, answer: dict[str, Any], figure: Figure | No
         pose = "seated" if args.seated else "standing"
         trunk = "trunk free" if args.trunk else "trunk fixed"
         print(f"reach: {answer['figure']} ({pose}, {trunk})")
+        if "basis" in answer:
+            print(f"  {answer['basis']}")
         for name in REACH_MEASURES:
             entry = answer[name]
             how = entry["source"]
             if "model" in entry:
                 how += f"; the model from their other measurements {entry['model']:.1f} cm"
+            if how == "model" and "basis" in answer:
+                how = "model, from the predicted arm"
+            if "predicted" in entry:
+                p = entry["predicted"]
+                how += (
+                    f"; sass predict's regression {p['value']:.1f} cm, "
+                    f"90 % {p['low']:.1f}-{p['high']:.1f}"
+                )
             print(f"  {name:<31} {entry['value']:6.1f} cm  ({how})")
     point = answer.get("point")
     if point is not None:

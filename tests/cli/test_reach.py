@@ -199,6 +199,96 @@ def test_a_population_s_share_reaching_a_point(shipped_db_file, tmp_path, capsys
     assert any(share["VIRTUAL men"] > share["VIRTUAL women"] for share in shares[1:-1]), shares
 
 
+# --- a predicted person ------------------------------------------------------------
+
+# Half the residual RMSE (about 3 cm) of ANSUR II's reach measures on stature
+# and mass: a predicted person's reach sits on the population's regression.
+ON_THE_REGRESSION = 1.5  # cm
+
+
+@pytest.fixture(scope="module")
+def predict_db(shipped_db_file, tmp_path_factory) -> Path:
+    """A copy of the shipped database: sass predict caches its fit beside it."""
+    db = tmp_path_factory.mktemp("reach_predict") / "sass.db"
+    shutil.copy(shipped_db_file, db)
+    return db
+
+
+def _ols(ansur_dir: Path, gender: str, stature: float, mass: float) -> dict[str, float]:
+    """Each reach measure at (stature cm, mass kg) by least squares on the
+    published ANSUR II rows (stature in mm, weightkg in tenths of a kg)."""
+    rows = _rows(ansur_dir, gender)
+    x = np.array([[1.0, float(r["stature"]) / 10, float(r["weightkg"]) / 10] for r in rows])
+    out = {}
+    for name in REACH_MEASURES:
+        y = np.array([float(r[name]) / 10 for r in rows])
+        coefficients = np.linalg.lstsq(x, y, rcond=None)[0]
+        out[name] = float(coefficients @ [1.0, stature, mass])
+    return out
+
+
+@pytest.mark.parametrize("gender, stature, mass", [("male", 175, 80), ("female", 160, 62)])
+def test_a_predicted_person_s_reach_is_on_the_population_s_regression(
+    ansur_dir, predict_db, capsys, gender, stature, mass
+):
+    """`--known stature= --known mass=`: each reach measure the model's from the
+    predicted arm (said so), within 1.5 cm of a least-squares fit of that
+    measure on stature and mass over the published CSV, and sass predict's
+    own estimate beside it with its interval."""
+    known = ["--known", f"stature={stature}cm", "--known", f"mass={mass}kg"]
+    answer = _json(capsys, "--db", str(predict_db), "--gender", gender, *known)
+    assert "sass predict" in answer["basis"] and "model" in answer["basis"]
+    oracle = _ols(ansur_dir, gender, stature, mass)
+    for name in REACH_MEASURES:
+        entry = answer[name]
+        assert entry["source"] == "model" and "model" not in entry, entry
+        assert abs(entry["value"] - oracle[name]) <= ON_THE_REGRESSION, (name, entry, oracle)
+        band = entry["predicted"]
+        assert band["low"] < oracle[name] < band["high"], (name, band)
+
+
+def test_a_predicted_person_s_known_values_move_the_reach(predict_db, capsys):
+    """Taller, a longer thumb-tip reach and span; a longer known upper arm
+    (acromion-radiale length) than the prediction's, a longer reach; a known
+    thumb-tip reach reported as given, the others still the model's."""
+    db = ["--db", str(predict_db), "--gender", "male", "--known", "mass=80kg"]
+    short, tall = (_json(capsys, *db, "--known", f"stature={s}cm") for s in (165, 185))
+    for name in REACH_MEASURES:
+        assert tall[name]["value"] > short[name]["value"] + 5, name
+    arm = _json(
+        capsys, *db, "--known", "stature=165cm", "--known", "measure.acromionradialelength=40cm"
+    )
+    assert arm["thumbtipreach"]["value"] > short["thumbtipreach"]["value"] + 2
+    given = _json(capsys, *db, "--known", "stature=175cm", "--known", "measure.thumbtipreach=90cm")
+    assert given["thumbtipreach"] == {"value": 90.0, "unit": "cm", "source": "known"}
+    assert given["span"]["source"] == "model"
+
+
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["--known", "stature"], "expected NAME=VALUE"),
+        (["--known", "stature=3kg"], "not a unit of length"),
+        (["--known", "stature=abc"], "expected a number"),
+        (["--known", "elbowlength=30cm"], "unknown name 'elbowlength'"),
+        (["--known", "stature=170", "--stature", "170"], "leave out --stature"),
+        (["--known", "stature=170", "--percentile", "5"], "leave out --percentile"),
+        (["--known", "stature=170", "--person", "ANSUR II M 10037"], "leave out --person"),
+    ],
+)
+def test_a_bad_known_is_a_one_line_error(argv, words, predict_db, capsys):
+    capsys.readouterr()
+    assert main(["reach", "--db", str(predict_db), "--gender", "male", *argv]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and words in err, err
+
+
+def test_known_needs_a_gender(capsys):
+    assert main(["reach", "--known", "stature=170cm"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "--known needs --gender" in err, err
+
+
 # --- what is refused ------------------------------------------------------------------
 
 
