@@ -17,8 +17,8 @@ from sass_tui.db.populations.targets import (
     UnknownTargetError,
     load_target,
     target_exists,
+    within_range,
 )
-from sass_tui.db.populations.virtual import within_range
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
 from sass_tui.model.datasets import NHANES_NAME, NHANES_WEIGHT
 

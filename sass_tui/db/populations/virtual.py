@@ -307,36 +307,6 @@ def store_target_and_virtual(
             store_virtual(conn, population)
 
 
-def within_range(conn: sqlite3.Connection, weights: TargetWeights) -> TargetWeights:
-    """A virtual population's weights without its people predicted from a
-    value beyond the real people's range (the summary's `outside_range`):
-    they weigh nothing, and the target's words say how many were left out.
-    Refused for a target of real people (whose `sass target --within-range`
-    is made so)."""
-    target = weights.target
-    if not target.is_virtual:
-        raise TargetError(
-            f"--within-range leaves out VIRTUAL people predicted beyond the real people; "
-            f"{target.name} is a target of real people: give --virtual NAME",
-            where="--within-range",
-        )
-    virtual = dict(target.summary.get("virtual", {}))
-    outside = {int(k) for k in virtual.get("outside_range", [])}
-    prefix = f"{target.name}:"  # virtual:NAME:OFFSET, as _batch keys them
-    rows = conn.execute(
-        f"SELECT id_num, source_key FROM person WHERE source = {mark_of(conn)}",
-        (target.name,),
-    ).fetchall()
-    gone = np.array(
-        sorted(int(i) for i, key in rows if int(str(key).removeprefix(prefix)) in outside),
-        dtype=np.int64,
-    )
-    keep = ~np.isin(weights.ids, gone)
-    virtual["left_out"] = int((~keep).sum())
-    summary = target.summary | {"virtual": virtual}
-    return TargetWeights(replace(target, summary=summary), weights.ids[keep], weights.weights[keep])
-
-
 def drop_virtual(conn: sqlite3.Connection, name: str) -> int:
     """Delete the virtual population NAME (or `virtual:NAME`): its weights and
     its people (every table of theirs, on either engine).  Returns how many people."""

@@ -110,6 +110,7 @@ class FitScreen(WeightedWorkScreen):
         self.run_fit(self.lists, self.limits, self.population, work, self.target)
 
     def action_edit_limits(self) -> None:
+        """Type design limits here (a ? is solved, as sass design does) instead of the last query's."""
         self.query_one("#fit-limits", Input).focus()
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
