@@ -4,6 +4,7 @@ are counted: side by side in each bin, each gender's colour in the legend
 
 from __future__ import annotations
 
+import pytest
 from rich.color import Color
 from textual.app import App
 from textual_plotext import PlotextPlot
@@ -33,6 +34,7 @@ def cells_by_colour(text) -> dict[int | None, int]:
     return found
 
 
+@pytest.mark.slow
 def test_both_genders_bars_are_drawn(drive):
     async def scenario():
         app = OnePlot()
