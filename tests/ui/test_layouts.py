@@ -66,6 +66,13 @@ def test_80x24_strength_page_keeps_rows_beside_the_task_panel(drive, app_at):
             text = str(page.render())
             assert "Shoulder abduction" in text, text
             assert_task_panel_whole(app)
+            # The table's rows below the panel: the arrows on the Task cells scroll to them.
+            scroll = app.screen.query_one("#task-table-scroll")
+            assert scroll.max_scroll_y > 0
+            await pilot.press(*["down"] * scroll.max_scroll_y)
+            await wait_until(
+                pilot, lambda: scroll.scroll_y == scroll.max_scroll_y, lambda: scroll.scroll_y
+            )
             # T again: the global data and the menu come back.
             await pilot.press("T")
             await pilot.pause()

@@ -199,6 +199,8 @@ class TaskCells(EditorKeys, Widget, can_focus=True):
         self.cursor = cell
 
     def action_move(self, rows: int, columns: int) -> None:
+        if rows:  # one row of cells: up and down scroll the table under them
+            self.panel.query_one("#task-table-scroll").scroll_relative(y=rows, animate=False)
         self.cursor = min(max(self.cursor + columns, 0), len(CELLS) - 1)
         self.refresh()
 
@@ -270,7 +272,7 @@ class TaskPanel(Vertical):
 
     def compose(self):
         yield TaskCells(id="task-cells")
-        # The table scrolls (the mouse wheel) on a short terminal; the notes
+        # The table scrolls (the mouse wheel, ↑ ↓) on a short terminal; the notes
         # under it are wrapped at the panel's width and always shown whole.
         with VerticalScroll(id="task-table-scroll", can_focus=False):
             yield Static("", id="task-table")
