@@ -45,6 +45,8 @@ class SassScreen(Screen):
         super().__init__(*args, **kwargs)
         # The commands asking their questions now (converse).
         self._conversations: set[asyncio.Task[None]] = set()
+        # The keys typed for the last edit refused: (its widget and request, why, the keys).
+        self._refused_typing: tuple[tuple[int, int], str, str] = ((0, 0), "", "")
 
     @property
     def sass_app(self) -> SassApp:
@@ -152,8 +154,11 @@ class SassScreen(Screen):
         if self.message_line.prompting:
             # A prompt opened after the key was typed: it is the prompt's.
             self.message_line.type_ahead(event.key, event.character)
-        else:
-            await self._run_binding(event.key)
+        elif not await self._run_binding(event.key) and (event.character or "").isprintable():
+            self.say(
+                f"{event.character!r} is neither part of this cell's value nor a command's "
+                "key: type a value, or Enter to edit; F1 lists the keys."
+            )
 
     async def _run_binding(self, key: str) -> bool:
         """Run this screen's binding for `key`, or say why it does nothing
@@ -192,7 +197,29 @@ class SassScreen(Screen):
 
     def on_typed_ahead(self, event: TypedAhead) -> None:
         event.stop()
-        self.message_line.type_ahead(event.key, event.character, event.text)
+        if event.for_refused_edit():
+            self._not_a_command(event)
+        else:
+            self.message_line.type_ahead(event.key, event.character, event.text)
+
+    def _not_a_command(self, event: TypedAhead) -> None:
+        """A key typed for an edit that was refused: part of the value the
+        cell did not take, said after why it was refused, never a command."""
+        typed = event.text or (event.character if (event.character or "").isprintable() else "")
+        if not typed:
+            return  # its Enter, Escape or Backspace: nothing more to do
+        edit = (id(event.source), event.request)
+        if self._refused_typing[0] != edit:
+            history = self.message_line.history
+            self._refused_typing = (edit, history[-1][1] if history else "", "")
+        _, why, keys = self._refused_typing
+        said = f"{why.rstrip('.')}; typed for it, not run as commands: "
+        history = self.message_line.history
+        if keys and history and history[-1][1] == said + keys:
+            history.pop()  # the log keeps the whole of it once
+        keys += typed
+        self._refused_typing = (edit, why, keys)
+        self.complain(said + keys)
 
     def on_descendant_focus(self, event: events.DescendantFocus) -> None:
         # While a prompt is open the keys are its own, wherever the user clicks.

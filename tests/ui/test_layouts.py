@@ -1,5 +1,6 @@
 """The spreadsheet at a small and a large terminal: at 80x24 the strength
-page keeps rows beside the Task panel and its whole Limiting line; at
+page keeps rows beside the Task panel, whose notes (balance and not
+covered, limiting, lifting) show whole, wrapped, and whose table scrolls; at
 250x70 the figure panel takes the room the data leave and the figure is
 drawn at least half the terminal's height; the message line says only what
 is current.  Snapshots at 80x24 and 160x50."""
@@ -64,15 +65,54 @@ def test_80x24_strength_page_keeps_rows_beside_the_task_panel(drive, app_at):
             page = app.query_one(StrengthPage)
             text = str(page.render())
             assert "Shoulder abduction" in text, text
-            answer = app.screen.query_one("#task-answer")
-            lines = str(answer.render()).splitlines()
-            limiting = next(i for i, line in enumerate(lines) if line.startswith("Limiting"))
-            assert limiting < answer.size.height, (limiting, answer.size)
-            assert len(lines[limiting]) <= answer.size.width
+            assert_task_panel_whole(app)
+            # The table's rows below the panel: the arrows on the Task cells scroll to them.
+            scroll = app.screen.query_one("#task-table-scroll")
+            assert scroll.max_scroll_y > 0
+            await pilot.press(*["down"] * scroll.max_scroll_y)
+            await wait_until(
+                pilot, lambda: scroll.scroll_y == scroll.max_scroll_y, lambda: scroll.scroll_y
+            )
             # T again: the global data and the menu come back.
             await pilot.press("T")
             await pilot.pause()
             assert app.screen.query_one("#top").display
+
+    drive(scenario())
+
+
+def assert_task_panel_whole(app) -> None:
+    """Every note line shown whole, wrapped at the panel's width, inside the
+    panel and the screen; every table row there to scroll to."""
+    screen = app.screen
+    panel = screen.query_one("#task-panel")
+    notes = screen.query_one("#task-answer")
+    width = notes.content_size.width
+    lines = str(notes.render()).splitlines()
+    assert lines[1].startswith("Limiting") and lines[-1].startswith("Lifting"), lines
+    shown = [
+        "".join(segment.text for segment in notes.render_line(y)).rstrip()
+        for y in range(notes.size.height)
+    ]
+    # The notes' words, in order, on the rows drawn: nothing cut off.
+    assert " ".join(shown).split() == " ".join(lines).split(), shown
+    assert all(len(row) <= width for row in shown)
+    assert panel.region.contains_region(notes.region), (panel.region, notes.region)
+    assert screen.region.contains_region(panel.region)
+    table = screen.query_one("#task-table")
+    scroll = screen.query_one("#task-table-scroll")
+    rows = str(table.render()).splitlines()
+    assert rows[0].startswith("Joint") and len(rows) == table.size.height
+    assert max(map(len, rows)) <= scroll.content_size.width
+
+
+def test_160x50_task_panel_shows_its_table_and_notes_whole(drive, app_at):
+    async def scenario():
+        async with app_at(MEDIUM) as (app, pilot):
+            await strength_with_task(pilot)
+            assert_task_panel_whole(app)
+            scroll = app.screen.query_one("#task-table-scroll")
+            assert scroll.max_scroll_y == 0  # the whole table at once
 
     drive(scenario())
 
@@ -94,6 +134,13 @@ def test_strength_and_task_panel_80x24_snapshot(snap_compare, new_app):
         await strength_with_task(pilot)
 
     assert snap_compare(new_app(), run_before=run_before, terminal_size=SMALL)
+
+
+def test_strength_and_task_panel_160x50_snapshot(snap_compare, new_app):
+    async def run_before(pilot):
+        await strength_with_task(pilot)
+
+    assert snap_compare(new_app(), run_before=run_before, terminal_size=MEDIUM)
 
 
 def test_start_screen_160x50_snapshot(snap_compare, new_app):

@@ -30,7 +30,10 @@ SIZE = (110, 44)
 
 
 def cells_and_answer(panel: TaskPanel) -> str:
-    return f"{panel.cells.render()}\n{panel.query_one('#task-answer', Static).render()}"
+    table, notes = (
+        panel.query_one(f"#task-{part}", Static).render() for part in ("table", "answer")
+    )
+    return f"{panel.cells.render()}\n{table}\n{notes}"
 
 
 async def answer(pilot, text: str) -> None:

@@ -20,6 +20,7 @@ from textual.containers import Horizontal, ScrollableContainer
 from textual.message import Message
 from textual.widgets import Input, Static
 from textual_plotext import PlotextPlot
+from textual_plotext.plot import Plot
 
 from sass_tui.db.populations.design import format_design
 from sass_tui.db.populations.fit import LimitHistogram
@@ -42,6 +43,25 @@ class FitDone(Message):
         self.text = text
         self.histograms = histograms
         self.error = error
+
+
+def draw_gender_bars(plot: Plot, edges: list[float], counts: dict[str, list[int]]) -> None:
+    """Each gender's bars side by side in its bin, its colour named in the
+    legend.  Stacked, a bin's one column of cells takes one colour: the
+    women's bar hid the men's wherever both were counted."""
+    genders = list(counts)
+    if not genders or len(edges) < 2:
+        return
+    share = 1 / len(genders)
+    for index, gender in enumerate(genders):
+        shift = (index + 0.5) * share - 0.5  # this gender's slot in the bin
+        plot.bar(
+            [a + (b - a) * (0.5 + shift) for a, b in zip(edges, edges[1:])],
+            counts[gender],
+            label=gender,
+            color=GENDER_COLORS.get(gender, "green"),
+            width=share,
+        )
 
 
 def _short(field: str) -> str:
@@ -188,17 +208,8 @@ class FitScreen(WeightedWorkScreen):
         centers = [(a + b) / 2 for a, b in zip(edges, edges[1:])]
         counts = {g: [int(c) for c in hist.counts[g]] for g in hist.counts}
         self.plotted = (centers, counts)
-        genders = list(counts)
-        # plotext's stacked_bar takes `labels` and a colour per series; textual-plotext's
-        # signature copy says `label` and one colour.
-        plot.stacked_bar(  # type: ignore[call-arg]
-            centers,
-            [counts[g] for g in genders],
-            labels=genders,
-            color=[GENDER_COLORS.get(g, "green") for g in genders],  # type: ignore[arg-type]
-            width=1.0,
-        )
-        top = max((sum(column) for column in zip(*counts.values())), default=0)
+        draw_gender_bars(plot, edges, counts)
+        top = max((max(column) for column in counts.values() if column), default=0)
         for line in hist.lines:
             # A line series, not plotext's vline: it is drawn over the bars.
             plot.plot([line.value, line.value], [0, top], color="red", marker="braille")

@@ -174,7 +174,7 @@ class SheetScreenBase(SassScreen):
 
     def _after_edit_request(self, widget: EditorKeys) -> None:
         if not self.message_line.prompting:
-            widget.typing_done()  # refused: no prompt takes the keys that follow
+            widget.refuse_edit()  # no prompt takes the keys that follow
 
     def action_next_warning(self) -> None:
         """Show the next warning of the last file read."""

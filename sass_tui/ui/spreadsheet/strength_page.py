@@ -29,10 +29,12 @@ SOURCE_WORD_WIDTH = 11
 SOURCE_LETTER = {"stored": "s", "predicted": "p", "no data": ""}
 JOINT_SPANS = (("Shoulder", 3), ("Elbow", 1), ("Wrist", 3))
 # The Task panel under the page (ui/spreadsheet/task_panel.py, T): its border 1, the
-# posture and inputs 2, the table's header 1, 12 hands and joints, limiting
-# and not covered 2, the manual-handling line 1 (ui/spreadsheet/task_handling.py).
-# Fixed: the page's rows follow from the terminal's height.
-TASK_PANEL_LINES = 19
+# posture and inputs 2, the table's header 1, 12 hands and joints; its notes
+# (balance and not covered, limiting, the manual-handling line of
+# ui/spreadsheet/task_handling.py), each wrapped on up to 2 lines at 80 columns, 6.
+# Fixed: the page's rows follow from the terminal's height (a shorter panel
+# scrolls its table and keeps its notes whole).
+TASK_PANEL_LINES = 22
 
 
 def format_angle(degrees: float, width: int = ANGLE_WIDTH - 1) -> str:

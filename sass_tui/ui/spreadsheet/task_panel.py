@@ -27,7 +27,7 @@ from pathlib import Path
 from rich.text import Text
 from textual import work
 from textual.binding import Binding
-from textual.containers import Vertical
+from textual.containers import Vertical, VerticalScroll
 from textual.message import Message
 from textual.widget import Widget
 from textual.widgets import Static
@@ -61,7 +61,7 @@ from sass_tui.ui.spreadsheet.task_handling import handling_line
 from sass_tui.ui.spreadsheet.task_words import (
     PEOPLE,
     WEIGHTED,
-    answer_lines,
+    answer_parts,
     load_words,
     parse_people,
     posture_words,
@@ -199,6 +199,8 @@ class TaskCells(EditorKeys, Widget, can_focus=True):
         self.cursor = cell
 
     def action_move(self, rows: int, columns: int) -> None:
+        if rows:  # one row of cells: up and down scroll the table under them
+            self.panel.query_one("#task-table-scroll").scroll_relative(y=rows, animate=False)
         self.cursor = min(max(self.cursor + columns, 0), len(CELLS) - 1)
         self.refresh()
 
@@ -221,7 +223,9 @@ class TaskPanel(Vertical):
         padding: 0 1;
         border-top: solid $panel-lighten-2;
     }}
-    TaskPanel #task-answer {{ height: 1fr; text-wrap: nowrap; text-overflow: clip; }}
+    TaskPanel #task-table-scroll {{ height: 1fr; overflow-x: hidden; scrollbar-size-vertical: 1; }}
+    TaskPanel #task-table {{ text-wrap: nowrap; text-overflow: clip; }}
+    TaskPanel #task-answer {{ height: auto; max-height: 75%; }}
     TaskPanel #task-curve {{ height: 1fr; display: none; }}
     """
 
@@ -268,6 +272,10 @@ class TaskPanel(Vertical):
 
     def compose(self):
         yield TaskCells(id="task-cells")
+        # The table scrolls (the mouse wheel, ↑ ↓) on a short terminal; the notes
+        # under it are wrapped at the panel's width and always shown whole.
+        with VerticalScroll(id="task-table-scroll", can_focus=False):
+            yield Static("", id="task-table")
         yield Static("", id="task-answer")
         plot = PlotextPlot(id="task-curve")
         plot.can_focus = False  # the keys are the cells'
@@ -350,16 +358,19 @@ class TaskPanel(Vertical):
 
     def _draw(self) -> None:
         answer_view = self.query_one("#task-answer", Static)
+        table = self.query_one("#task-table-scroll", VerticalScroll)
         plot = self.query_one("#task-curve", PlotextPlot)
         curve = bool(self.curve_side) and not self.error
         answer_view.display, plot.display = not curve, curve
+        table.display = not curve and not self.error
         if self.error:
             answer_view.update(Text(self.error))
         elif self.answer is not None:
-            lines = answer_lines(self.answer)
+            rows, notes = answer_parts(self.answer)
             if self.figure is not None:
-                lines.append(handling_line(self.figure, self.posture, self.loads.values()))
-            answer_view.update(Text("\n".join(lines), no_wrap=True))
+                notes.append(handling_line(self.figure, self.posture, self.loads.values()))
+            self.query_one("#task-table", Static).update(Text("\n".join(rows), no_wrap=True))
+            answer_view.update(Text("\n".join(notes)))
         if not curve:
             return
         chart = plot.plt

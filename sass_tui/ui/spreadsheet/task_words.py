@@ -82,6 +82,14 @@ def _shared_words(names: list[str]) -> str:
 def answer_lines(answer: TaskAnswer) -> list[str]:
     """The answer in the panel's rows: each loaded hand and each elbow,
     shoulder, hip, knee and ankle with its moment and percent capable."""
+    table, notes = answer_parts(answer)
+    return table + notes
+
+
+def answer_parts(answer: TaskAnswer) -> tuple[list[str], list[str]]:
+    """The answer's table (a row per hand and joint, the trunk's) and its
+    notes (the balance, scores and moments no model covers; the limiting),
+    which the panel wraps at its width and always shows whole."""
     people = answer.populations
     # the words the columns share (VIRTUAL, a target's name) once, in the header
     shared = _shared_words(people)
@@ -126,10 +134,9 @@ def answer_lines(answer: TaskAnswer) -> list[str]:
     scores = " ".join(f"{r.side[0]} {r.score}" for r in answer.rula)
     rebas = " ".join(f"{r.side[0]} {r.score}" for r in answer.reba)
     uncovered = [f"{m.joint} {m.size:.1f}" for m in answer.moments if m.covered_by == UNCOVERED]
-    # one line: the panel's rows are counted (TASK_PANEL_LINES)
-    lines.append(
+    notes = [
         f"Balance: {balance}; RULA {scores}; REBA {rebas}; not covered (N-m): "
-        f"{', '.join(uncovered)}"
-    )
-    lines.append(f"Limiting: {'; '.join(limiting)}")
-    return lines
+        f"{', '.join(uncovered)}",
+        f"Limiting: {'; '.join(limiting)}",
+    ]
+    return lines, notes

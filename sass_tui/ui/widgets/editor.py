@@ -38,13 +38,28 @@ async def run_own_binding(node: DOMNode, key: str) -> bool:
 class TypedAhead(Message):
     """Keys typed after an edit was asked for but before its prompt took the
     focus: the app routed them to the widget that asked.  They belong to the
-    prompt, in the order typed (a paste arrives as one `text`)."""
+    prompt, in the order typed (a paste arrives as one `text`).  `source`
+    and `request`: the widget and the edit they were typed for; when the
+    screen refused that edit (no prompt came) they are the value it did not
+    take, never commands."""
 
-    def __init__(self, key: str, character: str | None, text: str = "") -> None:
+    def __init__(
+        self,
+        key: str,
+        character: str | None,
+        text: str = "",
+        source: EditorKeys | None = None,
+        request: int = 0,
+    ) -> None:
         super().__init__()
         self.key = key
         self.character = character
         self.text = text
+        self.source = source
+        self.request = request
+
+    def for_refused_edit(self) -> bool:
+        return self.source is not None and self.source.refused_request == self.request
 
 
 class ScreenKey(Message):
@@ -73,6 +88,8 @@ class EditorKeys:
     click, edits it."""
 
     _typing_ahead = False
+    _requests = 0  # the edits asked for
+    refused_request = 0  # the last of them the screen refused (no prompt came)
 
     def edit_request(self, initial: str) -> Message:
         """The message asking to edit the cell under the cursor, `initial`
@@ -97,11 +114,19 @@ class EditorKeys:
         return character in NUMBER_START
 
     def request_edit(self, message: Message) -> None:
+        self._requests += 1
         self._typing_ahead = True
         self.post_message(message)  # type: ignore[attr-defined]
 
     def typing_done(self) -> None:
         self._typing_ahead = False
+
+    def refuse_edit(self) -> None:
+        """No prompt came for the edit asked for: the keys typed ahead for it
+        are the value the cell did not take (`14in` typed fast on a cell
+        without data must not open Input Data on the `i`)."""
+        self.refused_request = self._requests
+        self.typing_done()
 
     def action_edit(self) -> None:
         self.request_edit(self.edit_request(""))
@@ -113,7 +138,8 @@ class EditorKeys:
         if self._typing_ahead:
             event.stop()
             event.prevent_default()
-            self.post_message(TypedAhead(event.key, event.character))  # type: ignore[attr-defined]
+            typed = TypedAhead(event.key, event.character, source=self, request=self._requests)
+            self.post_message(typed)  # type: ignore[attr-defined]
         elif event.character and self.starts_value(event.character):
             event.stop()
             event.prevent_default()
@@ -140,7 +166,8 @@ class EditorKeys:
         event.stop()
         event.prevent_default()
         if self._typing_ahead:
-            self.post_message(TypedAhead("paste", None, event.text))  # type: ignore[attr-defined]
+            typed = TypedAhead("paste", None, event.text, self, self._requests)
+            self.post_message(typed)  # type: ignore[attr-defined]
         elif event.text.strip():
             self.start_typing(event.text.strip())
 
