@@ -55,7 +55,9 @@ async def strength_with_task(pilot) -> None:
 
 
 def task_answer(app):
-    return app.screen.query_one("#task-answer").render()
+    """The Task panel's notes as drawn; empty while the panel is still being mounted."""
+    answers = app.screen.query("#task-answer")
+    return answers.first().render() if answers else ""
 
 
 def test_80x24_strength_page_keeps_rows_beside_the_task_panel(drive, app_at):
