@@ -47,8 +47,14 @@ def test_a_large_terminal_draws_a_large_figure(drive, app_at):
 
 
 async def strength_with_task(pilot) -> None:
+    # The sheet ready first (a snapshot's app may still be starting), then each
+    # key's screen before the next key.
+    await settle(pilot)
+    await wait_until(pilot, lambda: pilot.app.screen.query(StrengthPage), "no sheet")
     await pilot.press("s")
-    await pilot.pause()
+    await wait_until(
+        pilot, lambda: pilot.app.screen.query_one(StrengthPage).display, "no strength page"
+    )
     await pilot.press("T")
     await settle(pilot)
     await wait_until(pilot, lambda: "Limiting" in str(task_answer(pilot.app)), "no answer")
