@@ -9,14 +9,8 @@ import pytest
 
 from sass_tui.cli import main
 from sass_tui.db.engine.schema import QUERY_TABLES
-from sass_tui.db.query.query import (
-    MAX_COMPARISONS,
-    MAX_JOINED_TABLES,
-    MAX_NESTING,
-    Query,
-    QueryError,
-    compile_query,
-)
+from sass_tui.db.query.query import Query, QueryError, compile_query
+from sass_tui.db.query.query_limits import MAX_COMPARISONS, MAX_JOINED_TABLES, MAX_NESTING
 
 
 def test_deep_nesting_is_refused_at_the_parenthesis():
