@@ -200,7 +200,11 @@ class TaskCells(EditorKeys, Widget, can_focus=True):
 
     def action_move(self, rows: int, columns: int) -> None:
         if rows:  # one row of cells: up and down scroll the table under them
-            self.panel.query_one("#task-table-scroll").scroll_relative(y=rows, animate=False)
+            # At once, not after the next refresh: keys pressed faster than the
+            # screen redraws would otherwise each start from the same offset.
+            self.panel.query_one("#task-table-scroll").scroll_relative(
+                y=rows, animate=False, immediate=True
+            )
         self.cursor = min(max(self.cursor + columns, 0), len(CELLS) - 1)
         self.refresh()
 
