@@ -1,15 +1,19 @@
 """The Task panel of the strength page (`T` shows and hides it): can the
-people do it?  The posture is the strength page's: the angles of the row
-under its cursor, on the limb it shows.  Three cells, edited on the message
-line like the page's angles: the load on the left hand, on the right hand
-(a force, then the way it pulls: `60 N down`), and the people (the figure's
-gender, the figure shown, women, men, women and men, `target NAME` or
-`virtual NAME`).  Below them the answer (model/strength/task.py, docs/strength.md
-"A task"): the moments at the elbows, shoulders, hips, knees and ankles,
-the percent capable of each loaded hand (the Arm Force Field) and each hip,
-knee and ankle (Anderson et al. 2007), the limiting one, and what no
-published model covers; or, with `h`, the curve of percent capable against
-the load on a loaded hand, drawn with textual-plotext.
+people do it?  Four cells, edited on the message line like the page's
+angles: the posture (the task's own joint angles as `sass task` takes them,
+`trunk_y=40 knee_y=30`, or `row`: the angles of the strength page's row
+under its cursor, on the limb it shows), the load on the left hand, on the
+right hand (a force, then the way the hand exerts it: `60 N down`, or a
+mass held), and the people (the figure's gender, the figure shown, women,
+men, women and men, `target NAME` or `virtual NAME`).  The figure beside
+the panel takes the posture; the cells are saved with the worksheet
+(model/files/task_settings.py).  Below them the answer (model/strength/task.py,
+docs/task.md): the moments at the elbows, shoulders, low back, hips, knees
+and ankles, the percent capable of each loaded hand (the Arm Force Field)
+and each hip, knee and ankle (Anderson et al. 2007), the limiting one, the
+balance, the NIOSH lifting index and Liberty Mutual's percent capable; or,
+with `h`, the curve of percent capable against the load on a loaded hand,
+drawn with textual-plotext.
 
 The answer is computed in a worker on a copy of the figure whenever an input
 changes, and posted back (the TUI never blocks).  TaskCells owns the keys
