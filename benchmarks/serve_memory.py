@@ -33,6 +33,11 @@ import aiohttp
 
 URL_LINE = re.compile(r"sass serve: open (?P<base>https?://[^/]+/)\?token=(?P<token>\S+)")
 READY = "Press left-mouse to select items."  # the spreadsheet's footer, drawn
+# The terminal's escape sequences, taken out before looking for READY (a
+# redraw may put one inside the footer's text).
+ESCAPES = re.compile(
+    r"\x1b\[[0-9;?<>=]*[ -/]*[@-~]|\x1b\][^\x07\x1b]*(?:\x07|\x1b\\)|\x1b[()][0-9A-B]"
+)
 
 
 def free_port() -> int:
@@ -78,7 +83,7 @@ async def one_session(port: int, origin: str, cookie: str) -> None:
             while READY not in text:
                 message = await ws.receive()
                 if message.type == aiohttp.WSMsgType.BINARY:
-                    text += message.data.decode("utf-8", "replace")
+                    text += ESCAPES.sub("", message.data.decode("utf-8", "replace"))
                 elif message.type != aiohttp.WSMsgType.TEXT:
                     raise RuntimeError(f"the session ended: {message}")
         await ws.close()
