@@ -145,6 +145,8 @@ def run_arm_force(args: argparse.Namespace) -> int:
         f"hand {forward:.{PLACE_DECIMALS}f} m forward, {up:.{PLACE_DECIMALS}f} m up, "
         f"{lateral:.{PLACE_DECIMALS}f} m lateral of the shoulder ({where})"
     )
+    if answer.outside_fitted:
+        print(f"note: {answer.outside_fitted}")
     print(f"source: {answer.source}")
     if curve:
         print(f"percent capable against the load ({args.side} hand, {args.direction.strip()}):")
@@ -197,6 +199,7 @@ def _json(
             "lateral": round(answer.hand[2], PLACE_DECIMALS) + 0.0,
         },
         "posture": where,
+        "outside_fitted": answer.outside_fitted or None,
         "person": args.person,
         "curve": [[n(x), round(y, PERCENT_DECIMALS)] for x, y in curve] if curve else None,
         "source": answer.source,

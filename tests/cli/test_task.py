@@ -143,3 +143,25 @@ def test_the_hands_share_is_the_same_in_task_and_arm_force(capsys):
                  "--load", "20N", "--gender", "female", "--format", "json"]) == 0  # fmt: skip
     arm = json.loads(capsys.readouterr().out)
     assert hand["percent"]["women"] == arm["percent_capable"]
+    # and both say the same of where the Arm Force Field was fitted: the
+    # woman's straight arm puts the hand past the 0.52 m ahead it was fitted on
+    assert hand["extrapolated"] == arm["outside_fitted"]
+    assert arm["outside_fitted"].startswith("the hand 0.56 m forward (fitted 0.00 to 0.52)")
+
+
+def test_a_hand_within_the_fitted_places_is_not_called_extrapolated(capsys):
+    # The elbow bent at shoulder height: the hand 0.24 m ahead, 0.33 m up.
+    posture = ["shoulder_y=90", "elbow_y=90", "ankle_y=0"]
+    answer = task(capsys, *posture, "--right-load", "20N", "--right-direction", "forward",
+                  "--gender", "female")  # fmt: skip
+    hand = next(c for c in answer["capable"] if c["what"] == "right hand")
+    assert hand["extrapolated"] is None
+    assert main(["task", *posture, "--right-load", "20N", "--right-direction", "forward",
+                 "--gender", "female"]) == 0  # fmt: skip
+    assert "extrapolated" not in capsys.readouterr().out
+    # the straight arm: the text says it under the hand's row
+    assert main(["task", "shoulder_y=90", "elbow_y=0", "ankle_y=0", "--right-load", "20N",
+                 "--right-direction", "forward", "--gender", "female"]) == 0  # fmt: skip
+    text = capsys.readouterr().out
+    assert re.search(r"\n  right hand: force exerted 20\.0 N .*\n    right hand: the hand 0\.56 m "
+                     r"forward \(fitted 0\.00 to 0\.52\) lies outside", text), text  # fmt: skip

@@ -7,6 +7,7 @@ authors' example.  The script's numbers are written down here (rounded to
 from __future__ import annotations
 
 import math
+import re
 
 import pytest
 from hypothesis import given, settings
@@ -17,9 +18,11 @@ from sass_tui.model.strength.arm_force_field import (
     ArmForceError,
     arm_force,
     check_posture,
+    fitted_ranges,
     parse_direction,
     read_coefficients,
 )
+from tests._paths import SHARED
 
 # Ten points each, in the script's order (POSTURE_JOINTS), metres on HAnim's axes.
 POSTURES = {
@@ -186,3 +189,50 @@ def test_any_direction_text_is_a_unit_vector_or_a_clear_refusal(text):
         assert "--direction" in str(exc)
     else:
         assert math.isclose(float((v * v).sum()), 1.0, rel_tol=1e-9)
+
+
+# --- where the network was fitted ---------------------------------------------------
+# The authors' script scales each input as MATLAB's mapminmax does,
+# p = in1gain * (x - in1offset) - 1, so the data it was fitted on ran from
+# in1offset to in1offset + 2 / in1gain (read from their script below).
+SCRIPT = SHARED / "reference" / "arm-force-field" / "AFFinPython - v1.0.py"
+
+
+def _script_array(text: str, name: str) -> list[float]:
+    found = re.search(rf"^{name} = np\.array\(\[(.*?)\]\)", text, re.S | re.M)
+    assert found, name
+    return [float(v) for v in found.group(1).replace("\n", " ").split(",")]
+
+
+def test_the_fitted_region_is_the_authors_scaling():
+    if not SCRIPT.is_file():
+        pytest.skip("../shared/reference/arm-force-field is absent")
+    text = SCRIPT.read_text(encoding="utf-8")
+    offset, gain = _script_array(text, "in1offset"), _script_array(text, "in1gain")
+    assert re.search(r"^in1min = -1$", text, re.M)
+    expected = [(o, o + 2.0 / g) for o, g in zip(offset, gain)]
+    got = fitted_ranges(read_coefficients())
+    assert len(got) == len(expected) == 18
+    for (low, high), (want_low, want_high) in zip(got, expected):
+        assert low == pytest.approx(want_low, abs=1e-12)
+        assert high == pytest.approx(want_high, abs=1e-12)
+    # the hand's place: 0.41 m below to 0.48 m above the shoulder, up to 0.52 m ahead
+    assert got[0] == pytest.approx((-0.4145, 0.4768), abs=1e-4)
+    assert got[1] == pytest.approx((0.0, 0.5218), abs=1e-4)
+
+
+def test_the_authors_example_is_inside_and_a_hand_far_ahead_or_below_is_flagged():
+    example = posture(EXAMPLE)
+    for side in ("left", "right"):
+        assert arm_force(example, side, (0, 1, 0)).outside_fitted == "", side
+    # forward_at_shoulder holds the hands 0.60 m ahead of the shoulders at their
+    # height: past the 0.52 m fitted, the height inside.
+    answer = arm_force(posture(POSTURES["forward_at_shoulder"]), "right", (0, 0, 1))
+    assert answer.outside_fitted.startswith("the hand 0.60 m forward (fitted 0.00 to 0.52)")
+    assert answer.outside_fitted.endswith("extrapolated")
+    assert " up " not in answer.outside_fitted
+    # the right hand hanging 0.69 m below the shoulder: below the 0.41 m fitted
+    low = [list(p) for p in POSTURES["forward_at_shoulder"]]
+    low[4], low[5], low[6] = [-0.2, 0.71, -0.05], [-0.2, 0.79, -0.05], [-0.2, 1.1, -0.05]
+    hanging = arm_force(posture(low), "right", (0, 1, 0))
+    assert "the hand -0.69 m up (fitted -0.41 to 0.48)" in hanging.outside_fitted

@@ -327,6 +327,51 @@ def zero_gravity_mean(arm: ArmLocal, c: Coefficients) -> float:
     return min(max(mean, low), high)
 
 
+# The network's inputs are scaled as MATLAB's mapminmax scales them: the least
+# and greatest of the data it was fitted on go to input_min (-1) and +1, so
+# input_offset is the least and input_offset + (1 - input_min) / input_gain the
+# greatest.  Inputs 0-2 are the hand's place (up, forward, lateral of the
+# shoulder, m, as network_inputs orders them); the others are built from the
+# place and the force's direction (its cosines always lie within their range).
+HAND_INPUTS = ("up", "forward", "lateral")
+# Rounding of the published scaling is not extrapolation.
+FITTED_TOLERANCE = 1e-6
+
+
+def fitted_ranges(c: Coefficients) -> list[tuple[float, float]]:
+    """(least, greatest) of each network input over the data it was fitted on."""
+    return [
+        (float(lo), float(lo + (1.0 - c.input_min) / gain))
+        for lo, gain in zip(c.input_offset, c.input_gain)
+    ]
+
+
+def outside_fitted(arm: ArmLocal, c: Coefficients) -> str:
+    """Empty, or the words saying that this hand place and direction lie outside
+    the inputs the network was fitted on (its answer is then extrapolated,
+    beyond the bounds the authors put on its output)."""
+    inputs = network_inputs(arm)
+    ranges = fitted_ranges(c)
+    out = [
+        i
+        for i, (value, (low, high)) in enumerate(zip(inputs, ranges))
+        if not (low - FITTED_TOLERANCE <= value <= high + FITTED_TOLERANCE)
+    ]
+    if not out:
+        return ""
+    hand = [
+        f"{inputs[i]:.2f} m {HAND_INPUTS[i]} (fitted {ranges[i][0]:.2f} to {ranges[i][1]:.2f})"
+        for i in out
+        if i < len(HAND_INPUTS)
+    ]
+    what = (
+        "the hand " + ", ".join(hand)
+        if hand
+        else "the hand's place with this force direction (its moment about the shoulder)"
+    )
+    return f"{what} lies outside the hand places the Arm Force Field was fitted on: extrapolated"
+
+
 def gravity_along_force(arm: ArmLocal, body_mass: float, c: Coefficients) -> float:
     """The arm's own weight as a force at the hand, along the exerted force (N):
     positive helps, negative opposes.  0 when the arm's weight makes no moment
@@ -365,6 +410,9 @@ class ArmForce:
     body_mass: float  # kg, for the arm's weight
     hand: tuple[float, float, float]  # m from the shoulder: forward, up, lateral
     source: str
+    # "" or why the answer is extrapolated: the hand's place (or the force's
+    # moment about the shoulder) outside what the network was fitted on
+    outside_fitted: str = ""
 
     def strength(self, capable: float) -> float:
         """The force (N, gravity included) `capable` percent of people can exert."""
@@ -425,4 +473,5 @@ def arm_force(
         body_mass=mass,
         hand=(float(arm.hand[0]), float(arm.hand[1]), float(arm.hand[2])),
         source=f"{CITATION}, {words}; arm's weight for {mass:g} kg",
+        outside_fitted=outside_fitted(arm, c),
     )

@@ -269,6 +269,9 @@ class Capability:
     percent: dict[str, float]  # population words -> percent capable
     source: str
     passive: bool = False  # carried at the end of the joint's range, not by muscle
+    # "" or why the model answers outside what it was fitted on (the first
+    # population's figure; model/strength/arm_force_field.py: outside_fitted)
+    extrapolated: str = ""
 
 
 @dataclass
@@ -434,7 +437,13 @@ def assess_task(
             if load.force > 0:
                 arm = arm_demand(body, load, ref.figure.gender)
                 found = Capability(
-                    f"{load.side} hand", "force exerted", load.force, "N", {}, ARM_WORDS
+                    f"{load.side} hand",
+                    "force exerted",
+                    load.force,
+                    "N",
+                    {},
+                    ARM_WORDS,
+                    extrapolated=arm.outside_fitted,
                 )
                 answer.record(found, ref.words, arm.percent_capable(load.force))
         age = ref.age if ref.age is not None else AGE_GROUPS[0][1]
@@ -590,7 +599,15 @@ def _population_shares(
             continue
         arm = arm_demand(body, load, people.gender)
         capable, weight = _hand_sums(arm, body, people, np.array([load.force]))
-        found = Capability(f"{load.side} hand", "force exerted", load.force, "N", {}, ARM_WORDS)
+        found = Capability(
+            f"{load.side} hand",
+            "force exerted",
+            load.force,
+            "N",
+            {},
+            ARM_WORDS,
+            extrapolated=arm.outside_fitted,
+        )
         out.append((found, float(capable[0]), weight))
     scale_body = m * h / (body.body_mass * body.stature)
     for moment, side, word in _legs(moments):

@@ -89,6 +89,7 @@ def task_json(answer: TaskAnswer, posture: list[str]) -> dict[str, object]:
                 "percent": {k: round(v, PERCENT_DECIMALS) for k, v in c.percent.items()},
                 "source": c.source,
                 "passive": c.passive,
+                "extrapolated": c.extrapolated or None,
             }
             for c in answer.capabilities
         ],
@@ -189,6 +190,8 @@ def task_text(answer: TaskAnswer, posture: list[str]) -> list[str]:
             for p in answer.populations
         )
         lines.append(f"  {what:<46}{cells}")
+        if c.extrapolated:
+            lines.append(f"    {c.what}: {c.extrapolated}")
     for p in answer.populations:
         if p in answer.unstable:
             lines.append(f"out of balance for {p}: {answer.unstable[p]}; not scored")
