@@ -314,9 +314,10 @@ def _sign_code(value: float) -> int:
     return 0 if value == 0 else (1 if value > 0 else -1)
 
 
-def zero_gravity_mean(arm: ArmLocal, c: Coefficients) -> float:
-    """Women's mean zero-gravity strength (N), bounded as the authors bound it."""
-    p = c.input_gain * (network_inputs(arm) - c.input_offset) + c.input_min
+def zero_gravity_mean(arm: ArmLocal, inputs: npt.NDArray[np.float64], c: Coefficients) -> float:
+    """Women's mean zero-gravity strength (N), bounded as the authors bound it;
+    `inputs` are network_inputs(arm)."""
+    p = c.input_gain * (inputs - c.input_offset) + c.input_min
     hidden = np.tanh(c.layer1_bias + c.layer1_weights @ p)
     out = c.layer2_bias + float(c.layer2_weights @ hidden)
     mean = (out - c.output_min) / c.output_gain + c.output_offset
@@ -346,11 +347,11 @@ def fitted_ranges(c: Coefficients) -> list[tuple[float, float]]:
     ]
 
 
-def outside_fitted(arm: ArmLocal, c: Coefficients) -> str:
+def outside_fitted(inputs: npt.NDArray[np.float64], c: Coefficients) -> str:
     """Empty, or the words saying that this hand place and direction lie outside
     the inputs the network was fitted on (its answer is then extrapolated,
-    beyond the bounds the authors put on its output)."""
-    inputs = network_inputs(arm)
+    beyond the bounds the authors put on its output); `inputs` are
+    network_inputs of the arm."""
     ranges = fitted_ranges(c)
     out = [
         i
@@ -460,7 +461,8 @@ def arm_force(
     if not (math.isfinite(mass) and mass > 0):
         raise ArmForceError(f"body mass {mass!r} kg: expected a positive number")
     arm = arm_local(posture, side, direction)
-    mean = zero_gravity_mean(arm, c)
+    inputs = network_inputs(arm)
+    mean = zero_gravity_mean(arm, inputs, c)
     if gender == "male":
         mean *= c.men_factor
     words = "women, as published" if gender == "female" else "men (women x 1.66, worksheet)"
@@ -473,5 +475,5 @@ def arm_force(
         body_mass=mass,
         hand=(float(arm.hand[0]), float(arm.hand[1]), float(arm.hand[2])),
         source=f"{CITATION}, {words}; arm's weight for {mass:g} kg",
-        outside_fitted=outside_fitted(arm, c),
+        outside_fitted=outside_fitted(inputs, c),
     )

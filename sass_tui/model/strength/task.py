@@ -314,6 +314,19 @@ class Reference:
     age: float | None  # years; None: Anderson et al. 2007's youngest group
 
 
+def hand_capability(load: HandLoad, arm: ArmForce) -> Capability:
+    """The loaded hand's row, its percent capable still to record."""
+    return Capability(
+        f"{load.side} hand",
+        "force exerted",
+        load.force,
+        "N",
+        {},
+        ARM_WORDS,
+        extrapolated=arm.outside_fitted,
+    )
+
+
 def arm_demand(body: PosedBody, load: HandLoad, gender: str) -> ArmForce:
     """The Arm Force Field for the hand exerting `load`."""
     return arm_force(body.points, load.side, load.direction, gender, body.body_mass)
@@ -436,16 +449,9 @@ def assess_task(
         for load in loads:
             if load.force > 0:
                 arm = arm_demand(body, load, ref.figure.gender)
-                found = Capability(
-                    f"{load.side} hand",
-                    "force exerted",
-                    load.force,
-                    "N",
-                    {},
-                    ARM_WORDS,
-                    extrapolated=arm.outside_fitted,
+                answer.record(
+                    hand_capability(load, arm), ref.words, arm.percent_capable(load.force)
                 )
-                answer.record(found, ref.words, arm.percent_capable(load.force))
         age = ref.age if ref.age is not None else AGE_GROUPS[0][1]
         subject = Subject(ref.figure.gender, age, ref.figure.output_mass(), body.stature)
         for moment, side, word in _legs(moments):
@@ -599,16 +605,7 @@ def _population_shares(
             continue
         arm = arm_demand(body, load, people.gender)
         capable, weight = _hand_sums(arm, body, people, np.array([load.force]))
-        found = Capability(
-            f"{load.side} hand",
-            "force exerted",
-            load.force,
-            "N",
-            {},
-            ARM_WORDS,
-            extrapolated=arm.outside_fitted,
-        )
-        out.append((found, float(capable[0]), weight))
+        out.append((hand_capability(load, arm), float(capable[0]), weight))
     scale_body = m * h / (body.body_mass * body.stature)
     for moment, side, word in _legs(moments):
         motion, torque = leg_demand(moment, word)
