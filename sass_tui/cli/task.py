@@ -59,7 +59,8 @@ def register(commands: SubParsers) -> None:
         metavar="JOINT=ANGLE",
         help="the posture: shoulder_x/y/z, elbow_y, wrist_x/y/z, hip_y, knee_y, ankle_y "
         "(deg; both sides, or left_/right_ before the joint), trunk_x (bend right), trunk_y "
-        "(flexion), trunk_z (twist left); standing upright if none",
+        "(flexion), trunk_z (twist left), neck_x (bend right), neck_y (flexion), neck_z "
+        "(rotation right); standing upright if none",
     )
     task.add_argument(
         "--seated",

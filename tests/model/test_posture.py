@@ -80,6 +80,38 @@ def test_segments_move_with_their_joint_and_keep_their_mass(figure):
     assert body.centers_of_mass["l5"] == pytest.approx(humanoid.segments["l5"].center_of_mass)
 
 
+def test_the_neck_turns_the_head_about_the_head_neck_joint(figure):
+    """neck_y (flexion) turns the head (HAnim skull) about skullbase, the
+    report's atlanto-occipital joint; nothing below it moves."""
+    humanoid = build_humanoid(figure)
+    body = pose_figure(figure, parse_angles(["neck_y=60"]))
+    joint = humanoid.centers["skullbase"]
+    _, dy, dz = humanoid.segments["skull"].center_of_mass - joint
+    a = math.radians(60)
+    # flexion tips the head forward (+z): about the body's lateral axis
+    expected = joint + [
+        0.0,
+        dy * math.cos(a) - dz * math.sin(a),
+        dy * math.sin(a) + dz * math.cos(a),
+    ]
+    assert body.centers_of_mass["skull"] == pytest.approx(expected, abs=1e-9)
+    assert body.centers_of_mass["skull"][2] > humanoid.segments["skull"].center_of_mass[2]
+    for segment in ("l5", "l_upperarm", "r_thigh"):
+        assert body.centers_of_mass[segment] == pytest.approx(
+            humanoid.segments[segment].center_of_mass, abs=1e-12
+        )
+    # bent to the right: the head goes to the body's right (-x)
+    bent = pose_figure(figure, parse_angles(["neck_x=30"]))
+    assert bent.centers_of_mass["skull"][0] < joint[0] - 0.005
+
+
+def test_the_neck_has_no_side_and_keeps_to_the_reports_neck_limits(figure):
+    with pytest.raises(PostureError, match="the neck has no side; write neck_y=ANGLE"):
+        parse_angles(["left_neck_y=10"])
+    with pytest.raises(StrengthError, match="neck y 80 deg is above the neck upper limit"):
+        pose_figure(figure, parse_angles(["neck_y=80"]))
+
+
 @pytest.mark.parametrize(
     "items, message",
     [

@@ -9,10 +9,12 @@ import pytest
 
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.posture import parse_angles
+from sass_tui.model.strength.reba import neck_score as reba_neck_score
 from sass_tui.model.strength.reba import read_tables as read_reba_tables
 from sass_tui.model.strength.rula import (
     force_score,
     lower_arm_score,
+    neck_score,
     read_tables,
     trunk_score,
     upper_arm_score,
@@ -97,3 +99,32 @@ def test_reba_of_upright_standing_and_a_stoop_with_20_kg():
     # a deep squat's knees: +2 on the legs
     squat = assess_task(women, parse_angles(["hip_y=100", "knee_y=100", "ankle_y=10"]), [])
     assert squat.reba[0].legs >= 3
+
+
+def test_the_neck_scores_follow_the_papers():
+    # RULA: 0-10 deg flexion 1, 10-20 2, over 20 3, in extension 4; +1 twisted,
+    # +1 side-bent
+    assert [neck_score(f, 0, 0) for f in (0, 10, 15, 20, 35, -10)] == [1, 1, 2, 2, 3, 4]
+    assert neck_score(5, 20, 0) == 2 and neck_score(5, 20, 15) == 3
+    # REBA: 0-20 deg flexion 1, over 20 or in extension 2; +1 twisted or side-bent
+    assert [reba_neck_score(f, False) for f in (0, 20, 25, -10)] == [1, 1, 2, 2]
+    assert reba_neck_score(10, True) == 2
+
+
+def test_the_posed_neck_reaches_both_scores():
+    women = [Reference("women", Figure.default("female"), None)]
+    # upright, the head bent forward 30 deg and turned 20 deg to the right
+    task = assess_task(women, parse_angles(["neck_y=30", "neck_z=20"]), [])
+    rula, reba = task.rula[0], task.reba[0]
+    # RULA neck 3 (over 20 deg) + 1 (twisted) = 4; trunk 1, legs 1: Table B
+    # (neck 4, trunk 1, legs 1) = 5; A 2 (arms hanging, as upright); Table C (2, 5)
+    assert (rula.neck, rula.posture_b) == (4, 5)
+    assert rula.score == read_tables().c[2 - 1][5 - 1]
+    # REBA neck 2 + 1 (twisted) = 3; trunk 1, legs 1: Table A (1, 3, 1) = 3;
+    # B 1; Table C (3, 1) = 2, low (the upright posture alone scores 1)
+    assert (reba.neck, reba.score_a, reba.score_b, reba.score) == (3, 3, 1, 2)
+    upright = assess_task(women, {}, [])
+    assert (upright.rula[0].neck, upright.reba[0].neck) == (1, 1)
+    # the head bent back: RULA's extension, 4
+    back = assess_task(women, parse_angles(["neck_y=-20"]), [])
+    assert (back.rula[0].neck, back.reba[0].neck) == (4, 2)

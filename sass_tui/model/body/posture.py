@@ -9,8 +9,11 @@ Angles (degrees, the strength page's and `sass strength`'s axes, docs/model.md
 wrist_y (flexion +), wrist_z (pronation +); hip_y, knee_y (flexion +) and
 ankle_y (dorsiflexion +); trunk_x (lateral bend to the right +), trunk_y
 (flexion +) and trunk_z (twist to the left +) at the lumbar joint (HAnim vl5,
-the waist's joint limits).  `shoulder_y=90` turns both arms, `left_shoulder_y=90`
-the left one; the trunk has no side.  Each joint turns about its joint-limit frame in the standing
+the waist's joint limits); neck_x (lateral bend to the right +), neck_y
+(flexion +) and neck_z (rotation to the right +) at the head-neck joint
+(HAnim skullbase, the report's atlanto-occipital joint and its neck limits,
+Appendix D), which carries the head.  `shoulder_y=90` turns both arms,
+`left_shoulder_y=90` the left one; the trunk and the neck have no side.  Each joint turns about its joint-limit frame in the standing
 figure (hanim._LIMIT_AXES, docs/hanim.md), x then y then z applied to the
 limb: R = Rx(x) Ry(y) Rz(z), so an arm flexed forward by y is then swung
 sideways by x.  A joint's turn carries every segment below it.
@@ -66,8 +69,9 @@ from sass_tui.model.vocabulary import JOINT_AXES
 
 LEG_AXES: tuple[str, ...] = ("hip_y", "knee_y", "ankle_y")
 TRUNK_AXES: tuple[str, ...] = ("trunk_x", "trunk_y", "trunk_z")
-POSTURE_AXES: tuple[str, ...] = (*JOINT_AXES, *LEG_AXES, *TRUNK_AXES)
-TRUNK = ""  # the trunk's side in Angles: it has none
+NECK_AXES: tuple[str, ...] = ("neck_x", "neck_y", "neck_z")
+POSTURE_AXES: tuple[str, ...] = (*JOINT_AXES, *LEG_AXES, *TRUNK_AXES, *NECK_AXES)
+TRUNK = ""  # the side in Angles of the trunk and the neck: they have none
 _HANIM_JOINT = {
     "shoulder": "shoulder",
     "elbow": "elbow",
@@ -76,6 +80,7 @@ _HANIM_JOINT = {
     "knee": "knee",
     "ankle": "talocrural",
     "trunk": "vl5",
+    "neck": "skullbase",
 }
 # de Leva (1996) table 4, the hand's centre of mass from the wrist centre:
 # % of wrist-MET3 (third metacarpale) and % of wrist-fingertip (DA3)
@@ -113,9 +118,10 @@ def parse_angles(items: list[str]) -> Angles:
             if key.startswith(f"{word}_"):
                 sides, key = (word,), key[len(word) + 1 :]
                 break
-        if key in TRUNK_AXES:
+        if key in TRUNK_AXES or key in NECK_AXES:
             if len(sides) == 1:
-                raise PostureError(f"{item!r}: the trunk has no side; write {key}=ANGLE")
+                part = key.split("_")[0]
+                raise PostureError(f"{item!r}: the {part} has no side; write {key}=ANGLE")
             sides = (TRUNK,)
         if key not in POSTURE_AXES:
             raise PostureError(

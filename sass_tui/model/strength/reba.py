@@ -5,7 +5,8 @@ A, B and C as published (datasets/reba.json), one arm at a time (docs/task.md
 
 - trunk: its inclination (as for RULA, model/strength/rula.py): upright
   (under 1 deg) 1, to 20 deg 2, 20-60 3, over 60 4; +1 twisted or side-bent;
-- neck: not posed: 1 (0-20 deg flexion), assumed;
+- neck: neck flexion (neck_y) 0-20 deg 1, over 20 or in extension (beyond
+  1 deg back) 2; +1 twisted or side-bent (neck_z, neck_x beyond 1 deg);
 - legs: 1 both feet bearing in balance, or seated; 2 out of balance; +1 the
   knee flexed 30-60 deg, +2 over 60 (standing);
 - load: the hands' forces together under 5 kg 0, 5-10 kg 1, over 10 kg 2;
@@ -27,7 +28,7 @@ from sass_tui.model.datasets import path as dataset_path
 from sass_tui.model.strength.rula import KG, lower_arm_score, upper_arm_score
 
 FILE_NAME = "reba.json"
-ASSUMED = "neck 0-20 deg (not posed), a good coupling, no static, repeated or rapid activity"
+ASSUMED = "a good coupling, no static, repeated or rapid activity"
 
 
 @dataclass(frozen=True)
@@ -69,6 +70,10 @@ def trunk_score(inclination: float, twisted_or_bent: bool) -> int:
         1 if inclination < 1.0 else 2 if inclination <= 20.0 else 3 if inclination <= 60.0 else 4
     )
     return score + int(twisted_or_bent)
+
+
+def neck_score(flexion: float, twisted_or_bent: bool) -> int:
+    return (1 if -1.0 <= flexion <= 20.0 else 2) + int(twisted_or_bent)
 
 
 def legs_score(balanced: bool, knee: float, seated: bool) -> int:
@@ -116,5 +121,9 @@ def reba(
     upper = upper_arm_score(angle("shoulder_y"), angle("shoulder_x"))
     lower = lower_arm_score(angle("elbow_y"))
     wrist = wrist_score(angle("wrist_y"), angle("wrist_x"), angle("wrist_z"))
-    a, b, score = scores(trunk, 1, legs, load, upper, lower, wrist)
-    return Reba(side, trunk, 1, legs, load, upper, lower, wrist, a, b, score)
+    neck = neck_score(
+        angles.get(("", "neck_y"), 0.0),
+        abs(angles.get(("", "neck_z"), 0.0)) > 1.0 or abs(angles.get(("", "neck_x"), 0.0)) > 1.0,
+    )
+    a, b, score = scores(trunk, neck, legs, load, upper, lower, wrist)
+    return Reba(side, trunk, neck, legs, load, upper, lower, wrist, a, b, score)

@@ -13,7 +13,9 @@ What sass knows from the posture and what it assumes (said in the answer):
 - wrist: wrist_y within 1 deg of neutral 1, up to 15 deg 2, beyond 3; +1
   bent from the midline (wrist_x beyond 1 deg); wrist twist (wrist_z) 1 in
   the mid-range, 2 within 10 deg of the end of its range;
-- neck: not posed in sass: 1 (0-10 deg flexion), assumed;
+- neck: neck flexion (neck_y, the head on the trunk) 0-10 deg 1, 10-20 2,
+  over 20 3, in extension (beyond 1 deg back) 4; +1 twisted (neck_z beyond
+  1 deg), +1 side-bent (neck_x beyond 1 deg);
 - trunk: the trunk's inclination from the vertical in the posed figure
   (trunk and hip flexion together, standing): upright (under 1 deg) 1, up to
   20 2, 20-60 3, over 60 4; seated and upright 1; +1 twisted (trunk_z beyond
@@ -40,10 +42,7 @@ from sass_tui.model.datasets import path as dataset_path
 
 FILE_NAME = "rula.json"
 KG = 9.81  # N of a kilogram's weight
-ASSUMED = (
-    "neck 0-10 deg (not posed), muscle use intermittent, shoulder not raised, arm not "
-    "supported, not across the midline"
-)
+ASSUMED = "muscle use intermittent, shoulder not raised, arm not supported, not across the midline"
 
 
 @dataclass(frozen=True)
@@ -102,6 +101,14 @@ def wrist_score(flexion: float, deviation: float) -> int:
     size = abs(flexion)
     score = 1 if size <= 1.0 else 2 if size <= 15.0 else 3
     return score + (1 if abs(deviation) > 1.0 else 0)
+
+
+def neck_score(flexion: float, twist: float, side_bend: float) -> int:
+    if flexion < -1.0:
+        score = 4  # in extension
+    else:
+        score = 1 if flexion <= 10.0 else 2 if flexion <= 20.0 else 3
+    return score + (abs(twist) > 1.0) + (abs(side_bend) > 1.0)
 
 
 def trunk_score(inclination: float, twist: float, side_bend: float) -> int:
@@ -164,7 +171,11 @@ def rula(
         angles.get(("", "trunk_x"), 0.0),
     )
     legs = 1 if seated or stable else 2
-    neck = 1
+    neck = neck_score(
+        angles.get(("", "neck_y"), 0.0),
+        angles.get(("", "neck_z"), 0.0),
+        angles.get(("", "neck_x"), 0.0),
+    )
     force_a, force_b = force_score(hand_force), force_score(both_forces)
     a, b, score = grand_score(upper, lower, wrist, twist, neck, trunk, legs, force_a, force_b)
     return Rula(side, upper, lower, wrist, twist, neck, trunk, legs, force_a, force_b, a, b, score)

@@ -183,8 +183,9 @@ def _joint_limit_range(figure: Figure, side: str, joint_axis: str) -> tuple[floa
     joint, axis = joint_axis.split("_")
     column = "xyz".index(axis)
     values, filled = figure.output_values(JOINT_LIMITS)
-    # the trunk (no side) turns at the waist's joint (HAnim vl5)
-    stem = "waist" if joint == "trunk" else f"{side}_{joint}"
+    # the trunk (no side) turns at the waist's joint (HAnim vl5), the neck
+    # (no side) at the head-neck joint (HAnim skullbase) with the neck's limits
+    stem = {"trunk": "waist", "neck": "neck"}.get(joint, f"{side}_{joint}")
     upper_row = row_index(JOINT_LIMITS, f"{stem}_ul")
     lower_row = row_index(JOINT_LIMITS, f"{stem}_ll")
     from_population = bool(filled[upper_row, column] or filled[lower_row, column])

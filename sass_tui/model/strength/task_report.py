@@ -182,14 +182,19 @@ def task_text(answer: TaskAnswer, posture: list[str]) -> list[str]:
     # a column as wide as its population's name (a target's are long), 20 at least
     width = max([20, *(len(p) + 2 for p in answer.populations)])
     heads = "".join(f"{p:>{width}}" for p in answer.populations)
-    lines += ["", f"Percent capable{'':<33}{heads}"]
-    for c in answer.capabilities:
-        what = f"{c.what}: {c.motion.replace('_', ' ')} {c.demand:.1f} {c.unit}"
+    rows = [
+        (c, f"{c.what}: {c.motion.replace('_', ' ')} {c.demand:.1f} {c.unit}")
+        for c in answer.capabilities
+    ]
+    # the widest row sets the column (a passive joint's words are long)
+    label = max([46, *(len(what) + 1 for _, what in rows)])
+    lines += ["", f"Percent capable{'':<{label - 13}}{heads}"]
+    for c, what in rows:
         cells = "".join(
             f"{c.percent[p]:>{width - 2}.1f} %" if p in c.percent else f"{'-':>{width}}"
             for p in answer.populations
         )
-        lines.append(f"  {what:<46}{cells}")
+        lines.append(f"  {what:<{label}}{cells}")
         if c.extrapolated:
             lines.append(f"    {c.what}: {c.extrapolated}")
     for p in answer.populations:
