@@ -621,6 +621,7 @@ def _task() -> Target:
         "--right-load\n15 lbf\n--right-direction\nforward\n--gender\nfemale\nknee_y=20",
         "--target\nnhanes-2017-2020\n--left-load\n40\nhip_y=30",
         "--mass\n70 kg\n--stature\n175 cm\n--format\njson\n--right-load\n20N",
+        "trunk_y=30\nneck_y=20\nneck_z=-10\n--right-load\n10 kg\n--gender\nmale",
     ]
     return _verb("task", seeds, database=True)
 
