@@ -43,6 +43,7 @@ from sass_tui.model.strength.published_strength import (
     MOTION_AXIS,
     PublishedStrengthError,
     Subject,
+    beyond_curve,
     lower_limb_curve,
     lower_limb_motion,
     lower_limb_percent_capable,
@@ -373,6 +374,7 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
         angle = min(max(peak, lower), upper)
     answer = lower_limb_strength(motion, subject, angle, speed, args.percentile)
     check_angle(figure, args.side, axis, answer.angle)
+    outside = beyond_curve(motion, args.gender, [answer.group], answer.angle)
     load = None if args.load is None else parse_quantity(args.load, "N_m")
     share = (
         None
@@ -423,6 +425,7 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
                     "capable_curve": [[round(x, TORQUE_DECIMALS), round(y, 1)] for x, y in capable]
                     or None,
                     "percent_capable": None if share is None else round(share, 1),
+                    "outside_fitted": outside or None,
                     "source": source,
                     "person": args.person,
                     "predicted": args.person is not None,
@@ -448,6 +451,8 @@ def _published(args: argparse.Namespace, motion: str | None) -> int:
             f"{answer.group} (C1's spread, {CITATION} Table 3)"
         )
     print(f"source: {source}")
+    if outside:
+        print(f"note: {outside}")
     if args.plot:
         lower, upper = shown[0][0], shown[-1][0]
         print(f"{motion.replace('_', ' ')} over {axis} {lower:g} to {upper:g} deg (joint limits):")

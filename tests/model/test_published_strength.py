@@ -22,16 +22,22 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sass_tui.cli import main
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.body.posture import parse_angles
+from sass_tui.model.names import JOINT_LIMITS
 from sass_tui.model.strength.percent_capable import lower_limb_capable
 from sass_tui.model.strength.published_strength import (
     PublishedStrengthError,
     Subject,
     age_group,
+    beyond_curve,
+    curve_region,
     lower_limb_percent_capable,
     lower_limb_strength,
     parse_strength_limit,
     read_anderson2007,
 )
+from sass_tui.model.strength.task import Reference, assess_task
 
 # Table 3 as printed: (motion, gender, age group) -> C1, C2, C3, C4, C5, SD of C1.
 TABLE3 = {
@@ -292,3 +298,49 @@ def test_cli_plot_with_a_load_gives_the_curve_of_percent_capable(capsys):
     assert below[1] >= answer["percent_capable"] >= above[1]
     assert main(argv) == 0
     assert "percent capable against the torque" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("key", sorted(TABLE3))
+def test_the_fitted_curve_gives_torque_only_within_c3_plus_or_minus_90_deg_over_c2(key):
+    """Beyond C3 +/- 90 deg / C2 (Table 3's typed C2, C3) the cosine term is
+    not positive: the model has no torque there, and sass says so."""
+    motion, gender, group = key
+    _, c2, c3, *_ = TABLE3[key]
+    low, high = math.degrees(c3) - 90 / c2, math.degrees(c3) + 90 / c2
+    assert curve_region(motion, gender, group) == pytest.approx((low, high), abs=0.05)
+    subject = Subject(gender, AGE_OF[group], 70.0, 1.70)
+    for inside in (low + 0.5, high - 0.5):
+        assert lower_limb_strength(motion, subject, inside).torque > 0
+        assert beyond_curve(motion, gender, [group], inside) == ""
+    for outside in (low - 0.5, high + 0.5):
+        assert lower_limb_strength(motion, subject, outside).torque == 0
+        note = beyond_curve(motion, gender, [group], outside)
+        assert f"outside {low:.0f} to {high:.0f} deg" in note and "extrapolated" in note
+
+
+def test_sass_strength_says_when_the_angle_is_beyond_the_fitted_curve(capsys):
+    # knee extension, women over 65: the curve ends at 132 deg; the 50th
+    # percentile woman's knee bends to 135.2 deg
+    argv = ["strength", "knee_extension", "knee_y=134", "--gender", "female", "--age", "70"]
+    assert main([*argv, "--mass", "70", "--stature", "160"]) == 0
+    out = capsys.readouterr().out
+    assert "0.00 N-m" in out
+    assert "note: knee extension at 134 deg lies outside -1 to 132 deg" in out
+    assert main([*argv, "--format", "json"]) == 0
+    assert "outside -1 to 132 deg" in json.loads(capsys.readouterr().out)["outside_fitted"]
+    assert main(["strength", "knee_extension", "knee_y=90", "--format", "json"]) == 0
+    assert json.loads(capsys.readouterr().out)["outside_fitted"] is None
+
+
+def test_a_tasks_knee_beyond_the_curve_is_marked_extrapolated():
+    """A deep squat a 99th-percentile knee range allows (134 deg): for men
+    over 65 knee extension's curve ends at 130 deg, for men of 18-25 at 136."""
+    figure = Figure.default("male")
+    figure.set_group_percentile(JOINT_LIMITS, 99)
+    squat = parse_angles(["hip_y=110", "knee_y=134", "ankle_y=20", "trunk_y=45", "shoulder_y=90"])
+    older = assess_task([Reference("men", figure, 70.0)], squat, [])
+    knees = [c for c in older.capabilities if c.what.endswith("knee")]
+    assert [c.motion for c in knees] == ["knee_extension"] * 2
+    assert all("outside -8 to 130 deg" in c.extrapolated for c in knees)
+    young = assess_task([Reference("men", figure, 20.0)], squat, [])
+    assert all(c.extrapolated == "" for c in young.capabilities if c.what.endswith("knee"))

@@ -344,6 +344,34 @@ def lower_limb_strength(
     )
 
 
+def curve_region(
+    motion: str, gender: str, group: str, data: Anderson2007 | None = None
+) -> tuple[float, float]:
+    """The angles (deg) where the fitted angle term cos(C2 (theta - C3)) is
+    positive: C3 +/- 90 deg / C2.  Beyond them the curve gives no torque, so
+    the model cannot describe a joint there (the angles the paper measured,
+    not printed in its abstract, lie within)."""
+    mean = (data or read_anderson2007()).mean[(motion, gender, group)]
+    peak, half = math.degrees(mean.c3), 90.0 / mean.c2
+    return peak - half, peak + half
+
+
+def beyond_curve(
+    motion: str, gender: str, groups: list[str], angle: float, data: Anderson2007 | None = None
+) -> str:
+    """Why `angle` is outside the fitted curve of any of `groups` (one
+    gender's age groups), or "" when it is inside every one."""
+    for group in groups:
+        low, high = curve_region(motion, gender, group, data)
+        if not low <= angle <= high:
+            return (
+                f"{motion.replace('_', ' ')} at {angle:g} deg lies outside {low:.0f} to "
+                f"{high:.0f} deg, where {CITATION}'s fitted curve ({GENDER_WORDS[gender]} "
+                f"{group}) gives any torque: extrapolated"
+            )
+    return ""
+
+
 def lower_limb_percent_capable(
     motion: str,
     subject: Subject,

@@ -51,6 +51,8 @@ from sass_tui.model.strength.percent_capable import lower_limb_capable, normal_s
 from sass_tui.model.strength.published_strength import (
     AGE_GROUPS,
     Subject,
+    age_group,
+    beyond_curve,
     lower_limb_percent_capable,
 )
 from sass_tui.model.strength.published_strength import (
@@ -269,8 +271,10 @@ class Capability:
     percent: dict[str, float]  # population words -> percent capable
     source: str
     passive: bool = False  # carried at the end of the joint's range, not by muscle
-    # "" or why the model answers outside what it was fitted on (the first
-    # population's figure; model/strength/arm_force_field.py: outside_fitted)
+    # "" or why the model answers outside what it was fitted on, for any of
+    # the populations (the Arm Force Field's region, arm_force_field.py
+    # outside_fitted; Anderson et al.'s fitted curve, published_strength.py
+    # beyond_curve)
     extrapolated: str = ""
 
 
@@ -300,7 +304,11 @@ class TaskAnswer:
     def record(self, found: Capability, population: str, percent: float) -> None:
         for i, c in enumerate(self.capabilities):
             if c.what == found.what:
-                self.capabilities[i] = replace(c, percent={**c.percent, population: percent})
+                self.capabilities[i] = replace(
+                    c,
+                    percent={**c.percent, population: percent},
+                    extrapolated=c.extrapolated or found.extrapolated,  # any population's
+                )
                 return
         self.capabilities.append(replace(found, percent={population: percent}))
 
@@ -462,7 +470,8 @@ def assess_task(
                 answer.record(found, ref.words, 100.0)
                 continue
             share = lower_limb_percent_capable(motion, subject, torque, angle)
-            found = Capability(moment.joint, motion, torque, "N-m", {}, ANDERSON)
+            outside = beyond_curve(motion, subject.gender, [age_group(age)], angle)
+            found = Capability(moment.joint, motion, torque, "N-m", {}, ANDERSON, False, outside)
             answer.record(found, ref.words, share)
         if ref.age is None:
             answer.notes.append(f"{ref.words}: age not given, {ANDERSON}'s 18-25 group")
@@ -622,7 +631,9 @@ def _population_shares(
         )
         ok = ~np.isnan(capable) & (w > 0)
         if ok.any():
-            found = Capability(moment.joint, motion, torque, "N-m", {}, ANDERSON)
+            groups = sorted({age_group(float(a)) for a in people.ages[ok]})
+            outside = beyond_curve(motion, people.gender, groups, angle)
+            found = Capability(moment.joint, motion, torque, "N-m", {}, ANDERSON, False, outside)
             out.append((found, *_weighted(capable[ok], w[ok])))
     return out
 

@@ -134,9 +134,12 @@ def answer_parts(answer: TaskAnswer) -> tuple[list[str], list[str]]:
     scores = " ".join(f"{r.side[0]} {r.score}" for r in answer.rula)
     rebas = " ".join(f"{r.side[0]} {r.score}" for r in answer.reba)
     uncovered = [f"{m.joint} {m.size:.1f}" for m in answer.moments if m.covered_by == UNCOVERED]
+    # a model answering outside what it was fitted on says so (sass task gives why)
+    outside = [c.what for c in answer.capabilities if c.extrapolated]
     notes = [
         f"Balance: {balance}; RULA {scores}; REBA {rebas}; not covered (N-m): "
         f"{', '.join(uncovered)}",
-        f"Limiting: {'; '.join(limiting)}",
+        f"Limiting: {'; '.join(limiting)}"
+        + (f"; extrapolated (outside the fitted data): {', '.join(outside)}" if outside else ""),
     ]
     return lines, notes
