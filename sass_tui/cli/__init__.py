@@ -202,6 +202,9 @@ class _VersionAction(argparse.Action):
 # this threshold it runs only when a command keeps allocating, so memory held
 # by unreachable cycles stays bounded by about this many objects.
 COLLECT_AFTER_OBJECTS = 50_000
+# Python's own thresholds, read before main() raises them, for the command
+# that lives on: `sass serve` (cli/serving.py).
+PYTHON_COLLECT_THRESHOLD = gc.get_threshold()
 
 
 def command_line() -> int:

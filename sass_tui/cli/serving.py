@@ -11,11 +11,13 @@ sass_tui/startup.py); it imports this module only then.
 from __future__ import annotations
 
 import argparse
+import gc
 import sys
 import tempfile
 import time
 from pathlib import Path
 
+from sass_tui.cli import PYTHON_COLLECT_THRESHOLD
 from sass_tui.cli.common.database_access import open_db
 from sass_tui.db.engine.addresses import is_url, shown
 from sass_tui.db.engine.database import configured_target
@@ -65,6 +67,12 @@ def start(args: argparse.Namespace, *, token: str, loopback: bool, ssl_context) 
         file=err,
         flush=True,
     )
+    # A server lives on: each browser session leaves ~77 objects in reference
+    # cycles inside aiohttp and asyncio (the request, the WebSocket, the
+    # session process's pipes).  At main()'s threshold for one-shot commands
+    # they waited some 500 sessions (~10 MB) for a collection; at Python's own
+    # they go within a few (docs/reliability.md, benchmarks/serve_memory.py).
+    gc.set_threshold(*PYTHON_COLLECT_THRESHOLD)
     try:
         return serve(options)
     finally:

@@ -3,9 +3,11 @@ web server starts, saying what would allow it."""
 
 from __future__ import annotations
 
+import gc
+
 import pytest
 
-from sass_tui.cli import main
+from sass_tui.cli import COLLECT_AFTER_OBJECTS, PYTHON_COLLECT_THRESHOLD, main, serving
 
 
 def test_a_remote_address_needs_allow_remote(capsys):
@@ -19,3 +21,19 @@ def test_a_port_that_is_not_a_number_is_refused_by_the_parser(capsys):
         main(["serve", "--port", "port"])
     assert stop.value.code == 2
     assert "--port" in capsys.readouterr().err
+
+
+def test_the_server_collects_cycles_at_pythons_threshold(tmp_path, monkeypatch, capsys):
+    """One-shot commands raise the collector's threshold (cli/__init__.py
+    COLLECT_AFTER_OBJECTS); the server gives Python's back, or each
+    session's cycles wait some 500 sessions (docs/reliability.md)."""
+    seen = []
+    monkeypatch.setattr(serving, "serve", lambda options: seen.append(gc.get_threshold()) or 0)
+    before = gc.get_threshold()
+    try:
+        assert main(["serve", "--workdir", str(tmp_path)]) == 0
+    finally:
+        gc.set_threshold(*before)
+    assert seen == [PYTHON_COLLECT_THRESHOLD]
+    assert PYTHON_COLLECT_THRESHOLD[0] < COLLECT_AFTER_OBJECTS
+    assert "Ctrl+C stops the server" in capsys.readouterr().err
