@@ -50,6 +50,8 @@ from sass_tui.model.strength.low_back import LowBack, low_back
 from sass_tui.model.strength.percent_capable import lower_limb_capable, normal_survival
 from sass_tui.model.strength.published_strength import (
     AGE_GROUPS,
+    MAX_AGE,
+    MIN_AGE,
     Subject,
     age_group,
     beyond_curve,
@@ -616,6 +618,10 @@ def _population_shares(
         capable, weight = _hand_sums(arm, body, people, np.array([load.force]))
         out.append((hand_capability(load, arm), float(capable[0]), weight))
     scale_body = m * h / (body.body_mass * body.stature)
+    # the age groups of the people Anderson et al.'s model answers for, once
+    # for every leg joint (over the distinct ages: thousands of people, few ages)
+    answered = _known(people) & (people.ages >= MIN_AGE) & (people.ages <= MAX_AGE)
+    groups = sorted({age_group(float(a)) for a in np.unique(people.ages[answered])})
     for moment, side, word in _legs(moments):
         motion, torque = leg_demand(moment, word)
         sign = 1.0 if motion == LEG_JOINTS[word][1][0] else -1.0
@@ -631,7 +637,6 @@ def _population_shares(
         )
         ok = ~np.isnan(capable) & (w > 0)
         if ok.any():
-            groups = sorted({age_group(float(a)) for a in people.ages[ok]})
             outside = beyond_curve(motion, people.gender, groups, angle)
             found = Capability(moment.joint, motion, torque, "N-m", {}, ANDERSON, False, outside)
             out.append((found, *_weighted(capable[ok], w[ok])))
