@@ -29,13 +29,14 @@ No Textual import here.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 import numpy.typing as npt
 
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.hanim import LOA1, build_humanoid
+from sass_tui.model.body.hanim import LOA1, Humanoid, build_humanoid
 from sass_tui.model.body.posture import Angles, PosedBody, pose_figure
 from sass_tui.model.errors import SassError
 from sass_tui.model.strength.arm_force_field import (
@@ -294,6 +295,8 @@ class TaskAnswer:
     unstable: dict[str, str] = field(default_factory=dict)  # population -> why it tips
     rula: list[Rula] = field(default_factory=list)  # each arm, on the first figure
     reba: list[Reba] = field(default_factory=list)
+    # population -> the angles its figure took, where each figure finds its own
+    postures: dict[str, Angles] = field(default_factory=dict)
 
     def limiting(self, population: str) -> Capability | None:
         """The covered joint or hand the fewest of `population` can do (a
@@ -313,6 +316,15 @@ class TaskAnswer:
                 )
                 return
         self.capabilities.append(replace(found, percent={population: percent}))
+
+
+# A task's posture: the same angles for every figure, or each figure's own
+# (found from where its hands must be, model/strength/hands_at.py)
+PostureOf = Angles | Callable[[Figure], Angles]
+
+
+def _angles_for(posture: PostureOf, figure: Figure) -> Angles:
+    return posture(figure) if callable(posture) else posture
 
 
 @dataclass(frozen=True)
@@ -379,19 +391,23 @@ LEAN_TOLERANCE_M = 1e-4  # the centre of pressure within 0.1 mm of its place
 
 
 def pose_task(
-    figure: Figure, angles: Angles, loads: list[HandLoad], seated: bool = False
+    figure: Figure,
+    angles: Angles,
+    loads: list[HandLoad],
+    seated: bool = False,
+    humanoid: Humanoid | None = None,
 ) -> tuple[PosedBody, Balance | None, Angles, float | None]:
     """The figure in the task's posture: seated (no balance), standing as
     given (an ankle angle given), or leaning at the ankles until the floor's
     centre of pressure lies QUIET_STANCE_COP_M ahead of them, within the
-    ankles' range (the module docstring).  (body, balance, angles, lean)."""
+    ankles' range (the module docstring).  (body, balance, angles, lean).
+    `humanoid`: the figure's, for a caller posing it many times."""
+    humanoid = humanoid or build_humanoid(figure)
     if seated:
-        return pose_figure(figure, angles, seated=True), None, angles, None
+        return pose_figure(figure, angles, seated=True, humanoid=humanoid), None, angles, None
     if any(axis == "ankle_y" for _, axis in angles):
-        body = pose_figure(figure, angles)
+        body = pose_figure(figure, angles, humanoid=humanoid)
         return body, balance(body, hand_forces(body, loads)), angles, None
-
-    humanoid = build_humanoid(figure)
 
     def stand(lean: float) -> tuple[PosedBody, Balance, Angles]:
         leaned = {**angles, ("left", "ankle_y"): lean, ("right", "ankle_y"): lean}
@@ -438,12 +454,13 @@ def pose_task(
 
 
 def assess_task(
-    references: list[Reference], angles: Angles, loads: list[HandLoad], seated: bool = False
+    references: list[Reference], posture: PostureOf, loads: list[HandLoad], seated: bool = False
 ) -> TaskAnswer:
     """The moments (on the first reference's figure) and, for each reference,
     the percent capable of each loaded hand and each hip, knee and ankle."""
     answer: TaskAnswer | None = None
     for ref in references:
+        angles = _angles_for(posture, ref.figure)
         body, stance, used, lean = pose_task(ref.figure, angles, loads, seated)
         moments = task_moments(body, loads, stance)
         if answer is None:
@@ -453,6 +470,8 @@ def assess_task(
             answer.notes += _posture_notes(seated, lean, stance)
             answer.rula, answer.reba = _scores(ref.figure, body, used, loads, stance, seated, lean)
         answer.populations.append(ref.words)
+        if callable(posture):
+            answer.postures[ref.words] = angles
         if stance is not None and not stance.stable:
             answer.unstable[ref.words] = stance.reason
             continue
@@ -554,7 +573,7 @@ class Population:
 
 def assess_populations(
     groups: list[tuple[Figure, Population]],
-    angles: Angles,
+    posture: PostureOf,
     loads: list[HandLoad],
     together: str = "",
     seated: bool = False,
@@ -567,6 +586,7 @@ def assess_populations(
     answer: TaskAnswer | None = None
     sums: dict[str, tuple[Capability, float, float]] = {}
     for figure, people in groups:
+        angles = _angles_for(posture, figure)
         body, stance, used, lean = pose_task(figure, angles, loads, seated)
         moments = task_moments(body, loads, stance)
         if answer is None:
@@ -576,6 +596,8 @@ def assess_populations(
             answer.notes += _posture_notes(seated, lean, stance)
             answer.rula, answer.reba = _scores(figure, body, used, loads, stance, seated, lean)
         answer.populations.append(people.words)
+        if callable(posture):
+            answer.postures[people.words] = angles
         if people.note not in answer.notes:
             answer.notes.append(people.note)
         if stance is not None and not stance.stable:

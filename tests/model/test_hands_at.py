@@ -1,0 +1,146 @@
+"""A stoop found from where the hands must be (model/strength/hands_at.py):
+the grasp lands where it was asked, measured by the NIOSH H and V of the
+posed figure (model/strength/hand_position.py, not the solver's own
+measure); each figure finds its own angles; a place the stoop cannot reach
+is refused naming a place it does reach."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from sass_tui.cli import main
+from sass_tui.model.body.figure import Figure
+from sass_tui.model.errors import SassError
+from sass_tui.model.strength.hand_position import body_h_v
+from sass_tui.model.strength.hands_at import (
+    HandsAt,
+    parse_hands_at,
+    solve_hands_at,
+)
+from sass_tui.model.strength.strength_conditions import joint_limit_range
+from sass_tui.model.strength.task import (
+    Reference,
+    TaskError,
+    assess_task,
+    load_of,
+    pose_task,
+)
+
+BOXES = [load_of("left", "10 kg"), load_of("right", "10 kg")]
+
+
+@pytest.fixture(scope="module")
+def figures():
+    return {gender: Figure.default(gender) for gender in ("female", "male")}
+
+
+@pytest.mark.parametrize("gender", ["female", "male"])
+@pytest.mark.parametrize("loads", [[], BOXES], ids=["empty-handed", "two 10 kg boxes"])
+@pytest.mark.parametrize("h_v", [(0.25, 0.5), (0.4, 0.3), (0.5, 0.75), (0.3, 0.1)])
+def test_the_grasp_lands_where_it_was_asked(figures, gender, loads, h_v):
+    figure = figures[gender]
+    angles = solve_hands_at(figure, HandsAt(*h_v), {}, loads)
+    body, stance, *_ = pose_task(figure, angles, loads)
+    h, v = body_h_v(body)
+    assert h == pytest.approx(h_v[0], abs=0.002)
+    assert v == pytest.approx(h_v[1], abs=0.002)
+    # a stoop: straight legs, hips and shoulders within the figure's limits
+    assert ("left", "knee_y") not in angles
+    for side in ("left", "right"):
+        for axis in ("hip_y", "shoulder_y"):
+            low, high = joint_limit_range(figure, side, axis)
+            assert low <= angles[(side, axis)] <= high
+    assert angles[("left", "hip_y")] == angles[("right", "hip_y")]
+
+
+def test_each_figure_stoops_its_own_way(figures):
+    """The 50th-percentile woman, shorter, stoops further than the man for one box."""
+    goal = HandsAt(0.4, 0.3)
+    woman = solve_hands_at(figures["female"], goal, {}, BOXES)
+    man = solve_hands_at(figures["male"], goal, {}, BOXES)
+    assert woman[("left", "hip_y")] > man[("left", "hip_y")] + 5
+    answer = assess_task(
+        [Reference("women", figures["female"], None), Reference("men", figures["male"], None)],
+        lambda figure: solve_hands_at(figure, goal, {}, BOXES),
+        BOXES,
+    )
+    assert answer.postures["women"] == woman and answer.postures["men"] == man
+
+
+def test_the_other_angles_are_kept(figures):
+    figure = figures["male"]
+    angles = solve_hands_at(figure, HandsAt(0.35, 0.6), {("", "neck_y"): 20.0}, [])
+    assert angles[("", "neck_y")] == 20.0
+    h, v = body_h_v(pose_task(figure, angles, [])[0])
+    assert (h, v) == pytest.approx((0.35, 0.6), abs=0.002)
+
+
+def test_a_place_within_the_straight_arms_reach_is_refused_then_reached_with_bent_elbows(
+    figures,
+):
+    """Hands 30 cm ahead at 1 m: inside the circle a straight arm sweeps from
+    the shoulder, so no stoop reaches it until the elbows bend."""
+    figure = figures["female"]
+    with pytest.raises(TaskError, match=r"nearest is H [\d.]+ cm, V [\d.]+ cm") as refused:
+        solve_hands_at(figure, HandsAt(0.3, 1.0), {}, [])
+    assert "elbow_y" in str(refused.value)
+    bent = {(side, "elbow_y"): 120.0 for side in ("left", "right")}
+    angles = solve_hands_at(figure, HandsAt(0.3, 1.0), bent, [])
+    assert body_h_v(pose_task(figure, angles, [])[0]) == pytest.approx((0.3, 1.0), abs=0.002)
+
+
+def test_the_nearest_place_named_is_one_the_stoop_reaches(figures):
+    figure = figures["female"]
+    with pytest.raises(TaskError) as refused:
+        solve_hands_at(figure, HandsAt(0.6, 0.1), {}, BOXES)
+    words = str(refused.value).split("nearest is H ")[1]
+    h = float(words.split(" cm")[0])
+    v = float(words.split("V ")[1].split(" cm")[0])
+    angles = solve_hands_at(figure, HandsAt(h / 100, v / 100), {}, BOXES)
+    assert body_h_v(pose_task(figure, angles, BOXES)[0]) == pytest.approx(
+        (h / 100, v / 100), abs=0.002
+    )
+
+
+def test_sass_task_hands_at_reports_each_figures_posture(capsys):
+    assert main(["task", "--hands-at", "40cm,30cm", "--left-load", "10 kg", "--right-load",
+                 "10 kg", "--format", "json"]) == 0  # fmt: skip
+    shown = json.loads(capsys.readouterr().out)
+    assert shown["hands_at"]["h"] == {"value": 40.0, "unit": "cm"}
+    assert set(shown["hands_at"]["solved"]) == {"women", "men"}
+    # the low back of the first figure (the woman) in her own solved stoop
+    solved = shown["hands_at"]["solved"]["women"]
+    assert solved["hip_y"] > 60 and shown["low_back"]["moment_N_m"] > 60
+    assert main(["task", "--hands-at", "40,30", "--gender", "female"]) == 0
+    text = capsys.readouterr().out
+    assert "a stoop to --hands-at" in text and "note: hands at H 40.0 cm, V 30.0 cm" in text
+
+
+@pytest.mark.parametrize(
+    ("argv", "said"),
+    [
+        (["hip_y=10", "--hands-at", "30,10"], "leave out hip_y"),
+        (["--hands-at", "30,20", "--seated"], "not with --seated"),
+        (["--hands-at", "30"], "expected H,V"),
+        (["--hands-at", "30 kg,20"], "--hands-at"),
+        (["--hands-at=-5,20"], "H from 0 to 200 cm"),
+    ],
+)
+def test_what_a_stoop_cannot_take_is_refused(capsys, argv, said):
+    assert main(["task", *argv]) == 2
+    err = capsys.readouterr().err
+    assert said in err and "Traceback" not in err
+
+
+@given(st.text(max_size=40))
+def test_any_text_is_hands_at_or_a_message(text):
+    try:
+        goal = parse_hands_at(text)
+    except SassError as refused:
+        assert str(refused)
+    else:
+        assert 0 <= goal.h <= 2 and 0 <= goal.v <= 3
