@@ -42,14 +42,14 @@ def test_the_line_is_the_lift_the_panel_holds():
         * 0.6767
     )
     women = 50 * (1 + math.erf((1 - kg / mal) / 0.260 / math.sqrt(2)))
-    line = handling_line(figure, POSTURE, loads)
+    line = handling_line(figure, parse_angles(list(POSTURE)), loads)
     assert f"NIOSH LI {kg / rwl:.2f}" in line
     assert f"accepted by women {women:.0f} %" in line
 
 
 def test_no_load_held_up_is_no_lift():
     # the hand pushes down: nothing is lifted
-    line = handling_line(Figure.default("male"), (), [hand_load("right", 30.0, (0, -1, 0))])
+    line = handling_line(Figure.default("male"), {}, [hand_load("right", 30.0, (0, -1, 0))])
     assert line.startswith("Lifting: no load held up")
 
 
@@ -65,7 +65,8 @@ def test_the_panel_shows_the_line(app_at, drive):
             await wait_until(
                 pilot, lambda: "NIOSH LI" in str(shown.render()), "the manual-handling line"
             )
-            expected = handling_line(screen.figure, panel.posture, panel.loads.values())
+            angles = parse_angles(list(panel.posture))
+            expected = handling_line(screen.figure, angles, panel.loads.values())
             assert str(shown.render()).splitlines()[-1] == expected
 
     drive(scenario())

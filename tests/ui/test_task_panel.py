@@ -305,3 +305,51 @@ def test_the_figure_beside_takes_the_tasks_posture():
     assert head(stoop).x > head(standing).x + 40.0
     assert head(stoop).y < head(standing).y - 40.0
     assert stoop.height < standing.height
+
+
+@pytest.mark.slow
+def test_the_posture_cell_takes_where_the_hands_grasp(app_at, drive):
+    """`hands=40cm,30cm` in the posture cell: each figure answered stoops to
+    that place (sass task --hands-at, model/strength/hands_at.py), the
+    figure beside the panel is drawn in its own stoop, and the words are
+    saved with the worksheet like any posture."""
+    from sass_tui.model.strength.hand_position import body_h_v
+    from sass_tui.model.strength.hands_at import HandsAt, solve_hands_at
+
+    async def scenario():
+        async with app_at((140, 44)) as (app, pilot):  # wide: the figure beside
+            screen = app.screen
+            await pilot.press("T")
+            await wait_until(pilot, lambda: screen.task_panel is not None, "a task panel")
+            panel = screen.task_panel
+            await answered(pilot, panel)
+            await pilot.press("home", "enter")
+            await answer(pilot, "hands=40cm,30cm")
+            await wait_until(
+                pilot,
+                lambda: panel.answer is not None and panel.answer.postures and not panel.computing,
+                "an answer with each figure's stoop",
+            )
+            assert screen.session.task.posture == ("hands=40cm,30cm",)
+            loads = list(panel.loads.values())
+            figure = screen.figure
+            expected = solve_hands_at(figure, HandsAt(0.4, 0.3), {}, loads)
+            assert panel.shown_angles == expected
+            body = pose_task(figure, expected, loads)[0]
+            assert body_h_v(body) == pytest.approx((0.4, 0.3), abs=0.002)
+            drawn = posed_outline(build_humanoid(figure), body, "", float(figure.stature))
+            await wait_until(
+                pilot,
+                lambda: (
+                    screen.figure_panel is not None
+                    and screen.figure_panel.outlines[0].side == drawn.side
+                ),
+                "the figure beside drawn in its stoop",
+            )
+            # hip_y is what the stoop solves: refused, the posture kept
+            await pilot.press("enter")
+            await answer(pilot, "hands=40,30 hip_y=20")
+            await wait_until(pilot, lambda: "leave out hip_y" in message(app), "the refusal")
+            assert panel.posture == ("hands=40cm,30cm",)
+
+    drive(scenario())

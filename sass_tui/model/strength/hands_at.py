@@ -26,22 +26,24 @@ No Textual import here.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 import numpy.typing as npt
 
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.hanim import build_humanoid
-from sass_tui.model.body.posture import Angles, PosedBody
+from sass_tui.model.body.posture import Angles, PosedBody, parse_angles
 from sass_tui.model.errors import SassError
 from sass_tui.model.strength.hand_position import grasp
 from sass_tui.model.strength.strength_conditions import joint_limit_range
-from sass_tui.model.strength.task import HandLoad, TaskError, pose_task
+from sass_tui.model.strength.task import HandLoad, PostureOf, TaskError, pose_task
 from sass_tui.model.units import parse_quantity
 
 SIDES = ("left", "right")
+HANDS_WORD = "hands="  # the posture word of a place the hands reach: hands=40cm,30cm
 # the angles a stoop solves (on both sides): the user leaves them out
 SOLVED_AXES = ("hip_y", "shoulder_y")
 REACHED_M = 0.002  # the grasp within 2 mm of its place
@@ -63,23 +65,46 @@ class HandsAt:
         return f"H {self.h * 100:.1f} cm, V {self.v * 100:.1f} cm by a stoop"
 
 
-def parse_hands_at(text: str) -> HandsAt:
-    """'40cm,30cm', '16 in, 12 in', '40,30' (cm without a unit) -> HandsAt."""
+def parse_hands_at(text: str, name: str = "--hands-at") -> HandsAt:
+    """'40cm,30cm', '16 in, 12 in', '40,30' (cm without a unit) -> HandsAt;
+    `name` says where it was given in a message."""
+    said = f"{name} {text.strip()!r}"
     parts = text.split(",")
     if len(parts) != 2:
         raise TaskError(
-            f"--hands-at {text.strip()!r}: expected H,V (the grasp ahead of the ankles and "
-            "above the floor), e.g. 40cm,30cm"
+            f"{said}: expected H,V (the grasp ahead of the ankles and above the floor), "
+            "e.g. 40cm,30cm"
         )
     try:
         h, v = (parse_quantity(part.strip(), "cm") / 100.0 for part in parts)
     except SassError as exc:
-        raise TaskError(f"--hands-at {text.strip()!r}: {exc}") from None
+        raise TaskError(f"{said}: {exc}") from None
     if not (0.0 <= h <= 2.0 and 0.0 <= v <= 3.0):
-        raise TaskError(
-            f"--hands-at {text.strip()!r}: H from 0 to 200 cm and V from 0 to 300 cm expected"
-        )
+        raise TaskError(f"{said}: H from 0 to 200 cm and V from 0 to 300 cm expected")
     return HandsAt(h, v)
+
+
+def split_posture(words: Sequence[str], seated: bool = False) -> tuple[Angles, HandsAt | None]:
+    """A posture's words (the Task panel's posture cell): JOINT=ANGLE ... and
+    at most one `hands=H,V`, the place a stoop reaches (--hands-at)."""
+    goals = [word for word in words if word.lower().startswith(HANDS_WORD)]
+    if len(goals) > 1:
+        raise TaskError(f"one {HANDS_WORD}H,V in a posture, not {len(goals)}")
+    angles = parse_angles([word for word in words if word not in goals])
+    if not goals:
+        return angles, None
+    goal = parse_hands_at(goals[0][len(HANDS_WORD) :], HANDS_WORD.rstrip("="))
+    check_free(goal, angles, seated)
+    return angles, goal
+
+
+def posture_of(words: Sequence[str], loads: list[HandLoad]) -> PostureOf:
+    """A posture's words as a task takes them: its angles, or with `hands=H,V`
+    each figure's own stoop."""
+    angles, goal = split_posture(words)
+    if goal is None:
+        return angles
+    return partial(solve_hands_at, goal=goal, angles=angles, loads=loads)
 
 
 def check_free(goal: HandsAt, angles: Angles, seated: bool) -> None:

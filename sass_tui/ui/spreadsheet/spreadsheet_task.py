@@ -61,6 +61,10 @@ class TaskCommands(SheetScreenBase):
         event.stop()
         self.show_task_panel()
 
+    def on_task_panel_posed(self, event: TaskPanel.Posed) -> None:
+        event.stop()
+        self.redraw_figure_panel()
+
     def on_task_panel_refused(self, event: TaskPanel.Refused) -> None:
         event.stop()
         self.complain(event.text)

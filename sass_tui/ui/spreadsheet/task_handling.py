@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.posture import parse_angles, pose_figure
+from sass_tui.model.body.posture import Angles, pose_figure
 from sass_tui.model.errors import SassError
 from sass_tui.model.strength import liberty_mutual, niosh
 from sass_tui.model.strength.hand_position import body_h_v
@@ -27,13 +27,13 @@ def lifted_kg(loads: Iterable[HandLoad]) -> float:
     return sum(max(0.0, float(load.vector[1])) for load in loads) / STANDARD_GRAVITY
 
 
-def handling_line(figure: Figure, posture: tuple[str, ...], loads: Iterable[HandLoad]) -> str:
+def handling_line(figure: Figure, angles: Angles, loads: Iterable[HandLoad]) -> str:
     """One line: the lifting index and the percent of women and men who accept the lift."""
     kg = lifted_kg(loads)
     if kg <= 0:
         return "Lifting: no load held up (NIOSH, Liberty Mutual rate a lift)"
     try:
-        h, v = body_h_v(pose_figure(figure, parse_angles(list(posture))))
+        h, v = body_h_v(pose_figure(figure, angles))
         metric = niosh.form("metric")
         lift = niosh.Lift(metric, niosh.Point(h * 100, v * 100), 25.0, 0.2, "long", kg)
         rwl = niosh.assess_lift(lift).rwl

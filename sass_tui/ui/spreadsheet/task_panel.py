@@ -44,9 +44,10 @@ from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.hanim import build_humanoid
 from sass_tui.model.body.outline import Outline
 from sass_tui.model.body.posed_outline import posed_outline
-from sass_tui.model.body.posture import parse_angles, pose_figure
+from sass_tui.model.body.posture import Angles, pose_figure
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.task_settings import TaskSettings
+from sass_tui.model.strength.hands_at import posture_of, split_posture
 from sass_tui.model.strength.published_strength import GENDER_WORDS
 from sass_tui.model.strength.task import (
     CurveGroup,
@@ -109,19 +110,25 @@ def references(task: TaskInput) -> list[Reference]:
     return [Reference(GENDER_WORDS[g], Figure.default(g), None) for g in genders]
 
 
-def assess(task: TaskInput) -> tuple[TaskAnswer, Curves]:
+def assess(task: TaskInput) -> tuple[TaskAnswer, Curves, Angles]:
     """The task for the people asked for (a target's or virtual population's
-    read from the database, the shipped one made the first time) and, when
-    asked, the curves of percent capable against the load on a hand."""
-    angles = parse_angles(list(task.posture))
+    read from the database, the shipped one made the first time), when
+    asked the curves of percent capable against the load on a hand, and the
+    angles of the figure shown (its own stoop for `hands=H,V`)."""
     loads = list(task.loads)
+    posture = posture_of(task.posture, loads)
+    angles = posture(task.figure) if callable(posture) else posture
     kind, _, name = task.people.partition(" ")
     together = ""
     if kind not in WEIGHTED:
         chosen = references(task)
-        answer = assess_task(chosen, angles, loads)
+        answer = assess_task(chosen, posture, loads)
         groups = [
-            CurveGroup(r.words, pose_task(r.figure, angles, loads)[0], r.figure.gender)
+            CurveGroup(
+                r.words,
+                pose_task(r.figure, answer.postures.get(r.words, angles), loads)[0],
+                r.figure.gender,
+            )
             for r in chosen
         ]
     else:
@@ -135,13 +142,18 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves]:
             db.close()
         figures = [(Figure.default(group.gender), group) for group in people]
         together = group_words(target, None)
-        answer = assess_populations(figures, angles, loads, together)
+        answer = assess_populations(figures, posture, loads, together)
         groups = [
-            CurveGroup(group.words, pose_task(figure, angles, loads)[0], group.gender, group)
+            CurveGroup(
+                group.words,
+                pose_task(figure, answer.postures.get(group.words, angles), loads)[0],
+                group.gender,
+                group,
+            )
             for figure, group in figures
         ]
     load = next((x for x in loads if x.side == task.curve_side and x.force > 0), None)
-    return answer, {} if load is None else hand_curves(groups, load, together)
+    return answer, {} if load is None else hand_curves(groups, load, together), angles
 
 
 class TaskCells(EditorKeys, Widget, can_focus=True):
@@ -247,10 +259,20 @@ class TaskPanel(Vertical):
 
     class Assessed(Message):
         def __init__(
-            self, task: TaskInput, answer: TaskAnswer | None, curves: Curves, error: str = ""
+            self,
+            task: TaskInput,
+            answer: TaskAnswer | None,
+            curves: Curves,
+            error: str = "",
+            shown: Angles | None = None,
         ) -> None:
             super().__init__()
             self.task, self.answer, self.curves, self.error = task, answer, curves, error
+            self.shown = shown  # the figure shown's angles in the task
+
+    class Posed(Message):
+        """An answer came with the figure shown's angles: the figure beside
+        the panel is drawn in them."""
 
     class Refused(Message):
         """The people asked for could not be read: the message line says why."""
@@ -272,6 +294,8 @@ class TaskPanel(Vertical):
         self.own_posture: tuple[str, ...] = ()  # typed in the posture cell; () follows the row
         self.figure: Figure | None = None
         self.answer: TaskAnswer | None = None
+        # the figure shown's angles in the task answered (its own stoop for hands=H,V)
+        self.shown_angles: Angles | None = None
         self.error = ""
         self.computing = False
         self.pending: TaskInput | None = None  # the newest task handed to a worker
@@ -331,11 +355,11 @@ class TaskPanel(Vertical):
     @work(thread=True, exclusive=True, group="task", exit_on_error=False)
     def run_task(self, task: TaskInput) -> None:
         try:
-            answer, curves = assess(task)
+            answer, curves, shown = assess(task)
         except (SassError, OSError) as exc:
             self.post_message(self.Assessed(task, None, {}, str(exc)))
             return
-        self.post_message(self.Assessed(task, answer, curves))
+        self.post_message(self.Assessed(task, answer, curves, shown=shown))
 
     def on_task_panel_assessed(self, event: TaskPanel.Assessed) -> None:
         event.stop()
@@ -349,6 +373,9 @@ class TaskPanel(Vertical):
             self.redraw()
             return
         self.answer, self.error, self.curves = event.answer, event.error, event.curves
+        if event.shown != self.shown_angles:
+            self.shown_angles = event.shown
+            self.post_message(self.Posed())
         if event.answer is not None:
             self.answered_people = event.task.people
         self.redraw()
@@ -375,8 +402,8 @@ class TaskPanel(Vertical):
             answer_view.update(Text(self.error))
         elif self.answer is not None:
             rows, notes = answer_parts(self.answer)
-            if self.figure is not None:
-                notes.append(handling_line(self.figure, self.posture, self.loads.values()))
+            if self.figure is not None and self.shown_angles is not None:
+                notes.append(handling_line(self.figure, self.shown_angles, self.loads.values()))
             self.query_one("#task-table", Static).update(Text("\n".join(rows), no_wrap=True))
             answer_view.update(Text("\n".join(notes)))
         if not curve:
@@ -412,6 +439,7 @@ class TaskPanel(Vertical):
         if cell == "posture":
             return (
                 "The task's posture, JOINT=ANGLE ... (trunk_y=30 hip_y=60 shoulder_y=90; "
+                "hands=40cm,30cm: a stoop to where the hands grasp; "
                 f"`{FOLLOW_ROW}`: the strength page's row) [{self.cell_text(cell)}]:"
             )
         if cell == "people":
@@ -456,7 +484,7 @@ class TaskPanel(Vertical):
 
     def take_settings(self, settings: TaskSettings) -> None:
         """A worksheet's settings: each word checked as when typed (SassError)."""
-        parse_angles(list(settings.posture))  # refuse a bad word before taking any
+        split_posture(settings.posture)  # refuse a bad word before taking any
         own = settings.posture
         loads = {side: parse_hand_load(side, text) for side, text in settings.loads}
         people = parse_people(settings.people)
@@ -468,10 +496,10 @@ class TaskPanel(Vertical):
     def task_outline(self) -> Outline | None:
         """The figure shown in the task's posture, standing as the task stands
         (for the figure panel beside it); None: nothing to pose."""
-        if self.figure is None:
+        if self.figure is None or self.shown_angles is None:
             return None
         figure = self.figure
-        angles = parse_angles(list(self.posture))
+        angles = self.shown_angles
         loads = list(self.loads.values())
         body, _, _, _ = pose_task(figure, angles, loads)
         label = f"{figure.person or 'figure'} in the task's posture"
@@ -479,11 +507,13 @@ class TaskPanel(Vertical):
 
     def set_posture(self, text: str) -> tuple[str, ...]:
         """`trunk_y=30 hip_y=60 ...` (checked as `sass task` checks it, and
-        against the figure's joint limits), or `row`: follow the strength page."""
+        against the figure's joint limits), with `hands=H,V` a stoop to where
+        the hands grasp (`sass task --hands-at`), or `row`: follow the
+        strength page."""
         words = tuple(text.split())
         if words == (FOLLOW_ROW,):
             words = ()
-        angles = parse_angles(list(words))
+        angles, _ = split_posture(words)
         if self.figure is not None:
             pose_figure(self.figure, angles)  # refuse what the figure cannot take
         self.own_posture = words
