@@ -48,6 +48,17 @@ async def answered(pilot, panel: TaskPanel) -> None:
     )
 
 
+async def posture_typed(pilot, screen, text: str) -> TaskPanel:
+    """The Task panel shown and answered, then `text` typed in its posture cell."""
+    await pilot.press("T")
+    await wait_until(pilot, lambda: screen.task_panel is not None, "a task panel")
+    panel = screen.task_panel
+    await answered(pilot, panel)
+    await pilot.press("home", "enter")
+    await answer(pilot, text)
+    return panel
+
+
 def hand_percent(
     figure: Figure, posture: tuple[str, ...], force: float, way=(0, 1, 0), held: float = 60.0
 ) -> float:
@@ -260,12 +271,7 @@ def test_the_task_panels_own_posture_is_kept_for_the_worksheet(app_at, drive):
     async def scenario():
         async with app_at(SIZE) as (app, pilot):
             screen = app.screen
-            await pilot.press("T")
-            await wait_until(pilot, lambda: screen.task_panel is not None, "a task panel")
-            panel = screen.task_panel
-            await answered(pilot, panel)
-            await pilot.press("home", "enter")
-            await answer(pilot, "trunk_y=30 hip_y=60 shoulder_y=90")
+            panel = await posture_typed(pilot, screen, "trunk_y=30 hip_y=60 shoulder_y=90")
             await wait_until(
                 pilot,
                 lambda: (
@@ -319,12 +325,7 @@ def test_the_posture_cell_takes_where_the_hands_grasp(app_at, drive):
     async def scenario():
         async with app_at((140, 44)) as (app, pilot):  # wide: the figure beside
             screen = app.screen
-            await pilot.press("T")
-            await wait_until(pilot, lambda: screen.task_panel is not None, "a task panel")
-            panel = screen.task_panel
-            await answered(pilot, panel)
-            await pilot.press("home", "enter")
-            await answer(pilot, "hands=40cm,30cm")
+            panel = await posture_typed(pilot, screen, "hands=40cm,30cm")
             await wait_until(
                 pilot,
                 lambda: panel.answer is not None and panel.answer.postures and not panel.computing,
