@@ -8,7 +8,7 @@ Anderson et al. 2007 for hips, knees and ankles), the limiting one named
     sass task shoulder_y=60 elbow_y=30 --right-load 100N
     sass task trunk_y=30 hip_y=60 shoulder_y=60 --left-load "10 kg" --right-load "10 kg"
     sass task shoulder_y=90 elbow_y=0 --right-load 40N --right-direction forward
-    sass task --hands-at 40cm,30cm --left-load "10 kg" --right-load "10 kg"
+    sass task hands=40cm,30cm --left-load "10 kg" --right-load "10 kg"
     sass task trunk_y=20 hip_y=90 --seated
     sass task shoulder_y=90 elbow_y=0 --right-load "15 lbf" --person "ANSUR II F 10037"
     sass task shoulder_y=90 --right-load 50N --target nasa-women
@@ -19,20 +19,17 @@ from __future__ import annotations
 
 import argparse
 import json
-from functools import partial
 
 from sass_tui.cli.common.options import SubParsers, add_db_option, add_virtual_option
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.posture import parse_angles
 from sass_tui.model.strength.hands_at import (
-    check_free,
     hands_at_json,
     hands_at_note,
-    parse_hands_at,
-    solve_hands_at,
+    posture_of,
+    split_posture,
 )
 from sass_tui.model.strength.published_strength import GENDER_WORDS
-from sass_tui.model.strength.task import PostureOf, Reference, TaskError, assess_task, load_of
+from sass_tui.model.strength.task import Reference, TaskError, assess_task, load_of
 from sass_tui.model.strength.task_report import task_json, task_text
 from sass_tui.model.units import parse_quantity
 from sass_tui.model.vocabulary import GENDERS
@@ -69,14 +66,10 @@ def register(commands: SubParsers) -> None:
         help="the posture: shoulder_x/y/z, elbow_y, wrist_x/y/z, hip_y, knee_y, ankle_y "
         "(deg; both sides, or left_/right_ before the joint), trunk_x (bend right), trunk_y "
         "(flexion), trunk_z (twist left), neck_x (bend right), neck_y (flexion), neck_z "
-        "(rotation right); standing upright if none",
-    )
-    task.add_argument(
-        "--hands-at",
-        metavar="H,V",
-        help="where the hands grasp, H ahead of the ankles and V above the floor (the NIOSH "
-        "manual's H and V), e.g. 40cm,30cm (cm without a unit): each figure stoops to it, "
-        "hip_y and shoulder_y found for its own body, the other angles as given",
+        "(rotation right); hands=H,V (e.g. hands=40cm,30cm, cm without a unit): where the "
+        "hands grasp, H ahead of the ankles and V above the floor (the NIOSH manual's H and "
+        "V), each figure stooping to it, its own hip_y and shoulder_y found; standing "
+        "upright if none",
     )
     task.add_argument(
         "--seated",
@@ -109,7 +102,7 @@ def register(commands: SubParsers) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    angles = parse_angles(args.angles)
+    angles, goal = split_posture(args.angles, args.seated)
     for side in ("left", "right"):
         if getattr(args, f"{side}_load") is None and getattr(args, f"{side}_direction"):
             raise TaskError(f"--{side}-direction without --{side}-load: give the force too")
@@ -121,11 +114,7 @@ def run(args: argparse.Namespace) -> int:
         )
         if text is not None
     ]
-    posture: PostureOf = angles
-    if args.hands_at is not None:
-        goal = parse_hands_at(args.hands_at)
-        check_free(goal, angles, args.seated)
-        posture = partial(solve_hands_at, goal=goal, angles=angles, loads=loads)
+    posture = posture_of(args.angles, loads, args.seated)
     if args.person is None and args.target is None and args.virtual is None:
         genders = [args.gender] if args.gender else ["female", "male"]
         references = [Reference(GENDER_WORDS[g], _figure(args, g), args.age) for g in genders]
@@ -135,16 +124,15 @@ def run(args: argparse.Namespace) -> int:
         from sass_tui.cli.task_people import people_answer
 
         answer = people_answer(args, posture, loads, _figure)
-    if args.hands_at is not None:
+    if goal is not None:
         answer.notes.insert(0, hands_at_note(goal, answer.postures))
     if args.format == "json":
         shown = task_json(answer, args.angles)
-        if args.hands_at is not None:
+        if goal is not None:
             shown["hands_at"] = hands_at_json(goal, answer.postures)
         print(json.dumps(shown))
     else:
-        words = args.angles if args.hands_at is None else [*args.angles, "a stoop to --hands-at"]
-        for line in task_text(answer, words):
+        for line in task_text(answer, args.angles):
             print(line)
     return 0
 

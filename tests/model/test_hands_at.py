@@ -107,7 +107,7 @@ def test_the_nearest_place_named_is_one_the_stoop_reaches(figures):
 
 
 def test_sass_task_hands_at_reports_each_figures_posture(capsys):
-    assert main(["task", "--hands-at", "40cm,30cm", "--left-load", "10 kg", "--right-load",
+    assert main(["task", "hands=40cm,30cm", "--left-load", "10 kg", "--right-load",
                  "10 kg", "--format", "json"]) == 0  # fmt: skip
     shown = json.loads(capsys.readouterr().out)
     assert shown["hands_at"]["h"] == {"value": 40.0, "unit": "cm"}
@@ -115,19 +115,20 @@ def test_sass_task_hands_at_reports_each_figures_posture(capsys):
     # the low back of the first figure (the woman) in her own solved stoop
     solved = shown["hands_at"]["solved"]["women"]
     assert solved["hip_y"] > 60 and shown["low_back"]["moment_N_m"] > 60
-    assert main(["task", "--hands-at", "40,30", "--gender", "female"]) == 0
+    assert main(["task", "hands=40,30", "--gender", "female"]) == 0
     text = capsys.readouterr().out
-    assert "a stoop to --hands-at" in text and "note: hands at H 40.0 cm, V 30.0 cm" in text
+    assert "posture hands=40,30" in text and "note: hands at H 40.0 cm, V 30.0 cm" in text
 
 
 @pytest.mark.parametrize(
     ("argv", "said"),
     [
-        (["hip_y=10", "--hands-at", "30,10"], "leave out hip_y"),
-        (["--hands-at", "30,20", "--seated"], "not with --seated"),
-        (["--hands-at", "30"], "expected H,V"),
-        (["--hands-at", "30 kg,20"], "--hands-at"),
-        (["--hands-at=-5,20"], "H from 0 to 200 cm"),
+        (["hip_y=10", "hands=30,10"], "leave out hip_y"),
+        (["hands=30,20", "--seated"], "not with --seated"),
+        (["hands=30"], "expected H,V"),
+        (["hands=30 kg,20"], "hands=30 kg,20"),
+        (["hands=-5,20"], "H from 0 to 200 cm"),
+        (["hands=30,20", "hands=40,20"], "one hands=H,V"),
     ],
 )
 def test_what_a_stoop_cannot_take_is_refused(capsys, argv, said):

@@ -316,7 +316,7 @@ def test_the_figure_beside_takes_the_tasks_posture():
 @pytest.mark.slow
 def test_the_posture_cell_takes_where_the_hands_grasp(app_at, drive):
     """`hands=40cm,30cm` in the posture cell: each figure answered stoops to
-    that place (sass task --hands-at, model/strength/hands_at.py), the
+    that place (as sass task takes it, model/strength/hands_at.py), the
     figure beside the panel is drawn in its own stoop, and the words are
     saved with the worksheet like any posture."""
     from sass_tui.model.strength.hand_position import body_h_v

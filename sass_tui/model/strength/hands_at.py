@@ -65,10 +65,9 @@ class HandsAt:
         return f"H {self.h * 100:.1f} cm, V {self.v * 100:.1f} cm by a stoop"
 
 
-def parse_hands_at(text: str, name: str = "--hands-at") -> HandsAt:
-    """'40cm,30cm', '16 in, 12 in', '40,30' (cm without a unit) -> HandsAt;
-    `name` says where it was given in a message."""
-    said = f"{name} {text.strip()!r}"
+def parse_hands_at(text: str) -> HandsAt:
+    """'40cm,30cm', '16 in, 12 in', '40,30' (cm without a unit) -> HandsAt."""
+    said = f"{HANDS_WORD}{text.strip()}"
     parts = text.split(",")
     if len(parts) != 2:
         raise TaskError(
@@ -86,22 +85,22 @@ def parse_hands_at(text: str, name: str = "--hands-at") -> HandsAt:
 
 def split_posture(words: Sequence[str], seated: bool = False) -> tuple[Angles, HandsAt | None]:
     """A posture's words (the Task panel's posture cell): JOINT=ANGLE ... and
-    at most one `hands=H,V`, the place a stoop reaches (--hands-at)."""
+    at most one `hands=H,V`, the place a stoop reaches (`sass task`'s too)."""
     goals = [word for word in words if word.lower().startswith(HANDS_WORD)]
     if len(goals) > 1:
         raise TaskError(f"one {HANDS_WORD}H,V in a posture, not {len(goals)}")
     angles = parse_angles([word for word in words if word not in goals])
     if not goals:
         return angles, None
-    goal = parse_hands_at(goals[0][len(HANDS_WORD) :], HANDS_WORD.rstrip("="))
+    goal = parse_hands_at(goals[0][len(HANDS_WORD) :])
     check_free(goal, angles, seated)
     return angles, goal
 
 
-def posture_of(words: Sequence[str], loads: list[HandLoad]) -> PostureOf:
+def posture_of(words: Sequence[str], loads: list[HandLoad], seated: bool = False) -> PostureOf:
     """A posture's words as a task takes them: its angles, or with `hands=H,V`
     each figure's own stoop."""
-    angles, goal = split_posture(words)
+    angles, goal = split_posture(words, seated)
     if goal is None:
         return angles
     return partial(solve_hands_at, goal=goal, angles=angles, loads=loads)
@@ -111,11 +110,11 @@ def check_free(goal: HandsAt, angles: Angles, seated: bool) -> None:
     """Refuse what the goal cannot be combined with: a seated figure, or an
     angle the goal solves given too."""
     if seated:
-        raise TaskError("--hands-at stands the figure in a stoop: not with --seated")
+        raise TaskError(f"{HANDS_WORD}H,V stands the figure in a stoop: not with --seated")
     given = sorted({axis for _, axis in angles if axis in SOLVED_AXES})
     if given:
         raise TaskError(
-            f"--hands-at solves {' and '.join(SOLVED_AXES)} for a stoop; "
+            f"{HANDS_WORD}H,V solves {' and '.join(SOLVED_AXES)} for a stoop; "
             f"leave out {', '.join(given)}"
         )
 

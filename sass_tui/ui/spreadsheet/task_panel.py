@@ -508,7 +508,7 @@ class TaskPanel(Vertical):
     def set_posture(self, text: str) -> tuple[str, ...]:
         """`trunk_y=30 hip_y=60 ...` (checked as `sass task` checks it, and
         against the figure's joint limits), with `hands=H,V` a stoop to where
-        the hands grasp (`sass task --hands-at`), or `row`: follow the
+        the hands grasp (as `sass task` takes it), or `row`: follow the
         strength page."""
         words = tuple(text.split())
         if words == (FOLLOW_ROW,):
