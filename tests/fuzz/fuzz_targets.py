@@ -622,6 +622,7 @@ def _task() -> Target:
         "--target\nnhanes-2017-2020\n--left-load\n40\nhip_y=30",
         "--mass\n70 kg\n--stature\n175 cm\n--format\njson\n--right-load\n20N",
         "trunk_y=30\nneck_y=20\nneck_z=-10\n--right-load\n10 kg\n--gender\nmale",
+        "hands=40cm,30cm\nelbow_y=10\n--left-load\n10 kg\n--gender\nfemale",
     ]
     return _verb("task", seeds, database=True)
 

@@ -20,6 +20,7 @@ from sass_tui.model.strength.hands_at import (
     HandsAt,
     parse_hands_at,
     solve_hands_at,
+    split_posture,
 )
 from sass_tui.model.strength.strength_conditions import joint_limit_range
 from sass_tui.model.strength.task import (
@@ -145,3 +146,20 @@ def test_any_text_is_hands_at_or_a_message(text):
         assert str(refused)
     else:
         assert 0 <= goal.h <= 2 and 0 <= goal.v <= 3
+
+
+@given(
+    st.lists(
+        st.sampled_from(["hands=", "hands=40,30", "HANDS=1m,1m", "hip_y=20", "elbow_y=30", ","])
+        | st.text(max_size=12).map(lambda tail: f"hands={tail}")
+        | st.text(max_size=12),
+        max_size=4,
+    )
+)
+def test_any_posture_words_are_a_posture_or_a_message(words):
+    try:
+        angles, goal = split_posture(words)
+    except SassError as refused:
+        assert str(refused)
+    else:
+        assert goal is None or ("left", "hip_y") not in angles
