@@ -130,6 +130,8 @@ def test_sass_task_hands_at_reports_each_figures_posture(capsys):
         (["hands=30 kg,20"], "hands=30 kg,20"),
         (["hands=-5,20"], "H from 0 to 200 cm"),
         (["hands=30,20", "hands=40,20"], "one hands=H,V"),
+        (["hands=2m,3m", "--gender", "female"], "beyond the arms' reach from a stoop"),
+        (["hands=60,10", "--gender", "female"], "pose a squat by its angles"),
     ],
 )
 def test_what_a_stoop_cannot_take_is_refused(capsys, argv, said):

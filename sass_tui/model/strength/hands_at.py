@@ -162,10 +162,19 @@ def solve_hands_at(figure: Figure, goal: HandsAt, angles: Angles, loads: list[Ha
     reached = best[1] + target
     raise TaskError(
         f"the hands cannot reach {goal.words()} for the {figure.gender} figure: the "
-        f"nearest is H {reached[0] * 100:.1f} cm, V {reached[1] * 100:.1f} cm (bend the "
-        "elbows, elbow_y, for a place nearer the body; pose a squat by its angles, knee_y "
-        "and hip_y, for one lower)"
+        f"nearest is H {reached[0] * 100:.1f} cm, V {reached[1] * 100:.1f} cm ("
+        f"{_hint(goal, reached)})"
     )
+
+
+def _hint(goal: HandsAt, reached: npt.NDArray[np.float64]) -> str:
+    """What might reach the place, from where it lies against the nearest one."""
+    hints = []
+    if goal.h < reached[0] - 0.01:
+        hints.append("bend the elbows, elbow_y, for a place nearer the body")
+    if goal.v < reached[1] - 0.01:
+        hints.append("pose a squat by its angles, knee_y and hip_y, for one lower")
+    return "; ".join(hints) or "beyond the arms' reach from a stoop"
 
 
 Residual = tuple[Angles, npt.NDArray[np.float64]]
