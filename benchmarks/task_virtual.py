@@ -60,7 +60,7 @@ def main() -> None:
         a = statistics.median(p[0][index] for p in pairs)
         b = statistics.median(p[1][index] for p in pairs)
         print(
-            f"{words}: sass {' '.join(task[1:2])} ... --virtual nhanes-2017-2020 {a:.3f} s "
+            f"{words}: sass task {task[1]} ... --virtual nhanes-2017-2020 {a:.3f} s "
             "(target under 1 s); "
             f"--gender female (baseline) {b:.3f} s; ratio {a / b:.2f}"
         )
