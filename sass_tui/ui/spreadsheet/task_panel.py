@@ -15,8 +15,9 @@ balance, the NIOSH lifting index and Liberty Mutual's percent capable; or,
 with `h`, the curve of percent capable against the load on a loaded hand,
 drawn with textual-plotext.
 
-The answer is computed in a worker on a copy of the figure whenever an input
-changes, and posted back (the TUI never blocks).  TaskCells owns the keys
+The answer is computed in a worker (ui/spreadsheet/task_work.py) on a copy
+of the figure whenever an input changes, and posted back (the TUI never
+blocks).  TaskCells owns the keys
 (the arrows, Enter, a number typed, `h`) and asks the screen for a prompt
 with TaskPanel.EditRequested, as the strength page does.
 """
@@ -25,8 +26,6 @@ from __future__ import annotations
 
 import copy
 from collections.abc import Callable
-from dataclasses import dataclass
-from pathlib import Path
 
 from rich.text import Text
 from textual import work
@@ -37,9 +36,6 @@ from textual.widget import Widget
 from textual.widgets import Static
 from textual_plotext import PlotextPlot
 
-from sass_tui.db.engine.database import Database
-from sass_tui.db.populations.task_people import group_words, weighted_people
-from sass_tui.db.query.scope import VIRTUAL_PREFIX
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.hanim import build_humanoid
 from sass_tui.model.body.outline import Outline
@@ -47,16 +43,11 @@ from sass_tui.model.body.posed_outline import posed_outline
 from sass_tui.model.body.posture import Angles, pose_figure
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.task_settings import TaskSettings
-from sass_tui.model.strength.hands_at import posture_of, split_posture
+from sass_tui.model.strength.hands_at import split_posture
 from sass_tui.model.strength.published_strength import GENDER_WORDS
 from sass_tui.model.strength.task import (
-    CurveGroup,
     HandLoad,
-    Reference,
     TaskAnswer,
-    assess_populations,
-    assess_task,
-    hand_curves,
     hand_load,
     parse_hand_load,
     pose_task,
@@ -65,13 +56,13 @@ from sass_tui.ui.spreadsheet.strength_page import TASK_PANEL_LINES
 from sass_tui.ui.spreadsheet.task_handling import handling_line
 from sass_tui.ui.spreadsheet.task_words import (
     PEOPLE,
-    WEIGHTED,
     answer_parts,
     load_words,
     parse_people,
     posture_words,
     strength_posture,
 )
+from sass_tui.ui.spreadsheet.task_work import Curves, TaskInput, assess
 from sass_tui.ui.widgets.editor import CURSOR_BINDINGS, EDIT_BINDING, EditorKeys
 
 CELLS = ("posture", "left", "right", "people")
@@ -79,81 +70,6 @@ LABELS = ("Posture", "Left hand", "Right hand", "People")
 CELL_WIDTH = 26
 FOLLOW_ROW = "row"  # the posture cell's word for the strength page's row
 DEFAULT_LOAD = 60.0  # N the right hand exerts up: a bag held out
-
-
-@dataclass(frozen=True)
-class TaskInput:
-    """What the worker gets: a copy of the figure shown and the task."""
-
-    figure: Figure
-    posture: tuple[str, ...]
-    loads: tuple[HandLoad, ...]
-    people: str
-    db_path: str | Path | None  # the database a target or virtual population is read from
-    curve_side: str = ""  # the hand whose percent capable against its load is drawn
-
-
-Curves = dict[str, list[tuple[float, float]]]
-
-
-def references(task: TaskInput) -> list[Reference]:
-    """The figures standing for the people asked for."""
-    figure = task.figure
-    if task.people == "figure":
-        return [Reference(figure.person or "figure shown", figure, None)]
-    genders = {
-        "gender": (figure.gender,),
-        "women": ("female",),
-        "men": ("male",),
-        "women and men": ("female", "male"),
-    }[task.people]
-    return [Reference(GENDER_WORDS[g], Figure.default(g), None) for g in genders]
-
-
-def assess(task: TaskInput) -> tuple[TaskAnswer, Curves, Angles]:
-    """The task for the people asked for (a target's or virtual population's
-    read from the database, the shipped one made the first time), when
-    asked the curves of percent capable against the load on a hand, and the
-    angles of the figure shown (its own stoop for `hands=H,V`)."""
-    loads = list(task.loads)
-    posture = posture_of(task.posture, loads)
-    angles = posture(task.figure) if callable(posture) else posture
-    kind, _, name = task.people.partition(" ")
-    together = ""
-    if kind not in WEIGHTED:
-        chosen = references(task)
-        answer = assess_task(chosen, posture, loads)
-        groups = [
-            CurveGroup(
-                r.words,
-                pose_task(r.figure, answer.postures.get(r.words, angles), loads)[0],
-                r.figure.gender,
-            )
-            for r in chosen
-        ]
-    else:
-        db = Database.open(task.db_path)
-        try:
-            with db.connection() as conn:
-                target, people = weighted_people(
-                    conn, f"{VIRTUAL_PREFIX}{name}" if kind == "virtual" else name
-                )
-        finally:
-            db.close()
-        figures = [(Figure.default(group.gender), group) for group in people]
-        together = group_words(target, None)
-        answer = assess_populations(figures, posture, loads, together)
-        groups = [
-            CurveGroup(
-                group.words,
-                pose_task(figure, answer.postures.get(group.words, angles), loads)[0],
-                group.gender,
-                group,
-            )
-            for figure, group in figures
-        ]
-    load = next((x for x in loads if x.side == task.curve_side and x.force > 0), None)
-    return answer, {} if load is None else hand_curves(groups, load, together), angles
 
 
 class TaskCells(EditorKeys, Widget, can_focus=True):
