@@ -114,7 +114,7 @@ def run(args: argparse.Namespace) -> int:
         )
         if text is not None
     ]
-    posture = posture_of(args.angles, loads, args.seated)
+    posture = posture_of(angles, goal, loads)
     if args.person is None and args.target is None and args.virtual is None:
         genders = [args.gender] if args.gender else ["female", "male"]
         references = [Reference(GENDER_WORDS[g], _figure(args, g), args.age) for g in genders]

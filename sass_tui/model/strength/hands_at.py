@@ -97,10 +97,9 @@ def split_posture(words: Sequence[str], seated: bool = False) -> tuple[Angles, H
     return angles, goal
 
 
-def posture_of(words: Sequence[str], loads: list[HandLoad], seated: bool = False) -> PostureOf:
-    """A posture's words as a task takes them: its angles, or with `hands=H,V`
-    each figure's own stoop."""
-    angles, goal = split_posture(words, seated)
+def posture_of(angles: Angles, goal: HandsAt | None, loads: list[HandLoad]) -> PostureOf:
+    """A posture as a task takes it (split_posture's parts): its angles, or
+    with a place for the hands each figure's own stoop."""
     if goal is None:
         return angles
     return partial(solve_hands_at, goal=goal, angles=angles, loads=loads)

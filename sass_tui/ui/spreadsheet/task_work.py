@@ -16,7 +16,7 @@ from sass_tui.db.populations.task_people import group_words, weighted_people
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.posture import Angles
-from sass_tui.model.strength.hands_at import posture_of
+from sass_tui.model.strength.hands_at import posture_of, split_posture
 from sass_tui.model.strength.published_strength import GENDER_WORDS
 from sass_tui.model.strength.task import (
     CurveGroup,
@@ -66,8 +66,9 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves, Angles]:
     asked the curves of percent capable against the load on a hand, and the
     angles of the figure shown (its own stoop for `hands=H,V`)."""
     loads = list(task.loads)
-    posture = posture_of(task.posture, loads)
-    angles = posture(task.figure) if callable(posture) else posture
+    angles, goal = split_posture(task.posture)
+    posture = posture_of(angles, goal, loads)
+    shown = posture(task.figure) if callable(posture) else posture
     kind, _, name = task.people.partition(" ")
     together = ""
     if kind not in WEIGHTED:
@@ -76,7 +77,7 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves, Angles]:
         groups = [
             CurveGroup(
                 r.words,
-                pose_task(r.figure, answer.postures.get(r.words, angles), loads)[0],
+                pose_task(r.figure, answer.postures.get(r.words, shown), loads)[0],
                 r.figure.gender,
             )
             for r in chosen
@@ -96,11 +97,11 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves, Angles]:
         groups = [
             CurveGroup(
                 group.words,
-                pose_task(figure, answer.postures.get(group.words, angles), loads)[0],
+                pose_task(figure, answer.postures.get(group.words, shown), loads)[0],
                 group.gender,
                 group,
             )
             for figure, group in figures
         ]
     load = next((x for x in loads if x.side == task.curve_side and x.force > 0), None)
-    return answer, {} if load is None else hand_curves(groups, load, together), angles
+    return answer, {} if load is None else hand_curves(groups, load, together), shown
