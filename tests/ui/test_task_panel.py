@@ -320,7 +320,7 @@ def test_the_posture_cell_takes_where_the_hands_grasp(app_at, drive):
     figure beside the panel is drawn in its own stoop, and the words are
     saved with the worksheet like any posture."""
     from sass_tui.model.strength.hand_position import body_h_v
-    from sass_tui.model.strength.hands_at import HandsAt, solve_hands_at
+    from sass_tui.model.strength.hands_at import HandsAt, solve_hands_at, solved_angles
 
     async def scenario():
         async with app_at((140, 44)) as (app, pilot):  # wide: the figure beside
@@ -336,6 +336,10 @@ def test_the_posture_cell_takes_where_the_hands_grasp(app_at, drive):
             figure = screen.figure
             expected = solve_hands_at(figure, HandsAt(0.4, 0.3), {}, loads)
             assert panel.shown_angles == expected
+            # the angles each figure found are said in the panel's notes
+            notes = str(panel.query_one("#task-answer", Static).render())
+            words = " ".join(f"{axis} {deg:.1f}" for axis, deg in solved_angles(expected).items())
+            assert f"Stoop to the hands' place: {GENDER_WORDS[figure.gender]} {words}" in notes
             body = pose_task(figure, expected, loads)[0]
             assert body_h_v(body) == pytest.approx((0.4, 0.3), abs=0.002)
             drawn = posed_outline(build_humanoid(figure), body, "", float(figure.stature))

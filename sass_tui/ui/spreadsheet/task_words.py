@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+from sass_tui.model.strength.hands_at import solved_angles
 from sass_tui.model.strength.task import UNCOVERED, HandLoad, TaskAnswer, TaskError
 from sass_tui.model.vocabulary import JOINT_AXES
 
@@ -142,4 +143,12 @@ def answer_parts(answer: TaskAnswer) -> tuple[list[str], list[str]]:
         f"Limiting: {'; '.join(limiting)}"
         + (f"; extrapolated (outside the fitted data): {', '.join(outside)}" if outside else ""),
     ]
+    if answer.postures:  # hands=H,V: the stoop each figure found
+        notes.append(
+            "Stoop to the hands' place: "
+            + "; ".join(
+                f"{who} " + " ".join(f"{axis} {deg:.1f}" for axis, deg in solved_angles(a).items())
+                for who, a in answer.postures.items()
+            )
+        )
     return lines, notes
