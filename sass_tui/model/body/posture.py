@@ -23,8 +23,13 @@ the whole body turns about the lateral axis until the feet are level (the
 mean of the two feet's pitch) and moves so the lower sole is on the floor
 and the ankles' midpoint keeps its place, so `hip_y=60` is a stoop (the
 pelvis and trunk tip forward over straight legs) and hip, knee and ankle
-flexion together a squat.  Seated, the pelvis stays where it stands (on the
-seat) and the legs swing from it.
+flexion together a squat.  When one leg is posed shorter than the other (its
+ankle over SAME_HEIGHT_M higher: `left_knee_y=30`, `left_hip_y=30`) the body
+stands on the other foot: that foot is levelled and put on the floor, and
+the raised one bears only where a corner of its sole reaches the floor
+(`PosedBody.bearing`, the feet the floor's force acts on: model/strength/
+statics.py).  Seated, the pelvis stays where it stands (on the seat) and the
+legs swing from it.
 
 The hand's grip point is the third knuckle (de Leva 1996's MET3, the end of
 his hand segment): along the hand from the wrist centre at the fraction of
@@ -94,6 +99,10 @@ def grip_fraction(gender: str) -> float:
 
 
 _SIDE_WORDS = {"left": "l", "right": "r"}
+# one leg posed shorter than the other by more than this stands on the other
+SAME_HEIGHT_M = 0.005
+# a sole's corner this near the floor (or below it) bears
+ON_FLOOR_M = 0.005
 _SEGMENT = {joint: segment for joint, segment, _ in LOA1}
 
 # (side, axis) -> degrees
@@ -165,6 +174,8 @@ class PosedBody:
     seated: bool = False
     # each joint's turn in the world (for the trunk's axis at L5/S1)
     turns: dict[str, npt.NDArray[np.float64]] | None = None
+    # the feet with a sole on the floor (standing; none seated)
+    bearing: tuple[str, ...] = ("left", "right")
 
     def grip(self, side: str) -> npt.NDArray[np.float64]:
         """Where a load on the hand acts: the third knuckle (module docstring)."""
@@ -218,8 +229,9 @@ def pose_figure(
             part.center_of_mass - humanoid.centers[joint]
         )
     soles = _soles(humanoid, centers, world)
+    bearing: tuple[str, ...] = ()
     if not seated:
-        _stand(humanoid, centers, coms, world, soles)
+        bearing = _stand(humanoid, centers, coms, world, soles)
     heights = landmark_heights(figure.gender, humanoid_stature(figure) / 100.0, figure.landmarks)
     points: Posture = {}
     girth = np.asarray(figure.output_values(GIRTH)[0], dtype=float) / 100.0
@@ -250,6 +262,7 @@ def pose_figure(
         soles=soles,
         seated=seated,
         turns=world,
+        bearing=bearing,
     )
 
 
@@ -282,11 +295,13 @@ def _stand(
     coms: dict[str, npt.NDArray[np.float64]],
     world: dict[str, npt.NDArray[np.float64]],
     soles: dict[str, npt.NDArray[np.float64]],
-) -> None:
-    """Turn and move the whole body (in place) so the feet are flat on the floor."""
+) -> tuple[str, ...]:
+    """Turn and move the whole body (in place) so the feet it stands on are
+    flat on the floor (module docstring); the feet that bear."""
+    standing = _standing_feet(centers)
     pitches = []
-    for s in _SIDE_WORDS.values():
-        forward = world[f"{s}_talocrural"] @ np.array([0.0, 0.0, 1.0])
+    for side in standing:
+        forward = world[f"{_SIDE_WORDS[side]}_talocrural"] @ np.array([0.0, 0.0, 1.0])
         pitches.append(math.degrees(math.atan2(forward[1], forward[2])))
     level = _rotation(np.array([1.0, 0.0, 0.0]), float(np.mean(pitches)))
     ankles = [f"{s}_talocrural" for s in _SIDE_WORDS.values()]
@@ -296,12 +311,22 @@ def _stand(
             points[key] = points[key] @ level.T
     for key in world:
         world[key] = level @ world[key]
-    floor = min(float(corners[:, 1].min()) for corners in soles.values())
+    floor = min(float(soles[side][:, 1].min()) for side in standing)
     after = np.mean([centers[a] for a in ankles], axis=0)
     shift = np.array([before[0] - after[0], -floor, before[2] - after[2]])
     for points in (centers, coms, soles):
         for key in points:
             points[key] = points[key] + shift
+    return tuple(side for side in _SIDE_WORDS if float(soles[side][:, 1].min()) <= ON_FLOOR_M)
+
+
+def _standing_feet(centers: dict[str, npt.NDArray[np.float64]]) -> tuple[str, ...]:
+    """Both feet, or the one whose ankle is lower when the legs differ by
+    over SAME_HEIGHT_M (the pelvis as it stands, before the body turns)."""
+    left, right = (float(centers[f"{s}_talocrural"][1]) for s in _SIDE_WORDS.values())
+    if abs(left - right) <= SAME_HEIGHT_M:
+        return ("left", "right")
+    return ("left",) if left < right else ("right",)
 
 
 def _local_rotations(humanoid: Humanoid, angles: Angles) -> dict[str, npt.NDArray[np.float64]]:

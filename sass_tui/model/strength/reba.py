@@ -7,8 +7,9 @@ A, B and C as published (datasets/reba.json), one arm at a time (docs/task.md
   (under 1 deg) 1, to 20 deg 2, 20-60 3, over 60 4; +1 twisted or side-bent;
 - neck: neck flexion (neck_y) 0-20 deg 1, over 20 or in extension (beyond
   1 deg back) 2; +1 twisted or side-bent (neck_z, neck_x beyond 1 deg);
-- legs: 1 both feet bearing in balance, or seated; 2 out of balance; +1 the
-  knee flexed 30-60 deg, +2 over 60 (standing);
+- legs: 1 both feet bearing in balance, or seated; 2 out of balance or on
+  one foot (the paper's unilateral weight bearing); +1 the knee flexed
+  30-60 deg, +2 over 60 (standing);
 - load: the hands' forces together under 5 kg 0, 5-10 kg 1, over 10 kg 2;
 - upper arm: as RULA's (+1 abducted past 20 deg); lower arm: elbow 60-100
   deg 1, otherwise 2; wrist: flexion or extension to 15 deg 1, beyond 2; +1

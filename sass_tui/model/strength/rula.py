@@ -20,7 +20,8 @@ What sass knows from the posture and what it assumes (said in the answer):
   (trunk and hip flexion together, standing): upright (under 1 deg) 1, up to
   20 2, 20-60 3, over 60 4; seated and upright 1; +1 twisted (trunk_z beyond
   1 deg), +1 side-bent (trunk_x beyond 1 deg);
-- legs: 1 standing in balance or seated; 2 out of balance;
+- legs: 1 standing in balance on both feet, or seated; 2 out of balance or
+  on one foot (the paper's "feet not evenly balanced");
 - muscle use: not known (0, assumed intermittent);
 - force: the hand's force under 2 kg (19.6 N) 0, up to 10 kg (98.1 N) 1
   (intermittent, assumed), over 10 kg 3; the trunk's group takes the sum of

@@ -10,10 +10,12 @@ free moment about the vertical for the rest (Chaffin, Andersson & Martin
 across the body (the share of each foot from how far the centre of pressure
 lies from each foot's midline), each foot's share acting at the centre of
 pressure's place front to back: statically determinate, so quiet standing
-carries nothing sideways at the legs.  The body is in balance when the
-centre of pressure lies inside the base of support (the convex hull of the
-two soles) and the floor pushes up; otherwise it would tip, and the task is
-said to, not scored.
+carries nothing sideways at the legs.  Only a foot on the floor bears
+(PosedBody.bearing, model/body/posture.py): standing on one foot, that foot
+carries the whole force and the raised one none.  The body is in balance
+when the centre of pressure lies inside the base of support (the convex
+hull of the soles' corners on the floor) and the floor pushes up; otherwise
+it would tip, and the task is said to, not scored.
 
 No Textual import here.
 """
@@ -25,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from sass_tui.model.body.posture import PosedBody
+from sass_tui.model.body.posture import ON_FLOOR_M, PosedBody
 
 GRAVITY = 9.81
 DOWN = np.array([0.0, -1.0, 0.0])
@@ -69,6 +71,7 @@ class Balance:
     feet: dict[str, Force]  # side -> (centre of pressure, the floor's force on it)
     free_moment: float  # N-m about the vertical, both feet together
     margin: float  # m from the centre of pressure to the base's edge (< 0: outside)
+    bearing: tuple[str, ...] = ("left", "right")  # the feet on the floor
 
 
 def _hull(points: Vector) -> Vector:
@@ -115,9 +118,11 @@ def balance(body: PosedBody, hands: list[Force]) -> Balance:
     moment = moment_about(np.zeros(3), forces)
     ground = -total
     com = body.center_of_mass()
-    soles = np.vstack([body.soles[side] for side in ("left", "right")])
-    floor = float(soles[:, 1].min())
-    hull = _hull(soles[:, [0, 2]])
+    soles = np.vstack([body.soles[side] for side in body.bearing])
+    # the sole the body stands on is level on the floor; a raised foot's
+    # corner reaching down to it (or past it) bears too
+    floor = max(float(body.soles[side][:, 1].min()) for side in body.bearing)
+    hull = _hull(soles[soles[:, 1] <= floor + ON_FLOOR_M][:, [0, 2]])
     if ground[1] <= 0:
         return Balance(
             False,
@@ -127,6 +132,7 @@ def balance(body: PosedBody, hands: list[Force]) -> Balance:
             {},
             0.0,
             -np.inf,
+            body.bearing,
         )
     # the floor's resultant at (px, floor, pz): its moment about the origin
     # balances the rest (the vertical part is a free moment)
@@ -136,7 +142,7 @@ def balance(body: PosedBody, hands: list[Force]) -> Balance:
     cop = np.array([px, floor, pz])
     free = float(-moment[1] - (pz * ground[0] - px * ground[2]))
     margin = inside_margin(hull, np.array([px, pz]))
-    feet = _split(body, cop, ground)
+    feet = _split(body, cop, ground, floor)
     reason = ""
     if margin < 0:
         way = (
@@ -146,20 +152,39 @@ def balance(body: PosedBody, hands: list[Force]) -> Balance:
             f"the centre of pressure falls {-margin * 100:.1f} cm outside the feet "
             f"({way}): the body would tip"
         )
-    return Balance(margin >= 0, reason, com, cop, feet, free, margin)
+    return Balance(margin >= 0, reason, com, cop, feet, free, margin, body.bearing)
 
 
-def _split(body: PosedBody, cop: Vector, ground: Vector) -> dict[str, Force]:
-    """The lever rule across the body: each foot's share of the floor's force."""
-    left = float(body.soles["left"][:, 0].mean())
-    right = float(body.soles["right"][:, 0].mean())
-    share = 0.5 if left == right else (cop[0] - right) / (left - right)
-    if 0.0 <= share <= 1.0:
+def _split(body: PosedBody, cop: Vector, ground: Vector, floor: float) -> dict[str, Force]:
+    """The lever rule between the feet: each foot's share of the floor's
+    force from where the centre of pressure lies along the line joining the
+    feet's contacts (the middle of each sole's corners on the floor), each
+    share acting at its contact moved across that line to the centre of
+    pressure.  Feet side by side: each foot's midline at the centre of
+    pressure's front-back place."""
+    contact = {
+        side: body.soles[side][body.soles[side][:, 1] <= floor + ON_FLOOR_M][:, [0, 2]].mean(axis=0)
+        for side in body.bearing
+    }
+    if len(contact) == 1:
+        (side,) = contact
+        return _on_one_foot(side, cop, ground)
+    point = cop[[0, 2]]
+    joining = contact["left"] - contact["right"]
+    share = float((point - contact["right"]) @ joining / (joining @ joining))
+    if 0.0 < share < 1.0:
+        across = point - (contact["right"] + share * joining)
         return {
-            "left": (np.array([left, cop[1], cop[2]]), share * ground),
-            "right": (np.array([right, cop[1], cop[2]]), (1.0 - share) * ground),
+            side: (np.array([at[0] + across[0], cop[1], at[1] + across[1]]), part * ground)
+            for side, at, part in (
+                ("left", contact["left"], share),
+                ("right", contact["right"], 1.0 - share),
+            )
         }
-    # all on one foot, at the centre of pressure
-    side = "left" if share > 1.0 else "right"
+    return _on_one_foot("left" if share >= 1.0 else "right", cop, ground)
+
+
+def _on_one_foot(side: str, cop: Vector, ground: Vector) -> dict[str, Force]:
+    """All the floor's force on one foot, at the centre of pressure."""
     other = "right" if side == "left" else "left"
     return {side: (cop.copy(), ground.copy()), other: (cop.copy(), np.zeros(3))}

@@ -91,6 +91,8 @@ PASSIVE_MARGIN_DEG = 5.0
 PASSIVE = "passive, at the end of its range"
 # Quiet standing's centre of pressure ahead of the ankles (Winter 1995)
 QUIET_STANCE_COP_M = 0.05
+# a sole the posture puts deeper than this into the floor is said to be
+INTO_FLOOR_M = 0.01
 ARM_WORDS = "La Delfa & Potvin 2017 (Arm Force Field): women as published, men x 1.66"
 UNCOVERED = "no published model in sass covers it"
 LOW_BACK_WORDS = "single equivalent muscle (Chaffin, Andersson & Martin 2006)"
@@ -253,7 +255,9 @@ def _leg_moment(
     forces = weights(body, below)
     if side in stance.feet:
         forces.append(stance.feet[side])
-    free = np.array([0.0, 0.5 * stance.free_moment, 0.0])
+    # the free moment about the vertical: shared by the feet on the floor
+    share = 1.0 / len(body.bearing) if side in body.bearing else 0.0
+    free = np.array([0.0, share * stance.free_moment, 0.0])
     above: npt.NDArray[np.float64] = -(moment_about(point, forces) + free)
     return above
 
@@ -467,7 +471,7 @@ def assess_task(
             answer = TaskAnswer(loads, moments, _figure_words(ref.figure))
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
-            answer.notes += _posture_notes(seated, lean, stance)
+            answer.notes += _posture_notes(seated, lean, stance) + _feet_notes(body)
             answer.rula, answer.reba = _scores(ref.figure, body, used, loads, stance, seated, lean)
         answer.populations.append(ref.words)
         if callable(posture):
@@ -525,6 +529,8 @@ def _scores(
     stable = stance is None or stance.stable
     inclination = math.degrees(math.acos(float(np.clip(up[1], -1.0, 1.0))))
     both = sum(forces.values())
+    # both scores' legs: 1 only balanced on both feet (or seated)
+    stable = stable and len(body.bearing) == 2
     rebas = [reba(side, angles, inclination, seated, stable, both) for side in ("right", "left")]
     return [
         rula(
@@ -551,6 +557,28 @@ def _posture_notes(seated: bool, lean: float | None, stance: Balance | None) -> 
         f"pressure {QUIET_STANCE_COP_M * 100:g} cm ahead of them where quiet standing holds it "
         "(Winter 1995), as far as the ankles' range allows; give ankle_y to fix the lean"
     ]
+
+
+def _feet_notes(body: PosedBody) -> list[str]:
+    """Standing on one foot, and a sole the posture puts into the floor."""
+    if body.seated:
+        return []
+    notes = []
+    if len(body.bearing) == 1:
+        (side,) = body.bearing
+        other = "right" if side == "left" else "left"
+        notes.append(
+            f"standing on the {side} foot: the {other} leg is posed shorter, its foot off the "
+            "floor carries no force"
+        )
+    for side in ("left", "right"):
+        below = -float(body.soles[side][:, 1].min())
+        if below > INTO_FLOOR_M:
+            notes.append(
+                f"the posture puts the {side} sole {below * 100:.1f} cm into the floor: it is "
+                f"counted as standing there; bend the {side} ankle (ankle_y) or hip (hip_y) to lift it"
+            )
+    return notes
 
 
 def _figure_words(figure: Figure) -> str:
@@ -593,7 +621,7 @@ def assess_populations(
             answer = TaskAnswer(loads, moments, _figure_words(figure))
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
-            answer.notes += _posture_notes(seated, lean, stance)
+            answer.notes += _posture_notes(seated, lean, stance) + _feet_notes(body)
             answer.rula, answer.reba = _scores(figure, body, used, loads, stance, seated, lean)
         answer.populations.append(people.words)
         if callable(posture):

@@ -58,6 +58,7 @@ def balance_json(stance: Balance | None, lean: float | None) -> dict[str, object
             side: [_round(x, MOMENT_DECIMALS) for x in force]
             for side, (_, force) in stance.feet.items()
         },
+        "feet_on_floor": list(stance.bearing),
         "lean_deg": None if lean is None else _round(lean, 1),
     }
 
@@ -229,7 +230,10 @@ def _balance_lines(stance: Balance | None) -> list[str]:
     if stance is None:
         return ["Balance: seated, not assessed"]
     cop = stance.center_of_pressure
-    feet = ", ".join(f"{side} {force[1]:.0f} N" for side, (_, force) in stance.feet.items())
+    feet = ", ".join(
+        f"{side} {force[1]:.0f} N" + ("" if side in stance.bearing else " (off the floor)")
+        for side, (_, force) in stance.feet.items()
+    )
     state = "in balance" if stance.stable else f"OUT OF BALANCE: {stance.reason}"
     return [
         f"Balance: {state}; centre of pressure x {cop[0]:.3f} z {cop[2]:.3f} m, "
