@@ -175,3 +175,25 @@ def test_the_hand_exerts_the_force_in_task_and_arm_force(women):
         arm_demand(body, push, "female").percent_capable(40.0)
     )
     assert tuple(hand_load("right", 40.0, (0, 0, 1)).vector) == (0.0, 0.0, 40.0)
+
+
+def test_a_load_held_behind_the_low_back_is_said(women):
+    """trunk_y=30 carries the hanging arms back with the trunk: the hand is
+    15 cm behind L5/S1 and its load lowers the low back's moment, said in a
+    note with the distance measured on the posed figure; arms brought
+    forward, or quiet standing with the arms hanging, say nothing."""
+    box = [load_of("right", "10 kg")]
+    angles = parse_angles(["trunk_y=30"])
+    answer = assess_task(women, angles, box)
+    body = pose_task(women[0].figure, angles, box)[0]
+    behind = body.centers["vl5"][2] - body.grip("right")[2]
+    assert behind > 0.10
+    said = [note for note in answer.notes if "behind the low back" in note]
+    assert said == [
+        next(n for n in said if f"right hand holds its load {behind * 100:.1f} cm behind" in n)
+    ]
+    bare = assess_task(women, angles, [])
+    assert answer.low_back.moment[0] < bare.low_back.moment[0]  # the load lowers it
+    for words in (["trunk_y=30", "shoulder_y=30"], []):
+        quiet = assess_task(women, parse_angles(words), box)
+        assert not [note for note in quiet.notes if "behind the low back" in note]

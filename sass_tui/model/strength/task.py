@@ -93,6 +93,9 @@ PASSIVE = "passive, at the end of its range"
 QUIET_STANCE_COP_M = 0.05
 # a sole the posture puts deeper than this into the floor is said to be
 INTO_FLOOR_M = 0.01
+# a loaded hand further behind L5/S1 than this is said to be (hanging arms
+# stand about 2 cm behind it)
+BEHIND_L5_M = 0.05
 ARM_WORDS = "La Delfa & Potvin 2017 (Arm Force Field): women as published, men x 1.66"
 UNCOVERED = "no published model in sass covers it"
 LOW_BACK_WORDS = "single equivalent muscle (Chaffin, Andersson & Martin 2006)"
@@ -471,7 +474,7 @@ def assess_task(
             answer = TaskAnswer(loads, moments, _figure_words(ref.figure))
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
-            answer.notes += _posture_notes(seated, lean, stance) + _feet_notes(body)
+            answer.notes += _posture_notes(seated, lean, stance, body, loads)
             answer.rula, answer.reba = _scores(ref.figure, body, used, loads, stance, seated, lean)
         answer.populations.append(ref.words)
         if callable(posture):
@@ -547,7 +550,15 @@ def _scores(
     ], rebas
 
 
-def _posture_notes(seated: bool, lean: float | None, stance: Balance | None) -> list[str]:
+def _posture_notes(
+    seated: bool, lean: float | None, stance: Balance | None, body: PosedBody, loads: list[HandLoad]
+) -> list[str]:
+    """What the posture's model chose or found: the seat, the lean, the feet,
+    a hand behind the low back."""
+    return _lean_notes(seated, lean, stance) + _feet_notes(body) + _behind_notes(body, loads)
+
+
+def _lean_notes(seated: bool, lean: float | None, stance: Balance | None) -> list[str]:
     if seated:
         return ["seated: the seat carries the legs; no leg joint and no balance"]
     if lean is None or stance is None:
@@ -577,6 +588,24 @@ def _feet_notes(body: PosedBody) -> list[str]:
             notes.append(
                 f"the posture puts the {side} sole {below * 100:.1f} cm into the floor: it is "
                 f"counted as standing there; bend the {side} ankle (ankle_y) or hip (hip_y) to lift it"
+            )
+    return notes
+
+
+def _behind_notes(body: PosedBody, loads: list[HandLoad]) -> list[str]:
+    """A loaded hand well behind the low back: joint angles are relative, so
+    trunk_y carries hanging arms back with the trunk, and such a load lowers
+    the low back's moment, which surprises whoever meant the arms to hang."""
+    back = float(body.centers["vl5"][2])
+    notes = []
+    for load in loads:
+        behind = back - float(body.grip(load.side)[2])
+        if load.force > 0.0 and behind > BEHIND_L5_M:
+            notes.append(
+                f"the {load.side} hand holds its load {behind * 100:.1f} cm behind the low back "
+                "(L5/S1), which lowers the low back's moment: joint angles are relative, so the "
+                "trunk's flexion carries hanging arms back with it; give shoulder_y, or "
+                "hands=H,V, for hands in front of the body"
             )
     return notes
 
@@ -621,7 +650,7 @@ def assess_populations(
             answer = TaskAnswer(loads, moments, _figure_words(figure))
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
-            answer.notes += _posture_notes(seated, lean, stance) + _feet_notes(body)
+            answer.notes += _posture_notes(seated, lean, stance, body, loads)
             answer.rula, answer.reba = _scores(figure, body, used, loads, stance, seated, lean)
         answer.populations.append(people.words)
         if callable(posture):
