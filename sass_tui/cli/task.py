@@ -68,8 +68,8 @@ def register(commands: SubParsers) -> None:
         "(flexion), trunk_z (twist left), neck_x (bend right), neck_y (flexion), neck_z "
         "(rotation right); hands=H,V (e.g. hands=40cm,30cm, cm without a unit): where the "
         "hands grasp, H ahead of the ankles and V above the floor (the NIOSH manual's H and "
-        "V), each figure stooping to it, its own hip_y and shoulder_y found; standing "
-        "upright if none",
+        "V), each figure stooping to it, its own hip_y and shoulder_y found (hands=H,V,squat: "
+        "squatting, knee_y and ankle_y found too); standing upright if none",
     )
     task.add_argument(
         "--seated",

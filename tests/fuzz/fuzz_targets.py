@@ -623,6 +623,8 @@ def _task() -> Target:
         "--mass\n70 kg\n--stature\n175 cm\n--format\njson\n--right-load\n20N",
         "trunk_y=30\nneck_y=20\nneck_z=-10\n--right-load\n10 kg\n--gender\nmale",
         "hands=40cm,30cm\nelbow_y=10\n--left-load\n10 kg\n--gender\nfemale",
+        "hands=30cm,50cm,squat\n--right-load\n10 kg\n--gender\nmale",
+        "left_hip_y=30\nleft_ankle_y=-30\n--gender\nfemale",
     ]
     return _verb("task", seeds, database=True)
 

@@ -1,12 +1,14 @@
-"""A stoop found from where the hands must be (model/strength/hands_at.py):
-the grasp lands where it was asked, measured by the NIOSH H and V of the
-posed figure (model/strength/hand_position.py, not the solver's own
-measure); each figure finds its own angles; a place the stoop cannot reach
-is refused naming a place it does reach."""
+"""A stoop or a squat found from where the hands must be
+(model/strength/hands_at.py): the grasp lands where it was asked, measured
+by the NIOSH H and V of the posed figure (model/strength/hand_position.py,
+not the solver's own measure); each figure finds its own angles; a place
+the stoop cannot reach is refused naming a place it does reach; a squat
+bends the knees as far as the balance of quiet standing allows."""
 
 from __future__ import annotations
 
 import json
+import math
 
 import pytest
 from hypothesis import given
@@ -19,11 +21,13 @@ from sass_tui.model.strength.hand_position import body_h_v
 from sass_tui.model.strength.hands_at import (
     HandsAt,
     parse_hands_at,
+    posture_of,
     solve_hands_at,
     split_posture,
 )
 from sass_tui.model.strength.strength_conditions import joint_limit_range
 from sass_tui.model.strength.task import (
+    QUIET_STANCE_COP_M,
     Reference,
     TaskError,
     assess_task,
@@ -66,10 +70,11 @@ def test_each_figure_stoops_its_own_way(figures):
     assert woman[("left", "hip_y")] > man[("left", "hip_y")] + 5
     answer = assess_task(
         [Reference("women", figures["female"], None), Reference("men", figures["male"], None)],
-        lambda figure: solve_hands_at(figure, goal, {}, BOXES),
+        posture_of({}, goal, BOXES),
         BOXES,
     )
     assert answer.postures["women"] == woman and answer.postures["men"] == man
+    assert answer.solved_axes == ("hip_y", "shoulder_y")
 
 
 def test_the_other_angles_are_kept(figures):
@@ -131,7 +136,11 @@ def test_sass_task_hands_at_reports_each_figures_posture(capsys):
         (["hands=-5,20"], "H from 0 to 200 cm"),
         (["hands=30,20", "hands=40,20"], "one hands=H,V"),
         (["hands=2m,3m", "--gender", "female"], "beyond the arms' reach from a stoop"),
-        (["hands=60,10", "--gender", "female"], "pose a squat by its angles"),
+        (["hands=60,10", "--gender", "female"], "a squat, hands=H,V,squat, for one lower"),
+        (["hands=40,30,squat", "knee_y=30"], "leave out knee_y"),
+        (["hands=40,30,squat", "ankle_y=5"], "leave out ankle_y"),
+        (["hands=40,30,kneel"], "40cm,30cm,squat"),
+        (["hands=60,10,squat", "--gender", "female"], "by a squat for the female figure"),
     ],
 )
 def test_what_a_stoop_cannot_take_is_refused(capsys, argv, said):
@@ -147,12 +156,22 @@ def test_any_text_is_hands_at_or_a_message(text):
     except SassError as refused:
         assert str(refused)
     else:
-        assert 0 <= goal.h <= 2 and 0 <= goal.v <= 3
+        assert 0 <= goal.h <= 2 and 0 <= goal.v <= 3 and goal.by in ("stoop", "squat")
 
 
 @given(
     st.lists(
-        st.sampled_from(["hands=", "hands=40,30", "HANDS=1m,1m", "hip_y=20", "elbow_y=30", ","])
+        st.sampled_from(
+            [
+                "hands=",
+                "hands=40,30",
+                "HANDS=1m,1m",
+                "hands=40,30,Squat",
+                "hip_y=20",
+                "knee_y=9",
+                ",",
+            ]
+        )
         | st.text(max_size=12).map(lambda tail: f"hands={tail}")
         | st.text(max_size=12),
         max_size=4,
@@ -164,4 +183,64 @@ def test_any_posture_words_are_a_posture_or_a_message(words):
     except SassError as refused:
         assert str(refused)
     else:
-        assert goal is None or ("left", "hip_y") not in angles
+        assert goal is None or not {("left", axis) for axis in goal.solved_axes} & set(angles)
+
+
+SQUAT_PLACES = [(0.3, 0.5), (0.4, 0.3), (0.25, 0.2), (0.5, 0.75)]
+
+
+def _trunk_inclination(body):
+    """Degrees from upright of the trunk's axis at L5/S1."""
+    up = body.turns["vl5"][:, 1]
+    return math.degrees(math.acos(float(up[1])))
+
+
+@pytest.mark.parametrize("gender", ["female", "male"])
+@pytest.mark.parametrize("h_v", SQUAT_PLACES)
+def test_a_squat_reaches_the_place_balanced_with_the_trunk_more_upright(figures, gender, h_v):
+    figure = figures[gender]
+    squat = solve_hands_at(figure, HandsAt(*h_v, "squat"), {}, BOXES)
+    body, stance, used, _ = pose_task(figure, squat, BOXES)
+    assert body_h_v(body) == pytest.approx(h_v, abs=0.002)
+    assert stance.stable
+    for side in ("left", "right"):
+        assert squat[(side, "knee_y")] == pytest.approx(squat[("left", "knee_y")])
+        for axis in ("hip_y", "shoulder_y", "knee_y", "ankle_y"):
+            low, high = joint_limit_range(figure, side, axis)
+            assert low <= squat[(side, axis)] <= high
+    assert squat[("left", "knee_y")] > 20.0  # the knees bend
+    stoop = solve_hands_at(figure, HandsAt(*h_v), {}, BOXES)
+    assert _trunk_inclination(body) < _trunk_inclination(pose_task(figure, stoop, BOXES)[0]) - 5
+
+
+@pytest.mark.parametrize("gender", ["female", "male"])
+def test_the_squat_bends_the_knees_as_far_as_quiet_standing_balance_allows(figures, gender):
+    """The criterion, checked from outside the solver: with the knees bent
+    5 degrees further (the hips and shoulders found again by the stoop's
+    search, the knees given), either the hands no longer reach or the lean
+    at the ankles that would put the centre of pressure 5 cm ahead of them
+    is past the ankles' range."""
+    figure = figures[gender]
+    squat = solve_hands_at(figure, HandsAt(0.3, 0.5, "squat"), {}, BOXES)
+    body, stance, _, _ = pose_task(figure, squat, BOXES)
+    ankles = (body.centers["l_talocrural"][2] + body.centers["r_talocrural"][2]) / 2
+    assert stance.center_of_pressure[2] - ankles == pytest.approx(QUIET_STANCE_COP_M, abs=0.002)
+    deeper = {(side, "knee_y"): squat[("left", "knee_y")] + 5.0 for side in ("left", "right")}
+    try:
+        angles = solve_hands_at(figure, HandsAt(0.3, 0.5), deeper, BOXES)
+    except TaskError:
+        return  # no longer reached
+    lean = pose_task(figure, angles, BOXES)[3]
+    # the lean stopped at the ankles' dorsiflexion limit, short of that balance
+    ankle_high = min(joint_limit_range(figure, side, "ankle_y")[1] for side in ("left", "right"))
+    assert lean == pytest.approx(ankle_high)
+
+
+def test_sass_task_squat_reports_its_knees_and_ankles(capsys):
+    assert main(["task", "hands=30cm,50cm,squat", "--left-load", "10 kg", "--right-load",
+                 "10 kg", "--format", "json"]) == 0  # fmt: skip
+    shown = json.loads(capsys.readouterr().out)["hands_at"]
+    assert shown["by"] == "squat"
+    assert set(shown["solved"]["women"]) == {"hip_y", "shoulder_y", "knee_y", "ankle_y"}
+    assert main(["task", "hands=30,50,squat", "--gender", "male"]) == 0
+    assert "V 50.0 cm by a squat" in capsys.readouterr().out

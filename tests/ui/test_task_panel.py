@@ -315,9 +315,9 @@ def test_the_figure_beside_takes_the_tasks_posture():
 
 @pytest.mark.slow
 def test_the_posture_cell_takes_where_the_hands_grasp(app_at, drive):
-    """`hands=40cm,30cm` in the posture cell: each figure answered stoops to
-    that place (as sass task takes it, model/strength/hands_at.py), the
-    figure beside the panel is drawn in its own stoop, and the words are
+    """`hands=40cm,30cm,squat` in the posture cell: each figure answered
+    squats to that place (as sass task takes it, model/strength/hands_at.py),
+    the figure beside the panel is drawn in its own squat, and the words are
     saved with the worksheet like any posture."""
     from sass_tui.model.strength.hand_position import body_h_v
     from sass_tui.model.strength.hands_at import HandsAt, solve_hands_at, solved_angles
@@ -325,21 +325,24 @@ def test_the_posture_cell_takes_where_the_hands_grasp(app_at, drive):
     async def scenario():
         async with app_at((140, 44)) as (app, pilot):  # wide: the figure beside
             screen = app.screen
-            panel = await posture_typed(pilot, screen, "hands=40cm,30cm")
+            panel = await posture_typed(pilot, screen, "hands=40cm,30cm,squat")
             await wait_until(
                 pilot,
                 lambda: panel.answer is not None and panel.answer.postures and not panel.computing,
-                "an answer with each figure's stoop",
+                "an answer with each figure's squat",
             )
-            assert screen.session.task.posture == ("hands=40cm,30cm",)
+            assert screen.session.task.posture == ("hands=40cm,30cm,squat",)
             loads = list(panel.loads.values())
             figure = screen.figure
-            expected = solve_hands_at(figure, HandsAt(0.4, 0.3), {}, loads)
+            goal = HandsAt(0.4, 0.3, "squat")
+            expected = solve_hands_at(figure, goal, {}, loads)
             assert panel.shown_angles == expected
             # the angles each figure found are said in the panel's notes
             notes = str(panel.query_one("#task-answer", Static).render())
-            words = " ".join(f"{axis} {deg:.1f}" for axis, deg in solved_angles(expected).items())
-            assert f"Stoop to the hands' place: {GENDER_WORDS[figure.gender]} {words}" in notes
+            solved = solved_angles(goal.solved_axes, expected)
+            assert set(solved) == {"hip_y", "shoulder_y", "knee_y", "ankle_y"}
+            words = " ".join(f"{axis} {deg:.1f}" for axis, deg in solved.items())
+            assert f"Squat to the hands' place: {GENDER_WORDS[figure.gender]} {words}" in notes
             body = pose_task(figure, expected, loads)[0]
             assert body_h_v(body) == pytest.approx((0.4, 0.3), abs=0.002)
             drawn = posed_outline(build_humanoid(figure), body, "", float(figure.stature))
@@ -349,12 +352,12 @@ def test_the_posture_cell_takes_where_the_hands_grasp(app_at, drive):
                     screen.figure_panel is not None
                     and screen.figure_panel.outlines[0].side == drawn.side
                 ),
-                "the figure beside drawn in its stoop",
+                "the figure beside drawn in its squat",
             )
-            # hip_y is what the stoop solves: refused, the posture kept
+            # knee_y is what the squat solves: refused, the posture kept
             await pilot.press("enter")
-            await answer(pilot, "hands=40,30 hip_y=20")
-            await wait_until(pilot, lambda: "leave out hip_y" in message(app), "the refusal")
-            assert panel.posture == ("hands=40cm,30cm",)
+            await answer(pilot, "hands=40,30,squat knee_y=20")
+            await wait_until(pilot, lambda: "leave out knee_y" in message(app), "the refusal")
+            assert panel.posture == ("hands=40cm,30cm,squat",)
 
     drive(scenario())

@@ -7,10 +7,16 @@ one box with different postures.
 
 A stoop: the legs straight, the pelvis and trunk tip forward at the hips
 (hip_y on both sides), the arms swing at the shoulders (shoulder_y).  A
-squat is posed by its angles (knee_y, hip_y, ankle_y): with both the knees
-and the hips free, the hands' place alone does not say how far each bends,
-and the ankles' range in the report's joint limits (about 14 degrees of
-dorsiflexion) leaves a squat balanced only with the trunk far forward.
+squat (`hands=H,V,squat`) bends the knees too (knee_y on both sides): the
+hands' place alone does not say how far the knees and the hips each bend,
+so the squat keeps the trunk as upright as balance lets it, the knees bent
+as far as the body still balances as in quiet standing (the lean at the
+ankles that puts the floor's centre of pressure 5 cm ahead of them within
+the ankles' range, model/strength/task.py pose_task).  The report's ankle
+range (about 14 degrees of dorsiflexion) is what stops the knees: past it
+the body would have to sit back off its feet.  The knee angle is searched
+on a grid of SQUAT_GRID_DEG from straight and then halved SQUAT_HALVINGS
+times between the deepest that balances and the next.
 
 The body still leans at the ankles for balance as every standing task does
 (model/strength/task.py pose_task); every other angle the user gives (the
@@ -26,20 +32,27 @@ No Textual import here.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
-from functools import partial
 
 import numpy as np
 import numpy.typing as npt
 
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.body.hanim import build_humanoid
-from sass_tui.model.body.posture import Angles, PosedBody, parse_angles
+from sass_tui.model.body.hanim import Humanoid, build_humanoid
+from sass_tui.model.body.posture import Angles, PosedBody, parse_angles, pose_figure
 from sass_tui.model.errors import SassError
 from sass_tui.model.strength.hand_position import grasp
+from sass_tui.model.strength.statics import balance
 from sass_tui.model.strength.strength_conditions import joint_limit_range
-from sass_tui.model.strength.task import HandLoad, PostureOf, TaskError, pose_task
+from sass_tui.model.strength.task import (
+    QUIET_STANCE_COP_M,
+    HandLoad,
+    PostureOf,
+    TaskError,
+    hand_forces,
+    pose_task,
+)
 from sass_tui.model.units import parse_quantity
 
 SIDES = ("left", "right")
@@ -47,6 +60,12 @@ HANDS_WORD = "hands="  # the posture word of a place the hands reach: hands=40cm
 # the angles a stoop solves (on both sides): the user leaves them out
 SOLVED_AXES = ("hip_y", "shoulder_y")
 REACHED_M = 0.002  # the grasp within 2 mm of its place
+STOOP, SQUAT = "stoop", "squat"
+# the angles a squat solves (on both sides), and where Newton's method starts
+SQUAT_AXES = ("hip_y", "shoulder_y", "knee_y")
+SQUAT_STARTS_DEG = ((60.0, 60.0, 60.0), (90.0, 90.0, 90.0), (30.0, 30.0, 30.0))
+# a squat's ankles: this far short of their dorsiflexion limit (heels down)
+SQUAT_ANKLE_DEG = 1.0
 STEP_DEG = 1.0  # the finite-difference step of the Jacobian
 MAX_EVALUATIONS = 40
 # hip_y, shoulder_y where Newton's method starts; the next where one fails
@@ -56,23 +75,33 @@ MAX_STEP_DEG = 20.0
 
 @dataclass(frozen=True)
 class HandsAt:
-    """Where the grasp must be (m), reached by a stoop."""
+    """Where the grasp must be (m), reached by a stoop or a squat."""
 
     h: float  # ahead of the ankles' midpoint, on the floor
     v: float  # above the floor
+    by: str = STOOP
 
     def words(self) -> str:
-        return f"H {self.h * 100:.1f} cm, V {self.v * 100:.1f} cm by a stoop"
+        return f"H {self.h * 100:.1f} cm, V {self.v * 100:.1f} cm by a {self.by}"
+
+    @property
+    def solved_axes(self) -> tuple[str, ...]:
+        """The angles the stoop or the squat finds (on both sides)."""
+        return SOLVED_AXES + (("knee_y", "ankle_y") if self.by == SQUAT else ())
 
 
 def parse_hands_at(text: str) -> HandsAt:
-    """'40cm,30cm', '16 in, 12 in', '40,30' (cm without a unit) -> HandsAt."""
+    """'40cm,30cm', '16 in, 12 in', '40,30' (cm without a unit), '40cm,30cm,squat'
+    -> HandsAt."""
     said = f"{HANDS_WORD}{text.strip()}"
     parts = text.split(",")
+    by = STOOP
+    if len(parts) == 3 and parts[2].strip().lower() in (STOOP, SQUAT):
+        by = parts.pop().strip().lower()
     if len(parts) != 2:
         raise TaskError(
             f"{said}: expected H,V (the grasp ahead of the ankles and above the floor), "
-            "e.g. 40cm,30cm"
+            f"e.g. 40cm,30cm, and {SQUAT} after them for a squat (40cm,30cm,{SQUAT})"
         )
     try:
         h, v = (parse_quantity(part.strip(), "cm") / 100.0 for part in parts)
@@ -80,7 +109,7 @@ def parse_hands_at(text: str) -> HandsAt:
         raise TaskError(f"{said}: {exc}") from None
     if not (0.0 <= h <= 2.0 and 0.0 <= v <= 3.0):
         raise TaskError(f"{said}: H from 0 to 200 cm and V from 0 to 300 cm expected")
-    return HandsAt(h, v)
+    return HandsAt(h, v, by)
 
 
 def split_posture(words: Sequence[str], seated: bool = False) -> tuple[Angles, HandsAt | None]:
@@ -97,23 +126,41 @@ def split_posture(words: Sequence[str], seated: bool = False) -> tuple[Angles, H
     return angles, goal
 
 
+@dataclass(frozen=True)
+class Reaching:
+    """The posture of each figure whose hands reach `goal`, the other angles
+    as given (task.py's PostureSolver)."""
+
+    goal: HandsAt
+    angles: Angles
+    loads: tuple[HandLoad, ...]
+
+    @property
+    def solved_axes(self) -> tuple[str, ...]:
+        return self.goal.solved_axes
+
+    def __call__(self, figure: Figure) -> Angles:
+        return solve_hands_at(figure, self.goal, self.angles, list(self.loads))
+
+
 def posture_of(angles: Angles, goal: HandsAt | None, loads: list[HandLoad]) -> PostureOf:
     """A posture as a task takes it (split_posture's parts): its angles, or
-    with a place for the hands each figure's own stoop."""
+    with a place for the hands each figure's own stoop or squat."""
     if goal is None:
         return angles
-    return partial(solve_hands_at, goal=goal, angles=angles, loads=loads)
+    return Reaching(goal, angles, tuple(loads))
 
 
 def check_free(goal: HandsAt, angles: Angles, seated: bool) -> None:
     """Refuse what the goal cannot be combined with: a seated figure, or an
     angle the goal solves given too."""
     if seated:
-        raise TaskError(f"{HANDS_WORD}H,V stands the figure in a stoop: not with --seated")
-    given = sorted({axis for _, axis in angles if axis in SOLVED_AXES})
+        raise TaskError(f"{HANDS_WORD}H,V stands the figure in a {goal.by}: not with --seated")
+    solved = goal.solved_axes
+    given = sorted({axis for _, axis in angles if axis in solved})
     if given:
         raise TaskError(
-            f"{HANDS_WORD}H,V solves {' and '.join(SOLVED_AXES)} for a stoop; "
+            f"{HANDS_WORD}H,V solves {', '.join(solved)} for a {goal.by}; "
             f"leave out {', '.join(given)}"
         )
 
@@ -140,30 +187,124 @@ def solve_hands_at(figure: Figure, goal: HandsAt, angles: Angles, loads: list[Ha
     """The user's angles with those the goal solves (module docstring)."""
     check_free(goal, angles, seated=False)
     humanoid = build_humanoid(figure)
-    (hip_low, hip_high), (shoulder_low, shoulder_high) = (_range(figure, a) for a in SOLVED_AXES)
-    low = np.array([hip_low, shoulder_low])
-    high = np.array([hip_high, shoulder_high])
-    target = np.array([goal.h, goal.v])
+    if goal.by == SQUAT:
+        return _squat(figure, goal, angles, loads, humanoid)
+    best = _stoop(figure, goal, angles, loads, humanoid, STARTS_DEG)
+    if best[0] <= REACHED_M:
+        return best[2]
+    raise _unreached(figure, goal, best[1])
+
+
+Found = tuple[float, npt.NDArray[np.float64], Angles]  # distance, residual, angles
+
+
+def _squat(
+    figure: Figure, goal: HandsAt, angles: Angles, loads: list[HandLoad], humanoid: Humanoid
+) -> Angles:
+    """The hips, shoulders and knees that bring the grasp to its place with
+    the ankles SQUAT_ANKLE_DEG short of their dorsiflexion limit and the
+    floor's centre of pressure where quiet standing holds it: the knees bent
+    as far as that balance allows (module docstring).  Where even straight
+    knees lean less than that (a place high enough for a stoop), the stoop."""
+    ankle_low, ankle_high = _range(figure, "ankle_y")
+    ankle = ankle_high - SQUAT_ANKLE_DEG
+    at_ankles = {**angles, **_both("ankle_y", ankle)}
+    ranges = [_range(figure, axis) for axis in SQUAT_AXES]
+    low = np.array([r[0] for r in ranges])
+    high = np.array([r[1] for r in ranges])
+    target = np.array([goal.h, goal.v, QUIET_STANCE_COP_M])
 
     def posed(u: npt.NDArray[np.float64]) -> tuple[Angles, npt.NDArray[np.float64]]:
-        solved = {**angles, **_both("hip_y", u[0]), **_both("shoulder_y", u[1])}
-        body, *_ = pose_task(figure, solved, loads, humanoid=humanoid)
-        return solved, _reach_of(body) - target
+        solved = {**at_ankles, **_each(SQUAT_AXES, u)}
+        body = pose_figure(figure, solved, humanoid=humanoid)
+        stance = balance(body, hand_forces(body, loads))
+        ankles = (body.centers["l_talocrural"][2] + body.centers["r_talocrural"][2]) / 2.0
+        cop_ahead = float(stance.center_of_pressure[2] - ankles)
+        return solved, np.append(_reach_of(body), cop_ahead) - target
 
-    best: tuple[float, npt.NDArray[np.float64], Angles] | None = None
-    for start in STARTS_DEG:
+    best: Found | None = None
+    for start in SQUAT_STARTS_DEG:
         found = _newton(posed, np.clip(np.array(start), low, high), low, high)
         if best is None or found[0] < best[0]:
             best = found
         if best[0] <= REACHED_M:
             return best[2]
     assert best is not None
-    reached = best[1] + target
-    raise TaskError(
+    # No such squat within the joints' limits: the hips at their flexion
+    # limit, the knees bent as far as the hands' place then asks, or else
+    # the knees straight (a place high enough for a stoop); the body leaning
+    # at the ankles as it stands, within the ankles' range
+    reached = {axis: best[2][("left", axis)] for axis in SQUAT_AXES}
+    hip_limit = high[SQUAT_AXES.index("hip_y")]
+    held_ways = (
+        ({**angles, **_both("hip_y", hip_limit)}, ("shoulder_y", "knee_y")),
+        ({**angles, **_both("knee_y", 0.0)}, SOLVED_AXES),
+    )
+    nearest: Found = best
+    for held, free in held_ways:
+        starts = [[reached[axis] for axis in free], STARTS_DEG[0]]
+        found = _stoop(figure, goal, held, loads, humanoid, starts, free)
+        if found[0] > REACHED_M:
+            nearest = min(nearest, found, key=lambda f: f[0])
+            continue
+        lean = pose_task(figure, found[2], loads, humanoid=humanoid)[3]
+        if lean is not None and ankle_low < lean < ankle_high:
+            return {**found[2], **_both("ankle_y", lean)}
+        nearest = found
+    if nearest[0] <= REACHED_M:
+        raise TaskError(
+            f"the hands reach {goal.words()} for the {figure.gender} figure only with the "
+            "body leaning past the ankles' range: out of balance"
+        )
+    raise _unreached(figure, goal, nearest[1][:2])
+
+
+def _unreached(figure: Figure, goal: HandsAt, residual: npt.NDArray[np.float64]) -> TaskError:
+    reached = residual + np.array([goal.h, goal.v])
+    return TaskError(
         f"the hands cannot reach {goal.words()} for the {figure.gender} figure: the "
         f"nearest is H {reached[0] * 100:.1f} cm, V {reached[1] * 100:.1f} cm ("
         f"{_hint(goal, reached)})"
     )
+
+
+def _stoop(
+    figure: Figure,
+    goal: HandsAt,
+    angles: Angles,
+    loads: list[HandLoad],
+    humanoid: Humanoid,
+    starts: Sequence[Sequence[float]],
+    axes: Sequence[str] = SOLVED_AXES,
+) -> Found:
+    """The angles of `axes` (hip_y and shoulder_y) that bring the grasp
+    nearest its place, the other angles as given and the body leaning at the
+    ankles for balance: Newton's method from each start in turn until one
+    reaches."""
+    ranges = [_range(figure, axis) for axis in axes]
+    low = np.array([r[0] for r in ranges])
+    high = np.array([r[1] for r in ranges])
+    target = np.array([goal.h, goal.v])
+
+    def posed(u: npt.NDArray[np.float64]) -> tuple[Angles, npt.NDArray[np.float64]]:
+        solved = {**angles, **_each(axes, u)}
+        body, *_ = pose_task(figure, solved, loads, humanoid=humanoid)
+        return solved, _reach_of(body) - target
+
+    best: Found | None = None
+    for start in starts:
+        found = _newton(posed, np.clip(np.array(start), low, high), low, high)
+        if best is None or found[0] < best[0]:
+            best = found
+        if best[0] <= REACHED_M:
+            break
+    assert best is not None
+    return best
+
+
+def _each(axes: Sequence[str], degrees: Iterable[float]) -> Angles:
+    """Both sides of each axis at its angle."""
+    return {(side, axis): float(d) for axis, d in zip(axes, degrees) for side in SIDES}
 
 
 def _hint(goal: HandsAt, reached: npt.NDArray[np.float64]) -> str:
@@ -171,9 +312,9 @@ def _hint(goal: HandsAt, reached: npt.NDArray[np.float64]) -> str:
     hints = []
     if goal.h < reached[0] - 0.01:
         hints.append("bend the elbows, elbow_y, for a place nearer the body")
-    if goal.v < reached[1] - 0.01:
-        hints.append("pose a squat by its angles, knee_y and hip_y, for one lower")
-    return "; ".join(hints) or "beyond the arms' reach from a stoop"
+    if goal.v < reached[1] - 0.01 and goal.by == STOOP:
+        hints.append(f"a squat, {HANDS_WORD}H,V,{SQUAT}, for one lower")
+    return "; ".join(hints) or f"beyond the arms' reach from a {goal.by}"
 
 
 Residual = tuple[Angles, npt.NDArray[np.float64]]
@@ -195,9 +336,9 @@ def _newton(
     jacobian: npt.NDArray[np.float64] | None = None
     while best[0] > REACHED_M and evaluations < MAX_EVALUATIONS:
         if jacobian is None:
-            jacobian = np.empty((2, 2))
-            for k in range(2):
-                nudge = np.zeros(2)
+            jacobian = np.empty((len(r), len(u)))
+            for k in range(len(u)):
+                nudge = np.zeros(len(u))
                 nudge[k] = STEP_DEG if u[k] + STEP_DEG <= high[k] else -STEP_DEG
                 jacobian[:, k] = (posed(u + nudge)[1] - r) / nudge[k]
                 evaluations += 1
@@ -229,10 +370,10 @@ def _step(
 ) -> npt.NDArray[np.float64]:
     """The Newton step, the angles at a limit it pushes against held, at most
     MAX_STEP_DEG."""
-    free = np.ones(2, dtype=bool)
-    step = np.zeros(2)
-    for _ in range(2):
-        step = np.zeros(2)
+    free = np.ones(len(u), dtype=bool)
+    step = np.zeros(len(u))
+    for _ in range(len(u)):
+        step = np.zeros(len(u))
         if free.any():
             solved, *_ = np.linalg.lstsq(jacobian[:, free], -r, rcond=None)
             step[free] = solved
@@ -245,28 +386,33 @@ def _step(
     return step * min(1.0, MAX_STEP_DEG / largest) if largest > 0 else step
 
 
-def solved_angles(angles: Angles) -> dict[str, float]:
-    """The angles a stoop solved (both sides alike), axis -> degrees."""
-    return {axis: angles[("left", axis)] for axis in SOLVED_AXES}
+def solved_angles(axes: Sequence[str], angles: Angles) -> dict[str, float]:
+    """The angles a stoop or a squat solved (both sides alike), axis -> degrees."""
+    return {axis: angles[("left", axis)] for axis in axes}
 
 
 def hands_at_note(goal: HandsAt, postures: dict[str, Angles]) -> str:
     """'hands at H 40.0 cm, V 30.0 cm by a stoop: women hip_y=113.2 ...; men ...'."""
     each = "; ".join(
-        f"{who} " + " ".join(f"{axis}={deg:.1f}" for axis, deg in solved_angles(angles).items())
+        f"{who} "
+        + " ".join(
+            f"{axis}={deg:.1f}" for axis, deg in solved_angles(goal.solved_axes, angles).items()
+        )
         for who, angles in postures.items()
     )
     return f"hands at {goal.words()} (the grasp, from the ankles' midpoint): {each}"
 
 
 def hands_at_json(goal: HandsAt, postures: dict[str, Angles]) -> dict[str, object]:
-    """{"h", "v": {"value", "unit"}, "by": "stoop", "solved": {who: {axis: deg}}}."""
+    """{"h", "v": {"value", "unit"}, "by": "stoop"|"squat", "solved": {who: {axis: deg}}}."""
     return {
         "h": {"value": round(goal.h * 100, 1), "unit": "cm"},
         "v": {"value": round(goal.v * 100, 1), "unit": "cm"},
-        "by": "stoop",
+        "by": goal.by,
         "solved": {
-            who: {axis: round(deg, 1) for axis, deg in solved_angles(angles).items()}
+            who: {
+                axis: round(deg, 1) for axis, deg in solved_angles(goal.solved_axes, angles).items()
+            }
             for who, angles in postures.items()
         },
     }

@@ -29,8 +29,8 @@ No Textual import here.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass, field, replace
+from typing import Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -304,6 +304,7 @@ class TaskAnswer:
     reba: list[Reba] = field(default_factory=list)
     # population -> the angles its figure took, where each figure finds its own
     postures: dict[str, Angles] = field(default_factory=dict)
+    solved_axes: tuple[str, ...] = ()  # the axes each figure found (both sides alike)
 
     def limiting(self, population: str) -> Capability | None:
         """The covered joint or hand the fewest of `population` can do (a
@@ -325,9 +326,18 @@ class TaskAnswer:
         self.capabilities.append(replace(found, percent={population: percent}))
 
 
+class PostureSolver(Protocol):
+    """A posture each figure finds for itself (model/strength/hands_at.py:
+    from where its hands must be), naming the axes it finds."""
+
+    @property
+    def solved_axes(self) -> tuple[str, ...]: ...
+
+    def __call__(self, figure: Figure) -> Angles: ...
+
+
 # A task's posture: the same angles for every figure, or each figure's own
-# (found from where its hands must be, model/strength/hands_at.py)
-PostureOf = Angles | Callable[[Figure], Angles]
+PostureOf = Angles | PostureSolver
 
 
 def _angles_for(posture: PostureOf, figure: Figure) -> Angles:
@@ -479,6 +489,7 @@ def assess_task(
         answer.populations.append(ref.words)
         if callable(posture):
             answer.postures[ref.words] = angles
+            answer.solved_axes = posture.solved_axes
         if stance is not None and not stance.stable:
             answer.unstable[ref.words] = stance.reason
             continue
@@ -655,6 +666,7 @@ def assess_populations(
         answer.populations.append(people.words)
         if callable(posture):
             answer.postures[people.words] = angles
+            answer.solved_axes = posture.solved_axes
         if people.note not in answer.notes:
             answer.notes.append(people.note)
         if stance is not None and not stance.stable:

@@ -355,7 +355,7 @@ class TaskPanel(Vertical):
         if cell == "posture":
             return (
                 "The task's posture, JOINT=ANGLE ... (trunk_y=30 hip_y=60 shoulder_y=90; "
-                "hands=40cm,30cm: a stoop to where the hands grasp; "
+                "hands=40cm,30cm: a stoop to where the hands grasp, ,squat after it a squat; "
                 f"`{FOLLOW_ROW}`: the strength page's row) [{self.cell_text(cell)}]:"
             )
         if cell == "people":
@@ -424,8 +424,8 @@ class TaskPanel(Vertical):
     def set_posture(self, text: str) -> tuple[str, ...]:
         """`trunk_y=30 hip_y=60 ...` (checked as `sass task` checks it, and
         against the figure's joint limits), with `hands=H,V` a stoop to where
-        the hands grasp (as `sass task` takes it), or `row`: follow the
-        strength page."""
+        the hands grasp (`hands=H,V,squat` a squat, as `sass task` takes it),
+        or `row`: follow the strength page."""
         words = tuple(text.split())
         if words == (FOLLOW_ROW,):
             words = ()

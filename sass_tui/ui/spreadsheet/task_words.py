@@ -143,11 +143,16 @@ def answer_parts(answer: TaskAnswer) -> tuple[list[str], list[str]]:
         f"Limiting: {'; '.join(limiting)}"
         + (f"; extrapolated (outside the fitted data): {', '.join(outside)}" if outside else ""),
     ]
-    if answer.postures:  # hands=H,V: the stoop each figure found
+    if answer.postures:  # hands=H,V: the stoop or squat each figure found
+        squat = "knee_y" in answer.solved_axes
         notes.append(
-            "Stoop to the hands' place: "
+            f"{'Squat' if squat else 'Stoop'} to the hands' place: "
             + "; ".join(
-                f"{who} " + " ".join(f"{axis} {deg:.1f}" for axis, deg in solved_angles(a).items())
+                f"{who} "
+                + " ".join(
+                    f"{axis} {deg:.1f}"
+                    for axis, deg in solved_angles(answer.solved_axes, a).items()
+                )
                 for who, a in answer.postures.items()
             )
         )

@@ -3,7 +3,7 @@ gets (TaskInput, an immutable copy of the figure and the task) and what it
 computes off the UI thread: the answer for the people asked for (a target's
 or virtual population's read from the database), the curves of percent
 capable against a hand's load, and the angles of the figure shown (its own
-stoop for `hands=H,V`, model/strength/hands_at.py).  No widget here.
+stoop or squat for `hands=H,V`, model/strength/hands_at.py).  No widget here.
 """
 
 from __future__ import annotations
@@ -64,7 +64,7 @@ def assess(task: TaskInput) -> tuple[TaskAnswer, Curves, Angles]:
     """The task for the people asked for (a target's or virtual population's
     read from the database, the shipped one made the first time), when
     asked the curves of percent capable against the load on a hand, and the
-    angles of the figure shown (its own stoop for `hands=H,V`)."""
+    angles of the figure shown (its own stoop or squat for `hands=H,V`)."""
     loads = list(task.loads)
     angles, goal = split_posture(task.posture)
     posture = posture_of(angles, goal, loads)
