@@ -4,10 +4,11 @@ each in fresh processes, interleaved (A, B, A, B, ...) so both see the same
 machine load.  The first `--virtual` run makes the virtual population in a
 temporary database and is not counted.
 
-    python benchmarks/task_virtual.py [--runs 7] [--hands]
+    python benchmarks/task_virtual.py [--runs 7] [--hands | --squat]
 
 --hands: the posture `hands=40cm,30cm` with 10 kg in each hand, each
-gender's figure finding its own stoop (model/strength/hands_at.py).
+gender's figure finding its own stoop (model/strength/hands_at.py);
+--squat: `hands=40cm,30cm,squat`, its own squat.
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ PY = sys.executable
 SASS = shutil.which("sass", path=str(Path(PY).parent)) or shutil.which("sass")
 TASK = ["task", "shoulder_y=90", "elbow_y=0", "--right-load", "40N", "--right-direction", "forward"]
 STOOP = ["task", "hands=40cm,30cm", "--left-load", "10 kg", "--right-load", "10 kg"]
+SQUAT = ["task", "hands=40cm,30cm,squat", "--left-load", "10 kg", "--right-load", "10 kg"]
 
 
 def timed(command: list[str], env: dict[str, str]) -> tuple[float, float]:
@@ -46,9 +48,11 @@ def timed(command: list[str], env: dict[str, str]) -> tuple[float, float]:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--runs", type=int, default=7)
-    parser.add_argument("--hands", action="store_true", help="a stoop to where the hands grasp")
+    chosen = parser.add_mutually_exclusive_group()
+    chosen.add_argument("--hands", action="store_true", help="a stoop to where the hands grasp")
+    chosen.add_argument("--squat", action="store_true", help="a squat to where the hands grasp")
     args = parser.parse_args()
-    task = STOOP if args.hands else TASK
+    task = STOOP if args.hands else SQUAT if args.squat else TASK
     assert SASS, "the sass console script (pip install -e .)"
     with tempfile.TemporaryDirectory() as folder:
         env = {**os.environ, "SASS_DB": str(Path(folder) / "task.db"), "HOME": folder}
