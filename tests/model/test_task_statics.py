@@ -188,7 +188,7 @@ def test_a_load_held_behind_the_low_back_is_said(women):
     body = pose_task(women[0].figure, angles, box)[0]
     behind = body.centers["vl5"][2] - body.grip("right")[2]
     assert behind > 0.10
-    said = [note for note in answer.notes if "behind the low back" in note]
+    said = [note for note in answer.cautions if "behind the low back" in note]
     assert said == [
         next(n for n in said if f"right hand holds its load {behind * 100:.1f} cm behind" in n)
     ]
@@ -196,4 +196,4 @@ def test_a_load_held_behind_the_low_back_is_said(women):
     assert answer.low_back.moment[0] < bare.low_back.moment[0]  # the load lowers it
     for words in (["trunk_y=30", "shoulder_y=30"], []):
         quiet = assess_task(women, parse_angles(words), box)
-        assert not [note for note in quiet.notes if "behind the low back" in note]
+        assert not [note for note in quiet.cautions if "behind the low back" in note]

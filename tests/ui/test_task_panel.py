@@ -288,6 +288,16 @@ def test_the_task_panels_own_posture_is_kept_for_the_worksheet(app_at, drive):
             await answer(pilot, "trunk_q=3")
             await wait_until(pilot, lambda: "trunk_q" in message(app), '"trunk_q" in message(app)')
             assert panel.posture == ("trunk_y=30", "hip_y=60", "shoulder_y=90")
+            # what sass task cautions of a posture, the panel says too: one leg
+            # posed shorter stands the figure on the other foot
+            await pilot.press("enter")
+            await answer(pilot, "left_hip_y=30 left_ankle_y=-30")
+            await wait_until(
+                pilot,
+                lambda: "Cautions: standing on the right foot" in cells_and_answer(panel),
+                "the caution in the panel",
+            )
+            assert panel.answer.stance.bearing == ("right",)
             await pilot.press("enter")
             await answer(pilot, "row")
             await wait_until(pilot, lambda: not panel.own_posture, "the row's posture again")

@@ -93,6 +93,8 @@ PASSIVE = "passive, at the end of its range"
 QUIET_STANCE_COP_M = 0.05
 # a sole the posture puts deeper than this into the floor is said to be
 INTO_FLOOR_M = 0.01
+# a leg joint's moment outside the sagittal plane above this is said uncovered
+OFF_PLANE_N_M = 5.0
 # a loaded hand further behind L5/S1 than this is said to be (hanging arms
 # stand about 2 cm behind it)
 BEHIND_L5_M = 0.05
@@ -305,6 +307,9 @@ class TaskAnswer:
     # population -> the angles its figure took, where each figure finds its own
     postures: dict[str, Angles] = field(default_factory=dict)
     solved_axes: tuple[str, ...] = ()  # the axes each figure found (both sides alike)
+    # what the user should know of the posture on the first figure: a foot off
+    # the floor or into it, a load behind the low back, a leg moment uncovered
+    cautions: list[str] = field(default_factory=list)
 
     def limiting(self, population: str) -> Capability | None:
         """The covered joint or hand the fewest of `population` can do (a
@@ -484,7 +489,9 @@ def assess_task(
             answer = TaskAnswer(loads, moments, _figure_words(ref.figure))
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
-            answer.notes += _posture_notes(seated, lean, stance, body, loads)
+            answer.notes += _posture_notes(seated, lean, stance)
+            answer.cautions += _feet_notes(body) + _behind_notes(body, loads)
+            answer.cautions += _off_plane_notes(moments)
             answer.rula, answer.reba = _scores(ref.figure, body, used, loads, stance, seated, lean)
         answer.populations.append(ref.words)
         if callable(posture):
@@ -561,15 +568,8 @@ def _scores(
     ], rebas
 
 
-def _posture_notes(
-    seated: bool, lean: float | None, stance: Balance | None, body: PosedBody, loads: list[HandLoad]
-) -> list[str]:
-    """What the posture's model chose or found: the seat, the lean, the feet,
-    a hand behind the low back."""
-    return _lean_notes(seated, lean, stance) + _feet_notes(body) + _behind_notes(body, loads)
-
-
-def _lean_notes(seated: bool, lean: float | None, stance: Balance | None) -> list[str]:
+def _posture_notes(seated: bool, lean: float | None, stance: Balance | None) -> list[str]:
+    """What the posture's model chose: the seat, the lean at the ankles."""
     if seated:
         return ["seated: the seat carries the legs; no leg joint and no balance"]
     if lean is None or stance is None:
@@ -579,6 +579,28 @@ def _lean_notes(seated: bool, lean: float | None, stance: Balance | None) -> lis
         f"pressure {QUIET_STANCE_COP_M * 100:g} cm ahead of them where quiet standing holds it "
         "(Winter 1995), as far as the ankles' range allows; give ankle_y to fix the lean"
     ]
+
+
+def _off_plane_notes(moments: list[JointMoment]) -> list[str]:
+    """Anderson et al. (2007) model flexion and extension alone: a leg
+    joint's moment side to side (about the forward axis, HAnim z) or its
+    twist (about the vertical, y) beyond OFF_PLANE_N_M is said uncovered
+    (standing on one foot, the hip's side-to-side moment is the body's
+    weight times the hip's distance from the foot)."""
+    notes = []
+    for moment, side, word in _legs(moments):
+        _, twist, sideways = moment.moment
+        parts = [
+            f"{what} {abs(size):.1f} N-m"
+            for what, size in (("side to side", sideways), ("twisting", twist))
+            if abs(size) > OFF_PLANE_N_M
+        ]
+        if parts:
+            notes.append(
+                f"{side} {word}: the moment {' and '.join(parts)} is not covered "
+                f"({ANDERSON}'s models are of flexion and extension alone)"
+            )
+    return notes
 
 
 def _feet_notes(body: PosedBody) -> list[str]:
@@ -661,7 +683,9 @@ def assess_populations(
             answer = TaskAnswer(loads, moments, _figure_words(figure))
             answer.low_back = low_back(body, hand_forces(body, loads))
             answer.stance, answer.lean = stance, lean
-            answer.notes += _posture_notes(seated, lean, stance, body, loads)
+            answer.notes += _posture_notes(seated, lean, stance)
+            answer.cautions += _feet_notes(body) + _behind_notes(body, loads)
+            answer.cautions += _off_plane_notes(moments)
             answer.rula, answer.reba = _scores(figure, body, used, loads, stance, seated, lean)
         answer.populations.append(people.words)
         if callable(posture):

@@ -142,6 +142,7 @@ def task_json(answer: TaskAnswer, posture: list[str]) -> dict[str, object]:
         ],
         "not_covered": [m.joint for m in answer.moments if m.covered_by == UNCOVERED],
         "notes": answer.notes,
+        "cautions": answer.cautions,
     }
 
 
@@ -210,6 +211,7 @@ def task_text(answer: TaskAnswer, posture: list[str]) -> list[str]:
     sources = sorted({c.source.split(";")[0] for c in answer.capabilities})
     lines.append(f"sources: {'; '.join(sources)}")
     lines += [f"note: {n}" for n in answer.notes]
+    lines += [f"caution: {c}" for c in answer.cautions]
     return lines
 
 

@@ -143,6 +143,8 @@ def answer_parts(answer: TaskAnswer) -> tuple[list[str], list[str]]:
         f"Limiting: {'; '.join(limiting)}"
         + (f"; extrapolated (outside the fitted data): {', '.join(outside)}" if outside else ""),
     ]
+    if answer.cautions:
+        notes.append(f"Cautions: {'; '.join(answer.cautions)}")
     if answer.postures:  # hands=H,V: the stoop or squat each figure found
         squat = "knee_y" in answer.solved_axes
         notes.append(
