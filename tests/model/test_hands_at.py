@@ -186,7 +186,7 @@ def test_any_posture_words_are_a_posture_or_a_message(words):
         assert goal is None or not {("left", axis) for axis in goal.solved_axes} & set(angles)
 
 
-SQUAT_PLACES = [(0.3, 0.5), (0.4, 0.3), (0.25, 0.2), (0.5, 0.75)]
+SQUAT_PLACES = [(0.3, 0.5), (0.4, 0.3), (0.25, 0.2), (0.5, 0.6)]
 
 
 def _trunk_inclination(body):
@@ -244,3 +244,31 @@ def test_sass_task_squat_reports_its_knees_and_ankles(capsys):
     assert set(shown["solved"]["women"]) == {"hip_y", "shoulder_y", "knee_y", "ankle_y"}
     assert main(["task", "hands=30,50,squat", "--gender", "male"]) == 0
     assert "V 50.0 cm by a squat" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("h_v", [(0.5, 0.6), (0.6, 0.1), (0.2, 0.05), (0.15, 0.4)])
+def test_a_squat_is_reached_with_every_angle_it_solves_or_refused_with_a_message(figures, h_v):
+    """Places far, low and near: the squat's fallbacks (the hips at their
+    limit, the knees straight) still answer with each angle the squat
+    solves, on both sides, the grasp at its place, or refuse saying why."""
+    figure = figures["female"]
+    goal = HandsAt(*h_v, "squat")
+    try:
+        angles = solve_hands_at(figure, goal, {}, BOXES)
+    except TaskError as refused:
+        assert "by a squat" in str(refused) and "female figure" in str(refused)
+        return
+    assert {(side, axis) for side in ("left", "right") for axis in goal.solved_axes} <= set(angles)
+    assert body_h_v(pose_task(figure, angles, BOXES)[0]) == pytest.approx(h_v, abs=0.002)
+
+
+def test_a_squat_to_a_place_above_the_hanging_hands_is_refused(figures, capsys):
+    """A squat lowers the hands: a place above where they hang standing
+    (the figure's own, about 70 cm for the woman) is left to a stoop."""
+    figure = figures["female"]
+    hanging = body_h_v(pose_task(figure, {}, BOXES)[0])[1]
+    with pytest.raises(TaskError, match="above where the female figure's hands hang"):
+        solve_hands_at(figure, HandsAt(0.5, hanging + 0.05, "squat"), {}, BOXES)
+    solve_hands_at(figure, HandsAt(0.3, hanging - 0.1, "squat"), {}, BOXES)
+    assert main(["task", "hands=50,100,squat", "--gender", "female"]) == 2
+    assert "a stoop, hands=H,V, reaches it" in capsys.readouterr().err

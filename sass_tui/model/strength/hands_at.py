@@ -205,7 +205,16 @@ def _squat(
     the ankles SQUAT_ANKLE_DEG short of their dorsiflexion limit and the
     floor's centre of pressure where quiet standing holds it: the knees bent
     as far as that balance allows (module docstring).  Where even straight
-    knees lean less than that (a place high enough for a stoop), the stoop."""
+    knees lean less than that, the stoop.  A place above where the hands
+    hang standing is refused: the squat would hold the arms up."""
+    # a squat lowers the hands: not to a place above where they hang standing
+    hanging = _reach_of(pose_task(figure, angles, loads, humanoid=humanoid)[0])[1]
+    if goal.v > hanging:
+        raise TaskError(
+            f"a squat lowers the hands, and {goal.words()} is above where the "
+            f"{figure.gender} figure's hands hang standing (V {hanging * 100:.1f} cm): "
+            f"a stoop, {HANDS_WORD}H,V, reaches it"
+        )
     ankle_low, ankle_high = _range(figure, "ankle_y")
     ankle = ankle_high - SQUAT_ANKLE_DEG
     at_ankles = {**angles, **_both("ankle_y", ankle)}
@@ -240,7 +249,8 @@ def _squat(
         ({**angles, **_both("hip_y", hip_limit)}, ("shoulder_y", "knee_y")),
         ({**angles, **_both("knee_y", 0.0)}, SOLVED_AXES),
     )
-    nearest: Found = best
+    # the hands' place alone, of the three unknowns' nearest
+    nearest: Found = (float(np.linalg.norm(best[1][:2])), best[1][:2], best[2])
     for held, free in held_ways:
         starts = [[reached[axis] for axis in free], STARTS_DEG[0]]
         found = _stoop(figure, goal, held, loads, humanoid, starts, free)
@@ -251,12 +261,18 @@ def _squat(
         if lean is not None and ankle_low < lean < ankle_high:
             return {**found[2], **_both("ankle_y", lean)}
         nearest = found
-    if nearest[0] <= REACHED_M:
-        raise TaskError(
-            f"the hands reach {goal.words()} for the {figure.gender} figure only with the "
-            "body leaning past the ankles' range: out of balance"
-        )
-    raise _unreached(figure, goal, nearest[1][:2])
+    if nearest[0] > REACHED_M:
+        raise _unreached(figure, goal, nearest[1])
+    # reached with the ankles at the end of their range: in balance, if not
+    # as in quiet standing, it stands; otherwise it would tip
+    _, stance, _, lean = pose_task(figure, nearest[2], loads, humanoid=humanoid)
+    if stance is not None and stance.stable:
+        # the ankles' angle among those found, whichever way it was set
+        return {**nearest[2], **({} if lean is None else _both("ankle_y", lean))}
+    raise TaskError(
+        f"the hands reach {goal.words()} for the {figure.gender} figure only with the "
+        "body leaning past the ankles' range: out of balance"
+    )
 
 
 def _unreached(figure: Figure, goal: HandsAt, residual: npt.NDArray[np.float64]) -> TaskError:
