@@ -218,9 +218,6 @@ def _squat(
     ankle_low, ankle_high = _range(figure, "ankle_y")
     ankle = ankle_high - SQUAT_ANKLE_DEG
     at_ankles = {**angles, **_both("ankle_y", ankle)}
-    ranges = [_range(figure, axis) for axis in SQUAT_AXES]
-    low = np.array([r[0] for r in ranges])
-    high = np.array([r[1] for r in ranges])
     target = np.array([goal.h, goal.v, QUIET_STANCE_COP_M])
 
     def posed(u: npt.NDArray[np.float64]) -> tuple[Angles, npt.NDArray[np.float64]]:
@@ -231,20 +228,15 @@ def _squat(
         cop_ahead = float(stance.center_of_pressure[2] - ankles)
         return solved, np.append(_reach_of(body), cop_ahead) - target
 
-    best: Found | None = None
-    for start in SQUAT_STARTS_DEG:
-        found = _newton(posed, np.clip(np.array(start), low, high), low, high)
-        if best is None or found[0] < best[0]:
-            best = found
-        if best[0] <= REACHED_M:
-            return best[2]
-    assert best is not None
+    best = _from_starts(figure, SQUAT_AXES, posed, SQUAT_STARTS_DEG)
+    if best[0] <= REACHED_M:
+        return best[2]
     # No such squat within the joints' limits: the hips at their flexion
     # limit, the knees bent as far as the hands' place then asks, or else
     # the knees straight (a place high enough for a stoop); the body leaning
     # at the ankles as it stands, within the ankles' range
     reached = {axis: best[2][("left", axis)] for axis in SQUAT_AXES}
-    hip_limit = high[SQUAT_AXES.index("hip_y")]
+    hip_limit = _range(figure, "hip_y")[1]
     held_ways = (
         ({**angles, **_both("hip_y", hip_limit)}, ("shoulder_y", "knee_y")),
         ({**angles, **_both("knee_y", 0.0)}, SOLVED_AXES),
@@ -297,9 +289,6 @@ def _stoop(
     nearest its place, the other angles as given and the body leaning at the
     ankles for balance: Newton's method from each start in turn until one
     reaches."""
-    ranges = [_range(figure, axis) for axis in axes]
-    low = np.array([r[0] for r in ranges])
-    high = np.array([r[1] for r in ranges])
     target = np.array([goal.h, goal.v])
 
     def posed(u: npt.NDArray[np.float64]) -> tuple[Angles, npt.NDArray[np.float64]]:
@@ -307,6 +296,20 @@ def _stoop(
         body, *_ = pose_task(figure, solved, loads, humanoid=humanoid)
         return solved, _reach_of(body) - target
 
+    return _from_starts(figure, axes, posed, starts)
+
+
+def _from_starts(
+    figure: Figure,
+    axes: Sequence[str],
+    posed: Callable[[npt.NDArray[np.float64]], Residual],
+    starts: Sequence[Sequence[float]],
+) -> Found:
+    """Newton's method on `axes`, within the figure's joint limits, from each
+    start in turn until one reaches: the nearest found."""
+    ranges = [_range(figure, axis) for axis in axes]
+    low = np.array([r[0] for r in ranges])
+    high = np.array([r[1] for r in ranges])
     best: Found | None = None
     for start in starts:
         found = _newton(posed, np.clip(np.array(start), low, high), low, high)
