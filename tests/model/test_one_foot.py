@@ -16,7 +16,7 @@ from sass_tui.cli import main
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.posture import ON_FLOOR_M, parse_angles, pose_figure
 from sass_tui.model.strength.statics import GRAVITY, moment_about, weights
-from sass_tui.model.strength.task import Reference, assess_task, pose_task
+from sass_tui.model.strength.task import QUIET_STANCE_COP_M, Reference, assess_task, pose_task
 
 # the left leg swung forward, its foot pointed: shorter than the right
 ON_THE_RIGHT_FOOT = ["left_hip_y=30", "left_ankle_y=-30"]
@@ -119,6 +119,18 @@ def test_the_standing_hips_side_to_side_moment_is_said_uncovered(woman):
     assert len(said) == 1 and f"{sideways:.1f} N-m is not covered" in said[0]
     quiet = assess_task([Reference("women", woman, None)], {}, [])
     assert not [n for n in quiet.cautions if "is not covered" in n]
+
+
+def test_on_one_foot_the_body_leans_over_that_foot(woman):
+    """A marching step (the left thigh forward, its knee bent, no ankle
+    given): the lean at the ankles puts the centre of pressure 5 cm ahead
+    of the standing foot's ankle, not of the ankles' midpoint (which the
+    raised leg carries 18 cm forward)."""
+    body, stance, _, lean = pose_task(woman, parse_angles(["left_hip_y=60", "left_knee_y=60"]), [])
+    assert body.bearing == ("right",)
+    ahead = stance.center_of_pressure[2] - body.centers["r_talocrural"][2]
+    assert ahead == pytest.approx(QUIET_STANCE_COP_M, abs=1e-3)
+    assert abs(lean) < 5.0
 
 
 def test_the_cli_says_which_foot_stands(capsys):

@@ -437,7 +437,8 @@ def pose_task(
         return body, balance(body, hand_forces(body, loads)), leaned
 
     def ahead(stance: Balance, body: PosedBody) -> float:
-        ankles = (body.centers["l_talocrural"][2] + body.centers["r_talocrural"][2]) / 2
+        # ahead of the ankles of the feet on the floor (on one foot, its own)
+        ankles = np.mean([body.centers[f"{side[0]}_talocrural"][2] for side in body.bearing])
         return float(stance.center_of_pressure[2] - ankles - QUIET_STANCE_COP_M)
 
     low = max(joint_limit_range(figure, s, "ankle_y")[0] for s in ("left", "right"))
