@@ -50,6 +50,7 @@ from sass_tui.model.strength.task import (
     HandLoad,
     PostureOf,
     TaskError,
+    cop_ahead,
     hand_forces,
     pose_task,
 )
@@ -172,7 +173,7 @@ def _range(figure: Figure, axis: str) -> tuple[float, float]:
 
 
 def _both(axis: str, degrees: float) -> Angles:
-    return {(side, axis): float(degrees) for side in SIDES}
+    return _each((axis,), (degrees,))
 
 
 def _reach_of(body: PosedBody) -> npt.NDArray[np.float64]:
@@ -224,9 +225,7 @@ def _squat(
         solved = {**at_ankles, **_each(SQUAT_AXES, u)}
         body = pose_figure(figure, solved, humanoid=humanoid)
         stance = balance(body, hand_forces(body, loads))
-        ankles = (body.centers["l_talocrural"][2] + body.centers["r_talocrural"][2]) / 2.0
-        cop_ahead = float(stance.center_of_pressure[2] - ankles)
-        return solved, np.append(_reach_of(body), cop_ahead) - target
+        return solved, np.append(_reach_of(body), cop_ahead(stance, body)) - target
 
     best = _from_starts(figure, SQUAT_AXES, posed, SQUAT_STARTS_DEG)
     if best[0] <= REACHED_M:

@@ -118,11 +118,14 @@ def balance(body: PosedBody, hands: list[Force]) -> Balance:
     moment = moment_about(np.zeros(3), forces)
     ground = -total
     com = body.center_of_mass()
-    soles = np.vstack([body.soles[side] for side in body.bearing])
     # the sole the body stands on is level on the floor; a raised foot's
     # corner reaching down to it (or past it) bears too
     floor = max(float(body.soles[side][:, 1].min()) for side in body.bearing)
-    hull = _hull(soles[soles[:, 1] <= floor + ON_FLOOR_M][:, [0, 2]])
+    touching = {
+        side: body.soles[side][body.soles[side][:, 1] <= floor + ON_FLOOR_M][:, [0, 2]]
+        for side in body.bearing
+    }
+    hull = _hull(np.vstack(list(touching.values())))
     if ground[1] <= 0:
         return Balance(
             False,
@@ -142,7 +145,7 @@ def balance(body: PosedBody, hands: list[Force]) -> Balance:
     cop = np.array([px, floor, pz])
     free = float(-moment[1] - (pz * ground[0] - px * ground[2]))
     margin = inside_margin(hull, np.array([px, pz]))
-    feet = _split(body, cop, ground, floor)
+    feet = _split(touching, cop, ground)
     reason = ""
     if margin < 0:
         way = (
@@ -155,17 +158,14 @@ def balance(body: PosedBody, hands: list[Force]) -> Balance:
     return Balance(margin >= 0, reason, com, cop, feet, free, margin, body.bearing)
 
 
-def _split(body: PosedBody, cop: Vector, ground: Vector, floor: float) -> dict[str, Force]:
+def _split(touching: dict[str, Vector], cop: Vector, ground: Vector) -> dict[str, Force]:
     """The lever rule between the feet: each foot's share of the floor's
     force from where the centre of pressure lies along the line joining the
     feet's contacts (the middle of each sole's corners on the floor), each
     share acting at its contact moved across that line to the centre of
     pressure.  Feet side by side: each foot's midline at the centre of
     pressure's front-back place."""
-    contact = {
-        side: body.soles[side][body.soles[side][:, 1] <= floor + ON_FLOOR_M][:, [0, 2]].mean(axis=0)
-        for side in body.bearing
-    }
+    contact = {side: corners.mean(axis=0) for side, corners in touching.items()}
     if len(contact) == 1:
         (side,) = contact
         return _on_one_foot(side, cop, ground)

@@ -408,6 +408,13 @@ def _legs(moments: list[JointMoment]) -> list[tuple[JointMoment, str, str]]:
     return out
 
 
+def cop_ahead(stance: Balance, body: PosedBody) -> float:
+    """How far (m) the floor's centre of pressure lies ahead of the ankles of
+    the feet on the floor (on one foot, its own)."""
+    ankles = np.mean([body.centers[f"{side[0]}_talocrural"][2] for side in body.bearing])
+    return float(stance.center_of_pressure[2] - ankles)
+
+
 LEAN_STEPS = 12  # regula falsi steps at most
 LEAN_TOLERANCE_M = 1e-4  # the centre of pressure within 0.1 mm of its place
 
@@ -437,9 +444,7 @@ def pose_task(
         return body, balance(body, hand_forces(body, loads)), leaned
 
     def ahead(stance: Balance, body: PosedBody) -> float:
-        # ahead of the ankles of the feet on the floor (on one foot, its own)
-        ankles = np.mean([body.centers[f"{side[0]}_talocrural"][2] for side in body.bearing])
-        return float(stance.center_of_pressure[2] - ankles - QUIET_STANCE_COP_M)
+        return cop_ahead(stance, body) - QUIET_STANCE_COP_M
 
     low = max(joint_limit_range(figure, s, "ankle_y")[0] for s in ("left", "right"))
     high = min(joint_limit_range(figure, s, "ankle_y")[1] for s in ("left", "right"))
@@ -487,13 +492,7 @@ def assess_task(
         body, stance, used, lean = pose_task(ref.figure, angles, loads, seated)
         moments = task_moments(body, loads, stance)
         if answer is None:
-            answer = TaskAnswer(loads, moments, _figure_words(ref.figure))
-            answer.low_back = low_back(body, hand_forces(body, loads))
-            answer.stance, answer.lean = stance, lean
-            answer.notes += _posture_notes(seated, lean, stance)
-            answer.cautions += _feet_notes(body) + _behind_notes(body, loads)
-            answer.cautions += _off_plane_notes(moments)
-            answer.rula, answer.reba = _scores(ref.figure, body, used, loads, stance, seated, lean)
+            answer = _answer_on(ref.figure, body, stance, used, lean, loads, moments, seated)
         answer.populations.append(ref.words)
         if callable(posture):
             answer.postures[ref.words] = angles
@@ -567,6 +566,27 @@ def _scores(
         )
         for side in ("right", "left")
     ], rebas
+
+
+def _answer_on(
+    figure: Figure,
+    body: PosedBody,
+    stance: Balance | None,
+    used: Angles,
+    lean: float | None,
+    loads: list[HandLoad],
+    moments: list[JointMoment],
+    seated: bool,
+) -> TaskAnswer:
+    """The answer's parts told on the first figure: its moments, low back,
+    balance, notes, cautions and RULA and REBA scores."""
+    answer = TaskAnswer(loads, moments, _figure_words(figure))
+    answer.low_back = low_back(body, hand_forces(body, loads))
+    answer.stance, answer.lean = stance, lean
+    answer.notes += _posture_notes(seated, lean, stance)
+    answer.cautions += _feet_notes(body) + _behind_notes(body, loads) + _off_plane_notes(moments)
+    answer.rula, answer.reba = _scores(figure, body, used, loads, stance, seated, lean)
+    return answer
 
 
 def _posture_notes(seated: bool, lean: float | None, stance: Balance | None) -> list[str]:
@@ -681,13 +701,7 @@ def assess_populations(
         body, stance, used, lean = pose_task(figure, angles, loads, seated)
         moments = task_moments(body, loads, stance)
         if answer is None:
-            answer = TaskAnswer(loads, moments, _figure_words(figure))
-            answer.low_back = low_back(body, hand_forces(body, loads))
-            answer.stance, answer.lean = stance, lean
-            answer.notes += _posture_notes(seated, lean, stance)
-            answer.cautions += _feet_notes(body) + _behind_notes(body, loads)
-            answer.cautions += _off_plane_notes(moments)
-            answer.rula, answer.reba = _scores(figure, body, used, loads, stance, seated, lean)
+            answer = _answer_on(figure, body, stance, used, lean, loads, moments, seated)
         answer.populations.append(people.words)
         if callable(posture):
             answer.postures[people.words] = angles
