@@ -116,11 +116,14 @@ def _nullable(array: np.ndarray) -> list[Any]:
 
 
 def _long_rows(ids: list[int], names: Sequence[str], values: np.ndarray) -> Iterable[SqlRow]:
-    """(id, row name, v...) for every row that has at least one value."""
+    """(id, row name, v...) for every row that has at least one value, in the
+    order of the tables' key (id_num, seg_name): appended at the B-tree's end."""
+    by_name = np.argsort(np.asarray(names))
+    values = values[:, by_name]
     present = ~np.all(np.isnan(values), axis=2)
     person, row = np.nonzero(present)
     id_array = np.asarray(ids, dtype=np.int64)
-    name_array = np.asarray(names, dtype=object)
+    name_array = np.asarray(names, dtype=object)[by_name]
     return zip(
         id_array[person].tolist(),
         name_array[row].tolist(),
@@ -190,12 +193,10 @@ def _store_people(conn: sqlite3.Connection, ids: list[int], batch: PeopleBatch) 
         for k, name in enumerate(names):
             cells = values[:, k, :3]
             present = np.flatnonzero(~np.all(np.isnan(cells), axis=1))
+            # zip's tuples, column by column: no Python frame per row
             conn.executemany(
                 f"INSERT INTO {QUERY_TABLES[table][name]} VALUES (?, ?, ?, ?)",
-                (
-                    (i, *row)
-                    for i, row in zip(id_array[present].tolist(), _nullable(cells[present]))
-                ),
+                zip(id_array[present].tolist(), *_nullable(cells[present].T)),
             )
     if batch.extra_girth:
         conn.executemany(
