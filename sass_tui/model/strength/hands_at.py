@@ -72,6 +72,7 @@ MAX_EVALUATIONS = 40
 # hip_y, shoulder_y where Newton's method starts; the next where one fails
 STARTS_DEG = ((30.0, 30.0), (0.0, 60.0), (90.0, 100.0))
 MAX_STEP_DEG = 20.0
+HELD_DEG = 0.01  # an angle this near its limit is held there
 
 
 @dataclass(frozen=True)
@@ -227,7 +228,15 @@ def _squat(
         stance = balance(body, hand_forces(body, loads))
         return solved, np.append(_reach_of(body), cop_ahead(stance, body)) - target
 
-    best = _from_starts(figure, SQUAT_AXES, posed, SQUAT_STARTS_DEG)
+    hip_limit = _range(figure, "hip_y")[1]
+
+    def hips_at_limit(found: Found) -> bool:
+        # a start that ends with the hips held at their flexion limit wants
+        # them further: every start did so (e.g. the 50th-percentile woman
+        # at H 40 cm, V 30 cm), so the fallbacks below are tried at once
+        return found[2][("left", "hip_y")] >= hip_limit - HELD_DEG
+
+    best = _from_starts(figure, SQUAT_AXES, posed, SQUAT_STARTS_DEG, give_up=hips_at_limit)
     if best[0] <= REACHED_M:
         return best[2]
     # No such squat within the joints' limits: the hips at their flexion
@@ -235,7 +244,6 @@ def _squat(
     # the knees straight (a place high enough for a stoop); the body leaning
     # at the ankles as it stands, within the ankles' range
     reached = {axis: best[2][("left", axis)] for axis in SQUAT_AXES}
-    hip_limit = _range(figure, "hip_y")[1]
     held_ways = (
         ({**angles, **_both("hip_y", hip_limit)}, ("shoulder_y", "knee_y")),
         ({**angles, **_both("knee_y", 0.0)}, SOLVED_AXES),
@@ -303,9 +311,11 @@ def _from_starts(
     axes: Sequence[str],
     posed: Callable[[npt.NDArray[np.float64]], Residual],
     starts: Sequence[Sequence[float]],
+    give_up: Callable[[Found], bool] | None = None,
 ) -> Found:
     """Newton's method on `axes`, within the figure's joint limits, from each
-    start in turn until one reaches: the nearest found."""
+    start in turn until one reaches, or one that does not meets `give_up`:
+    the nearest found."""
     ranges = [_range(figure, axis) for axis in axes]
     low = np.array([r[0] for r in ranges])
     high = np.array([r[1] for r in ranges])
@@ -314,7 +324,7 @@ def _from_starts(
         found = _newton(posed, np.clip(np.array(start), low, high), low, high)
         if best is None or found[0] < best[0]:
             best = found
-        if best[0] <= REACHED_M:
+        if best[0] <= REACHED_M or (give_up is not None and give_up(found)):
             break
     assert best is not None
     return best
