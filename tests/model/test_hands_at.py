@@ -17,6 +17,7 @@ from hypothesis import strategies as st
 from sass_tui.cli import main
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.errors import SassError
+from sass_tui.model.strength import hands_at
 from sass_tui.model.strength.hand_position import body_h_v
 from sass_tui.model.strength.hands_at import (
     HandsAt,
@@ -234,6 +235,29 @@ def test_the_squat_bends_the_knees_as_far_as_quiet_standing_balance_allows(figur
     # the lean stopped at the ankles' dorsiflexion limit, short of that balance
     ankle_high = min(joint_limit_range(figure, side, "ankle_y")[1] for side in ("left", "right"))
     assert lean == pytest.approx(ankle_high)
+
+
+def test_the_squat_search_stops_at_the_first_start_that_holds_the_hips_at_their_limit(
+    figures, monkeypatch
+):
+    """The 50th-percentile woman at H 40 cm, V 30 cm wants her hips past
+    their flexion limit from every start: the first start's 40 poses, not
+    each start's (122 before), and the hip-held fallback answers the same."""
+    poses = []
+    real_pose = hands_at.pose_figure
+
+    def counted(*args, **kwargs):
+        poses.append(1)
+        return real_pose(*args, **kwargs)
+
+    monkeypatch.setattr(hands_at, "pose_figure", counted)
+    angles = solve_hands_at(figures["female"], HandsAt(0.4, 0.3, "squat"), {}, BOXES)
+    assert len(poses) <= hands_at.MAX_EVALUATIONS + 2
+    hip_limit = joint_limit_range(figures["female"], "left", "hip_y")[1]
+    assert angles[("left", "hip_y")] == pytest.approx(hip_limit)
+    assert body_h_v(pose_task(figures["female"], angles, BOXES)[0]) == pytest.approx(
+        (0.4, 0.3), abs=0.002
+    )
 
 
 def test_sass_task_squat_reports_its_knees_and_ankles(capsys):
