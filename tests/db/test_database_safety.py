@@ -19,6 +19,7 @@ from pathlib import Path
 import pytest
 
 from sass_tui.cli import main
+from sass_tui.db.engine.dialect import writing
 from sass_tui.db.engine.schema import (
     SCHEMA_VERSION,
     DatabaseError,
@@ -179,14 +180,19 @@ def test_a_missing_table_is_refused(db_path):
         connect(db_path)
 
 
-def test_a_damaged_database_refuses_writes(db_path, tmp_path):
+def _scribble_over_the_person_table(db_path: Path) -> None:
+    """Another program writes over the person table's first page."""
     raw = sqlite3.connect(db_path)
     page_size = raw.execute("PRAGMA page_size").fetchone()[0]
     root = raw.execute("SELECT rootpage FROM sqlite_master WHERE name = 'person'").fetchone()[0]
     raw.close()
-    with db_path.open("r+b") as handle:  # scribble over the person table's first page
+    with db_path.open("r+b") as handle:
         handle.seek((root - 1) * page_size + 8)
         handle.write(b"\xff" * 64)
+
+
+def test_a_damaged_database_refuses_writes(db_path, tmp_path):
+    _scribble_over_the_person_table(db_path)
     before = db_path.read_bytes()
     conn = connect(db_path)
     try:
@@ -197,6 +203,46 @@ def test_a_damaged_database_refuses_writes(db_path, tmp_path):
     assert db_path.read_bytes() == before
     with pytest.raises(DatabaseError, match="damaged"):
         create_default_database(db_path, replace=True)
+    assert db_path.read_bytes() == before
+
+
+def test_a_file_found_whole_is_read_through_again_only_once_something_changed_it(db_path, tmp_path):
+    """The first write of a process reads the whole file (PRAGMA quick_check);
+    its next writes do not while the file is as that process left it.  Once
+    another program has written to it, the next write reads it through
+    again, and refuses it damaged."""
+    checks: list[str] = []
+
+    def opened() -> sqlite3.Connection:
+        conn = connect(db_path)
+        conn.set_trace_callback(lambda sql: checks.append(sql) if "quick_check" in sql else None)
+        return conn
+
+    conn = opened()
+    try:
+        for k in range(3):
+            with writing(conn):
+                conn.execute("INSERT OR REPLACE INTO meta VALUES (?, 'x')", (f"test_{k}",))
+    finally:
+        conn.close()
+    assert len(checks) == 1
+    # the other program's write falls in a later tick of the file system's
+    # clock than the last write's (a file's times are a few ms coarse)
+    written = db_path.stat().st_mtime_ns
+    tick = tmp_path / "tick"
+    tick.touch()
+    while tick.stat().st_mtime_ns <= written:
+        tick.touch()
+    _scribble_over_the_person_table(db_path)
+    before = db_path.read_bytes()
+    conn = opened()  # a new connection: SQLite's own page cache holds the old pages
+    try:
+        with pytest.raises(DatabaseError, match="damaged"):
+            with writing(conn):
+                conn.execute("INSERT OR REPLACE INTO meta VALUES ('test_3', 'x')")
+    finally:
+        conn.close()
+    assert len(checks) == 2
     assert db_path.read_bytes() == before
 
 

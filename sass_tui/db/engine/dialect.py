@@ -12,7 +12,7 @@ from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 from typing import Any
 
-from sass_tui.db.engine.schema import check_writable, transaction
+from sass_tui.db.engine.schema import check_writable, note_written, transaction
 from sass_tui.db.query.query_tree import Dialect, placeholder
 
 # pg_advisory_xact_lock key of sass's writers (db/engine/postgres.py): "SASS" in ASCII.
@@ -67,6 +67,7 @@ def writing(conn: Any) -> Iterator[Any]:
         check_writable(conn)
         with transaction(conn):
             yield conn
+        note_written(conn)
         return
     # Read-only (sass serve --read-only) is left to the server: it refuses the
     # first change (db/engine/postgres.py), and the transaction rolls back.

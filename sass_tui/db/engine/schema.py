@@ -526,11 +526,34 @@ def recreate_schema(conn: sqlite3.Connection) -> None:
     _create_tables(conn)
 
 
+# The files this process found whole, by path: (device, inode, size,
+# modification time) as they were then.  The check reads the whole file
+# (0.15-0.25 s for the default database, more at scale), so a file in the
+# same state is not read through again; a change by any other program or
+# process shows in its size or time and is checked again.  A write of this
+# process's own to a file it checked leaves it whole (`note_written`).
+_FOUND_WHOLE: dict[str, tuple[int, int, int, int]] = {}
+_FOUND_WHOLE_KEPT = 16  # files remembered at most
+
+
+def _file_state(where: str) -> tuple[int, int, int, int] | None:
+    try:
+        status = os.stat(where)
+    except OSError:  # an in-memory database, or no file there
+        return None
+    return (status.st_dev, status.st_ino, status.st_size, status.st_mtime_ns)
+
+
 def check_writable(conn: sqlite3.Connection, path: str | Path | None = None) -> None:
     """Refuse to write to a damaged database (`PRAGMA quick_check`, the
-    integrity check without the index cross-check: O(size), ~0.1 s for ANSUR II)."""
+    integrity check without the index cross-check: O(size), ~0.1 s for ANSUR
+    II), unless this process found the file whole and nothing changed it since."""
     where = path if path is not None else _db_file(conn)
     _check_not_read_only(Path(where))
+    key = os.path.realpath(where)
+    state = _file_state(key)
+    if state is not None and _FOUND_WHOLE.get(key) == state:
+        return
     try:
         result = [row[0] for row in conn.execute("PRAGMA quick_check(5)")]
     except sqlite3.DatabaseError as exc:
@@ -540,6 +563,23 @@ def check_writable(conn: sqlite3.Connection, path: str | Path | None = None) -> 
             f"{where}: the database is damaged ({'; '.join(result)}); nothing written. "
             "Move it away and run `sass db init` for a new one"
         )
+    if state is not None:
+        _FOUND_WHOLE.pop(key, None)
+        _FOUND_WHOLE[key] = state
+        while len(_FOUND_WHOLE) > _FOUND_WHOLE_KEPT:
+            del _FOUND_WHOLE[next(iter(_FOUND_WHOLE))]
+
+
+def note_written(conn: sqlite3.Connection) -> None:
+    """After a write transaction of this process's own has committed: a file
+    found whole before it is whole as it is now."""
+    key = os.path.realpath(_db_file(conn))
+    if key in _FOUND_WHOLE:
+        state = _file_state(key)
+        if state is None:
+            del _FOUND_WHOLE[key]
+        else:
+            _FOUND_WHOLE[key] = state
 
 
 def _check_not_read_only(path: Path) -> None:
