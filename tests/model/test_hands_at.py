@@ -20,6 +20,8 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.strength import hands_at
 from sass_tui.model.strength.hand_position import body_h_v
 from sass_tui.model.strength.hands_at import (
+    STOOPING_WORDS,
+    STRAIGHT_KNEES_DEG,
     HandsAt,
     parse_hands_at,
     posture_of,
@@ -268,6 +270,27 @@ def test_sass_task_squat_reports_its_knees_and_ankles(capsys):
     assert set(shown["solved"]["women"]) == {"hip_y", "shoulder_y", "knee_y", "ankle_y"}
     assert main(["task", "hands=30,50,squat", "--gender", "male"]) == 0
     assert "V 50.0 cm by a squat" in capsys.readouterr().out
+
+
+def test_a_squat_that_ends_with_the_knees_all_but_straight_is_said_to_be_a_stoop(capsys):
+    """At V 10 cm with 10 kg in each hand no squat with the heels down
+    reaches for the 50th-percentile woman: the fallback folds her hips to
+    their limit with the knees 0.6 deg from straight, which the answer says,
+    in text and JSON (the Task panel's words: tests/ui/test_task_panel.py);
+    the man still squats."""
+    argv = ["task", "hands=30cm,10cm,squat", "--left-load", "10 kg", "--right-load", "10 kg"]
+    assert main([*argv, "--format", "json"]) == 0
+    shown = json.loads(capsys.readouterr().out)["hands_at"]
+    assert shown["stooping"] == ["women"]
+    assert shown["solved"]["women"]["knee_y"] < STRAIGHT_KNEES_DEG
+    assert shown["solved"]["men"]["knee_y"] > STRAIGHT_KNEES_DEG
+    assert main(argv) == 0
+    (note,) = [line for line in capsys.readouterr().out.splitlines() if "by a squat" in line]
+    women, men = note.split("; men ")
+    assert STOOPING_WORDS in women and STOOPING_WORDS not in men
+    # a squat that bends the knees is a squat
+    assert main(["task", "hands=30cm,50cm,squat", *argv[2:], "--format", "json"]) == 0
+    assert json.loads(capsys.readouterr().out)["hands_at"]["stooping"] == []
 
 
 @pytest.mark.parametrize("h_v", [(0.5, 0.6), (0.6, 0.1), (0.2, 0.05), (0.15, 0.4)])

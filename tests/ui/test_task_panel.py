@@ -19,8 +19,9 @@ from sass_tui.model.body.posed_outline import posed_outline
 from sass_tui.model.body.posture import parse_angles
 from sass_tui.model.errors import SassError
 from sass_tui.model.strength.arm_force_field import arm_force
+from sass_tui.model.strength.hands_at import STOOPING_WORDS, HandsAt, Reaching
 from sass_tui.model.strength.published_strength import GENDER_WORDS
-from sass_tui.model.strength.task import hand_load, pose_task
+from sass_tui.model.strength.task import Reference, assess_task, hand_load, load_of, pose_task
 from sass_tui.ui.spreadsheet.strength_page import TASK_PANEL_LINES
 from sass_tui.ui.spreadsheet.task_panel import TaskPanel
 from sass_tui.ui.spreadsheet.task_words import PEOPLE, answer_lines, parse_people, strength_posture
@@ -371,3 +372,21 @@ def test_the_posture_cell_takes_where_the_hands_grasp(app_at, drive):
             assert panel.posture == ("hands=40cm,30cm,squat",)
 
     drive(scenario())
+
+
+def test_the_panel_says_which_figure_stoops_when_asked_to_squat():
+    """The Task panel's words name the figure whose squat ended with the
+    knees all but straight (the woman at H 30 cm, V 10 cm with 10 kg in
+    each hand), as `sass task` does, and not the man, who squats."""
+    boxes = [load_of("left", "10 kg"), load_of("right", "10 kg")]
+    answer = assess_task(
+        [
+            Reference("women", Figure.default("female"), None),
+            Reference("men", Figure.default("male"), None),
+        ],
+        Reaching(HandsAt(0.3, 0.1, "squat"), {}, tuple(boxes)),
+        boxes,
+    )
+    (note,) = [line for line in answer_lines(answer) if line.startswith("Squat to")]
+    women, men = note.split("; men ")
+    assert STOOPING_WORDS in women and STOOPING_WORDS not in men

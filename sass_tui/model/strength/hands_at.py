@@ -73,6 +73,12 @@ MAX_EVALUATIONS = 40
 STARTS_DEG = ((30.0, 30.0), (0.0, 60.0), (90.0, 100.0))
 MAX_STEP_DEG = 20.0
 HELD_DEG = 0.01  # an angle this near its limit is held there
+# A squat whose knees end this near straight is a stoop in all but name.
+STRAIGHT_KNEES_DEG = 10.0
+STOOPING_WORDS = (
+    f"knees within {STRAIGHT_KNEES_DEG:g} deg of straight: in effect a stoop; a deeper squat "
+    "needs the hips past their flexion limit or the heels up, which sass does not model"
+)
 
 
 @dataclass(frozen=True)
@@ -419,24 +425,38 @@ def solved_angles(axes: Sequence[str], angles: Angles) -> dict[str, float]:
     return {axis: angles[("left", axis)] for axis in axes}
 
 
+def stooping(solved_axes: Sequence[str], postures: dict[str, Angles]) -> list[str]:
+    """Who was asked to squat (the knees among the solved axes) but stoops:
+    the knees within STRAIGHT_KNEES_DEG of straight, where no squat with the
+    heels down reaches the place within the joints' limits and the fallback
+    folds the hips to their limit."""
+    if "knee_y" not in solved_axes:
+        return []
+    return [who for who, a in postures.items() if a[("left", "knee_y")] < STRAIGHT_KNEES_DEG]
+
+
 def hands_at_note(goal: HandsAt, postures: dict[str, Angles]) -> str:
     """'hands at H 40.0 cm, V 30.0 cm by a stoop: women hip_y=113.2 ...; men ...'."""
+    stooped = stooping(goal.solved_axes, postures)
     each = "; ".join(
         f"{who} "
         + " ".join(
             f"{axis}={deg:.1f}" for axis, deg in solved_angles(goal.solved_axes, angles).items()
         )
+        + (f" ({STOOPING_WORDS})" if who in stooped else "")
         for who, angles in postures.items()
     )
     return f"hands at {goal.words()} (the grasp, from the ankles' midpoint): {each}"
 
 
 def hands_at_json(goal: HandsAt, postures: dict[str, Angles]) -> dict[str, object]:
-    """{"h", "v": {"value", "unit"}, "by": "stoop"|"squat", "solved": {who: {axis: deg}}}."""
+    """{"h", "v": {"value", "unit"}, "by": "stoop"|"squat", "stooping": [who],
+    "solved": {who: {axis: deg}}}."""
     return {
         "h": {"value": round(goal.h * 100, 1), "unit": "cm"},
         "v": {"value": round(goal.v * 100, 1), "unit": "cm"},
         "by": goal.by,
+        "stooping": stooping(goal.solved_axes, postures),
         "solved": {
             who: {
                 axis: round(deg, 1) for axis, deg in solved_angles(goal.solved_axes, angles).items()
