@@ -450,6 +450,7 @@ class _Terminal(io.StringIO):
         return True
 
 
+@pytest.mark.slow
 def test_building_reports_progress(tmp_path):
     calls: list[tuple[int, int]] = []
     create_default_database(tmp_path / "p.db", progress=lambda d, t: calls.append((d, t)))

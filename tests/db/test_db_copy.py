@@ -98,6 +98,7 @@ def test_after_db_copy_a_fresh_query_process_counts_from_the_copy(db_path, tmp_p
     assert f"already up to date: {everyone} people" in again.stdout
 
 
+@pytest.mark.slow
 def test_db_copy_follows_a_write_then_the_fresh_process_agrees(db_path, tmp_path):
     cache = tmp_path / "cache"
     assert sass(cache, "db", "copy", "--db", str(db_path), QUERY).returncode == 0

@@ -179,6 +179,7 @@ def test_copy_counts_and_lists_as_sqlite(db, text):
     assert_same(db, text)
 
 
+@pytest.mark.slow
 def test_the_queries_reach_every_group(db):
     """Guard against a vacuous comparison: most queries match some people, not all."""
     counts = [assert_same(db, text) for text in QUERIES]
@@ -219,6 +220,7 @@ def queries(draw, conn: sqlite3.Connection, depth: int = 0) -> str:
     return f"{field} {op} {value!r}"
 
 
+@pytest.mark.slow
 def test_random_queries_agree(generated_db_file, tmp_path_factory, monkeypatch):
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
     monkeypatch.setattr(copy_file, "BACKGROUND", False)

@@ -154,6 +154,7 @@ def test_the_weighted_count(made, sample, capsys):
     assert "target civ" in weighted
 
 
+@pytest.mark.slow
 def test_the_weighted_family(made, sample, tmp_path, capsys):
     capsys.readouterr()
     argv = [

@@ -192,6 +192,7 @@ def predictor(csv_values):
 FIELDS = ["stature", "mass", "measure.sittingheight"]
 
 
+@pytest.mark.slow
 def test_a_written_family_reads_back_and_counts_right(csv_values, predictor, ansur_dir, tmp_path):
     women = np.array([g == "female" for g in csv_values.genders])
     columns = [csv_values.fields.index(f) for f in FIELDS]

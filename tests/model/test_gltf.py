@@ -173,6 +173,7 @@ def test_percentile_figures_pass_the_khronos_validator(tmp_path, validator):
         assert (report["numErrors"], report["numWarnings"]) == (0, 0), report
 
 
+@pytest.mark.slow
 def test_ansur_people_pass_the_validator_and_match_their_hanim_export(tmp_path, validator, people):
     """Ten ANSUR II people: 0 errors and 0 warnings; read back, the mesh is
     the person's stature tall (CSV, mm) within 5 mm, the body the person's

@@ -94,6 +94,7 @@ def test_the_strength_group_selects_a_data_set_by_name(app_at, drive):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_a_real_persons_curve_uses_their_own_age_and_is_marked_predicted(app_at, db, drive):
     from sass_tui.db.engine.schema import connect
     from sass_tui.db.people.individual import fetch_individual

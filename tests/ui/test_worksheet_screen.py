@@ -161,6 +161,7 @@ def test_ctrl_s_saves_again_to_the_same_file(drive, app_at, tmp_path):
     drive(scenario())
 
 
+@pytest.mark.slow
 def test_the_palette_runs_save_as_and_open(drive, app_at):
     async def scenario():
         async with app_at(LARGE) as (app, pilot):
