@@ -435,17 +435,25 @@ def stooping(solved_axes: Sequence[str], postures: dict[str, Angles]) -> list[st
     return [who for who, a in postures.items() if a[("left", "knee_y")] < STRAIGHT_KNEES_DEG]
 
 
-def hands_at_note(goal: HandsAt, postures: dict[str, Angles]) -> str:
-    """'hands at H 40.0 cm, V 30.0 cm by a stoop: women hip_y=113.2 ...; men ...'."""
-    stooped = stooping(goal.solved_axes, postures)
-    each = "; ".join(
+def postures_words(
+    solved_axes: Sequence[str], postures: dict[str, Angles], between: str = "="
+) -> str:
+    """'women hip_y=113.2 shoulder_y=60.1; men ...': each figure's solved
+    angles (`between` axis and degrees), and the words of one that stoops."""
+    stooped = stooping(solved_axes, postures)
+    return "; ".join(
         f"{who} "
         + " ".join(
-            f"{axis}={deg:.1f}" for axis, deg in solved_angles(goal.solved_axes, angles).items()
+            f"{axis}{between}{deg:.1f}" for axis, deg in solved_angles(solved_axes, angles).items()
         )
         + (f" ({STOOPING_WORDS})" if who in stooped else "")
         for who, angles in postures.items()
     )
+
+
+def hands_at_note(goal: HandsAt, postures: dict[str, Angles]) -> str:
+    """'hands at H 40.0 cm, V 30.0 cm by a stoop: women hip_y=113.2 ...; men ...'."""
+    each = postures_words(goal.solved_axes, postures)
     return f"hands at {goal.words()} (the grasp, from the ankles' midpoint): {each}"
 
 

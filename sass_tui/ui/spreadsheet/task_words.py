@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 
-from sass_tui.model.strength.hands_at import STOOPING_WORDS, solved_angles, stooping
+from sass_tui.model.strength.hands_at import postures_words
 from sass_tui.model.strength.task import UNCOVERED, HandLoad, TaskAnswer, TaskError
 from sass_tui.model.vocabulary import JOINT_AXES
 
@@ -147,17 +147,8 @@ def answer_parts(answer: TaskAnswer) -> tuple[list[str], list[str]]:
         notes.append(f"Cautions: {'; '.join(answer.cautions)}")
     if answer.postures:  # hands=H,V: the stoop or squat each figure found
         squat = "knee_y" in answer.solved_axes
-        stooped = stooping(answer.solved_axes, answer.postures)
         notes.append(
             f"{'Squat' if squat else 'Stoop'} to the hands' place: "
-            + "; ".join(
-                f"{who} "
-                + " ".join(
-                    f"{axis} {deg:.1f}"
-                    for axis, deg in solved_angles(answer.solved_axes, a).items()
-                )
-                + (f" ({STOOPING_WORDS})" if who in stooped else "")
-                for who, a in answer.postures.items()
-            )
+            + postures_words(answer.solved_axes, answer.postures, between=" ")
         )
     return lines, notes
