@@ -6,6 +6,7 @@ import os
 import shutil
 from pathlib import Path
 
+import _bytecode  # noqa: F401  (first: sass's modules get bytecode; tests/_bytecode.py)
 import pytest
 from _paths import ANSUR, REPORT
 from hypothesis import settings
