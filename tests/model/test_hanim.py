@@ -681,3 +681,13 @@ def test_the_skin_is_the_gltf_body_bound_to_the_same_joints(tmp_path):
     for vertex in range(0, len(skin), 97):
         moving = {order[j] for j in np.nonzero(weights[vertex] > 0)[0]}
         assert moving <= {gltf_names[j] for j in slots[vertex]}
+
+
+def test_no_number_is_written_as_a_negative_zero():
+    # The skin's midline points lie within 1e-12 m of x = 0, on either side as
+    # the section solver happens to land: written "0.0000", never "-0.0000".
+    from sass_tui.model.files.hanim_x3d import render_hanim
+
+    words = render_hanim(Figure.default()).replace('"', " ").split()
+    zeros = [w for w in words if w.lstrip("-").strip("0") == "."]
+    assert zeros and not [w for w in zeros if w.startswith("-")]

@@ -136,6 +136,12 @@ class BodySurface:
 # --- sections ------------------------------------------------------------------
 
 
+# _solve's stop: relative to the target perimeter (a tape reads to 1 mm in 1 m)
+# or to the bracket, far below what the files print (0.1 mm); a ceiling that
+# bisection would meet only if the steps stalled.
+_SOLVE_TOLERANCE = 1e-12
+_SOLVE_STEPS = 100
+
 _ANGLES = np.linspace(0.0, 2 * math.pi, AROUND, endpoint=False)
 _COS, _SIN = np.cos(_ANGLES), np.sin(_ANGLES)
 
@@ -154,13 +160,30 @@ def perimeter(a: float, b: float, n: float) -> float:
 
 
 def _solve(lower: float, upper: float, f: Callable[[float], float], target: float) -> float:
-    """Bisection for f(x) = target on [lower, upper], f increasing."""
-    for _ in range(40):
-        middle = (lower + upper) / 2
-        if f(middle) < target:
-            lower = middle
+    """x with f(x) = target on [lower, upper], f increasing (the end nearer
+    the target when it lies outside f's range there).  Regula falsi with the
+    Illinois step (Dowell & Jarratt 1971): the root stays bracketed as in
+    bisection, in 6-10 evaluations of the perimeter where 40 halvings took 40
+    (a body's surface solves 140 sections; docs/performance.md)."""
+    f_lower, f_upper = f(lower) - target, f(upper) - target
+    if f_lower >= 0 or f_upper <= 0:
+        return lower if f_lower >= 0 else upper
+    kept = 0  # the end kept last step: -1 lower, +1 upper
+    for _ in range(_SOLVE_STEPS):
+        x = (lower * f_upper - upper * f_lower) / (f_upper - f_lower)
+        f_x = f(x) - target
+        if f_x < 0:
+            lower, f_lower = x, f_x
+            if kept == 1:  # the upper end kept twice running: halve its weight
+                f_upper /= 2
+            kept = 1
         else:
-            upper = middle
+            upper, f_upper = x, f_x
+            if kept == -1:
+                f_lower /= 2
+            kept = -1
+        if abs(f_x) <= _SOLVE_TOLERANCE * abs(target) or upper - lower <= _SOLVE_TOLERANCE * upper:
+            return x
     return (lower + upper) / 2
 
 

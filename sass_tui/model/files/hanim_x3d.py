@@ -142,7 +142,10 @@ def _numbers(values: np.ndarray, decimals: int) -> str:
     """Many numbers at once (the skin's coordinates), `decimals` after the point."""
     if not np.isfinite(values).all():
         raise HAnimError("cannot write the humanoid: a skin coordinate is not a number")
-    numbers = values.ravel().tolist()
+    # a value that prints as zero is written 0, never "-0.0000": the skin's
+    # midline points lie within 1e-12 m of x = 0 on either side
+    printed_zero = np.abs(values) < 0.5 * 10.0**-decimals
+    numbers = np.where(printed_zero, 0.0, values).ravel().tolist()
     # one %-format over the whole list: half the time of formatting each number
     return " ".join([f"%.{decimals}f"] * len(numbers)) % tuple(numbers)
 
