@@ -163,8 +163,8 @@ def _solve(lower: float, upper: float, f: Callable[[float], float], target: floa
     """x with f(x) = target on [lower, upper], f increasing (the end nearer
     the target when it lies outside f's range there).  Regula falsi with the
     Illinois step (Dowell & Jarratt 1971): the root stays bracketed as in
-    bisection, in 6-10 evaluations of the perimeter where 40 halvings took 40
-    (a body's surface solves 140 sections; docs/performance.md)."""
+    bisection, in 9-13 perimeters (both ends included) where 40 halvings took
+    40 (docs/performance.md, "The lofted body")."""
     f_lower, f_upper = f(lower) - target, f(upper) - target
     if f_lower >= 0 or f_upper <= 0:
         return lower if f_lower >= 0 else upper
