@@ -33,6 +33,7 @@ from sass_tui.model.strength.niosh import (
     Point,
     assess_lift,
     composite_lifting_index,
+    index_words,
     lifting_index,
     source,
     special_frequency,
@@ -203,12 +204,6 @@ def lift_json(answer: LiftAnswer) -> dict[str, Any]:
     }
 
 
-def index_text(value: float | None) -> str:
-    if value is None:
-        return "-"
-    return "no load (RWL 0)" if math.isinf(value) else f"{value:.2f}"
-
-
 def lift_text(answer: LiftAnswer) -> list[str]:
     lift, of = answer.lift, answer.lift.of
     ends = [("origin", answer.origin)]
@@ -229,12 +224,16 @@ def lift_text(answer: LiftAnswer) -> list[str]:
     if lift.load is not None:
         lines.append(
             f"{'LI':12}"
-            + "".join(f"{index_text(lifting_index(lift.load, end.rwl)):>13}" for _, end in ends)
+            + "".join(f"{index_words(lifting_index(lift.load, end.rwl)):>13}" for _, end in ends)
         )
+        index = lifting_index(lift.load, answer.rwl)
         lines.append(
-            f"Lifting index of {lift.load:g} {of.load_unit}: "
-            f"{index_text(lifting_index(lift.load, answer.rwl))} "
-            "(above 1: an increased risk of lifting-related low back pain for some workers)"
+            f"Lifting index of {lift.load:g} {of.load_unit}: {index_words(index)} "
+            + (
+                "(the RWL is 0: a limit below leaves no load acceptable at this place)"
+                if index is not None and math.isinf(index)
+                else "(above 1: an increased risk of lifting-related low back pain for some workers)"
+            )
         )
     for name, end in ends:
         for limit in end.limits:
@@ -302,10 +301,10 @@ def job_text(answer: CompositeAnswer, of: Form, duration: str) -> list[str]:
     for i, task in enumerate(answer.tasks, 1):
         lines.append(
             f"{i:>3} {printable(task.name)[:20]:20} {task.f:>7.2f} {task.firwl:>9.2f} {task.strwl:>9.2f} "
-            f"{index_text(task.fili):>7} {index_text(task.stli):>7}"
+            f"{index_words(task.fili):>7} {index_words(task.stli):>7}"
         )
     lines.append(
-        f"Composite lifting index: {index_text(answer.cli)} (FIRWL, STRWL in {of.load_unit})"
+        f"Composite lifting index: {index_words(answer.cli)} (FIRWL, STRWL in {of.load_unit})"
     )
     lines.append(f"Source: {source()}")
     return lines

@@ -113,3 +113,21 @@ def test_bad_input_is_one_line(capsys, argv, message):
     assert main(["niosh", *argv]) == 2
     err = capsys.readouterr().err
     assert message in err and "Traceback" not in err and len(err.strip().splitlines()) == 1
+
+
+def test_a_place_no_load_is_acceptable_at_says_so(capsys):
+    # H 70 cm is past the manual's 63 cm: HM 0, the RWL 0, the index of any
+    # load infinite; said as such, never as a number or "above 1"
+    args = ["--h", "70cm", "--v", "60cm", "--d", "30cm", "--f", "1", "--load", "5kg"]
+    assert main(["niosh", *args]) == 0
+    text = capsys.readouterr().out
+    table = {line.split()[0]: line.split()[1:] for line in text.splitlines() if line.strip()}
+    assert table["HM"] == ["0.000"] and table["LI"] == ["infinite"]
+    said = next(line for line in text.splitlines() if line.startswith("Lifting index of 5 kg"))
+    assert said == (
+        "Lifting index of 5 kg: infinite (the RWL is 0: a limit below leaves no load "
+        "acceptable at this place)"
+    )
+    assert "H 70 cm beyond 63 cm: HM 0" in text
+    answer = niosh(capsys, *args)
+    assert answer["rwl"]["value"] == 0 and answer["lifting_index"] is None

@@ -236,3 +236,11 @@ def test_task_indices_use_the_heaviest_load_for_fili():
     assert indices.firwl == pytest.approx(23.0)  # fair coupling at V 75 cm: CM 1
     assert indices.fili == pytest.approx(15 / indices.firwl)
     assert indices.stli == pytest.approx(10 / (indices.firwl * 0.75))
+
+
+def test_an_index_is_printed_with_two_decimals_or_in_words():
+    from sass_tui.model.strength.niosh import index_words
+
+    assert index_words(1.6155) == "1.62"
+    assert index_words(None) == "-"
+    assert index_words(lifting_index(5.0, 0.0)) == "infinite"

@@ -16,6 +16,7 @@ Plain floats, no numpy: `sass niosh` starts in the time of a bare Python.
 
 from __future__ import annotations
 
+import math
 from typing import Any, NamedTuple
 
 from sass_tui.model import shipped
@@ -264,6 +265,15 @@ def lifting_index(load: float | None, rwl: float) -> float | None:
     if rwl <= 0:
         return float("inf") if load > 0 else 0.0
     return load / rwl
+
+
+def index_words(value: float | None) -> str:
+    """A lifting index as sass prints it: two decimals, "-" without a load,
+    "infinite" where the RWL is 0 (a limit of the manual, H beyond 63 cm, V
+    beyond 175 cm, F beyond Table 5, leaves no load acceptable)."""
+    if value is None:
+        return "-"
+    return "infinite" if math.isinf(value) else f"{value:.2f}"
 
 
 class LiftAnswer(NamedTuple):

@@ -39,7 +39,7 @@ def handling_line(figure: Figure, angles: Angles, loads: Iterable[HandLoad]) -> 
         rwl = niosh.assess_lift(lift).rwl
         index = niosh.lifting_index(kg, rwl)
         said = [f"Lifting {kg:.1f} kg, hands H {h * 100:.0f} V {v * 100:.0f} cm: NIOSH LI "]
-        said.append("no load (RWL 0)" if index is None or rwl <= 0 else f"{index:.2f}")
+        said.append(niosh.index_words(index) + (" (RWL 0)" if rwl <= 0 else ""))
         inputs = liberty_mutual.Inputs("lift", v, 0.25, 1.0, h)
         shares = []
         for sex, word in (("female", "women"), ("male", "men")):
