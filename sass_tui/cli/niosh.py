@@ -283,6 +283,7 @@ def job_json(answer: CompositeAnswer, of: Form, duration: str) -> dict[str, Any]
                 "strwl": {"value": number(task.strwl, 3), "unit": of.load_unit},
                 "fili": number(task.fili),
                 "stli": number(task.stli),
+                "limits": list(task.limits),
             }
             for task in answer.tasks
         ],
@@ -296,13 +297,15 @@ def job_text(answer: CompositeAnswer, of: Form, duration: str) -> list[str]:
     lines = [
         f"Multi-task job ({'metric form' if of.name == 'metric' else 'U.S. form'}, "
         f"{duration} duration), tasks by decreasing STLI:",
-        f"{'#':>3} {'task':20} {'F/min':>7} {'FIRWL':>9} {'STRWL':>9} {'FILI':>7} {'STLI':>7}",
+        f"{'#':>3} {'task':20} {'F/min':>7} {'FIRWL':>9} {'STRWL':>9} {'FILI':>9} {'STLI':>9}",
     ]
     for i, task in enumerate(answer.tasks, 1):
         lines.append(
             f"{i:>3} {printable(task.name)[:20]:20} {task.f:>7.2f} {task.firwl:>9.2f} {task.strwl:>9.2f} "
-            f"{index_words(task.fili):>7} {index_words(task.stli):>7}"
+            f"{index_words(task.fili):>9} {index_words(task.stli):>9}"
         )
+    for task in answer.tasks:
+        lines += [f"Limit (task {printable(task.name)}): {limit}" for limit in task.limits]
     lines.append(
         f"Composite lifting index: {index_words(answer.cli)} (FIRWL, STRWL in {of.load_unit})"
     )

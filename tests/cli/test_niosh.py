@@ -131,3 +131,23 @@ def test_a_place_no_load_is_acceptable_at_says_so(capsys):
     assert "H 70 cm beyond 63 cm: HM 0" in text
     answer = niosh(capsys, *args)
     assert answer["rwl"]["value"] == 0 and answer["lifting_index"] is None
+
+
+def test_a_job_names_the_limit_that_left_a_task_no_load(capsys, tmp_path):
+    job = tmp_path / "job.csv"
+    job.write_text(
+        "name,load,h,v,d,f,coupling\nfar,10,70cm,75cm,25cm,1,good\nnear,10,25cm,75cm,25cm,2,good\n",
+        encoding="utf-8",
+    )
+    assert main(["niosh", "--tasks", str(job)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    header = next(line for line in lines if line.lstrip().startswith("#"))
+    far = next(line for line in lines if " far " in line)
+    assert far.split()[-2:] == ["infinite", "infinite"]
+    assert len(far) == len(header)  # the words fit their columns
+    assert "Limit (task far): H 70 cm beyond 63 cm: HM 0" in lines
+    assert not [line for line in lines if line.startswith("Limit (task near)")]
+    answer = niosh(capsys, "--tasks", str(job))
+    limits = {task["name"]: task["limits"] for task in answer["tasks"]}
+    assert limits == {"far": ["H 70 cm beyond 63 cm: HM 0"], "near": []}
+    assert answer["composite_lifting_index"] is None

@@ -292,6 +292,14 @@ class LiftAnswer(NamedTuple):
         ends = [self.origin] + ([self.destination] if self.destination else [])
         return min(end.frequency_independent for end in ends)
 
+    @property
+    def limits(self) -> list[str]:
+        """The limits applied at the origin, then those only the destination adds."""
+        found = list(self.origin.limits)
+        if self.destination is not None:
+            found += [limit for limit in self.destination.limits if limit not in found]
+        return found
+
 
 def assess_lift(lift: Lift) -> LiftAnswer:
     destination = None if lift.destination is None else limit_at(lift, lift.destination)
@@ -308,6 +316,7 @@ class TaskIndices(NamedTuple):
     strwl: float
     fili: float  # heaviest load / FIRWL
     stli: float  # average load / STRWL
+    limits: tuple[str, ...] = ()  # the manual's limits applied, at either end
 
 
 class CompositeAnswer(NamedTuple):
@@ -330,6 +339,7 @@ def task_indices(name: str, lift: Lift) -> TaskIndices:
         strwl,
         _index(heaviest, firwl),
         _index(lift.load, strwl),
+        tuple(answer.limits),
     )
 
 
