@@ -35,7 +35,6 @@ from sass_tui.model.strength.liberty_mutual import (
 from sass_tui.model.units import BASE_FACTORS, parse_quantity, quantity_unit
 from sass_tui.model.vocabulary import GENDERS
 
-STANDARD_GRAVITY = 9.80665  # N per kgf
 WORDS = {"female": "women", "male": "men"}
 
 
@@ -108,12 +107,12 @@ def run(args: argparse.Namespace) -> int:
 
 
 def parse_load(text: str, task: str) -> float:
-    """The load in kg (kgf for push and pull: a force in N or lbf is converted)."""
+    """The load in kg (kgf for push and pull: a force in N, lbf or kgf is converted)."""
     unit = quantity_unit(text)
     if unit is not None and BASE_FACTORS[unit][0] == "force":
         if task not in ("push", "pull"):
             raise HandlingError(f"--load {text}: {task} takes a mass (kg, lb), not a force")
-        value = parse_quantity(text, "N") / STANDARD_GRAVITY
+        value = parse_quantity(text, "kgf")
     else:
         value = parse_quantity(text, "kg")
     if value < 0:

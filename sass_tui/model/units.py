@@ -30,6 +30,9 @@ class UnitError(ValueError, SassError):
     """A value or unit the user typed cannot be used here."""
 
 
+# Standard gravity (m/s^2, the 3rd CGPM, 1901): the newtons of a kilogram-force.
+STANDARD_GRAVITY = 9.80665
+
 # Unit name -> (dimension, factor to the SI unit of that dimension).  The
 # values are tests/model/units.txt's definitions written out; a test compares
 # each pair's factor with pint's.
@@ -51,6 +54,8 @@ BASE_FACTORS: dict[str, tuple[str, float]] = {
     # Forces: the grip table of HFDS 2003 exhibit 14.5.2.1 (model/strength/published_grip.py).
     "N": ("force", 1.0),
     "lbf": ("force", 4.4482216152605),
+    # The Liberty Mutual equations' push and pull forces (model/strength/liberty_mutual.py).
+    "kgf": ("force", STANDARD_GRAVITY),
 }
 
 
@@ -136,6 +141,10 @@ _ALIASES = {
     "lbf": "lbf",
     "pound-force": "lbf",
     "pounds-force": "lbf",
+    "kgf": "kgf",
+    "kilogram-force": "kgf",
+    "kilograms-force": "kgf",
+    "kp": "kgf",
     "deg/s": "deg/s",
     "°/s": "deg/s",
     "rad/s": "rad/s",
@@ -153,6 +162,7 @@ DISPLAY = {
     "N_m": "N-m",
     "N": "N",
     "lbf": "lbf",
+    "kgf": "kgf",
     "mm": "mm",
     "m": "m",
     "ft": "ft",

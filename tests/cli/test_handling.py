@@ -48,6 +48,20 @@ def test_push_and_pull_are_initial_and_sustained_and_take_a_force(capsys):
     assert men["initial"]["percent_capable"] == pytest.approx(share, abs=0.05)
 
 
+@pytest.mark.parametrize("typed", ["10.197162kgf", "10.197162 kp", "22.480894lbf"])
+def test_a_push_load_in_the_papers_own_kgf_or_in_lbf_is_the_same_force(capsys, typed):
+    # 100 N = 100 / 9.80665 kgf = 22.480894 lbf: the same share accept it
+    in_newtons = handling(capsys, "push", "--v", "1.2", "--d", "20", "--load", "100N")
+    typed_so = handling(capsys, "push", "--v", "1.2", "--d", "20", "--load", typed)
+    assert typed_so["load"]["unit"] == "kgf"
+    assert typed_so["load"]["value"] == pytest.approx(100 / 9.80665, abs=1e-4)
+    for sex in ("female", "male"):
+        for phase in ("initial", "sustained"):
+            assert typed_so[sex][phase]["percent_capable"] == pytest.approx(
+                in_newtons[sex][phase]["percent_capable"], abs=1e-3
+            )
+
+
 def test_outside_the_papers_ranges_is_refused_for_that_sex(capsys):
     answer = handling(capsys, "lift", "--h", "0.22", "--v", "1", "--d", "0.5")
     assert "mal" in answer["female"]
@@ -111,6 +125,7 @@ def test_virtual_population_is_the_weighted_mix_of_women_and_men(capsys, people_
         (["lift", "--v", "1", "--d", "0.5"], "lift needs --h"),
         (["carry", "--v", "1"], "give --d"),
         (["lift", *LIFT, "--load", "100N"], "takes a mass"),
+        (["carry", "--v", "1", "--d", "5", "--load", "10kgf"], "takes a mass"),
         (["lift", *LIFT, "--virtual", "nhanes-2017-2020"], "give it"),
         (["lift", "shoulder_y=45", "--h", "0.3", "--d", "0.5"], "leave out --h"),
         (["lift", "--h", "-0.3", "--v", "1", "--d", "0.5"], "--h -0.3 is negative"),

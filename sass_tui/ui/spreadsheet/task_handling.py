@@ -17,8 +17,7 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.strength import liberty_mutual, niosh
 from sass_tui.model.strength.hand_position import body_h_v
 from sass_tui.model.strength.task import HandLoad
-
-STANDARD_GRAVITY = 9.80665
+from sass_tui.model.units import STANDARD_GRAVITY
 
 
 def lifted_kg(loads: Iterable[HandLoad]) -> float:
