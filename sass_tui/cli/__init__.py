@@ -14,6 +14,7 @@ import argparse
 import errno
 import gc
 import os
+import re
 import sys
 from types import ModuleType
 from typing import Any, NamedTuple, cast
@@ -179,6 +180,16 @@ class _Parser(argparse.ArgumentParser):
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         kwargs.setdefault("formatter_class", _HelpFormatter)
         super().__init__(*args, **kwargs)
+        # A value that starts as a negative number does ("--a -30deg", "--load
+        # -3kg") is the option's value, not an option: argparse's own matcher
+        # takes bare numbers only, and "-30deg" failed with "expected one
+        # argument".  No sass option looks like a number.  argparse's private
+        # attribute (Python 3.11-3.13): tests/cli/test_negative_values.py
+        # fails if it stops being read.
+        self._negative_number_matcher = _NEGATIVE_VALUE
+
+
+_NEGATIVE_VALUE = re.compile(r"^-\.?\d")
 
 
 class _VersionAction(argparse.Action):
