@@ -136,9 +136,9 @@ class BodySurface:
 # --- sections ------------------------------------------------------------------
 
 
-# _solve's stop: relative to the target perimeter (a tape reads to 1 mm in 1 m)
-# or to the bracket, far below what the files print (0.1 mm); a ceiling that
-# bisection would meet only if the steps stalled.
+# _solve stops when the perimeter is within this share of its target, or the
+# bracket within this share of its end: far below the 0.1 mm the files print.
+# The step ceiling is met only if the steps stalled.
 _SOLVE_TOLERANCE = 1e-12
 _SOLVE_STEPS = 100
 
