@@ -115,6 +115,7 @@ def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
         help="open the spreadsheet on a worksheet saved with Save (ctrl+s) or Save As (S)",
     )
     commands = cast(SubParsers, parser.add_subparsers(dest="command", metavar="COMMAND"))
+    parser.verbs = commands
     chosen = None if argv is None else _verb_named(argv)
     names = {verb.name for verb in VERBS}
     for verb in VERBS:
@@ -180,6 +181,7 @@ class _Parser(argparse.ArgumentParser):
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         kwargs.setdefault("formatter_class", _HelpFormatter)
         super().__init__(*args, **kwargs)
+        self.verbs: SubParsers | None = None  # the verbs' parsers (build_parser's)
         # A value that starts as a negative number does ("--a -30deg", "--load
         # -3kg") is the option's value, not an option: argparse's own matcher
         # takes bare numbers only, and "-30deg" failed with "expected one
@@ -246,7 +248,10 @@ def main(argv: list[str] | None = None) -> int:
         )
         return 2
     parser = build_parser(words)
-    args = parser.parse_args(words)
+    args, unknown = parser.parse_known_args(words)
+    if unknown:  # said by the verb's parser: its usage, `sass niosh: error: ...`
+        verbs = parser.verbs.choices if isinstance(parser, _Parser) and parser.verbs else {}
+        verbs.get(args.command, parser).error(f"unrecognized arguments: {' '.join(unknown)}")
     if args.command is None:
         return run_tui(args.db, args.open)
     return run_verb(args)

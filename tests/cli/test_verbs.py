@@ -92,3 +92,22 @@ def test_every_verb_has_its_test_file_here():
     # tests/cli mirrors sass_tui/cli: where a newcomer looks for a verb's tests.
     here = Path(__file__).parent
     assert [verb.name for verb in VERBS if not (here / f"test_{verb.module}.py").is_file()] == []
+
+
+@pytest.mark.parametrize(
+    ("argv", "who"),
+    [
+        (["niosh", "--h", "40cm", "--f", "2", "--virtual", "nhanes-2017-2020"], "sass niosh"),
+        (["fig", "--bogus"], "sass fig"),
+        (["--bogus"], "sass"),
+    ],
+)
+def test_an_unknown_option_is_refused_by_the_verb_it_was_given_to(capsys, argv, who):
+    from sass_tui.cli import main
+
+    with pytest.raises(SystemExit) as stop:
+        main(argv)
+    assert stop.value.code == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"usage: {who} ")
+    assert f"\n{who}: error: unrecognized arguments: " in err
