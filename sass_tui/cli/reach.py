@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -87,7 +88,7 @@ def register(commands: SubParsers) -> None:
         "--point",
         metavar="X,Y,Z",
         help="a point in the body's frame (+X left, +Y up, +Z forward; cm unless a unit "
-        "follows, e.g. '0.4,1.3,0.6 m'; a negative X as --point=-20,130,60): reached, or missed "
+        "follows, e.g. '0.4,1.3,0.6 m'; a negative X: --point -20,130,60): reached, or missed "
         "by how much",
     )
     reach.add_argument(
@@ -107,8 +108,29 @@ def _sides(hand: str) -> tuple[str, ...]:
     return SIDES if hand == "both" else (hand,)
 
 
+# A point typed without a unit whose every coordinate is under this many cm is
+# most likely metres (a hand reaching the floor between the feet is rare).
+METRES_LIKELY_CM = 3.0
+
+
+def metres_hint(text: str, point: np.ndarray) -> str | None:
+    """A note when --point was typed without a unit and reads as a point within
+    a few cm of the floor between the feet: metres were probably meant."""
+    if any(ch.isalpha() or ch in "\"'" for ch in text):
+        return None
+    if float(np.abs(point).max()) * 100 >= METRES_LIKELY_CM:
+        return None
+    return (
+        f"sass reach: note: --point {text.strip()} is read in cm (no unit typed); "
+        f"metres are written '{text.strip()} m'"
+    )
+
+
 def run(args: argparse.Namespace) -> int:
     point = parse_point(args.point) if args.point is not None else None
+    hint = None if point is None else metres_hint(args.point, point)
+    if hint is not None:
+        print(hint, file=sys.stderr)
     output = None
     if args.output is not None:
         output = check_path(user_path(args.output))

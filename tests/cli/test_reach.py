@@ -313,3 +313,24 @@ def test_bad_options_are_one_line_errors(argv, words, capsys, tmp_path, monkeypa
 def _rows(ansur_dir: Path, gender: str) -> list[dict[str, str]]:
     with open(ansur_dir / f"ANSUR_II_{gender.upper()}_Public.csv", encoding="latin-1") as handle:
         return [{k.lower(): v for k, v in row.items()} for row in csv.DictReader(handle)]
+
+
+@pytest.mark.parametrize(
+    ("typed", "noted"),
+    [
+        ("0.5,1.4,0.3", True),  # metres meant: half a centimetre ahead, 1.4 cm up
+        ("0.5,1.4,0.3 m", False),
+        ("40,140,60", False),
+        ("-20,130,60", False),  # a negative X as its own word, no `=` needed
+    ],
+)
+def test_a_point_that_reads_as_metres_without_its_unit_gets_a_note(capsys, typed, noted):
+    assert main(["reach", "--point", typed, "--format", "json"]) == 0
+    captured = capsys.readouterr()
+    answer, err = json.loads(captured.out), captured.err
+    assert ("is read in cm (no unit typed)" in err) is noted
+    if noted:
+        assert f"metres are written '{typed} m'" in err
+    assert answer["point"]["value"][0] == pytest.approx(
+        float(typed.split(",")[0]) * (100 if typed.endswith("m") else 1)
+    )
