@@ -92,7 +92,7 @@ def verb_module(verb: Verb) -> ModuleType:
     return sys.modules[module]
 
 
-def build_parser(argv: list[str] | None = None) -> argparse.ArgumentParser:
+def build_parser(argv: list[str] | None = None) -> _Parser:
     """The parser; given the command line, only the verb it names is built
     (with no verb, or before -h, every verb is listed from VERBS with its help,
     no verb's module imported: `sass --help` is whole), since argparse costs
@@ -250,7 +250,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = build_parser(words)
     args, unknown = parser.parse_known_args(words)
     if unknown:  # said by the verb's parser: its usage, `sass niosh: error: ...`
-        verbs = parser.verbs.choices if isinstance(parser, _Parser) and parser.verbs else {}
+        verbs = parser.verbs.choices if parser.verbs is not None else {}
         verbs.get(args.command, parser).error(f"unrecognized arguments: {' '.join(unknown)}")
     if args.command is None:
         return run_tui(args.db, args.open)
