@@ -248,18 +248,38 @@ class PostgresConnection:
                 raise self.error(exc) from None
 
     def copy_rows(
-        self, table: str, columns: Sequence[str], rows: Iterator[Sequence[object]]
+        self,
+        table: str,
+        columns: Sequence[str],
+        rows: Iterable[Sequence[object]],
+        types: Sequence[str] | None = None,
     ) -> int:
-        """COPY rows into a table (inside the caller's transaction); how many."""
+        """COPY rows into a table (inside the caller's transaction); how many.
+        With the columns' PostgreSQL `types`, in COPY's binary format: a double
+        goes as its 8 bytes instead of being printed and parsed again (a
+        `sass db init`'s copy of 5 million values: 5.7 s -> 2.2 s)."""
         count = 0
+        statement = f"COPY {table} ({', '.join(columns)}) FROM STDIN" + (
+            "" if types is None else " (FORMAT BINARY)"
+        )
         try:
             with self._conn.cursor() as cursor:
-                with cursor.copy(f"COPY {table} ({', '.join(columns)}) FROM STDIN") as copy:
+                with cursor.copy(statement) as copy:
+                    if types is not None:
+                        copy.set_types(types)
                     for row in rows:
                         copy.write_row(row)
                         count += 1
         except self._psycopg.Error as exc:
             raise self.error(exc) from None
+        except (TypeError, ValueError, OverflowError) as exc:
+            # The binary format's dumpers check each value's Python type
+            # where the text format left it to the server to refuse.
+            raise DatabaseError(
+                f"{shown(self.url)}: row {count + 1} of {table} has a value its column "
+                f"cannot hold ({', '.join(columns)} as {', '.join(types or ())}): {exc}; "
+                "nothing was stored"
+            ) from None
         return count
 
     def close(self) -> None:
@@ -495,17 +515,24 @@ def copy_people(staging: sqlite3.Connection, conn: PostgresConnection) -> int:
     if stored:
         for table in _tables_of_people():
             conn.execute(f"DELETE FROM {table} WHERE id_num = ANY(%s)", (stored,))
+    # The ids as stored, joined to each table's rows by SQLite: the rows go
+    # from its cursor to the COPY as they are, without a Python step a row.
+    staging.execute(
+        "CREATE TEMP TABLE IF NOT EXISTS stored_id (staged INTEGER PRIMARY KEY, stored INTEGER)"
+    )
+    staging.execute("DELETE FROM stored_id")
+    staging.executemany("INSERT INTO stored_id VALUES (?, ?)", new_id.items())
     for table in ("person", *_tables_of_people()[:-1]):
-        columns = [r[1] for r in staging.execute(f"PRAGMA table_info({table})")]
-        at = columns.index("id_num")
-
-        def rows(table: str = table, columns: list[str] = columns, at: int = at) -> Iterator[Any]:
-            for row in staging.execute(f"SELECT {', '.join(columns)} FROM {table}"):
-                values = list(row)
-                values[at] = new_id[values[at]]
-                yield values
-
-        conn.copy_rows(table, columns, rows())
+        info = staging.execute(f"PRAGMA table_info({table})").fetchall()
+        columns = [name for _cid, name, *_rest in info]
+        selected = ", ".join(
+            "stored_id.stored" if name == "id_num" else f"{table}.{name}" for name in columns
+        )
+        rows = staging.execute(
+            f"SELECT {selected} FROM {table} JOIN stored_id ON stored_id.staged = {table}.id_num"
+        )
+        types = [_TYPES[declared.upper()].lower() for _cid, _name, declared, *_rest in info]
+        conn.copy_rows(table, columns, rows, types)
     _copy_targets(staging, conn, new_id)
     return len(staged)
 
