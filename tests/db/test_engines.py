@@ -212,11 +212,11 @@ from sass_tui.db.engine import postgres
 from sass_tui.cli import main
 copy_rows = postgres.PostgresConnection.copy_rows
 calls = []
-def copy_then_die(self, table, columns, rows):
+def copy_then_die(self, table, columns, rows, types=None):
     calls.append(table)
     if len(calls) == 3:  # person and a table already sent, inside the transaction
         os.kill(os.getpid(), signal.SIGKILL)
-    return copy_rows(self, table, columns, rows)
+    return copy_rows(self, table, columns, rows, types)
 postgres.PostgresConnection.copy_rows = copy_then_die
 sys.exit(main(sys.argv[1:]))
 """
