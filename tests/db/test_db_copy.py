@@ -178,3 +178,50 @@ def test_db_copy_of_a_query_the_copy_cannot_answer_says_so(db_path, capsys):
     assert "the column copy cannot answer this query" in err
     assert "not ASCII compared without regard to case" in err  # not the SQL it compiles to
     assert "COLLATE" not in err and "counts it with SQLite" in err
+
+
+def test_copies_are_attached_to_one_duckdb_and_detached_when_dropped(
+    db_path, tmp_path, monkeypatch
+):
+    """Each copy built or opened is ATTACHed to the process's one in-memory
+    DuckDB (db/query/column_copy.py): no database instance of its own (25 ms
+    and a thread pool apiece), and none left attached once it is dropped."""
+    import duckdb
+
+    from sass_tui.db.people.replacing import forget_column_copy
+    from sass_tui.db.query import column_copy
+
+    instances: list[object] = []
+    real_connect = duckdb.connect
+
+    def counted(*args, **kwargs):
+        instances.append(args)
+        return real_connect(*args, **kwargs)
+
+    monkeypatch.setattr(duckdb, "connect", counted)
+    monkeypatch.setattr(column_copy, "_INSTANCE", {})
+    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(copy_file, "BACKGROUND", False)
+    monkeypatch.setattr(copy_file, "CACHE_DIR", tmp_path / "columns")
+    copy_file.OPEN_COPIES.clear()
+    conn = connect(db_path)
+    try:
+        for text in (QUERY, "girth.neck.y > 20 cm", "mass > 80 kg AND gender = female"):
+            assert accelerator.count(conn, compile_query(text)) == sqlite_count(db_path, text)
+            assert accelerator.last_answer == "copy"
+        with conn:
+            conn.execute("DELETE FROM person WHERE id_num IN (SELECT id_num FROM person LIMIT 3)")
+        assert accelerator.count(conn, compile_query(QUERY)) == sqlite_count(db_path, QUERY)
+        assert instances == [()]  # one in-memory instance for builds and opens alike
+        duck = column_copy._INSTANCE["duckdb"]
+
+        def attached() -> list[str]:
+            rows = duck.execute("SELECT database_name FROM duckdb_databases()").fetchall()
+            return sorted(name for (name,) in rows if name.startswith(("copy_", "building_")))
+
+        assert len(attached()) == 1  # the copy in use; the older ones and the builds detached
+        forget_column_copy(db_path.resolve())
+        assert attached() == []
+    finally:
+        conn.close()
+        copy_file.OPEN_COPIES.clear()

@@ -198,5 +198,5 @@ def forget_column_copy(path: Path) -> None:
     with LOCK:
         held = copy_file.OPEN_COPIES.pop(path, None)
         if held is not None:
-            held.duck.close()
+            held.close()
     shutil.rmtree(cache_folder(path), ignore_errors=True)
