@@ -9,8 +9,8 @@ import pytest
 
 pytest.importorskip("psycopg")
 
-from sass_tui.db.engine.postgres import PostgresConnection  # noqa: E402
-from sass_tui.db.engine.schema import DatabaseError  # noqa: E402
+from sass_tui.db.engine.postgres import PostgresConnection
+from sass_tui.db.engine.schema import DatabaseError
 
 TYPES = ["bigint", "text", "double precision", "bytea"]
 ROWS = [
