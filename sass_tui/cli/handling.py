@@ -32,7 +32,7 @@ from sass_tui.model.strength.liberty_mutual import (
     source,
     variants,
 )
-from sass_tui.model.units import BASE_FACTORS, parse_quantity, quantity_unit
+from sass_tui.model.units import BASE_FACTORS, UnitError, parse_quantity, per_minute, quantity_unit
 from sass_tui.model.vocabulary import GENDERS
 
 WORDS = {"female": "women", "male": "men"}
@@ -65,7 +65,9 @@ def register(commands: SubParsers) -> None:
         metavar="LEN",
         help="lift, lower: the vertical distance; push, pull, carry: the distance moved (m)",
     )
-    handling.add_argument("--f", metavar="N", default="1", help="actions per minute (default 1)")
+    handling.add_argument(
+        "--f", metavar="N", default="1", help="actions per minute, or N/h, N/s (default 1)"
+    )
     handling.add_argument(
         "--load", metavar="LOAD", help="the load (kg, lb) or for push and pull the force (N, lbf)"
     )
@@ -135,9 +137,9 @@ def task_inputs(args: argparse.Namespace) -> dict[str, Inputs]:
     if d is None:
         raise HandlingError("give --d, the distance the load is moved")
     try:
-        f = float(args.f)
-    except ValueError:
-        raise HandlingError(f"--f {args.f!r}: expected actions per minute") from None
+        f = per_minute(args.f)
+    except UnitError as exc:
+        raise HandlingError(f"--f: {exc}") from None
     sexes = [args.gender] if args.gender else list(SEXES)
     if from_figure(args):
         typed = [o for o, v in (("--h", args.h), ("--v", args.v)) if v is not None]

@@ -67,7 +67,9 @@ def register(commands: SubParsers) -> None:
         help="vertical travel distance D (default: |V at the destination - V at the origin|)",
     )
     niosh.add_argument("--a", metavar="DEG", default="0", help="asymmetry angle (deg, default 0)")
-    niosh.add_argument("--f", metavar="N", help="lifts per minute (below 0.2 counts as 0.2)")
+    niosh.add_argument(
+        "--f", metavar="N", help="lifts per minute, or N/h, N/s (below 0.2/min counts as 0.2)"
+    )
     niosh.add_argument(
         "--lifting-minutes",
         metavar="M",

@@ -233,6 +233,37 @@ MAX_QUANTITY_LENGTH = 200
 LARGEST_NUMBER = 1e15
 
 
+# How many minutes each time unit a rate may be given per holds: the NIOSH
+# manual's F (Table 5) and Potvin et al.'s F are per minute, and an observer
+# often counts per hour ("120/h") or times one action in seconds.
+_MINUTES_IN = {"min": 1.0, "minute": 1.0, "h": 60.0, "hr": 60.0, "hour": 60.0}
+_MINUTES_IN |= {"s": 1 / 60, "sec": 1 / 60, "second": 1 / 60}
+_RATE = re.compile(r"^\s*([^\s/]+?)\s*(?:(?:/|\bper\b)\s*([A-Za-z]+))?\s*$")
+
+
+def per_minute(text: str) -> float:
+    """Actions per minute from "2", "2/min", "120 / h", "1 per s" or "0.5 per minute";
+    a bare number is per minute.  Negative, non-finite or unreadable rates
+    raise UnitError."""
+    match = _RATE.match(text) if len(text) <= MAX_QUANTITY_LENGTH else None
+    if not match:
+        raise UnitError(
+            f"expected a number per minute (2, 2/min, 120/h), got {quoted(text.strip())}"
+        )
+    value = finite_number(match.group(1))
+    if value < 0:
+        raise UnitError(f"{quoted(text.strip())} is negative: expected 0 or more")
+    if match.group(2) is None:
+        return value
+    unit = match.group(2).lower()
+    minutes = _MINUTES_IN.get(unit, _MINUTES_IN.get(unit[:-1]) if unit.endswith("s") else None)
+    if minutes is None:
+        raise UnitError(
+            f"{quoted(text.strip())}: per {quoted(match.group(2))} is no time unit (min, h or s)"
+        )
+    return value / minutes
+
+
 def finite_number(text: str) -> float:
     """float(text) for a number that is finite and at most LARGEST_NUMBER in size.
 

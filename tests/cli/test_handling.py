@@ -129,9 +129,20 @@ def test_virtual_population_is_the_weighted_mix_of_women_and_men(capsys, people_
         (["lift", *LIFT, "--virtual", "nhanes-2017-2020"], "give it"),
         (["lift", "shoulder_y=45", "--h", "0.3", "--d", "0.5"], "leave out --h"),
         (["lift", "--h", "-0.3", "--v", "1", "--d", "0.5"], "--h -0.3 is negative"),
+        (["lift", "--h", "0.3", "--v", "1", "--d", "0.5", "--f=nan"], "--f: 'nan' is not a usable"),
+        (["lift", "--h", "0.3", "--v", "1", "--d", "0.5", "--f=-1"], "--f: '-1' is negative"),
+        (["lift", "--h", "0.3", "--v", "1", "--d", "0.5", "--f", "2/day"], "no time unit"),
     ],
 )
 def test_bad_input_is_one_line(capsys, argv, message):
     assert main(["handling", *argv]) == 2
     err = capsys.readouterr().err
     assert message in err and "Traceback" not in err
+
+
+def test_a_frequency_may_be_counted_per_hour(capsys):
+    """Potvin et al.'s F is per minute: `--f 60/h` is `--f 1`."""
+    per_minute = handling(capsys, "lift", *LIFT, "--load", "10kg")
+    rest = [a for a in LIFT if a not in ("--f", "1")]
+    per_hour = handling(capsys, "lift", *rest, "--f", "60/h", "--load", "10kg")
+    assert per_hour["female"] == per_minute["female"] and per_hour["male"] == per_minute["male"]

@@ -101,7 +101,7 @@ def test_a_posture_file_gives_the_origin(capsys, tmp_path):
         (["shoulder_y=60", "--v", "60cm", "--d", "20", "--f", "1"], "leave out --v"),
         (["--h", "40cm", "--v", "60cm", "--f", "1"], "give the vertical travel distance"),
         (["--h", "40cm", "--v", "60cm", "--d", "1kg", "--f", "1"], "not a unit of length"),
-        (["--h", "40cm", "--v", "60cm", "--d", "20", "--f", "x"], "expected lifts per minute"),
+        (["--h", "40cm", "--v", "60cm", "--d", "20", "--f", "x"], "lifts per minute: expected a number"),
         (["--h", "40cm", "--v", "60cm", "--dest-v", "90cm", "--f", "1"], "both --dest-h"),
         (["--h", "40cm", "--v", "60cm", "--d", "20", "--f", "20", "--lifting-minutes", "5"],
          "at most 15 lifts"),
@@ -151,3 +151,13 @@ def test_a_job_names_the_limit_that_left_a_task_no_load(capsys, tmp_path):
     limits = {task["name"]: task["limits"] for task in answer["tasks"]}
     assert limits == {"far": ["H 70 cm beyond 63 cm: HM 0"], "near": []}
     assert answer["composite_lifting_index"] is None
+
+
+def test_a_frequency_may_be_counted_per_hour_or_timed_in_seconds(capsys):
+    """F is per minute (Table 5); `--f 120/h` and `--f 2/min` are the same lift."""
+    args = ["--h", "40cm", "--v", "60cm", "--d", "80cm", "--load", "12kg", "--format", "json"]
+    answers = []
+    for rate in ("2", "2/min", "120/h", "120 per hour", "0.0333333333333333/s"):
+        assert main(["niosh", *args, "--f", rate]) == 0
+        answers.append(json.loads(capsys.readouterr().out)["origin"]["multipliers"]["FM"])
+    assert answers == [answers[0]] * len(answers) and answers[0] < 1

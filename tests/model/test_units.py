@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import subprocess
 import sys
 from functools import cache
@@ -9,6 +10,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import GIRTH
@@ -20,6 +23,7 @@ from sass_tui.model.units import (
     convert,
     finite_number,
     parse_quantity,
+    per_minute,
 )
 
 
@@ -149,3 +153,56 @@ def test_common_conversions_do_not_import_pint():
 def test_a_pasted_page_is_not_a_quantity():
     with pytest.raises(UnitError, match="at most 200"):
         parse_quantity("12in" * 1000, "cm")
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("2", 2.0),
+        ("2/min", 2.0),
+        (" 120 / h ", 2.0),
+        ("30/hr", 0.5),
+        ("60 per hour", 1.0),
+        ("1 per s", 60.0),
+        ("0.5 per minute", 0.5),
+        ("3/mins", 3.0),
+        ("0", 0.0),
+    ],
+)
+def test_a_rate_is_read_per_minute(text, expected):
+    assert per_minute(text) == pytest.approx(expected)
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("-1", "is negative"),
+        ("nan", "not a usable number"),
+        ("1e400/h", "not a usable number"),
+        ("2/day", "'day' is no time unit"),
+        ("2 apples", "expected a number per minute"),
+        ("/min", "expected a number per minute"),
+        ("", "expected a number per minute"),
+    ],
+)
+def test_a_rate_that_is_no_rate_is_refused(text, message):
+    with pytest.raises(UnitError, match=message):
+        per_minute(text)
+
+
+@given(
+    st.floats(0, 1e6, allow_nan=False),
+    st.sampled_from([("", 1.0), ("/min", 1.0), ("/h", 60.0), (" per hour", 60.0), ("/s", 1 / 60)]),
+)
+def test_any_rate_with_its_unit_is_that_many_per_unit(value, unit):
+    spelled, minutes = unit
+    assert per_minute(f"{value!r}{spelled}") == pytest.approx(value / minutes, rel=1e-12)
+
+
+@given(st.text(max_size=40))
+def test_any_text_is_a_rate_or_a_unit_error(text):
+    try:
+        rate = per_minute(text)
+    except UnitError:
+        return
+    assert math.isfinite(rate) and rate >= 0

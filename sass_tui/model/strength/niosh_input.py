@@ -13,7 +13,13 @@ from collections.abc import Iterable
 
 from sass_tui.model.strength.niosh import COUPLINGS, Form, NioshError, form
 from sass_tui.model.text import quoted
-from sass_tui.model.units import BASE_FACTORS, UnitError, parse_quantity, quantity_unit
+from sass_tui.model.units import (
+    BASE_FACTORS,
+    UnitError,
+    parse_quantity,
+    per_minute,
+    quantity_unit,
+)
 
 US_LENGTHS = ("in", "ft")
 
@@ -51,13 +57,11 @@ def angle(text: str) -> float:
 
 
 def frequency(text: str) -> float:
+    """Lifts per minute: "2", "2/min", "120/h" (model/units.py's per_minute)."""
     try:
-        value = float(text)
-    except ValueError:
-        raise NioshError(f"expected lifts per minute, got {quoted(text)}") from None
-    if not 0 <= value < 1e6:
-        raise NioshError(f"lifts per minute {quoted(text)}: expected 0 or more")
-    return value
+        return per_minute(text)
+    except UnitError as exc:
+        raise NioshError(f"lifts per minute: {exc}") from None
 
 
 def coupling(text: str) -> str:
