@@ -113,6 +113,19 @@ def test_fixed_limits_count_and_the_table_says_how(people_db, capsys):
 
 
 @pytest.mark.parametrize(
+    ("split", "says"),
+    [(None, "split equally"), ("1,1", "split equally"), ("1,0", "as --split gives"),
+     ("3,1", "as --split gives")],
+)  # fmt: skip
+def test_the_table_says_how_the_exclusion_was_split(people_db, capsys, split, says):
+    argv = ["--db", str(people_db), "design", "--accommodate", "95"]
+    argv += [] if split is None else ["--split", split]
+    assert main([*argv, "stature <= ? AND mass <= ?"]) == 0
+    solved = [line for line in capsys.readouterr().out.splitlines() if line.startswith("Solved")]
+    assert len(solved) == 1 and says in solved[0]
+
+
+@pytest.mark.parametrize(
     ("limits", "says"),
     [
         ("gender = ?", "? is solved only"),

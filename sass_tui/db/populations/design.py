@@ -274,7 +274,7 @@ def format_design(result: Designed) -> str:
         "the weighted quantile"
         if len(solving) == 1 and sum(1 for s in result.solved if s is not None) == 1
         else "exclusion split "
-        + ("equally" if len(set(solving)) == 1 else "as --split gives")
+        + ("equally" if len(set(result.design.split)) == 1 else "as --split gives")
         + " between the limits with ?"
     )
     lines += [
