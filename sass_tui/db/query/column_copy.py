@@ -258,11 +258,16 @@ class CopyHeld:
     people: int
 
     def close(self) -> None:
-        try:
-            self.duck.execute(f"DETACH {self.alias}")
-        except duckdb.Error:  # pragma: no cover - attached by this object
-            pass
-        self.duck.close()
+        _detach(self.duck, self.alias)
+
+
+def _detach(duck: Any, alias: str) -> None:
+    """Detach a copy attached by `duck` (a cursor of the process's DuckDB) and close it."""
+    try:
+        duck.execute(f"DETACH {alias}")
+    except duckdb.Error:  # pragma: no cover - attached by this cursor
+        pass
+    duck.close()
 
 
 _BUILDS: dict[Path, threading.Thread] = {}
@@ -300,7 +305,7 @@ def _open_copy(path: Path) -> CopyHeld | None:
         key, refused, people = meta.fetchone() or ("", "", 0)
         names = [row[0] for row in duck.execute(f"DESCRIBE {alias}.people").fetchall()]
     except (duckdb.Error, TypeError, ValueError):
-        CopyHeld(stamp, duck, alias, (), frozenset(), frozenset(), 0).close()
+        _detach(duck, alias)
         return None
     held_columns = frozenset(
         tuple(name.split(".", 1)) for name in names if name != "id_num" and "." in name
