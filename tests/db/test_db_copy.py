@@ -74,6 +74,18 @@ def db_path(default_db_file, tmp_path) -> Path:
     return copy
 
 
+@pytest.fixture()
+def copy_in_process(tmp_path, monkeypatch):
+    """This process counts from the copy whatever the database's size, building
+    it in the caller into a private cache; no copy open when the test starts or ends."""
+    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
+    monkeypatch.setattr(copy_file, "BACKGROUND", False)
+    monkeypatch.setattr(copy_file, "CACHE_DIR", tmp_path / "columns")
+    copy_file.OPEN_COPIES.clear()
+    yield
+    copy_file.OPEN_COPIES.clear()
+
+
 def test_without_db_copy_a_fresh_query_process_counts_with_sqlite(db_path, tmp_path):
     """The problem: the background build dies with the one-shot process."""
     done = sass(tmp_path / "cache", "query", "--db", str(db_path), "--count", QUERY)
@@ -114,13 +126,9 @@ def test_db_copy_follows_a_write_then_the_fresh_process_agrees(db_path, tmp_path
     assert int(counted.stdout) == sqlite_count(db_path, QUERY)
 
 
-def test_a_loaded_copy_is_not_written_again(db_path, tmp_path, monkeypatch):
+def test_a_loaded_copy_is_not_written_again(db_path, copy_in_process):
     """A new process that loads the disk copy and counts leaves it as it is
     (it was rewritten whole, 140 MB at 5,000,000 people, by every process)."""
-    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
-    monkeypatch.setattr(copy_file, "BACKGROUND", False)
-    monkeypatch.setattr(copy_file, "CACHE_DIR", tmp_path / "columns")
-    copy_file.OPEN_COPIES.clear()
     conn = connect(db_path)
     try:
         done = accelerator.refresh(conn, accelerator.columns_named(compile_query(QUERY)))
@@ -132,7 +140,6 @@ def test_a_loaded_copy_is_not_written_again(db_path, tmp_path, monkeypatch):
         assert sorted(p.name for p in done.folder.iterdir()) == before
     finally:
         conn.close()
-        copy_file.OPEN_COPIES.clear()
 
 
 @pytest.mark.slow
@@ -181,7 +188,7 @@ def test_db_copy_of_a_query_the_copy_cannot_answer_says_so(db_path, capsys):
 
 
 def test_copies_are_attached_to_one_duckdb_and_detached_when_dropped(
-    db_path, tmp_path, monkeypatch
+    db_path, copy_in_process, monkeypatch
 ):
     """Each copy built or opened is ATTACHed to the process's one in-memory
     DuckDB (db/query/column_copy.py): no database instance of its own (25 ms
@@ -200,10 +207,6 @@ def test_copies_are_attached_to_one_duckdb_and_detached_when_dropped(
 
     monkeypatch.setattr(duckdb, "connect", counted)
     monkeypatch.setattr(column_copy, "_INSTANCE", {})
-    monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
-    monkeypatch.setattr(copy_file, "BACKGROUND", False)
-    monkeypatch.setattr(copy_file, "CACHE_DIR", tmp_path / "columns")
-    copy_file.OPEN_COPIES.clear()
     conn = connect(db_path)
     try:
         for text in (QUERY, "girth.neck.y > 20 cm", "mass > 80 kg AND gender = female"):
@@ -224,4 +227,3 @@ def test_copies_are_attached_to_one_duckdb_and_detached_when_dropped(
         assert attached() == []
     finally:
         conn.close()
-        copy_file.OPEN_COPIES.clear()
