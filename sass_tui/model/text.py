@@ -128,3 +128,78 @@ def quoted(text: str, limit: int = QUOTE_LIMIT, *, escape: bool = False) -> str:
     if len(text) <= limit:
         return repr(shown)
     return f"{shown + '…'!r} ({len(text):,} characters)"
+
+
+# --- a database address's password ------------------------------------------
+
+# RFC 3986 section 3.1 (the string module would cost a regular expression's compiling)
+_SCHEME_CHARACTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789+-.")
+# What urllib.parse.urlsplit drops from an address before reading it (WHATWG
+# URL: leading C0 controls and spaces, and every tab, CR and LF).
+_LEADING_DROPPED = "".join(map(chr, range(0x21)))
+_DROPPED = "\t\r\n"
+
+
+def _password_spans(address: str) -> tuple[str, list[tuple[int, int]]]:
+    """The address as urlsplit reads it, and where its passwords stand in
+    that text: the authority's (scheme://user:password@host/..., RFC 3986
+    section 3.2.1: the user information before the authority's last "@", the
+    password after its first ":"), then each `password=` parameter of the
+    query, which libpq's connection URIs take too (PostgreSQL manual, 34.1.1).
+    Reads text only: never raises, whatever the port or host is."""
+    text = address.lstrip(_LEADING_DROPPED)
+    for dropped in _DROPPED:
+        text = text.replace(dropped, "")
+    start = 0
+    scheme, colon, _ = text.partition(":")
+    if colon and scheme and scheme[0].isascii() and scheme[0].isalpha():
+        if set(scheme) <= _SCHEME_CHARACTERS:
+            start = len(scheme) + 1
+    spans: list[tuple[int, int]] = []
+    if not text.startswith("//", start):
+        return text, spans
+    authority_start = start + 2
+    authority_end = len(text)
+    for delimiter in "/?#":
+        found = text.find(delimiter, authority_start)
+        if found != -1:
+            authority_end = min(authority_end, found)
+    at = text.rfind("@", authority_start, authority_end)
+    if at != -1:
+        colon_at = text.find(":", authority_start, at)
+        if colon_at != -1 and colon_at + 1 < at:
+            spans.append((colon_at + 1, at))
+    fragment_at = text.find("#", authority_start)
+    query_end = len(text) if fragment_at == -1 else fragment_at
+    query_at = text.find("?", authority_start, query_end)
+    if query_at != -1:
+        position = query_at + 1
+        for parameter in text[query_at + 1 : query_end].split("&"):
+            key, equals, value = parameter.partition("=")
+            if equals and key == "password" and value:
+                spans.append((position + len(key) + 1, position + len(parameter)))
+            position += len(parameter) + 1
+    return text, spans
+
+
+def address_password(address: str) -> str:
+    """The password an address carries, '' if none: the authority's, as
+    urllib.parse.urlsplit(address).password reads it, else a `password=`
+    query parameter's.  Without urllib.parse and the ipaddress module it
+    brings (~3 ms of every command that reads its --db)."""
+    text, spans = _password_spans(address)
+    return text[spans[0][0] : spans[0][1]] if spans else ""
+
+
+def without_password(address: str) -> str:
+    """The address to show in a message: each password it carries (see
+    `address_password`) replaced by ***, the rest as typed."""
+    text, spans = _password_spans(address)
+    if not spans:
+        return address
+    pieces = []
+    last = 0
+    for start, end in spans:
+        pieces += [text[last:start], "***"]
+        last = end
+    return "".join(pieces) + text[last:]

@@ -91,3 +91,26 @@ def test_a_default_path_is_never_made_of_an_address(monkeypatch, capsys, tmp_pat
     assert main(["serve", "--port", "0", "--read-only"]) == 2
     assert "cannot reach the PostgreSQL server" in capsys.readouterr().err
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    ("address", "driver_says"),
+    [
+        # urllib.parse raised on both while the message was being made
+        ("postgresql://lab:s3cret@127.0.0.1:abc/sass", 'invalid integer value "abc"'),
+        ("postgresql://lab:s3cret@[::1/sass", "IPv6 host address"),
+        ("postgresql://lab@127.0.0.1:1/sass?password=s3cret", "127.0.0.1"),
+    ],
+)
+def test_an_address_the_driver_refuses_is_said_without_its_password(
+    capsys, tmp_path, monkeypatch, address, driver_says
+):
+    """The driver's own words (libpq quotes a URI it cannot read, password
+    and all) with the address shown as the message's start shows it."""
+    pytest.importorskip("psycopg")
+    monkeypatch.chdir(tmp_path)
+    assert main(["query", "--db", address, "stature > 1 m"]) == 2
+    err = capsys.readouterr().err
+    assert "cannot reach the PostgreSQL server" in err and driver_says in err, err
+    assert "s3cret" not in err and "***" in err and "Traceback" not in err
+    assert list(tmp_path.iterdir()) == []

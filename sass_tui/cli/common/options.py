@@ -10,7 +10,7 @@ import sys
 from typing import TypeAlias
 
 from sass_tui.model.errors import SassError
-from sass_tui.model.text import printable
+from sass_tui.model.text import address_password, printable
 from sass_tui.model.vocabulary import FIGURE_TYPES, GENDERS
 
 # What a verb's register() adds its parser to (argparse's class is generic only to type checkers).
@@ -41,33 +41,6 @@ def warn_of_a_password(args: argparse.Namespace) -> None:
     given = getattr(args, "db", None)
     if isinstance(given, str) and "://" in given and address_password(given):
         print(f"sass {getattr(args, 'command', '')}: {PASSWORD_IN_PS}", file=sys.stderr)
-
-
-# RFC 3986 section 3.1 (the string module would cost a regular expression's compiling)
-_SCHEME_CHARACTERS = frozenset("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789+-.")
-
-
-def address_password(address: str) -> str:
-    """The password of an address (scheme://user:password@host/...), '' if it
-    has none: urllib.parse.urlsplit(address).password or '', read as RFC 3986
-    section 3 and urlsplit do (the scheme, then "//" and the authority up to
-    the first "/", "?" or "#", the user information before its last "@"),
-    without urllib.parse and the ipaddress module it brings (~3 ms of every
-    command: each verb calls this on its --db)."""
-    text = address.lstrip("".join(map(chr, range(0x21))))
-    for unsafe in "\t\r\n":
-        text = text.replace(unsafe, "")
-    scheme, colon, rest = text.partition(":")
-    if colon and scheme and scheme[0].isascii() and scheme[0].isalpha():
-        if set(scheme) <= _SCHEME_CHARACTERS:
-            text = rest
-    if not text.startswith("//"):
-        return ""
-    authority = text[2:]
-    for delimiter in "/?#":
-        authority = authority.partition(delimiter)[0]
-    user_information, at, _ = authority.rpartition("@")
-    return user_information.partition(":")[2] if at else ""
 
 
 class WeightingArgumentError(ValueError, SassError):

@@ -1,13 +1,17 @@
 """What `--db` / $SASS_DB names: a SQLite file, or a PostgreSQL database by its
-address, and an address as shown to a user.  Imports only urllib.parse
-(which pathlib imports already), so the TUI's start (which must not import
-numpy) can tell the two apart, and a SQLite path need not import
+address, and an address as shown to a user.  Imports only the model's text
+module (no urllib.parse, no pathlib), so the TUI's start (which must not
+import numpy) can tell the two apart, and a SQLite path need not import
 db/engine/postgres.py to show an address."""
 
 from __future__ import annotations
 
-from pathlib import Path
-from urllib.parse import urlsplit, urlunsplit
+from typing import TYPE_CHECKING
+
+from sass_tui.model.text import without_password
+
+if TYPE_CHECKING:
+    from pathlib import Path
 
 URL_PREFIXES = ("postgresql://", "postgres://")
 # The verbs that take a PostgreSQL database, as the TUI does; the others read a SQLite file.
@@ -45,11 +49,6 @@ def sqlite_only(what: str) -> str:
 
 
 def shown(url: str) -> str:
-    """The address without its password, for messages."""
-    parts = urlsplit(url)
-    if parts.password is None:
-        return url
-    host = parts.hostname or ""
-    user = parts.username or ""
-    port = f":{parts.port}" if parts.port else ""
-    return urlunsplit(parts._replace(netloc=f"{user}:***@{host}{port}"))
+    """The address without its passwords, for messages (an address the
+    driver will refuse, with a port that is no number say, is shown too)."""
+    return without_password(url)

@@ -133,7 +133,7 @@ class PostgresConnection:
             )
         except self._psycopg.Error as exc:
             raise DatabaseError(
-                f"{shown(self.url)}: cannot reach the PostgreSQL server ({_first_line(exc)}); "
+                f"{shown(self.url)}: cannot reach the PostgreSQL server ({_first_line(exc, self.url)}); "
                 "check that it is running and that the address, user and database are right"
             ) from None
         try:
@@ -143,7 +143,7 @@ class PostgresConnection:
                 conn.execute("SET SESSION CHARACTERISTICS AS TRANSACTION READ ONLY")
         except self._psycopg.Error as exc:
             conn.close()
-            raise DatabaseError(f"{shown(self.url)}: {_first_line(exc)}") from None
+            raise DatabaseError(f"{shown(self.url)}: {_first_line(exc, self.url)}") from None
         return conn
 
     def _reconnect(self) -> None:
@@ -218,11 +218,11 @@ class PostgresConnection:
             return DatabaseError(read_only_message(where, "this change"))
         if self._conn.broken or self._conn.closed:
             return DatabaseError(
-                f"{where}: the PostgreSQL server closed the connection ({_first_line(exc)}); "
+                f"{where}: the PostgreSQL server closed the connection ({_first_line(exc, self.url)}); "
                 "nothing of the interrupted command was stored; run it again when the "
                 "server is back"
             )
-        return DatabaseError(f"{where}: {_first_line(exc)}")
+        return DatabaseError(f"{where}: {_first_line(exc, self.url)}")
 
     @contextmanager
     def transaction(self) -> Iterator[PostgresConnection]:
@@ -293,9 +293,12 @@ def read_only_message(where: str, what: str) -> str:
     )
 
 
-def _first_line(exc: BaseException) -> str:
+def _first_line(exc: BaseException, url: str) -> str:
+    """The driver's message, its first line, with the address in it (libpq
+    quotes a URI it cannot read whole) shown without its password."""
     text = str(exc).strip()
-    return text.splitlines()[0] if text else type(exc).__name__
+    first = text.splitlines()[0] if text else type(exc).__name__
+    return first.replace(url, shown(url))
 
 
 def connect_postgres(
