@@ -104,6 +104,11 @@ class Cluster:
 
         copy = f' TEMPLATE "{template}"' if template else ""
         with psycopg.connect(self.url(), autocommit=True) as conn:
+            if template and conn.info.server_version >= 150000:
+                # PostgreSQL 15 copies through the WAL by default: 0.20 s for
+                # the default database here, against 0.08 s for a file copy
+                # (fsync is off, so its checkpoint costs nothing).
+                copy += " STRATEGY FILE_COPY"
             conn.execute(f'DROP DATABASE IF EXISTS "{name}" WITH (FORCE)')
             conn.execute(f'CREATE DATABASE "{name}"{copy}')
         return self.url(name)
