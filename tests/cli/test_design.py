@@ -141,6 +141,19 @@ def test_bad_designs_are_one_line(people_db, capsys, limits, says):
     assert says in err and "Traceback" not in err
 
 
+@pytest.mark.parametrize(
+    ("split", "limits", "says"),
+    [
+        ("1,1", "stature <= ?", "--split gives 2 shares for 1 limit with a ?"),
+        ("1", "stature <= ? AND mass <= ?", "--split gives 1 share for 2 limits with a ?"),
+    ],
+)
+def test_a_split_of_the_wrong_length_is_counted_in_words(people_db, capsys, split, limits, says):
+    argv = ["--db", str(people_db), "design", "--accommodate", "95", "--split", split, limits]
+    assert main(argv) != 0
+    assert says in capsys.readouterr().err
+
+
 def test_sass_fit_refuses_an_unknown(people_db, capsys):
     assert main(["--db", str(people_db), "fit", "stature <= ?"]) != 0
     assert "sass design" in capsys.readouterr().err

@@ -190,7 +190,8 @@ def design(
     specs = [s for s in specs_of if s is not None]
     if split is not None and len(split) != len(specs):
         raise DesignError(
-            f"--split gives {len(split)} shares for {len(specs)} limits with a ?; give one each"
+            f"--split gives {len(split)} share{'s' * (len(split) != 1)} for {len(specs)}"
+            f" limit{'s' * (len(specs) != 1)} with a ?; give one each"
         )
     people = target_population(parsed(population), target)
     fields = list(dict.fromkeys(s.field for s in specs))
