@@ -13,7 +13,7 @@ from hypothesis import settings
 
 from sass_tui.cli import main
 
-# One BLAS thread in each test process: `pytest -n 2` already keeps both cores
+# One BLAS thread in each test process: `pytest -n 3` already keeps both cores
 # busy, and OpenBLAS's own threads then wait on each other (calibrating the
 # shipped target's weights, model/population/targets.py's Newton steps: 7.6 ms a step
 # with its threads under load, 1.5 ms with one; the model tests' CPU time
