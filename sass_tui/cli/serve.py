@@ -146,9 +146,17 @@ def tls_context(certfile: str | None, keyfile: str | None):  # -> ssl.SSLContext
 
 
 def check_public_url(url: str) -> None:
-    parts = urlsplit(url)
+    """An http(s) URL with a host and, if any, a port of 0-65535: urlsplit
+    raises on an unclosed IPv6 bracket and `.port` on a port that is no
+    number or out of range, which would end the server later instead."""
+    expected = f"--public-url {url!r}: expected http(s)://HOST[:PORT]/"
+    try:
+        parts = urlsplit(url)
+        parts.port  # noqa: B018 (read for its ValueError)
+    except ValueError as exc:
+        raise ServeError(f"{expected} ({exc})") from None
     if parts.scheme not in ("http", "https") or not parts.hostname:
-        raise ServeError(f"--public-url {url!r}: expected http(s)://HOST[:PORT]/")
+        raise ServeError(expected)
 
 
 def new_token() -> str:

@@ -23,6 +23,22 @@ def test_a_port_that_is_not_a_number_is_refused_by_the_parser(capsys):
     assert "--port" in capsys.readouterr().err
 
 
+@pytest.mark.parametrize(
+    ("url", "says"),
+    [
+        ("http://[::1", "Invalid IPv6 URL"),  # urlsplit raised: a traceback
+        ("http://sass.example:abc/", "could not be cast to integer"),  # served, then unusable
+        ("http://sass.example:99999/", "out of range"),
+        ("ftp://sass.example/", "expected http(s)://HOST[:PORT]/"),
+        ("https:///", "expected http(s)://HOST[:PORT]/"),
+    ],
+)
+def test_a_public_url_that_is_no_url_of_a_server_is_refused(capsys, url, says):
+    assert main(["serve", "--port", "0", "--public-url", url]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("sass serve: error: --public-url") and says in err, err
+
+
 def test_the_server_collects_cycles_at_pythons_threshold(tmp_path, monkeypatch, capsys):
     """One-shot commands raise the collector's threshold (cli/__init__.py
     COLLECT_AFTER_OBJECTS); the server gives Python's back, or each
