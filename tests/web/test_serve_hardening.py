@@ -236,10 +236,12 @@ def test_the_page_loads_nothing_from_another_server(tmp_path):
 
 @pytest.mark.slow
 def test_a_host_with_a_user_part_is_refused(tmp_path):
-    """`evil.com@localhost:P` is read by urlsplit as the host localhost."""
+    """`evil.com@localhost:P` is read by urlsplit as the host localhost;
+    `[1.2.3]` made urlsplit raise (a 500 and a traceback on the terminal)."""
     served = start_serve(tmp_path, "--workdir", "work", "--db", str(tmp_path / "none.db"))
+    hosts = (f"evil.com@localhost:{served.port}", f"localhost:{served.port}/x", "a b")
     try:
-        for host in (f"evil.com@localhost:{served.port}", f"localhost:{served.port}/x", "a b"):
+        for host in (*hosts, f"[1.2.3]:{served.port}", "[:::::]"):
             status, _, body = fetch(served, "/", host=host)
             assert status == 403, host
             assert b"is not this server's" in body

@@ -192,7 +192,10 @@ def _hostname(host_header: str) -> str:
     is not a host and port ('evil.com@localhost:8000')."""
     if not _HOST_HEADER.fullmatch(host_header):
         return ""
-    return (urlsplit(f"//{host_header}").hostname or "").lower()
+    try:
+        return (urlsplit(f"//{host_header}").hostname or "").lower()
+    except ValueError:  # brackets around no IPv6 address ('[1.2.3]'): urlsplit checks them
+        return ""
 
 
 # --- the page's headers --------------------------------------------------------------
