@@ -47,3 +47,22 @@ def test_a_distributed_family_adds_an_inner_shell(people_db, tmp_path, capsys):
     assert inner and all(name.endswith("_inner") for name in inner)
     assert {name.removesuffix("_inner") for name in inner} <= names["boundary"]
     capsys.readouterr()
+
+
+@pytest.mark.parametrize(
+    ("output", "says"),
+    [("taken", "cannot write {out}: it is a file, not a directory"),
+     ("taken/family", "cannot write {out}: not a directory: {taken}")],
+)  # fmt: skip
+def test_an_output_folder_a_file_stands_in_is_refused_by_name(
+    people_db, tmp_path, capsys, output, says
+):
+    """mkdir's own words were "[Errno 17] File exists: 'taken'"."""
+    taken = tmp_path / "taken"
+    taken.write_text("a file the user keeps\n")
+    out = tmp_path / output
+    argv = ["--db", str(people_db), "family", "--gender", "female"]
+    assert main([*argv, "--measures", "stature,mass", "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert says.format(out=out, taken=taken) in err and "Errno" not in err, err
+    assert taken.read_text() == "a file the user keeps\n"

@@ -115,6 +115,24 @@ def write_files_atomic(files: Mapping[Path, bytes | str]) -> None:
         raise
 
 
+def make_directory(path: str | Path) -> Path:
+    """`path` as a directory, made with its parents when missing: an
+    OutputFileError naming it when it cannot be (a file in its place or on
+    its way, no permission), where mkdir's own said "[Errno 17] File exists"."""
+    directory = Path(os.fspath(path))
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+    except FileExistsError:
+        raise OutputFileError(directory, "it is a file, not a directory", errno.EEXIST) from None
+    except NotADirectoryError:
+        blocking = next((p for p in directory.parents if p.exists() and not p.is_dir()), None)
+        reason = f"not a directory: {blocking if blocking is not None else directory.parent}"
+        raise OutputFileError(directory, reason, errno.ENOTDIR) from None
+    except OSError as exc:
+        raise OutputFileError(directory, exc.strerror or str(exc), exc.errno) from None
+    return directory
+
+
 def check_target(path: str | Path) -> None:
     """Refuse, as a write would, a target that cannot be written: a
     directory, a FIFO, a device, a missing directory.  A prompt asks this

@@ -14,7 +14,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.files.atomic import write_text_atomic
+from sass_tui.model.files.atomic import make_directory, write_text_atomic
 from sass_tui.model.files.figfile import write_fig
 from sass_tui.model.files.hanim_x3d import export_hanim
 from sass_tui.model.population.accommodation import Family
@@ -32,8 +32,7 @@ def write_family(
     family.json into `directory` (each file atomically); returns the family
     with each manikin's files.  A family of both genders sizes each manikin
     against its own gender's population figure."""
-    out = Path(directory)
-    out.mkdir(parents=True, exist_ok=True)
+    out = make_directory(directory)
     manikins = []
     for manikin in family.manikins:
         own = manikin.prediction.gender
