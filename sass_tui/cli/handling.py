@@ -18,7 +18,12 @@ import argparse
 import json
 from typing import Any
 
-from sass_tui.cli.common.figure_hands import add_figure_hands_options, from_figure, posed_people
+from sass_tui.cli.common.figure_hands import (
+    add_figure_hands_options,
+    from_figure,
+    posed_people,
+    refuse_typed_hands,
+)
 from sass_tui.cli.common.options import SubParsers, add_virtual_option
 from sass_tui.model.strength.liberty_mutual import (
     HANDLES,
@@ -142,9 +147,7 @@ def task_inputs(args: argparse.Namespace) -> dict[str, Inputs]:
         raise HandlingError(f"--f: {exc}") from None
     sexes = [args.gender] if args.gender else list(SEXES)
     if from_figure(args):
-        typed = [o for o, v in (("--h", args.h), ("--v", args.v)) if v is not None]
-        if typed:
-            raise HandlingError(f"the posture gives H and V; leave out {', '.join(typed)}")
+        refuse_typed_hands(args, HandlingError)
         out = {}
         for sex, (hand_h, hand_v) in posed_people().hands_of(args, sexes).items():
             out[sex] = Inputs(

@@ -17,7 +17,12 @@ import json
 import math
 from typing import Any
 
-from sass_tui.cli.common.figure_hands import add_figure_hands_options, from_figure, posed_people
+from sass_tui.cli.common.figure_hands import (
+    add_figure_hands_options,
+    from_figure,
+    posed_people,
+    refuse_typed_hands,
+)
 from sass_tui.cli.common.options import SubParsers
 from sass_tui.model.files.paths import LARGEST_TEXT_FILE, read_user_text
 from sass_tui.model.strength import niosh_input
@@ -156,9 +161,7 @@ def _origin(args: argparse.Namespace, of: Form) -> tuple[float, float]:
             if value is None:
                 raise NioshError(f"a lift needs {option}, a posture or --tasks FILE")
         return niosh_input.length(args.h, of), niosh_input.length(args.v, of)
-    typed = [o for o, value in (("--h", args.h), ("--v", args.v)) if value is not None]
-    if typed:
-        raise NioshError(f"the posture gives H and V; leave out {', '.join(typed)}")
+    refuse_typed_hands(args, NioshError)
     hands = posed_people().hands_of(args, [args.gender or "male"])
     h, v = next(iter(hands.values()))
     return convert(h, "m", of.length_unit), convert(v, "m", of.length_unit)

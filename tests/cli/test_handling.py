@@ -128,6 +128,7 @@ def test_virtual_population_is_the_weighted_mix_of_women_and_men(capsys, people_
         (["carry", "--v", "1", "--d", "5", "--load", "10kgf"], "takes a mass"),
         (["lift", *LIFT, "--virtual", "nhanes-2017-2020"], "give it"),
         (["lift", "shoulder_y=45", "--h", "0.3", "--d", "0.5"], "leave out --h"),
+        (["lift", "shoulder_y=45", "kg", "--h", "0.3", "--d", "0.5"], "'kg' is a unit"),
         (["lift", "--h", "-0.3", "--v", "1", "--d", "0.5"], "--h -0.3 is negative"),
         (["lift", "--h", "0.3", "--v", "1", "--d", "0.5", "--f=nan"], "--f: 'nan' is not a usable"),
         (["lift", "--h", "0.3", "--v", "1", "--d", "0.5", "--f=-1"], "--f: '-1' is negative"),

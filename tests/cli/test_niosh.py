@@ -107,6 +107,11 @@ def test_a_posture_file_gives_the_origin(capsys, tmp_path):
          "at most 15 lifts"),
         (["--tasks", "/nonexistent/job.csv"], "no such file"),
         (["--tasks", "job.csv", "--h", "40cm"], "leave out --h"),
+        # `--load 10 kg`: the shell leaves `kg` a posture word, which is named
+        # (not "leave out --h, --v", which the typed --h and --v would give)
+        (["--h", "40cm", "--v", "60cm", "--d", "20", "--f", "1", "--load", "10", "kg"],
+         "'kg': expected JOINT=ANGLE, e.g. shoulder_y=90 ('kg' is a unit: write it against "
+         "its number, as in 12kg)"),
     ],
 )  # fmt: skip
 def test_bad_input_is_one_line(capsys, argv, message):

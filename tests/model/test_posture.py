@@ -117,7 +117,8 @@ def test_the_neck_has_no_side_and_keeps_to_the_reports_neck_limits(figure):
     [
         (["shoulder_q=30"], "unknown joint 'shoulder_q'"),
         (["elbow=30"], "unknown joint 'elbow'"),
-        (["shoulder_y"], "expected JOINT=ANGLE"),
+        (["shoulder_y"], r"expected JOINT=ANGLE, e.g. shoulder_y=90$"),
+        (["cm"], r"'cm' is a unit: write it against its number, as in 12cm"),
         (["shoulder_y=nan"], "shoulder_y=nan"),
         (["elbow_y=abc"], "elbow_y=abc"),
     ],

@@ -38,6 +38,16 @@ def from_figure(args: argparse.Namespace) -> bool:
     return bool(args.angles) or args.posture is not None or args.person is not None
 
 
+def refuse_typed_hands(args: argparse.Namespace, error: type[Exception]) -> None:
+    """With the hands taken from a figure, --h and --v typed as well are
+    refused; a word that is no JOINT=ANGLE is named first, since it alone may
+    have made a posture of the command (`--load 10 kg` leaves `kg` behind)."""
+    typed = [option for option, value in (("--h", args.h), ("--v", args.v)) if value is not None]
+    if typed:
+        posed_people().parse_angles(args.angles)
+        raise error(f"the posture gives H and V; leave out {', '.join(typed)}")
+
+
 def posed_people() -> ModuleType:
     """cli/handling_people.py: a posture's figures and a population's weights."""
     # deferred: cli.handling_people (numpy, the figure, the db package) — off sass handling, sass niosh (sass_tui/startup.py)

@@ -69,7 +69,7 @@ from sass_tui.model.files.paths import PathError, read_user_text
 from sass_tui.model.names import GIRTH, row_index
 from sass_tui.model.strength.arm_force_field import ArmForceError, Posture, check_posture
 from sass_tui.model.strength.strength_conditions import check_angle
-from sass_tui.model.units import parse_quantity
+from sass_tui.model.units import UnitError, parse_quantity, unit_name
 from sass_tui.model.vocabulary import JOINT_AXES
 
 LEG_AXES: tuple[str, ...] = ("hip_y", "knee_y", "ankle_y")
@@ -114,6 +114,16 @@ class PostureError(ArmForceError):
     the joint limits, a file that is not a posture."""
 
 
+def _unit_hint(item: str) -> str:
+    """A unit standing alone among the angles was most likely typed apart from
+    its option's number (`--load 10 kg`): the shell made two words of it."""
+    try:
+        unit_name(item)
+    except UnitError:
+        return ""
+    return f" ({item.strip()!r} is a unit: write it against its number, as in 12{item.strip()})"
+
+
 def parse_angles(items: list[str]) -> Angles:
     """['shoulder_y=90', 'left_elbow_y=1.5 rad'] -> {('left', 'shoulder_y'): 90, ...}."""
     out: Angles = {}
@@ -121,7 +131,9 @@ def parse_angles(items: list[str]) -> Angles:
         name, sep, value = item.partition("=")
         key = name.strip().lower().replace(".", "_")
         if not sep or not value.strip():
-            raise PostureError(f"{item!r}: expected JOINT=ANGLE, e.g. shoulder_y=90")
+            raise PostureError(
+                f"{item!r}: expected JOINT=ANGLE, e.g. shoulder_y=90{_unit_hint(item)}"
+            )
         sides: tuple[str, ...] = ("left", "right")
         for word in sides:
             if key.startswith(f"{word}_"):
