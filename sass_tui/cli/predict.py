@@ -258,7 +258,9 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
     carries one; an empty cell is unknown for that row); other columns pass
     through.  The output keeps the input columns as they were, an empty known
     cell filled with its prediction, and adds F, F.low, F.high for every
-    predicted field F (F.low and F.high only, for a field that is an input column)."""
+    predicted field F (F.low and F.high only, for a field that is an input column);
+    an input column named like one of those is replaced by it (a file this
+    wrote, run again after its values were edited)."""
     try:
         people_table = regular_file(source, largest=LARGEST_PEOPLE_TABLE, kind="a table of people")
         with open(people_table, encoding="utf-8-sig", newline="") as handle:
@@ -308,15 +310,20 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
         gender, known_fields, matrix, where=[f"{source}:{r + 2}" for r in range(len(body))]
     )
     index = {f: i for i, f in enumerate(out_fields)}
-    columns = list(header)
-    added: list[np.ndarray] = []  # the added columns, in output order
+    names: list[str] = []  # the added columns' names and values, in output order
+    added: list[np.ndarray] = []
     for f in fields:
         i = index[f]
         if f not in known_fields:
-            columns.append(f)
+            names.append(f)
             added.append(value[:, i])
-        columns += [f"{f}.low", f"{f}.high"]
+        names += [f"{f}.low", f"{f}.high"]
         added += [low[:, i], high[:, i]]
+    # A file this wrote, run again, holds the old F.low and F.high: the new
+    # ones take their place rather than stand beside them under one name.
+    replaced = set(names)
+    kept = [c for c, name in enumerate(header) if name not in replaced]
+    columns = [header[c] for c in kept] + names
     table = np.column_stack(added) if body else np.empty((0, 0))
     # one C-level format per row: 10,000 rows x 450 numbers in well under a second
     number_format = ",".join(["%.3f"] * len(added)) + "\n"
@@ -331,7 +338,7 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
         for c, i in zip(known_cols, known_index):
             if not cells[c].strip():
                 cells[c] = f"{value[r, i]:.3f}"
-        writer.writerow(cells)
+        writer.writerow([cells[c] for c in kept])
         buffer.write("," + number_format % tuple(table[r].tolist()))
     write_text_atomic(target, buffer.getvalue())
     return len(body)

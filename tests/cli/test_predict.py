@@ -172,6 +172,27 @@ def test_batch_csv(db, tmp_path, capsys, predictor):
     assert rows[1]["mass"] != "" and float(rows[1]["mass.low"]) < float(rows[1]["mass.high"])
 
 
+def test_a_file_predict_wrote_runs_again_with_every_value_known(db, tmp_path, capsys):
+    """Every field of the second run is known: the residual spread's terms
+    are then dependent (numpy raised "Singular matrix" through the verb), and
+    the first run's F.low and F.high are replaced, not written twice."""
+    source = tmp_path / "known.csv"
+    source.write_text("id,stature,mass\na,165,60\n")
+    first, second = tmp_path / "first.csv", tmp_path / "second.csv"
+    argv = ["predict", "--db", str(db), "--gender", "female"]
+    assert main([*argv, "--input", str(source), "--output", str(first)]) == 0
+    assert main([*argv, "--input", str(first), "--output", str(second)]) == 0
+    assert "(1 person)" in capsys.readouterr().out
+    header = next(csv.reader(second.open()))
+    assert len(header) == len(set(header)) and set(header) == set(next(csv.reader(first.open())))
+    before, after = next(csv.DictReader(first.open())), next(csv.DictReader(second.open()))
+    fields = [name for name in header if f"{name}.low" in after]
+    assert len(fields) > 100 and {"stature", "measure.chestcircumference"} <= set(fields)
+    for field in fields:  # known now: the interval is the value itself
+        assert float(after[field]) == float(before[field])
+        assert float(after[f"{field}.low"]) == float(after[f"{field}.high"]) == float(before[field])
+
+
 def test_batch_errors_name_file_and_line(db, tmp_path, capsys):
     source = tmp_path / "known.csv"
     source.write_text("id,stature,mass\n1,175,80\n2,175,80 cm\n")

@@ -232,6 +232,12 @@ def test_a_unit_of_the_wrong_kind_names_the_value(predictor):
         predictor.parse_known("male", [("mass", "80 cm")])
     with pytest.raises(FieldUnitError, match=r"stature=tall: expected a number"):
         predictor.parse_known("male", [("stature", "tall")])
+    with pytest.raises(
+        PredictionError,
+        match=r"stature=70 in: stature is already known "
+        r"\(measure\.stature=180cm\); give it once",
+    ):
+        predictor.parse_known("male", [("measure.stature", "180cm"), ("stature", "70 in")])
     assert predictor.parse_known("male", [("stature", "70 in"), ("mass", "176.37 lb")]) == {
         "stature": pytest.approx(177.8),
         "mass": pytest.approx(80.0, abs=1e-3),

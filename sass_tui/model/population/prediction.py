@@ -470,10 +470,19 @@ class Predictor:
         self, gender: str, items: Iterable[tuple[str, str | float]]
     ) -> dict[str, float]:
         """(name, "175.5cm") pairs -> {field: value in its canonical unit}.
-        A bare number is in the canonical unit (cm, kg)."""
+        A bare number is in the canonical unit (cm, kg).  A field given twice
+        is refused, as a batch file's repeated column is: which value was
+        meant is the user's to say."""
         out: dict[str, float] = {}
+        typed: dict[str, str] = {}
         for name, text in items:
             key = self.resolve(gender, name)
+            given = f"{name}={text.strip() if isinstance(text, str) else text}"
+            if key in typed:
+                raise PredictionError(
+                    f"{given}: {key} is already known ({typed[key]}); give it once", where=name
+                )
+            typed[key] = given
             unit = field_unit(key)
             if isinstance(text, (int, float)):
                 value = float(text)
@@ -481,7 +490,7 @@ class Predictor:
                 try:
                     value = parse_quantity(text, unit)
                 except UnitError as exc:
-                    raise FieldUnitError(f"{name}={text.strip()}: {exc}", where=name) from None
+                    raise FieldUnitError(f"{given}: {exc}", where=name) from None
             out[key] = value
         return out
 
@@ -686,7 +695,11 @@ def _spread(m: GenderModel, k_idx: Sequence[int], coef: FloatArray) -> Spread:
     # 1e-8: a field the known values determine exactly (a girth cell derived
     # from a known measurement) has residuals at float32 rounding, not 0
     normal = design.T @ np.log(squared + 1e-8)
-    log_scale = np.asarray(np.linalg.solve(design.T @ design, normal), dtype=np.float64)
+    # a pseudo-inverse, not a solve: with many known values the terms are
+    # dependent (a field the others determine, a known value whose square is
+    # a multiple of it), and the normal equations singular
+    inverse, _ = _pinv(design.T @ design)
+    log_scale = np.asarray(inverse @ normal, dtype=np.float64)
     spread = np.mean(squared / np.exp(design @ log_scale), axis=0, dtype=np.float64)
     calibration: FloatArray = Z * np.sqrt(spread)
     return log_scale, calibration
