@@ -94,6 +94,7 @@ def test_predict_by_keys_shows_the_predicted_figure(
         ("stature=85 kg", "stature=85 kg"),
         ("stature=900 cm", "stature"),
         ("stature", "expected NAME=VALUE"),
+        ("stature=180 cm, stature=170 cm", "stature is already known (stature=180 cm)"),
     ],
 )
 @pytest.mark.slow
