@@ -19,7 +19,7 @@ import sys
 from types import ModuleType
 from typing import Any, NamedTuple, cast
 
-from sass_tui.cli.common.options import DB_HELP, SubParsers
+from sass_tui.cli.common.options import DB_HELP, SubParsers, database_address, file_name
 from sass_tui.model.errors import SassError
 from sass_tui.model.text import printable
 
@@ -105,12 +105,13 @@ def build_parser(argv: list[str] | None = None) -> _Parser:
     )
     # --db may stand before the verb or after it; the verb's own option (see
     # options.add_db_option) overrides this one only when it is given.
-    parser.add_argument("--db", metavar="PATH", help=DB_HELP)
+    parser.add_argument("--db", metavar="PATH", type=database_address, help=DB_HELP)
     parser.add_argument(
         "--version", action=_VersionAction, nargs=0, help="print the version and exit"
     )
     parser.add_argument(
         "--open",
+        type=file_name,
         metavar="FILE",
         help="open the spreadsheet on a worksheet saved with Save (ctrl+s) or Save As (S)",
     )

@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 from sass_tui.cli.common.database_access import open_database
-from sass_tui.cli.common.options import SubParsers, add_db_option, warn_of_a_password
+from sass_tui.cli.common.options import SubParsers, add_db_option, file_name, warn_of_a_password
 from sass_tui.cli.common.progress import progress_for
 from sass_tui.db.engine.addresses import is_url, shown
 from sass_tui.db.engine.database import Database, configured_target, init_postgres
@@ -39,21 +39,32 @@ def register(commands: SubParsers) -> None:
     init.set_defaults(func=run_init)
     flat = actions.add_parser("import-flat", help="import legacy flat files (report figure 12)")
     add_db_option(flat)
-    flat.add_argument("--person", required=True, metavar="F", help="the person flat file")
-    flat.add_argument("--girth", required=True, metavar="F", help="the girth flat file")
-    flat.add_argument("--jntlmt", required=True, metavar="F", help="the joint-limit flat file")
-    flat.add_argument("--cmass", required=True, metavar="F", help="the center-of-mass flat file")
+    flat.add_argument(
+        "--person", required=True, metavar="F", type=file_name, help="the person flat file"
+    )
+    flat.add_argument(
+        "--girth", required=True, metavar="F", type=file_name, help="the girth flat file"
+    )
+    flat.add_argument(
+        "--jntlmt", required=True, metavar="F", type=file_name, help="the joint-limit flat file"
+    )
+    flat.add_argument(
+        "--cmass", required=True, metavar="F", type=file_name, help="the center-of-mass flat file"
+    )
     flat.add_argument(
         "strength",
         nargs="*",
         metavar="STRENGTH_FILE",
+        type=file_name,
         help="strgh-par, shoulder-strgh, elbow-strgh, wrist-strgh files, "
         "in that order (leave out all to skip strength)",
     )
     flat.set_defaults(func=run_import_flat)
     ansur = actions.add_parser("import-ansur", help="import the ANSUR II public CSV files")
     add_db_option(ansur)
-    ansur.add_argument("files", nargs="+", metavar="FILE", help="CSV files (.csv or .csv.gz)")
+    ansur.add_argument(
+        "files", nargs="+", metavar="FILE", type=file_name, help="CSV files (.csv or .csv.gz)"
+    )
     ansur.add_argument(
         "--source",
         default="ansur2",

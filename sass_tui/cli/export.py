@@ -8,7 +8,7 @@ import sys
 from typing import TYPE_CHECKING
 
 from sass_tui.cli.common.figure_from_options import figure_from_args
-from sass_tui.cli.common.options import SubParsers, add_figure_options, print_warnings
+from sass_tui.cli.common.options import SubParsers, add_figure_options, file_name, print_warnings
 from sass_tui.model.body.hanim import not_in_humanoid_note
 from sass_tui.model.files.paths import user_path
 
@@ -22,7 +22,9 @@ def register(commands: SubParsers) -> None:
     hanim = formats.add_parser(
         "hanim", help="ISO/IEC 19774 HAnim humanoid, LOA-1, X3D XML encoding"
     )
-    hanim.add_argument("-o", "--output", metavar="NAME.x3d", required=True, help="output file")
+    hanim.add_argument(
+        "-o", "--output", metavar="NAME.x3d", type=file_name, required=True, help="output file"
+    )
     add_figure_options(hanim)
     hanim.set_defaults(func=run_hanim)
     gltf = formats.add_parser(
@@ -33,6 +35,7 @@ def register(commands: SubParsers) -> None:
         "-o",
         "--output",
         metavar="NAME.glb",
+        type=file_name,
         required=True,
         help="output file: NAME.glb (binary) or NAME.gltf (writes NAME.bin beside it)",
     )

@@ -12,6 +12,7 @@ from sass_tui.cli.common.options import (
     add_db_option,
     add_virtual_option,
     add_within_range_option,
+    file_name,
     weighting_name,
     within_range_of,
 )
@@ -107,7 +108,9 @@ def register(commands: SubParsers) -> None:
     )
     add_virtual_option(family)
     add_within_range_option(family)
-    family.add_argument("-o", "--output", metavar="DIR", required=True, help="output directory")
+    family.add_argument(
+        "-o", "--output", metavar="DIR", type=file_name, required=True, help="output directory"
+    )
     family.set_defaults(func=run)
 
 

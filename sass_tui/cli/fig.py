@@ -9,6 +9,7 @@ from sass_tui.cli.common.figure_from_options import figure_from_args
 from sass_tui.cli.common.options import (
     SubParsers,
     add_figure_options,
+    file_name,
     person_file_name,
     print_warnings,
 )
@@ -29,6 +30,7 @@ def register(commands: SubParsers) -> None:
         "-o",
         "--output",
         metavar="OUT.fig",
+        type=file_name,
         help="output file (default: the report's MALE50.FIG convention; a person's name)",
     )
     add_figure_options(fig)
@@ -36,6 +38,7 @@ def register(commands: SubParsers) -> None:
     strength.add_argument(
         "--strength",
         metavar="F",
+        type=file_name,
         help="a strength file (measured data) for the arm's strength variables; by default "
         "the figure carries only published strength (Anderson et al. 2007's hip, knee and "
         "ankle)",

@@ -23,7 +23,7 @@ from sass_tui.cli.common.figure_hands import (
     posed_people,
     refuse_typed_hands,
 )
-from sass_tui.cli.common.options import SubParsers
+from sass_tui.cli.common.options import SubParsers, file_name
 from sass_tui.model.files.paths import LARGEST_TEXT_FILE, read_user_text
 from sass_tui.model.strength import niosh_input
 from sass_tui.model.strength.niosh import (
@@ -102,6 +102,7 @@ def register(commands: SubParsers) -> None:
     )
     niosh.add_argument(
         "--tasks",
+        type=file_name,
         metavar="FILE",
         help="a multi-task job, FILE.json or FILE.csv (columns name, load, load_max, h, v, d, "
         "a, f, coupling, dest_h, dest_v, dest_a, dest_coupling): the composite lifting index",

@@ -22,6 +22,7 @@ from sass_tui.cli.common.options import (
     SubParsers,
     add_db_option,
     add_virtual_option,
+    file_name,
     weighting_name,
 )
 from sass_tui.db.populations.population import (
@@ -49,12 +50,14 @@ def register(commands: SubParsers) -> None:
     )
     population.add_argument(
         "--ids",
+        type=file_name,
         metavar="FILE",
         help="person ids, one a line, or `sass query --format csv` output ('-': stdin)",
     )
     population.add_argument(
         "-o",
         "--output",
+        type=file_name,
         required=True,
         metavar="FILE.dat",
         help="girth file; FILE-cmass.dat (center of mass) and FILE-global.dat (the "

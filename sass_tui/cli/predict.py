@@ -24,6 +24,7 @@ from sass_tui.cli.common.options import (
     SubParsers,
     add_db_option,
     add_virtual_option,
+    file_name,
     weighting_name,
     whole_number,
 )
@@ -102,6 +103,7 @@ def register(commands: SubParsers) -> None:
     predict.add_argument(
         "-o",
         dest="figure",
+        type=file_name,
         metavar="OUT.fig|OUT.x3d|OUT.glb",
         help="also write the predicted figure: a PEABODY .fig file, an HAnim .x3d humanoid "
         "or a glTF 2.0 body (.glb, or .gltf + .bin)",
@@ -116,11 +118,13 @@ def register(commands: SubParsers) -> None:
     predict.add_argument(
         "--input",
         metavar="KNOWN.csv",
+        type=file_name,
         help="batch: one person a row, columns named like --known (other columns pass through)",
     )
     predict.add_argument(
         "--output",
         metavar="PREDICTED.csv",
+        type=file_name,
         help="batch output: the input columns and F, F.low, F.high for every predicted field F",
     )
     predict.set_defaults(func=run)

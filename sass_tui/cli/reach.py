@@ -18,11 +18,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from sass_tui.cli.common.figure_from_options import figure_from_args
-from sass_tui.cli.common.options import (
-    SubParsers,
-    add_figure_options,
-    print_warnings,
-)
+from sass_tui.cli.common.options import SubParsers, add_figure_options, file_name, print_warnings
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.body.reach import (
     REACH_MEASURES,
@@ -95,6 +91,7 @@ def register(commands: SubParsers) -> None:
         "-o",
         "--output",
         metavar="FILE.glb",
+        type=file_name,
         help="write the envelope(s) as glTF: FILE.glb or FILE.gltf (+ .bin)",
     )
     reach.add_argument(

@@ -16,7 +16,7 @@ import ssl
 from ipaddress import ip_address
 from urllib.parse import urlsplit
 
-from sass_tui.cli.common.options import SubParsers, add_db_option, positive_number
+from sass_tui.cli.common.options import SubParsers, add_db_option, file_name, positive_number
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.paths import LARGEST_TOKEN_FILE, regular_file
 
@@ -54,8 +54,12 @@ def register(commands: SubParsers) -> None:
         help="allow a --host other machines reach (traffic is plain HTTP unless "
         "--certfile/--keyfile or a TLS reverse proxy)",
     )
-    serve.add_argument("--certfile", metavar="F", help="TLS certificate (PEM): serve https/wss")
-    serve.add_argument("--keyfile", metavar="F", help="TLS private key (PEM) of --certfile")
+    serve.add_argument(
+        "--certfile", metavar="F", type=file_name, help="TLS certificate (PEM): serve https/wss"
+    )
+    serve.add_argument(
+        "--keyfile", metavar="F", type=file_name, help="TLS private key (PEM) of --certfile"
+    )
     serve.add_argument(
         "--public-url",
         metavar="URL",
@@ -65,12 +69,14 @@ def register(commands: SubParsers) -> None:
     serve.add_argument(
         "--token-file",
         metavar="F",
+        type=file_name,
         help="read the token from F (at least 22 characters of A-Z a-z 0-9 - _) "
         "instead of making a new one",
     )
     serve.add_argument(
         "--workdir",
         metavar="DIR",
+        type=file_name,
         help="the directory web sessions read and write files in (default: a new "
         "directory under the user's data directory, printed at start)",
     )

@@ -19,7 +19,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from sass_tui.cli.common.options import SubParsers, add_db_option
+from sass_tui.cli.common.options import SubParsers, add_db_option, file_name
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.names import JOINT_LIMITS
 from sass_tui.model.strength.published_grip import (
@@ -116,12 +116,13 @@ def register(commands: SubParsers) -> None:
     parser.add_argument(
         "--posture",
         metavar="FILE.json",
+        type=file_name,
         help=f"{ARM_FORCE}: HAnim joint centres in metres (+x left, +y up, +z forward): "
         "l_/r_metacarpophalangeal_3, l_/r_radiocarpal, l_/r_elbow, l_/r_shoulder, vc7, vl5",
     )
     parser.add_argument(
         "--direction",
-        metavar="DIR",
+        metavar="DIRECTION",
         help=f"{ARM_FORCE}: the hand force's direction: up, down, forward, back, left, right "
         "or X,Y,Z on HAnim's axes (a vector with negative parts as --direction=-0.2,-0.3,0.9)",
     )
@@ -226,7 +227,9 @@ def register(commands: SubParsers) -> None:
         "and the training gain (--training-level), which have no published source for these "
         "motions (off unless asked for; labelled when on)",
     )
-    parser.add_argument("--file", metavar="F", help="strength file (default datasets/strength.dat)")
+    parser.add_argument(
+        "--file", metavar="F", type=file_name, help="strength file (default datasets/strength.dat)"
+    )
     parser.set_defaults(func=run)
 
 

@@ -15,7 +15,7 @@ import sys
 from typing import TextIO
 
 from sass_tui.cli.common.database_access import open_db
-from sass_tui.cli.common.options import SubParsers, add_db_option
+from sass_tui.cli.common.options import SubParsers, add_db_option, file_name
 from sass_tui.db.populations.shipped import REMAKE
 from sass_tui.db.populations.targets import SHIPPED, list_targets
 from sass_tui.model.datasets import NHANES_NAME, NHANES_WEIGHT
@@ -45,6 +45,7 @@ def register(commands: SubParsers) -> None:
     )
     target.add_argument(
         "--sample",
+        type=file_name,
         metavar="FILE.csv",
         help="one person a row; columns stature, mass, measure.<name>, units in the header "
         "(stature[cm], mass[lb]) or on the values; gender, age; a .csv.gz file is read "

@@ -80,7 +80,7 @@ def register(commands: SubParsers) -> None:
         task.add_argument(f"--{side}-load", metavar="FORCE", help=LOAD_HELP.format(side=side))
         task.add_argument(
             f"--{side}-direction",
-            metavar="DIR",
+            metavar="DIRECTION",
             help=DIRECTION_HELP.format(side=side),
         )
     who = task.add_mutually_exclusive_group()

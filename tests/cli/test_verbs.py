@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import argparse
 import pkgutil
+import re
 import subprocess
 import sys
 from collections.abc import Iterator
@@ -14,7 +15,7 @@ from pathlib import Path
 import pytest
 
 import sass_tui.cli
-from sass_tui.cli import VERBS, build_parser, verb_module
+from sass_tui.cli import VERBS, build_parser, main, verb_module
 
 # The modules of sass_tui/cli that are not verbs: what the verbs share.
 SHARED = {  # parts of a verb; what verbs share lives in cli/common/
@@ -103,11 +104,48 @@ def test_every_verb_has_its_test_file_here():
     ],
 )
 def test_an_unknown_option_is_refused_by_the_verb_it_was_given_to(capsys, argv, who):
-    from sass_tui.cli import main
-
     with pytest.raises(SystemExit) as stop:
         main(argv)
     assert stop.value.code == 2
     err = capsys.readouterr().err
     assert err.startswith(f"usage: {who} ")
     assert f"\n{who}: error: unrecognized arguments: " in err
+
+
+# An option's metavar says it takes a file or a folder: FILE, F, DIR, OUT.fig, ...
+_NAMES_A_FILE = re.compile(r"FILE|^F$|^DIR$|\.(fig|x3d|glb|csv|dat|json)\b|^PATH")
+
+
+def _file_options() -> list[tuple[list[str], str]]:
+    """(the words that reach the option and the option with an empty name, its
+    metavar) for every option and argument of every verb that names a file."""
+    found = []
+    for words, action in _options(build_parser(), "sass"):
+        metavar = str(action.metavar or "")
+        if _NAMES_A_FILE.search(metavar):
+            given = [action.option_strings[0], ""] if action.option_strings else [""]
+            found.append(([*words.split()[1:], *given], metavar))
+    return found
+
+
+def test_every_file_option_refuses_an_empty_name(capsys, tmp_path, monkeypatch):
+    """`''` (or `"$OUT"` with OUT unset) was the current folder to each verb, and
+    each said something else of it: `.: a directory`, `cannot write .`, `--input
+    needs --output`; `sass fig -o ''` wrote MALE50.FIG and `--db ''` opened the
+    default database."""
+    found = _file_options()
+    assert len(found) > 30  # the walk reaches every verb's file options
+    parser = build_parser()
+    for argv, metavar in found:
+        with pytest.raises(SystemExit) as stopped:
+            parser.parse_args(argv)
+        assert stopped.value.code == 2, argv
+        err = capsys.readouterr().err
+        expected = "a database file or a postgresql://" if "PATH" in metavar else "a file's name"
+        assert f"'': expected {expected}" in err, (argv, err)
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as stopped:
+        main(["fig", "-o", ""])
+    assert stopped.value.code == 2
+    assert "argument -o/--output: '': expected a file's name" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []  # no MALE50.FIG

@@ -10,7 +10,7 @@ from __future__ import annotations
 import argparse
 from types import ModuleType
 
-from sass_tui.cli.common.options import add_db_option, percentile
+from sass_tui.cli.common.options import add_db_option, file_name, percentile
 
 
 def add_figure_hands_options(parser: argparse.ArgumentParser, lift_words: str) -> None:
@@ -22,7 +22,10 @@ def add_figure_hands_options(parser: argparse.ArgumentParser, lift_words: str) -
         f"and V are taken from it ({lift_words})",
     )
     parser.add_argument(
-        "--posture", metavar="FILE", help="a posture file (JSON joint centres, `sass task`'s)"
+        "--posture",
+        metavar="FILE",
+        type=file_name,
+        help="a posture file (JSON joint centres, `sass task`'s)",
     )
     parser.add_argument(
         "--percentile",

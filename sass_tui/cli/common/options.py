@@ -24,7 +24,9 @@ DB_HELP = (
 
 def add_db_option(parser: argparse.ArgumentParser) -> None:
     """`--db` after the verb; SUPPRESS keeps a `--db` given before the verb."""
-    parser.add_argument("--db", metavar="PATH|URL", default=argparse.SUPPRESS, help=DB_HELP)
+    parser.add_argument(
+        "--db", metavar="PATH|URL", type=database_address, default=argparse.SUPPRESS, help=DB_HELP
+    )
 
 
 PASSWORD_IN_PS = (
@@ -96,6 +98,26 @@ def weighting_name(args: argparse.Namespace) -> str | None:
     if target is not None and virtual is not None:
         raise WeightingArgumentError("give --target NAME or --virtual NAME, not both")
     return f"{VIRTUAL_PREFIX}{virtual}" if virtual is not None else target
+
+
+def file_name(text: str) -> str:
+    """An argparse type for a file's or a folder's name: not empty.  The
+    shell's `''`, or `"$OUT"` with OUT unset, is a name to argparse; as a
+    path it is the current folder, and each verb said something else of it
+    (`.: a directory`, `cannot write .`, or wrote its default file)."""
+    return _not_blank(text, "a file's name")
+
+
+def database_address(text: str) -> str:
+    """An argparse type for --db: not empty (an empty --db was taken for no
+    --db, and the default database opened without a word)."""
+    return _not_blank(text, "a database file or a postgresql:// address")
+
+
+def _not_blank(text: str, expected: str) -> str:
+    if not text.strip():
+        raise argparse.ArgumentTypeError(f"{text!r}: expected {expected}")
+    return text
 
 
 def whole_number(text: str, minimum: int = 0) -> int:
@@ -175,9 +197,11 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
         default="skinny",
         help="the JACK body model the .fig is for (report figure 2; default skinny)",
     )
-    parser.add_argument("--girth", metavar="F", help="girth population file")
-    parser.add_argument("--jntlmt", metavar="F", help="joint-limit population file")
-    parser.add_argument("--cmass", metavar="F", help="center-of-mass population file")
+    parser.add_argument("--girth", metavar="F", type=file_name, help="girth population file")
+    parser.add_argument("--jntlmt", metavar="F", type=file_name, help="joint-limit population file")
+    parser.add_argument(
+        "--cmass", metavar="F", type=file_name, help="center-of-mass population file"
+    )
     parser.add_argument(
         "--target",
         metavar="NAME",
@@ -190,6 +214,7 @@ def add_figure_options(parser: argparse.ArgumentParser) -> None:
         "--global",
         dest="global_file",
         metavar="F",
+        type=file_name,
         help="stature and mass statistics file (default: FILE-global.dat beside --girth FILE, "
         "as sass population writes it)",
     )
