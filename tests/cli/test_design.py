@@ -132,6 +132,12 @@ def test_the_table_says_how_the_exclusion_was_split(people_db, capsys, split, sa
         ("stature = ?", "? is solved only"),
         ("(stature <= ? OR mass <= ?)", "a limit with ? is one field's"),
         ("stature <= 180 cm", "no limit has an unknown"),
+        # one value asked twice would take two shares of the exclusion
+        (
+            "stature <= ? AND mass <= ? AND mass<=?",
+            "mass<=?: the upper limit of mass is asked for twice (also by mass <= ?); ask for it once",
+        ),
+        ("stature <= ? AND stature BETWEEN 150 cm AND ?", "the upper limit of stature is asked"),
     ],
 )
 def test_bad_designs_are_one_line(people_db, capsys, limits, says):

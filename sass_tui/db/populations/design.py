@@ -168,6 +168,26 @@ def person_weights(
     return w
 
 
+def _refuse_an_end_asked_twice(
+    terms: Sequence[tuple[str, Expr]], specs: Sequence[LimitSpec | None]
+) -> None:
+    """`mass <= ? AND mass <= ?` asks one value twice: the two limits would take
+    two shares of the exclusion for what is one limit."""
+    asked: dict[tuple[str, str], str] = {}
+    for (text, _expr), spec in zip(terms, specs):
+        if spec is None:
+            continue
+        for end, value in (("lower", spec.low), ("upper", spec.high)):
+            if value is None or not math.isnan(value):
+                continue
+            if (spec.field, end) in asked:
+                raise DesignError(
+                    f"{text}: the {end} limit of {spec.field} is asked for twice "
+                    f"(also by {asked[spec.field, end]}); ask for it once"
+                )
+            asked[spec.field, end] = text
+
+
 def design(
     conn: sqlite3.Connection,
     limits: str | ParsedQuery,
@@ -187,6 +207,7 @@ def design(
         compile_conjuncts(limit_query)  # refuses an OR at the top level, pointing at it
     if not designed:
         raise DesignError("no limit has an unknown ?; write e.g. stature <= ? (sass fit checks)")
+    _refuse_an_end_asked_twice(compile_terms, specs_of)
     specs = [s for s in specs_of if s is not None]
     if split is not None and len(split) != len(specs):
         raise DesignError(
