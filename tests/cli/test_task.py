@@ -120,7 +120,10 @@ def test_a_forward_lean_needs_hip_extension(capsys):
         (["--left-load", "10 kg", "--left-direction", "down"], "is a mass: the hand holds"),
         (["--left-load", "abc"], "expected a number"),
         (["--left-load", "10", "--left-direction=0,0,0"], "the zero vector has no direction"),
-        (["--left-load", "-5"], "--left-load -5.0 N: expected a force of 0 or more"),
+        (["--left-load", "-5"], "--left-load '-5': expected a force or a mass of 0 or more"),
+        # said as typed (it said "--left-load -98.10000000000001 N")
+        (["--left-load", "-10kg"], "--left-load '-10kg': expected a force or a mass of 0 or more"),
+        (["shoulder_y=90", "shoulder_y=45"], "'shoulder_y=45': shoulder_y is given twice"),
         (["knee_q=10", "--left-load", "10"], "unknown joint 'knee_q'"),
         (["--left-load", "10", "--person", "1", "--mass", "70"], "leave out --mass"),
     ],

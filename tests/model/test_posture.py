@@ -119,6 +119,11 @@ def test_the_neck_has_no_side_and_keeps_to_the_reports_neck_limits(figure):
         (["elbow=30"], "unknown joint 'elbow'"),
         (["shoulder_y"], r"expected JOINT=ANGLE, e.g. shoulder_y=90$"),
         (["cm"], r"'cm' is a unit: write it against its number, as in 12cm"),
+        (
+            ["trunk_y=10", "trunk_y=20"],
+            r"'trunk_y=20': trunk_y is given twice \(also 'trunk_y=10'\)",
+        ),
+        (["left_knee_y=10", "knee_y=20"], r"knee_y is given twice \(also 'left_knee_y=10'\)"),
         (["shoulder_y=nan"], "shoulder_y=nan"),
         (["elbow_y=abc"], "elbow_y=abc"),
     ],
@@ -126,6 +131,11 @@ def test_the_neck_has_no_side_and_keeps_to_the_reports_neck_limits(figure):
 def test_bad_angles_name_the_joint(items, message):
     with pytest.raises(PostureError, match=message):
         parse_angles(items)
+
+
+def test_a_sides_word_after_the_word_for_both_sides_sets_that_side():
+    angles = parse_angles(["shoulder_y=90", "left_shoulder_y=45"])
+    assert angles[("left", "shoulder_y")] == 45 and angles[("right", "shoulder_y")] == 90
 
 
 def test_an_angle_beyond_the_joint_limit_is_refused(figure):

@@ -125,8 +125,13 @@ def _unit_hint(item: str) -> str:
 
 
 def parse_angles(items: list[str]) -> Angles:
-    """['shoulder_y=90', 'left_elbow_y=1.5 rad'] -> {('left', 'shoulder_y'): 90, ...}."""
+    """['shoulder_y=90', 'left_elbow_y=1.5 rad'] -> {('left', 'shoulder_y'): 90, ...}.
+
+    A joint is given once: a side's word may follow the word for both sides
+    (`shoulder_y=90 left_shoulder_y=45`: the left arm at 45), any other
+    repeat is refused rather than the last word silently kept."""
     out: Angles = {}
+    given: dict[tuple[str, str], tuple[str, bool]] = {}  # -> (the word, for both sides)
     for item in items:
         name, sep, value = item.partition("=")
         key = name.strip().lower().replace(".", "_")
@@ -156,6 +161,10 @@ def parse_angles(items: list[str]) -> Angles:
         if not math.isfinite(degrees):
             raise PostureError(f"{item!r}: the angle is not a finite number")
         for side in sides:
+            earlier = given.get((side, key))
+            if earlier is not None and not (earlier[1] and len(sides) == 1):
+                raise PostureError(f"{item!r}: {name.strip()} is given twice (also {earlier[0]!r})")
+            given[(side, key)] = (item, len(sides) == 2)
             out[(side, key)] = degrees
     return out
 

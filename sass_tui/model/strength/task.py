@@ -133,7 +133,7 @@ def hand_load(
     side: str, force: float, direction: npt.ArrayLike, mass: float | None = None
 ) -> HandLoad:
     if not (math.isfinite(force) and force >= 0):
-        raise TaskError(f"--{side}-load {force!r} N: expected a force of 0 or more")
+        raise TaskError(f"--{side}-load {force:g} N: expected a force of 0 or more")
     return HandLoad(side, float(force), check_direction(direction, f"--{side}-direction"), mass)
 
 
@@ -150,6 +150,8 @@ def load_of(side: str, text: str, direction: str | None = None) -> HandLoad:
         except SassError:
             raise TaskError(f"--{side}-load {text.strip()!r}: {as_force}") from None
         force = mass * GRAVITY
+    if force < 0:  # said as typed, not as the force a mass converts to
+        raise TaskError(f"--{side}-load {text.strip()!r}: expected a force or a mass of 0 or more")
     if mass is not None and direction is not None and direction.strip().lower() != "up":
         raise TaskError(
             f"--{side}-load {text.strip()!r} is a mass: the hand holds its weight up; "
