@@ -41,6 +41,8 @@ def mix_argument(text: str) -> dict[str, float]:
                 f"{part.strip()!r}: expected GENDER=WEIGHT with GENDER one of "
                 f"{', '.join(GENDERS)}, e.g. male=0.5,female=0.5"
             )
+        if gender in mix:
+            raise argparse.ArgumentTypeError(f"{part.strip()!r}: {gender} is given twice")
         try:
             mix[gender] = float(weight)
         except ValueError:

@@ -9,8 +9,11 @@ import json
 import os
 
 import pytest
+from hypothesis import assume, given
+from hypothesis import strategies as st
 
 from sass_tui.cli import main
+from sass_tui.cli.fit import mix_argument
 from sass_tui.db.populations.fit import FitError, check_mix
 
 
@@ -20,6 +23,26 @@ def test_one_gender_of_the_mix_leaves_the_rest_to_the_other():
     assert check_mix({"female": 1.0}) == {"female": 1.0}  # no rest: the women alone
     with pytest.raises(FitError, match=r"male=1.5 alone is a share from 0 to 1"):
         check_mix({"male": 1.5})
+
+
+@given(st.floats(0, 1e308), st.floats(0, 1e308))
+def test_a_mix_of_any_two_weights_is_their_shares(male, female):
+    """The shares are the weights' proportions, whatever their size: 1e308
+    and 1e308 added up to infinity, and the weighted share was printed '-'."""
+    assume(max(male, female) > 0)
+    shares = check_mix(mix_argument(f"male={male!r},female={female!r}"))
+    assert sum(shares.values()) == pytest.approx(1.0)
+    largest = max(male, female)
+    assert shares["male"] * (female / largest) == pytest.approx(
+        shares["female"] * (male / largest), abs=1e-12
+    )
+
+
+def test_a_gender_given_twice_in_the_mix_is_refused(capsys):
+    with pytest.raises(SystemExit):
+        main(["fit", "--mix", "male=1,male=2", "stature <= 190 cm"])
+    # it said "male=2 alone is a share from 0 to 1"
+    assert "argument --mix: 'male=2': male is given twice" in capsys.readouterr().err
 
 
 def test_fit_mix_male_alone_is_male_and_female_together(shared_target, capsys):

@@ -312,10 +312,12 @@ def check_mix(mix: dict[str, float] | None) -> dict[str, float]:
         # rounded: 1 - 0.8 is 0.19999999999999996 in binary, and male=0.8 is male=0.8,female=0.2
         rest = round(1.0 - share, 12)
         mix = {gender: share, other: rest} if rest > 0 else {gender: share}
-    total = sum(mix.values())
-    if total <= 0:
+    largest = max(mix.values())
+    if largest <= 0:
         raise FitError("mix: the weights add up to 0; give at least one gender a weight > 0")
-    return {g: mix[g] / total for g in GENDERS if g in mix}
+    # scaled by the largest first: male=1e308,female=1e308 add up to infinity
+    total = sum(weight / largest for weight in mix.values())
+    return {g: mix[g] / largest / total for g in GENDERS if g in mix}
 
 
 def fit_test(
