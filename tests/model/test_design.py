@@ -60,6 +60,21 @@ def test_two_limits_share_the_exclusion_and_reach_the_joint_share():
     )
 
 
+def test_shares_of_any_size_split_as_their_proportions():
+    """--split 1e308,1e308 added up to infinity: a ZeroDivisionError traceback."""
+    rng = np.random.default_rng(3)
+    data = rng.multivariate_normal([170, 75], [[64, 40], [40, 144]], 3000)
+    w = np.ones(3000)
+    specs = [LimitSpec("stature", "cm", None, UNKNOWN), LimitSpec("mass", "kg", None, UNKNOWN)]
+
+    def limits(split: list[float]) -> list[float | None]:
+        design = solve(specs, data, w, np.ones(3000, dtype=bool), 95.0, split=split)
+        return [limit.high for limit in design.limits]
+
+    assert limits([1e308, 1e308]) == limits([1.0, 1.0])
+    assert limits([2e307, 1e307]) == limits([2.0, 1.0])
+
+
 def test_one_unknown_is_the_weighted_quantile():
     x = np.arange(1.0, 101.0)
     spec = LimitSpec("stature", "cm", None, UNKNOWN)

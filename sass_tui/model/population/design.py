@@ -182,8 +182,9 @@ def solve(
     )
     if len(shares) != k or np.any(shares < 0) or not np.isfinite(shares).all():
         raise DesignError("--split: one share >= 0 per limit with a ?")
-    if shares.sum() <= 0:
+    if shares.max() <= 0:
         raise DesignError("--split: the shares of the limits with a ? add up to 0")
+    shares = shares / shares.max()  # first: 1e308 and 1e308 add up to infinity
     shares = shares / shares.sum()
     fractions = list(range_split) if range_split is not None else [None] * k
     quantiles = [_Cuts(values[:, j], w) if solving[j] else None for j in range(k)]
