@@ -136,7 +136,7 @@ def read_id_file(name: str) -> list[int]:
     # not a FIFO, which would block the read; a huge file is refused unread
     path = regular_file(name, largest=LARGEST_ID_LIST, kind="a list of person ids")
     try:
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")  # Excel's CSV has a byte-order mark
     except UnicodeDecodeError as exc:
         raise OSError(f"{name}: not a text file of person ids ({exc.reason})") from None
     except OSError as exc:

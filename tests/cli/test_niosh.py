@@ -60,7 +60,7 @@ def test_a_job_file_gives_the_composite_index(capsys, tmp_path):
     job = tmp_path / "job.csv"
     job.write_text(
         "name,load,h,v,d,f,coupling\na,10,25cm,75cm,25cm,1,good\nb,10,25cm,75cm,25cm,2,good\n",
-        encoding="utf-8",
+        encoding="utf-8-sig",  # as Excel's "CSV UTF-8" writes it: the first column was '\ufeffname'
     )
     answer = niosh(capsys, "--tasks", str(job), "--duration", "long")
     # FIRWL 23 each; STLI 10/(23 x .75) and 10/(23 x .65): b first; CLI = STLI_b
@@ -86,7 +86,8 @@ def test_a_posture_file_gives_the_origin(capsys, tmp_path):
         "vc7": [0.0, 1.45, 0.0],
     }
     posture = tmp_path / "posture.json"
-    posture.write_text(json.dumps(points), encoding="utf-8")
+    # with the byte-order mark a Windows editor writes first (it was no JSON then)
+    posture.write_text(json.dumps(points), encoding="utf-8-sig")
     answer = niosh(capsys, "--posture", str(posture), "--d", "50cm", "--f", "1")
     # H from below L5: 0.35 m; V 0.80 m
     assert answer["inputs"]["h"] == pytest.approx(35.0)

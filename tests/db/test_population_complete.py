@@ -106,8 +106,10 @@ def test_a_list_of_25_ids_makes_a_complete_figure(engine_db, shared_target, tmp_
         )
     ]
     assert len(ids) == 25 >= MIN_PEOPLE
-    listed = tmp_path / "chosen.txt"
-    listed.write_text("".join(f"{i}\n" for i in ids))
+    listed = tmp_path / "chosen.csv"
+    # as Excel's "CSV UTF-8" saves it: a byte-order mark before the header
+    # (the header read '\ufeffid', "not a person id")
+    listed.write_text("id\n" + "".join(f"{i}\n" for i in ids), encoding="utf-8-sig")
     girth, cmass = _make(shared_target, tmp_path / "chosen.dat", "--ids", str(listed))
     _complete(girth, GIRTH, {"male"})
     _complete(cmass, CENTER_OF_MASS, {"male"})

@@ -82,7 +82,8 @@ def parse_fig(text: str, name: str = "<text>") -> FigFile:
 def read_fig(path: str | Path) -> FigFile:
     # a FIFO or a device would never end; a huge file is refused unread
     path = regular_file(path, largest=LARGEST_TEXT_FILE, kind="a .fig file")
-    return parse_fig(path.read_text(encoding="utf-8"), str(path))
+    # utf-8-sig: a .fig edited in a Windows editor starts with a byte-order mark
+    return parse_fig(path.read_text(encoding="utf-8-sig"), str(path))
 
 
 def _describe(terminal: str) -> str:

@@ -150,11 +150,12 @@ def read_user_text(
 ) -> tuple[Path, str]:
     """A data file the user names (a population or strength file): its path
     (`regular_file`, at most `largest` bytes) and its text, UTF-8 or else
-    Latin-1 (a file of the report's time has no other).  PathError, `reason`
-    saying why, when it cannot be read."""
+    Latin-1 (a file of the report's time has no other), without the
+    byte-order mark Windows editors and Excel's "CSV UTF-8" put first.
+    PathError, `reason` saying why, when it cannot be read."""
     path = regular_file(text, largest=largest, kind=kind)
     try:
-        return path, path.read_text(encoding="utf-8")
+        return path, path.read_text(encoding="utf-8-sig")
     except UnicodeDecodeError:
         return path, path.read_text(encoding="latin-1")
     except OSError as exc:
