@@ -39,6 +39,7 @@ from sass_tui.model.population.prediction import (
     field_unit,
     split_known,
 )
+from sass_tui.model.text import other_separator
 from sass_tui.model.units import UnitError, parse_quantity
 from sass_tui.model.vocabulary import GENDERS
 
@@ -277,6 +278,9 @@ def predict_csv(predictor: Predictor, gender: str, source: str, target: str) -> 
     if not rows:
         raise PredictArgumentError(f"{source}:1: the file is empty; expected a header row")
     header, body = rows[0], rows[1:]
+    wrong = other_separator(header)
+    if wrong is not None:
+        raise PredictArgumentError(f"{source}:1: {wrong}", where=f"{source}:1")
     fields = predictor.fields(gender)
     known_cols: list[int] = []
     known_fields: list[str] = []

@@ -203,3 +203,20 @@ def without_password(address: str) -> str:
         pieces += [text[last:start], "***"]
         last = end
     return "".join(pieces) + text[last:]
+
+
+def other_separator(header: list[str]) -> str | None:
+    """Why a CSV header of one cell is no header, when that cell holds
+    semicolons or tabs: a spreadsheet set for a decimal comma saves its CSV
+    with ';' between cells, and tab-separated text is no CSV either; None
+    for any other header."""
+    if len(header) != 1:
+        return None
+    if ";" in header[0]:
+        return (
+            "the cells are separated by ';', not commas (as a spreadsheet set for a decimal "
+            "comma saves CSV): save it with commas between cells and points in numbers"
+        )
+    if "\t" in header[0]:
+        return "the cells are separated by tabs, not commas: save it as CSV"
+    return None

@@ -207,6 +207,9 @@ def test_batch_errors_name_file_and_line(db, tmp_path, capsys):
     source.write_text("id,height\n1,175\n")
     assert main([*argv, "--output", str(target)]) == 2
     assert "no column names a known value" in capsys.readouterr().err
+    source.write_text("id;stature\n1;175\n")  # a spreadsheet set for a decimal comma
+    assert main([*argv, "--output", str(target)]) == 2
+    assert f"{source}:1: the cells are separated by ';', not commas" in capsys.readouterr().err
     assert not target.exists()
 
 

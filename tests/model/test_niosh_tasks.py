@@ -54,7 +54,11 @@ def test_inches_choose_the_us_form():
         ("h,v,f,load\n30,70,2\n", "j.csv", "j.csv:2", "3 cells, the header has 4"),
         ("h,v,f,load\n30,seventy,2,8\n", "j.csv", "j.csv:2", "expected a number"),
         ("h,v,f\n30,70,2\n", "j.csv", "j.csv:2", "no load"),
-        ("h,v,f,load,x\n30,70,2,8,1\n", "j.csv", "j.csv:2", "unknown column 'x'"),
+        # the header's line, where the column is (it said j.csv:2)
+        ("h,v,f,load,x\n30,70,2,8,1\n", "j.csv", "j.csv:1", "unknown column 'x'"),
+        ("# a job\nh,v,f,load,x\n", "j.csv", "j.csv:2", "unknown column 'x'"),
+        ("h;v;f;load\n30;70;2;8\n", "j.csv", "j.csv:1", "the cells are separated by ';'"),
+        ("h\tv\tf\tload\n30\t70\t2\t8\n", "j.csv", "j.csv:1", "separated by tabs"),
         ("h,v,f,load,coupling\n30,70,2,8,great\n", "j.csv", "j.csv:2", "expected good"),
         ("h,v,f,load,load_max\n30,70,2,8,5\n", "j.csv", "j.csv:2", "load_max is below"),
         (

@@ -48,6 +48,8 @@ def test_survey_names_are_the_persons_stature_and_mass():
         ("measure.sitingheight,stature,mass\n1,2,3\n", "s.csv:1: column 1", "sittingheight"),
         ("stature,stature[in],mass\n1,2,3\n", "s.csv:1: column 2", "repeats column 1"),
         ("", "s.csv:1", "empty"),
+        # said "no column for stature, mass", or with --gender "no gender column"
+        ("stature;mass\n160;60\n", "s.csv:1", "the cells are separated by ';', not commas"),
         (
             "stature,mass\n1e6,60\n",
             "s.csv:2: column 1 'stature'",

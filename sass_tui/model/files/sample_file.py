@@ -32,7 +32,7 @@ from sass_tui.model.errors import SassError
 from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.population.prediction import field_unit
 from sass_tui.model.population.target_sample import Sample, SampleError, is_survey_weight
-from sass_tui.model.text import quoted
+from sass_tui.model.text import other_separator, quoted
 from sass_tui.model.units import UnitError, convert, parse_quantity, unit_name
 from sass_tui.model.vocabulary import GENDERS
 
@@ -86,6 +86,9 @@ def read_sample(
         raise SampleError(f"{where}:1: the file is empty; expected a header row") from None
     except csv.Error as exc:
         raise SampleError(f"{where}:1: {exc}", where=f"{where}:1") from None
+    wrong = other_separator(header)
+    if wrong is not None:
+        raise SampleError(f"{where}:1: {wrong}", where=f"{where}:1")
     columns: dict[str, tuple[int, str, str]] = {}  # field -> (column, unit, header)
     for c, cell in enumerate(header):
         match = _HEADER.match(cell)

@@ -26,7 +26,7 @@ from sass_tui.model.strength.niosh_input import (
     load,
     travel,
 )
-from sass_tui.model.text import quoted
+from sass_tui.model.text import other_separator, quoted
 from sass_tui.model.units import UnitError, quantity_unit
 
 COLUMNS = (
@@ -131,6 +131,7 @@ def _csv_rows(text: str, file: str) -> list[tuple[int, dict[str, str]]]:
                 continue
             if header is None:
                 header = [cell.strip().lower() for cell in fields]
+                _check_header(header, f"{file}:{line}")
                 continue
             if len(fields) != len(header):
                 raise NioshError(
@@ -144,6 +145,19 @@ def _csv_rows(text: str, file: str) -> list[tuple[int, dict[str, str]]]:
     if header is None:
         raise NioshError("no header row (name,load,h,v,d,a,f,coupling,...)", where=file)
     return rows
+
+
+def _check_header(header: list[str], where: str) -> None:
+    """A CSV header's unknown column, said at the header's line (the rows
+    below would each say it)."""
+    wrong = other_separator(header)
+    if wrong is not None:
+        raise NioshError(wrong, where=where)
+    unknown = [name for name in header if name and name not in COLUMNS]
+    if unknown:
+        raise NioshError(
+            f"unknown column {quoted(unknown[0])} (expected {', '.join(COLUMNS)})", where=where
+        )
 
 
 def _json_rows(text: str, file: str) -> list[tuple[int, dict[str, str]]]:
