@@ -20,7 +20,7 @@ from types import ModuleType
 from typing import Any, NamedTuple, cast
 
 from sass_tui.cli.common.options import DB_HELP, SubParsers, database_address, file_name
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, error_text
 from sass_tui.model.text import printable
 
 
@@ -296,11 +296,11 @@ def run_verb(args: argparse.Namespace) -> int:
         return 130
     except (SassError, OSError) as exc:
         # Messages quote file names and file text: show no control characters.
-        said = exc
+        shown = exc
         if isinstance(exc, OSError) and exc.filename is None and exc.errno in _OUTPUT_FULL:
             # a full disk or quota under `> file`: it said only "[Errno 28] ..."
-            said = OSError(f"cannot write the output (standard output): {exc.strerror}")
-        print(f"sass {args.command}: error: {printable(said)}", file=sys.stderr)
+            shown = OSError(f"cannot write the output (standard output): {exc.strerror}")
+        print(f"sass {args.command}: error: {printable(error_text(shown))}", file=sys.stderr)
         pointer = exc.pointer() if isinstance(exc, SassError) else ""
         for line in pointer.splitlines():
             print(printable(line), file=sys.stderr)

@@ -25,3 +25,16 @@ class SassError(Exception):
     def pointer(self) -> str:
         """Extra lines that show the fault (a caret under a query column); may be empty."""
         return ""
+
+
+def error_text(exc: BaseException) -> str:
+    """What an error the edges catch tells a user: its message; for an
+    operating system's error, the file and the reason without Python's
+    "[Errno 36]" (`x.db: File name too long`)."""
+    if isinstance(exc, OSError) and exc.errno is not None and exc.strerror:
+        if exc.filename is None:
+            return exc.strerror
+        if exc.filename2 is not None:
+            return f"{exc.filename} -> {exc.filename2}: {exc.strerror}"
+        return f"{exc.filename}: {exc.strerror}"
+    return str(exc)

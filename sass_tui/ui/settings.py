@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, error_text
 from sass_tui.model.files.atomic import write_text_atomic
 from sass_tui.model.files.paths import config_dir
 
@@ -34,5 +34,5 @@ def save_setting(name: str, value: object) -> str | None:
         path.parent.mkdir(parents=True, exist_ok=True)
         write_text_atomic(path, json.dumps(settings, indent=2) + "\n")
     except (OSError, SassError) as exc:
-        return str(exc)
+        return error_text(exc)
     return None

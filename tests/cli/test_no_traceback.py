@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import errno
 import json
 
 import pytest
 
 from sass_tui.cli import main
+from sass_tui.model.errors import error_text
 
 POSTURE = {
     "l_metacarpophalangeal_3": [0.3, 1.0, 0.4], "l_radiocarpal": [0.3, 1.0, 0.3],
@@ -90,3 +92,24 @@ def test_a_command_line_of_thousands_of_words_is_refused_at_once(capsys):
     """argparse's time grows with the square of the words: 54,000 took 35 s."""
     assert main(["stats", *(["--gender", "male"] * 5000)]) == 2
     assert "10,001 arguments; sass takes at most 1,000" in capsys.readouterr().err
+
+
+def test_an_operating_system_error_is_said_without_its_errno(tmp_path, capsys):
+    """`sass --db` of a name too long for the file system said Python's
+    `[Errno 36] File name too long: '…'`; the TUI's Save As said the same."""
+    name = tmp_path / ("a" * 300 + ".db")
+    assert main(["--db", str(name), "query", "--count", "stature > 150 cm"]) == 2
+    err = _one_line_error(capsys, "query")
+    assert err == f"sass query: error: {name}: File name too long\n"
+
+
+def test_an_error_is_said_as_its_file_and_reason():
+    assert error_text(OSError(errno.ENAMETOOLONG, "File name too long", "x.db")) == (
+        "x.db: File name too long"
+    )
+    assert error_text(OSError(errno.EXDEV, "Invalid cross-device link", "a", None, "b")) == (
+        "a -> b: Invalid cross-device link"
+    )
+    assert error_text(OSError(errno.ENOSPC, "No space left on device")) == "No space left on device"
+    assert error_text(OSError("made by sass: said as it is")) == "made by sass: said as it is"
+    assert error_text(ValueError("x")) == "x"

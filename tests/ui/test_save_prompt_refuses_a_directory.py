@@ -45,6 +45,12 @@ def test_create_figure_and_export_refuse_a_directory_without_asking(app_at, driv
             said = message(app)
             assert "Overwrite" not in said
             assert "it is a directory" in said, said
+            # a name the file system refuses: said without Python's "[Errno 36]"
+            too_long = tmp_path / ("a" * 300 + ".json")
+            await pilot.press("S")  # Save worksheet as
+            await answer(pilot, str(too_long))
+            await settle(pilot)
+            assert message(app) == f"{too_long}: File name too long", message(app)
         assert folder.is_dir() and list(folder.iterdir()) == []
 
     drive(scenario())

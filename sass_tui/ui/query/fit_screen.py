@@ -26,6 +26,7 @@ from sass_tui.db.populations.design import format_design
 from sass_tui.db.populations.fit import LimitHistogram
 from sass_tui.db.populations.fit_table import format_table
 from sass_tui.db.query.lists import DB_ERRORS, QueryLists
+from sass_tui.model.errors import error_text
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import Work, WorkBar
 from sass_tui.ui.query.target_picker import weighted_words
@@ -167,7 +168,7 @@ class FitScreen(WeightedWorkScreen):
                 )
                 text = format_table(result)
         except DB_ERRORS as exc:
-            self.post_message(FitDone(error=str(exc)))
+            self.post_message(FitDone(error=error_text(exc)))
             return
         self.post_message(FitDone(text, histograms))
 

@@ -10,7 +10,7 @@ from textual import work
 from sass_tui.db.people.ansur import DEFAULT_LABEL, looks_like_ansur
 from sass_tui.db.people.flatfile import FlatFiles
 from sass_tui.db.query.lists import DB_ERRORS, QueryLists
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, error_text
 from sass_tui.ui.progress import Work
 from sass_tui.ui.query.query_base import QueryScreenBase
 from sass_tui.ui.query.query_messages import ImportFinished
@@ -104,7 +104,7 @@ class InputDbCommands(QueryScreenBase):
         try:
             count = lists.import_ansur(path, label, work.report, work.cancel)
         except DB_ERRORS as exc:
-            self.post_message(ImportFinished(None, str(exc)))
+            self.post_message(ImportFinished(None, error_text(exc)))
             return
         self.post_message(ImportFinished(count))
 
@@ -118,7 +118,7 @@ class InputDbCommands(QueryScreenBase):
         try:
             count = lists.import_files(files, work.report, work.cancel)
         except DB_ERRORS as exc:
-            self.post_message(ImportFinished(None, str(exc)))
+            self.post_message(ImportFinished(None, error_text(exc)))
             return
         self.post_message(ImportFinished(count))
 

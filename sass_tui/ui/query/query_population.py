@@ -16,6 +16,7 @@ from sass_tui.db.populations.population import people_words
 from sass_tui.db.populations.population_files import write_population_files
 from sass_tui.db.progress import Steps
 from sass_tui.db.query.lists import DB_ERRORS, QueryLists
+from sass_tui.model.errors import error_text
 from sass_tui.model.names import GLOBAL, GROUP_TITLES
 from sass_tui.ui.progress import Work
 from sass_tui.ui.query.fit_screen import FitScreen
@@ -106,7 +107,7 @@ class PopulationCommands(QueryScreenBase):
             Steps(cancel=work.cancel, what="making the population").check()  # last chance
             paths = write_population_files(result, target)
         except DB_ERRORS as exc:
-            self.post_message(PopulationMade(error=str(exc)))
+            self.post_message(PopulationMade(error=error_text(exc)))
             return
         self.post_message(PopulationMade(result, paths))
 
@@ -203,7 +204,7 @@ class PopulationCommands(QueryScreenBase):
             path.parent.mkdir(parents=True, exist_ok=True)
             paths = write_population_files(result, path)
         except DB_ERRORS as exc:
-            self.post_message(PopulationMade(error=str(exc)))
+            self.post_message(PopulationMade(error=error_text(exc)))
             return
         self.post_message(PopulationMade(result, paths))
 

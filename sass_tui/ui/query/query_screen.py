@@ -22,6 +22,7 @@ from textual.containers import Horizontal
 
 from sass_tui.db.query.lists import DB_ERRORS, QUERY_LIST, SELECTED_LIST, QueryLists
 from sass_tui.db.query.lists import sources as database_sources
+from sass_tui.model.errors import error_text
 from sass_tui.model.text import printable
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import QUERY_BAR_AFTER, Work, WorkBar
@@ -298,7 +299,7 @@ class QueryScreen(InputDbCommands, PopulationCommands, PeopleCommands):
             if target:
                 weighted = weighted_count_words(lists, text, target)
         except DB_ERRORS as exc:
-            self.post_message(QueryFinished(error=str(exc)))
+            self.post_message(QueryFinished(error=error_text(exc)))
             return
         lost = lists.take_lost() or ""
         self.post_message(QueryFinished(count, rows, weighted=weighted, hint=hint, lost=lost))

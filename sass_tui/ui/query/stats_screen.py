@@ -19,6 +19,7 @@ from textual.widgets import Static
 
 from sass_tui.db.populations.stats import format_stats
 from sass_tui.db.query.lists import DB_ERRORS, QueryLists
+from sass_tui.model.errors import error_text
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import Work, WorkBar
 from sass_tui.ui.query.target_picker import weighted_words
@@ -77,7 +78,7 @@ class StatsScreen(WeightedWorkScreen):
         try:
             table = lists.stats(query, target, work.cancel)
         except DB_ERRORS as exc:
-            self.post_message(StatsDone(error=str(exc)))
+            self.post_message(StatsDone(error=error_text(exc)))
             return
         self.post_message(StatsDone(format_stats(table)))
 

@@ -41,7 +41,7 @@ from sass_tui.model.body.hanim import build_humanoid
 from sass_tui.model.body.outline import Outline
 from sass_tui.model.body.posed_outline import posed_outline
 from sass_tui.model.body.posture import Angles, pose_figure
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, error_text
 from sass_tui.model.files.task_settings import TaskSettings
 from sass_tui.model.strength.hands_at import split_posture
 from sass_tui.model.strength.published_strength import GENDER_WORDS
@@ -273,7 +273,7 @@ class TaskPanel(Vertical):
         try:
             answer, curves, shown = assess(task)
         except (SassError, OSError) as exc:
-            self.post_message(self.Assessed(task, None, {}, str(exc)))
+            self.post_message(self.Assessed(task, None, {}, error_text(exc)))
             return
         self.post_message(self.Assessed(task, answer, curves, shown=shown))
 

@@ -16,7 +16,7 @@ from textual.widget import Widget
 from textual.widgets import Input, Label
 from textual.widgets.input import Selection
 
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, error_text
 from sass_tui.ui.textual_api import forward_event
 from sass_tui.ui.widgets.editor import run_own_binding
 from sass_tui.ui.widgets.formats import printable_lines
@@ -235,7 +235,7 @@ class MessageLine(Horizontal):
         try:
             yield
         except USER_ERRORS as exc:
-            self.complain(str(exc))
+            self.complain(error_text(exc))
         finally:
             self._held = False
             self._early.clear()
@@ -354,7 +354,7 @@ class MessageLine(Horizontal):
         try:
             handler()
         except USER_ERRORS as exc:
-            self.complain(str(exc))
+            self.complain(error_text(exc))
 
     def on_input_submitted(self, event: Input.Submitted) -> None:
         event.stop()
