@@ -31,10 +31,13 @@ def error_text(exc: BaseException) -> str:
     """What an error the edges catch tells a user: its message; for an
     operating system's error, the file and the reason without Python's
     "[Errno 36]" (`x.db: File name too long`)."""
-    if isinstance(exc, OSError) and exc.errno is not None and exc.strerror:
+    text = str(exc)
+    # only the operating system's own words: sass's OSErrors (model/files/atomic.py
+    # OutputFileError) have theirs
+    if isinstance(exc, OSError) and exc.strerror and text.startswith(f"[Errno {exc.errno}] "):
         if exc.filename is None:
             return exc.strerror
         if exc.filename2 is not None:
             return f"{exc.filename} -> {exc.filename2}: {exc.strerror}"
         return f"{exc.filename}: {exc.strerror}"
-    return str(exc)
+    return text

@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import errno
 import json
+from pathlib import Path
 
 import pytest
 
 from sass_tui.cli import main
 from sass_tui.model.errors import error_text
+from sass_tui.model.files.atomic import OutputFileError
 
 POSTURE = {
     "l_metacarpophalangeal_3": [0.3, 1.0, 0.4], "l_radiocarpal": [0.3, 1.0, 0.3],
@@ -113,3 +115,5 @@ def test_an_error_is_said_as_its_file_and_reason():
     assert error_text(OSError(errno.ENOSPC, "No space left on device")) == "No space left on device"
     assert error_text(OSError("made by sass: said as it is")) == "made by sass: said as it is"
     assert error_text(ValueError("x")) == "x"
+    written = OutputFileError(Path("x.fig"), "no such directory: .")
+    assert error_text(written) == str(written) == "cannot write x.fig: no such directory: ."
