@@ -124,7 +124,10 @@ def metres_hint(text: str, point: np.ndarray) -> str | None:
 
 
 def run(args: argparse.Namespace) -> int:
-    point = parse_point(args.point) if args.point is not None else None
+    try:
+        point = parse_point(args.point) if args.point is not None else None
+    except ReachError as exc:  # the model's words name no option (the TUI asks for a point too)
+        raise ReachError(f"--point {exc}") from None
     hint = None if point is None else metres_hint(args.point, point)
     if hint is not None:
         print(hint, file=sys.stderr)

@@ -295,7 +295,7 @@ def test_known_needs_a_gender(capsys):
 @pytest.mark.parametrize(
     "argv, words",
     [
-        (["--point", "1,2"], "expected X,Y,Z"),
+        (["--point", "1,2"], "--point '1,2': expected X,Y,Z"),
         (["--point", "1,2,3 kg"], "not a unit of length"),
         (["--seated", "--with-body", "-o", "x.glb"], "the body is written standing"),
         (["--with-body"], "goes with -o"),

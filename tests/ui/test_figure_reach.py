@@ -54,6 +54,10 @@ def test_r_draws_the_reach_and_p_judges_a_point(drive, app_at):
             assert _columns(app, MISSED)
             await pilot.press("p", *["backspace"] * 20, *"1,2", "enter")
             await wait_until(pilot, lambda: "unchanged" in _said(app), "")
+            # no command-line option named on the screen (it said "--point '1,2'")
+            assert _said(app) == (
+                "The point is unchanged: '1,2': expected X,Y,Z, e.g. 30,120,50 or 0.3,1.2,0.5 m"
+            )
             await pilot.press("r")
             await wait_until(pilot, lambda: view.reach is None, "the reach still drawn")
 

@@ -139,6 +139,11 @@ def test_l_draws_percent_capable_against_the_torque(app_at, drive):
             assert load[0] == 0.0 and shares[0] == pytest.approx(100.0, abs=0.01)
             assert all(a >= b for a, b in zip(shares, shares[1:]))
             await pilot.press("l")
+            await type_answer(pilot, "-0")  # was said "capable of -0 N-m"
+            assert screen.message_line.history[-1][1].endswith(
+                "capable of 0 N-m at the peak angle."
+            )
+            await pilot.press("l")
             await type_answer(pilot, "")
             assert screen.load is None and screen.plotted[0][0] == 0.0  # angles again
 

@@ -496,14 +496,12 @@ def parse_point(text: str) -> np.ndarray:
     (3,): three lengths, each with its own unit or the last one's, else cm."""
     parts = [part.strip() for part in text.split(",")]
     if len(parts) != 3 or not all(parts):
-        raise ReachError(
-            f"--point {text.strip()!r}: expected X,Y,Z, e.g. 30,120,50 or 0.3,1.2,0.5 m"
-        )
+        raise ReachError(f"{text.strip()!r}: expected X,Y,Z, e.g. 30,120,50 or 0.3,1.2,0.5 m")
     try:
         unit = _unit_of(parts[-1])
         return np.array([_length(part, unit) for part in parts]) / 100.0
     except UnitError as exc:
-        raise ReachError(f"--point {text.strip()!r}: {exc}") from None
+        raise ReachError(f"{text.strip()!r}: {exc}") from None
 
 
 def _unit_of(part: str) -> str:

@@ -178,7 +178,7 @@ class StrengthCurveScreen(SassScreen):
                 value = parse_quantity(text, "N_m")
                 if not value >= 0:
                     raise PublishedStrengthError(f"torque {text.strip()!r}: expected 0 or more")
-                self.load = value
+                self.load = value + 0.0  # -0 is 0 N-m, and said so
             self.draw()
             if self.capable is not None:
                 self.say(f"{self.capable:.1f} % capable of {self.load:g} N-m at the peak angle.")
