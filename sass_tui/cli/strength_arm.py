@@ -96,7 +96,7 @@ def _figure(args: argparse.Namespace) -> Figure:
 
 def run_arm_force(args: argparse.Namespace) -> int:
     refuse_options(args)
-    direction = parse_direction(args.direction)
+    direction = parse_direction(args.direction, "--direction")
     unit = unit_name(args.unit or "N")
     if args.unit is not None and args.unit not in FORCE_UNITS:
         raise ArmForceError(f"--unit {args.unit}: an arm force is given in N or lbf")

@@ -107,7 +107,9 @@ def run(args: argparse.Namespace) -> int:
         if getattr(args, f"{side}_load") is None and getattr(args, f"{side}_direction"):
             raise TaskError(f"--{side}-direction without --{side}-load: give the force too")
     loads = [
-        load_of(side, text, direction)
+        load_of(
+            side, text, direction, load_name=f"--{side}-load", direction_name=f"--{side}-direction"
+        )
         for side, text, direction in (
             ("left", args.left_load, args.left_direction),
             ("right", args.right_load, args.right_direction),

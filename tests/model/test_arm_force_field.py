@@ -184,9 +184,9 @@ def test_direction_words_and_vectors():
 )
 def test_any_direction_text_is_a_unit_vector_or_a_clear_refusal(text):
     try:
-        v = parse_direction(text)
+        v = parse_direction(text, "--direction")
     except ArmForceError as exc:
-        assert "--direction" in str(exc)
+        assert str(exc).startswith("--direction ")  # the caller's name for it
     else:
         assert math.isclose(float((v * v).sum()), 1.0, rel_tol=1e-9)
 

@@ -31,6 +31,22 @@ def test_a_bad_hand_load_is_refused(text):
         parse_hand_load("left", text)
 
 
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("-10 kg", "the left hand's load '-10 kg': expected a force or a mass of 0 or more"),
+        ("10 kg forward", "the left hand's load '10 kg' is a mass"),
+        ("60 N 0,0,0", "the left hand's direction '0,0,0': the zero vector has no direction"),
+    ],
+)
+def test_the_task_panels_cell_is_named_not_a_command_line_option(text, said):
+    """The Task panel's load cells: the messages named `--left-load` and
+    `--direction`, options of `sass task` and `sass strength`."""
+    with pytest.raises(SassError) as refused:
+        parse_hand_load("left", text)
+    assert str(refused.value).startswith(said) and "--" not in str(refused.value)
+
+
 def test_a_mass_is_held_up_and_another_way_is_refused():
     with pytest.raises(TaskError, match="is a mass: the hand holds its weight up"):
         parse_hand_load("left", "10 kg forward")

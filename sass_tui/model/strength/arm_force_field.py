@@ -201,8 +201,9 @@ def _float(value: float) -> float:
         return math.inf
 
 
-def parse_direction(text: str) -> npt.NDArray[np.float64]:
-    """'up', 'forward', ... or 'X,Y,Z' on HAnim's axes -> the unit vector."""
+def parse_direction(text: str, name: str = "direction") -> npt.NDArray[np.float64]:
+    """'up', 'forward', ... or 'X,Y,Z' on HAnim's axes -> the unit vector;
+    `name`: what a message calls it (a command line's option)."""
     key = text.strip().lower()
     if key in DIRECTIONS:
         return np.array(DIRECTIONS[key])
@@ -213,8 +214,8 @@ def parse_direction(text: str) -> npt.NDArray[np.float64]:
         vector = np.array([])
     words = ", ".join(DIRECTIONS)
     if vector.shape != (3,):
-        raise ArmForceError(f"--direction {text.strip()!r}: expected one of {words}, or X,Y,Z")
-    return check_direction(vector, f"--direction {text.strip()!r}")
+        raise ArmForceError(f"{name} {text.strip()!r}: expected one of {words}, or X,Y,Z")
+    return check_direction(vector, f"{name} {text.strip()!r}")
 
 
 def check_direction(vector: npt.ArrayLike, where: str = "direction") -> npt.NDArray[np.float64]:

@@ -130,17 +130,35 @@ class HandLoad:
 
 
 def hand_load(
-    side: str, force: float, direction: npt.ArrayLike, mass: float | None = None
+    side: str,
+    force: float,
+    direction: npt.ArrayLike,
+    mass: float | None = None,
+    name: str | None = None,
 ) -> HandLoad:
+    """`name`: what the message calls the load (the command line's option)."""
     if not (math.isfinite(force) and force >= 0):
-        raise TaskError(f"--{side}-load {force:g} N: expected a force of 0 or more")
-    return HandLoad(side, float(force), check_direction(direction, f"--{side}-direction"), mass)
+        said = name or f"the {side} hand's load"
+        raise TaskError(f"{said} {force:g} N: expected a force of 0 or more")
+    return HandLoad(
+        side, float(force), check_direction(direction, f"the {side} hand's direction"), mass
+    )
 
 
-def load_of(side: str, text: str, direction: str | None = None) -> HandLoad:
+def load_of(
+    side: str,
+    text: str,
+    direction: str | None = None,
+    *,
+    load_name: str | None = None,
+    direction_name: str | None = None,
+) -> HandLoad:
     """A hand's load from a quantity ('60 N', '15 lbf', '10 kg', '22 lb') and
     the direction the hand exerts it (default up: a weight held).  A mass is
-    its weight held up: another direction is refused."""
+    its weight held up: another direction is refused.  The names are what a
+    message calls the two (the Task panel's cell by default; `sass task` names
+    its options)."""
+    load_name = load_name or f"the {side} hand's load"
     try:
         force = parse_quantity(text, "N")
         mass = None
@@ -148,16 +166,17 @@ def load_of(side: str, text: str, direction: str | None = None) -> HandLoad:
         try:
             mass = parse_quantity(text, "kg")
         except SassError:
-            raise TaskError(f"--{side}-load {text.strip()!r}: {as_force}") from None
+            raise TaskError(f"{load_name} {text.strip()!r}: {as_force}") from None
         force = mass * GRAVITY
     if force < 0:  # said as typed, not as the force a mass converts to
-        raise TaskError(f"--{side}-load {text.strip()!r}: expected a force or a mass of 0 or more")
+        raise TaskError(f"{load_name} {text.strip()!r}: expected a force or a mass of 0 or more")
     if mass is not None and direction is not None and direction.strip().lower() != "up":
         raise TaskError(
-            f"--{side}-load {text.strip()!r} is a mass: the hand holds its weight up; "
+            f"{load_name} {text.strip()!r} is a mass: the hand holds its weight up; "
             f"give a force (N, lbf) to exert it {direction.strip()}"
         )
-    return hand_load(side, force, parse_direction(direction or "up"), mass)
+    toward = parse_direction(direction or "up", direction_name or f"the {side} hand's direction")
+    return hand_load(side, force, toward, mass, load_name)
 
 
 def parse_hand_load(side: str, text: str) -> HandLoad:
