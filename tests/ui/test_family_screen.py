@@ -4,20 +4,36 @@
 from __future__ import annotations
 
 import json
+import threading
 
 import pytest
-from _screen import paste, settle
+from _screen import paste, settle, wait_until
 from textual.widgets import DataTable
 
 from sass_tui.db.people.default import open_database
 from sass_tui.db.people.values import load_values
 from sass_tui.db.populations.family import load_family
+from sass_tui.model.files.family_files import write_family
 from sass_tui.model.files.fig_reader import read_fig
+from sass_tui.ui.query import family_screen
 from sass_tui.ui.query.family_screen import FamilyBuilt, FamilyScreen
 
 
+def _said(app) -> str:
+    return app.screen.message_line.history[-1][1]
+
+
 @pytest.mark.slow
-def test_the_family_table_equals_load_family(db, drive, app_at, tmp_path):
+def test_the_family_table_equals_load_family(db, drive, app_at, tmp_path, monkeypatch):
+    threads: list[str] = []
+
+    def write_family_noting_the_thread(*args):
+        threads.append(
+            "main" if threading.current_thread() is threading.main_thread() else "worker"
+        )
+        return write_family(*args)
+
+    monkeypatch.setattr(family_screen, "write_family", write_family_noting_the_thread)
     conn = open_database(db)
     try:
         expected = load_family(conn, "male", ["stature", "mass"], 0.9)
@@ -42,6 +58,9 @@ def test_the_family_table_equals_load_family(db, drive, app_at, tmp_path):
             await pilot.press("w")
             await paste(pilot, str(tmp_path / "fam"))
             await pilot.press("enter")
+            await wait_until(pilot, lambda: _said(app).startswith("Wrote "), lambda: _said(app))
+            # written by a worker (half a second for 13 manikins): the loop went on
+            assert threads == ["worker"], threads
             written = json.loads((tmp_path / "fam" / "family.json").read_text())
             assert len(written["manikins"]) == len(expected.manikins)
             assert read_fig(tmp_path / "fam" / f"male_{expected.manikins[0].name}.fig")
@@ -84,6 +103,7 @@ def test_w_writes_the_family_it_offered_even_if_another_arrives_meanwhile(
             await pilot.pause()
             await paste(pilot, str(tmp_path / "fam"))
             await pilot.press("enter")
+            await wait_until(pilot, lambda: _said(app).startswith("Wrote "), lambda: _said(app))
             names = sorted(p.name for p in (tmp_path / "fam").glob("*.fig"))
             assert names and all(name.startswith("male_") for name in names), names
 

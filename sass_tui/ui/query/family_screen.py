@@ -22,7 +22,7 @@ from sass_tui.db.engine.database import Database
 from sass_tui.db.populations.family import family_and_scatter
 from sass_tui.db.populations.fit import DEFAULT_POPULATION
 from sass_tui.model.body.figure import Figure
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, error_text
 from sass_tui.model.files.family_files import write_family
 from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.vocabulary import GENDERS
@@ -55,6 +55,15 @@ class FamilyFailed(Message):
     def __init__(self, text: str) -> None:
         super().__init__()
         self.text = text
+
+
+class FamilyWritten(Message):
+    """The writing worker's outcome for the message line: kind "info" or "error"."""
+
+    def __init__(self, text: str, kind: str) -> None:
+        super().__init__()
+        self.text = text
+        self.kind = kind
 
 
 def parse_measures(text: str) -> list[str]:
@@ -191,7 +200,7 @@ class FamilyScreen(SassScreen):
             finally:
                 db.close()
         except (SassError, OSError) as exc:
-            self.post_message(FamilyFailed(f"Cannot build the family: {exc}"))
+            self.post_message(FamilyFailed(f"Cannot build the family: {error_text(exc)}"))
             return
         matrix = people.matrix
         self.post_message(FamilyBuilt(family, list(matrix[:, 0]), list(matrix[:, 1])))
@@ -253,7 +262,27 @@ class FamilyScreen(SassScreen):
         )
 
     def _write_to(self, family: Family, directory: Path) -> None:
-        written = write_family(family, directory, Figure.default(family.gender))
-        self.say(
-            f"Wrote {len(written.manikins)} manikins (.fig, .x3d) and family.json to {directory}."
+        self.say(f"Writing the family's files to {directory} ...")
+        self.write_family_files(family, directory)
+
+    # a family of 13 manikins takes half a second to write: not on the screen's loop
+    @work(thread=True, group="family-write", exit_on_error=False)
+    def write_family_files(self, family: Family, directory: Path) -> None:
+        try:
+            written = write_family(family, directory, Figure.default(family.gender))
+        except (SassError, OSError) as exc:
+            self.post_message(FamilyWritten(error_text(exc), "error"))
+            return
+        self.post_message(
+            FamilyWritten(
+                f"Wrote {len(written.manikins)} manikins (.fig, .x3d) and family.json "
+                f"to {directory}.",
+                "info",
+            )
         )
+
+    def on_family_written(self, event: FamilyWritten) -> None:
+        if event.kind == "error":
+            self.complain(event.text)
+        else:
+            self.say(event.text)
