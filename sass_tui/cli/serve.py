@@ -16,7 +16,13 @@ import ssl
 from ipaddress import ip_address
 from urllib.parse import urlsplit
 
-from sass_tui.cli.common.options import SubParsers, add_db_option, file_name, positive_number
+from sass_tui.cli.common.options import (
+    SubParsers,
+    add_db_option,
+    file_name,
+    positive_number,
+    whole_number,
+)
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.paths import LARGEST_TOKEN_FILE, regular_file
 
@@ -30,6 +36,16 @@ DEFAULT_MAX_SESSIONS = 8
 
 class ServeError(ValueError, SassError):
     """Options `sass serve` cannot serve with."""
+
+
+def port_number(text: str) -> int:
+    """An argparse type: a TCP port, 0-65535 (the system resolved 99999 to a
+    port of its own and the server printed a URL nobody could open; -1 said
+    "Servname not supported for ai_socktype")."""
+    port = whole_number(text)
+    if port > 65535:
+        raise argparse.ArgumentTypeError(f"{port} is no port: expected 0-65535")
+    return port
 
 
 def register(commands: SubParsers) -> None:
@@ -47,7 +63,12 @@ def register(commands: SubParsers) -> None:
         help="address to listen on (default localhost: this machine only; "
         "any other needs --allow-remote)",
     )
-    serve.add_argument("--port", type=int, default=8000, help="port (default 8000)")
+    serve.add_argument(
+        "--port",
+        type=port_number,
+        default=8000,
+        help="port (default 8000; 0: a free port the system chooses, printed)",
+    )
     serve.add_argument(
         "--allow-remote",
         action="store_true",

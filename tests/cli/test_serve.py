@@ -7,7 +7,13 @@ import gc
 
 import pytest
 
-from sass_tui.cli import COLLECT_AFTER_OBJECTS, PYTHON_COLLECT_THRESHOLD, main, serving
+from sass_tui.cli import (
+    COLLECT_AFTER_OBJECTS,
+    PYTHON_COLLECT_THRESHOLD,
+    build_parser,
+    main,
+    serving,
+)
 
 
 def test_a_remote_address_needs_allow_remote(capsys):
@@ -16,11 +22,22 @@ def test_a_remote_address_needs_allow_remote(capsys):
     assert err.startswith("sass serve: error:") and "--allow-remote" in err
 
 
-def test_a_port_that_is_not_a_number_is_refused_by_the_parser(capsys):
+@pytest.mark.parametrize(
+    ("port", "says"),
+    [
+        ("port", "'port' is not a whole number"),
+        # the server printed http://localhost:99999/ and listened nowhere one could open
+        ("99999", "99999 is no port: expected 0-65535"),
+        ("65536", "65536 is no port: expected 0-65535"),
+        ("-1", "-1 is negative"),  # it said "Servname not supported for ai_socktype"
+    ],
+)
+def test_a_port_that_is_no_port_is_refused_by_the_parser(capsys, port, says):
+    parser = build_parser(["serve"])
     with pytest.raises(SystemExit) as stop:
-        main(["serve", "--port", "port"])
+        parser.parse_args(["serve", "--port", port])
     assert stop.value.code == 2
-    assert "--port" in capsys.readouterr().err
+    assert f"argument --port: {says}" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize(
