@@ -250,12 +250,24 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     parser = build_parser(words)
     args, unknown = parser.parse_known_args(words)
+    if unknown and isinstance(getattr(args, "angles", None), list):
+        angles = [word for word in unknown if _is_angle(word)]
+        args.angles = [*args.angles, *angles]
+        unknown = [word for word in unknown if not _is_angle(word)]
     if unknown:  # said by the verb's parser: its usage, `sass niosh: error: ...`
         verbs = parser.verbs.choices if parser.verbs is not None else {}
         verbs.get(args.command, parser).error(f"unrecognized arguments: {' '.join(unknown)}")
     if args.command is None:
         return run_tui(args.db, args.open)
     return run_verb(args)
+
+
+def _is_angle(word: str) -> bool:
+    """A JOINT=ANGLE word argparse left over: typed after the verb's options
+    (`sass strength elbow_flexion --side left elbow_y=90`).  argparse hands a
+    verb all its positionals at their first word, and later JOINT=ANGLE words
+    were "unrecognized arguments"; a verb that takes angles takes them too."""
+    return "=" in word and not word.startswith("-")
 
 
 def run_tui(db: str | None, worksheet: str | None = None) -> int:

@@ -331,11 +331,17 @@ def _figure(args: argparse.Namespace):  # -> Figure
 
 
 def _angles(args: argparse.Namespace) -> list[tuple[str, str]]:
+    """The JOINT_AXIS=ANGLE words, each axis once (the last was kept silently)."""
     out = []
+    given: dict[str, str] = {}
     for item in args.angles:
         axis, sep, value = item.partition("=")
         if not sep or not value.strip():
             raise StrengthError(f"{item!r}: expected JOINT_AXIS=ANGLE, e.g. shoulder_x=30")
+        key = axis.strip().lower().replace(".", "_")
+        if key in given:
+            raise StrengthError(f"{item!r}: {axis.strip()} is given twice (also {given[key]!r})")
+        given[key] = item
         out.append((axis, value))
     return out
 

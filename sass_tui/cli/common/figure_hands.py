@@ -18,7 +18,7 @@ def add_figure_hands_options(parser: argparse.ArgumentParser, lift_words: str) -
         "angles",
         nargs="*",
         metavar="JOINT=ANGLE",
-        help=f"a posture of the figure (as `sass task`; right after the verb): the hands' H "
+        help=f"a posture of the figure (as `sass task`): the hands' H "
         f"and V are taken from it ({lift_words})",
     )
     parser.add_argument(
