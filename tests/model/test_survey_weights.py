@@ -22,14 +22,24 @@ def sample_text(rows: list[str]) -> str:
 
 
 @pytest.mark.parametrize(
-    ("cell", "shown"), [("-3", "'-3'"), ("0", "'0'"), ("heavy", "'heavy'"), ("", "''")]
+    ("cell", "why"),
+    [
+        ("-3", "greater than 0"),
+        ("0", "greater than 0"),
+        ("heavy", "greater than 0"),
+        ("", "greater than 0"),
+        ("nan", "greater than 0"),
+        # weights of 1e308 added up to infinity: numpy's "SVD did not converge"
+        ("1e308", "of at most 1e+15"),
+        ("inf", "of at most 1e+15"),
+    ],
 )
-def test_a_bad_weight_is_refused_with_its_line_and_column(cell, shown):
+def test_a_bad_weight_is_refused_with_its_line_and_column(cell, why):
     text = sample_text(["1,female,30,160,60,2.5", f"2,female,31,161,61,{cell}"])
     with pytest.raises(SampleError) as error:
         read_sample(text, FIELDS, "s.csv", weight="WTMECPRP")
     assert str(error.value) == (
-        f"s.csv:3: column 6 'WTMECPRP': {shown}: a survey weight must be a number greater than 0"
+        f"s.csv:3: column 6 'WTMECPRP': {cell!r}: a survey weight must be a number {why}"
     )
 
 

@@ -33,7 +33,7 @@ from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.population.prediction import field_unit
 from sass_tui.model.population.target_sample import Sample, SampleError, is_survey_weight
 from sass_tui.model.text import other_separator, quoted
-from sass_tui.model.units import UnitError, convert, parse_quantity, unit_name
+from sass_tui.model.units import LARGEST_NUMBER, UnitError, convert, parse_quantity, unit_name
 from sass_tui.model.vocabulary import GENDERS
 
 _HEADER = re.compile(r"^\s*([^\[\]]*?)\s*(?:\[([^\[\]]*)\])?\s*$")
@@ -211,19 +211,22 @@ def _weight_column(header: Sequence[str], weight: str | None, where: str) -> int
 
 
 def _weight(row: list[str], c: int, header: Sequence[str], where: str, line: int) -> float:
+    """A row's survey weight: over 0 and at most LARGEST_NUMBER, as every number
+    sass reads (weights of 1e308 added up to infinity, and the calibration's
+    least squares failed with numpy's "SVD did not converge")."""
     text = row[c].strip()
     try:
         value = float(text)
     except ValueError:
         value = math.nan
-    if not (math.isfinite(value) and value > 0):
-        place = f"{where}:{line}"
-        raise SampleError(
-            f"{place}: column {c + 1} {header[c]!r}: {text!r}: a survey weight must be a "
-            "number greater than 0",
-            where=place,
-        )
-    return value
+    place = f"{where}:{line}"
+    if not value > 0:
+        why = "a survey weight must be a number greater than 0"
+    elif not (math.isfinite(value) and value <= LARGEST_NUMBER):
+        why = f"a survey weight must be a number of at most {LARGEST_NUMBER:g}"
+    else:
+        return value
+    raise SampleError(f"{place}: column {c + 1} {header[c]!r}: {text!r}: {why}", where=place)
 
 
 def _gender(row: list[str], c: int, header: Sequence[str], where: str, line: int) -> str:
