@@ -259,6 +259,14 @@ def run_job(args: argparse.Namespace) -> int:
             ("--load", args.load),
             ("--dest-h", args.dest_h),
             ("--dest-v", args.dest_v),
+            ("--dest-a", args.dest_a),
+            ("--dest-coupling", args.dest_coupling),
+            ("--lifting-minutes", args.lifting_minutes),
+            # a posture's hands were passed over without a word
+            ("JOINT=ANGLE", args.angles or None),
+            ("--posture", args.posture),
+            ("--person", args.person),
+            ("--gender", args.gender),
         )
         if value is not None
     ]

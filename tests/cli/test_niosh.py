@@ -108,6 +108,9 @@ def test_a_posture_file_gives_the_origin(capsys, tmp_path):
          "at most 15 lifts"),
         (["--tasks", "/nonexistent/job.csv"], "no such file"),
         (["--tasks", "job.csv", "--h", "40cm"], "leave out --h"),
+        # the posture was passed over without a word
+        (["--tasks", "job.csv", "shoulder_y=90"], "leave out JOINT=ANGLE"),
+        (["--tasks", "job.csv", "--posture", "p.json"], "leave out --posture"),
         # `--load 10 kg`: the shell leaves `kg` a posture word, which is named
         # (not "leave out --h, --v", which the typed --h and --v would give)
         (["--h", "40cm", "--v", "60cm", "--d", "20", "--f", "1", "--load", "10", "kg"],
