@@ -196,3 +196,31 @@ def test_cli_import_ansur(engine_target, engine_db_copy, ansur_files, capsys):
     assert "imported 0 men and 1986 women" in capsys.readouterr().out
     stored = "SELECT gender, count(*) FROM person WHERE source = 'cli' GROUP BY gender"
     assert engine_db_copy.execute(stored).fetchall() == [("female", 1986)]
+
+
+def test_a_file_named_twice_or_of_semicolons_stores_nothing(
+    shipped_db_file, ansur_files, tmp_path, capsys
+):
+    """One file named twice stored its people once and said them twice
+    ("imported 0 men and 6 women" for 3); a survey file a spreadsheet saved
+    with ';' between cells said "missing columns subjectid, gender, …"."""
+    db = tmp_path / "sass.db"
+    db.write_bytes(shipped_db_file.read_bytes())
+    lines = ansur_files[1].read_text(encoding="cp1252").splitlines()[:4]
+    three = tmp_path / "three.csv"
+    three.write_text("\n".join(lines) + "\n", encoding="cp1252")
+    semicolons = tmp_path / "semicolons.csv"
+    semicolons.write_text("\n".join(line.replace(",", ";") for line in lines) + "\n")
+    before = db.read_bytes()
+    argv = ["db", "import-ansur", "--db", str(db), "--source", "mine"]
+    assert main([*argv, str(three), f"{tmp_path}/./three.csv"]) == 2
+    assert (
+        f"{tmp_path}/./three.csv is named twice (also as {three}); name each"
+        in capsys.readouterr().err
+    )
+    assert main([*argv, str(semicolons)]) == 2
+    err = capsys.readouterr().err
+    assert f"{semicolons}:1: the cells are separated by ';', not commas" in err
+    assert db.read_bytes() == before
+    assert main([*argv, str(three)]) == 0
+    assert "imported 0 men and 3 women" in capsys.readouterr().out

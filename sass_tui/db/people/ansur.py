@@ -19,6 +19,7 @@ from __future__ import annotations
 import csv
 import gzip
 import math
+import os
 import sqlite3
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
@@ -33,7 +34,7 @@ from sass_tui.db.progress import Cancel, Progress, Steps
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.paths import PathError, regular_file
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES, PUBLISHED_TO_CANONICAL
-from sass_tui.model.text import control_character, printable, quoted
+from sass_tui.model.text import control_character, other_separator, printable, quoted
 
 if TYPE_CHECKING:
     from sass_tui.db.engine.database import Database
@@ -351,6 +352,9 @@ def _read_chunks(
     header_row = next(reader, None)
     if header_row is None:
         raise AnsurImportError(f"{path}:1: the file is empty; expected the ANSUR II header")
+    wrong = other_separator(header_row)  # a survey file saved again by a spreadsheet
+    if wrong is not None:
+        raise AnsurImportError(f"{path}:1: {wrong}")
     header = [h.strip().lower() for h in header_row]
     column = {name: k for k, name in enumerate(header)}
     missing = [name for name in REQUIRED if name not in column]
@@ -574,6 +578,14 @@ def import_ansur(
             f"the source label {printable(label)!r} holds {found}; expected printable text, "
             "e.g. mysurvey"
         )
+    named: dict[str, str | Path] = {}
+    for path in paths:
+        # one file twice stored its people once, but counted them twice
+        real = os.path.realpath(path)
+        if real in named:
+            also = "" if str(named[real]) == str(path) else f" (also as {named[real]})"
+            raise AnsurImportError(f"{path} is named twice{also}; name each file once")
+        named[real] = path
     check_writable(conn)
     with transaction(conn):
         return store_ansur(conn, paths, label=label, progress=Steps(progress, cancel, "the import"))
