@@ -11,6 +11,7 @@ from sass_tui.model.files.popfile import (
     PopulationFileError,
     parse_population_text,
     read_population_file,
+    render_population_file,
 )
 from sass_tui.model.names import CENTER_OF_MASS, GIRTH, GLOBAL, JOINT_LIMITS
 
@@ -166,3 +167,15 @@ def test_a_global_file_s_statures_and_masses_are_human_ones(row, message):
     with pytest.raises(PopulationFileError) as caught:
         parse_population_text(f"C g\nT MALE\n{row}\n", GLOBAL, "g.dat")
     assert str(caught.value).startswith(message)
+
+
+@pytest.mark.parametrize("breaks", ["\n", "\r\n", "\r", "\u2028"])
+def test_a_title_of_two_lines_is_written_as_one_comment(breaks):
+    """The default title is the query, which may be typed on two lines: the
+    second was written as a row of values, and the file did not read back."""
+    data = parse_population_text(GIRTH_TEXT, GIRTH, "girth.dat")
+    data.title = f"Population of stature > 150 cm{breaks}AND mass > 50 kg"
+    again = parse_population_text(render_population_file(data), GIRTH, "again.dat")
+    assert again.title == "Population of stature > 150 cm AND mass > 50 kg"
+    for gender in data.sections:
+        np.testing.assert_array_equal(again.stats(gender), data.stats(gender))

@@ -506,8 +506,11 @@ def check_center_of_mass_rules(cmass: PopulationData, girth: PopulationData) -> 
 
 
 def render_population_file(data: PopulationData) -> str:
-    """The text of a population file of `data` (report §12.2.4)."""
-    lines = [f"C {data.title}"]
+    """The text of a population file of `data` (report §12.2.4).  The title is
+    one comment line: a query of two lines (the default title) or a --title
+    with a line break wrote its second line as a row of values, and the file
+    no longer read back."""
+    lines = [f"C {' '.join(data.title.splitlines())}"]
     for gender, stats in data.sections.items():
         lines += ["C", f"T {gender.upper()}"]
         lines += [f"C {note}" for note in data.notes.get(gender, ())]
