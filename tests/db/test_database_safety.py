@@ -10,6 +10,7 @@ import os
 import shutil
 import signal
 import sqlite3
+import stat
 import subprocess
 import sys
 import textwrap
@@ -516,3 +517,27 @@ def test_a_write_that_waits_past_the_busy_timeout_is_refused_by_name(db_path):
         holder.execute("ROLLBACK")
         holder.close()
         conn.close()
+
+
+def test_a_path_that_is_no_regular_file_is_refused_and_kept(tmp_path, capsys, monkeypatch):
+    """A FIFO, a device, a directory: /dev/null's size is 0 like an empty
+    file's, and `sass db init --db /dev/null` (as root) removed the device and
+    put a database in its place; a query called it "an empty file".  A FIFO
+    stands in for the device here: the test must not need one."""
+    fifo = tmp_path / "pipe.db"
+    os.mkfifo(fifo)
+    folder = tmp_path / "folder.db"
+    folder.mkdir()
+    for path, kind in ((fifo, "a FIFO (named pipe)"), (folder, "a directory")):
+        for argv in (
+            ["db", "init"],
+            ["db", "init", "--force"],
+            ["query", "--count", "mass > 1 kg"],
+        ):
+            assert main(["--db", str(path), *argv]) == 2, argv
+            assert f"{path}: {kind}, not a database file" in capsys.readouterr().err
+        monkeypatch.setenv("SASS_DB", str(path))  # the default database, built on first use
+        assert main(["query", "--count", "mass > 1 kg"]) == 2
+        assert f"{path}: {kind}, not a database file" in capsys.readouterr().err
+    assert stat.S_ISFIFO(os.stat(fifo).st_mode) and folder.is_dir()
+    assert sorted(tmp_path.iterdir()) == sorted([fifo, folder])  # nothing built beside them

@@ -24,12 +24,13 @@ from __future__ import annotations
 
 import os
 import sqlite3
+import stat
 from pathlib import Path
 from typing import Any
 
 from sass_tui.db.engine.addresses import is_url, sqlite_only
 from sass_tui.model.errors import SassError
-from sass_tui.model.files.paths import data_dir
+from sass_tui.model.files.paths import data_dir, file_kind
 from sass_tui.model.measures import MEASURES
 from sass_tui.model.names import (
     CENTER_OF_MASS_ROWS,
@@ -285,6 +286,19 @@ EXPECTED_TABLES = frozenset(("meta",) + TARGET_TABLES + RELATIONS + PERSON_TABLE
 BUSY_TIMEOUT_S = 10.0
 
 
+def check_database_file(path: Path) -> None:
+    """Refuse a path that is there but is no regular file: a directory, a
+    FIFO, a device.  /dev/null's size is 0, as an empty file's: `sass db init
+    --db /dev/null` (as root) put its database in the device's place, and a
+    query called the device "an empty file"."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return  # missing (a new database), or said by SQLite when it opens it
+    if not stat.S_ISREG(mode):
+        raise DatabaseError(f"{path}: {file_kind(mode)}, not a database file")
+
+
 def connect(
     path: str | Path,
     *,
@@ -306,6 +320,7 @@ def connect(
     answer, as on PostgreSQL (db/engine/postgres.py), and then a database is not
     created either."""
     path = Path(path)
+    check_database_file(path)
     if read_only is None:
         read_only = served_read_only()
         if read_only and create:

@@ -28,6 +28,7 @@ from pathlib import Path
 
 from sass_tui.db.engine.schema import (
     DatabaseError,
+    check_database_file,
     check_writable,
     connect,
     default_db_path,
@@ -90,7 +91,12 @@ def _open_built(path: Path) -> sqlite3.Connection | None:
 
 
 def needs_building(path: Path) -> bool:
-    return not path.exists() or path.stat().st_size == 0
+    """No database at `path` yet: no file, or an empty regular one (a device
+    such as /dev/null is empty too, and is refused, never replaced)."""
+    if not path.exists():
+        return True
+    check_database_file(path)
+    return path.stat().st_size == 0
 
 
 def default_needs_building(path: Path) -> bool:
@@ -165,7 +171,7 @@ def _build_aside(path: Path, progress: Progress | None) -> dict[str, int] | None
             raise refused from None
         finally:
             conn.close()
-        if path.exists() and path.stat().st_size == 0:
+        if path.is_file() and path.stat().st_size == 0:
             path.unlink()  # an empty file is no database: ours takes its place
         try:
             os.link(aside, path)  # never over a file another process made meanwhile

@@ -27,6 +27,7 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from sass_tui.model.errors import SassError
+from sass_tui.model.files.paths import file_kind
 
 _TEMP_MARK = ".sass-tmp-"
 
@@ -156,21 +157,9 @@ def _mode_for(path: Path) -> int:
     except OSError as exc:
         raise _error(path, exc) from None
     if not stat.S_ISREG(info.st_mode):
-        kind = _kind(info.st_mode)
+        kind = file_kind(info.st_mode)
         raise OutputFileError(path, f"it is {kind}, not a regular file")
     return stat.S_IMODE(info.st_mode)
-
-
-def _kind(mode: int) -> str:
-    if stat.S_ISDIR(mode):
-        return "a directory"
-    if stat.S_ISFIFO(mode):
-        return "a FIFO (named pipe)"
-    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
-        return "a device"
-    if stat.S_ISSOCK(mode):
-        return "a socket"
-    return "a special file"
 
 
 def remove_stale_temporaries(path: Path) -> None:

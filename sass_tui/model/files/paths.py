@@ -195,3 +195,16 @@ def _platform_dir(kind: str) -> Path:
         "config": platformdirs.user_config_dir,
     }[kind]
     return Path(where("sass", appauthor=False))
+
+
+def file_kind(mode: int) -> str:
+    """What a path that is no regular file is, for a message ("a device")."""
+    if stat.S_ISDIR(mode):
+        return "a directory"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (named pipe)"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "a special file"
