@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import csv
 import json
+import os
 
 import numpy as np
 import pytest
@@ -66,3 +67,15 @@ def test_an_output_folder_a_file_stands_in_is_refused_by_name(
     err = capsys.readouterr().err
     assert says.format(out=out, taken=taken) in err and "Errno" not in err, err
     assert taken.read_text() == "a file the user keeps\n"
+
+
+def test_an_output_folder_a_fifo_stands_in_is_named_for_what_it_is(people_db, tmp_path, capsys):
+    # it was called "a file"
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    argv = ["--db", str(people_db), "family", "--gender", "female", "--measures", "stature,mass"]
+    assert main([*argv, "-o", str(fifo)]) == 2
+    assert (
+        f"cannot write {fifo}: it is a FIFO (named pipe), not a directory"
+        in capsys.readouterr().err
+    )

@@ -124,7 +124,13 @@ def make_directory(path: str | Path) -> Path:
     try:
         directory.mkdir(parents=True, exist_ok=True)
     except FileExistsError:
-        raise OutputFileError(directory, "it is a file, not a directory", errno.EEXIST) from None
+        try:
+            mode = os.stat(directory).st_mode
+        except OSError:  # a dangling symbolic link
+            kind = "a file"
+        else:
+            kind = "a file" if stat.S_ISREG(mode) else file_kind(mode)
+        raise OutputFileError(directory, f"it is {kind}, not a directory", errno.EEXIST) from None
     except NotADirectoryError:
         blocking = next((p for p in directory.parents if p.exists() and not p.is_dir()), None)
         reason = f"not a directory: {blocking if blocking is not None else directory.parent}"
