@@ -125,11 +125,9 @@ def make_directory(path: str | Path) -> Path:
         directory.mkdir(parents=True, exist_ok=True)
     except FileExistsError:
         try:
-            mode = os.stat(directory).st_mode
+            kind = file_kind(os.stat(directory).st_mode)
         except OSError:  # a dangling symbolic link
             kind = "a file"
-        else:
-            kind = "a file" if stat.S_ISREG(mode) else file_kind(mode)
         raise OutputFileError(directory, f"it is {kind}, not a directory", errno.EEXIST) from None
     except NotADirectoryError:
         blocking = next((p for p in directory.parents if p.exists() and not p.is_dir()), None)

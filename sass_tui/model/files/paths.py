@@ -198,7 +198,9 @@ def _platform_dir(kind: str) -> Path:
 
 
 def file_kind(mode: int) -> str:
-    """What a path that is no regular file is, for a message ("a device")."""
+    """What a path is, for a message ("a device", "a file")."""
+    if stat.S_ISREG(mode):
+        return "a file"
     if stat.S_ISDIR(mode):
         return "a directory"
     if stat.S_ISFIFO(mode):
