@@ -13,12 +13,14 @@ import time
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from textual import events
 from textual.app import App
 
 from sass_tui.model.body.figure import Figure
 from sass_tui.model.files.paths import regular_file, user_path
 from sass_tui.model.served import served_read_only, served_workdir
 from sass_tui.model.session import Session
+from sass_tui.ui.key_order import screen_settled
 from sass_tui.ui.palette import ScreenCommands
 from sass_tui.ui.settings import load_settings, save_setting
 from sass_tui.ui.spreadsheet.spreadsheet import STRENGTH_NOT_LOADED, SpreadsheetScreen
@@ -85,6 +87,14 @@ class SassApp(App):
         self.figure_overlay: float | None = None
         self._quit_asked_at = float("-inf")
         self._restore_theme()
+
+    async def on_event(self, event: events.Event) -> None:
+        if isinstance(event, (events.Key, events.Paste)) and not event.is_forwarded:
+            # The keys of one read of the terminal, one at a time (ui/key_order.py).
+            await screen_settled(self)
+            if not self.screen_stack:
+                return  # the app closed meanwhile: no screen takes the key
+        await super().on_event(event)
 
     # --- the theme, chosen in the palette ("Change theme"), remembered -----------
     def _restore_theme(self) -> None:

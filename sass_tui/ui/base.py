@@ -17,14 +17,13 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from textual import events
 from textual.binding import Binding
-from textual.dom import DOMNode
 from textual.screen import Screen
 
 from sass_tui.model.files.paths import complete_path
 from sass_tui.ui.palette import HelpScreen, help_commands
 from sass_tui.ui.textual_api import bindings_of
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
-from sass_tui.ui.widgets.editor import run_own_binding
+from sass_tui.ui.widgets.editor import run_focused_binding
 from sass_tui.ui.widgets.message_line import Completer
 
 if TYPE_CHECKING:  # app.py imports the screens: at run time this would be a cycle
@@ -137,15 +136,10 @@ class SassScreen(Screen):
                 event.prevent_default()
                 line.type_ahead(event.key, event.character)
             return  # the prompt's own keys (Enter, Escape) are the answer's bindings
-        node: DOMNode | None = self.focused
-        ran = False
-        while node is not None and node is not self and not ran:
-            # A widget's own binding comes first, run here and now rather
-            # than by the app after the key has bubbled up: "Down Enter" in
-            # one read must move the list's cursor before the screen's Enter.
-            ran = await run_own_binding(node, event.key)
-            node = node.parent
-        if ran or await self._run_binding(event.key):
+        # A widget's own binding comes first, run here and now rather than by
+        # the app after the key has bubbled up: "Down Enter" in one read must
+        # move the list's cursor before the screen's Enter.
+        if await run_focused_binding(self, event.key) or await self._run_binding(event.key):
             event.stop()
             event.prevent_default()
 

@@ -6,13 +6,14 @@ from __future__ import annotations
 from rich.text import Text
 from textual.binding import Binding
 from textual.containers import VerticalScroll
-from textual.screen import ModalScreen
 from textual.widgets import Static
+
+from sass_tui.ui.pop_up import PopUpScreen
 
 KIND_STYLE = {"error": "bold red", "warning": "yellow", "info": ""}
 
 
-class MessageLog(ModalScreen[None]):
+class MessageLog(PopUpScreen[None]):
     DEFAULT_CSS = """
     MessageLog { align: center middle; background: $background 40%; }
     MessageLog > VerticalScroll { width: 90%; height: 80%; border: round $accent;

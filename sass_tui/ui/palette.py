@@ -41,6 +41,7 @@ from textual.screen import ModalScreen, Screen
 from textual.widgets import DataTable, Static
 
 from sass_tui.ui.palette_words import OUTSIDE, word_score
+from sass_tui.ui.pop_up import PopUpScreen
 from sass_tui.ui.textual_api import bindings_of, class_bindings
 from sass_tui.ui.widgets import CommandMenu
 
@@ -330,7 +331,7 @@ HELP_SCROLLBAR = 2
 HELP_NAME_WIDTH = 20  # longer command names wrap
 
 
-class HelpScreen(ModalScreen[None]):
+class HelpScreen(PopUpScreen[None]):
     """Every binding of the screen it was opened on: key, command, help."""
 
     BINDINGS = [

@@ -18,10 +18,16 @@ A key held back while an answer is being handled is passed on afterwards
 (ui/widgets/message_line.py) as the app passes a key on: marked forwarded
 (`Message._set_forwarded`), so that the app does not route it a second time
 when it bubbles up unhandled.
+
+A key typed before an edit was refused is part of the value refused, never a
+command (ui/widgets/editor.py): the widget compares the key's time stamp
+with the moment of the refusal on the clock Textual stamps its Messages
+with (`textual._time.get_time`, `event_clock` here).
 """
 
 from __future__ import annotations
 
+from textual import _time
 from textual.binding import BindingsMap
 from textual.dom import DOMNode
 from textual.events import Event
@@ -49,3 +55,9 @@ def forward_event(node: DOMNode, event: Event) -> None:
     """Give `node` a key (or paste) as the app gives the focused widget one."""
     event._set_forwarded()
     node.post_message(event)
+
+
+def event_clock() -> float:
+    """Now, on the clock Textual stamps each Message's `time` with."""
+    now: float = _time.get_time()
+    return now

@@ -5,6 +5,8 @@ before the app has handled the first."""
 
 from __future__ import annotations
 
+import asyncio
+import random
 import shutil
 
 import pytest
@@ -43,6 +45,23 @@ async def undo_one_by_one(app, pilot, before: list[float], edited: list[float]) 
         assert column_values(app, len(edited)) == expected, undone
 
 
+async def column_typed(app, pilot) -> list[float]:
+    """Wait until VALUES fill the column, the cursor below them and no
+    prompt open; the values."""
+    edited = [float(v) for v in VALUES]
+    await wait_until(
+        pilot,
+        lambda: (
+            column_values(app, len(VALUES)) == edited
+            and app.query_one(DataSheet).chosen() == (len(VALUES), 0)
+        ),
+        lambda: f"the column is {column_values(app, len(VALUES))}",
+    )
+    await settle(pilot)
+    assert not app.message_line.prompting
+    return edited
+
+
 def test_ten_values_down_a_column_in_one_burst(drive, app_at):
     async def scenario():
         async with app_at(LARGE) as (app, pilot):
@@ -50,18 +69,27 @@ def test_ten_values_down_a_column_in_one_burst(drive, app_at):
             # One read of the terminal: every key posted before the first is handled.
             for key, character in column_keys(VALUES):
                 app.post_message(events.Key(key, character))
-            edited = [float(v) for v in VALUES]
-            await wait_until(
-                pilot,
-                lambda: (
-                    column_values(app, len(VALUES)) == edited
-                    and app.query_one(DataSheet).chosen() == (len(VALUES), 0)
-                ),
-                lambda: f"the column is {column_values(app, len(VALUES))}",
-            )
-            await settle(pilot)
-            assert not app.message_line.prompting
+            edited = await column_typed(app, pilot)
             await undo_one_by_one(app, pilot, before, edited)
+
+    drive(scenario())
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_keys_read_while_the_app_is_at_work_land_in_order(drive, app_at, seed):
+    """The driver posts the keys of a read while the app handles the first
+    ones: after each key, the app runs for a while (`seed` picks how long),
+    so that the prompt opens, or the cursor moves, at any point of the
+    burst.  The keys after a digit must not reach the prompt ahead of it."""
+
+    async def scenario():
+        turns = random.Random(seed)
+        async with app_at(LARGE) as (app, pilot):
+            for key, character in column_keys(VALUES):
+                app.post_message(events.Key(key, character))
+                for _ in range(turns.choice([0, 0, 1, 2, 3, 5, 8, 13])):
+                    await asyncio.sleep(0)  # the app's turn, not a delay
+            await column_typed(app, pilot)
 
     drive(scenario())
 

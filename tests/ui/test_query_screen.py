@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from _screen import message, settle
+from _screen import message, settle, wait_until
 from textual import events
 from textual.widgets import OptionList
 
@@ -450,7 +450,8 @@ def test_builder_is_a_modal_screen_that_owns_its_keys(drive, app_at, db):
 
 def test_enters_in_a_burst_on_abort_close_the_builder_once(drive, app_at, db):
     """Enter typed several times at once on Abort: the builder closes once,
-    the query screen stays (the extra Enters used to pop it, then crash)."""
+    the query screen stays (the extra Enters used to pop it, then crash);
+    they are the query screen's Enters, as typed one by one."""
 
     async def scenario():
         async with app_at(SIZE, db=True) as (app, pilot):
@@ -459,9 +460,21 @@ def test_enters_in_a_burst_on_abort_close_the_builder_once(drive, app_at, db):
             await pilot.press(*["down"] * popup_labels(app).index("Abort"))
             for _ in range(3):
                 app.post_message(events.Key("enter", "\r"))
-            await pilot.pause()
-            await pilot.pause()
-            assert app.screen is screen and "aborted" in message(app)
+            said = screen.message_line.history
+            await wait_until(
+                pilot,
+                lambda: (
+                    said[-2:]
+                    == [
+                        ("info", "Query aborted; nothing was run."),
+                        ("info", "The query list is empty."),
+                    ]
+                ),
+                lambda: f"{said[-3:]}",
+            )
+            await settle(pilot)
+            assert app.screen is screen and screen.builder is None
+            assert [text for _, text in said].count("Query aborted; nothing was run.") == 1
 
     drive(scenario())
 
@@ -479,9 +492,20 @@ def test_enters_in_a_burst_in_the_more_menu_choose_once(drive, app_at, db):
             await pilot.press("down", "down", "down")  # Next
             for _ in range(3):
                 app.post_message(events.Key("enter", "\r"))
-            await pilot.pause()
-            await pilot.pause()
+            # The first Enter chose Next; the second asked to edit the sheet's
+            # cell, the third left it as it was: as typed one by one.
+            said = app.message_line.history
+            await wait_until(
+                pilot,
+                lambda: (
+                    any(text.startswith("Person 2 of ") for _, text in said)
+                    and not app.message_line.prompting
+                ),
+                lambda: f"{said[-3:]} {message(app)!r} {app.message_line.answer.value!r}",
+            )
+            await settle(pilot)
             assert app.screen is app.spreadsheet
-            assert message(app).startswith("Person 2 of ")
+            assert sum(text.startswith("Person 2 of ") for _, text in said) == 1
+            assert app.session.person_index == 1
 
     drive(scenario())

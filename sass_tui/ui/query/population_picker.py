@@ -17,12 +17,12 @@ from pathlib import Path
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
-from textual.screen import ModalScreen
 from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
 from sass_tui.db.query.lists import QueryLists, people_of, target_names, target_people
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
+from sass_tui.ui.pop_up import PopUpScreen
 
 SURVEY_QUERY = "source = ansur2"
 
@@ -77,7 +77,7 @@ def population_choices(target_names: list[str], last_query: str | None) -> list[
     return choices
 
 
-class PopulationPicker(ModalScreen[PopulationChoice | None]):
+class PopulationPicker(PopUpScreen[PopulationChoice | None]):
     DEFAULT_CSS = """
     PopulationPicker { align: center middle; background: transparent; }
     PopulationPicker > #population-popup { width: 60; max-height: 80%; }

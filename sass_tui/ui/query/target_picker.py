@@ -11,13 +11,13 @@ from typing import TYPE_CHECKING
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
-from textual.screen import ModalScreen
 from textual.widgets import OptionList
 from textual.widgets.option_list import Option
 
 from sass_tui.db.query.lists import DB_ERRORS, QueryLists
 from sass_tui.db.query.lists import target_names as stored_target_names
 from sass_tui.db.query.scope import VIRTUAL_PREFIX
+from sass_tui.ui.pop_up import PopUpScreen
 
 if TYPE_CHECKING:  # for the annotation only
     from sass_tui.ui.base import SassScreen
@@ -43,7 +43,7 @@ def _shown(name: str) -> str:
     return f"{name} (VIRTUAL people)" if name.startswith(VIRTUAL_PREFIX) else name
 
 
-class TargetPicker(ModalScreen[str | None]):
+class TargetPicker(PopUpScreen[str | None]):
     DEFAULT_CSS = """
     TargetPicker { align: center middle; background: transparent; }
     TargetPicker > #target-popup { width: 40; max-height: 80%; }

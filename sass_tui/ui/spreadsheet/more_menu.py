@@ -6,14 +6,15 @@ from __future__ import annotations
 from textual.app import ComposeResult
 from textual.binding import Binding
 from textual.containers import Vertical
-from textual.screen import ModalScreen
 from textual.widgets import OptionList
 from textual.widgets.option_list import Option
+
+from sass_tui.ui.pop_up import PopUpScreen
 
 MORE_CHOICES = ("First", "Last", "Previous", "Next", "Nth Person")
 
 
-class MoreMenu(ModalScreen[str | None]):
+class MoreMenu(PopUpScreen[str | None]):
     """The More Menu: a pop-up menu that looks like the query builder's
     (`.pop-up-menu`, sass.tcss) over the spreadsheet."""
 

@@ -9,7 +9,7 @@ from textual.binding import Binding
 from textual.dom import DOMNode
 from textual.message import Message
 
-from sass_tui.ui.textual_api import bindings_of
+from sass_tui.ui.textual_api import bindings_of, event_clock
 
 # Characters that start typing a new number straight into the message line.
 NUMBER_START = set("0123456789.-+")
@@ -32,6 +32,19 @@ async def run_own_binding(node: DOMNode, key: str) -> bool:
     for binding in bindings_of(node).key_to_bindings.get(key, ()):
         if await node.app.run_action(binding.action, node):
             return True
+    return False
+
+
+async def run_focused_binding(screen: DOMNode, key: str) -> bool:
+    """Run, at once, the binding for `key` of `screen`'s focused widget or of
+    the nearest of its containers below the screen that has one; False when
+    none does.  Left to Textual, it would run once the key had bubbled up to
+    the app's queue: after the keys that came in the same read (ui/key_order.py)."""
+    node: DOMNode | None = getattr(screen, "focused", None)
+    while node is not None and node is not screen:
+        if await run_own_binding(node, key):
+            return True
+        node = node.parent
     return False
 
 
@@ -90,6 +103,9 @@ class EditorKeys:
     _typing_ahead = False
     _requests = 0  # the edits asked for
     refused_request = 0  # the last of them the screen refused (no prompt came)
+    # When it was refused: a key typed before then (one read of the terminal,
+    # handled after the refusal) was typed for that edit, not as a command.
+    refused_at = float("-inf")
 
     def edit_request(self, initial: str) -> Message:
         """The message asking to edit the cell under the cursor, `initial`
@@ -126,6 +142,7 @@ class EditorKeys:
         are the value the cell did not take (`14in` typed fast on a cell
         without data must not open Input Data on the `i`)."""
         self.refused_request = self._requests
+        self.refused_at = event_clock()
         self.typing_done()
 
     def action_edit(self) -> None:
@@ -134,8 +151,13 @@ class EditorKeys:
     def start_typing(self, text: str) -> None:
         self.request_edit(self.edit_request(text))
 
+    def _typed_for_an_edit(self, event: events.Event) -> bool:
+        """Whether `event` was typed for the edit asked for last: before its
+        prompt took the keys, or before the screen refused it."""
+        return self._typing_ahead or event.time < self.refused_at
+
     async def on_key(self, event: events.Key) -> None:
-        if self._typing_ahead:
+        if self._typed_for_an_edit(event):
             event.stop()
             event.prevent_default()
             typed = TypedAhead(event.key, event.character, source=self, request=self._requests)
@@ -165,7 +187,7 @@ class EditorKeys:
     def on_paste(self, event: events.Paste) -> None:
         event.stop()
         event.prevent_default()
-        if self._typing_ahead:
+        if self._typed_for_an_edit(event):
             typed = TypedAhead("paste", None, event.text, self, self._requests)
             self.post_message(typed)  # type: ignore[attr-defined]
         elif event.text.strip():

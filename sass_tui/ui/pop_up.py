@@ -1,0 +1,30 @@
+"""A pop-up screen (a menu, a picker, the help, the message log) whose keys
+act in the order they were typed.
+
+Textual runs a key's binding (an OptionList's Enter, a list's arrows) once
+the key has bubbled up to the app, on the app's own queue.  The app hands on
+the keys of one read one at a time, each once the screen shown has handled
+the one before (ui/key_order.py); a binding left to the app would run after
+that, so the next key of the read would reach the pop-up before the choice
+the last one made (three Enters on the More Menu's Next: the pop-up took all
+three).  A pop-up therefore runs its focused widget's bindings and its own
+as the key reaches it, as every SassScreen does (ui/base.py).
+"""
+
+from __future__ import annotations
+
+from typing import TypeVar
+
+from textual import events
+from textual.screen import ModalScreen
+
+from sass_tui.ui.widgets.editor import run_focused_binding, run_own_binding
+
+ResultType = TypeVar("ResultType")
+
+
+class PopUpScreen(ModalScreen[ResultType]):
+    async def on_key(self, event: events.Key) -> None:
+        if await run_focused_binding(self, event.key) or await run_own_binding(self, event.key):
+            event.stop()
+            event.prevent_default()
