@@ -41,16 +41,31 @@ def _nodes(app: App) -> list[DOMNode]:
     return [screen, *screen.walk_children()]
 
 
+def _at_work(app: App) -> list[DOMNode]:
+    """The widgets the last key may still keep busy: the focused one and
+    those it sits in, to the screen (a key and the Messages its handlers
+    post travel up that line), and any with a Message queued."""
+    nodes = _nodes(app)
+    if not nodes:
+        return []
+    screen = nodes[0]
+    chain: list[DOMNode] = []
+    node: DOMNode | None = getattr(screen, "focused", None)
+    while node is not None and node is not screen:
+        chain.append(node)
+        node = node.parent
+    return [screen, *chain, *(n for n in nodes[1:] if n.message_queue_size and n not in chain)]
+
+
 async def screen_settled(app: App) -> None:
-    """Return once every widget on the screen shown has handled every Message
-    queued for it and those that handling posted (each round asks every
-    widget to call back after what is queued for it now), or after
-    SETTLE_LIMIT_S.  The app's own queue is not waited on: this runs inside
-    the app's handling of the next key."""
+    """Return once the widgets on the screen shown have handled every Message
+    queued for them and those that handling posted (each round asks the
+    widgets `_at_work` to call back after what is queued for them now), or
+    after SETTLE_LIMIT_S.  The app's own queue is not waited on: this runs
+    inside the app's handling of the next key."""
     loop = asyncio.get_running_loop()
     deadline = loop.time() + SETTLE_LIMIT_S
     for _ in range(SETTLE_ROUNDS):
-        nodes = _nodes(app)
         remaining = 0
         all_called = asyncio.Event()
 
@@ -60,7 +75,7 @@ async def screen_settled(app: App) -> None:
             if remaining == 0:
                 all_called.set()
 
-        for node in nodes:
+        for node in _at_work(app):
             if node.call_later(called_back):
                 remaining += 1
         if remaining:
