@@ -21,7 +21,7 @@ from textual.screen import Screen
 
 from sass_tui.model.files.paths import complete_path
 from sass_tui.ui.palette import HelpScreen, help_commands
-from sass_tui.ui.textual_api import bindings_of
+from sass_tui.ui.textual_api import bindings_of, run_bindings_now
 from sass_tui.ui.widgets import MessageLine, ScreenKey, TypedAhead
 from sass_tui.ui.widgets.editor import run_focused_binding
 from sass_tui.ui.widgets.message_line import Completer
@@ -127,21 +127,25 @@ class SassScreen(Screen):
         return complete_path(text, self.sass_app.workdir)
 
     async def on_key(self, event: events.Key) -> None:
+        event.stop()
+        event.prevent_default()
         line = self.message_line
         if line.prompting:
             if not line.answer.display:
                 # A conversation whose first question is not shown yet: the
                 # key is its answer's, never a command (converse).
-                event.stop()
-                event.prevent_default()
                 line.type_ahead(event.key, event.character)
-            return  # the prompt's own keys (Enter, Escape) are the answer's bindings
+            else:
+                # The prompt's own keys (Enter, Escape) ran as the answer's
+                # bindings; another is looked up now, as the app would.
+                await run_bindings_now(self.app, event.key)
+            return
         # A widget's own binding comes first, run here and now rather than by
         # the app after the key has bubbled up: "Down Enter" in one read must
-        # move the list's cursor before the screen's Enter.
-        if await run_focused_binding(self, event.key) or await self._run_binding(event.key):
-            event.stop()
-            event.prevent_default()
+        # move the list's cursor before the screen's Enter.  Nor is a key
+        # left to the app: it would look it up after the next key's work.
+        if not (await run_focused_binding(self, event.key) or await self._run_binding(event.key)):
+            await run_bindings_now(self.app, event.key)
 
     async def on_screen_key(self, event: ScreenKey) -> None:
         event.stop()

@@ -8,7 +8,8 @@ the one before (ui/key_order.py); a binding left to the app would run after
 that, so the next key of the read would reach the pop-up before the choice
 the last one made (three Enters on the More Menu's Next: the pop-up took all
 three).  A pop-up therefore runs its focused widget's bindings and its own
-as the key reaches it, as every SassScreen does (ui/base.py).
+as the key reaches it, as every SassScreen does (ui/base.py), and a key
+none of them takes is looked up at once, as the app would once it bubbled up.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from typing import TypeVar
 from textual import events
 from textual.screen import ModalScreen
 
+from sass_tui.ui.textual_api import run_bindings_now
 from sass_tui.ui.widgets.editor import run_focused_binding, run_own_binding
 
 ResultType = TypeVar("ResultType")
@@ -25,6 +27,9 @@ ResultType = TypeVar("ResultType")
 
 class PopUpScreen(ModalScreen[ResultType]):
     async def on_key(self, event: events.Key) -> None:
-        if await run_focused_binding(self, event.key) or await run_own_binding(self, event.key):
-            event.stop()
-            event.prevent_default()
+        event.stop()
+        event.prevent_default()
+        if not (
+            await run_focused_binding(self, event.key) or await run_own_binding(self, event.key)
+        ):
+            await run_bindings_now(self.app, event.key)

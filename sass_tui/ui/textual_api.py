@@ -19,6 +19,12 @@ A key held back while an answer is being handled is passed on afterwards
 (`Message._set_forwarded`), so that the app does not route it a second time
 when it bubbles up unhandled.
 
+A key no widget took would bubble up to the app, which looks its binding up
+along the focus chain (`App._check_bindings`) when the key reaches the app's
+queue: by then a later key may have moved the focus (a prompt closed), and
+the sheet's Down ran for a Down typed into the prompt.  The screens stop
+such a key and look it up at once, the same way (`run_bindings_now`).
+
 A key typed before an edit was refused is part of the value refused, never a
 command (ui/widgets/editor.py): the widget compares the key's time stamp
 with the moment of the refusal on the clock Textual stamps its Messages
@@ -28,6 +34,7 @@ with (`textual._time.get_time`, `event_clock` here).
 from __future__ import annotations
 
 from textual import _time
+from textual.app import App
 from textual.binding import BindingsMap
 from textual.dom import DOMNode
 from textual.events import Event
@@ -55,6 +62,14 @@ def forward_event(node: DOMNode, event: Event) -> None:
     """Give `node` a key (or paste) as the app gives the focused widget one."""
     event._set_forwarded()
     node.post_message(event)
+
+
+async def run_bindings_now(app: App, key: str) -> bool:
+    """Look `key` up as Textual does once it has bubbled up to the app (the
+    focused widget's bindings, its containers', the screen's, the app's),
+    but now; whether one ran."""
+    ran: bool = await app._check_bindings(key)
+    return ran
 
 
 def event_clock() -> float:

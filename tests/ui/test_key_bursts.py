@@ -12,6 +12,8 @@ import shutil
 import pytest
 from _screen import settle, wait_until
 from _tmux import sass_in_tmux
+from hypothesis import HealthCheck, example, given, settings
+from hypothesis import strategies as st
 from textual import events
 
 from sass_tui.model.body.figure import Figure
@@ -92,6 +94,59 @@ def test_keys_read_while_the_app_is_at_work_land_in_order(drive, app_at, seed):
             await column_typed(app, pilot)
 
     drive(scenario())
+
+
+# Keys that act on the Girth sheet and its prompt without opening a screen or
+# starting a worker: the parts of a value, the arrows, Enter, Escape,
+# Backspace, undo and the unit switch.
+SHEET_KEYS = [(c, c) for c in "0123456789.- "] + [
+    ("enter", "\r"),
+    ("down", None),
+    ("up", None),
+    ("left", None),
+    ("right", None),
+    ("escape", None),
+    ("backspace", None),
+    ("u", "u"),
+    ("c", "c"),
+]
+
+
+def sheet_state(app) -> tuple:
+    """The column's values, the cursor, and the prompt with its answer."""
+    line = app.message_line
+    return (
+        app.figure.groups[GIRTH].values.round(4).tolist(),
+        app.query_one(DataSheet).chosen(),
+        line.prompting,
+        line.answer.value if line.prompting else None,
+    )
+
+
+@settings(max_examples=8, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(keys=st.lists(st.sampled_from(SHEET_KEYS), min_size=1, max_size=16), seed=st.integers(0, 99))
+@example(keys=[(".", "."), ("down", None), ("enter", "\r"), (" ", " "), ("down", None)], seed=0)
+def test_a_burst_does_what_the_same_keys_typed_one_by_one_do(drive, app_at, keys, seed):
+    """The same keys, posted in one read while the app is at work, and typed
+    one at a time with the app idle in between: the same sheet, cursor and
+    prompt.  (A Down typed into a prompt ran the sheet's Down once the
+    prompt had closed: the app looked the key up after the next one.)"""
+
+    async def typed(in_one_read: bool) -> tuple:
+        turns = random.Random(seed)
+        async with app_at(LARGE) as (app, pilot):
+            for key, character in keys:
+                app.post_message(events.Key(key, character))
+                if in_one_read:
+                    for _ in range(turns.choice([0, 0, 1, 3, 8])):
+                        await asyncio.sleep(0)  # the app's turn, not a delay
+                else:
+                    await settle(pilot)
+            await settle(pilot)
+            await settle(pilot)
+            return sheet_state(app)
+
+    assert drive(typed(in_one_read=True)) == drive(typed(in_one_read=False))
 
 
 def test_keys_after_an_escape_in_one_burst_are_the_sheets(drive, app_at):
