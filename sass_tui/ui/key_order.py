@@ -25,6 +25,8 @@ import asyncio
 from textual.app import App, ScreenStackError
 from textual.dom import DOMNode
 
+from sass_tui.ui.widgets.editor import focused_line
+
 # A handler still at work after this long (it awaits something slow) does
 # not hold the keys typed after it any longer: they go on in order.
 SETTLE_LIMIT_S = 2.0
@@ -48,13 +50,9 @@ def _at_work(app: App) -> list[DOMNode]:
     nodes = _nodes(app)
     if not nodes:
         return []
-    screen = nodes[0]
-    chain: list[DOMNode] = []
-    node: DOMNode | None = getattr(screen, "focused", None)
-    while node is not None and node is not screen:
-        chain.append(node)
-        node = node.parent
-    return [screen, *chain, *(n for n in nodes[1:] if n.message_queue_size and n not in chain)]
+    screen = app.screen
+    line = focused_line(screen)
+    return [screen, *line, *(n for n in nodes[1:] if n.message_queue_size and n not in line)]
 
 
 async def screen_settled(app: App) -> None:

@@ -7,9 +7,9 @@ the keys of one read one at a time, each once the screen shown has handled
 the one before (ui/key_order.py); a binding left to the app would run after
 that, so the next key of the read would reach the pop-up before the choice
 the last one made (three Enters on the More Menu's Next: the pop-up took all
-three).  A pop-up therefore runs its focused widget's bindings and its own
-as the key reaches it, as every SassScreen does (ui/base.py), and a key
-none of them takes is looked up at once, as the app would once it bubbled up.
+three).  A pop-up therefore looks the key up as it reaches it, as the app would once
+it bubbled up (its focused widget's bindings, its containers', its own), as
+every SassScreen runs them at once (ui/base.py).
 """
 
 from __future__ import annotations
@@ -20,7 +20,6 @@ from textual import events
 from textual.screen import ModalScreen
 
 from sass_tui.ui.textual_api import run_bindings_now
-from sass_tui.ui.widgets.editor import run_focused_binding, run_own_binding
 
 ResultType = TypeVar("ResultType")
 
@@ -29,7 +28,6 @@ class PopUpScreen(ModalScreen[ResultType]):
     async def on_key(self, event: events.Key) -> None:
         event.stop()
         event.prevent_default()
-        if not (
-            await run_focused_binding(self, event.key) or await run_own_binding(self, event.key)
-        ):
-            await run_bindings_now(self.app, event.key)
+        # Textual's own look-up stops at a pop-up (the modal binding chain):
+        # the focused widget, its containers, the pop-up.
+        await run_bindings_now(self.app, event.key)

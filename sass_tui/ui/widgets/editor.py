@@ -8,6 +8,7 @@ from textual import events
 from textual.binding import Binding
 from textual.dom import DOMNode
 from textual.message import Message
+from textual.screen import Screen
 
 from sass_tui.ui.textual_api import bindings_of, event_clock
 
@@ -35,16 +36,24 @@ async def run_own_binding(node: DOMNode, key: str) -> bool:
     return False
 
 
-async def run_focused_binding(screen: DOMNode, key: str) -> bool:
+def focused_line(screen: Screen) -> list[DOMNode]:
+    """The focused widget and the containers it sits in, below `screen`: the
+    line a key and the Messages its handlers post travel up."""
+    focused = screen.focused
+    if focused is None:
+        return []
+    line = focused.ancestors_with_self
+    return line[: line.index(screen)] if screen in line else line
+
+
+async def run_focused_binding(screen: Screen, key: str) -> bool:
     """Run, at once, the binding for `key` of `screen`'s focused widget or of
     the nearest of its containers below the screen that has one; False when
     none does.  Left to Textual, it would run once the key had bubbled up to
     the app's queue: after the keys that came in the same read (ui/key_order.py)."""
-    node: DOMNode | None = getattr(screen, "focused", None)
-    while node is not None and node is not screen:
+    for node in focused_line(screen):
         if await run_own_binding(node, key):
             return True
-        node = node.parent
     return False
 
 
