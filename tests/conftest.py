@@ -8,6 +8,7 @@ from pathlib import Path
 
 import _bytecode  # noqa: F401  (first: sass's modules get bytecode; tests/_bytecode.py)
 import pytest
+from _built_once import built_once
 from _paths import ANSUR, REPORT
 from hypothesis import settings
 
@@ -46,13 +47,17 @@ def ansur_dir() -> Path:
 @pytest.fixture(scope="session")
 def shipped_db_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The database `sass db init` builds from the shipped data, built once per
-    test process and never written: each area copies it (`db` in tests/ui,
-    `default_db_file` in tests/db, `default_people_db` in tests/web)."""
+    run (tests/_built_once.py) and never written: each area copies it (`db` in
+    tests/ui, `default_db_file` in tests/db, `default_people_db` in tests/web)
+    or only reads it."""
     from sass_tui.db.people.default import create_default_database
 
-    path = tmp_path_factory.mktemp("shipped") / "sass.db"
-    create_default_database(path)
-    return path
+    return (
+        built_once(
+            tmp_path_factory, "shipped", lambda folder: create_default_database(folder / "sass.db")
+        )
+        / "sass.db"
+    )
 
 
 @pytest.fixture(autouse=True, scope="session")
@@ -140,28 +145,40 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
 
 
 @pytest.fixture(scope="session")
-def cluster():
-    """A running PostgreSQL cluster; the test skips, saying why, where none can start."""
-    from _postgres import running_cluster, why_not
+def cluster(tmp_path_factory: pytest.TempPathFactory):
+    """A running PostgreSQL cluster of this test process, a copy of the run's
+    cluster made once with `sass db init` in its database TEMPLATE
+    (tests/_built_once.py); the test skips, saying why, where none can start."""
+    from _postgres import build_cluster_copy, running_cluster, why_not
 
     reason = why_not()
     if reason is not None:
         pytest.skip(f"PostgreSQL: {reason}")
-    with running_cluster() as running:
+
+    def sass_db_init(url: str) -> None:
+        assert main(["db", "init", "--force", "--db", url]) == 0
+
+    built = built_once(
+        tmp_path_factory,
+        "postgres",
+        lambda folder: build_cluster_copy(folder / "data", TEMPLATE, sass_db_init),
+    )
+    with running_cluster(copy_of=built / "data") as running:
         yield running
+
+
+# The database of the cluster after `sass db init`, that others are copied from.
+TEMPLATE = "sass_template"
 
 
 @pytest.fixture(scope="session")
 def postgres_template(cluster) -> str:
-    """The name of a PostgreSQL database after `sass db init`, made once per test
-    process, that others are copied from (`CREATE DATABASE ... TEMPLATE`: a
-    file copy, under a second where the import takes seconds).  Never connect
-    to it: PostgreSQL copies only a template nobody is connected to."""
-    from sass_tui.cli import main
-
-    name = "sass_template"
-    assert main(["db", "init", "--force", "--db", cluster.create_database(name)]) == 0
-    return name
+    """The name of the cluster's database after `sass db init` (made once per
+    run, with the cluster it came in), that others are copied from (`CREATE
+    DATABASE ... TEMPLATE`: a file copy, under a second where the import takes
+    seconds).  Never connect to it: PostgreSQL copies only a template nobody is
+    connected to."""
+    return TEMPLATE
 
 
 @pytest.fixture(scope="session")
