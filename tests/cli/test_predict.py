@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _built_once import built_once
 
 from sass_tui.cli import main
 from sass_tui.db.engine.schema import connect, transaction
@@ -28,18 +29,21 @@ KNOWN = ["--known", "stature=175.5cm", "--known", "mass=82.2kg"]
 
 @pytest.fixture(scope="session")
 def ansur_db_file(ansur_dir, tmp_path_factory) -> Path:
-    """A database holding ANSUR II, imported from the published files."""
-    path = tmp_path_factory.mktemp("ansur") / "ansur.db"
-    conn = connect(path, create=True)
-    try:
-        import_ansur(
-            conn,
-            [ansur_dir / "ANSUR_II_MALE_Public.csv", ansur_dir / "ANSUR_II_FEMALE_Public.csv"],
-        )
-        open_predictor(conn)  # the fit, cached beside the file
-    finally:
-        conn.close()
-    return path
+    """A database holding ANSUR II, imported from the published files once a
+    run (tests/_built_once.py), with its fit cached beside it; never written."""
+
+    def build(folder: Path) -> None:
+        conn = connect(folder / "ansur.db", create=True)
+        try:
+            import_ansur(
+                conn,
+                [ansur_dir / "ANSUR_II_MALE_Public.csv", ansur_dir / "ANSUR_II_FEMALE_Public.csv"],
+            )
+            open_predictor(conn)  # the fit, cached beside the file
+        finally:
+            conn.close()
+
+    return built_once(tmp_path_factory, "predict-ansur", build) / "ansur.db"
 
 
 @pytest.fixture()

@@ -8,6 +8,7 @@ values are asked of both."""
 from __future__ import annotations
 
 import csv
+import json
 import math
 from collections.abc import Iterator
 from contextlib import closing
@@ -16,6 +17,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from _built_once import built_once
 
 from sass_tui.cli import main
 from sass_tui.db.engine.database import Database
@@ -39,15 +41,25 @@ def ansur_files() -> list[Path]:
 
 @pytest.fixture(scope="session")
 def ansur_target(engine, ansur_files, tmp_path_factory, request) -> tuple[str, dict[str, int]]:
-    """A new database of `engine` holding ANSUR II alone, imported once per test
-    process through the Database service: its address and the import's counts."""
+    """A new database of `engine` holding ANSUR II alone, imported through the
+    Database service (SQLite's once a run, tests/_built_once.py; PostgreSQL's
+    once per test process, into its cluster): its address and the import's counts."""
+
+    def imported(target: str) -> dict[str, int]:
+        with closing(Database.open(target, create=True)) as db:
+            return import_ansur_into(db, ansur_files, label="ansur2")
+
     if engine == "sqlite":
-        target = str(tmp_path_factory.mktemp("ansur") / "ansur.db")
-    else:
-        target = request.getfixturevalue("cluster").create_database("sass_ansur")
-    with closing(Database.open(target, create=True)) as db:
-        counts = import_ansur_into(db, ansur_files, label="ansur2")
-    return target, counts
+
+        def build(folder: Path) -> None:
+            counts = imported(str(folder / "ansur.db"))
+            (folder / "counts.json").write_text(json.dumps(counts), encoding="utf-8")
+
+        folder = built_once(tmp_path_factory, "ansur-sqlite", build)
+        counts = json.loads((folder / "counts.json").read_text(encoding="utf-8"))
+        return str(folder / "ansur.db"), counts
+    target = request.getfixturevalue("cluster").create_database("sass_ansur")
+    return target, imported(target)
 
 
 @pytest.fixture()

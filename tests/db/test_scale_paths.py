@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _built_once import built_once
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
@@ -89,15 +90,18 @@ def generated_batch(rng: np.random.Generator, ids: np.ndarray) -> PeopleBatch:
 
 @pytest.fixture(scope="session")
 def generated_db_file(tmp_path_factory) -> Path:
-    path = tmp_path_factory.mktemp("scale") / "generated.db"
-    conn = connect(path, create=True)
-    rng = np.random.default_rng(16)
-    # ids with gaps, as after deletions and imports from several sources
-    ids = np.sort(rng.choice(np.arange(1, 3 * PEOPLE), PEOPLE, replace=False))
-    with transaction(conn):
-        store_people(conn, generated_batch(rng, ids), replace=False)
-    conn.close()
-    return path
+    """PEOPLE generated people, built once a run (tests/_built_once.py); never written."""
+
+    def build(folder: Path) -> None:
+        conn = connect(folder / "generated.db", create=True)
+        rng = np.random.default_rng(16)
+        # ids with gaps, as after deletions and imports from several sources
+        ids = np.sort(rng.choice(np.arange(1, 3 * PEOPLE), PEOPLE, replace=False))
+        with transaction(conn):
+            store_people(conn, generated_batch(rng, ids), replace=False)
+        conn.close()
+
+    return built_once(tmp_path_factory, "scale", build) / "generated.db"
 
 
 @pytest.fixture()
@@ -660,6 +664,7 @@ def test_a_crash_mid_import_leaves_copy_and_file_alike(db, tmp_path):
         "import os, sys\n"
         "import numpy as np\n"
         f"sys.path.insert(0, {str(Path(__file__).parent)!r})\n"
+        f"sys.path.insert(0, {str(Path(__file__).parents[1])!r})\n"  # tests/_built_once.py
         "from test_scale_paths import generated_batch\n"
         "from sass_tui.db.people.people_store import store_people\n"
         "from sass_tui.db.engine.schema import connect, transaction\n"
