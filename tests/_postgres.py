@@ -78,12 +78,6 @@ class Cluster:
             "--locale=C", "--no-sync",
         )  # fmt: skip
 
-    def copy_data(self, data: Path) -> None:
-        """The data folder of a cluster stopped cleanly (build_cluster_copy's),
-        in place of initdb's: its databases come with it."""
-        # cp -a keeps each file's owner (the server's user) and the folder's 0700
-        subprocess.run(["cp", "-a", str(data), str(self.data)], check=True, timeout=120)
-
     def start(self) -> None:
         options = (
             f"-p {self.port} -k {self.folder} -c listen_addresses=127.0.0.1 "
@@ -147,8 +141,8 @@ def running_cluster(copy_of: Path | None = None) -> Iterator[Cluster]:
     try:
         if copy_of is None:
             cluster.init()
-        else:
-            cluster.copy_data(copy_of)
+        else:  # its databases come with it
+            copy_data_folder(copy_of, cluster.data)
         cluster.start()
         yield cluster
     finally:
@@ -162,4 +156,10 @@ def build_cluster_copy(data: Path, database: str, fill: Callable[[str], None]) -
     with running_cluster() as cluster:
         fill(cluster.create_database(database))
         cluster.stop()
-        subprocess.run(["cp", "-a", str(cluster.data), str(data)], check=True, timeout=120)
+        copy_data_folder(cluster.data, data)
+
+
+def copy_data_folder(source: Path, target: Path) -> None:
+    """A copy of a stopped cluster's data folder at `target` (not there yet)."""
+    # cp -a keeps each file's owner (the server's user) and the folder's 0700
+    subprocess.run(["cp", "-a", str(source), str(target)], check=True, timeout=120)

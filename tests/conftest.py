@@ -52,12 +52,10 @@ def shipped_db_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
     or only reads it."""
     from sass_tui.db.people.default import create_default_database
 
-    return (
-        built_once(
-            tmp_path_factory, "shipped", lambda folder: create_default_database(folder / "sass.db")
-        )
-        / "sass.db"
-    )
+    def build(folder: Path) -> None:
+        create_default_database(folder / "sass.db")
+
+    return built_once(tmp_path_factory, "shipped", build) / "sass.db"
 
 
 @pytest.fixture(autouse=True, scope="session")
@@ -144,6 +142,10 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
 # --- both engines: a throwaway PostgreSQL cluster (tests/_postgres.py) ------------
 
 
+# The database of the cluster after `sass db init`, that others are copied from.
+TEMPLATE = "sass_template"
+
+
 @pytest.fixture(scope="session")
 def cluster(tmp_path_factory: pytest.TempPathFactory):
     """A running PostgreSQL cluster of this test process, a copy of the run's
@@ -165,10 +167,6 @@ def cluster(tmp_path_factory: pytest.TempPathFactory):
     )
     with running_cluster(copy_of=built / "data") as running:
         yield running
-
-
-# The database of the cluster after `sass db init`, that others are copied from.
-TEMPLATE = "sass_template"
 
 
 @pytest.fixture(scope="session")

@@ -11,6 +11,9 @@ from collections.abc import AsyncIterator, Callable
 from pathlib import Path
 
 import pytest
+import textual._wait
+import textual.screen
+from textual.css.stylesheet import Stylesheet
 from textual.pilot import Pilot
 from textual.widgets import Input
 
@@ -27,8 +30,6 @@ def quick_idle_check():
     with 5 ms sleeps (load 11 on the 2 cores).  Still the same test of
     idleness, 1 ms of CPU in a sleep.  Textual's private module: setattr
     raises if the name moves, failing every UI test at once."""
-    import textual._wait
-
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(textual._wait, "SLEEP_GRANULARITY", 1 / 200)
         yield
@@ -45,8 +46,6 @@ def css_parsed_once():
     at few_frames' rate).  The rules are read, never
     changed, once parsed (Textual's own cache hands the same list out again).
     Textual's private method: setattr raises if the name moves."""
-    from textual.css.stylesheet import Stylesheet
-
     parse_rules = Stylesheet._parse_rules
     parsed: dict[tuple, list] = {}
 
@@ -85,8 +84,6 @@ def few_frames(request, monkeypatch):
     keys, and a footer recomposed by that pause is drawn only on the next
     frame (tests/ui/test_query_snapshots.py's More Menu lost its footer at 4).
     Textual's private module constant: setattr raises if the name moves."""
-    import textual.screen
-
     if "snap_compare" not in request.fixturenames:
         monkeypatch.setattr(textual.screen, "UPDATE_PERIOD", FRAME_PERIOD_S)
 
