@@ -82,9 +82,10 @@ class Cluster:
         # A throwaway server is never recovered, so nothing it writes for a
         # crash is needed: no fsync, no WAL beyond what a clean stop needs
         # (wal_level=minimal lets a COPY into a table made in its own
-        # transaction skip the WAL), no checkpoint in the middle of an import,
-        # and no autovacuum, whose analyses of every import only cost CPU
-        # (tests/db: 268 -> 250 CPU-seconds of the machine; docs/performance.md).
+        # transaction skip the WAL), no checkpoint in the middle of an import
+        # (CREATE DATABASE ... FILE_COPY still makes one), and no autovacuum
+        # (its analyses of the imports, ~3 CPU-seconds a run).  Together:
+        # tests/db 268 -> 250 CPU-seconds of the machine (docs/performance.md).
         options = (
             f"-p {self.port} -k {self.folder} -c listen_addresses=127.0.0.1 "
             "-c fsync=off -c synchronous_commit=off -c full_page_writes=off "
