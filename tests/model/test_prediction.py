@@ -261,6 +261,41 @@ def test_a_value_10_sd_from_the_population_is_refused(predictor):
         predictor.predict("male", {"stature": float("nan")})
 
 
+def test_a_length_or_mass_far_below_the_mean_is_refused_on_the_log_scale(predictor):
+    # Below the mean a positive value lies at most mean/SD linear SDs away
+    # (about 6 for mass), so 10 SD alone let a mass typed in tonnes through.
+    m = predictor.model("male")
+    i = m.index()["mass"]
+    mean, sd = float(m.mean[i]), float(m.sd[i])
+    assert (mean - 0.08) / sd < MAX_SD  # what the linear bound alone says of 0.08
+    with pytest.raises(OutlierError, match=r"mass = 0\.08 kg is 0\.094 % of the mean of the"):
+        predictor.predict("male", {"mass": 0.08})  # 80 kg typed in tonnes
+    with pytest.raises(OutlierError, match=r"known\.csv:3: mass = 0\.0001 kg is"):
+        predictor.predict_matrix(
+            "male", ["mass"], np.array([[80.0], [0.0001]]), where=["known.csv:2", "known.csv:3"]
+        )
+    # The bound itself, computed here: MAX_SD on the log scale, whose SD is SD/mean.
+    edge = mean * math.exp(-MAX_SD * sd / mean)
+    predictor.predict("male", {"mass": edge * 1.01})
+    with pytest.raises(OutlierError, match="% of the mean"):
+        predictor.predict("male", {"mass": edge * 0.99})
+
+
+@pytest.mark.parametrize("gender", ["female", "male"])
+def test_every_real_persons_smallest_and_largest_value_is_accepted(predictor, values, gender):
+    # The bounds refuse typing mistakes, never a soldier ANSUR II measured:
+    # each field's smallest and largest value among the people is predicted from.
+    rows = _rows(values, gender)
+    for c, name in enumerate(values.fields):
+        column = values.matrix[rows, c]
+        column = column[np.isfinite(column)]
+        if name not in predictor.model(gender).index() or not len(column):
+            continue
+        for value in (column.min(), column.max()):
+            if value > 0 or name.startswith("center_of_mass."):
+                predictor.predict(gender, {name: float(value)})
+
+
 def test_a_gender_without_data_says_so(values):
     males = Predictor.fit(_subset(values, _rows(values, "male")), values.fields)
     with pytest.raises(NoDataError, match="no female people"):

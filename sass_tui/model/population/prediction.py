@@ -80,7 +80,10 @@ FloatArray = npt.NDArray[np.float64]
 MODEL_VERSION = 1
 LEVEL = 0.90
 Z = NormalDist().inv_cdf(0.5 + LEVEL / 2)
-MAX_SD = 10.0  # a known value this many SD from the population mean is refused
+# A known value this many SD from the population mean is refused; for a
+# length or mass below the mean, this many SD on the log scale (see
+# Predictor._check_outliers).
+MAX_SD = 10.0
 MIN_PEOPLE = 30  # fewer complete people of a gender than this: no model
 # ANSUR II's own columns for what the person table holds as stature and mass.
 ALIASES: dict[str, str] = {"measure.stature": "stature", "measure.weightkg": "mass"}
@@ -104,7 +107,8 @@ class FieldUnitError(PredictionError):
 
 
 class OutlierError(PredictionError):
-    """A known value lies MAX_SD or more standard deviations from the population."""
+    """A known value lies MAX_SD or more standard deviations from the population
+    (a length or mass below its mean: on the log scale)."""
 
 
 class NoDataError(PredictionError):
@@ -630,18 +634,38 @@ class Predictor:
     ) -> None:
         # Lengths and masses are positive; a center-of-mass offset may not be.
         signed = np.array([n.startswith(f"{CENTER_OF_MASS}.") for n in names], dtype=bool)
-        bad = ~(np.abs(z) < MAX_SD) | ((values <= 0) & ~signed)
+        # Below the mean a positive value can lie at most mean/SD standard
+        # deviations away (about 6 for mass), so the linear bound never holds
+        # a mass typed in tonnes (0.08 for 80 kg): below the mean, lengths
+        # and masses are measured on the log scale, whose SD is about the
+        # coefficient of variation SD/mean.
+        index = m.index()
+        cols = [index[n] for n in names]
+        mean, sd = m.mean[cols], m.sd[cols]
+        positive = ~signed & (values > 0) & (mean > 0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            log_z = np.where(
+                positive, np.log(np.where(positive, values, 1.0) / mean) * mean / sd, 0.0
+            )
+        bad = ~(np.abs(z) < MAX_SD) | ((values <= 0) & ~signed) | (log_z <= -MAX_SD)
         if not bad.any():
             return
         row, col = (int(i) for i in np.argwhere(bad)[0])
         name, value, score = names[col], float(values[row, col]), float(z[row, col])
         at = name if where is None else f"{where[row]}: {name}"
-        i = m.index()[name]
+        i = index[name]
         unit = field_unit(name)
         if not math.isfinite(value):
             raise FieldUnitError(f"{at}: expected a number, got {value}", where=at)
         if value <= 0 and not signed[col]:
             raise OutlierError(f"{at} = {value:g} {unit}: must be more than 0", where=at)
+        if log_z[row, col] <= -MAX_SD:
+            raise OutlierError(
+                f"{at} = {value:g} {unit} is {100 * value / m.mean[i]:.2g} % of the mean of "
+                f"the {m.n} {m.gender} people ({m.mean[i]:.1f} {unit}, SD {m.sd[i]:.1f}); "
+                f"check the value and its unit",
+                where=at,
+            )
         side = "above" if score > 0 else "below"
         raise OutlierError(
             f"{at} = {value:g} {unit} is {abs(score):.1f} SD {side} the mean of the "
