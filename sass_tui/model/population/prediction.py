@@ -642,12 +642,11 @@ class Predictor:
         index = m.index()
         cols = [index[n] for n in names]
         mean, sd = m.mean[cols], m.sd[cols]
-        positive = ~signed & (values > 0) & (mean > 0)
         with np.errstate(divide="ignore", invalid="ignore"):
-            log_z = np.where(
-                positive, np.log(np.where(positive, values, 1.0) / mean) * mean / sd, 0.0
-            )
-        bad = ~(np.abs(z) < MAX_SD) | ((values <= 0) & ~signed) | (log_z <= -MAX_SD)
+            log_z = np.log(values / mean) * (mean / sd)
+        # (a value not above 0 gives NaN or -inf here; "must be more than 0" names it first)
+        far_below = ~signed & (log_z <= -MAX_SD)
+        bad = ~(np.abs(z) < MAX_SD) | ((values <= 0) & ~signed) | far_below
         if not bad.any():
             return
         row, col = (int(i) for i in np.argwhere(bad)[0])
@@ -659,7 +658,7 @@ class Predictor:
             raise FieldUnitError(f"{at}: expected a number, got {value}", where=at)
         if value <= 0 and not signed[col]:
             raise OutlierError(f"{at} = {value:g} {unit}: must be more than 0", where=at)
-        if log_z[row, col] <= -MAX_SD:
+        if far_below[row, col]:
             raise OutlierError(
                 f"{at} = {value:g} {unit} is {100 * value / m.mean[i]:.2g} % of the mean of "
                 f"the {m.n} {m.gender} people ({m.mean[i]:.1f} {unit}, SD {m.sd[i]:.1f}); "
