@@ -8,8 +8,9 @@ hash of the server, port, database and user the connection reached, never
 its password).  It is reused while the data it was fitted on are unchanged:
 the file records a key (a hash of the people's count, ids, genders and the
 totals of every column the fit reads), recomputed from the database on each
-open — a few milliseconds of SQL, against loading and fitting every value
-(about 2 s for the default people).
+open — 85 ms of SQL for the default people, against loading and fitting every
+value (about 2 s) — unless the SQLite file shows no commit since this process
+last computed it (`data_key`).
 
 What the CLI (`sass predict`) and the TUI call:
 
@@ -30,6 +31,7 @@ No Textual, no argument parsing, no printing.
 from __future__ import annotations
 
 import hashlib
+import os
 import sqlite3
 from pathlib import Path
 
@@ -75,13 +77,64 @@ def _columns(conn: sqlite3.Connection, table: str) -> list[str]:
     return [column[0] for column in conn.execute(f"SELECT * FROM {table} LIMIT 0").description]
 
 
+# The keys this process computed, by the SQLite file's version (`_file_version`)
+# and the population: the key reads every table of people (85 ms for the default
+# database), and each prediction in the TUI asks for it again though nothing
+# was written in between.
+_KEYS: dict[tuple[object, ...], str] = {}
+_KEYS_KEPT = 16
+
+
+def _file_version(conn: sqlite3.Connection) -> tuple[object, ...] | None:
+    """The connection's SQLite file as it stands: its device, inode, size,
+    modification time and file change counter, the header's 4 bytes at offset
+    24 that every commit in rollback-journal mode increments (sqlite.org/
+    fileformat.html, 1.3.5).  None when that cannot vouch for the data: a
+    database in memory or on PostgreSQL, a file in WAL mode (header bytes 18-19
+    are 2: its commits may leave the counter), or this connection inside a
+    transaction (its writes are not committed yet)."""
+    if conn.in_transaction:
+        return None
+    path = database_file(conn)
+    if path is None:
+        return None
+    try:
+        with open(path, "rb") as file:
+            status = os.fstat(file.fileno())
+            header = file.read(28)
+    except OSError:
+        return None
+    if len(header) < 28 or header[18:20] != b"\x01\x01":
+        return None
+    counter = int.from_bytes(header[24:28], "big")
+    return (status.st_dev, status.st_ino, status.st_size, status.st_mtime_ns, counter)
+
+
 def data_key(conn: sqlite3.Connection, population: str = DEFAULT_POPULATION) -> str:
     """A hash that changes when people are added, removed or their values
-    edited, or another population is asked for."""
+    edited, or another population is asked for; for a SQLite file with no
+    commit since this process computed it, the key computed then."""
+    population = " ".join(population.split())
+    version = _file_version(conn)
+    if version is None:
+        return _computed_key(conn, population)
+    memo = (*version, population)
+    key = _KEYS.get(memo)
+    if key is None:
+        key = _computed_key(conn, population)
+        # a commit by another process while the key was computed: not kept
+        if _file_version(conn) == version:
+            _KEYS[memo] = key
+            while len(_KEYS) > _KEYS_KEPT:
+                del _KEYS[next(iter(_KEYS))]
+    return key
+
+
+def _computed_key(conn: sqlite3.Connection, population: str) -> str:
     fields = predicted_fields()
     # "real people": the fit learns from real people unless the population names a
     # source (db/query/scope.py); a cache fitted before, on the synthetic people too, is not reused.
-    parts: list[object] = [MODEL_VERSION, fields, "real people", " ".join(population.split())]
+    parts: list[object] = [MODEL_VERSION, fields, "real people", population]
 
     def totals(table: str, columns: list[str]) -> None:
         sums = ", ".join(total(conn, column) for column in ["id_num", *columns])
