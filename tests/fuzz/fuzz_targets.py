@@ -274,9 +274,16 @@ class _Databases:
         self._template.backup(copy)
         return copy
 
+    def use_default_file(self, path: Path) -> None:
+        """Take `path` (a copy of the database `sass db init` builds) as the
+        default database instead of building one: the suite's, built once a
+        run (tests/conftest.py's shipped_db_file)."""
+        if self._file is None:
+            self._file = path
+
     def default_file(self) -> Path:
-        """The default database as a file (the verbs open a path), built once:
-        the verbs fuzzed here only read it."""
+        """The default database as a file (the verbs open a path), built once
+        (or the one `use_default_file` gave): the verbs fuzzed here only read it."""
         if self._file is None:
             from sass_tui.db.people.default import create_default_database
 

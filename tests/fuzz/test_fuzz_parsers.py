@@ -12,9 +12,10 @@ from __future__ import annotations
 
 import faulthandler
 import random
+import shutil
 
 import pytest
-from fuzz_targets import KNOWN_ELSEWHERE, TARGET_MAKERS, outcome, target
+from fuzz_targets import DATABASES, KNOWN_ELSEWHERE, TARGET_MAKERS, outcome, target
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -28,6 +29,15 @@ EXAMPLES = {"population": 100, "strength": 200, "fig": 120, "query": 200, "flat"
             # ~300 each in CI, as docs/reliability.md says (about 8 s of CPU together,
             # with the default database's build)
             "worksheet": 300, "sample": 300, "arm_force": 300, "stats": 300, "task": 300}  # fmt: skip
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _the_runs_default_database(shipped_db_file, tmp_path_factory):
+    """The query target and the verbs read a copy of the run's default
+    database rather than building their own (~2 s of CPU)."""
+    copy = tmp_path_factory.mktemp("fuzz") / "sass.db"
+    shutil.copyfile(shipped_db_file, copy)
+    DATABASES.use_default_file(copy)
 
 
 def check(name: str, value: object) -> str:
