@@ -101,7 +101,7 @@ def tmpfs_with_db(tmp_path, small_db_file):
 
     with mounted_tmpfs(tmp_path / "mnt", small_db_file.stat().st_size + 2 * 1024 * 1024) as mnt:
         db = mnt / "sass.db"
-        db.write_bytes(small_db_file.read_bytes())
+        shutil.copyfile(small_db_file, db)
         yield mnt, db
 
 

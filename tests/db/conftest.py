@@ -45,7 +45,7 @@ def default_db_file(shipped_db_file, tmp_path_factory) -> Path:
 def default_db(default_db_file, tmp_path):
     """A private copy of the default database (tests may write to it)."""
     copy = tmp_path / "default.db"
-    copy.write_bytes(default_db_file.read_bytes())
+    shutil.copyfile(default_db_file, copy)
     conn = connect(copy)
     yield conn
     conn.close()

@@ -8,6 +8,7 @@ message; `sass population --ids` of 100 MB took 40 s and 7.7 GB."""
 from __future__ import annotations
 
 import os
+import shutil
 
 import pytest
 
@@ -80,7 +81,7 @@ def test_a_file_over_its_kinds_size_is_refused_unread(
     huge = sparse(tmp_path / "huge.dat", largest + 1)
     out = tmp_path / "out.x"
     db = tmp_path / "s.db"
-    db.write_bytes(default_db_file.read_bytes())
+    shutil.copyfile(default_db_file, db)
     before = db.read_bytes()
     assert main([a.format(f=huge, out=out, db=db) for a in argv]) == 2
     said = capsys.readouterr().err
@@ -209,7 +210,7 @@ def test_ids_on_standard_input_are_bounded_too(default_db_file, tmp_path, monkey
     endless = Endless()
     monkeypatch.setattr("sys.stdin", endless)
     db = tmp_path / "s.db"
-    db.write_bytes(default_db_file.read_bytes())
+    shutil.copyfile(default_db_file, db)
     out = tmp_path / "p.dat"
     assert main(["population", "--db", str(db), "--ids", "-", "-o", str(out)]) == 2
     said = capsys.readouterr().err

@@ -9,6 +9,7 @@ how they answered (accelerator.last_answer) instead of being timed.
 from __future__ import annotations
 
 import os
+import shutil
 import sqlite3
 import subprocess
 import sys
@@ -70,7 +71,7 @@ def sqlite_count(path: Path, text: str) -> int:
 @pytest.fixture()
 def db_path(default_db_file, tmp_path) -> Path:
     copy = tmp_path / "people.db"
-    copy.write_bytes(default_db_file.read_bytes())
+    shutil.copyfile(default_db_file, copy)
     return copy
 
 

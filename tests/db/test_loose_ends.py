@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 
 import pytest
 from hypothesis import assume, given
@@ -109,7 +110,7 @@ def test_no_reader_opens_what_is_not_a_regular_file(
     out = tmp_path / "out.x"
     db = tmp_path / "s.db"
     if argv[0] in ("predict", "population"):
-        db.write_bytes(default_db_file.read_bytes())
+        shutil.copyfile(default_db_file, db)
     args = [a.format(f=name, out=out, db=db) for a in argv]
     assert main(args) == 2
     said = capsys.readouterr().err

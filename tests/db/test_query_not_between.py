@@ -8,6 +8,7 @@ of the parser over every form."""
 from __future__ import annotations
 
 import csv
+import shutil
 
 import pint
 import pytest
@@ -271,7 +272,7 @@ def test_the_duckdb_copy_counts_not_and_between_as_sqlite_does(
 ):
     pytest.importorskip("duckdb")
     path = tmp_path / "people.db"
-    path.write_bytes(default_db_file.read_bytes())
+    shutil.copyfile(default_db_file, path)
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
     assert main(["db", "copy", "--db", str(path), text]) == 0

@@ -5,6 +5,7 @@ leaving the file as it was."""
 from __future__ import annotations
 
 import hashlib
+import shutil
 import sqlite3
 
 import pytest
@@ -22,7 +23,7 @@ def digest(path) -> str:
 
 def test_a_read_only_database_is_queried_and_never_changed(default_db_file, tmp_path):
     path = tmp_path / "sass.db"
-    path.write_bytes(default_db_file.read_bytes())
+    shutil.copyfile(default_db_file, path)
     before = digest(path)
     with connect(path) as conn:  # the same question, read-write (real people: db/query/scope.py)
         males = conn.execute(
