@@ -190,9 +190,43 @@ class _Parser(argparse.ArgumentParser):
         # attribute (Python 3.11-3.13): tests/cli/test_negative_values.py
         # fails if it stops being read.
         self._negative_number_matcher = _NEGATIVE_VALUE
+        # An option that takes one value refuses a second (`--load 10kg --load
+        # 20kg`): argparse kept the last one and said nothing.
+        self.register("action", None, _StoreOnce)  # no action named
+        self.register("action", "store", _StoreOnce)
 
 
 _NEGATIVE_VALUE = re.compile(r"^-\.?\d")
+
+
+class _StoreOnce(argparse._StoreAction):
+    """argparse's `store` (every option's action unless it names another; a
+    list option says `append`), refusing an option given twice on one
+    command line: `sass niosh: error: --load given twice ('20kg' after
+    '10kg'); give it once`."""
+
+    _parsed: object = None  # the namespace of the command line being read
+    _first: object = None
+
+    def __call__(
+        self,
+        parser: argparse.ArgumentParser,
+        namespace: argparse.Namespace,
+        values: Any,
+        option_string: str | None = None,
+    ) -> None:
+        if option_string is not None:
+            if self._parsed is namespace:
+                parser.error(
+                    f"{option_string} given twice ({_shown(values)} after "
+                    f"{_shown(self._first)}); give it once"
+                )
+            self._parsed, self._first = namespace, values
+        super().__call__(parser, namespace, values, option_string)
+
+
+def _shown(value: Any) -> str:
+    return " ".join(map(repr, value)) if isinstance(value, list) else repr(value)
 
 
 class _VersionAction(argparse.Action):
