@@ -8,7 +8,7 @@ from pathlib import Path
 
 import _bytecode  # noqa: F401  (first: sass's modules get bytecode; tests/_bytecode.py)
 import pytest
-from _built_once import built_once
+from _built_once import built_once, copy_database_file
 from _paths import ANSUR, REPORT
 from hypothesis import settings
 
@@ -47,13 +47,23 @@ def ansur_dir() -> Path:
 @pytest.fixture(scope="session")
 def shipped_db_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The database `sass db init` builds from the shipped data, built once per
-    run (tests/_built_once.py) and never written: each area copies it (`db` in
-    tests/ui, `default_db_file` in tests/db, `default_people_db` in tests/web)
-    or only reads it."""
+    run (tests/_built_once.py) with its prediction fit beside it, and never
+    written: each area copies both (`copy_database_file`: `db` in tests/ui,
+    `default_db_file` in tests/db, `default_people_db` in tests/web) or only
+    reads it."""
+    from sass_tui.db.engine.schema import connect
     from sass_tui.db.people.default import create_default_database
+    from sass_tui.db.populations.predict import open_predictor
 
     def build(folder: Path) -> None:
         create_default_database(folder / "sass.db")
+        # the prediction fit, cached beside it as `sass predict` leaves it
+        # (copy_database_file gives each copy the fit with the file)
+        conn = connect(folder / "sass.db")
+        try:
+            open_predictor(conn)
+        finally:
+            conn.close()
 
     return built_once(tmp_path_factory, "shipped", build) / "sass.db"
 
@@ -185,7 +195,7 @@ def initialised(tmp_path_factory, cluster, postgres_template, shipped_db_file) -
     (PostgreSQL's a copy of `postgres_template`)."""
 
     sqlite_path = str(tmp_path_factory.mktemp("engines") / "sass.db")
-    shutil.copy(shipped_db_file, sqlite_path)  # what `sass db init` builds
+    copy_database_file(shipped_db_file, sqlite_path)  # what `sass db init` builds
     url = cluster.create_database("initialised", postgres_template)
     return {"sqlite": sqlite_path, "postgresql": url}
 
@@ -212,7 +222,7 @@ def person_db(shipped_db_file, tmp_path_factory, ansur_dir):
     lines = (ansur_dir / "ANSUR_II_FEMALE_Public.csv").read_text(encoding="latin-1").splitlines()
     small = folder / "ANSUR_II_FEMALE_Public.csv"
     small.write_text("\n".join(lines[:4]) + "\n", encoding="latin-1")
-    shutil.copy(shipped_db_file, db)  # what `sass db init` builds
+    copy_database_file(shipped_db_file, db)  # what `sass db init` builds
     assert main(["--db", str(db), "db", "import-ansur", str(small)]) == 0
     rows = list(csv.DictReader(lines[:4]))
     return db, rows

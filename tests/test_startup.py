@@ -4,11 +4,11 @@ TUI up to its first screen) in a fresh interpreter, and `sys.modules` read."""
 
 from __future__ import annotations
 
-import shutil
 import subprocess
 import sys
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.startup import PATHS, StartupPath
 
@@ -98,7 +98,7 @@ def test_the_path_imports_nothing_it_must_not(
 ):
     argv = list(path.argv)
     if path.needs_db:
-        shutil.copy(shipped_db_file, tmp_path / "sass.db")
+        copy_database_file(shipped_db_file, tmp_path / "sass.db")
         argv = ["--db", str(tmp_path / "sass.db"), *argv]
     if path.argv == ():
         code = TUI.format(moment=path.moment)

@@ -5,18 +5,18 @@ answers are checked against)."""
 from __future__ import annotations
 
 import csv
-import shutil
 from pathlib import Path
 
 import numpy as np
 import pytest
+from _built_once import copy_database_file
 
 
 @pytest.fixture()
 def people_db(shipped_db_file, tmp_path) -> Path:
     """A copy of the shipped database (ANSUR II and the demonstration people) to write to."""
     path = tmp_path / "sass.db"
-    shutil.copy(shipped_db_file, path)
+    copy_database_file(shipped_db_file, path)
     return path
 
 

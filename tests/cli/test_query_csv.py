@@ -11,6 +11,7 @@ import shutil
 import subprocess
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.cli import main
 from sass_tui.db.engine.schema import connect
@@ -30,7 +31,7 @@ HOSTILE_SOURCES = (
 
 def _csv_of_people_labelled(shipped_db_file, tmp_path, capsys) -> list[list[str]]:
     db = tmp_path / "s.db"
-    shutil.copy(shipped_db_file, db)
+    copy_database_file(shipped_db_file, db)
     conn = connect(db)
     with conn:
         ids = [row[0] for row in conn.execute("SELECT id_num FROM person ORDER BY id_num LIMIT 7")]

@@ -17,11 +17,11 @@ itself (its files, locks, PRAGMAs, schema migrations, the DuckDB copy).
 from __future__ import annotations
 
 import itertools
-import shutil
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.db.engine.schema import connect
 
@@ -37,7 +37,7 @@ def default_db_file(shipped_db_file, tmp_path_factory) -> Path:
     """The default database the database tests share (their queries keep lists
     in it): a copy of the session's build, which other areas copy too."""
     path = tmp_path_factory.mktemp("db") / "default.db"
-    shutil.copy(shipped_db_file, path)
+    copy_database_file(shipped_db_file, path)
     return path
 
 
@@ -45,7 +45,7 @@ def default_db_file(shipped_db_file, tmp_path_factory) -> Path:
 def default_db(default_db_file, tmp_path):
     """A private copy of the default database (tests may write to it)."""
     copy = tmp_path / "default.db"
-    shutil.copyfile(default_db_file, copy)
+    copy_database_file(default_db_file, copy)
     conn = connect(copy)
     yield conn
     conn.close()
@@ -102,7 +102,7 @@ def copy_database(request, tmp_path_factory) -> Callable[[str], str]:
     def copy(address: str) -> str:
         if not is_url(address):
             path = tmp_path_factory.mktemp("copy") / "sass.db"
-            shutil.copy(address, path)
+            copy_database_file(Path(address), path)
             return str(path)
         name = f"sass_copy_{next(_copies)}"
         return str(request.getfixturevalue("cluster").create_database(name, _name_of(address)))

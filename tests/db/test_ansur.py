@@ -10,7 +10,6 @@ from __future__ import annotations
 import csv
 import json
 import math
-import shutil
 from collections.abc import Iterator
 from contextlib import closing
 from pathlib import Path
@@ -18,7 +17,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from _built_once import built_once
+from _built_once import built_once, copy_database_file
 
 from sass_tui.cli import main
 from sass_tui.db.engine.database import Database
@@ -218,7 +217,7 @@ def test_a_file_named_twice_or_of_semicolons_stores_nothing(
     ("imported 0 men and 6 women" for 3); a survey file a spreadsheet saved
     with ';' between cells said "missing columns subjectid, gender, …"."""
     db = tmp_path / "sass.db"
-    shutil.copyfile(shipped_db_file, db)
+    copy_database_file(shipped_db_file, db)
     lines = ansur_files[1].read_text(encoding="cp1252").splitlines()[:4]
     three = tmp_path / "three.csv"
     three.write_text("\n".join(lines) + "\n", encoding="cp1252")

@@ -8,9 +8,9 @@ message; `sass population --ids` of 100 MB took 40 s and 7.7 GB."""
 from __future__ import annotations
 
 import os
-import shutil
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.cli import main
 from sass_tui.db.populations.population import IdListError, parse_id_list
@@ -81,7 +81,7 @@ def test_a_file_over_its_kinds_size_is_refused_unread(
     huge = sparse(tmp_path / "huge.dat", largest + 1)
     out = tmp_path / "out.x"
     db = tmp_path / "s.db"
-    shutil.copyfile(default_db_file, db)
+    copy_database_file(default_db_file, db)
     before = db.read_bytes()
     assert main([a.format(f=huge, out=out, db=db) for a in argv]) == 2
     said = capsys.readouterr().err
@@ -210,7 +210,7 @@ def test_ids_on_standard_input_are_bounded_too(default_db_file, tmp_path, monkey
     endless = Endless()
     monkeypatch.setattr("sys.stdin", endless)
     db = tmp_path / "s.db"
-    shutil.copyfile(default_db_file, db)
+    copy_database_file(default_db_file, db)
     out = tmp_path / "p.dat"
     assert main(["population", "--db", str(db), "--ids", "-", "-o", str(out)]) == 2
     said = capsys.readouterr().err

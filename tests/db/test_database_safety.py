@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import io
 import os
-import shutil
 import signal
 import sqlite3
 import stat
@@ -18,6 +17,7 @@ import time
 from pathlib import Path
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.cli import main
 from sass_tui.db.engine.dialect import writing
@@ -49,7 +49,7 @@ PERSON = "99907,JANE_DOE,female,165.0,60.5,left,31,hand-made test person\n"
 @pytest.fixture()
 def db_path(default_db_file, tmp_path) -> Path:
     path = tmp_path / "sass.db"
-    shutil.copy(default_db_file, path)
+    copy_database_file(default_db_file, path)
     return path
 
 

@@ -9,13 +9,13 @@ how they answered (accelerator.last_answer) instead of being timed.
 from __future__ import annotations
 
 import os
-import shutil
 import sqlite3
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.cli import main
 from sass_tui.db.engine.schema import connect
@@ -71,7 +71,7 @@ def sqlite_count(path: Path, text: str) -> int:
 @pytest.fixture()
 def db_path(default_db_file, tmp_path) -> Path:
     copy = tmp_path / "people.db"
-    shutil.copyfile(default_db_file, copy)
+    copy_database_file(default_db_file, copy)
     return copy
 
 

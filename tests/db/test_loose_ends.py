@@ -7,9 +7,9 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
 
 import pytest
+from _built_once import copy_database_file
 from hypothesis import assume, given
 from hypothesis import strategies as st
 
@@ -110,7 +110,7 @@ def test_no_reader_opens_what_is_not_a_regular_file(
     out = tmp_path / "out.x"
     db = tmp_path / "s.db"
     if argv[0] in ("predict", "population"):
-        shutil.copyfile(default_db_file, db)
+        copy_database_file(default_db_file, db)
     args = [a.format(f=name, out=out, db=db) for a in argv]
     assert main(args) == 2
     said = capsys.readouterr().err

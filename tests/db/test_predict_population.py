@@ -10,6 +10,7 @@ import shutil
 from pathlib import Path
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.cli import main
 
@@ -25,7 +26,7 @@ def women_db(ansur_dir, tmp_path_factory, shipped_db_file) -> tuple[Path, list[d
     """The default database with the ANSUR II women imported, and their CSV rows."""
     folder = tmp_path_factory.mktemp("women")
     db = folder / "women.db"
-    shutil.copy(shipped_db_file, db)  # what `sass db init` builds
+    copy_database_file(shipped_db_file, db)  # what `sass db init` builds
     assert main(["--db", str(db), "db", "import-ansur", str(ansur_dir / WOMEN)]) == 0
     with (ansur_dir / WOMEN).open(encoding="latin-1", newline="") as handle:
         rows = list(csv.DictReader(handle))

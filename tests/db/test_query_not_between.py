@@ -8,10 +8,10 @@ of the parser over every form."""
 from __future__ import annotations
 
 import csv
-import shutil
 
 import pint
 import pytest
+from _built_once import copy_database_file
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -272,7 +272,7 @@ def test_the_duckdb_copy_counts_not_and_between_as_sqlite_does(
 ):
     pytest.importorskip("duckdb")
     path = tmp_path / "people.db"
-    shutil.copyfile(default_db_file, path)
+    copy_database_file(default_db_file, path)
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
     monkeypatch.setattr(accelerator, "MIN_PEOPLE", 0)
     assert main(["db", "copy", "--db", str(path), text]) == 0

@@ -6,10 +6,10 @@ target`, and the query screen's lists.  Each parse of the query parser
 
 from __future__ import annotations
 
-import shutil
 from collections import Counter
 
 import pytest
+from _built_once import copy_database_file
 from test_targets import civilian_women, write_sample
 
 from sass_tui.cli import main
@@ -42,7 +42,7 @@ def with_target(default_db_file, tmp_path_factory) -> str:
     """A copy of the default database with a stored target `civ` of women."""
     folder = tmp_path_factory.mktemp("parsed-once")
     db = folder / "sass.db"
-    shutil.copyfile(default_db_file, db)
+    copy_database_file(default_db_file, db)
     sample = write_sample(folder / "civilian.csv", civilian_women(300))
     argv = ["target", "civ", "--db", str(db), "--gender", "female", "--sample", str(sample)]
     argv += ["--population", "source = ansur2 AND age >= 18"]

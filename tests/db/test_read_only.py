@@ -5,10 +5,10 @@ leaving the file as it was."""
 from __future__ import annotations
 
 import hashlib
-import shutil
 import sqlite3
 
 import pytest
+from _built_once import copy_database_file
 from big_flat_files import write_big_flat_files
 
 from sass_tui.db.engine.schema import connect
@@ -23,7 +23,7 @@ def digest(path) -> str:
 
 def test_a_read_only_database_is_queried_and_never_changed(default_db_file, tmp_path):
     path = tmp_path / "sass.db"
-    shutil.copyfile(default_db_file, path)
+    copy_database_file(default_db_file, path)
     before = digest(path)
     with connect(path) as conn:  # the same question, read-write (real people: db/query/scope.py)
         males = conn.execute(

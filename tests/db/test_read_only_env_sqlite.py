@@ -5,9 +5,9 @@ user sets) keeps a SQLite database as it is, as it keeps a PostgreSQL one
 from __future__ import annotations
 
 import hashlib
-import shutil
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.cli import main
 from sass_tui.model import datasets
@@ -21,7 +21,7 @@ REFUSED = "the database is open read-only ($SASS_READ_ONLY=1); nothing changed"
 @pytest.mark.slow
 def test_every_write_is_refused_and_queries_answer(shipped_db_file, tmp_path, monkeypatch, capsys):
     db = tmp_path / "s.db"
-    shutil.copy(shipped_db_file, db)
+    copy_database_file(shipped_db_file, db)
     digest = hashlib.sha256(db.read_bytes()).hexdigest()
     monkeypatch.setenv(READ_ONLY_ENV, "1")
     flat = datasets.directory() / "db"

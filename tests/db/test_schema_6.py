@@ -4,10 +4,10 @@ opening, and keep every person."""
 
 from __future__ import annotations
 
-import shutil
 import sqlite3
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.db.engine.schema import SCHEMA_VERSION, TARGET_TABLES, connect, row_counts
 
@@ -40,7 +40,7 @@ def test_schema_version_is_6():
 @pytest.mark.parametrize("old", ["2", "3", "4", "5"])
 def test_an_older_file_loses_the_change_log_and_keeps_its_people(default_db_file, tmp_path, old):
     path = tmp_path / "old.db"
-    shutil.copyfile(default_db_file, path)
+    copy_database_file(default_db_file, path)
     raw = sqlite3.connect(path)
     people = row_counts(raw)
     for table in TARGET_TABLES:  # made by schema 6 (or 5 with the change log)

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import csv
 import json
-import shutil
 
 import numpy as np
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.cli import main
 from sass_tui.db.engine.database import Database
@@ -214,7 +214,7 @@ def test_a_users_virtual_population_keeps_its_hip(shipped_db_file, tmp_path, cap
     circumference is the row's own hip, converted; a row without one has it
     predicted; the report says what was kept."""
     db = tmp_path / "sass.db"
-    shutil.copyfile(shipped_db_file, db)
+    copy_database_file(shipped_db_file, db)
     values, _survey = nhanes("female", "BMXHT", "BMXWT", "BMXHIP")
     # women the soldiers can be weighted to (the calibration target is made too)
     rows = values[values[:, 1] < 95][:300]

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import faulthandler
 import random
-import shutil
 
 import pytest
+from _built_once import copy_database_file
 from fuzz_targets import DATABASES, KNOWN_ELSEWHERE, TARGET_MAKERS, outcome, target
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -36,7 +36,7 @@ def _the_runs_default_database(shipped_db_file, tmp_path_factory):
     """The query target and the verbs read a copy of the run's default
     database rather than building their own (~2 s of CPU)."""
     copy = tmp_path_factory.mktemp("fuzz") / "sass.db"
-    shutil.copyfile(shipped_db_file, copy)
+    copy_database_file(shipped_db_file, copy)
     DATABASES.use_default_file(copy)
 
 

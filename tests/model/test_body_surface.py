@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import csv
 import json
-import shutil
 
 import numpy as np
 import pytest
+from _built_once import copy_database_file
 from _gltf_files import accessor as glb_accessor
 
 from sass_tui.cli import main
@@ -349,7 +349,7 @@ def test_a_predicted_person_s_body_has_what_sass_predict_printed(tmp_path, shipp
     known = ["--known", "stature=178cm", "--known", "mass=80kg"]
     known += ["--known", "measure.chestcircumference=112cm"]
     db = tmp_path / "sass.db"  # sass predict caches its fit beside the database
-    shutil.copyfile(shipped_db_file, db)
+    copy_database_file(shipped_db_file, db)
     args = ["--db", str(db), "predict", "--gender", "male", *known]
     assert main([*args, "--format", "json"]) == 0
     printed = json.loads(capsys.readouterr().out)["predicted"]

@@ -15,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _built_once import copy_database_file
 from _gltf_files import khronos_validator
 from _paths import ROOT
 from hypothesis import given, settings
@@ -39,7 +40,7 @@ def people(tmp_path_factory, ansur_dir, shipped_db_file):
     men and five women spread through the CSV files, with their CSV rows."""
     folder = tmp_path_factory.mktemp("gltf-people")
     db = folder / "sass.db"
-    shutil.copy(shipped_db_file, db)  # what `sass db init` builds
+    copy_database_file(shipped_db_file, db)  # what `sass db init` builds
     chosen = []
     for gender, letter in (("MALE", "M"), ("FEMALE", "F")):
         with open(ansur_dir / f"ANSUR_II_{gender}_Public.csv", encoding="latin-1") as handle:
@@ -358,7 +359,7 @@ def test_seated_pose_bends_hips_and_knees_90_degrees_feet_on_the_floor(tmp_path)
 def test_predict_writes_a_glb_of_the_predicted_person(tmp_path, validator, capsys, shipped_db_file):
     out = tmp_path / "P.glb"
     db = tmp_path / "p.db"
-    shutil.copy(shipped_db_file, db)  # what `sass db init` builds
+    copy_database_file(shipped_db_file, db)  # what `sass db init` builds
     args = ["--db", str(db), "predict", "--gender", "male", "--known", "stature=175.5cm"]
     assert main([*args, "--known", "mass=82.2kg", "-o", str(out)]) == 0
     read = Read(out)

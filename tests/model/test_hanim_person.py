@@ -7,10 +7,10 @@ from __future__ import annotations
 
 import csv
 import re
-import shutil
 import statistics
 
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.cli import main
 from sass_tui.db.engine.schema import connect
@@ -66,7 +66,7 @@ def people(tmp_path_factory, ansur_dir, shipped_db_file):
     from CSV files holding just their rows), and their CSV rows."""
     folder = tmp_path_factory.mktemp("hanim_people")
     db = folder / "people.db"
-    shutil.copy(shipped_db_file, db)  # what `sass db init` builds
+    copy_database_file(shipped_db_file, db)  # what `sass db init` builds
     chosen = {}
     for gender, file in FILES.items():
         header = (ansur_dir / file).read_text(encoding="latin-1").splitlines()[0]

@@ -5,13 +5,13 @@ reader and writer, the query language, JSON."""
 from __future__ import annotations
 
 import json
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from _built_once import copy_database_file
 
 from sass_tui.cli import main
 from sass_tui.model.body.figure import Figure, FigureError
@@ -148,7 +148,7 @@ def test_json_output_refuses_a_stored_infinity(shipped_db_file, tmp_path, capsys
     from sass_tui.db.engine.schema import connect
 
     db = tmp_path / "s.db"
-    shutil.copy(shipped_db_file, db)
+    copy_database_file(shipped_db_file, db)
     conn = connect(db)
     with conn:
         conn.execute(

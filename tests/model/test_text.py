@@ -3,8 +3,7 @@
 
 from __future__ import annotations
 
-import shutil
-
+from _built_once import copy_database_file
 from hypothesis import given
 from hypothesis import strategies as st
 
@@ -46,7 +45,7 @@ def test_sass_query_table_shows_a_hostile_name_inertly(shipped_db_file, tmp_path
     from sass_tui.db.engine.schema import connect
 
     db = tmp_path / "s.db"
-    shutil.copy(shipped_db_file, db)
+    copy_database_file(shipped_db_file, db)
     conn = connect(db)
     with conn:
         first = conn.execute("SELECT MIN(id_num) FROM person").fetchone()[0]

@@ -6,13 +6,13 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-import shutil
 from collections.abc import AsyncIterator, Callable
 from pathlib import Path
 
 import pytest
 import textual._wait
 import textual.screen
+from _built_once import copy_database_file
 from textual.css.stylesheet import Stylesheet
 from textual.pilot import Pilot
 from textual.widgets import Input
@@ -110,7 +110,7 @@ def drive():
 def db(shipped_db_file, tmp_path):
     """A private copy: Input DB and the lists must not leak between tests."""
     path = tmp_path / "sass.db"
-    shutil.copy(shipped_db_file, path)
+    copy_database_file(shipped_db_file, path)
     return path
 
 

@@ -58,7 +58,11 @@ def test_spreadsheet_exports_the_figure_shown(app_at, drive, db, tmp_path):
             await pilot.press("G")
             await answer(pilot, str(tmp_path / "body.obj"))
             assert "ends in .glb (binary) or .gltf" in message(app)
-            assert sorted(p.name for p in tmp_path.iterdir()) == ["body.glb", "sass.db"]
+            assert sorted(p.name for p in tmp_path.iterdir()) == [
+                "body.glb",
+                "sass.db",
+                "sass.db.predict.npz",
+            ]
 
     drive(scenario())
 
