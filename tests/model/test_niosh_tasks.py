@@ -70,6 +70,33 @@ def test_inches_choose_the_us_form():
         ('[{"h": 30, "v": 70, "f": 2, "load": [8]}]', "j.json", "j.json:1", "not a number"),
         ("{not json", "j.json", "j.json:1", "not JSON"),
         ("", "j.csv", "j.csv", "no header"),
+        # given twice: one of the two would be left unread, or a result named ambiguously
+        ("h,v,f,load,h\n30,70,2,8,40\n", "j.csv", "j.csv:1", "'h' is given twice (cells 1 and 5)"),
+        (
+            "name,h,v,d,f,load\nlift,30,70,40,2,8\n# a comment\nlift,40,70,40,2,8\n",
+            "j.csv",
+            "j.csv:4",
+            "task name 'lift' is given twice (first on line 2)",
+        ),
+        (
+            "name,h,v,d,f,load\n,30,70,40,2,8\ntask 1,40,70,40,2,8\n",
+            "j.csv",
+            "j.csv:3",
+            "task name 'task 1' is given twice",
+        ),
+        (
+            '[{"h": 30, "v": 70, "f": 2, "load": 8, "h": 40}]',
+            "j.json",
+            "j.json:1",
+            "'h' is given twice",
+        ),
+        (
+            '[{"h": 30, "v": 70, "f": 2, "load": 8},\n {"h": 30, "v": 70, "f": 2, "LOAD": 9, "load": 8}]',
+            "j.json",
+            "j.json:2",
+            "task 2: 'load' is given twice",
+        ),
+        ('{"tasks": [], "tasks": [{"h": 30}]}', "j.json", "j.json", '"tasks" is given twice'),
     ],
 )
 def test_bad_rows_name_file_and_line(text, file, where, words):

@@ -58,11 +58,20 @@ def read_tasks(text: str, file: str, duration: str) -> tuple[Form, list[tuple[st
         raise NioshError(f"{len(rows)} tasks: at most {MAX_TASKS}", where=file)
     of = _job_form(rows, file)
     tasks: list[tuple[str, Lift]] = []
+    first_line: dict[str, int] = {}  # each name's line: the results name each task by it
     for line, row in rows:
         try:
-            tasks.append(_task(row, of, duration, f"task {len(tasks) + 1}"))
+            name, lift = _task(row, of, duration, f"task {len(tasks) + 1}")
         except (UnitError, NioshError) as exc:
             raise NioshError(f"{exc}", where=f"{file}:{line}") from None
+        if name in first_line:
+            raise NioshError(
+                f"task name {quoted(name)} is given twice (first on line {first_line[name]}); "
+                "name each task once",
+                where=f"{file}:{line}",
+            )
+        first_line[name] = line
+        tasks.append((name, lift))
     return of, tasks
 
 
@@ -158,14 +167,24 @@ def _check_header(header: list[str], where: str) -> None:
         raise NioshError(
             f"unknown column {quoted(unknown[0])} (expected {', '.join(COLUMNS)})", where=where
         )
+    # a column given twice would leave one of its cells unread, unsaid
+    for k, name in enumerate(header):
+        if name and name in header[:k]:
+            raise NioshError(
+                f"column {quoted(name)} is given twice (cells {header.index(name) + 1} "
+                f"and {k + 1}); give it once",
+                where=where,
+            )
 
 
 def _json_rows(text: str, file: str) -> list[tuple[int, dict[str, str]]]:
     try:
-        data: Any = json.loads(text)
+        data: Any = json.loads(text, object_pairs_hook=_JsonObject.of)
     except json.JSONDecodeError as exc:
         raise NioshError(f"not JSON: {exc.msg}", where=f"{file}:{exc.lineno}") from None
-    if isinstance(data, dict):
+    if isinstance(data, _JsonObject):  # every object json.loads made here
+        if "tasks" in data.twice:
+            raise NioshError('"tasks" is given twice; give the job\'s tasks once', where=file)
         data = data.get("tasks")
     if not isinstance(data, list):
         raise NioshError('expected a list of tasks (or {"tasks": [...]})', where=file)
@@ -173,17 +192,37 @@ def _json_rows(text: str, file: str) -> list[tuple[int, dict[str, str]]]:
     rows = []
     for i, item in enumerate(data):
         where = f"{file}:{lines[i] if i < len(lines) else 1}"
-        if not isinstance(item, dict):
+        if not isinstance(item, _JsonObject):
             raise NioshError(f"task {i + 1} is not an object", where=where)
-        cells = {}
+        if item.twice:  # json.loads keeps the last of a key given twice
+            raise NioshError(f"task {i + 1}: {quoted(item.twice[0])} is given twice", where=where)
+        cells: dict[str, str] = {}
         for key, value in item.items():
             if isinstance(value, bool) or not isinstance(value, (str, int, float)):
                 raise NioshError(
                     f"task {i + 1}: {quoted(str(key))} is not a number or text", where=where
                 )
+            if str(key).lower() in cells:  # "H" and "h": one column, given twice
+                raise NioshError(f"task {i + 1}: {quoted(str(key))} is given twice", where=where)
             cells[str(key).lower()] = str(value)
         rows.append((lines[i] if i < len(lines) else 1, cells))
     return rows
+
+
+class _JsonObject(dict[str, Any]):
+    """A JSON object that remembers the keys given twice in it (`twice`)."""
+
+    twice: list[str]
+
+    @classmethod
+    def of(cls, pairs: list[tuple[str, Any]]) -> _JsonObject:
+        made = cls()
+        made.twice = []
+        for key, value in pairs:
+            if key in made:
+                made.twice.append(key)
+            made[key] = value
+        return made
 
 
 def _object_lines(text: str) -> list[int]:
