@@ -17,6 +17,7 @@ itself (its files, locks, PRAGMAs, schema migrations, the DuckDB copy).
 from __future__ import annotations
 
 import itertools
+import shutil
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
@@ -131,6 +132,8 @@ def engine_target(engine, template_target, request, copy_database) -> Iterator[s
     yield url
     if engine == "postgresql":
         request.getfixturevalue("cluster").drop_database(_name_of(url))
+    else:  # its folder (copy_database's) would hold the 59 MB to the run's end
+        shutil.rmtree(Path(url).parent, ignore_errors=True)
 
 
 def _opened(target: str) -> Iterator[object]:
