@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from textual import events
 from textual.binding import Binding
+from textual.message import Message
 from textual.screen import Screen
 
 from sass_tui.model.files.paths import complete_path
@@ -31,6 +32,16 @@ if TYPE_CHECKING:  # app.py imports the screens: at run time this would be a cyc
 
 
 T = TypeVar("T")
+
+
+class WorkerSaid(Message):
+    """A worker's outcome for its screen's message line: kind is "info" or
+    "error" (SassScreen.on_worker_said shows it)."""
+
+    def __init__(self, text: str, kind: str = "info") -> None:
+        super().__init__()
+        self.text = text
+        self.kind = kind
 
 
 class SassScreen(Screen):
@@ -62,6 +73,9 @@ class SassScreen(Screen):
 
     def complain(self, text: str) -> None:
         self.message_line.complain(text)
+
+    def on_worker_said(self, event: WorkerSaid) -> None:
+        self.message_line.show(event.text, event.kind)
 
     def ask(
         self,

@@ -26,7 +26,7 @@ from sass_tui.model.errors import SassError, error_text
 from sass_tui.model.files.family_files import write_family
 from sass_tui.model.population.measure_fields import measure_field
 from sass_tui.model.vocabulary import GENDERS
-from sass_tui.ui.base import SassScreen
+from sass_tui.ui.base import SassScreen, WorkerSaid
 from sass_tui.ui.footer import Footer
 from sass_tui.ui.progress import Work, WorkBar, WorkProgressed
 from sass_tui.ui.widgets import MessageLine
@@ -55,15 +55,6 @@ class FamilyFailed(Message):
     def __init__(self, text: str) -> None:
         super().__init__()
         self.text = text
-
-
-class FamilyWritten(Message):
-    """The writing worker's outcome for the message line: kind "info" or "error"."""
-
-    def __init__(self, text: str, kind: str) -> None:
-        super().__init__()
-        self.text = text
-        self.kind = kind
 
 
 def parse_measures(text: str) -> list[str]:
@@ -271,18 +262,12 @@ class FamilyScreen(SassScreen):
         try:
             written = write_family(family, directory, Figure.default(family.gender))
         except (SassError, OSError) as exc:
-            self.post_message(FamilyWritten(error_text(exc), "error"))
+            self.post_message(WorkerSaid(error_text(exc), "error"))
             return
         self.post_message(
-            FamilyWritten(
+            WorkerSaid(
                 f"Wrote {len(written.manikins)} manikins (.fig, .x3d) and family.json "
                 f"to {directory}.",
                 "info",
             )
         )
-
-    def on_family_written(self, event: FamilyWritten) -> None:
-        if event.kind == "error":
-            self.complain(event.text)
-        else:
-            self.say(event.text)

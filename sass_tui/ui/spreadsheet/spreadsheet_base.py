@@ -70,15 +70,6 @@ class StrengthRead(Message):
         self.data = data
 
 
-class WorkerSaid(Message):
-    """A worker's outcome for the message line: kind is "info" or "error"."""
-
-    def __init__(self, text: str, kind: str = "info") -> None:
-        super().__init__()
-        self.text = text
-        self.kind = kind
-
-
 class SheetScreenBase(SassScreen):
     """The spreadsheet's state and what its commands share: the widgets,
     the figure shown, the message line's answers and the warnings.  The
@@ -168,9 +159,6 @@ class SheetScreenBase(SassScreen):
     def on_message_line_answered(self, event: MessageLine.Answered) -> None:
         event.stop()
         self.refresh_screen()
-
-    def on_worker_said(self, event: WorkerSaid) -> None:
-        self.message_line.show(event.text, event.kind)
 
     def _after_edit_request(self, widget: EditorKeys) -> None:
         if not self.message_line.prompting:

@@ -19,12 +19,12 @@ from sass_tui.model.names import (
 )
 from sass_tui.model.strength.published_grip import GRIP_DATA_SET, table_words
 from sass_tui.model.strength.published_strength import DATA_SET, EXAMPLE_DATA_SET
+from sass_tui.ui.base import WorkerSaid
 from sass_tui.ui.spreadsheet.spreadsheet_base import (
     AnswerError,
     PopulationRead,
     SheetScreenBase,
     StrengthRead,
-    WorkerSaid,
 )
 from sass_tui.ui.widgets.message_line import CANCELLED
 

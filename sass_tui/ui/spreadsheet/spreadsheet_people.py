@@ -18,6 +18,7 @@ from sass_tui.model.names import (
     GROUP_TITLES,
 )
 from sass_tui.model.units import convert
+from sass_tui.ui.base import WorkerSaid
 from sass_tui.ui.spreadsheet.more_menu import MoreMenu
 from sass_tui.ui.spreadsheet.predict import (
     KNOWN_PROMPT,
@@ -28,7 +29,6 @@ from sass_tui.ui.spreadsheet.predict import (
 from sass_tui.ui.spreadsheet.spreadsheet_base import (
     AnswerError,
     SheetScreenBase,
-    WorkerSaid,
 )
 from sass_tui.ui.widgets.message_line import CANCELLED
 

@@ -14,7 +14,7 @@ from textual.message import Message
 
 from sass_tui.model.errors import SassError
 from sass_tui.model.files.atomic import write_text_atomic
-from sass_tui.ui.spreadsheet.spreadsheet_base import WorkerSaid
+from sass_tui.ui.base import WorkerSaid
 from sass_tui.ui.spreadsheet.spreadsheet_files import FileCommands
 from sass_tui.ui.widgets.message_line import CANCELLED
 
