@@ -44,7 +44,11 @@ def built_once(
     with open(shared / f"{name}.lock", "w") as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)  # released when the file closes
         if not done.exists():
-            folder.mkdir(exist_ok=True)
+            # a build that failed may have left part of its work: started again
+            # on an empty folder (a cluster's data copied onto a half-copied
+            # `data` would land inside it, as `data/data`)
+            shutil.rmtree(folder, ignore_errors=True)
+            folder.mkdir()
             build(folder)
             done.touch()
     return folder
