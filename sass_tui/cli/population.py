@@ -34,6 +34,7 @@ from sass_tui.db.populations.population import (
 )
 from sass_tui.db.populations.population_files import write_population_files
 from sass_tui.db.query.query import parse
+from sass_tui.model.errors import reason_text
 from sass_tui.model.files.paths import LARGEST_ID_LIST, regular_file, size_text
 from sass_tui.model.names import GROUP_TITLES
 
@@ -140,5 +141,5 @@ def read_id_file(name: str) -> list[int]:
     except UnicodeDecodeError as exc:
         raise OSError(f"{name}: not a text file of person ids ({exc.reason})") from None
     except OSError as exc:
-        raise OSError(f"{name}: {exc.strerror or exc}") from None
+        raise OSError(f"{name}: {reason_text(exc)}") from None
     return parse_id_list(text, name)

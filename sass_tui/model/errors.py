@@ -27,6 +27,15 @@ class SassError(Exception):
         return ""
 
 
+def reason_text(exc: BaseException) -> str:
+    """Why, alone, for a message that names the file itself: an operating
+    system's error's own words (`No space left on device`, without Python's
+    "[Errno 28]" and the file name), otherwise the error's message."""
+    if isinstance(exc, OSError) and exc.strerror:
+        return str(exc.strerror)
+    return str(exc)
+
+
 def error_text(exc: BaseException) -> str:
     """What an error the edges catch tells a user: its message; for an
     operating system's error, the file and the reason without Python's

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from sass_tui.cli import main
-from sass_tui.model.errors import error_text
+from sass_tui.model.errors import error_text, reason_text
 from sass_tui.model.files.atomic import OutputFileError
 
 POSTURE = {
@@ -117,3 +117,16 @@ def test_an_error_is_said_as_its_file_and_reason():
     assert error_text(ValueError("x")) == "x"
     written = OutputFileError(Path("x.fig"), "no such directory: .")
     assert error_text(written) == str(written) == "cannot write x.fig: no such directory: ."
+
+
+def test_a_reason_beside_the_file_a_message_names_is_the_reason_alone():
+    """reason_text: what follows `PATH: cannot write: ` in a message that
+    names the file itself (the workers' messages, the readers' errors)."""
+    assert reason_text(OSError(errno.ENOSPC, "No space left on device", "x.db")) == (
+        "No space left on device"
+    )
+    assert reason_text(OSError("made by sass: said as it is")) == "made by sass: said as it is"
+    assert reason_text(OutputFileError(Path("x.fig"), "no such directory: .")) == (
+        "no such directory: ."
+    )
+    assert reason_text(ValueError("x")) == "x"

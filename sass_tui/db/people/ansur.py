@@ -31,7 +31,7 @@ from sass_tui.db.engine import staging
 from sass_tui.db.engine.schema import GIRTH_NAMES, PERSON_ATTRIBUTES, check_writable, transaction
 from sass_tui.db.people.people_store import PeopleBatch, girth_mass_fractions, store_people
 from sass_tui.db.progress import Cancel, Progress, Steps
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, reason_text
 from sass_tui.model.files.paths import PathError, regular_file
 from sass_tui.model.measures import MEASURE_UNITS, MEASURES, PUBLISHED_TO_CANONICAL
 from sass_tui.model.text import control_character, other_separator, printable, quoted
@@ -331,7 +331,7 @@ def iter_ansur(
     except PathError as exc:
         raise AnsurImportError(f"{path}: cannot read: {exc.reason}") from None
     except OSError as exc:
-        raise AnsurImportError(f"{path}: cannot read: {exc.strerror or exc}") from None
+        raise AnsurImportError(f"{path}: cannot read: {reason_text(exc)}") from None
     with raw:
         try:
             yield from _read_chunks(path, stream, raw, label, chunk_rows, progress)

@@ -48,7 +48,7 @@ from sass_tui.db.engine.schema import (
 from sass_tui.db.people.people_store import PeopleBatch, store_people
 from sass_tui.db.progress import Cancel, Progress, Steps, interruptible
 from sass_tui.db.query.scope import source_label
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, reason_text
 from sass_tui.model.files.atomic import write_files_atomic
 from sass_tui.model.files.paths import LARGEST_TABLE_FILE, PathError, regular_file
 from sass_tui.model.text import control_character, quoted
@@ -136,7 +136,7 @@ class _Reader:
         except UnicodeDecodeError:
             self.text = path.read_text(encoding="cp1252", errors="replace")
         except OSError as exc:
-            raise FlatFileError(f"{path}: cannot read: {exc.strerror or exc}") from None
+            raise FlatFileError(f"{path}: cannot read: {reason_text(exc)}") from None
         self.line = 0
 
     def records(self, width: int, what: str, rest: bool = False) -> Iterator[list[str]]:

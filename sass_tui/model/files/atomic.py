@@ -26,7 +26,7 @@ import stat
 from collections.abc import Mapping
 from pathlib import Path
 
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, reason_text
 from sass_tui.model.files.paths import file_kind
 
 _TEMP_MARK = ".sass-tmp-"
@@ -134,7 +134,7 @@ def make_directory(path: str | Path) -> Path:
         reason = f"not a directory: {blocking if blocking is not None else directory.parent}"
         raise OutputFileError(directory, reason, errno.ENOTDIR) from None
     except OSError as exc:
-        raise OutputFileError(directory, exc.strerror or str(exc), exc.errno) from None
+        raise OutputFileError(directory, reason_text(exc), exc.errno) from None
     return directory
 
 
@@ -207,7 +207,7 @@ def process_alive(pid: int) -> bool:
 
 
 def _error(path: Path, exc: OSError) -> OutputFileError:
-    reason = exc.strerror or str(exc)
+    reason = reason_text(exc)
     if exc.errno == errno.ENOENT:
         reason = f"no such directory: {path.parent}"
     return OutputFileError(path, reason, exc.errno)

@@ -12,7 +12,7 @@ import os
 import stat
 from pathlib import Path
 
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, reason_text
 
 
 class PathError(ValueError, SassError):
@@ -124,7 +124,7 @@ def regular_file(
     except FileNotFoundError:
         raise PathError(f"{path}: no such file", "no such file") from None
     except OSError as exc:  # a loop of links, a name too long, no permission
-        reason = exc.strerror or str(exc)
+        reason = reason_text(exc)
         raise PathError(f"{path}: {reason}", reason) from None
     if not stat.S_ISREG(status.st_mode):
         what = "a directory" if stat.S_ISDIR(status.st_mode) else "not a regular file"
@@ -159,7 +159,7 @@ def read_user_text(
     except UnicodeDecodeError:
         return path, path.read_text(encoding="latin-1")
     except OSError as exc:
-        reason = exc.strerror or str(exc)
+        reason = reason_text(exc)
         raise PathError(f"{path}: cannot read: {reason}", reason) from None
 
 

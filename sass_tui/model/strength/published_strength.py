@@ -29,7 +29,7 @@ from functools import cache
 from pathlib import Path
 
 from sass_tui.model import datasets
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, reason_text
 from sass_tui.model.population.percentile import _STANDARD, check_percentile
 from sass_tui.model.units import parse_quantity
 
@@ -118,8 +118,8 @@ def read_published_text(where: str) -> str:
     try:
         return Path(where).read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        reason = exc.strerror if isinstance(exc, OSError) else "not UTF-8 text"
-        raise PublishedStrengthError(f"{where}: cannot read: {reason or exc}") from None
+        reason = reason_text(exc) if isinstance(exc, OSError) else "not UTF-8 text"
+        raise PublishedStrengthError(f"{where}: cannot read: {reason}") from None
 
 
 def parse_anderson2007_text(text: str, where: str = "<text>") -> Anderson2007:

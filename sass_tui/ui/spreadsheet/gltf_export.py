@@ -20,9 +20,10 @@ from typing import TYPE_CHECKING
 from sass_tui.db.people.individual import person_figure
 from sass_tui.db.query.lists import DB_ERRORS
 from sass_tui.model.body.hanim import build_humanoid, not_in_humanoid_note
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, reason_text
 from sass_tui.model.files.atomic import OutputFileError, check_target
 from sass_tui.model.files.gltf import POSES, bin_path, check_path, pose_of, render_gltf, write_gltf
+from sass_tui.ui.base import WorkerSaid
 from sass_tui.ui.widgets.message_line import CANCELLED
 
 if TYPE_CHECKING:
@@ -81,10 +82,9 @@ def _write(screen: SassScreen, asset: GltfDocument, path: Path, done: str) -> No
         try:
             write_gltf(asset, path)
         except (SassError, OSError) as exc:
-            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else exc
-            screen.app.call_from_thread(screen.complain, f"{path}: cannot write: {reason}")
+            screen.post_message(WorkerSaid(f"{path}: cannot write: {reason_text(exc)}", "error"))
             return
-        screen.app.call_from_thread(screen.say, done)
+        screen.post_message(WorkerSaid(done))
 
     screen.run_worker(write, thread=True, group="write", exit_on_error=False)
 

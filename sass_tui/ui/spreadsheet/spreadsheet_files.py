@@ -9,7 +9,7 @@ from pathlib import Path
 from textual import work
 
 from sass_tui.model.datasets import SHIPPED_POPULATION, shipped_population
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, reason_text
 from sass_tui.model.files.atomic import OutputFileError, check_target, write_text_atomic
 from sass_tui.model.files.popfile import read_global_beside, read_population_file
 from sass_tui.model.names import (
@@ -104,9 +104,7 @@ class FileCommands(SheetScreenBase):
         except SassError as exc:
             self.post_message(WorkerSaid(f"{exc}; {what} unchanged.", "error"))
         except OSError as exc:
-            self.post_message(
-                WorkerSaid(f"{path}: {exc.strerror or exc}; {what} unchanged.", "error")
-            )
+            self.post_message(WorkerSaid(f"{path}: {reason_text(exc)}; {what} unchanged.", "error"))
 
     def on_strength_read(self, event: StrengthRead) -> None:
         data = event.data
@@ -225,8 +223,7 @@ class FileCommands(SheetScreenBase):
         try:
             write_text_atomic(path, text)
         except (SassError, OSError) as exc:
-            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else exc
-            self.post_message(WorkerSaid(f"{path}: cannot write: {reason}", "error"))
+            self.post_message(WorkerSaid(f"{path}: cannot write: {reason_text(exc)}", "error"))
             return
         self.post_message(WorkerSaid(done))
 

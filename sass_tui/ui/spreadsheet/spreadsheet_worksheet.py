@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 from textual import work
 from textual.message import Message
 
-from sass_tui.model.errors import SassError
+from sass_tui.model.errors import SassError, reason_text
 from sass_tui.model.files.atomic import write_text_atomic
 from sass_tui.ui.base import WorkerSaid
 from sass_tui.ui.spreadsheet.spreadsheet_files import FileCommands
@@ -84,9 +84,11 @@ class WorksheetCommands(FileCommands):
         try:
             write_text_atomic(path, text)
         except (SassError, OSError) as exc:
-            reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else exc
             self.post_message(
-                WorkerSaid(f"{path}: cannot write: {reason}; the worksheet is not saved", "error")
+                WorkerSaid(
+                    f"{path}: cannot write: {reason_text(exc)}; the worksheet is not saved",
+                    "error",
+                )
             )
             return
         self.post_message(WorksheetSaved(path, state))
