@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from sass_tui.db.populations.predict import CACHE_SUFFIX
+from sass_tui.db.populations.predict import file_cache_path
 
 
 def run_folder(tmp_path_factory: pytest.TempPathFactory) -> Path:
@@ -56,13 +56,13 @@ def built_once(
 
 def copy_database_file(source: Path, target: Path | str) -> Path:
     """A copy of the SQLite file `source` at `target`, with the prediction fit
-    cached beside `source` (db/populations/predict.py's cache_path), if there
+    cached beside `source` (db/populations/predict.py's file_cache_path), if there
     is one, cached beside the copy: its people are the same, so the fit's key
     is, and a test that predicts on the copy loads the fit instead of making
     it again (0.2-0.4 s of CPU each; 60 fits a run made that way)."""
     target = Path(target)
     shutil.copyfile(source, target)
-    fit = source.with_name(source.name + CACHE_SUFFIX)
+    fit = file_cache_path(source)
     if fit.is_file():
-        shutil.copyfile(fit, target.with_name(target.name + CACHE_SUFFIX))
+        shutil.copyfile(fit, file_cache_path(target))
     return target

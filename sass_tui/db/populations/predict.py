@@ -63,7 +63,12 @@ def cache_path(conn: sqlite3.Connection) -> Path | None:
     if dialect_of(conn) == "postgresql":
         return server_cache_path(conn.identity())  # type: ignore[attr-defined]
     db = database_file(conn)
-    return None if db is None else db.with_name(db.name + CACHE_SUFFIX)
+    return None if db is None else file_cache_path(db)
+
+
+def file_cache_path(db: Path) -> Path:
+    """Where the fit of the SQLite file `db` is cached: beside it."""
+    return db.with_name(db.name + CACHE_SUFFIX)
 
 
 def server_cache_path(identity: str) -> Path:

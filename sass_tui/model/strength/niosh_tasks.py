@@ -194,7 +194,7 @@ def _json_rows(text: str, file: str) -> list[tuple[int, dict[str, str]]]:
         where = f"{file}:{lines[i] if i < len(lines) else 1}"
         if not isinstance(item, _JsonObject):
             raise NioshError(f"task {i + 1} is not an object", where=where)
-        if item.twice:  # json.loads keeps the last of a key given twice
+        if item.twice:  # json.loads would keep the last of a key given twice
             raise NioshError(f"task {i + 1}: {quoted(item.twice[0])} is given twice", where=where)
         cells: dict[str, str] = {}
         for key, value in item.items():
@@ -202,26 +202,26 @@ def _json_rows(text: str, file: str) -> list[tuple[int, dict[str, str]]]:
                 raise NioshError(
                     f"task {i + 1}: {quoted(str(key))} is not a number or text", where=where
                 )
-            if str(key).lower() in cells:  # "H" and "h": one column, given twice
-                raise NioshError(f"task {i + 1}: {quoted(str(key))} is given twice", where=where)
             cells[str(key).lower()] = str(value)
         rows.append((lines[i] if i < len(lines) else 1, cells))
     return rows
 
 
 class _JsonObject(dict[str, Any]):
-    """A JSON object that remembers the keys given twice in it (`twice`)."""
+    """A JSON object that remembers the keys given twice in it (`twice`), in
+    any case: a job's columns are read lower-cased, so "H" and "h" are one."""
 
     twice: list[str]
 
     @classmethod
     def of(cls, pairs: list[tuple[str, Any]]) -> _JsonObject:
-        made = cls()
+        made = cls(pairs)
+        seen: set[str] = set()
         made.twice = []
-        for key, value in pairs:
-            if key in made:
+        for key, _ in pairs:
+            if key.lower() in seen:
                 made.twice.append(key)
-            made[key] = value
+            seen.add(key.lower())
         return made
 
 
