@@ -1,7 +1,8 @@
 """`sass niosh` and `sass handling` start to end, each against `python -c pass`
 (the issue's target: under 2x) and against the command line's own floor,
 `python -c "import sass_tui.cli"` (argparse and the verb table every verb
-pays), in fresh processes, interleaved so both sides see the same load.
+pays), and against argparse alone (imported, one empty command line parsed:
+the least any argparse command does), in fresh processes, interleaved so both sides see the same load.
 Wall and CPU time (user + system of the child): on a loaded machine the CPU
 time is the steadier of the two.  Run as a user runs sass: with bytecode
 caching (PYTHONDONTWRITEBYTECODE, set in some shells and CI, is dropped for
@@ -37,8 +38,14 @@ VERBS = {
                       "--d", "0.51", "--load", "10kg"],
 }  # fmt: skip
 FLOOR = "python -c 'import sass_tui.cli'"
+# The least any command that reads its arguments with argparse does: import it
+# and parse an empty command line (the parser's own messages are looked up in
+# gettext's catalogues as it is made).  No sass code; its ratio to `python -c
+# pass` is the lowest a verb can reach while it parses with argparse.
+ARGPARSE_ALONE = "import argparse; argparse.ArgumentParser().parse_args([])"
 BASELINES = {
     "python -c pass": [PY, "-c", "pass"],
+    f"python -c '{ARGPARSE_ALONE}'": [PY, "-c", ARGPARSE_ALONE],
     FLOOR: [PY, "-c", "import sass_tui.cli"],
 }
 
