@@ -2,8 +2,11 @@ from __future__ import annotations
 
 import csv
 import gc
+import gzip
+import io
 import os
 import shutil
+from dataclasses import dataclass
 from pathlib import Path
 
 import _bytecode  # noqa: F401  (first: sass's modules get bytecode; tests/_bytecode.py)
@@ -66,6 +69,76 @@ def shipped_db_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
             conn.close()
 
     return built_once(tmp_path_factory, "shipped", build) / "sass.db"
+
+
+# Every SAMPLED_EVERY-th soldier of each ANSUR II file and adult of the
+# NHANES file (a systematic sample: the shipped target's calibration still
+# finds enough people of each gender; every 20th left too few women).
+SAMPLED_EVERY = 10
+
+
+@dataclass(frozen=True)
+class SampledPeople:
+    """What `sass db init` stores from the sampled data sets (counted in their CSV)."""
+
+    female: int  # ANSUR II women
+    male: int  # ANSUR II men
+    virtual: int  # NHANES adults with a stature and a mass: one virtual person each
+
+    @property
+    def ansur(self) -> int:
+        return self.female + self.male
+
+    @property
+    def everyone(self) -> int:
+        return self.ansur + 200 + self.virtual  # and the 200 synthetic people
+
+
+@pytest.fixture(scope="session")
+def sampled_datasets(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, SampledPeople]:
+    """A copy of the shipped data sets with every SAMPLED_EVERY-th row of the
+    ANSUR II and NHANES files (the other files linked), and what a build
+    from it stores."""
+    from sass_tui.model import shipped
+
+    source = Path(shipped.directory())
+    folder = tmp_path_factory.mktemp("sampled-datasets")
+    for item in source.iterdir():
+        if item.name not in ("ansur2", "nhanes"):
+            (folder / item.name).symlink_to(item)
+    rows: dict[str, list[bytes]] = {}
+    for group in ("ansur2", "nhanes"):
+        (folder / group).mkdir()
+        for file in sorted((source / group).glob("*.csv.gz")):
+            lines = gzip.decompress(file.read_bytes()).splitlines(keepends=True)
+            kept = lines[1::SAMPLED_EVERY]
+            (folder / group / file.name).write_bytes(gzip.compress(b"".join([lines[0], *kept])))
+            rows[file.name] = [lines[0], *kept]
+    nhanes = csv.DictReader(io.StringIO(b"".join(rows["nhanes_2017_2020_adults.csv.gz"]).decode()))
+    people = SampledPeople(
+        female=len(rows["ANSUR_II_FEMALE_Public.csv.gz"]) - 1,
+        male=len(rows["ANSUR_II_MALE_Public.csv.gz"]) - 1,
+        virtual=sum(1 for row in nhanes if row["stature[cm]"] and row["mass[kg]"]),
+    )
+    return folder, people
+
+
+@pytest.fixture
+def few_default_people(sampled_datasets, monkeypatch) -> SampledPeople:
+    """In this test, `sass db init` (create_default_database) builds the
+    default database from `sampled_datasets`: the same steps and tables, a
+    tenth of the people (608 soldiers and 839 virtual civilians against
+    6,068 and 8,381), 0.47 s of CPU against 2.2 s.  For the tests of how a
+    build starts, asks, replaces, locks and recovers, which hold for any
+    people; what the default database holds is tested on the whole data
+    (test_database_safety.py's test_db_init_builds_an_empty_file_in_place,
+    tests/cli/test_db.py).  Only this process: a `sass` the test starts reads
+    the shipped data."""
+    from sass_tui.model import shipped
+
+    folder, people = sampled_datasets
+    monkeypatch.setattr(shipped, "directory", lambda: str(folder))
+    return people
 
 
 @pytest.fixture(autouse=True, scope="session")

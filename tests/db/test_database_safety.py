@@ -251,7 +251,7 @@ def test_a_file_found_whole_is_read_through_again_only_once_something_changed_it
 
 
 @pytest.mark.slow
-def test_db_init_needs_force_to_replace_people(db_path, tmp_path, capsys):
+def test_db_init_needs_force_to_replace_people(db_path, tmp_path, capsys, few_default_people):
     conn = connect(db_path)
     import_flat_files(conn, _flat(tmp_path))
     conn.close()
@@ -260,11 +260,11 @@ def test_db_init_needs_force_to_replace_people(db_path, tmp_path, capsys):
     assert _count(db_path, "name = 'JANE_DOE'") == 1
     assert main(["db", "init", "--force", "--db", str(db_path)]) == 0
     assert _count(db_path, "name = 'JANE_DOE'") == 0
-    assert _count(db_path) == 6068 + 200 + NHANES_ADULTS
+    assert _count(db_path) == few_default_people.everyone
 
 
 @pytest.mark.slow
-def test_db_init_rebuilds_in_place_under_an_open_connection(db_path, tmp_path):
+def test_db_init_rebuilds_in_place_under_an_open_connection(db_path, tmp_path, few_default_people):
     """No file is renamed over the database: the same inode, and a connection
     opened before the rebuild reads the new database, not a malformed one."""
     inode = db_path.stat().st_ino
@@ -275,7 +275,8 @@ def test_db_init_rebuilds_in_place_under_an_open_connection(db_path, tmp_path):
     assert run_query(reader, "stature > 0 cm").count() == 6068 + 1  # real people
     create_default_database(db_path, replace=True)
     assert db_path.stat().st_ino == inode
-    assert run_query(reader, "stature > 0 cm AND source != none").count() == 6268 + NHANES_ADULTS
+    everyone = run_query(reader, "stature > 0 cm AND source != none").count()
+    assert everyone == few_default_people.everyone
     reader.close()
     assert _integrity(db_path) == "ok"
     assert not Path(f"{db_path}-journal").exists()
@@ -310,7 +311,7 @@ CHILD = textwrap.dedent(
 
 
 @pytest.mark.slow
-def test_kill_9_mid_import_then_db_init(db_path):
+def test_kill_9_mid_import_then_db_init(db_path, few_default_people):
     """A killed import leaves a hot journal: the database reads as before, and
     `db init` rebuilds it whole."""
     before = row_counts_of(db_path)
@@ -364,7 +365,7 @@ def _start_import(path: Path) -> subprocess.Popen:
 
 
 @pytest.mark.slow
-def test_db_init_while_another_process_imports(db_path):
+def test_db_init_while_another_process_imports(db_path, few_default_people):
     child = _start_import(db_path)
     create_default_database(db_path, replace=True)
     out, err = child.communicate(timeout=120)
@@ -376,8 +377,8 @@ def test_db_init_while_another_process_imports(db_path):
         assert "is busy: another process is writing to it" in err, err
         assert imported == 0
     # Either the import finished before the rebuild (and was replaced) or after it.
-    assert imported in (0, 6068)
-    assert _count(db_path, "source = 'ansur2'") == 6068
+    assert imported in (0, few_default_people.ansur)
+    assert _count(db_path, "source = 'ansur2'") == few_default_people.ansur
 
 
 # --- the lists are read-only for the main database -------------------------------------
@@ -452,7 +453,7 @@ class _Terminal(io.StringIO):
 
 
 @pytest.mark.slow
-def test_building_reports_progress(tmp_path):
+def test_building_reports_progress(tmp_path, few_default_people):
     calls: list[tuple[int, int]] = []
     create_default_database(tmp_path / "p.db", progress=lambda d, t: calls.append((d, t)))
     assert len(calls) >= 3
@@ -467,7 +468,9 @@ def test_building_reports_progress(tmp_path):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("answer, status, kept", [("n\n", 1, 1), ("y\n", 0, 0)])
-def test_db_init_asks_on_a_terminal(db_path, tmp_path, monkeypatch, answer, status, kept):
+def test_db_init_asks_on_a_terminal(
+    db_path, tmp_path, monkeypatch, answer, status, kept, few_default_people
+):
     conn = connect(db_path)
     import_flat_files(conn, _flat(tmp_path))
     conn.close()

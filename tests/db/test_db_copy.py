@@ -144,7 +144,7 @@ def test_a_loaded_copy_is_not_written_again(db_path, copy_in_process):
 
 
 @pytest.mark.slow
-def test_db_init_drops_the_old_copy(db_path, tmp_path, monkeypatch):
+def test_db_init_drops_the_old_copy(db_path, tmp_path, monkeypatch, few_default_people):
     cache = tmp_path / "cache"
     built = sass(cache, "db", "copy", "--db", str(db_path))
     folder = Path(built.stdout.rsplit(" in ", 1)[1].strip())

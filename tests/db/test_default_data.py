@@ -126,25 +126,25 @@ def test_cli_query_csv_and_table(shared_target, capsys):
 
 
 @pytest.mark.slow
-def test_cli_db_init_uses_xdg_location(tmp_path, monkeypatch, capsys):
+def test_cli_db_init_uses_xdg_location(tmp_path, monkeypatch, capsys, few_default_people):
     monkeypatch.delenv("SASS_DB", raising=False)
     monkeypatch.setenv("XDG_DATA_HOME", str(tmp_path))
     # First use of `sass query` creates the default database.
     assert main(["query", "--format", "json", "gender = female"]) == 0
-    assert json.loads(capsys.readouterr().out)["count"] == 1986  # real people only
+    assert json.loads(capsys.readouterr().out)["count"] == few_default_people.female  # real only
     assert (tmp_path / "sass" / "sass.db").is_file()
     target = tmp_path / "other.db"
     monkeypatch.setenv("SASS_DB", str(target))
     assert main(["db", "init"]) == 0
     assert target.is_file()
     capsys.readouterr()
-    # A fresh install: 6,068 ANSUR II people, the synthetic ones and the
+    # A fresh install: the ANSUR II people, the synthetic ones and the
     # shipped virtual people (a query naming `source` reaches every source),
     # no file given.
     assert main(["query", "--format", "json", "stature > 0 cm AND source != none"]) == 0
-    assert json.loads(capsys.readouterr().out)["count"] == 6068 + 200 + NHANES_ADULTS
+    assert json.loads(capsys.readouterr().out)["count"] == few_default_people.everyone
     assert main(["query", "--count", "--virtual", "nhanes-2017-2020", "stature > 0 cm"]) == 0
-    assert capsys.readouterr().out.splitlines()[0] == str(NHANES_ADULTS)
+    assert capsys.readouterr().out.splitlines()[0] == str(few_default_people.virtual)
 
 
 def test_cli_query_missing_database_is_an_error(tmp_path, capsys):

@@ -224,7 +224,7 @@ def test_the_library_refuses_a_read_only_database_before_writing(tmpfs_with_db, 
 
 @pytest.mark.slow
 def test_a_first_build_the_disk_cut_short_is_finished_by_the_next_run(
-    tmp_path, monkeypatch, capsys
+    tmp_path, monkeypatch, capsys, few_default_people
 ):
     """The default database is built on first use; a disk that fills half-way
     left its schema with nobody in it, and every later query said "0 people"."""

@@ -112,7 +112,7 @@ def test_on_a_full_file_system_input_db_and_create_figure_name_the_file(
 
 @pytest.mark.slow
 def test_the_query_screen_finishes_a_default_database_build_cut_short(
-    drive, app_at, tmp_path, monkeypatch
+    drive, app_at, tmp_path, monkeypatch, few_default_people
 ):
     """What a disk that filled during the first build leaves: the schema and
     nobody in it.  The Query screen built the default database only when the
