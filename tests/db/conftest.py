@@ -8,7 +8,9 @@ why, where no server can start (tests/_postgres.py's `why_not`).  Each test
 process imports the shipped data once per engine (tests/conftest.py): SQLite's
 `shipped_db_file`, PostgreSQL's `postgres_template` (`sass db init`); a test
 that writes gets its own copy (`engine_target`: a file copy, `CREATE DATABASE
-... TEMPLATE`), the read-only tests share one (`shared_target`, `engine_db`).
+... TEMPLATE`), the read-only tests share one (`shared_target`, `engine_db`),
+and the tests of a refused import share one a module (`refusal_target`,
+`refusal_db`: each checks the database is as it found it).
 
 SQLite only: `default_db` and `default_db_file`, for the tests about SQLite
 itself (its files, locks, PRAGMAs, schema migrations, the DuckDB copy).
@@ -130,6 +132,32 @@ def engine_target(engine, template_target, request, copy_database) -> Iterator[s
     test may write to it), dropped after the test."""
     url = copy_database(template_target)
     yield url
+    _remove_copy(engine, url, request)
+
+
+@pytest.fixture(scope="module")
+def refusal_target(engine, template_target, request, copy_database) -> Iterator[str]:
+    """The address of a copy of the default database on `engine` that the
+    refusal tests of one module share: each imports what must be refused and
+    checks that the database holds what it held before (its own row counts
+    before and after), so the next may begin where the last ended, as a
+    user's database goes through one refused file after another.  A test
+    whose import wrongly stored something still fails on its own counts.
+    One copy a module, not one a test: a PostgreSQL copy costs the server
+    0.3-0.4 s of CPU (`CREATE DATABASE ... TEMPLATE` of the 102 MB default
+    database), and there are about 30 refusal tests on each engine."""
+    url = copy_database(template_target)
+    yield url
+    _remove_copy(engine, url, request)
+
+
+@pytest.fixture()
+def refusal_db(refusal_target) -> Iterator[object]:
+    """A connection of its own to `refusal_target`."""
+    yield from _opened(refusal_target)
+
+
+def _remove_copy(engine: str, url: str, request: pytest.FixtureRequest) -> None:
     if engine == "postgresql":
         request.getfixturevalue("cluster").drop_database(_name_of(url))
     else:  # its folder (copy_database's) would hold the 59 MB to the run's end

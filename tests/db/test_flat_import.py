@@ -2,7 +2,9 @@
 
 Both engines: the import goes through the Database service (`Database.import_flat`)
 or the CLI with the engine's address, into a private copy of the default database
-(`engine_target`; on PostgreSQL staged in SQLite and copied, db/engine/postgres.py)."""
+(`engine_target`, or for the refused imports `refusal_target`, one copy the
+module's refusals share; on PostgreSQL staged in SQLite and copied,
+db/engine/postgres.py)."""
 
 from __future__ import annotations
 
@@ -93,21 +95,21 @@ BAD = [
 
 @pytest.mark.parametrize("which, text, message", BAD)
 def test_bad_flat_file_rejects_whole_import(
-    engine_target, engine_db_copy, tmp_path, which, text, message
+    refusal_target, refusal_db, tmp_path, which, text, message
 ):
-    before = row_counts(engine_db_copy)
+    before = row_counts(refusal_db)
     files = _files(tmp_path, **{which: text})
     with (
-        closing(Database.open(engine_target)) as db,
+        closing(Database.open(refusal_target)) as db,
         pytest.raises(FlatFileError, match=message.replace("(", r"\(")),
     ):
         import_flat_into(db, files)
-    assert row_counts(engine_db_copy) == before
+    assert row_counts(refusal_db) == before
 
 
-def test_database_error_mid_transaction_rolls_back(engine_target, engine_db_copy, tmp_path):
+def test_database_error_mid_transaction_rolls_back(refusal_target, refusal_db, tmp_path):
     """A strength row naming an experiment the parameter file lacks: nothing stored."""
-    before = row_counts(engine_db_copy)
+    before = row_counts(refusal_db)
     files = _files(
         tmp_path,
         strength={
@@ -116,11 +118,11 @@ def test_database_error_mid_transaction_rolls_back(engine_target, engine_db_copy
         },
     )
     with (
-        closing(Database.open(engine_target)) as db,
+        closing(Database.open(refusal_target)) as db,
         pytest.raises(FlatFileError, match="elbow-strgh.db:1: experiment 2"),
     ):
         import_flat_into(db, files)
-    assert row_counts(engine_db_copy) == before
+    assert row_counts(refusal_db) == before
 
 
 def test_cli_import_flat(engine_target, engine_db_copy, tmp_path, capsys):

@@ -6,7 +6,8 @@ every refusal.
 
 Both engines where the database is written: the import goes through the
 Database service or the CLI with the engine's address (`engine_target`, a
-private copy; on PostgreSQL staged in SQLite and copied, db/engine/postgres.py).  The
+private copy, or for the refusals `refusal_target`, one copy the module's
+refusals share; on PostgreSQL staged in SQLite and copied, db/engine/postgres.py).  The
 readers' own tests (read_ansur, iter_ansur) touch no database."""
 
 from __future__ import annotations
@@ -73,15 +74,15 @@ BAD_VALUES = [
 
 @pytest.mark.parametrize("column, value, message", BAD_VALUES)
 def test_bad_values_are_refused_with_file_and_line(
-    engine_target, engine_db_copy, tmp_path, male_lines, column, value, message
+    refusal_target, refusal_db, tmp_path, male_lines, column, value, message
 ):
-    before = row_counts(engine_db_copy)
+    before = row_counts(refusal_db)
     path = _write(tmp_path, _with_value(male_lines, 7, column, value))
-    with closing(Database.open(engine_target)) as db, pytest.raises(AnsurImportError) as caught:
+    with closing(Database.open(refusal_target)) as db, pytest.raises(AnsurImportError) as caught:
         import_ansur_into(db, [path], label="ansur2")
     assert str(caught.value).startswith(f"{path}:8: ")
     assert message in str(caught.value)
-    assert row_counts(engine_db_copy) == before
+    assert row_counts(refusal_db) == before
 
 
 def test_a_byte_order_mark_is_read(engine_target, engine_db_copy, tmp_path, male_lines):
@@ -102,18 +103,18 @@ def test_cp1252_text_is_still_read(tmp_path, male_lines):
     assert len(read_ansur(path)) == 30
 
 
-def test_duplicate_ids_name_both_lines(engine_target, engine_db_copy, tmp_path, male_lines):
-    before = row_counts(engine_db_copy)
+def test_duplicate_ids_name_both_lines(refusal_target, refusal_db, tmp_path, male_lines):
+    before = row_counts(refusal_db)
     first = male_lines[2].split(",")[0]
     path = _write(tmp_path, _with_value(male_lines, 20, "subjectid", first))
     with (
-        closing(Database.open(engine_target)) as db,
+        closing(Database.open(refusal_target)) as db,
         pytest.raises(
             AnsurImportError, match=rf":21: duplicate subject id {first} \(first on line 3\)"
         ),
     ):
         import_ansur_into(db, [path], label="dup")
-    assert row_counts(engine_db_copy) == before
+    assert row_counts(refusal_db) == before
 
 
 def test_rows_are_read_a_chunk_at_a_time(tmp_path, male_lines):
@@ -137,13 +138,13 @@ def test_gzip_files_import(engine_target, engine_db_copy, tmp_path, male_lines):
     )
 
 
-def test_cli_reports_the_line(engine_target, engine_db_copy, tmp_path, male_lines, capsys):
-    before = row_counts(engine_db_copy)
+def test_cli_reports_the_line(refusal_target, refusal_db, tmp_path, male_lines, capsys):
+    before = row_counts(refusal_db)
     path = _write(tmp_path, _with_value(male_lines, 5, "weightkg", "1e309"))
-    assert main(["db", "import-ansur", "--db", engine_target, str(path)]) == 2
+    assert main(["db", "import-ansur", "--db", refusal_target, str(path)]) == 2
     err = capsys.readouterr().err
     assert f"{path}:6: column weightkg" in err and "Traceback" not in err
-    assert row_counts(engine_db_copy) == before
+    assert row_counts(refusal_db) == before
 
 
 @settings(
@@ -187,14 +188,14 @@ def _flat(tmp_path, person: str, bom: bool = False) -> FlatFiles:
         (PERSON.replace(",31,", ",-31,"), "person.db:1: age: '-31' is not plausible"),
     ],
 )
-def test_flat_files_refuse_absurd_values(engine_target, engine_db_copy, tmp_path, person, message):
-    before = row_counts(engine_db_copy)
+def test_flat_files_refuse_absurd_values(refusal_target, refusal_db, tmp_path, person, message):
+    before = row_counts(refusal_db)
     with (
-        closing(Database.open(engine_target)) as db,
+        closing(Database.open(refusal_target)) as db,
         pytest.raises(FlatFileError, match=message.replace("(", r"\(")),
     ):
         import_flat_into(db, _flat(tmp_path, person))
-    assert row_counts(engine_db_copy) == before
+    assert row_counts(refusal_db) == before
 
 
 def test_flat_files_with_a_byte_order_mark(engine_target, engine_db_copy, tmp_path):
