@@ -10,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _built_once import copy_database_file
 from test_database_safety import NHANES_ADULTS
 
 from sass_tui.cli import main
@@ -163,17 +164,13 @@ def test_bad_query_leaves_database_unchanged(engine_db, shared_target, capsys):
 
 
 @pytest.mark.slow
-def test_query_output_into_a_closed_pipe_is_not_an_error(tmp_path):
+def test_query_output_into_a_closed_pipe_is_not_an_error(shipped_db_file, tmp_path):
     """`sass query ... | head -1`: the reader closes early; sass exits quietly."""
     import subprocess
     import sys
 
     db = tmp_path / "sass.db"
-    subprocess.run(
-        [sys.executable, "-m", "sass_tui", "db", "init", "--db", str(db)],
-        check=True,
-        capture_output=True,
-    )
+    copy_database_file(shipped_db_file, db)  # what `sass db init` builds
     done = subprocess.run(
         f'"{sys.executable}" -m sass_tui query --db "{db}" --format csv "mass > 0" | head -1',
         shell=True,

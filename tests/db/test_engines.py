@@ -288,11 +288,14 @@ def test_a_server_restarted_between_two_commands(cluster, postgres_template, cap
 
 @pytest.mark.slow
 @needs_postgres
-def test_sass_db_env_names_the_server(cluster, tmp_path):
-    url = cluster.create_database("from_env")
+def test_sass_db_env_names_the_server(cluster, postgres_template):
+    url = cluster.create_database("from_env", postgres_template)  # after `sass db init`
     env = dict(os.environ, SASS_DB=url)
-    done = sass("db", "init", "--force", env=env)
-    assert done.returncode == 0, done.stderr
+    # `db init` finds the people of the server's database (no file of that name)
+    # and, with no terminal to ask on, wants --force to replace them
+    refused = sass("db", "init", env=env)
+    assert refused.returncode == 2 and "--force" in refused.stderr, refused.stderr
+    assert "people" in refused.stderr
     counted = sass("query", "--count", "source = synthetic", env=env)
     assert counted.returncode == 0, counted.stderr
     assert int(counted.stdout) > 0
