@@ -2,7 +2,8 @@
 (the issue's target: under 2x) and against the command line's own floor,
 `python -c "import sass_tui.cli"` (argparse and the verb table every verb
 pays), and against argparse alone (imported, one empty command line parsed:
-the least any argparse command does), in fresh processes, interleaved so both sides see the same load.
+the least any argparse command does), in fresh processes, interleaved so
+both sides see the same load.
 Wall and CPU time (user + system of the child): on a loaded machine the CPU
 time is the steadier of the two.  Run as a user runs sass: with bytecode
 caching (PYTHONDONTWRITEBYTECODE, set in some shells and CI, is dropped for

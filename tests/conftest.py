@@ -16,6 +16,7 @@ from _paths import ANSUR, REPORT
 from hypothesis import settings
 
 from sass_tui.cli import main
+from sass_tui.model import shipped
 
 # One BLAS thread in each test process: `pytest -n 3` already keeps both cores
 # busy, and OpenBLAS's own threads then wait on each other (calibrating the
@@ -99,8 +100,6 @@ def sampled_datasets(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, Sa
     """A copy of the shipped data sets with every SAMPLED_EVERY-th row of the
     ANSUR II and NHANES files (the other files linked), and what a build
     from it stores."""
-    from sass_tui.model import shipped
-
     source = Path(shipped.directory())
     folder = tmp_path_factory.mktemp("sampled-datasets")
     for item in source.iterdir():
@@ -134,8 +133,6 @@ def few_default_people(sampled_datasets, monkeypatch) -> SampledPeople:
     (test_database_safety.py's test_db_init_builds_an_empty_file_in_place,
     tests/cli/test_db.py).  Only this process: a `sass` the test starts reads
     the shipped data."""
-    from sass_tui.model import shipped
-
     folder, people = sampled_datasets
     monkeypatch.setattr(shipped, "directory", lambda: str(folder))
     return people

@@ -130,9 +130,7 @@ def template_target(engine, request) -> str:
 def engine_target(engine, template_target, request, copy_database) -> Iterator[str]:
     """The address of a private copy of the default database on `engine` (the
     test may write to it), dropped after the test."""
-    url = copy_database(template_target)
-    yield url
-    _remove_copy(engine, url, request)
+    yield from _copy_of_default(engine, template_target, request, copy_database)
 
 
 @pytest.fixture(scope="module")
@@ -146,9 +144,7 @@ def refusal_target(engine, template_target, request, copy_database) -> Iterator[
     One copy a module, not one a test: a PostgreSQL copy costs the server
     0.3-0.4 s of CPU (`CREATE DATABASE ... TEMPLATE` of the 102 MB default
     database), and there are about 30 refusal tests on each engine."""
-    url = copy_database(template_target)
-    yield url
-    _remove_copy(engine, url, request)
+    yield from _copy_of_default(engine, template_target, request, copy_database)
 
 
 @pytest.fixture()
@@ -157,7 +153,15 @@ def refusal_db(refusal_target) -> Iterator[object]:
     yield from _opened(refusal_target)
 
 
-def _remove_copy(engine: str, url: str, request: pytest.FixtureRequest) -> None:
+def _copy_of_default(
+    engine: str,
+    template_target: str,
+    request: pytest.FixtureRequest,
+    copy_database: Callable[[str], str],
+) -> Iterator[str]:
+    """A copy of the default database on `engine`, removed when the fixture ends."""
+    url = copy_database(template_target)
+    yield url
     if engine == "postgresql":
         request.getfixturevalue("cluster").drop_database(_name_of(url))
     else:  # its folder (copy_database's) would hold the 59 MB to the run's end
