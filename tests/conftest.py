@@ -130,9 +130,9 @@ def few_default_people(sampled_datasets, monkeypatch) -> SampledPeople:
     6,068 and 8,381), 0.47 s of CPU against 2.2 s.  For the tests of how a
     build starts, asks, replaces, locks and recovers, which hold for any
     people; what the default database holds is tested on the whole data
-    (test_database_safety.py's test_db_init_builds_an_empty_file_in_place,
-    tests/cli/test_db.py).  Only this process: a `sass` the test starts reads
-    the shipped data."""
+    (tests/cli/test_db.py: every soldier of the CSV files, every NHANES adult
+    with a stature and a mass, demonstration people and nobody else).  Only
+    this process: a `sass` the test starts reads the shipped data."""
     folder, people = sampled_datasets
     monkeypatch.setattr(shipped, "directory", lambda: str(folder))
     return people

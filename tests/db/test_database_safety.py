@@ -282,14 +282,14 @@ def test_db_init_rebuilds_in_place_under_an_open_connection(db_path, tmp_path, f
     assert not Path(f"{db_path}-journal").exists()
 
 
-@pytest.mark.slow
-def test_db_init_builds_an_empty_file_in_place(tmp_path):
+def test_db_init_builds_an_empty_file_in_place(tmp_path, few_default_people):
+    # (what a build from the whole data holds: tests/cli/test_db.py)
     path = tmp_path / "empty.db"
     path.touch()
     assert create_default_database(path) == {
         "synthetic": 200,
-        "ansur2": 6068,
-        "virtual:nhanes-2017-2020": NHANES_ADULTS,
+        "ansur2": few_default_people.ansur,
+        "virtual:nhanes-2017-2020": few_default_people.virtual,
     }
     assert create_default_database(path) == {}  # first use twice: built once
 
