@@ -79,9 +79,9 @@ def no_widget_kept_by_a_cache():
     the figure view's canvas, with its widget), up to 1,024, 1,024 and 128 of
     them.  A test process kept 160,000-185,000 objects of closed apps that
     way, and every full collection of the garbage collector went through them
-    again: tests/ui with `-n 3` took 104-105 s of CPU instead of 112-114 s
-    with the caches emptied after each test, and 54,000-63,000 objects were
-    left.  An app's drawing is the same with a cold cache; the caches fill
+    again.  Emptied after each test, 54,000-63,000 objects are left, and
+    tests/ui with `-n 3` takes 104-105 s of CPU instead of 112-114 s.  An
+    app's drawing is the same with a cold cache; the caches fill
     again as it draws.  Their private names: an attribute that moves raises,
     failing every UI test at once."""
     yield
