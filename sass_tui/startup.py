@@ -158,13 +158,14 @@ PATHS: tuple[StartupPath, ...] = (
         "sass niosh",
         ("niosh", "--h", "40cm", "--v", "60cm", "--d", "80cm", "--f", "2", "--load", "12kg"),
         (*NEVER, *QUERY_PARSER, *UI, *ENGINES, *NOT_FOR_A_SHORT_COMMAND, "sqlite3",
-         "platformdirs", "numpy", "dataclasses", "inspect", "statistics", "gzip", "string",
+         "platformdirs", "numpy", "csv", "dataclasses", "inspect", "statistics", "gzip",
+         "string", "pathlib", "urllib.parse", "ipaddress",
          "xml.etree.ElementTree", "sass_tui.db", "sass_tui.ui", "sass_tui.model.body",
-         "sass_tui.model.datasets", "sass_tui.model.names"),
+         "sass_tui.model.datasets", "sass_tui.model.names", "sass_tui.model.files",
+         "sass_tui.model.strength.niosh_tasks", "sass_tui.cli.niosh_job"),
         "the lifting equation is plain floats and two tables read by model/shipped.py: no"
-        " numpy, no database, no row tables (the job file's csv reader, ~1 ms, and"
-        " model/files/paths.py's pathlib, ~4 ms, ride along rather than cost a deferred"
-        " import)",
+        " numpy, no database, no row tables; a job file's reader (pathlib) and parser"
+        " (csv), ~4 ms, only for --tasks (cli/niosh_job.py)",
     ),
     StartupPath(
         "sass handling",

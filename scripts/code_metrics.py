@@ -30,9 +30,10 @@ MAX_MODULE_LINES = 500
 # spreadsheet's commands, the database's engines and the verbs' options were
 # split by topic; 42 with `sass handling`'s posture and population,
 # cli/handling_people.py; 43 with `sass reach`'s --target/--virtual share,
-# cli/reach_people.py).  With the generated parser's own 6 the package holds at
+# cli/reach_people.py; 44 with `sass niosh --tasks`'s file reader,
+# cli/niosh_job.py).  With the generated parser's own 6 the package holds at
 # most 60 (tests/test_code_metrics.py).
-MAX_FUNCTION_LEVEL_IMPORTS = 43
+MAX_FUNCTION_LEVEL_IMPORTS = 44
 # A ticket number in prose: "issue" or "issues", then a number (a "#" allowed).
 ISSUE_REFERENCE = re.compile(r"\bissues?\s+#?\d+", re.IGNORECASE)
 # Generated code is not read or written by hand.

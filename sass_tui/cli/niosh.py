@@ -3,7 +3,8 @@ DHHS (NIOSH) Pub. 94-110): the recommended weight limit, each multiplier
 with the manual's limits it applied, and the lifting index of a load, at the
 origin and (when the load must be placed) the destination; or, for a
 multi-task job (`--tasks FILE`), each task's FIRWL, STRWL, FILI and STLI and
-the composite lifting index (model/strength/niosh.py, docs/manual-handling.md).
+the composite lifting index (cli/niosh_job.py; model/strength/niosh.py,
+docs/manual-handling.md).
 
     sass niosh --h 40cm --v 60cm --d 80cm --a 30 --f 2 --duration moderate --load 12kg
     sass niosh --h 10in --v 22in --dest-h 20in --dest-v 59in --f 3 --load 26lb
@@ -24,12 +25,10 @@ from sass_tui.cli.common.figure_hands import (
     refuse_typed_hands,
 )
 from sass_tui.cli.common.options import SubParsers, file_name
-from sass_tui.model.files.paths import LARGEST_TEXT_FILE, read_user_text
 from sass_tui.model.strength import niosh_input
 from sass_tui.model.strength.niosh import (
     COUPLINGS,
     DURATIONS,
-    CompositeAnswer,
     Form,
     Lift,
     LiftAnswer,
@@ -37,15 +36,12 @@ from sass_tui.model.strength.niosh import (
     NioshError,
     Point,
     assess_lift,
-    composite_lifting_index,
     index_words,
+    json_number,
     lifting_index,
     source,
     special_frequency,
-    task_indices,
 )
-from sass_tui.model.strength.niosh_tasks import read_tasks
-from sass_tui.model.text import printable
 from sass_tui.model.units import convert
 from sass_tui.model.vocabulary import GENDERS
 
@@ -119,6 +115,9 @@ def register(commands: SubParsers) -> None:
 
 def run(args: argparse.Namespace) -> int:
     if args.tasks is not None:
+        # deferred: cli.niosh_job (pathlib, csv, the job file's reader) — off sass niosh (sass_tui/startup.py)
+        from sass_tui.cli.niosh_job import run_job
+
         return run_job(args)
     answer = assess_lift(single_lift(args))
     if args.format == "json":
@@ -168,18 +167,11 @@ def _origin(args: argparse.Namespace, of: Form) -> tuple[float, float]:
     return convert(h, "m", of.length_unit), convert(v, "m", of.length_unit)
 
 
-def number(value: float | None, digits: int = 4) -> float | None:
-    """A JSON number: None for no value or no limit (an RWL of 0 gives LI infinity)."""
-    if value is None or not math.isfinite(value):
-        return None
-    return round(value, digits)
-
-
 def _end_json(end: Limit, of: Form, load: float | None) -> dict[str, Any]:
     return {
-        "rwl": {"value": number(end.rwl, 3), "unit": of.load_unit},
-        "lifting_index": number(lifting_index(load, end.rwl)),
-        "multipliers": {name: number(end.multipliers[name].value) for name in ORDER},
+        "rwl": {"value": json_number(end.rwl, 3), "unit": of.load_unit},
+        "lifting_index": json_number(lifting_index(load, end.rwl)),
+        "multipliers": {name: json_number(end.multipliers[name].value) for name in ORDER},
         "limits": end.limits,
     }
 
@@ -193,8 +185,8 @@ def lift_json(answer: LiftAnswer) -> dict[str, Any]:
         "destination": None
         if answer.destination is None
         else _end_json(answer.destination, of, lift.load),
-        "rwl": {"value": number(answer.rwl, 3), "unit": of.load_unit},
-        "lifting_index": number(lifting_index(lift.load, answer.rwl)),
+        "rwl": {"value": json_number(answer.rwl, 3), "unit": of.load_unit},
+        "lifting_index": json_number(lifting_index(lift.load, answer.rwl)),
         "load": None if lift.load is None else {"value": lift.load, "unit": of.load_unit},
         "inputs": {
             "h": lift.origin.h,
@@ -244,84 +236,5 @@ def lift_text(answer: LiftAnswer) -> list[str]:
     for name, end in ends:
         for limit in end.limits:
             lines.append(f"Limit ({name}): {limit}")
-    lines.append(f"Source: {source()}")
-    return lines
-
-
-def run_job(args: argparse.Namespace) -> int:
-    given = [
-        option
-        for option, value in (
-            ("--h", args.h),
-            ("--v", args.v),
-            ("--d", args.d),
-            ("--f", args.f),
-            ("--load", args.load),
-            ("--dest-h", args.dest_h),
-            ("--dest-v", args.dest_v),
-            ("--dest-a", args.dest_a),
-            ("--dest-coupling", args.dest_coupling),
-            ("--lifting-minutes", args.lifting_minutes),
-            # a posture's hands were passed over without a word
-            ("JOINT=ANGLE", args.angles or None),
-            ("--posture", args.posture),
-            ("--person", args.person),
-            ("--gender", args.gender),
-        )
-        if value is not None
-    ]
-    if given:
-        raise NioshError(f"--tasks takes each task from its file; leave out {', '.join(given)}")
-    path, text = read_user_text(args.tasks, kind="a job file", largest=LARGEST_TEXT_FILE)
-    of, lifts = read_tasks(text, str(path), args.duration)
-    answer = composite_lifting_index(
-        [task_indices(name, lift) for name, lift in lifts], args.duration, of
-    )
-    if args.format == "json":
-        print(json.dumps(job_json(answer, of, args.duration)))
-    else:
-        for line in job_text(answer, of, args.duration):
-            print(line)
-    return 0
-
-
-def job_json(answer: CompositeAnswer, of: Form, duration: str) -> dict[str, Any]:
-    return {
-        "form": of.name,
-        "duration": duration,
-        "tasks": [
-            {
-                "name": task.name,
-                "frequency": task.f,
-                "firwl": {"value": number(task.firwl, 3), "unit": of.load_unit},
-                "strwl": {"value": number(task.strwl, 3), "unit": of.load_unit},
-                "fili": number(task.fili),
-                "stli": number(task.stli),
-                "limits": list(task.limits),
-            }
-            for task in answer.tasks
-        ],
-        "increments": [number(step) for step in answer.increments],
-        "composite_lifting_index": number(answer.cli),
-        "source": source(),
-    }
-
-
-def job_text(answer: CompositeAnswer, of: Form, duration: str) -> list[str]:
-    lines = [
-        f"Multi-task job ({'metric form' if of.name == 'metric' else 'U.S. form'}, "
-        f"{duration} duration), tasks by decreasing STLI:",
-        f"{'#':>3} {'task':20} {'F/min':>7} {'FIRWL':>9} {'STRWL':>9} {'FILI':>9} {'STLI':>9}",
-    ]
-    for i, task in enumerate(answer.tasks, 1):
-        lines.append(
-            f"{i:>3} {printable(task.name)[:20]:20} {task.f:>7.2f} {task.firwl:>9.2f} {task.strwl:>9.2f} "
-            f"{index_words(task.fili):>9} {index_words(task.stli):>9}"
-        )
-    for task in answer.tasks:
-        lines += [f"Limit (task {printable(task.name)}): {limit}" for limit in task.limits]
-    lines.append(
-        f"Composite lifting index: {index_words(answer.cli)} (FIRWL, STRWL in {of.load_unit})"
-    )
     lines.append(f"Source: {source()}")
     return lines

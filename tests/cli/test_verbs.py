@@ -28,6 +28,7 @@ SHARED = {  # parts of a verb; what verbs share lives in cli/common/
     "target_change",  # sass target NAME --sample, --drop
     "task_people",  # sass task --person, --target, --virtual
     "handling_people",  # sass handling from a posture, --person, --target, --virtual
+    "niosh_job",  # sass niosh --tasks
     "reach_people",  # sass reach --target, --virtual
 }
 

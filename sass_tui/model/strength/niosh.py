@@ -276,6 +276,15 @@ def index_words(value: float | None) -> str:
     return "infinite" if math.isinf(value) else f"{value:.2f}"
 
 
+def json_number(value: float | None, digits: int = 4) -> float | None:
+    """A weight limit, index or multiplier as `sass niosh --format json` gives
+    it: rounded, and null for no value (no load) or no limit (an RWL of 0
+    gives LI infinity, which JSON cannot hold)."""
+    if value is None or not math.isfinite(value):
+        return None
+    return round(value, digits)
+
+
 class LiftAnswer(NamedTuple):
     lift: Lift
     origin: Limit
