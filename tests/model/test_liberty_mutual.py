@@ -212,6 +212,7 @@ def test_hidden_push_pull_and_carry_cases(key, v, d, f):
         (Inputs("lift", 1.0, 0.5, 1.0, 0.22), "male", "H 0.22 m outside 0.25-0.73 m"),
         (Inputs("lift", 1.0, 0.2, 1.0, 0.4), "female", "DV 0.2 m outside"),
         (Inputs("lower", 1.0, 0.5, 25.0, 0.4), "female", "F 25 per minute outside"),
+        (Inputs("lift", 1.0, 0.5, 0.0, 0.4), "male", "F 0 per minute outside 0.00208 (one a day)-"),
         (Inputs("lift", 1.0, 0.6, 19.0, 0.4), "female", "mean velocity"),
         (Inputs("lift", 1.8, 0.6, 1.0, 0.4), "female", "arm reach 1.96 m"),
         (Inputs("push", 0.5, 10.0, 1.0), "female", "V 0.5 m outside 0.58-1.33 m"),

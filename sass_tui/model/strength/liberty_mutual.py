@@ -111,8 +111,11 @@ def out_of_range(inputs: Inputs, sex: str) -> list[str]:
             continue
         low, high = bounds[sex] if isinstance(bounds, dict) else bounds
         if not low <= value <= high:
-            unit = "per minute" if name == "F" else "m"
-            broken.append(f"{name} {value:g} {unit} outside {low:g}-{high:g} {unit}")
+            if name == "F":  # the paper's least frequency, one a day, is 1/480 per minute
+                day = " (one a day)" if math.isclose(low * 480, 1, rel_tol=1e-3) else ""
+                broken.append(f"F {value:g} per minute outside {low:.3g}{day}-{high:g} per minute")
+            else:
+                broken.append(f"{name} {value:g} m outside {low:g}-{high:g} m")
     if inputs.task in ("lift", "lower"):
         reach = ranges["arm_reach"][sex]
         top = inputs.v + inputs.d / 2
