@@ -5,6 +5,7 @@ against their CSV row; the --point parser."""
 from __future__ import annotations
 
 import csv
+import re
 from pathlib import Path
 
 import numpy as np
@@ -71,6 +72,21 @@ def test_a_point_is_three_lengths_in_a_unit(values, unit, each):
     assert parse_point(",".join(repr(v) for v in values)) == pytest.approx(
         np.array(values) / 100, abs=1e-9
     )
+
+
+@pytest.mark.parametrize(
+    ("text", "words"),
+    [
+        ("30,120", "expected X,Y,Z"),
+        ("a,b,c", "expected a number with an optional unit, got 'a'"),  # the first, not a unit 'c'
+        ("30,b,50", "got 'b'"),
+        ("30,120,50 kg", "kg is not a unit of length"),
+        ("30 kg,120,50", "kg is not a unit of length"),
+    ],
+)
+def test_a_point_that_is_not_one_is_refused_with_the_part_that_is_wrong(text, words):
+    with pytest.raises(ReachError, match=re.escape(words)):
+        parse_point(text)
 
 
 @given(st.text(max_size=40))

@@ -56,7 +56,7 @@ from sass_tui.model.body.body_surface import closed_tube
 from sass_tui.model.body.hanim import build_humanoid, humanoid_stature
 from sass_tui.model.body.landmarks import measured
 from sass_tui.model.errors import SassError
-from sass_tui.model.units import UnitError, finite_number, parse_quantity
+from sass_tui.model.units import UnitError, finite_number, parse_quantity, quantity_unit
 
 if TYPE_CHECKING:
     from sass_tui.model.body.figure import Figure
@@ -498,24 +498,12 @@ def parse_point(text: str) -> np.ndarray:
     if len(parts) != 3 or not all(parts):
         raise ReachError(f"{text.strip()!r}: expected X,Y,Z, e.g. 30,120,50 or 0.3,1.2,0.5 m")
     try:
-        unit = _unit_of(parts[-1])
+        # each part a number with an optional unit, said of the first that is not
+        unit = [quantity_unit(part) for part in parts][-1] or "cm"
+        parse_quantity(f"1 {unit}", "cm")  # the last part's unit is a length
         return np.array([_length(part, unit) for part in parts]) / 100.0
     except UnitError as exc:
         raise ReachError(f"{text.strip()!r}: {exc}") from None
-
-
-def _unit_of(part: str) -> str:
-    """The unit written after the number of `part` (cm if none), checked to
-    be a length."""
-    try:
-        finite_number(part)
-        return "cm"
-    except UnitError:
-        pass
-    number = part.rstrip("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ\"' ")
-    unit = part[len(number) :].strip() or "cm"
-    parse_quantity(f"1 {unit}", "cm")
-    return unit
 
 
 def _length(part: str, unit: str) -> float:
