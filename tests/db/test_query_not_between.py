@@ -138,6 +138,9 @@ def test_compound_units_add_up():
         ("NOT", 4, "the query ends too early"),
         ("stature BETWEEN 1 m", 20, "the query ends too early; expected AND"),
         ("NOT branch > 'Combat Arms'", 12, "can only be compared with = or !="),
+        ("stature > 1 m, mass < 90 kg", 14, "unexpected character ','; join conditions with AND"),
+        ("stature > 1 m && mass < 9", 15, "unexpected character '&'; join conditions with AND"),
+        ("stature > 1 m $", 15, "unexpected character '$'"),
     ],
 )
 def test_a_bad_query_says_where_and_what(text, column, says):

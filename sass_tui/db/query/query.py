@@ -486,7 +486,9 @@ def parse(text: str, unknowns: bool = False) -> ParsedQuery:
     try:
         tree = parser().parse(text)
     except UnexpectedCharacters as exc:
-        raise QueryError(f"unexpected character {exc.char!r}", text, exc.column) from None
+        # a list's or another language's separator between two conditions
+        joined = "; join conditions with AND or OR" if exc.char in ",;&|" else ""
+        raise QueryError(f"unexpected character {exc.char!r}{joined}", text, exc.column) from None
     except UnexpectedEOF:
         raise QueryError("the query ends too early", text, len(text) + 1) from None
     except UnexpectedToken as exc:
