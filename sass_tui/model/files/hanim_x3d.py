@@ -150,6 +150,13 @@ def _numbers(values: np.ndarray, decimals: int) -> str:
     return " ".join([f"%.{decimals}f"] * len(numbers)) % tuple(numbers)
 
 
+def _integers(values: np.ndarray) -> str:
+    """Many whole numbers at once (the skin's triangles and each joint's
+    vertices): one %-format over the list, ~half the time of str() on each."""
+    numbers = values.ravel().tolist()
+    return ("%d " * len(numbers))[:-1] % tuple(numbers)
+
+
 def _skin_of_joints(mesh: BodyMesh) -> dict[int, tuple[str, str]]:
     """Per joint (LOA1 order): the skin's vertices it moves and their weights."""
     out: dict[int, tuple[str, str]] = {}
@@ -158,7 +165,7 @@ def _skin_of_joints(mesh: BodyMesh) -> dict[int, tuple[str, str]]:
         if len(rows):
             order = np.argsort(rows, kind="stable")
             weights = mesh.weights[rows[order], slots[order]].astype(float)
-            out[joint] = (" ".join(map(str, rows[order].tolist())), _numbers(weights, 5))
+            out[joint] = (_integers(rows[order]), _numbers(weights, 5))
     return out
 
 
@@ -182,7 +189,7 @@ def _add_skin(root: ET.Element, mesh: BodyMesh, prefix: str, colour: str) -> Non
     triangles = ET.SubElement(
         shape,
         "IndexedTriangleSet",
-        {"index": " ".join(map(str, mesh.triangles.ravel().tolist())), "solid": "true"},
+        {"index": _integers(mesh.triangles), "solid": "true"},
     )
     ET.SubElement(triangles, "Coordinate", {"USE": coord})
     ET.SubElement(triangles, "Normal", {"USE": normal})
